@@ -1,0 +1,2 @@
+//! The cycleref command.
+fn main() {}

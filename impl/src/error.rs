@@ -1,0 +1,184 @@
+//! Errors of the cycle engines: the manual's alarm conditions.
+//!
+//! Both engines return these same values for the same cycle, so a caller can
+//! compare them with `==`.
+
+use core::fmt;
+
+use crate::units::Length;
+
+/// A cycle parameter, named by its manual letter in messages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Field {
+    /// X of the start point A.
+    StartX,
+    /// Z of the start point A.
+    StartZ,
+    /// X(U) of block 2: the thread end D.
+    EndX,
+    /// Z(W) of block 2: the thread end D.
+    EndZ,
+    /// R(i) of block 2.
+    Taper,
+    /// P(k) of block 2.
+    ThreadHeight,
+    /// Q(Δd) of block 2.
+    FirstDepth,
+    /// Q(Δdmin) of block 1.
+    MinCut,
+    /// R(d) of block 1.
+    FinishingAllowance,
+    /// P(m) of block 1.
+    FinishingPasses,
+    /// P(r) of block 1 or its parameter.
+    Chamfer,
+    /// Chamfer angle parameter (5131).
+    ChamferAngle,
+    /// P(a) of block 1.
+    ToolAngle,
+    /// E of block 1.
+    LeadIn,
+    /// L of block 1.
+    Starts,
+    /// J.
+    RunOutShort,
+    /// K.
+    RunOutLong,
+    /// A computed coordinate of a pass.
+    PassCoordinate,
+}
+
+impl Field {
+    /// The word as the manual writes it.
+    #[must_use]
+    pub const fn word(self) -> &'static str {
+        match self {
+            Field::StartX => "X of the start point A",
+            Field::StartZ => "Z of the start point A",
+            Field::EndX => "X(U) (thread end D)",
+            Field::EndZ => "Z(W) (thread end D)",
+            Field::Taper => "R(i) (taper)",
+            Field::ThreadHeight => "P(k) (thread height)",
+            Field::FirstDepth => "Q(Δd) (first depth)",
+            Field::MinCut => "Q(Δdmin) (minimum cut)",
+            Field::FinishingAllowance => "R(d) (finishing allowance)",
+            Field::FinishingPasses => "P(m) (finishing passes)",
+            Field::Chamfer => "P(r) (chamfer)",
+            Field::ChamferAngle => "chamfer angle (parameter 5131)",
+            Field::ToolAngle => "P(a) (tool angle)",
+            Field::LeadIn => "E (lead-in)",
+            Field::Starts => "L (starts)",
+            Field::RunOutShort => "J (run-out, short axis)",
+            Field::RunOutLong => "K (run-out, long axis)",
+            Field::PassCoordinate => "a pass coordinate",
+        }
+    }
+}
+
+/// Why a cycle cannot be expanded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CycleError {
+    /// A length outside the manual's range table (±999 999 999 increments).
+    OutOfRange {
+        /// Which word.
+        field: Field,
+        /// The value.
+        value: Length,
+    },
+    /// A count outside its range (m 0..99, a 0..99, L 1..999, r 0..99,
+    /// chamfer angle 1..89).
+    CountOutOfRange {
+        /// Which word.
+        field: Field,
+        /// The value.
+        value: u32,
+    },
+    /// F0 or I0.
+    ZeroLead,
+    /// Note 6: Δdmin > k.
+    MinCutExceedsHeight {
+        /// Δdmin.
+        min_cut: Length,
+        /// k.
+        height: Length,
+    },
+    /// Note 6: d > k.
+    AllowanceExceedsHeight {
+        /// d.
+        allowance: Length,
+        /// k.
+        height: Length,
+    },
+    /// G76 cannot cut face threads: the end point D has the Z of A.
+    FaceThread,
+    /// Note 7: the run-out on the long axis is longer than the thread on the
+    /// long axis (checked against the shortest pass).
+    RunOutTooLong {
+        /// The run-out length along the long axis.
+        run_out: Length,
+        /// The long-axis length of the shortest pass.
+        length: Length,
+    },
+    /// Lead-in E on a thread whose long axis is X: the manual defines E as
+    /// an X distance, which cannot screw in along an X long axis.
+    LeadInOnXLongAxis,
+    /// More rough passes than [`crate::g76::G76Cycle::pass_limit`].
+    TooManyPasses {
+        /// Rough passes the cycle would cut (a lower bound when `exact` is false).
+        passes: u64,
+        /// True when `passes` is the exact count.
+        exact: bool,
+        /// The limit.
+        limit: u32,
+    },
+}
+
+impl fmt::Display for CycleError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            CycleError::OutOfRange { field, value } => write!(
+                f,
+                "{} = {value} is outside the range table (at most 999999999 least increments)",
+                field.word()
+            ),
+            CycleError::CountOutOfRange { field, value } => {
+                let range = match field {
+                    Field::FinishingPasses | Field::ToolAngle | Field::Chamfer => "0..99",
+                    Field::Starts => "1..999",
+                    Field::ChamferAngle => "1..89 degrees",
+                    _ => "its range",
+                };
+                write!(f, "{} = {value} is outside {range}", field.word())
+            }
+            CycleError::ZeroLead => write!(f, "the lead F(I) is zero: no thread can be cut"),
+            CycleError::MinCutExceedsHeight { min_cut, height } => write!(
+                f,
+                "Q(Δdmin) = {min_cut} is larger than the thread height P(k) = {height} (alarm: note 6, \
+                 minimum cut larger than the thread height)"
+            ),
+            CycleError::AllowanceExceedsHeight { allowance, height } => write!(
+                f,
+                "R(d) = {allowance} is larger than the thread height P(k) = {height} (alarm: note 6, \
+                 finishing allowance larger than the thread height)"
+            ),
+            CycleError::FaceThread => write!(
+                f,
+                "the thread end Z(W) equals the Z of the start point: G76 cannot cut face threads"
+            ),
+            CycleError::RunOutTooLong { run_out, length } => write!(
+                f,
+                "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
+                 ({length}) (alarm: note 7)"
+            ),
+            CycleError::LeadInOnXLongAxis => write!(
+                f,
+                "lead-in E is an X distance and cannot be used on a thread whose long axis is X \
+                 (|i| >= |W|)"
+            ),
+            CycleError::TooManyPasses { passes, exact, limit } => {
+                let more = if exact { "" } else { "more than " };
+                write!(f, "the cycle needs {more}{passes} rough passes, above the pass limit {limit}")
+            }
+        }
+    }
+}

@@ -1,0 +1,183 @@
+//! The typed parameters of one G76 cycle, as the program reader resolves
+//! them (one home, used by the reference model and by the engine alike).
+//!
+//! Every length is in least increments; radius amounts (k, Δd, Δdmin, d, i,
+//! E, J, K) are radius increments whatever [`XMode`] says, while the points
+//! A and D carry X in X-word units. The reader has already applied the
+//! profile's rules for omitted words (parameters 5140-5143 or No.57-60,
+//! modal values) and for the run-out words, so [`RunOut`] says what the
+//! cycle must do, not what was written.
+
+use crate::error::{CycleError, Field};
+use crate::lead::Lead;
+use crate::units::{Length, Point, Units, XMode, MAX_LENGTH};
+
+/// Infeed mode, the `D` word of the extended G76 (切入方式, seed 000).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Infeed {
+    /// D0: along the right flank of the thread form (the original G76).
+    RightFlank,
+    /// D1: right flank and centre, alternately.
+    RightCentre,
+    /// D2: left and right flanks alternately, equal amounts: two passes
+    /// (right, then left) at every depth level but the last.
+    LeftRight,
+}
+
+/// The run-out (退尾) the cycle must make, after the profile's rules for
+/// J, K, r and the parameters have been applied by the reader.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RunOut {
+    /// No run-out: the cut ends on the line D–E.
+    None,
+    /// Run-out by amounts: `short` (J) along the short axis, away from the
+    /// work, and `long` (K) along the long axis, both radius increments.
+    /// `long == 0` is a pull-out along the short axis only.
+    Amounts {
+        /// J: short-axis travel (radius increments, unsigned).
+        short: i64,
+        /// K: long-axis length (increments, radius where X is long).
+        long: i64,
+    },
+    /// Run-out from the chamfer amount `r` (P(r) or parameter 5130/No.19):
+    /// long-axis length `r * 0.1 * lead`, short-axis travel from the
+    /// chamfer angle.
+    Chamfer {
+        /// r, in tenths of the lead (0..=99).
+        tenths_of_lead: u32,
+        /// Chamfer angle in degrees from the long axis (parameter 5131;
+        /// the reader has already turned 0 into 45).
+        angle_degrees: u32,
+    },
+}
+
+/// One G76 multiple thread-cutting cycle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct G76Cycle {
+    /// Increment system and unit of every length below.
+    pub units: Units,
+    /// Diameter or radius X words.
+    pub x_mode: XMode,
+    /// A: the tool position before the cycle (起点), where it returns.
+    pub start: Point,
+    /// D: the thread end point X(U) Z(W) of block 2 (螺纹终点).
+    pub end: Point,
+    /// R(i): taper, X of the thread start C minus X of D (radius, signed).
+    pub taper: i64,
+    /// P(k): thread height (牙高), total depth (radius, > 0).
+    pub thread_height: i64,
+    /// Q(Δd): first depth (第一次切深, radius, > 0).
+    pub first_depth: i64,
+    /// Q(Δdmin): minimum cut (最小切削量, radius).
+    pub min_cut: i64,
+    /// R(d): finishing allowance (精车余量, radius).
+    pub finishing_allowance: i64,
+    /// P(m): finishing passes (精车次数).
+    pub finishing_passes: u32,
+    /// P(a): tool angle (刀尖角度) in degrees, 0..=99.
+    pub tool_angle: u32,
+    /// D: infeed mode.
+    pub infeed: Infeed,
+    /// E: lead-in (旋进) distance along X (radius, unsigned); 0 is none.
+    pub lead_in: i64,
+    /// L: number of starts (头数), 1..=999.
+    pub starts: u32,
+    /// F or I: the lead.
+    pub lead: Lead,
+    /// The run-out to make.
+    pub run_out: RunOut,
+    /// Largest number of rough passes the cycle may have; beyond it the
+    /// cycle is refused before any move is produced.
+    pub pass_limit: u32,
+}
+
+/// Default [`G76Cycle::pass_limit`].
+pub const DEFAULT_PASS_LIMIT: u32 = 1_000_000;
+
+/// Longest run-out chamfer in tenths of a lead (`r` is two digits).
+pub const MAX_CHAMFER_TENTHS: u32 = 99;
+
+impl G76Cycle {
+    fn len(&self, v: i64) -> Length {
+        Length::new(v, self.units)
+    }
+
+    /// Checks the range tables and the alarm conditions that depend only on
+    /// the programmed values (seed 000 and manuals/gsk988ta-g76.txt notes
+    /// 5-7): both engines call this first, so they refuse the same cycles
+    /// with the same error.
+    ///
+    /// # Errors
+    ///
+    /// The first violated rule, as a [`CycleError`].
+    pub fn validate(&self) -> Result<(), CycleError> {
+        let c = self;
+        let coord = |field: Field, v: i64| -> Result<(), CycleError> {
+            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+                return Err(CycleError::OutOfRange { field, value: c.len(v) });
+            }
+            Ok(())
+        };
+        coord(Field::StartX, c.start.x)?;
+        coord(Field::StartZ, c.start.z)?;
+        coord(Field::EndX, c.end.x)?;
+        coord(Field::EndZ, c.end.z)?;
+        coord(Field::Taper, c.taper)?;
+        let positive = |field: Field, v: i64| -> Result<(), CycleError> {
+            if v < 1 || v > MAX_LENGTH {
+                return Err(CycleError::OutOfRange { field, value: c.len(v) });
+            }
+            Ok(())
+        };
+        positive(Field::ThreadHeight, c.thread_height)?;
+        positive(Field::FirstDepth, c.first_depth)?;
+        let unsigned = |field: Field, v: i64| -> Result<(), CycleError> {
+            if v < 0 || v > MAX_LENGTH {
+                return Err(CycleError::OutOfRange { field, value: c.len(v) });
+            }
+            Ok(())
+        };
+        unsigned(Field::MinCut, c.min_cut)?;
+        unsigned(Field::FinishingAllowance, c.finishing_allowance)?;
+        unsigned(Field::LeadIn, c.lead_in)?;
+        if let RunOut::Amounts { short, long } = c.run_out {
+            unsigned(Field::RunOutShort, short)?;
+            unsigned(Field::RunOutLong, long)?;
+        }
+        if let RunOut::Chamfer { tenths_of_lead, angle_degrees } = c.run_out {
+            if tenths_of_lead > MAX_CHAMFER_TENTHS {
+                return Err(CycleError::CountOutOfRange { field: Field::Chamfer, value: tenths_of_lead });
+            }
+            if !(1..=89).contains(&angle_degrees) {
+                return Err(CycleError::CountOutOfRange { field: Field::ChamferAngle, value: angle_degrees });
+            }
+        }
+        if c.finishing_passes > 99 {
+            return Err(CycleError::CountOutOfRange { field: Field::FinishingPasses, value: c.finishing_passes });
+        }
+        if c.tool_angle > 99 {
+            return Err(CycleError::CountOutOfRange { field: Field::ToolAngle, value: c.tool_angle });
+        }
+        if !(1..=999).contains(&c.starts) {
+            return Err(CycleError::CountOutOfRange { field: Field::Starts, value: c.starts });
+        }
+        if c.lead.is_zero() {
+            return Err(CycleError::ZeroLead);
+        }
+        // Note 6: minimum cut or finishing allowance larger than the thread height.
+        if c.min_cut > c.thread_height {
+            return Err(CycleError::MinCutExceedsHeight { min_cut: c.len(c.min_cut), height: c.len(c.thread_height) });
+        }
+        if c.finishing_allowance > c.thread_height {
+            return Err(CycleError::AllowanceExceedsHeight {
+                allowance: c.len(c.finishing_allowance),
+                height: c.len(c.thread_height),
+            });
+        }
+        // "G76 代码不能加工端面螺纹": D on the Z of A is a face thread.
+        if c.end.z == c.start.z {
+            return Err(CycleError::FaceThread);
+        }
+        Ok(())
+    }
+}

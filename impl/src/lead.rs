@@ -1,0 +1,68 @@
+//! The thread lead, kept exactly as programmed.
+//!
+//! A lead is a rate (travel of the long axis per spindle revolution), not a
+//! position, so it is never rounded to the increment: `F` is a decimal in
+//! mm (inch) per revolution, `I` is threads per inch and gives
+//! `25.4 / I` mm (or `1 / I` inch) per revolution, which is generally not a
+//! terminating decimal. [`Lead::increments_per_rev`] gives the exact ratio.
+
+use crate::units::{InputUnit, Units};
+
+/// Which word programmed the lead.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LeadWord {
+    /// `F`: lead in mm (inch) per revolution along the long axis.
+    F,
+    /// `I`: threads per inch along the long axis.
+    I,
+}
+
+/// A programmed lead: `mantissa / 10^scale` of the word [`LeadWord`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Lead {
+    /// `F` or `I`.
+    pub word: LeadWord,
+    /// Digits of the programmed value without the decimal point.
+    pub mantissa: u64,
+    /// Number of decimals of the programmed value.
+    pub scale: u32,
+}
+
+/// An exact non-negative rational `num / den` (`den > 0`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Ratio {
+    /// Numerator.
+    pub num: u128,
+    /// Denominator, never zero for a valid lead.
+    pub den: u128,
+}
+
+/// Largest number of decimals a lead word may carry (`F0.00001` inch).
+pub const MAX_LEAD_SCALE: u32 = 6;
+
+impl Lead {
+    /// Lead in least increments of `units` per spindle revolution, exactly.
+    ///
+    /// `F`: `mantissa * 10^decimals / 10^scale`.
+    /// `I` metric: `25.4 mm / I` = `254 * 10^decimals * 10^scale / (10 * mantissa)`.
+    /// `I` inch: `1 inch / I` = `10^decimals * 10^scale / mantissa`.
+    ///
+    /// The denominator is zero only for a zero `I`, which the reader rejects.
+    #[must_use]
+    pub fn increments_per_rev(self, units: Units) -> Ratio {
+        let inc = 10_u128.pow(units.decimals());
+        let sc = 10_u128.pow(self.scale.min(MAX_LEAD_SCALE));
+        let m = u128::from(self.mantissa);
+        match (self.word, units.unit) {
+            (LeadWord::F, _) => Ratio { num: m * inc, den: sc },
+            (LeadWord::I, InputUnit::Metric) => Ratio { num: 254 * inc * sc, den: 10 * m },
+            (LeadWord::I, InputUnit::Inch) => Ratio { num: inc * sc, den: m },
+        }
+    }
+
+    /// True when the lead is zero (`F0` or `I0`): no thread can be cut.
+    #[must_use]
+    pub const fn is_zero(self) -> bool {
+        self.mantissa == 0
+    }
+}

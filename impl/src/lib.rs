@@ -1,0 +1,25 @@
+//! # cycleref
+//!
+//! The shared model of lathe threading and grooving canned cycles (units,
+//! leads, cycle parameters, moves, errors) and the fixed-point engine that
+//! expands them.
+//!
+//! `no_std`, no heap, no floating point, no `unsafe`: fit to run inside a
+//! control. The reference model it must equal is `cycleref-spec`.
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod angle;
+pub mod error;
+pub mod g76;
+pub mod lead;
+pub mod moves;
+pub mod units;
+
+pub use angle::StartAngle;
+pub use error::{CycleError, Field};
+pub use g76::{G76Cycle, Infeed, RunOut};
+pub use lead::{Lead, LeadWord, Ratio};
+pub use moves::{Flank, Motion, Move, Pass, PassKind, Role};
+pub use units::{IncrementSystem, InputUnit, Length, Point, Units, XMode};

@@ -1,0 +1,1 @@
+//! Proof harnesses for cycleref.
