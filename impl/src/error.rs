@@ -119,6 +119,18 @@ pub enum CycleError {
         /// The long-axis length of the shortest pass.
         length: Length,
     },
+    /// The start point A is not clear of the thread: it must lie on the
+    /// side of B away from the work at the start, and clear of the crest at
+    /// the end, or the retract to E would cut the thread.
+    StartInsideThread,
+    /// The flank shift of some pass reaches the thread end: the pass would
+    /// have no length along Z.
+    ThreadTooShort {
+        /// The largest Z shift of a pass.
+        shift: Length,
+        /// |W|, the thread's length along Z.
+        length: Length,
+    },
     /// Lead-in E on a thread whose long axis is X: the manual defines E as
     /// an X distance, which cannot screw in along an X long axis.
     LeadInOnXLongAxis,
@@ -169,6 +181,16 @@ impl fmt::Display for CycleError {
                 f,
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
                  ({length}) (alarm: note 7)"
+            ),
+            CycleError::StartInsideThread => write!(
+                f,
+                "the start point A lies inside the thread (between the crest line through B and the \
+                 root): the retract to E would cut the thread"
+            ),
+            CycleError::ThreadTooShort { shift, length } => write!(
+                f,
+                "a pass is shifted {shift} along Z by depth x tan(a/2), which reaches the thread end \
+                 ({length} from A): the pass would have no length"
             ),
             CycleError::LeadInOnXLongAxis => write!(
                 f,

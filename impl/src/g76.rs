@@ -48,6 +48,9 @@ pub enum RunOut {
         /// Chamfer angle in degrees from the long axis (parameter 5131;
         /// the reader has already turned 0 into 45).
         angle_degrees: u32,
+        /// K when it was programmed and the profile keeps it while J comes
+        /// from r (GSK 980TDi G76 note 2).
+        long: Option<i64>,
     },
 }
 
@@ -144,7 +147,10 @@ impl G76Cycle {
             unsigned(Field::RunOutShort, short)?;
             unsigned(Field::RunOutLong, long)?;
         }
-        if let RunOut::Chamfer { tenths_of_lead, angle_degrees } = c.run_out {
+        if let RunOut::Chamfer { tenths_of_lead, angle_degrees, long } = c.run_out {
+            if let Some(k) = long {
+                unsigned(Field::RunOutLong, k)?;
+            }
             if tenths_of_lead > MAX_CHAMFER_TENTHS {
                 return Err(CycleError::CountOutOfRange { field: Field::Chamfer, value: tenths_of_lead });
             }

@@ -15,6 +15,7 @@ pub mod error;
 pub mod g76;
 pub mod lead;
 pub mod moves;
+pub mod tan;
 pub mod units;
 
 pub use angle::StartAngle;

@@ -1,1 +1,29 @@
-//! placeholder
+//! # cycleref-spec
+//!
+//! The exact reference model of lathe thread-cutting canned cycles, and the
+//! NC program reader that feeds it and the fixed-point engine (`cycleref`).
+//!
+//! * [`reader`] reads a whole program with a [`profile::Machine`] and resolves
+//!   every G76 into a [`cycleref::G76Cycle`] (one home for the program's
+//!   meaning, used by both engines).
+//! * [`g76`] expands a cycle exactly as the manuals define it, one function
+//!   per formula, each quoting the manual.
+//! * [`exact`] and [`tan`] hold the only arithmetic beyond `+ - ×`: rounding
+//!   to the least increment, square roots and tangents, all exact.
+//!
+//! Every reading chosen where the manuals are silent or ambiguous has an id
+//! (`R-…`) and is collected in `docs/INTERPRETATIONS.md`.
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod error;
+pub mod exact;
+pub mod g76;
+pub mod lex;
+pub mod profile;
+pub mod reader;
+pub mod tan;
+
+pub use error::{ErrorKind, ProgramError};
+pub use profile::{Machine, ProfileName};
+pub use reader::{read, G76Call, Item, Program};

@@ -1,0 +1,117 @@
+//! Errors of the program reader: every message names the line, the word and
+//! the rule it breaks.
+
+use std::fmt;
+
+use cycleref::CycleError;
+
+/// A program that cannot be expanded.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ProgramError {
+    /// 1-based source line of the offending block.
+    pub line: usize,
+    /// The offending word as written (`Q0.15`), when one word is to blame.
+    pub word: Option<String>,
+    /// What is wrong.
+    pub kind: ErrorKind,
+}
+
+/// What is wrong with a program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// Text that is not a word, comment or block end.
+    Syntax(String),
+    /// A length that is not a whole number of least increments.
+    NotInIncrements {
+        /// The least increment, for example `0.001 mm`.
+        increment: String,
+    },
+    /// A decimal point where the control forbids one.
+    DecimalPointNotAllowed {
+        /// The rule.
+        rule: &'static str,
+    },
+    /// A word the cycle needs is missing.
+    Missing {
+        /// The word, in the manual's terms.
+        what: &'static str,
+        /// The rule (manual note).
+        rule: &'static str,
+    },
+    /// A value outside its range table.
+    OutOfRange {
+        /// The allowed range.
+        range: String,
+    },
+    /// An address the profile's G76 does not have.
+    AddressNotInProfile {
+        /// The profile.
+        profile: String,
+    },
+    /// The same address twice in one block.
+    Duplicate,
+    /// P(m)(r)(a) written with fewer digits than the profile allows.
+    PartialP,
+    /// A G code, M code or feature the reader does not model.
+    Unsupported(String),
+    /// An incremental move or a cycle before the position is known.
+    PositionUnknown,
+    /// Thread cutting with no spindle speed commanded (manual: "如果没有指令主轴速度，产生报警").
+    NoSpindleSpeed,
+    /// G20/G21 after the first motion: the position would change meaning.
+    UnitChangeAfterMotion,
+    /// A parameter value that the reader cannot use.
+    Parameter(String),
+    /// The cycle's own alarm.
+    Cycle(CycleError),
+}
+
+impl fmt::Display for ProgramError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}", self.line)?;
+        if let Some(w) = &self.word {
+            write!(f, ", word `{w}`")?;
+        }
+        write!(f, ": {}", self.kind)
+    }
+}
+
+impl fmt::Display for ErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ErrorKind::Syntax(s) => write!(f, "cannot read {s}"),
+            ErrorKind::NotInIncrements { increment } => {
+                write!(f, "the value is not a whole number of least increments ({increment})")
+            }
+            ErrorKind::DecimalPointNotAllowed { rule } => write!(f, "no decimal point allowed: {rule}"),
+            ErrorKind::Missing { what, rule } => write!(f, "{what} is missing ({rule})"),
+            ErrorKind::OutOfRange { range } => write!(f, "the value is outside the range table: {range}"),
+            ErrorKind::AddressNotInProfile { profile } => {
+                write!(f, "this address is not part of G76 on the {profile} profile")
+            }
+            ErrorKind::Duplicate => write!(f, "the address appears twice in the block"),
+            ErrorKind::PartialP => write!(
+                f,
+                "P(m)(r)(a) must give all of m, r and a (last two digits a, next two r, the rest m); \
+                 it can only be omitted as a whole (note 4)"
+            ),
+            ErrorKind::Unsupported(s) => write!(f, "not supported: {s}"),
+            ErrorKind::PositionUnknown => write!(
+                f,
+                "the tool position is not known yet (program an absolute X and Z, or G50, first)"
+            ),
+            ErrorKind::NoSpindleSpeed => write!(
+                f,
+                "no spindle speed commanded before thread cutting (alarm: the system checks the \
+                 spindle speed before threading, note 8)"
+            ),
+            ErrorKind::UnitChangeAfterMotion => {
+                write!(f, "G20/G21 must come before the first motion of the program")
+            }
+            ErrorKind::Parameter(s) => write!(f, "parameter: {s}"),
+            ErrorKind::Cycle(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for ProgramError {}

@@ -1,0 +1,528 @@
+//! The G76 multiple thread-cutting cycle, exactly as the manuals define it.
+//!
+//! Sources: seed 000 (GSK extended G76, the authority), manuals/gsk988ta-g76.txt,
+//! manuals/gsk980tdi-g76.txt, manuals/gsk988ta-g78.txt (figures of the infeed
+//! modes and the lead-in), seed 004 (FANUC teaching notes), and the decisions
+//! of DOMAIN.md. Every reading chosen where the sources are silent or
+//! ambiguous carries an id `R-…` and is collected, with its source and reason,
+//! in `docs/INTERPRETATIONS.md`.
+//!
+//! Lengths here are exact decimals in mm (inch); radius amounts are radius
+//! values as in the manual, and X coordinates are converted to X words
+//! (diameters by default) only when a point is formed. Every rounding goes
+//! to the least increment, nearest, ties away from zero (DOMAIN decision 2),
+//! through [`crate::exact`] and [`crate::tan`], never through floating point.
+//!
+//! The points, in the manual's names:
+//!
+//! | point | definition |
+//! |---|---|
+//! | A | start point: the tool position before the cycle, where it returns |
+//! | D | thread end: X(U) Z(W) of block 2 |
+//! | C | thread start: Z of A, X of D plus i (radius) |
+//! | B | depth reference: Z of A, X of C plus k towards A (depth 0) |
+//! | Bn | start of pass n: depth Dn below B, shifted along Z |
+//! | E | retract end: X of A, on the line through the end of the pass |
+
+use cycleref::angle::StartAngle;
+use cycleref::error::{CycleError, Field};
+use cycleref::g76::{G76Cycle, Infeed, RunOut};
+use cycleref::lead::Ratio;
+use cycleref::moves::{Flank, Motion, Move, Pass, PassKind, Role};
+use cycleref::units::{Length, Point, MAX_LENGTH};
+use cycleref::Units;
+use rust_decimal::Decimal;
+
+use crate::exact::{ceil_div, from_increments, quantize, round_div, round_sqrt, to_increments};
+
+/// Which axis is the long axis (长轴) of the thread.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LongAxis {
+    /// |W| > |i|: Z is the long axis (the ordinary case).
+    Z,
+    /// |i| >= |W|: X is the long axis (a steep taper).
+    X,
+}
+
+/// The fixed geometry of a cycle, in the manual's terms.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Geometry {
+    /// A, in X-word units.
+    pub a: (Decimal, Decimal),
+    /// D, in X-word units.
+    pub d: (Decimal, Decimal),
+    /// X of C (X-word units).
+    pub c_x: Decimal,
+    /// X of B (X-word units).
+    pub b_x: Decimal,
+    /// +1 when A lies outside C (external thread), -1 inside (internal).
+    pub side: i64,
+    /// Sign of Z(D) - Z(A): +1 cutting towards +Z, -1 towards -Z.
+    pub direction: i64,
+    /// The long axis.
+    pub long_axis: LongAxis,
+    /// X-word units per radius unit: 2 for diameter X, 1 for radius X.
+    pub x_factor: Decimal,
+}
+
+/// One planned pass: the depth of its level and where it starts along Z.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlannedPass {
+    /// Kind, number, depth, cut and flank (lengths in increments).
+    pub pass: Pass,
+    /// Shift of Bn from the Z of A, towards D (mm, inch).
+    pub z_shift: Decimal,
+}
+
+fn len(v: Decimal, u: Units) -> Length {
+    Length::new(to_increments(quantize(v, u), u), u)
+}
+
+/// Geometry of the cycle (seed 000, "执行过程" table of points).
+///
+/// * C: "Z 轴绝对坐标与 A 点相同、X 轴绝对坐标与 D 点 X 轴绝对坐标的差值为 i".
+/// * B: "Z 轴绝对坐标与 A 点相同、X 轴绝对坐标与 C 点 X 轴绝对坐标的差值为 k",
+///   on the side of A (reading R-SIDE: external when A is outside C,
+///   internal when inside).
+/// * Long axis: "C 点与 D 点 Z 轴坐标差的绝对值大于 X 轴坐标差的绝对值 (半径值,
+///   等于 i 的绝对值) 时, Z 轴为长轴; 反之, X 轴为长轴".
+///
+/// # Errors
+///
+/// [`CycleError::StartInsideThread`] when A is not clear of the thread
+/// (reading R-SIDE).
+pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
+    let u = c.units;
+    let xf = Decimal::from(c.x_mode.factor());
+    let a = (from_increments(c.start.x, u), from_increments(c.start.z, u));
+    let d = (from_increments(c.end.x, u), from_increments(c.end.z, u));
+    let i = from_increments(c.taper, u);
+    let k = from_increments(c.thread_height, u);
+    let c_x = d.0 + xf * i;
+    let side = match a.0.cmp(&c_x) {
+        std::cmp::Ordering::Greater => 1,
+        std::cmp::Ordering::Less => -1,
+        std::cmp::Ordering::Equal => return Err(CycleError::StartInsideThread),
+    };
+    let s = Decimal::from(side);
+    let b_x = c_x + s * xf * k;
+    let crest_at_end = d.0 + s * xf * k;
+    if s * (a.0 - b_x) < Decimal::ZERO || s * (a.0 - crest_at_end) < Decimal::ZERO {
+        return Err(CycleError::StartInsideThread);
+    }
+    let w = d.1 - a.1;
+    let direction = if w > Decimal::ZERO { 1 } else { -1 };
+    let long_axis = if w.abs() > i.abs() { LongAxis::Z } else { LongAxis::X };
+    Ok(Geometry { a, d, c_x, b_x, side, direction, long_axis, x_factor: xf })
+}
+
+/// `round(Δd × √n)` to the least increment (seed 000 "切深计算": "X 轴切深:
+/// √n × Q(Δd)"), exactly: with `q` = Δd in increments it is the integer
+/// nearest to `√(q² n)`.
+#[must_use]
+pub fn depth_by_law(first_depth: Decimal, n: u64, u: Units) -> Decimal {
+    let q = u128::try_from(to_increments(first_depth, u)).unwrap_or(0);
+    let s = round_sqrt(q * q * u128::from(n));
+    from_increments(i64::try_from(s).unwrap_or(i64::MAX), u)
+}
+
+/// The smallest cut the schedule allows: Δdmin, and never less than one
+/// increment (DOMAIN decision 3: `max(Δdmin, 1 increment)`), so the
+/// schedule always advances.
+#[must_use]
+pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
+    min_cut.max(from_increments(1, u))
+}
+
+/// Depth of rough level `n` from the previous level's depth (DOMAIN decision
+/// 3, seed 000 "注意 1"):
+///
+/// `Dn = min(k - d, max(round(Δd √n), D(n-1) + max(Δdmin, 1 increment)))`.
+///
+/// Seed 000: "如果 X 轴切削量小于最小切削量 … X 轴切削量 = 最小切削量 …
+/// 下一刀的 X 轴切深 = 最小切削量 + 前一刀的切深 … 如果 X 轴切深 ≥ 牙高 P(k) −
+/// 精车切削量 R(d) 则 X 轴切深 = 牙高 P(k) − 精车切削量 R(d)".
+#[must_use]
+pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
+    let u = c.units;
+    let last = from_increments(c.thread_height - c.finishing_allowance, u);
+    let law = depth_by_law(from_increments(c.first_depth, u), n, u);
+    let min = effective_min_cut(from_increments(c.min_cut, u), u);
+    last.min(law.max(previous + min))
+}
+
+/// The depths of the rough levels, in order: they strictly increase and the
+/// last is exactly `k - d` (seed 000: "X 轴切深 = 牙高 P(k) − 精车切削量
+/// R(d)"; 988TA note 5: "当设定第一次螺纹切削深度大于螺纹总切削深度时，只进行
+/// 一次粗车"). With `d = k` there is nothing to rough and the list is empty
+/// (reading R-NOROUGH).
+///
+/// # Errors
+///
+/// [`CycleError::TooManyPasses`] when the cycle would cut more rough passes
+/// than its limit (reading R-LIMIT, which also says how the count is found).
+pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
+    let u = c.units;
+    let last = from_increments(c.thread_height - c.finishing_allowance, u);
+    check_pass_count(c)?;
+    let mut levels = Vec::new();
+    let mut depth = Decimal::ZERO;
+    let mut n = 0_u64;
+    while depth < last {
+        n += 1;
+        depth = next_depth(c, n, depth);
+        levels.push(depth);
+    }
+    Ok(levels)
+}
+
+/// Reading R-LIMIT: the number of rough levels, found before any move is
+/// made. Until the first level where the minimum cut takes over (`round(Δd
+/// √n) < D(n-1) + Δdmin`), the levels follow the law; from that level on
+/// every level adds exactly Δdmin (proved in docs/INTERPRETATIONS.md and by
+/// the proof harnesses), so the count is `n - 1 + ceil((k - d - D(n-1)) /
+/// Δdmin)`. If the law alone runs past the limit, the count is only known
+/// to exceed it.
+fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
+    let u = c.units;
+    let last = from_increments(c.thread_height - c.finishing_allowance, u);
+    let min = effective_min_cut(from_increments(c.min_cut, u), u);
+    let first = from_increments(c.first_depth, u);
+    let limit = u64::from(c.pass_limit);
+    let passes_of = |levels: u64| -> u64 {
+        match c.infeed {
+            Infeed::LeftRight => (2 * levels).saturating_sub(1),
+            _ => levels,
+        }
+    };
+    let mut depth = Decimal::ZERO;
+    let mut n = 0_u64;
+    let levels = loop {
+        if depth >= last {
+            break n;
+        }
+        n += 1;
+        let law = depth_by_law(first, n, u);
+        if law < depth + min {
+            let rest = to_increments(last - depth, u);
+            let step = to_increments(min, u);
+            let more = u64::try_from(ceil_div(i128::from(rest), i128::from(step))).unwrap_or(u64::MAX);
+            break n - 1 + more;
+        }
+        if law >= last {
+            break n;
+        }
+        depth = law;
+        if n > limit {
+            return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+        }
+    };
+    let passes = passes_of(levels);
+    if passes > limit {
+        return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
+    }
+    Ok(())
+}
+
+/// `round(depth × tan(a ÷ 2))`: the Z shift of a pass at `depth` (seed 000
+/// "Z 轴起切点 = X 轴切深 × tan(P(a) ÷ 2)"; "Bn 点相对于 B 点 X 轴和 Z 轴的位移
+/// 符合公式 tg(a/2) = Z 轴位移 / X 轴位移").
+#[must_use]
+pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
+    let inc = to_increments(depth, u);
+    let v = crate::tan::mul_tan_round(inc, tool_angle).unwrap_or(0);
+    from_increments(v, u)
+}
+
+/// The passes of the cycle in cutting order, before multi-start expansion
+/// (readings R-INFEED, R-FINISH).
+///
+/// * D0 (右边切入): every rough pass on the right flank, shifted
+///   `round(Dn tan(a/2))`.
+/// * D1 (右中轮流切入): odd levels on the right flank, even levels on the
+///   centre line of the final form, whose shift is that of the last rough
+///   level, `zc = round((k - d) tan(a/2))`.
+/// * D2 (左右等量轮流切入): every level but the last twice, first on the right
+///   flank, then on the left flank mirrored about the centre line
+///   (`2 zc - round(Dn tan(a/2))`); the last level once (the two flanks meet
+///   at `zc`), as the 988TA figure draws Bn1, Bn2 … and a single Bf.
+/// * Finishing: m passes at depth k from the Z of the last rough pass, `zc`
+///   (seed 000 注意 2: "精车 Z 轴起切点与最后一刀粗车一致"); the first removes
+///   d, the others 0 (seed 000: "第一次精车切削量为 d，其后的精车切削量为 0").
+///
+/// # Errors
+///
+/// As [`rough_levels`].
+pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
+    let u = c.units;
+    let levels = rough_levels(c)?;
+    let last = from_increments(c.thread_height - c.finishing_allowance, u);
+    let centre = flank_shift(last, c.tool_angle, u);
+    let mut out = Vec::new();
+    let mut number = 0_u32;
+    let mut previous = Decimal::ZERO;
+    let f = levels.len();
+    let mut push = |kind, depth: Decimal, cut: Decimal, flank, z_shift, number: u32| {
+        out.push(PlannedPass {
+            pass: Pass {
+                kind,
+                number,
+                start: 1,
+                depth: to_increments(depth, u),
+                cut: to_increments(cut, u),
+                flank,
+            },
+            z_shift,
+        });
+    };
+    for (index, &depth) in levels.iter().enumerate() {
+        let level = index + 1;
+        let cut = depth - previous;
+        let right = flank_shift(depth, c.tool_angle, u);
+        match c.infeed {
+            Infeed::RightFlank => {
+                number += 1;
+                push(PassKind::Rough, depth, cut, Flank::Right, right, number);
+            }
+            Infeed::RightCentre => {
+                number += 1;
+                if level % 2 == 1 {
+                    push(PassKind::Rough, depth, cut, Flank::Right, right, number);
+                } else {
+                    push(PassKind::Rough, depth, cut, Flank::Centre, centre, number);
+                }
+            }
+            Infeed::LeftRight => {
+                number += 1;
+                push(PassKind::Rough, depth, cut, Flank::Right, right, number);
+                if level < f {
+                    number += 1;
+                    push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+                }
+            }
+        }
+        previous = depth;
+    }
+    let k = from_increments(c.thread_height, u);
+    let d = from_increments(c.finishing_allowance, u);
+    for m in 1..=c.finishing_passes {
+        let cut = if m == 1 { d } else { Decimal::ZERO };
+        push(PassKind::Finish, k, cut, Flank::Centre, centre, m);
+    }
+    Ok(out)
+}
+
+/// `round(num × ratio)` in increments, exactly.
+fn round_ratio(num: i128, r: Ratio) -> i128 {
+    let n = i128::try_from(r.num).unwrap_or(i128::MAX);
+    let d = i128::try_from(r.den).unwrap_or(1);
+    round_div(num * n, d)
+}
+
+/// The run-out amounts `(J, K)` (short axis, long axis; radius where X),
+/// or `None` for no run-out (reading R-RUNOUT).
+///
+/// With the chamfer r: K = `round(r × 0.1 × lead)` (seed 000 P(r): "螺纹倒角量
+/// 0~99 (单位: 0.1×L, L 为螺纹螺距)") and J = `round(K × tan(θ))` with the
+/// chamfer angle θ from the long axis (988TA G92: "当参数 5131 设置为零时,
+/// 长轴和短轴以 45° 角退尾"). J = 0 means no run-out.
+#[must_use]
+pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
+    let u = c.units;
+    let (j, k) = match c.run_out {
+        RunOut::None => return None,
+        RunOut::Amounts { short, long } => (short, long),
+        RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
+            let lead = c.lead.increments_per_rev(u);
+            let chamfer = round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
+            let chamfer = i64::try_from(chamfer).unwrap_or(i64::MAX);
+            let short = crate::tan::mul_tan_round(chamfer, 2 * angle_degrees).unwrap_or(i64::MAX);
+            (short, long.unwrap_or(chamfer))
+        }
+    };
+    if j == 0 {
+        return None;
+    }
+    Some((from_increments(j, u), from_increments(k, u)))
+}
+
+/// The long-axis length of the lead-in (reading R-LEADIN): the smallest whole
+/// number of leads not shorter than E, rounded to the increment, so that the
+/// screw-in lands on the same helix as a pass without lead-in and Z stays the
+/// long axis of the screw-in move.
+#[must_use]
+pub fn lead_in_length(c: &G76Cycle) -> Decimal {
+    let u = c.units;
+    let lead = c.lead.increments_per_rev(u);
+    let e = i128::from(c.lead_in);
+    let n = i128::try_from(lead.num).unwrap_or(i128::MAX);
+    let d = i128::try_from(lead.den).unwrap_or(1);
+    // smallest N >= 1 with N * n / d >= e
+    let leads = ceil_div(e * d, n).max(1);
+    from_increments(i64::try_from(round_div(leads * n, d)).unwrap_or(i64::MAX), u)
+}
+
+fn point(x: Decimal, z: Decimal, u: Units) -> Point {
+    Point::new(to_increments(x, u), to_increments(z, u))
+}
+
+fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
+    if to_increments(v, u).abs() > MAX_LENGTH {
+        return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(v, u) });
+    }
+    Ok(())
+}
+
+/// Expands a G76 cycle into moves.
+///
+/// Each pass, for each start (reading R-STARTS: all starts at one depth
+/// before the next depth), follows seed 000 "执行过程" (4)-(5) and 988TA
+/// steps ①-⑩:
+///
+/// 1. rapid from A to Bn, X and Z together ("如果 a≠0，X 轴和 Z 轴同时移动，
+///    移动方向与 A→D 的方向相同"), or to the lead-in start An and a screw-in
+///    thread move to Bn (reading R-LEADIN);
+/// 2. thread from Bn to the end line D–E, X travelling i (seed 000 (4): "本轮
+///    切削终点与螺纹切入点在 Z 轴方向的移动量为 W，X 轴方向的移动量为 i",
+///    reading R-END), with the run-out K before the end (reading R-RUNOUT);
+/// 3. rapid along X to E (X of A), then along Z back to A ("退尾后，先沿 X 轴
+///    方向快速移动，后沿 Z 轴方向快速移动回到起点").
+///
+/// Moves that would not move are left out (reading R-ZERO).
+///
+/// # Errors
+///
+/// The manual's alarms, as [`CycleError`].
+pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
+    c.validate()?;
+    let u = c.units;
+    let g = geometry(c)?;
+    let e = from_increments(c.lead_in, u);
+    if g.long_axis == LongAxis::X && c.lead_in > 0 {
+        return Err(CycleError::LeadInOnXLongAxis);
+    }
+    let plan = planned_passes(c)?;
+    let s = Decimal::from(g.side);
+    let t = Decimal::from(g.direction);
+    let xf = g.x_factor;
+    let k = from_increments(c.thread_height, u);
+    let i = from_increments(c.taper, u);
+    let w = g.d.1 - g.a.1;
+    let run_out = run_out_amounts(c);
+    let lead_in = if c.lead_in > 0 { Some(lead_in_length(c)) } else { None };
+
+    // Note 7 and reading R-SHORT: the shortest pass must be longer than the
+    // flank shift and not shorter than the run-out.
+    let max_shift = plan.iter().map(|p| p.z_shift).max().unwrap_or(Decimal::ZERO);
+    match g.long_axis {
+        LongAxis::Z => {
+            if max_shift >= w.abs() {
+                return Err(CycleError::ThreadTooShort { shift: len(max_shift, u), length: len(w.abs(), u) });
+            }
+            if let Some((_, kk)) = run_out {
+                if kk > w.abs() - max_shift {
+                    return Err(CycleError::RunOutTooLong {
+                        run_out: len(kk, u),
+                        length: len(w.abs() - max_shift, u),
+                    });
+                }
+            }
+        }
+        LongAxis::X => {
+            if let Some((_, kk)) = run_out {
+                if kk > i.abs() {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk, u), length: len(i.abs(), u) });
+                }
+            }
+        }
+    }
+    // Coordinates beyond the range tables (reading R-RANGE): X of B, and the
+    // lead-in start's X and Z, are the extremes of the toolpath.
+    check_coordinate(g.b_x, u)?;
+    if let Some(lz) = lead_in {
+        check_coordinate(g.b_x + s * xf * e, u)?;
+        let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
+        check_coordinate(g.a.1 + t * min_shift - t * lz, u)?;
+    }
+
+    let mut moves = Vec::new();
+    for planned in &plan {
+        for start in 0..c.starts {
+            let mut pass = planned.pass;
+            pass.start = start + 1;
+            let angle = StartAngle::of_start(start, c.starts);
+            let depth = from_increments(pass.depth, u);
+            // Seed 000 "进刀点实际坐标位置计算": X = X 终点 + 锥度 R(i) ∓ 牙高 P(k)
+            // ± X 轴切深; Z = Z 起点 ± Z 轴切深.
+            let bn = (g.d.0 + xf * i + s * xf * (k - depth), g.a.1 + t * planned.z_shift);
+            // Reading R-END: the cut ends on the line D–E, X having moved i.
+            let end = (g.d.0 + s * xf * (k - depth), g.d.1);
+            let mut path = PassPath { moves: &mut moves, at: g.a, pass, u, sync_done: false, lead: c, angle };
+            match lead_in {
+                Some(lz) => {
+                    path.go(Motion::Rapid, (bn.0 + s * xf * e, bn.1 - t * lz), Role::Approach);
+                    path.thread(bn, Role::LeadIn);
+                }
+                None => path.go(Motion::Rapid, bn, Role::Approach),
+            }
+            let mut last = end;
+            match run_out {
+                None => path.thread(end, Role::Cut),
+                Some((j, kk)) => match g.long_axis {
+                    LongAxis::Z => {
+                        // Run-out starts K before the end along Z, on the cut line.
+                        let zr = end.1 - t * kk;
+                        let xr = quantize(bn.0 + (end.0 - bn.0) * (zr - bn.1) / (end.1 - bn.1), u);
+                        path.thread((xr, zr), Role::Cut);
+                        // Short axis: J away from the work, at most to E (reading R-RUNOUT).
+                        let jx = (xf * j).min(s * (g.a.0 - end.0));
+                        last = (end.0 + s * jx, end.1);
+                        path.thread(last, Role::RunOut);
+                    }
+                    LongAxis::X => {
+                        let sigma = if end.0 > bn.0 { Decimal::ONE } else { Decimal::NEGATIVE_ONE };
+                        let xr = end.0 - sigma * xf * kk;
+                        let zr = quantize(bn.1 + (end.1 - bn.1) * (xr - bn.0) / (end.0 - bn.0), u);
+                        path.thread((xr, zr), Role::Cut);
+                        let jz = j.min(w.abs());
+                        last = (end.0, end.1 - t * jz);
+                        path.thread(last, Role::RunOut);
+                    }
+                },
+            }
+            path.go(Motion::Rapid, (g.a.0, last.1), Role::Retract);
+            path.go(Motion::Rapid, g.a, Role::Return);
+        }
+    }
+    Ok(moves)
+}
+
+struct PassPath<'a> {
+    moves: &'a mut Vec<Move>,
+    at: (Decimal, Decimal),
+    pass: Pass,
+    u: Units,
+    sync_done: bool,
+    lead: &'a G76Cycle,
+    angle: StartAngle,
+}
+
+impl PassPath<'_> {
+    fn go(&mut self, motion: Motion, to: (Decimal, Decimal), role: Role) {
+        if to == self.at {
+            return;
+        }
+        self.at = to;
+        self.moves.push(Move { motion, to: point(to.0, to.1, self.u), role, pass: Some(self.pass) });
+    }
+
+    fn thread(&mut self, to: (Decimal, Decimal), role: Role) {
+        if to == self.at {
+            return;
+        }
+        let sync = !self.sync_done;
+        self.sync_done = true;
+        let motion = Motion::Thread { lead: self.lead.lead, start_angle: self.angle, sync };
+        self.go(motion, to, role);
+    }
+}

@@ -1,0 +1,439 @@
+//! Control profiles and the machine configuration, as data.
+//!
+//! A profile says which addresses a control's G76 has, how `P(m)(r)(a)` may
+//! be written, what a value without a decimal point means, which parameters
+//! replace omitted words, and which run-out rules apply. The three profiles
+//! differ only in this data; the reader and the engines have no per-control
+//! code paths beyond looking these fields up.
+//!
+//! Parameter defaults are not given by the sources; the values chosen here
+//! are listed in `docs/INTERPRETATIONS.md` (reading R-PARAM) and can be
+//! overridden with a parameter file ([`Machine::apply_toml`]).
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::str::FromStr;
+
+use cycleref::{IncrementSystem, InputUnit, Units, XMode};
+use rust_decimal::Decimal;
+
+/// Which control's manual a program is read by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ProfileName {
+    /// FANUC-style two-block G76 (seed 004).
+    Fanuc,
+    /// GSK 980TDi (manuals/gsk980tdi-*.txt).
+    Gsk980,
+    /// GSK 988TA and the extended G76 of seed 000.
+    Gsk988,
+}
+
+impl FromStr for ProfileName {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.to_ascii_lowercase().as_str() {
+            "fanuc" => Ok(ProfileName::Fanuc),
+            "gsk980" | "gsk980tdi" => Ok(ProfileName::Gsk980),
+            "gsk988" | "gsk988ta" => Ok(ProfileName::Gsk988),
+            _ => Err(format!("unknown profile `{s}` (expected fanuc, gsk980 or gsk988)")),
+        }
+    }
+}
+
+impl fmt::Display for ProfileName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            ProfileName::Fanuc => "fanuc",
+            ProfileName::Gsk980 => "gsk980",
+            ProfileName::Gsk988 => "gsk988",
+        })
+    }
+}
+
+/// How `P(m)(r)(a)` of G76 block 1 may be written (reading R-PSPLIT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PSplit {
+    /// Last two digits a, next two r, the rest m; the word is omitted only
+    /// as a whole, so fewer than five written digits is an error
+    /// (manuals/gsk988ta-g76.txt note 4; FANUC).
+    WholeOnly,
+    /// GSK 980TDi note 4: one or two digits give a, three or four give r and
+    /// a, five or more give m, r and a; the missing ones keep their values.
+    Partial,
+}
+
+/// What a `P(k)`, `Q(Δd)` or `Q(Δdmin)` value means (reading R-PQUNIT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PqUnit {
+    /// Least increments; a decimal point is an error (FANUC).
+    IncrementsNoPoint,
+    /// Least increments; a decimal point is allowed but the value must be a
+    /// whole number of increments (GSK with the state parameter selecting
+    /// increments, the way Q180.0 of G32 still means 0.18°).
+    Increments,
+    /// mm (inch).
+    Length,
+}
+
+/// Run-out rules of a control for G76 (reading R-RUNOUT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RunOutRules {
+    /// FANUC: no J/K; the chamfer r (or parameter 5130) with angle 5131.
+    ChamferOnly,
+    /// GSK 980TDi G76 notes 1-4: J/K in block 1, non-modal; J, K omitted:
+    /// by r (No.19); J omitted with K != 0: J by r; K omitted or 0 with
+    /// J != 0: K = J; J = 0: none. The chamfer angle is 45°.
+    Gsk980,
+    /// GSK 988TA / seed 000: J/K in block 2, modal; both never programmed:
+    /// by r (5130) and angle 5131; otherwise the normal-mode G92 rules
+    /// (note 9): J omitted, J = 0 or K = 0 with J given: none; K omitted:
+    /// short-axis run-out J only; J and K both non-zero: J and K.
+    Gsk988,
+}
+
+/// The data that distinguishes one control from another.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Profile {
+    /// The profile's name.
+    pub name: ProfileName,
+    /// Addresses allowed in G76 block 1 besides `G`, `N`, `P`, `Q`, `R`.
+    pub block1_extra: &'static str,
+    /// Addresses allowed in G76 block 2 besides `G`, `N`, `X`, `Z`, `U`,
+    /// `W`, `R`, `P`, `Q`, `F`, `I`.
+    pub block2_extra: &'static str,
+    /// How P(m)(r)(a) splits.
+    pub p_split: PSplit,
+    /// Smallest finishing pass count m accepted in P(m)(r)(a).
+    pub min_finishing_passes: u32,
+    /// A length word without a decimal point is in least increments
+    /// (FANUC, unless calculator-type input is set); otherwise in mm/inch.
+    pub bare_length_is_increments: bool,
+    /// Run-out rules.
+    pub run_out: RunOutRules,
+    /// J/K keep their values across G76 cycles.
+    pub jk_modal: bool,
+    /// Largest P(k)/Q(Δd) in increments (range tables).
+    pub max_depth_increments: i64,
+    /// Parameter numbers, in the control's own numbering.
+    pub params: ParamNumbers,
+}
+
+/// The parameter numbers a profile uses for G76.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParamNumbers {
+    /// Finishing passes m (5142 / No.57).
+    pub finishing_passes: &'static str,
+    /// Chamfer r in 0.1 lead (5130 / No.19).
+    pub chamfer: &'static str,
+    /// Chamfer angle (5131; none on the 980TDi).
+    pub chamfer_angle: Option<&'static str>,
+    /// Tool angle a (5143 / No.58).
+    pub tool_angle: &'static str,
+    /// Minimum cut Δdmin (5140 / No.59).
+    pub min_cut: &'static str,
+    /// Finishing allowance d (5141 / No.60).
+    pub finishing_allowance: &'static str,
+    /// The P/Q unit state parameter (182.7 / 3401#6; none for FANUC).
+    pub pq_unit: Option<&'static str>,
+    /// Threading cycle mode (5129 on the 988TA; 1 = high-speed mode).
+    pub thread_mode: Option<&'static str>,
+}
+
+impl Profile {
+    /// The built-in profile `name`.
+    #[must_use]
+    pub fn get(name: ProfileName) -> Profile {
+        match name {
+            ProfileName::Fanuc => Profile {
+                name,
+                block1_extra: "",
+                block2_extra: "",
+                p_split: PSplit::WholeOnly,
+                min_finishing_passes: 1,
+                bare_length_is_increments: true,
+                run_out: RunOutRules::ChamferOnly,
+                jk_modal: false,
+                max_depth_increments: 999_999_999,
+                params: ParamNumbers {
+                    finishing_passes: "5142",
+                    chamfer: "5130",
+                    chamfer_angle: Some("5131"),
+                    tool_angle: "5143",
+                    min_cut: "5140",
+                    finishing_allowance: "5141",
+                    pq_unit: None,
+                    thread_mode: None,
+                },
+            },
+            ProfileName::Gsk980 => Profile {
+                name,
+                block1_extra: "JK",
+                block2_extra: "",
+                p_split: PSplit::Partial,
+                min_finishing_passes: 0,
+                bare_length_is_increments: false,
+                run_out: RunOutRules::Gsk980,
+                jk_modal: false,
+                max_depth_increments: 99_999_999,
+                params: ParamNumbers {
+                    finishing_passes: "57",
+                    chamfer: "19",
+                    chamfer_angle: None,
+                    tool_angle: "58",
+                    min_cut: "59",
+                    finishing_allowance: "60",
+                    pq_unit: Some("182.7"),
+                    thread_mode: None,
+                },
+            },
+            ProfileName::Gsk988 => Profile {
+                name,
+                block1_extra: "DLE",
+                block2_extra: "JK",
+                p_split: PSplit::WholeOnly,
+                min_finishing_passes: 1,
+                bare_length_is_increments: false,
+                run_out: RunOutRules::Gsk988,
+                jk_modal: true,
+                max_depth_increments: 999_999_999,
+                params: ParamNumbers {
+                    finishing_passes: "5142",
+                    chamfer: "5130",
+                    chamfer_angle: Some("5131"),
+                    tool_angle: "5143",
+                    min_cut: "5140",
+                    finishing_allowance: "5141",
+                    pq_unit: Some("3401.6"),
+                    thread_mode: Some("5129"),
+                },
+            },
+        }
+    }
+
+    /// The built-in default of every parameter of this profile, as
+    /// (number, value) in the units of [`ParamValue`].
+    #[must_use]
+    pub fn default_params(&self) -> BTreeMap<String, ParamValue> {
+        let p = &self.params;
+        let mut m = BTreeMap::new();
+        m.insert(p.finishing_passes.to_string(), ParamValue::Int(1));
+        m.insert(p.chamfer.to_string(), ParamValue::Int(0));
+        if let Some(n) = p.chamfer_angle {
+            m.insert(n.to_string(), ParamValue::Int(0));
+        }
+        m.insert(p.tool_angle.to_string(), ParamValue::Int(60));
+        m.insert(p.min_cut.to_string(), ParamValue::Length(Decimal::ZERO));
+        m.insert(p.finishing_allowance.to_string(), ParamValue::Length(Decimal::ZERO));
+        if let Some(n) = p.pq_unit {
+            m.insert(n.to_string(), ParamValue::Int(0));
+        }
+        if let Some(n) = p.thread_mode {
+            m.insert(n.to_string(), ParamValue::Int(0));
+        }
+        m
+    }
+
+    /// What P(k), Q(Δd) and Q(Δdmin) mean under parameter `bit` (the value
+    /// of 182.7 or 3401#6; ignored by FANUC).
+    #[must_use]
+    pub fn pq_unit(&self, bit: i64) -> PqUnit {
+        match self.name {
+            ProfileName::Fanuc => PqUnit::IncrementsNoPoint,
+            // 980TDi No.182.7: 0 = least increments (the manual's example
+            // P36800 Q18000 at IS-C), 1 = mm/inch.
+            ProfileName::Gsk980 => {
+                if bit == 0 {
+                    PqUnit::Increments
+                } else {
+                    PqUnit::Length
+                }
+            }
+            // 988TA 3401#6, opposite polarity: 0 = mm/inch (the manual's
+            // example P3.680 Q1.800, seed 000's P3 Q1.8), 1 = increments.
+            ProfileName::Gsk988 => {
+                if bit == 0 {
+                    PqUnit::Length
+                } else {
+                    PqUnit::Increments
+                }
+            }
+        }
+    }
+}
+
+/// A parameter value: a count/bit, or a length in mm (inch).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamValue {
+    /// An integer (counts, angles, bits, chamfer in tenths of a lead).
+    Int(i64),
+    /// A length in mm (inch), exact.
+    Length(Decimal),
+}
+
+/// Everything about the machine that a program does not say.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Machine {
+    /// The control profile.
+    pub profile: Profile,
+    /// IS-B or IS-C.
+    pub increment: IncrementSystem,
+    /// Input unit at program start (G20/G21 may change it before any motion).
+    pub unit: InputUnit,
+    /// Diameter or radius X.
+    pub x_mode: XMode,
+    /// FANUC calculator-type decimal point input (parameter 3401#0): a
+    /// length without a decimal point is in mm (inch), not increments.
+    pub calculator_input: bool,
+    /// Largest number of rough passes a G76 may have.
+    pub pass_limit: u32,
+    /// Parameter values by number (the profile's numbering).
+    pub params: BTreeMap<String, ParamValue>,
+}
+
+impl Machine {
+    /// The machine with the built-in defaults of `profile`: IS-B, metric,
+    /// diameter X, no calculator-type input.
+    #[must_use]
+    pub fn new(profile: ProfileName) -> Machine {
+        let profile = Profile::get(profile);
+        let params = profile.default_params();
+        Machine {
+            profile,
+            increment: IncrementSystem::IsB,
+            unit: InputUnit::Metric,
+            x_mode: XMode::Diameter,
+            calculator_input: false,
+            pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+            params,
+        }
+    }
+
+    /// The units at program start.
+    #[must_use]
+    pub fn units(&self) -> Units {
+        Units { system: self.increment, unit: self.unit }
+    }
+
+    /// The integer value of parameter `number`.
+    #[must_use]
+    pub fn int_param(&self, number: &str) -> i64 {
+        match self.params.get(number) {
+            Some(ParamValue::Int(v)) => *v,
+            Some(ParamValue::Length(d)) => d.trunc().try_into().unwrap_or(0),
+            None => 0,
+        }
+    }
+
+    /// The length value of parameter `number` in mm (inch).
+    #[must_use]
+    pub fn length_param(&self, number: &str) -> Decimal {
+        match self.params.get(number) {
+            Some(ParamValue::Length(d)) => *d,
+            Some(ParamValue::Int(v)) => Decimal::from(*v),
+            None => Decimal::ZERO,
+        }
+    }
+
+    /// Applies a parameter file (TOML). Keys:
+    ///
+    /// ```toml
+    /// profile = "gsk988"        # replaces the profile (and its defaults)
+    /// increment = "is-c"        # is-b | is-c
+    /// unit = "metric"           # metric | inch
+    /// x = "diameter"            # diameter | radius
+    /// calculator_input = false  # FANUC 3401#0
+    /// pass_limit = 1000000
+    /// [parameters]
+    /// 5142 = 2                  # integers for counts, angles and bits
+    /// 5140 = "0.15"             # lengths as strings, in mm (inch), exact
+    /// "3401.6" = 0              # bit parameters as "number.bit"
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// A message naming the key and what was wrong with it.
+    pub fn apply_toml(&mut self, text: &str) -> Result<(), String> {
+        let table: toml::Table = text.parse().map_err(|e| format!("parameter file: {e}"))?;
+        if let Some(v) = table.get("profile") {
+            let name: ProfileName = v.as_str().ok_or("`profile` must be a string")?.parse()?;
+            if name != self.profile.name {
+                self.profile = Profile::get(name);
+                self.params = self.profile.default_params();
+            }
+        }
+        for (key, value) in &table {
+            match key.as_str() {
+                "profile" => {}
+                "increment" => {
+                    self.increment = match value.as_str() {
+                        Some("is-b" | "IS-B" | "isb") => IncrementSystem::IsB,
+                        Some("is-c" | "IS-C" | "isc") => IncrementSystem::IsC,
+                        _ => return Err("`increment` must be \"is-b\" or \"is-c\"".into()),
+                    }
+                }
+                "unit" => {
+                    self.unit = match value.as_str() {
+                        Some("metric" | "mm") => InputUnit::Metric,
+                        Some("inch") => InputUnit::Inch,
+                        _ => return Err("`unit` must be \"metric\" or \"inch\"".into()),
+                    }
+                }
+                "x" => {
+                    self.x_mode = match value.as_str() {
+                        Some("diameter") => XMode::Diameter,
+                        Some("radius") => XMode::Radius,
+                        _ => return Err("`x` must be \"diameter\" or \"radius\"".into()),
+                    }
+                }
+                "calculator_input" => {
+                    self.calculator_input =
+                        value.as_bool().ok_or("`calculator_input` must be true or false")?;
+                }
+                "pass_limit" => {
+                    let v = value.as_integer().ok_or("`pass_limit` must be an integer")?;
+                    self.pass_limit = u32::try_from(v)
+                        .ok()
+                        .filter(|v| *v >= 1)
+                        .ok_or("`pass_limit` must be between 1 and 4294967295")?;
+                }
+                "parameters" => {
+                    let t = value.as_table().ok_or("`parameters` must be a table")?;
+                    for (num, v) in t {
+                        self.set_param(num, v)?;
+                    }
+                }
+                other => return Err(format!("parameter file: unknown key `{other}`")),
+            }
+        }
+        Ok(())
+    }
+
+    fn set_param(&mut self, num: &str, v: &toml::Value) -> Result<(), String> {
+        let known = self.profile.default_params();
+        let Some(default) = known.get(num) else {
+            let list: Vec<&str> = known.keys().map(String::as_str).collect();
+            return Err(format!(
+                "parameter {num} is not used by the {} profile (it knows {})",
+                self.profile.name,
+                list.join(", ")
+            ));
+        };
+        let value = match (default, v) {
+            (ParamValue::Int(_), toml::Value::Integer(i)) => ParamValue::Int(*i),
+            (ParamValue::Length(_), toml::Value::String(s)) => ParamValue::Length(
+                Decimal::from_str_exact(s)
+                    .map_err(|_| format!("parameter {num}: `{s}` is not a decimal length"))?,
+            ),
+            (ParamValue::Length(_), toml::Value::Integer(i)) => ParamValue::Length(Decimal::from(*i)),
+            (ParamValue::Length(_), toml::Value::Float(_)) => {
+                return Err(format!(
+                    "parameter {num}: write lengths as strings (\"0.15\") so they stay exact decimals"
+                ))
+            }
+            (ParamValue::Int(_), _) => return Err(format!("parameter {num} must be an integer")),
+            (ParamValue::Length(_), _) => return Err(format!("parameter {num} must be a length string")),
+        };
+        self.params.insert(num.to_string(), value);
+        Ok(())
+    }
+}

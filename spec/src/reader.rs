@@ -1,0 +1,766 @@
+//! The program reader: modal state and the typed cycle parameters.
+//!
+//! This is the one home of the program's meaning. It tracks what the cycles
+//! depend on (position, motion mode, lead, units, spindle, the modal values
+//! of G76 block 1) and turns every G76 into a [`G76Cycle`] that both the
+//! reference model ([`crate::g76`]) and the engine (`cycleref::engine`)
+//! expand.
+
+use cycleref::g76::{G76Cycle, Infeed, RunOut};
+use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
+use cycleref::units::{Point, MAX_LENGTH};
+use cycleref::{InputUnit, Units};
+use rust_decimal::Decimal;
+
+use crate::error::{ErrorKind, ProgramError};
+use crate::lex::{lex, Block, Word};
+use crate::profile::{Machine, PSplit, PqUnit, RunOutRules};
+
+/// What the reader found in a program, in order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Item {
+    /// A block that is not part of a cycle: echoed as written.
+    Source(Block),
+    /// G76 block 1 (P Q R ...): sets modal values, produces no motion.
+    G76Params(Block),
+    /// G76 block 2: a cycle to expand.
+    G76(G76Call),
+}
+
+/// One G76 cycle of a program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct G76Call {
+    /// Block 2 (the one with X(U) Z(W)).
+    pub block: Block,
+    /// Line of the block 1 whose values are in force, if any.
+    pub params_line: Option<usize>,
+    /// The resolved cycle.
+    pub cycle: G76Cycle,
+    /// What to program after the expansion to give the following blocks
+    /// the modal state they had before the cycle.
+    pub restore: Restore,
+}
+
+/// Modal state to restore after an expanded cycle, whose last block leaves
+/// G00 and the lead in F.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct Restore {
+    /// The motion G code in force before the cycle when it was not G00.
+    pub motion: Option<&'static str>,
+    /// The F word in force before the cycle, when the expansion overwrote it.
+    pub feed: Option<String>,
+}
+
+/// A program read with a machine.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Program {
+    /// The blocks and cycles, in order.
+    pub items: Vec<Item>,
+    /// The units in force for the cycles (fixed before the first motion).
+    pub units: Units,
+}
+
+impl Program {
+    /// The cycles of the program.
+    pub fn cycles(&self) -> impl Iterator<Item = &G76Call> {
+        self.items.iter().filter_map(|i| match i {
+            Item::G76(c) => Some(c),
+            _ => None,
+        })
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MotionMode {
+    G00,
+    G01,
+    G02,
+    G03,
+    G32,
+}
+
+impl MotionMode {
+    fn code(self) -> &'static str {
+        match self {
+            MotionMode::G00 => "G00",
+            MotionMode::G01 => "G01",
+            MotionMode::G02 => "G02",
+            MotionMode::G03 => "G03",
+            MotionMode::G32 => "G32",
+        }
+    }
+}
+
+/// Modal values of G76 block 1 and, on the 988TA, J and K.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct G76Modal {
+    finishing_passes: Option<u32>,
+    chamfer: Option<u32>,
+    tool_angle: Option<u32>,
+    min_cut: Option<i64>,
+    allowance: Option<i64>,
+    j: Option<i64>,
+    k: Option<i64>,
+}
+
+/// One-shot values of the last block 1 (D, L, E; J, K on the 980TDi).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct G76OneShot {
+    infeed: Option<Infeed>,
+    starts: Option<u32>,
+    lead_in: Option<i64>,
+    j: Option<i64>,
+    k: Option<i64>,
+    line: Option<usize>,
+}
+
+struct Reader<'m> {
+    machine: &'m Machine,
+    units: Units,
+    x: Option<i64>,
+    z: Option<i64>,
+    moved: bool,
+    motion: MotionMode,
+    feed_word: Option<String>,
+    lead: Option<Lead>,
+    speed: bool,
+    spindle_on: bool,
+    modal: G76Modal,
+    one_shot: G76OneShot,
+}
+
+fn err(block: &Block, word: Option<&Word>, kind: ErrorKind) -> ProgramError {
+    ProgramError { line: block.line, word: word.map(|w| w.text.clone()), kind }
+}
+
+/// Reads `source` with `machine`.
+///
+/// # Errors
+///
+/// The first [`ProgramError`] in program order.
+pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
+    let blocks = lex(source)?;
+    let mut r = Reader {
+        machine,
+        units: machine.units(),
+        x: None,
+        z: None,
+        moved: false,
+        motion: MotionMode::G00,
+        feed_word: None,
+        lead: None,
+        speed: false,
+        spindle_on: false,
+        modal: G76Modal::default(),
+        one_shot: G76OneShot::default(),
+    };
+    if let Some(mode) = machine.profile.params.thread_mode {
+        if machine.int_param(mode) != 0 {
+            return Err(ProgramError {
+                line: 1,
+                word: None,
+                kind: ErrorKind::Parameter(format!(
+                    "{mode} = {} selects the high-speed threading mode, whose run-out rules are not \
+                     modelled; set it to 0",
+                    machine.int_param(mode)
+                )),
+            });
+        }
+    }
+    let mut items = Vec::with_capacity(blocks.len());
+    for block in blocks {
+        items.push(r.block(block)?);
+    }
+    Ok(Program { items, units: r.units })
+}
+
+impl Reader<'_> {
+    fn increment_text(&self) -> String {
+        let unit = match self.units.unit {
+            InputUnit::Metric => "mm",
+            InputUnit::Inch => "inch",
+        };
+        let mut s = String::from("0.");
+        for _ in 1..self.units.decimals() {
+            s.push('0');
+        }
+        s.push('1');
+        format!("{s} {unit}")
+    }
+
+    /// A length word in increments. `bare_increments` says what a value
+    /// without a decimal point means.
+    fn to_increments(&self, block: &Block, w: &Word, bare_increments: bool) -> Result<i64, ProgramError> {
+        let n = &w.number;
+        let v = if !n.has_point() && bare_increments {
+            n.integer()
+        } else {
+            n.decimal().and_then(|d| {
+                let scaled = d * Decimal::from(self.units.per_unit());
+                if scaled.fract().is_zero() {
+                    i64::try_from(scaled.trunc()).ok()
+                } else {
+                    None
+                }
+            })
+        };
+        let v = v.ok_or_else(|| {
+            err(block, Some(w), ErrorKind::NotInIncrements { increment: self.increment_text() })
+        })?;
+        if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+            return Err(err(block, Some(w), self.range_err(true)));
+        }
+        Ok(v)
+    }
+
+    fn range_err(&self, signed: bool) -> ErrorKind {
+        let mut max = String::new();
+        let _ = cycleref::units::write_fixed(&mut max, i128::from(MAX_LENGTH), self.units.decimals());
+        ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
+    }
+
+    fn length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+        let bare = self.machine.profile.bare_length_is_increments && !self.machine.calculator_input;
+        self.to_increments(block, w, bare)
+    }
+
+    fn unsigned_length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+        let v = self.length(block, w)?;
+        if v < 0 {
+            return Err(err(block, Some(w), self.range_err(false)));
+        }
+        Ok(v)
+    }
+
+    /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
+    fn pq_length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+        let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
+        let v = match self.machine.profile.pq_unit(bit) {
+            PqUnit::IncrementsNoPoint => {
+                if w.number.has_point() {
+                    return Err(err(
+                        block,
+                        Some(w),
+                        ErrorKind::DecimalPointNotAllowed {
+                            rule: "P(k), Q(Δd) and Q(Δdmin) of G76 are given in least increments",
+                        },
+                    ));
+                }
+                self.to_increments(block, w, true)?
+            }
+            PqUnit::Increments => {
+                let v = w.number.integer().ok_or_else(|| {
+                    err(
+                        block,
+                        Some(w),
+                        ErrorKind::NotInIncrements {
+                            increment: "the state parameter selects least increments for P and Q".into(),
+                        },
+                    )
+                })?;
+                if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+                    return Err(err(block, Some(w), self.range_err(false)));
+                }
+                v
+            }
+            PqUnit::Length => self.to_increments(block, w, false)?,
+        };
+        if v < 0 {
+            return Err(err(block, Some(w), self.range_err(false)));
+        }
+        Ok(v)
+    }
+
+    fn count(block: &Block, w: &Word, lo: i64, hi: i64) -> Result<u32, ProgramError> {
+        match w.number.integer() {
+            Some(v) if (lo..=hi).contains(&v) && !w.number.has_point() => {
+                Ok(u32::try_from(v).unwrap_or(u32::MAX))
+            }
+            _ => Err(err(block, Some(w), ErrorKind::OutOfRange { range: format!("whole number {lo}..{hi}") })),
+        }
+    }
+
+    fn lead(&self, block: &Block, w: &Word) -> Result<Lead, ProgramError> {
+        let n = &w.number;
+        let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
+        let frac = n.frac_digits.clone().unwrap_or_default();
+        let frac = frac.trim_end_matches('0');
+        let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
+        let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+        // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
+        // I 0.0001..254 (metric) / 0.0001..100 (inch).
+        let (lo, hi, range) = match (word, self.units.unit) {
+            (LeadWord::F, InputUnit::Metric) => ("0.0001", "9999", "F 0.0001..9999 mm"),
+            (LeadWord::F, InputUnit::Inch) => ("0.00001", "9.99", "F 0.00001..9.99 inch"),
+            (LeadWord::I, InputUnit::Metric) => ("0.0001", "254", "I 0.0001..254 threads per inch"),
+            (LeadWord::I, InputUnit::Inch) => ("0.0001", "100", "I 0.0001..100 threads per inch"),
+        };
+        let value = n.decimal().ok_or_else(|| out(range))?;
+        let lo = Decimal::from_str_exact(lo).unwrap_or(Decimal::ONE);
+        let hi = Decimal::from_str_exact(hi).unwrap_or(Decimal::ONE);
+        if n.negative || value < lo || value > hi || scale > MAX_LEAD_SCALE {
+            return Err(out(range));
+        }
+        let digits = format!("{}{frac}", n.int_digits);
+        let mantissa: u64 = digits.trim_start_matches('0').parse().unwrap_or(0);
+        Ok(Lead { word, mantissa, scale })
+    }
+
+    fn block(&mut self, block: Block) -> Result<Item, ProgramError> {
+        // G codes of the block.
+        let mut g76 = false;
+        let mut g50 = false;
+        let mut g04 = false;
+        let mut motion = None;
+        for w in block.all('G') {
+            let code = w.number.decimal().unwrap_or(Decimal::NEGATIVE_ONE);
+            let whole = w.number.integer();
+            match whole {
+                Some(0) => motion = Some(MotionMode::G00),
+                Some(1) => motion = Some(MotionMode::G01),
+                Some(2) => motion = Some(MotionMode::G02),
+                Some(3) => motion = Some(MotionMode::G03),
+                Some(32) => motion = Some(MotionMode::G32),
+                Some(4) => g04 = true,
+                Some(50) => g50 = true,
+                Some(76) => g76 = true,
+                Some(20 | 21) => {
+                    let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
+                    if unit != self.units.unit {
+                        if self.moved || self.x.is_some() || self.z.is_some() {
+                            return Err(err(&block, Some(w), ErrorKind::UnitChangeAfterMotion));
+                        }
+                        self.units.unit = unit;
+                    }
+                }
+                Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
+                _ => {
+                    return Err(err(
+                        &block,
+                        Some(w),
+                        ErrorKind::Unsupported(format!(
+                            "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
+                             G76, G96-G99)"
+                        )),
+                    ))
+                }
+            }
+        }
+        // M codes and S.
+        for w in block.all('M') {
+            match w.number.integer() {
+                Some(3 | 4) => self.spindle_on = true,
+                Some(5) => self.spindle_on = false,
+                _ => {}
+            }
+        }
+        if let Some(s) = block.get('S')? {
+            if !g50 && s.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
+                self.speed = true;
+            }
+        }
+        if g76 {
+            if motion.is_some() {
+                return Err(err(
+                    &block,
+                    None,
+                    ErrorKind::Unsupported("a motion G code in the same block as G76".into()),
+                ));
+            }
+            return if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
+                self.g76_block2(block).map(Item::G76)
+            } else {
+                self.g76_block1(&block)?;
+                Ok(Item::G76Params(block))
+            };
+        }
+        if let Some(f) = block.get('F')? {
+            self.feed_word = Some(f.text.clone());
+            if f.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
+                self.lead = Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
+            }
+        }
+        if let Some(m) = motion {
+            self.motion = m;
+        }
+        if g04 {
+            return Ok(Item::Source(block));
+        }
+        let xw = block.get('X')?;
+        let zw = block.get('Z')?;
+        let uw = block.get('U')?;
+        let ww = block.get('W')?;
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return Err(err(
+                &block,
+                uw.or(ww),
+                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
+            ));
+        }
+        if g50 {
+            if uw.is_some() || ww.is_some() {
+                return Err(err(&block, uw.or(ww), ErrorKind::Unsupported("U/W in G50".into())));
+            }
+            if let Some(w) = xw {
+                self.x = Some(self.length(&block, w)?);
+            }
+            if let Some(w) = zw {
+                self.z = Some(self.length(&block, w)?);
+            }
+            return Ok(Item::Source(block));
+        }
+        if xw.is_some() || zw.is_some() || uw.is_some() || ww.is_some() {
+            if self.motion == MotionMode::G32 {
+                self.check_spindle(&block)?;
+            }
+            self.x = self.axis(&block, xw, uw, self.x)?;
+            self.z = self.axis(&block, zw, ww, self.z)?;
+            self.moved = true;
+        }
+        Ok(Item::Source(block))
+    }
+
+    fn axis(
+        &self,
+        block: &Block,
+        abs: Option<&Word>,
+        inc: Option<&Word>,
+        cur: Option<i64>,
+    ) -> Result<Option<i64>, ProgramError> {
+        if let Some(w) = abs {
+            return Ok(Some(self.length(block, w)?));
+        }
+        if let Some(w) = inc {
+            let d = self.length(block, w)?;
+            let c = cur.ok_or_else(|| err(block, Some(w), ErrorKind::PositionUnknown))?;
+            let v = c + d;
+            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+                return Err(err(block, Some(w), self.range_err(true)));
+            }
+            return Ok(Some(v));
+        }
+        Ok(cur)
+    }
+
+    fn check_spindle(&self, block: &Block) -> Result<(), ProgramError> {
+        if self.speed && self.spindle_on {
+            Ok(())
+        } else {
+            Err(err(block, None, ErrorKind::NoSpindleSpeed))
+        }
+    }
+
+    fn check_addresses(&self, block: &Block, allowed: &str) -> Result<(), ProgramError> {
+        for w in &block.words {
+            if !allowed.contains(w.letter) {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::AddressNotInProfile { profile: self.machine.profile.name.to_string() },
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// G76 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's extras.
+    fn g76_block1(&mut self, block: &Block) -> Result<(), ProgramError> {
+        let profile = &self.machine.profile;
+        let allowed = format!("GPQRMST{}", profile.block1_extra);
+        self.check_addresses(block, &allowed)?;
+        if let Some(p) = block.get('P')? {
+            self.split_p(block, p)?;
+        }
+        if let Some(q) = block.get('Q')? {
+            self.modal.min_cut = Some(self.pq_length(block, q)?);
+        }
+        if let Some(r) = block.get('R')? {
+            self.modal.allowance = Some(self.unsigned_length(block, r)?);
+        }
+        let mut one = G76OneShot { line: Some(block.line), ..G76OneShot::default() };
+        if let Some(d) = block.get('D')? {
+            one.infeed = Some(match Self::count(block, d, 0, 2)? {
+                0 => Infeed::RightFlank,
+                1 => Infeed::RightCentre,
+                _ => Infeed::LeftRight,
+            });
+        }
+        if let Some(l) = block.get('L')? {
+            one.starts = Some(Self::count(block, l, 1, 999)?);
+        }
+        if let Some(e) = block.get('E')? {
+            one.lead_in = Some(self.unsigned_length(block, e)?);
+        }
+        if let Some(j) = block.get('J')? {
+            one.j = Some(self.unsigned_length(block, j)?);
+        }
+        if let Some(k) = block.get('K')? {
+            one.k = Some(self.unsigned_length(block, k)?);
+        }
+        self.one_shot = one;
+        Ok(())
+    }
+
+    /// Reading R-PSPLIT: last two digits a, next two r, the rest m.
+    fn split_p(&mut self, block: &Block, p: &Word) -> Result<(), ProgramError> {
+        if p.number.has_point() || p.number.negative {
+            return Err(err(
+                block,
+                Some(p),
+                ErrorKind::DecimalPointNotAllowed { rule: "P(m)(r)(a) is a string of digits" },
+            ));
+        }
+        let digits = &p.number.int_digits;
+        let n = digits.len();
+        let part = |from: usize, to: usize| -> u32 { digits[from..to].parse().unwrap_or(0) };
+        let whole = self.machine.profile.p_split == PSplit::WholeOnly;
+        if whole && n < 5 {
+            return Err(err(block, Some(p), ErrorKind::PartialP));
+        }
+        if n > 6 {
+            return Err(err(block, Some(p), ErrorKind::OutOfRange { range: "m 0..99, r 00..99, a 00..99".into() }));
+        }
+        let a = part(n.saturating_sub(2), n);
+        self.modal.tool_angle = Some(a);
+        if n >= 3 {
+            self.modal.chamfer = Some(part(n.saturating_sub(4), n - 2));
+        }
+        if n >= 5 {
+            let m = part(0, n - 4);
+            let min = self.machine.profile.min_finishing_passes;
+            if m < min {
+                return Err(err(
+                    block,
+                    Some(p),
+                    ErrorKind::OutOfRange { range: format!("finishing passes m {min:02}..99") },
+                ));
+            }
+            self.modal.finishing_passes = Some(m);
+        }
+        Ok(())
+    }
+
+    fn param_count(&self, number: &str, lo: i64, hi: i64) -> Result<u32, ProgramError> {
+        let v = self.machine.int_param(number);
+        if (lo..=hi).contains(&v) {
+            Ok(u32::try_from(v).unwrap_or(0))
+        } else {
+            Err(ProgramError {
+                line: 0,
+                word: None,
+                kind: ErrorKind::Parameter(format!("{number} = {v} is outside {lo}..{hi}")),
+            })
+        }
+    }
+
+    fn param_length(&self, number: &str) -> Result<i64, ProgramError> {
+        let d = self.machine.length_param(number) * Decimal::from(self.units.per_unit());
+        match i64::try_from(d.trunc()) {
+            Ok(v) if d.fract().is_zero() && (0..=MAX_LENGTH).contains(&v) => Ok(v),
+            _ => Err(ProgramError {
+                line: 0,
+                word: None,
+                kind: ErrorKind::Parameter(format!(
+                    "{number} = {} is not a whole number of least increments in 0..{}",
+                    self.machine.length_param(number),
+                    MAX_LENGTH
+                )),
+            }),
+        }
+    }
+
+    /// G76 block 2: `X(U) Z(W) R(i) P(k) Q(Δd) F(I)` and the profile's extras.
+    fn g76_block2(&mut self, block: Block) -> Result<G76Call, ProgramError> {
+        let profile = self.machine.profile.clone();
+        let allowed = format!("GXZUWRPQFIMST{}", profile.block2_extra);
+        self.check_addresses(&block, &allowed)?;
+        let with_line = |mut e: ProgramError| {
+            if e.line == 0 {
+                e.line = block.line;
+            }
+            e
+        };
+        let (Some(xa), Some(za)) = (self.x, self.z) else {
+            return Err(err(&block, None, ErrorKind::PositionUnknown));
+        };
+        self.check_spindle(&block)?;
+        let xw = block.get('X')?;
+        let uw = block.get('U')?;
+        let zw = block.get('Z')?;
+        let ww = block.get('W')?;
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return Err(err(
+                &block,
+                uw.or(ww),
+                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
+            ));
+        }
+        let xd = self.axis(&block, xw, uw, Some(xa))?.unwrap_or(xa);
+        let zd = self.axis(&block, zw, ww, Some(za))?.unwrap_or(za);
+        let taper = match block.get('R')? {
+            Some(w) => self.length(&block, w)?,
+            None => 0,
+        };
+        let k = block.get('P')?.ok_or_else(|| {
+            err(&block, None, ErrorKind::Missing { what: "P(k) (thread height)", rule: "alarm when P(k) is not given" })
+        })?;
+        let k = self.pq_length(&block, k).and_then(|v| {
+            if v == 0 || v > profile.max_depth_increments {
+                Err(err(&block, Some(k), ErrorKind::OutOfRange { range: format!("1..{} least increments", profile.max_depth_increments) }))
+            } else {
+                Ok(v)
+            }
+        })?;
+        let dd = block.get('Q')?.ok_or_else(|| {
+            err(&block, None, ErrorKind::Missing { what: "Q(Δd) (first depth)", rule: "alarm when Δd is not given" })
+        })?;
+        let first_depth = self.pq_length(&block, dd).and_then(|v| {
+            if v == 0 || v > profile.max_depth_increments {
+                Err(err(&block, Some(dd), ErrorKind::OutOfRange { range: format!("1..{} least increments", profile.max_depth_increments) }))
+            } else {
+                Ok(v)
+            }
+        })?;
+        let f = block.get('F')?;
+        let i = block.get('I')?;
+        let lead = match (f, i) {
+            (Some(f), Some(_)) => {
+                return Err(err(&block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
+            }
+            (Some(w), None) | (None, Some(w)) => {
+                let l = self.lead(&block, w)?;
+                if w.letter == 'F' {
+                    self.feed_word = Some(w.text.clone());
+                }
+                l
+            }
+            (None, None) => self.lead.ok_or_else(|| {
+                err(&block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
+            })?,
+        };
+        self.lead = Some(lead);
+        let mut j = None;
+        let mut kk = None;
+        if profile.block2_extra.contains('J') {
+            if let Some(w) = block.get('J')? {
+                j = Some(self.unsigned_length(&block, w)?);
+            }
+            if let Some(w) = block.get('K')? {
+                kk = Some(self.unsigned_length(&block, w)?);
+            }
+        }
+        let one = std::mem::take(&mut self.one_shot);
+        if profile.block1_extra.contains('J') {
+            j = one.j;
+            kk = one.k;
+        }
+        if profile.jk_modal {
+            if j.is_some() {
+                self.modal.j = j;
+            }
+            if kk.is_some() {
+                self.modal.k = kk;
+            }
+            j = self.modal.j;
+            kk = self.modal.k;
+        }
+        let p = &profile.params;
+        let m = match self.modal.finishing_passes {
+            Some(m) => m,
+            None => self.param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99).map_err(with_line)?,
+        };
+        let a = match self.modal.tool_angle {
+            Some(a) => a,
+            None => self.param_count(p.tool_angle, 0, 99).map_err(with_line)?,
+        };
+        let r = match self.modal.chamfer {
+            Some(r) => r,
+            None => self.param_count(p.chamfer, 0, 99).map_err(with_line)?,
+        };
+        let angle = match p.chamfer_angle {
+            Some(n) => match self.param_count(n, 0, 89).map_err(with_line)? {
+                0 => 45,
+                v => v,
+            },
+            None => 45,
+        };
+        let min_cut = match self.modal.min_cut {
+            Some(v) => v,
+            None => self.param_length(p.min_cut).map_err(with_line)?,
+        };
+        let allowance = match self.modal.allowance {
+            Some(v) => v,
+            None => self.param_length(p.finishing_allowance).map_err(with_line)?,
+        };
+        let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
+        let restore = Restore {
+            motion: (self.motion != MotionMode::G00).then(|| self.motion.code()),
+            feed: self.feed_word.clone(),
+        };
+        let cycle = G76Cycle {
+            units: self.units,
+            x_mode: self.machine.x_mode,
+            start: Point::new(xa, za),
+            end: Point::new(xd, zd),
+            taper,
+            thread_height: k,
+            first_depth,
+            min_cut,
+            finishing_allowance: allowance,
+            finishing_passes: m,
+            tool_angle: a,
+            infeed: one.infeed.unwrap_or(Infeed::RightFlank),
+            lead_in: one.lead_in.unwrap_or(0),
+            starts: one.starts.unwrap_or(1),
+            lead,
+            run_out,
+            pass_limit: self.machine.pass_limit,
+        };
+        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        self.moved = true;
+        Ok(G76Call { params_line: one.line, block, cycle, restore })
+    }
+}
+
+/// Reading R-RUNOUT: the profile's rules for J, K and r, turned into what
+/// the cycle must do.
+#[must_use]
+pub fn resolve_run_out(rules: RunOutRules, j: Option<i64>, k: Option<i64>, r: u32, angle: u32) -> RunOut {
+    let chamfer = |long: Option<i64>| {
+        if r == 0 && long.is_none() {
+            RunOut::None
+        } else {
+            RunOut::Chamfer { tenths_of_lead: r, angle_degrees: angle, long }
+        }
+    };
+    match rules {
+        RunOutRules::ChamferOnly => chamfer(None),
+        RunOutRules::Gsk980 => match (j, k) {
+            // Note 1: J and K omitted: by P(r) (or No.19).
+            (None, None) => chamfer(None),
+            // Note 2: J omitted, K != 0: J by P(r), K as given.
+            (None, Some(k)) if k != 0 => {
+                if r == 0 {
+                    RunOut::None
+                } else {
+                    RunOut::Chamfer { tenths_of_lead: r, angle_degrees: angle, long: Some(k) }
+                }
+            }
+            (None, Some(_)) => chamfer(None),
+            // Note 4: J = 0: none.
+            (Some(0), _) => RunOut::None,
+            // Note 3: K omitted or K = 0 with J != 0: K = J.
+            (Some(j), None | Some(0)) => RunOut::Amounts { short: j, long: j },
+            (Some(j), Some(k)) => RunOut::Amounts { short: j, long: k },
+        },
+        RunOutRules::Gsk988 => match (j, k) {
+            // Seed 000: J and K omitted: by r and 5131, or 5130.
+            (None, None) => chamfer(None),
+            // G92 normal mode (note 9): J omitted: none.
+            (None, Some(_)) | (Some(0), _) | (Some(_), Some(0)) => RunOut::None,
+            // K omitted: no long-axis run-out, short axis by J.
+            (Some(j), None) => RunOut::Amounts { short: j, long: 0 },
+            (Some(j), Some(k)) => RunOut::Amounts { short: j, long: k },
+        },
+    }
+}
