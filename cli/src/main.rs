@@ -1,2 +1,283 @@
-//! The cycleref command.
-fn main() {}
+//! The `cycleref` command: expands the cycles of an NC program into plain
+//! moves, tabulates their passes and draws them.
+//!
+//! Exit status: 0 on success, 2 on any error (with a message naming the
+//! file, line, word and rule on stderr, and nothing on stdout).
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+mod format;
+mod plot;
+
+use std::fmt::Write as _;
+use std::io::Read as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use cycleref::{CycleError, G76Cycle, IncrementSystem, InputUnit, Move, XMode};
+use cycleref_spec::reader::Item;
+use cycleref_spec::{read, Machine, ProfileName, Program};
+use serde_json::json;
+
+#[derive(Parser)]
+#[command(name = "cycleref", version, about = "Reference expansion of lathe thread-cutting cycles (G76)")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Print the program with every cycle replaced by plain blocks.
+    Expand {
+        #[command(flatten)]
+        common: Common,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Nc)]
+        format: Format,
+    },
+    /// Print a table of the passes of every cycle.
+    Passes {
+        #[command(flatten)]
+        common: Common,
+    },
+    /// Draw the toolpath of every cycle in the XZ plane as SVG.
+    Plot {
+        #[command(flatten)]
+        common: Common,
+        /// Output file.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+}
+
+#[derive(Args)]
+struct Common {
+    /// Control profile.
+    #[arg(long, value_enum, default_value_t = Profile::Gsk988)]
+    profile: Profile,
+    /// Increment system.
+    #[arg(long, value_enum)]
+    increment: Option<Increment>,
+    /// Inch input at program start (G20); G20/G21 in the program override it.
+    #[arg(long)]
+    inch: bool,
+    /// X words are radii, not diameters.
+    #[arg(long)]
+    radius: bool,
+    /// Parameter file (TOML), applied after the profile's defaults.
+    #[arg(long, value_name = "FILE")]
+    params: Option<PathBuf>,
+    /// Engine that expands the cycles.
+    #[arg(long, value_enum, default_value_t = Engine::Spec)]
+    engine: Engine,
+    /// Program file, or `-` for standard input.
+    #[arg(default_value = "-")]
+    file: PathBuf,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Profile {
+    Fanuc,
+    Gsk980,
+    Gsk988,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Increment {
+    #[value(name = "is-b")]
+    IsB,
+    #[value(name = "is-c")]
+    IsC,
+}
+
+#[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
+enum Engine {
+    /// The exact-decimal reference model (cycleref-spec).
+    Spec,
+}
+
+#[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
+enum Format {
+    Nc,
+    Json,
+}
+
+/// An error for the user: printed on stderr, exit status 2.
+struct Failure(String);
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(out) => {
+            print!("{out}");
+            ExitCode::SUCCESS
+        }
+        Err(Failure(msg)) => {
+            eprintln!("cycleref: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<String, Failure> {
+    match cli.command {
+        Command::Expand { common, format } => {
+            let job = Job::load(&common)?;
+            match format {
+                Format::Nc => job.nc(),
+                Format::Json => job.json(),
+            }
+        }
+        Command::Passes { common } => Job::load(&common)?.passes(),
+        Command::Plot { common, output } => {
+            let job = Job::load(&common)?;
+            let svg = job.plot()?;
+            std::fs::write(&output, svg)
+                .map_err(|e| Failure(format!("{}: cannot write: {e}", output.display())))?;
+            Ok(String::new())
+        }
+    }
+}
+
+/// A program read and ready to expand.
+struct Job {
+    name: String,
+    program: Program,
+    engine: Engine,
+}
+
+impl Job {
+    fn load(c: &Common) -> Result<Job, Failure> {
+        let name = c.file.display().to_string();
+        let text = if name == "-" {
+            let mut s = String::new();
+            std::io::stdin().read_to_string(&mut s).map_err(|e| Failure(format!("stdin: {e}")))?;
+            s
+        } else {
+            std::fs::read_to_string(&c.file).map_err(|e| Failure(format!("{name}: {e}")))?
+        };
+        let mut machine = Machine::new(match c.profile {
+            Profile::Fanuc => ProfileName::Fanuc,
+            Profile::Gsk980 => ProfileName::Gsk980,
+            Profile::Gsk988 => ProfileName::Gsk988,
+        });
+        if let Some(p) = &c.params {
+            let t = std::fs::read_to_string(p).map_err(|e| Failure(format!("{}: {e}", p.display())))?;
+            machine.apply_toml(&t).map_err(|e| Failure(format!("{}: {e}", p.display())))?;
+        }
+        if let Some(i) = c.increment {
+            machine.increment = match i {
+                Increment::IsB => IncrementSystem::IsB,
+                Increment::IsC => IncrementSystem::IsC,
+            };
+        }
+        if c.inch {
+            machine.unit = InputUnit::Inch;
+        }
+        if c.radius {
+            machine.x_mode = XMode::Radius;
+        }
+        let program = read(&text, &machine).map_err(|e| Failure(format!("{name}: {e}")))?;
+        Ok(Job { name, program, engine: c.engine })
+    }
+
+    fn expand(&self, cycle: &G76Cycle, line: usize) -> Result<Vec<Move>, Failure> {
+        let r: Result<Vec<Move>, CycleError> = match self.engine {
+            Engine::Spec => cycleref_spec::g76::expand(cycle),
+        };
+        r.map_err(|e| Failure(format!("{}: line {line}, G76: {e}", self.name)))
+    }
+
+    fn nc(&self) -> Result<String, Failure> {
+        let mut out = String::new();
+        for item in &self.program.items {
+            match item {
+                Item::Source(b) => {
+                    let _ = writeln!(out, "{}", b.text);
+                }
+                Item::G76Params(_) => {}
+                Item::G76(call) => {
+                    let moves = self.expand(&call.cycle, call.block.line)?;
+                    format::nc_cycle(&mut out, call, &moves);
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn json(&self) -> Result<String, Failure> {
+        let mut cycles = Vec::new();
+        for call in self.program.cycles() {
+            let moves = self.expand(&call.cycle, call.block.line)?;
+            let u = call.cycle.units;
+            cycles.push(json!({
+                "cycle": "G76",
+                "line": call.block.line,
+                "params_line": call.params_line,
+                "start": {"x": format::fixed(call.cycle.start.x, u), "z": format::fixed(call.cycle.start.z, u)},
+                "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
+            }));
+        }
+        let doc = json!({
+            "format": "cycleref-moves/1",
+            "file": self.name,
+            "units": {
+                "unit": match self.program.units.unit { InputUnit::Metric => "mm", InputUnit::Inch => "inch" },
+                "decimals": self.program.units.decimals(),
+            },
+            "cycles": cycles,
+        });
+        let mut s = serde_json::to_string_pretty(&doc).map_err(|e| Failure(e.to_string()))?;
+        s.push('\n');
+        Ok(s)
+    }
+
+    fn passes(&self) -> Result<String, Failure> {
+        let mut out = String::new();
+        for call in self.program.cycles() {
+            let moves = self.expand(&call.cycle, call.block.line)?;
+            let u = call.cycle.units;
+            let _ = writeln!(out, "G76 at line {} ({}):", call.block.line, self.name);
+            let _ = writeln!(
+                out,
+                "{:>6} {:>6} {:>5} {:>6} {:>12} {:>12} {:>14} {:>14}",
+                "pass", "kind", "start", "flank", "depth", "cut", "X", "Z"
+            );
+            for m in moves.iter().filter(|m| m.role == cycleref::Role::Approach) {
+                let Some(p) = m.pass else { continue };
+                // The pass start Bn is where the approach ends unless a lead-in follows.
+                let bn = moves
+                    .iter()
+                    .skip_while(|n| !std::ptr::eq(*n, m))
+                    .find(|n| n.role == cycleref::Role::LeadIn)
+                    .filter(|n| n.pass == Some(p))
+                    .map_or(m.to, |n| n.to);
+                let _ = writeln!(
+                    out,
+                    "{:>6} {:>6} {:>5} {:>6} {:>12} {:>12} {:>14} {:>14}",
+                    p.number,
+                    format::kind_name(p.kind),
+                    p.start,
+                    format::flank_name(p.flank),
+                    format::fixed(p.depth, u),
+                    format::fixed(p.cut, u),
+                    format::fixed(bn.x, u),
+                    format::fixed(bn.z, u)
+                );
+            }
+            out.push('\n');
+        }
+        Ok(out)
+    }
+
+    fn plot(&self) -> Result<String, Failure> {
+        let mut cycles = Vec::new();
+        for call in self.program.cycles() {
+            let moves = self.expand(&call.cycle, call.block.line)?;
+            cycles.push((call.clone(), moves));
+        }
+        plot::svg(&self.name, &cycles).map_err(Failure)
+    }
+}

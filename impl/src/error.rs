@@ -173,10 +173,9 @@ impl fmt::Display for CycleError {
                 "R(d) = {allowance} is larger than the thread height P(k) = {height} (alarm: note 6, \
                  finishing allowance larger than the thread height)"
             ),
-            CycleError::FaceThread => write!(
-                f,
-                "the thread end Z(W) equals the Z of the start point: G76 cannot cut face threads"
-            ),
+            CycleError::FaceThread => {
+                write!(f, "the thread end Z(W) equals the Z of the start point: G76 cannot cut face threads")
+            }
             CycleError::RunOutTooLong { run_out, length } => write!(
                 f,
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \

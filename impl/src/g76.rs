@@ -159,7 +159,10 @@ impl G76Cycle {
             }
         }
         if c.finishing_passes > 99 {
-            return Err(CycleError::CountOutOfRange { field: Field::FinishingPasses, value: c.finishing_passes });
+            return Err(CycleError::CountOutOfRange {
+                field: Field::FinishingPasses,
+                value: c.finishing_passes,
+            });
         }
         if c.tool_angle > 99 {
             return Err(CycleError::CountOutOfRange { field: Field::ToolAngle, value: c.tool_angle });
@@ -172,7 +175,10 @@ impl G76Cycle {
         }
         // Note 6: minimum cut or finishing allowance larger than the thread height.
         if c.min_cut > c.thread_height {
-            return Err(CycleError::MinCutExceedsHeight { min_cut: c.len(c.min_cut), height: c.len(c.thread_height) });
+            return Err(CycleError::MinCutExceedsHeight {
+                min_cut: c.len(c.min_cut),
+                height: c.len(c.thread_height),
+            });
         }
         if c.finishing_allowance > c.thread_height {
             return Err(CycleError::AllowanceExceedsHeight {

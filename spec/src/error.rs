@@ -96,10 +96,9 @@ impl fmt::Display for ErrorKind {
                  it can only be omitted as a whole (note 4)"
             ),
             ErrorKind::Unsupported(s) => write!(f, "not supported: {s}"),
-            ErrorKind::PositionUnknown => write!(
-                f,
-                "the tool position is not known yet (program an absolute X and Z, or G50, first)"
-            ),
+            ErrorKind::PositionUnknown => {
+                write!(f, "the tool position is not known yet (program an absolute X and Z, or G50, first)")
+            }
             ErrorKind::NoSpindleSpeed => write!(
                 f,
                 "no spindle speed commanded before thread cutting (alarm: the system checks the \

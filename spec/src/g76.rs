@@ -334,7 +334,8 @@ pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
         RunOut::Amounts { short, long } => (short, long),
         RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
             let lead = c.lead.increments_per_rev(u);
-            let chamfer = round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
+            let chamfer =
+                round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
             let chamfer = i64::try_from(chamfer).unwrap_or(i64::MAX);
             let short = crate::tan::mul_tan_round(chamfer, 2 * angle_degrees).unwrap_or(i64::MAX);
             (short, long.unwrap_or(chamfer))

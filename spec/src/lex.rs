@@ -125,7 +125,7 @@ impl Block {
 /// [`ErrorKind::Syntax`] for characters that are not part of a word, an
 /// unclosed comment or an address without a number.
 pub fn lex(source: &str) -> Result<Vec<Block>, ProgramError> {
-    let mut blocks = Vec::new();
+    let mut blocks: Vec<Block> = Vec::new();
     for (i, line) in source.lines().enumerate() {
         let line_no = i + 1;
         let chars: Vec<(usize, char)> = line.char_indices().collect();
@@ -133,11 +133,21 @@ pub fn lex(source: &str) -> Result<Vec<Block>, ProgramError> {
         let mut start_byte = 0;
         let mut words = Vec::new();
         let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
+        let first_block = blocks.len();
         let mut flush = |words: &mut Vec<Word>, from: usize, to: usize| {
             let text = line[from..to].trim().to_string();
-            if !text.is_empty() || !words.is_empty() {
-                blocks.push(Block { line: line_no, text, words: std::mem::take(words) });
+            if text.is_empty() && words.is_empty() {
+                return;
             }
+            // A comment after a block end on the same line belongs to that block.
+            if words.is_empty() && blocks.len() > first_block {
+                if let Some(prev) = blocks.last_mut() {
+                    prev.text.push(' ');
+                    prev.text.push_str(&text);
+                    return;
+                }
+            }
+            blocks.push(Block { line: line_no, text, words: std::mem::take(words) });
         };
         while pos < chars.len() {
             let (byte, c) = chars[pos];
@@ -186,8 +196,7 @@ pub fn lex(source: &str) -> Result<Vec<Block>, ProgramError> {
                     let no_digits =
                         int_digits.is_empty() && frac_digits.as_ref().is_none_or(|f| f.is_empty());
                     let end_byte = chars.get(pos).map_or(line.len(), |p| p.0);
-                    let text: String =
-                        line[byte..end_byte].chars().filter(|c| !c.is_whitespace()).collect();
+                    let text: String = line[byte..end_byte].chars().filter(|c| !c.is_whitespace()).collect();
                     if no_digits {
                         return Err(ProgramError {
                             line: line_no,

@@ -45,10 +45,11 @@ pub struct G76Call {
 /// G00 and the lead in F.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct Restore {
-    /// The motion G code in force before the cycle when it was not G00.
+    /// The motion G code in force before the cycle when it was not G00
+    /// (G76 is a one-shot code; the expansion ends with G00). The F register
+    /// needs no restoring: the expansion writes the lead exactly as the
+    /// cycle programmed or inherited it (reading R-NCOUT).
     pub motion: Option<&'static str>,
-    /// The F word in force before the cycle, when the expansion overwrote it.
-    pub feed: Option<String>,
 }
 
 /// A program read with a machine.
@@ -121,7 +122,6 @@ struct Reader<'m> {
     z: Option<i64>,
     moved: bool,
     motion: MotionMode,
-    feed_word: Option<String>,
     lead: Option<Lead>,
     speed: bool,
     spindle_on: bool,
@@ -147,7 +147,6 @@ pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
         z: None,
         moved: false,
         motion: MotionMode::G00,
-        feed_word: None,
         lead: None,
         speed: false,
         spindle_on: false,
@@ -276,7 +275,9 @@ impl Reader<'_> {
             Some(v) if (lo..=hi).contains(&v) && !w.number.has_point() => {
                 Ok(u32::try_from(v).unwrap_or(u32::MAX))
             }
-            _ => Err(err(block, Some(w), ErrorKind::OutOfRange { range: format!("whole number {lo}..{hi}") })),
+            _ => {
+                Err(err(block, Some(w), ErrorKind::OutOfRange { range: format!("whole number {lo}..{hi}") }))
+            }
         }
     }
 
@@ -355,7 +356,10 @@ impl Reader<'_> {
             }
         }
         if let Some(s) = block.get('S')? {
-            if !g50 && s.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
+            // Reading R-SPINDLE: `G50 S` alone clamps the spindle speed; with X/Z
+            // (the manuals' "G50 X100 Z50 M3 S300") S is the speed.
+            let clamp = g50 && !block.has('X') && !block.has('Z');
+            if !clamp && s.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
                 self.speed = true;
             }
         }
@@ -375,9 +379,9 @@ impl Reader<'_> {
             };
         }
         if let Some(f) = block.get('F')? {
-            self.feed_word = Some(f.text.clone());
             if f.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
-                self.lead = Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
+                self.lead =
+                    Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
             }
         }
         if let Some(m) = motion {
@@ -518,7 +522,11 @@ impl Reader<'_> {
             return Err(err(block, Some(p), ErrorKind::PartialP));
         }
         if n > 6 {
-            return Err(err(block, Some(p), ErrorKind::OutOfRange { range: "m 0..99, r 00..99, a 00..99".into() }));
+            return Err(err(
+                block,
+                Some(p),
+                ErrorKind::OutOfRange { range: "m 0..99, r 00..99, a 00..99".into() },
+            ));
         }
         let a = part(n.saturating_sub(2), n);
         self.modal.tool_angle = Some(a);
@@ -602,21 +610,41 @@ impl Reader<'_> {
             None => 0,
         };
         let k = block.get('P')?.ok_or_else(|| {
-            err(&block, None, ErrorKind::Missing { what: "P(k) (thread height)", rule: "alarm when P(k) is not given" })
+            err(
+                &block,
+                None,
+                ErrorKind::Missing { what: "P(k) (thread height)", rule: "alarm when P(k) is not given" },
+            )
         })?;
         let k = self.pq_length(&block, k).and_then(|v| {
             if v == 0 || v > profile.max_depth_increments {
-                Err(err(&block, Some(k), ErrorKind::OutOfRange { range: format!("1..{} least increments", profile.max_depth_increments) }))
+                Err(err(
+                    &block,
+                    Some(k),
+                    ErrorKind::OutOfRange {
+                        range: format!("1..{} least increments", profile.max_depth_increments),
+                    },
+                ))
             } else {
                 Ok(v)
             }
         })?;
         let dd = block.get('Q')?.ok_or_else(|| {
-            err(&block, None, ErrorKind::Missing { what: "Q(Δd) (first depth)", rule: "alarm when Δd is not given" })
+            err(
+                &block,
+                None,
+                ErrorKind::Missing { what: "Q(Δd) (first depth)", rule: "alarm when Δd is not given" },
+            )
         })?;
         let first_depth = self.pq_length(&block, dd).and_then(|v| {
             if v == 0 || v > profile.max_depth_increments {
-                Err(err(&block, Some(dd), ErrorKind::OutOfRange { range: format!("1..{} least increments", profile.max_depth_increments) }))
+                Err(err(
+                    &block,
+                    Some(dd),
+                    ErrorKind::OutOfRange {
+                        range: format!("1..{} least increments", profile.max_depth_increments),
+                    },
+                ))
             } else {
                 Ok(v)
             }
@@ -627,13 +655,7 @@ impl Reader<'_> {
             (Some(f), Some(_)) => {
                 return Err(err(&block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
             }
-            (Some(w), None) | (None, Some(w)) => {
-                let l = self.lead(&block, w)?;
-                if w.letter == 'F' {
-                    self.feed_word = Some(w.text.clone());
-                }
-                l
-            }
+            (Some(w), None) | (None, Some(w)) => self.lead(&block, w)?,
             (None, None) => self.lead.ok_or_else(|| {
                 err(&block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
             })?,
@@ -667,7 +689,9 @@ impl Reader<'_> {
         let p = &profile.params;
         let m = match self.modal.finishing_passes {
             Some(m) => m,
-            None => self.param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99).map_err(with_line)?,
+            None => self
+                .param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99)
+                .map_err(with_line)?,
         };
         let a = match self.modal.tool_angle {
             Some(a) => a,
@@ -693,10 +717,7 @@ impl Reader<'_> {
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
         let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
-        let restore = Restore {
-            motion: (self.motion != MotionMode::G00).then(|| self.motion.code()),
-            feed: self.feed_word.clone(),
-        };
+        let restore = Restore { motion: (self.motion != MotionMode::G00).then(|| self.motion.code()) };
         let cycle = G76Cycle {
             units: self.units,
             x_mode: self.machine.x_mode,

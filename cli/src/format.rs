@@ -1,0 +1,167 @@
+//! Text forms of moves: NC blocks, JSON and the pass table.
+
+use std::fmt::Write as _;
+
+use cycleref::units::write_fixed;
+use cycleref::{Flank, LeadWord, Motion, Move, PassKind, Role, Units};
+use cycleref_spec::reader::{G76Call, Restore};
+use serde_json::{json, Value};
+
+/// `v` increments as a decimal with the increment's number of decimals.
+pub fn fixed(v: i64, units: Units) -> String {
+    let mut s = String::new();
+    let _ = write_fixed(&mut s, i128::from(v), units.decimals());
+    s
+}
+
+/// The lead word as programmed (`F6`, `F1.5`, `I20`).
+pub fn lead_word(lead: cycleref::Lead) -> String {
+    let letter = match lead.word {
+        LeadWord::F => 'F',
+        LeadWord::I => 'I',
+    };
+    let mut s = String::new();
+    let _ = write_fixed(&mut s, i128::from(lead.mantissa), lead.scale);
+    if lead.scale == 0 {
+        // Always with a decimal point: on FANUC a bare value may be read in
+        // other units.
+        s.push_str(".0");
+    }
+    format!("{letter}{s}")
+}
+
+/// Name of a pass kind.
+pub fn kind_name(k: PassKind) -> &'static str {
+    match k {
+        PassKind::Rough => "rough",
+        PassKind::Finish => "finish",
+    }
+}
+
+/// Name of a role.
+pub fn role_name(r: Role) -> &'static str {
+    match r {
+        Role::Approach => "approach",
+        Role::LeadIn => "lead-in",
+        Role::Cut => "cut",
+        Role::RunOut => "run-out",
+        Role::Retract => "retract",
+        Role::Return => "return",
+    }
+}
+
+/// Name of a flank position.
+pub fn flank_name(f: Flank) -> &'static str {
+    match f {
+        Flank::Right => "right",
+        Flank::Centre => "centre",
+        Flank::Left => "left",
+    }
+}
+
+/// Writes the NC blocks of one expanded cycle (the `nc` format contract,
+/// documented in the README).
+pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move]) {
+    let u = call.cycle.units;
+    let rough = moves.iter().filter_map(|m| m.pass).filter(|p| p.kind == PassKind::Rough);
+    let rough_passes = rough.map(|p| p.number).max().unwrap_or(0);
+    let _ = writeln!(
+        out,
+        "(G76 line {}: {} rough + {} finish passes x {} start{})",
+        call.block.line,
+        rough_passes,
+        call.cycle.finishing_passes,
+        call.cycle.starts,
+        if call.cycle.starts == 1 { "" } else { "s" }
+    );
+    let mut current = None;
+    for m in moves {
+        if let Some(p) = m.pass {
+            let key = (p.kind, p.number, p.start);
+            if current != Some(key) {
+                current = Some(key);
+                let _ = writeln!(
+                    out,
+                    "({} {} start {} depth {} cut {})",
+                    kind_name(p.kind),
+                    p.number,
+                    p.start,
+                    fixed(p.depth, u),
+                    fixed(p.cut, u)
+                );
+            }
+        }
+        let x = fixed(m.to.x, u);
+        let z = fixed(m.to.z, u);
+        match m.motion {
+            Motion::Rapid => {
+                let _ = writeln!(out, "G00 X{x} Z{z}");
+            }
+            Motion::Feed => {
+                let _ = writeln!(out, "G01 X{x} Z{z}");
+            }
+            Motion::Thread { lead, start_angle, .. } => {
+                let _ = write!(out, "G32 X{x} Z{z} {}", lead_word(lead));
+                if !start_angle.is_zero() {
+                    let _ = write!(out, " Q{}", start_angle.rounded_millidegrees());
+                }
+                out.push('\n');
+            }
+        }
+    }
+    restore(out, &call.restore);
+}
+
+fn restore(out: &mut String, r: &Restore) {
+    if let Some(g) = r.motion {
+        let _ = writeln!(out, "{g}");
+    }
+}
+
+/// One move as JSON (the `json` format contract).
+pub fn move_json(m: &Move, units: Units) -> Value {
+    let mut v = json!({
+        "role": role_name(m.role),
+        "x": fixed(m.to.x, units),
+        "z": fixed(m.to.z, units),
+    });
+    let obj = v.as_object_mut().expect("object");
+    match m.motion {
+        Motion::Rapid => {
+            obj.insert("motion".into(), json!("rapid"));
+        }
+        Motion::Feed => {
+            obj.insert("motion".into(), json!("feed"));
+        }
+        Motion::Thread { lead, start_angle, sync } => {
+            obj.insert("motion".into(), json!("thread"));
+            obj.insert("lead".into(), json!(lead_word(lead)));
+            obj.insert(
+                "start_angle_millidegrees".into(),
+                json!({"num": start_angle.num, "den": start_angle.den}),
+            );
+            obj.insert("sync".into(), json!(sync));
+        }
+    }
+    if let Some(p) = m.pass {
+        obj.insert(
+            "pass".into(),
+            json!({
+                "kind": kind_name(p.kind),
+                "number": p.number,
+                "start": p.start,
+                "depth": fixed(p.depth, units),
+                "cut": fixed(p.cut, units),
+                "flank": flank_name(p.flank),
+            }),
+        );
+    }
+    // Keep a stable key order: motion first.
+    let mut ordered = serde_json::Map::new();
+    for key in ["motion", "x", "z", "role", "lead", "start_angle_millidegrees", "sync", "pass"] {
+        if let Some(val) = obj.remove(key) {
+            ordered.insert(key.into(), val);
+        }
+    }
+    Value::Object(ordered)
+}
