@@ -1,1 +1,52 @@
-//! Proof harnesses for cycleref.
+//! # cycleref-proofs
+//!
+//! Proof harnesses of the cycle properties. Each harness body is written
+//! once against [`verify`], which is the real `kani` API under `cargo kani`
+//! and the [`shim`] (exhaustive small-scope enumeration and random sampling)
+//! under `cargo test`.
+#![deny(missing_docs)]
+
+pub mod shim;
+
+/// `any_in`, `any_bool`, `assume` and `cover`: Kani's under `cfg(kani)`,
+/// the shim's otherwise.
+pub mod verify {
+    #[cfg(not(kani))]
+    pub use crate::shim::{any_bool, any_in, assume};
+
+    /// A value in `lo..=hi`.
+    #[cfg(kani)]
+    pub fn any_in(lo: i64, hi: i64) -> i64 {
+        let v: i64 = kani::any();
+        kani::assume(lo <= v && v <= hi);
+        v
+    }
+
+    /// A `bool`.
+    #[cfg(kani)]
+    pub fn any_bool() -> bool {
+        kani::any()
+    }
+
+    /// `kani::assume`.
+    #[cfg(kani)]
+    pub fn assume(cond: bool) {
+        kani::assume(cond);
+    }
+}
+
+/// `kani::cover(cond, "message")` under Kani (at the call site, where Kani
+/// wants the literal message), [`shim::cover`] otherwise.
+#[macro_export]
+macro_rules! cover {
+    ($cond:expr, $msg:literal) => {{
+        #[cfg(kani)]
+        {
+            kani::cover($cond, $msg);
+        }
+        #[cfg(not(kani))]
+        {
+            $crate::shim::cover($cond, $msg);
+        }
+    }};
+}
