@@ -127,7 +127,7 @@ impl G76Cycle {
         coord(Field::EndZ, c.end.z)?;
         coord(Field::Taper, c.taper)?;
         let positive = |field: Field, v: i64| -> Result<(), CycleError> {
-            if v < 1 || v > MAX_LENGTH {
+            if !(1..=MAX_LENGTH).contains(&v) {
                 return Err(CycleError::OutOfRange { field, value: c.len(v) });
             }
             Ok(())
@@ -135,7 +135,7 @@ impl G76Cycle {
         positive(Field::ThreadHeight, c.thread_height)?;
         positive(Field::FirstDepth, c.first_depth)?;
         let unsigned = |field: Field, v: i64| -> Result<(), CycleError> {
-            if v < 0 || v > MAX_LENGTH {
+            if !(0..=MAX_LENGTH).contains(&v) {
                 return Err(CycleError::OutOfRange { field, value: c.len(v) });
             }
             Ok(())

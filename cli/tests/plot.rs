@@ -1,0 +1,194 @@
+//! `cycleref plot`: runs the built binary and checks the SVG it writes.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+use svg::node::element::tag::Type;
+use svg::parser::Event;
+
+const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
+const M68: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk988-m68x6.nc");
+const INTERNAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/fanuc-internal.nc");
+
+/// A fresh path in the target's scratch directory for this test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("plot-tests");
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    let path = dir.join(name);
+    let _ = std::fs::remove_file(&path);
+    path
+}
+
+fn plot(profile: &str, input: &str, output: &PathBuf) -> Output {
+    Command::new(BIN)
+        .args(["plot", "--profile", profile, input, "-o"])
+        .arg(output)
+        .output()
+        .expect("run cycleref")
+}
+
+/// The SVG written by a successful `plot`.
+fn plot_ok(profile: &str, input: &str, name: &str) -> String {
+    let out = scratch(name);
+    let run = plot(profile, input, &out);
+    assert_eq!(run.status.code(), Some(0), "stderr: {}", String::from_utf8_lossy(&run.stderr));
+    assert!(run.stdout.is_empty(), "plot prints nothing on stdout");
+    std::fs::read_to_string(&out).expect("svg written")
+}
+
+/// What the checks need from a document: the contents of its `text`
+/// elements and the attributes seen, after checking that every tag is
+/// closed in order.
+struct Parsed {
+    texts: Vec<String>,
+    dashed: usize,
+    paths: usize,
+    circles: usize,
+}
+
+fn parse(doc: &str) -> Parsed {
+    let mut stack: Vec<String> = Vec::new();
+    let mut parsed = Parsed { texts: Vec::new(), dashed: 0, paths: 0, circles: 0 };
+    for event in svg::read(doc).expect("parser") {
+        match event {
+            Event::Error(e) => panic!("malformed SVG: {e:?}"),
+            Event::Tag(name, kind, attrs) => {
+                if kind != Type::End {
+                    if attrs.contains_key("stroke-dasharray") {
+                        parsed.dashed += 1;
+                    }
+                    match name {
+                        "path" => parsed.paths += 1,
+                        "circle" => parsed.circles += 1,
+                        _ => {}
+                    }
+                }
+                match kind {
+                    Type::Start => stack.push(name.to_string()),
+                    Type::End => assert_eq!(stack.pop().as_deref(), Some(name), "unbalanced </{name}>"),
+                    Type::Empty => {}
+                }
+            }
+            Event::Text(t) if stack.last().map(String::as_str) == Some("text") => {
+                parsed.texts.push(t.trim().to_string());
+            }
+            _ => {}
+        }
+    }
+    assert!(stack.is_empty(), "unclosed tags: {stack:?}");
+    parsed
+}
+
+#[test]
+fn m68_example_is_a_labelled_svg() {
+    let doc = plot_ok("gsk988", M68, "m68.svg");
+    assert!(doc.starts_with("<svg") || doc.starts_with("<?xml"), "{}", &doc[..40]);
+    assert!(doc.ends_with("</svg>\n"));
+    assert!(doc.contains(r#"xmlns="http://www.w3.org/2000/svg""#));
+    let p = parse(&doc);
+    for label in ["A", "B", "C", "D"] {
+        assert!(p.texts.iter().any(|t| t == label), "point label {label} missing: {:?}", p.texts);
+    }
+    for legend in ["rapid (G00)", "rough pass 1, depth 1.800", "finishing passes", "run-out", "lead-in"] {
+        assert!(p.texts.iter().any(|t| t.starts_with(legend)), "legend {legend:?} missing: {:?}", p.texts);
+    }
+    // Title with the file name and the line of the cycle; axis labels.
+    assert!(p.texts.iter().any(|t| t.contains("gsk988-m68x6.nc") && t.contains("line 6")), "{:?}", p.texts);
+    assert!(p.texts.iter().any(|t| t == "Z (mm)"));
+    assert!(p.texts.iter().any(|t| t == "X (diameter, mm)"));
+    // Tick labels of both axes.
+    assert!(p.texts.iter().any(|t| t == "-60"));
+    assert!(p.texts.iter().any(|t| t == "80"));
+    // The coordinates of the points, as programmed.
+    assert!(p.texts.iter().any(|t| t == "X80.000 Z10.000"));
+    assert!(p.texts.iter().any(|t| t == "X60.640 Z-62.000"));
+    // Rapids (and their legend swatch) are dashed.
+    assert!(p.dashed >= 2, "dashed elements: {}", p.dashed);
+    // Rapids, 4 rough passes, the finishing path (both passes coincide), run-outs.
+    assert_eq!(p.paths, 1 + 4 + 1 + 1);
+    // A, B, C, D on the plot and in the legend.
+    assert_eq!(p.circles, 8);
+}
+
+#[test]
+fn plot_is_deterministic() {
+    let first = plot_ok("gsk988", M68, "twice-1.svg");
+    let second = plot_ok("gsk988", M68, "twice-2.svg");
+    assert_eq!(first.as_bytes(), second.as_bytes());
+}
+
+#[test]
+fn internal_fanuc_example() {
+    let doc = plot_ok("fanuc", INTERNAL, "internal.svg");
+    let p = parse(&doc);
+    assert!(
+        p.texts.iter().any(|t| t.starts_with("internal thread, 15 rough + 2 finishing passes")),
+        "{:?}",
+        p.texts
+    );
+    // 15 rough passes: one legend entry for all of them.
+    assert!(p.texts.iter().any(|t| t == "rough passes 1\u{2013}15"), "{:?}", p.texts);
+    assert!(!p.texts.iter().any(|t| t.starts_with("rough pass 1,")));
+    assert!(p.texts.iter().any(|t| t == "lead-in (none)"));
+}
+
+#[test]
+fn several_cycles_stack_and_mark_lead_in() {
+    let input = scratch("two.nc");
+    std::fs::write(
+        &input,
+        "M03 S500\nG00 X80 Z10\nG76 P020545 Q0.15 R0.5 L3 E2\nG76 X60 Z-60 P3 Q1.8 F6 J1.5 K2\n\
+         G00 X40 Z-65\nG76 P010060 Q0.05 R0.05\nG76 X30 Z-100 R-2 P1.2 Q0.3 F1.5\nM30\n",
+    )
+    .expect("write program");
+    let doc = plot_ok("gsk988", input.to_str().expect("utf-8 path"), "two.svg");
+    let p = parse(&doc);
+    assert!(doc.contains(r#"height="1120""#), "two panels of 560 px");
+    assert_eq!(p.texts.iter().filter(|t| t.contains("G76 at line")).count(), 2);
+    assert!(p.texts.iter().any(|t| t.ends_with("line 4")));
+    assert!(p.texts.iter().any(|t| t.ends_with("line 7")));
+    assert_eq!(p.texts.iter().filter(|t| *t == "lead-in").count(), 1);
+    assert!(p.texts.iter().any(|t| t == "3 starts: their paths coincide"));
+}
+
+#[test]
+fn error_exits_2_and_writes_nothing() {
+    let input = scratch("no-p.nc");
+    // Block 2 of G76 without P(k).
+    std::fs::write(&input, "M03 S500\nG00 X80 Z10\nG76 P020560 Q0.15 R0.1\nG76 X60.64 Z-62 Q1.8 F6\nM30\n")
+        .expect("write program");
+    let out = scratch("no-p.svg");
+    let run = plot("gsk988", input.to_str().expect("utf-8 path"), &out);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(run.stdout.is_empty());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.contains("line 4"), "{stderr}");
+    assert!(!out.exists(), "no file on error");
+}
+
+#[test]
+fn no_cycle_is_an_error() {
+    let input = scratch("none.nc");
+    std::fs::write(&input, "M03 S500\nG00 X80 Z10\nM30\n").expect("write program");
+    let out = scratch("none.svg");
+    let run = plot("gsk988", input.to_str().expect("utf-8 path"), &out);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("no G76 cycle"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn many_moves_stay_small() {
+    // About 59 000 moves: 2955 rough passes x 4 starts.
+    let input = scratch("big.nc");
+    std::fs::write(
+        &input,
+        "M03 S500\nG00 X80 Z10\nG76 P020560 Q0.001 R0.1 L4\nG76 X60.64 Z-62 P3.68 Q0.05 F6\nM30\n",
+    )
+    .expect("write program");
+    let doc = plot_ok("gsk988", input.to_str().expect("utf-8 path"), "big.svg");
+    let p = parse(&doc);
+    // Each distinct pass path once: the starts coincide.
+    assert!(p.paths < 3000, "paths: {}", p.paths);
+    assert!(doc.len() < 1_000_000, "size: {}", doc.len());
+}
