@@ -6,6 +6,9 @@
 //! under `cargo test`.
 #![deny(missing_docs)]
 
+pub mod harness;
+#[cfg(kani)]
+mod kani_proofs;
 pub mod shim;
 
 /// `any_in`, `any_bool`, `assume` and `cover`: Kani's under `cfg(kani)`,

@@ -97,10 +97,11 @@ fn choose(span: u64) -> u64 {
                 s.trail.push(Choice { value: 0, hi: span });
                 0
             }
-        } else if span == u64::MAX {
-            splitmix(&mut s.rng)
         } else {
-            splitmix(&mut s.rng) % (span + 1)
+            let v = if span == u64::MAX { splitmix(&mut s.rng) } else { splitmix(&mut s.rng) % (span + 1) };
+            // Recorded so that a failure can report the run's choices.
+            s.trail.push(Choice { value: v, hi: span });
+            v
         }
     })
 }
@@ -159,14 +160,15 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
             ..State::default()
         }
     });
-    let prev_hook = std::panic::take_hook();
-    std::panic::set_hook(Box::new(|info| {
-        if info.payload().downcast_ref::<Pruned>().is_none() {
-            eprintln!("{info}");
-        }
-    }));
+    quiet_pruning();
     let outcome = catch_unwind(AssertUnwindSafe(|| loop {
-        STATE.with(|s| s.borrow_mut().next = 0);
+        STATE.with(|s| {
+            let mut s = s.borrow_mut();
+            s.next = 0;
+            if !s.exhaustive {
+                s.trail.clear();
+            }
+        });
         let run = catch_unwind(AssertUnwindSafe(&body));
         report.runs += 1;
         if let Err(payload) = run {
@@ -204,7 +206,6 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
             break;
         }
     }));
-    std::panic::set_hook(prev_hook);
     let covers = STATE.with(|s| {
         let mut s = s.borrow_mut();
         s.active = false;
@@ -214,9 +215,29 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
         std::panic::resume_unwind(p);
     }
     report.covers = covers;
-    let missed: Vec<_> = report.covers.iter().filter(|(_, n)| **n == 0).map(|(m, _)| *m).collect();
-    assert!(missed.is_empty(), "{name}: cover conditions never satisfied: {missed:?}");
+    assert!(report.pruned < report.runs, "{name}: every run was pruned by assume: the check is vacuous");
+    // Exhaustive: every cover must be reachable in the domain (Kani reports
+    // an unsatisfiable cover). Sampled: rare covers may be missed by chance,
+    // so only the non-vacuity above is required; the counts are reported.
+    if matches!(mode, Mode::Exhaustive { .. }) {
+        let missed: Vec<_> = report.covers.iter().filter(|(_, n)| **n == 0).map(|(m, _)| *m).collect();
+        assert!(missed.is_empty(), "{name}: cover conditions never satisfied: {missed:?}");
+    }
     report
+}
+
+/// Installs, once, a panic hook that stays silent for the [`assume`]
+/// pruning panics and defers to the previous hook for every other panic.
+fn quiet_pruning() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if info.payload().downcast_ref::<Pruned>().is_none() {
+                previous(info);
+            }
+        }));
+    });
 }
 
 #[cfg(test)]
@@ -252,7 +273,7 @@ mod tests {
     #[test]
     #[should_panic(expected = "never satisfied")]
     fn unreachable_cover_fails() {
-        check("vacuous", Mode::Sample { runs: 50, seed: 1 }, || {
+        check("vacuous", Mode::Exhaustive { max_runs: 50 }, || {
             let a = any_in(0, 9);
             cover(a > 9, "impossible");
         });

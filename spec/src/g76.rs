@@ -437,11 +437,14 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
             }
         }
     }
-    // Coordinates beyond the range tables (reading R-RANGE): X of B, and the
-    // lead-in start's X and Z, are the extremes of the toolpath.
-    check_coordinate(g.b_x, u)?;
-    if let Some(lz) = lead_in {
-        check_coordinate(g.b_x + s * xf * e, u)?;
+    // Coordinates beyond the range tables (reading R-RANGE): A and D are
+    // words within range and B lies between A and C, so X of C (the
+    // finishing passes' start) and the lead-in start are the extremes.
+    check_coordinate(g.c_x, u)?;
+    if let (Some(lz), Some(first)) = (lead_in, plan.first()) {
+        // The shallowest pass (the first) has the lead-in start furthest out.
+        let shallowest = from_increments(first.pass.depth, u);
+        check_coordinate(g.c_x + s * xf * (k - shallowest) + s * xf * e, u)?;
         let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
         check_coordinate(g.a.1 + t * min_shift - t * lz, u)?;
     }

@@ -1,0 +1,438 @@
+//! The proof harnesses: one function per property, shared by Kani and the
+//! tests.
+//!
+//! Every harness takes a [`Domain`] (the inputs it may choose) and an
+//! engine (a function from a cycle to its moves). The Kani proofs in
+//! [`crate::kani_proofs`] call them with bounded domains and the real
+//! engine; the tests in `proofs/tests/harnesses.rs` call them through the
+//! shim, exhaustively over small domains and by sampling over the full
+//! documented ranges; `proofs/tests/mutants.rs` calls them with engines
+//! broken on purpose and checks that each harness catches its mutant.
+
+use cycleref::lead::{Lead, LeadWord};
+use cycleref::{
+    CycleError, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role, RunOut,
+    Units, XMode,
+};
+
+use crate::cover;
+use crate::verify::{any_in, assume};
+
+/// The inputs a harness may choose: inclusive ranges in least increments
+/// (radius), counts, degrees, and small codes for the discrete choices.
+/// A range with `lo == hi` fixes the input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Domain {
+    /// Thread height k.
+    pub height: (i64, i64),
+    /// First depth Δd.
+    pub first_depth: (i64, i64),
+    /// Minimum cut Δdmin (also capped at k).
+    pub min_cut: (i64, i64),
+    /// Finishing allowance d, as a range capped at k.
+    pub allowance: (i64, i64),
+    /// Tool angle a, degrees.
+    pub tool_angle: (i64, i64),
+    /// Finishing passes m.
+    pub finishing: (i64, i64),
+    /// Infeed mode: 0 = D0, 1 = D1, 2 = D2.
+    pub infeed: (i64, i64),
+    /// Starts L.
+    pub starts: (i64, i64),
+    /// 0 = external, 1 = internal.
+    pub internal: (i64, i64),
+    /// 0 = cutting towards -Z, 1 = towards +Z.
+    pub positive_z: (i64, i64),
+    /// Taper i.
+    pub taper: (i64, i64),
+    /// |W|, the thread length along Z.
+    pub length: (i64, i64),
+    /// Run-out: 0 none, 1 J/K amounts, 2 chamfer r, 3 chamfer r with K.
+    pub run_out_kind: (i64, i64),
+    /// Run-out amounts J and K.
+    pub run_out: (i64, i64),
+    /// Chamfer r, tenths of the lead.
+    pub chamfer: (i64, i64),
+    /// Chamfer angle, degrees.
+    pub chamfer_angle: (i64, i64),
+    /// Units code: bit 0 IS-C, bit 1 inch, bit 2 radius X (0..=7).
+    pub units: (i64, i64),
+    /// Rough pass limit of the generated cycles.
+    pub pass_limit: u32,
+}
+
+impl Domain {
+    /// The whole documented range (for sampling, and for Kani's no-overflow
+    /// proof): every length up to 999 999 999 increments.
+    pub const FULL: Domain = Domain {
+        height: (1, 999_999_999),
+        first_depth: (1, 999_999_999),
+        min_cut: (0, 999_999_999),
+        allowance: (0, 999_999_999),
+        tool_angle: (0, 99),
+        finishing: (0, 99),
+        infeed: (0, 2),
+        starts: (1, 999),
+        internal: (0, 1),
+        positive_z: (0, 1),
+        taper: (-999_999_999, 999_999_999),
+        length: (1, 999_999_999),
+        run_out_kind: (0, 3),
+        run_out: (0, 999_999_999),
+        chamfer: (0, 99),
+        chamfer_angle: (1, 89),
+        units: (0, 7),
+        pass_limit: 2_000,
+    };
+
+    /// A small domain: fixed typical values (metric IS-B, diameter, external,
+    /// towards -Z, straight, D0, one start, no run-out, a = 60), to be
+    /// widened field by field by each harness.
+    pub const POINT: Domain = Domain {
+        height: (10, 10),
+        first_depth: (4, 4),
+        min_cut: (1, 1),
+        allowance: (1, 1),
+        tool_angle: (60, 60),
+        finishing: (1, 1),
+        infeed: (0, 0),
+        starts: (1, 1),
+        internal: (0, 0),
+        positive_z: (0, 0),
+        taper: (0, 0),
+        length: (500, 500),
+        run_out_kind: (0, 0),
+        run_out: (1, 1),
+        chamfer: (5, 5),
+        chamfer_angle: (45, 45),
+        units: (0, 0),
+        pass_limit: 10_000,
+    };
+}
+
+/// An engine under test: the moves of a cycle, or its alarm.
+pub trait Engine {
+    /// The moves.
+    type Moves: Iterator<Item = Move>;
+    /// Expands `c`.
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    fn expand(&self, c: &G76Cycle) -> Result<Self::Moves, CycleError>;
+}
+
+/// The fixed-point engine, `cycleref::engine::expand_g76`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FixedPoint;
+
+impl Engine for FixedPoint {
+    type Moves = cycleref::engine::G76Moves;
+    fn expand(&self, c: &G76Cycle) -> Result<Self::Moves, CycleError> {
+        cycleref::engine::expand_g76(c)
+    }
+}
+
+impl<F, I> Engine for F
+where
+    F: Fn(&G76Cycle) -> Result<I, CycleError>,
+    I: Iterator<Item = Move>,
+{
+    type Moves = I;
+    fn expand(&self, c: &G76Cycle) -> Result<I, CycleError> {
+        self(c)
+    }
+}
+
+/// A cycle of the domain: an external or internal thread, either
+/// direction, with A clear of the crest by one increment.
+///
+/// The depth words (k, Δd, Δdmin, d) are chosen first, in that order, so the
+/// enumeration of a small domain walks the schedule's inputs fastest.
+pub fn any_cycle(d: &Domain) -> G76Cycle {
+    let pick = |r: (i64, i64)| any_in(r.0, r.1);
+    let count = |r: (i64, i64)| u32::try_from(any_in(r.0, r.1)).unwrap_or(0);
+    let k = pick(d.height);
+    let first_depth = pick(d.first_depth);
+    let min_cut = any_in(d.min_cut.0.min(k), d.min_cut.1.min(k));
+    let allowance = any_in(d.allowance.0.min(k), d.allowance.1.min(k));
+    let finishing = count(d.finishing);
+    let tool_angle = count(d.tool_angle);
+    let infeed = match pick(d.infeed) {
+        0 => Infeed::RightFlank,
+        1 => Infeed::RightCentre,
+        _ => Infeed::LeftRight,
+    };
+    let starts = count(d.starts);
+    let internal = pick(d.internal) == 1;
+    let positive_z = pick(d.positive_z) == 1;
+    let taper = pick(d.taper);
+    let length = pick(d.length);
+    let run_out = match pick(d.run_out_kind) {
+        0 => RunOut::None,
+        1 => RunOut::Amounts { short: pick(d.run_out), long: pick(d.run_out) },
+        2 => RunOut::Chamfer { tenths_of_lead: count(d.chamfer), angle_degrees: count(d.chamfer_angle), long: None },
+        _ => RunOut::Chamfer {
+            tenths_of_lead: count(d.chamfer),
+            angle_degrees: count(d.chamfer_angle),
+            long: Some(pick(d.run_out)),
+        },
+    };
+    let code = pick(d.units);
+    let units = Units {
+        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
+        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
+    };
+    let x_mode = if code & 4 == 4 { XMode::Radius } else { XMode::Diameter };
+    let xf = x_mode.factor();
+    let s = if internal { -1 } else { 1 };
+    let t = if positive_z { 1 } else { -1 };
+    // D at X 150 000 000 increments (room for internal threads towards the
+    // axis), A beyond the crest at both ends by one increment.
+    let end = Point::new(150_000_000 * xf, 0);
+    let c_x = end.x + xf * taper;
+    let crest = if s > 0 { c_x.max(end.x) + xf * k } else { c_x.min(end.x) - xf * k };
+    let start = Point::new(crest + s, end.z - t * length);
+    G76Cycle {
+        units,
+        x_mode,
+        start,
+        end,
+        taper,
+        thread_height: k,
+        first_depth,
+        min_cut,
+        finishing_allowance: allowance,
+        finishing_passes: finishing,
+        tool_angle,
+        infeed,
+        lead_in: 0,
+        starts,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out,
+        pass_limit: d.pass_limit,
+    }
+}
+
+/// The passes of a move stream: each pass's first move (the approach) with
+/// the pass annotation, and the cut's end before any run-out.
+struct PassView {
+    kind: PassKind,
+    depth: i64,
+    cut: i64,
+    start: u32,
+    bn: Point,
+}
+
+fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
+    let mut out = Vec::new();
+    for m in moves {
+        if m.role == Role::Approach {
+            if let Some(p) = m.pass {
+                out.push(PassView { kind: p.kind, depth: p.depth, cut: p.cut, start: p.start, bn: m.to });
+            }
+        }
+    }
+    out
+}
+
+fn expand_ok<E: Engine>(engine: &E, c: &G76Cycle) -> Option<E::Moves> {
+    match engine.expand(c) {
+        Ok(m) => Some(m),
+        Err(_) => {
+            assume(false);
+            None
+        }
+    }
+}
+
+/// Property 1, depth monotonicity: rough depths strictly increase; every
+/// rough cut is at least min(Δdmin, what remains to k - d) and at least one
+/// increment; cuts by the √n law never grow by more than the one increment
+/// that rounding can add (the exact law cuts Δd(√n - √(n-1)) strictly
+/// decrease; rounding moves each depth by at most ½).
+pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let Some(moves) = expand_ok(engine, &c) else { return };
+    let min = c.min_cut.max(1);
+    let last = c.thread_height - c.finishing_allowance;
+    let mut previous = 0;
+    let mut previous_cut = i64::MAX;
+    let mut levels = 0;
+    for p in passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1) {
+        if p.depth == previous && levels > 0 {
+            continue; // the second (left) pass of a D2 level
+        }
+        levels += 1;
+        assert!(p.depth > previous, "rough depths must strictly increase");
+        assert_eq!(p.cut, p.depth - previous, "cut annotation");
+        assert!(p.cut >= min.min(last - previous), "cut below min(Δdmin, remainder)");
+        assert!(p.cut >= 1);
+        let law = cycleref::engine::round_sqrt(
+            (c.first_depth as u128) * (c.first_depth as u128) * (levels as u128),
+        ) as i64;
+        if p.depth == law && p.depth < last {
+            assert!(p.cut <= previous_cut.saturating_add(1), "a law cut grew by more than rounding");
+        }
+        previous_cut = p.cut;
+        previous = p.depth;
+    }
+    cover!(levels >= 3, "three or more rough levels");
+    cover!(c.min_cut > 1 && levels >= 2, "minimum cut in force");
+}
+
+/// Property 2, termination at k - d: the rough schedule ends with its last
+/// depth exactly k - d (none when d = k), and the number of levels f obeys
+/// the bound derived in docs/INTERPRETATIONS.md: (f - 1)·max(Δdmin, 1) <
+/// k - d and 4(f - 1)Δd² < (2(k - d) + 1)².
+pub fn termination<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let Some(moves) = expand_ok(engine, &c) else { return };
+    let last = c.thread_height - c.finishing_allowance;
+    let mut depths: Vec<i64> =
+        passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1).map(|p| p.depth).collect();
+    depths.dedup();
+    let f = depths.len() as i64;
+    if last == 0 {
+        assert_eq!(f, 0, "d = k: nothing to rough");
+    } else {
+        assert_eq!(depths.last().copied(), Some(last), "the last rough depth is k - d");
+        let m = c.min_cut.max(1);
+        assert!((f - 1) * m < last, "more levels than the minimum cut allows");
+        let dd = i128::from(c.first_depth);
+        let bound = i128::from(2 * last + 1);
+        assert!(4 * i128::from(f - 1) * dd * dd < bound * bound, "more levels than the law allows");
+    }
+    cover!(f == 1 && last > 0, "a single rough pass");
+    cover!(last == 0, "no rough pass (d = k)");
+    cover!(f >= 4, "four or more levels");
+}
+
+/// Property 3, finishing: exactly m passes (per start) at depth k, the first
+/// cutting d and the rest nothing, all from the last rough pass's Z.
+pub fn finishing<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let Some(moves) = expand_ok(engine, &c) else { return };
+    let all = passes(moves);
+    let last_rough_z = all.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.bn.z).last();
+    let finish: Vec<_> = all.iter().filter(|p| p.kind == PassKind::Finish).collect();
+    assert_eq!(finish.len() as u64, u64::from(c.finishing_passes) * u64::from(c.starts));
+    for (i, p) in finish.iter().enumerate() {
+        let number = i as u32 / c.starts + 1;
+        assert_eq!(p.depth, c.thread_height);
+        assert_eq!(p.cut, if number == 1 { c.finishing_allowance } else { 0 });
+        assert_eq!(p.bn.z, last_rough_z.unwrap_or(c.start.z), "finishing Z = last rough Z");
+        let xf = c.x_mode.factor();
+        assert_eq!(p.bn.x, c.end.x + xf * c.taper, "finishing at the thread start C");
+    }
+    cover!(c.finishing_passes >= 2 && c.finishing_allowance > 0, "several finishing passes with d > 0");
+}
+
+/// Property 4, run-out direction: every run-out ends away from the work
+/// (towards the side of A) and never beyond E; with Z long it ends on the
+/// end line Z(D) displaced along X, with X long on X of the cut's end
+/// displaced along Z.
+pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let Some(moves) = expand_ok(engine, &c) else { return };
+    let xf = c.x_mode.factor();
+    let s = if c.start.x > c.end.x + xf * c.taper { 1 } else { -1 };
+    let t = (c.end.z - c.start.z).signum();
+    let z_long = (c.end.z - c.start.z).abs() > c.taper.abs();
+    let mut at = c.start;
+    let mut seen = 0;
+    for m in moves {
+        if m.role == Role::RunOut {
+            seen += 1;
+            let p = m.pass.expect("annotated");
+            let cut_end_x = c.end.x + s * xf * (c.thread_height - p.depth);
+            assert!(matches!(m.motion, Motion::Thread { .. }), "the run-out is cut under synchronisation");
+            if z_long {
+                assert_eq!(m.to.z, c.end.z);
+                assert!(s * (m.to.x - cut_end_x) > 0, "run-out towards the work");
+                assert!(s * (c.start.x - m.to.x) >= 0, "run-out beyond E");
+            } else {
+                assert_eq!(m.to.x, cut_end_x);
+                assert!(t * (c.end.z - m.to.z) > 0, "run-out away from A's side");
+                assert!(t * (m.to.z - c.start.z) >= 0, "run-out beyond A");
+            }
+            let _ = at;
+        }
+        at = m.to;
+    }
+    cover!(seen > 0 && z_long && s > 0, "external run-out, Z long");
+    cover!(seen > 0 && z_long && s < 0, "internal run-out, Z long");
+    cover!(seen > 0 && !z_long, "run-out with X long");
+    cover!(seen > 0 && c.taper != 0, "run-out on a taper");
+}
+
+/// Property 5, no overcut: no pass's tool tip lies outside the final thread
+/// form (the tool's V at depth k centred on the finishing Z) by more than
+/// one increment: |shift - zc| <= round((k - Dn) tan(a/2)) + 1.
+pub fn no_overcut<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let Some(moves) = expand_ok(engine, &c) else { return };
+    let t = (c.end.z - c.start.z).signum();
+    let zc = cycleref::tan::mul_tan_round(c.thread_height - c.finishing_allowance, c.tool_angle).unwrap_or(0);
+    let mut worst = 0;
+    for p in passes(moves) {
+        let shift = t * (p.bn.z - c.start.z);
+        let room = cycleref::tan::mul_tan_round(c.thread_height - p.depth, c.tool_angle).unwrap_or(0);
+        assert!((shift - zc).abs() <= room + 1, "a pass lies outside the final form");
+        assert!(shift >= 0, "a pass starts behind A");
+        worst = worst.max((shift - zc).abs() - room);
+    }
+    cover!(c.infeed == Infeed::LeftRight && c.tool_angle > 0, "D2 with a flank angle");
+    cover!(c.infeed == Infeed::RightCentre && c.tool_angle > 0, "D1 with a flank angle");
+}
+
+/// Property 6, equivalence: the engine's moves (or alarm) equal the
+/// reference model's.
+pub fn equivalence<E: Engine>(d: &Domain, engine: &E) {
+    let c = any_cycle(d);
+    let ours = engine.expand(&c).map(Iterator::collect::<Vec<_>>);
+    let reference = cycleref_spec::g76::expand(&c);
+    assert_eq!(ours, reference, "engine and reference differ for {c:?}");
+    cover!(ours.is_ok(), "a cycle that expands");
+}
+
+/// Property 7, no overflow and no panic: for any cycle in the domain,
+/// valid or not, the engine returns an error or moves, and every move is
+/// inside the documented coordinate range. (Kani checks overflow and panics
+/// on every path; here a panic fails the run.)
+pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
+    let mut c = any_cycle(d);
+    // Also invalid words: a negative or zero where the range tables forbid.
+    match any_in(0, 5) {
+        0 => c.thread_height = any_in(-5, 0),
+        1 => c.min_cut = any_in(-5, -1),
+        2 => c.starts = 0,
+        3 => c.start.x = any_in(-2_000_000_000, 2_000_000_000),
+        _ => {}
+    }
+    match engine.expand(&c) {
+        Ok(moves) => {
+            for m in moves.take(max_moves) {
+                let inside = m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH;
+                assert!(inside, "a move outside the coordinate range: {m:?} of {c:?}");
+            }
+            cover!(true, "a cycle that expands");
+        }
+        Err(_) => cover!(true, "a cycle that is refused"),
+    }
+}
+
+/// Property 8: the integer square root rounds to nearest exactly: s =
+/// round(√x) satisfies (2s - 1)² <= 4x < (2s + 1)², on the domain
+/// `x in lo..=hi`.
+pub fn isqrt_rounds(lo: i64, hi: i64, sqrt: fn(u128) -> u128) {
+    let x = any_in(lo, hi) as u128;
+    let s = sqrt(x);
+    // (2s - 1)^2 <= 4x < (2s + 1)^2, in u128 for x < 2^63 (s < 2^32).
+    let four_x = 4 * x;
+    let lower = (2 * s).saturating_sub(1);
+    assert!(s == 0 || lower * lower <= four_x, "round(√x) too large");
+    assert!(four_x < (2 * s + 1) * (2 * s + 1), "round(√x) too small");
+    cover!(x > 1 && s * s > x, "rounded up");
+    cover!(x > 1 && s * s < x, "rounded down");
+}

@@ -1,0 +1,96 @@
+//! The Kani proofs: the harness bodies of [`crate::harness`] with bounded
+//! domains and unwind bounds that make CBMC finish. Run with
+//! `cargo kani -p cycleref-proofs` (flags in `[workspace.metadata.kani]`).
+//!
+//! The windows are small because wide multiplications and divisions are
+//! expensive for the solver; the tests cover the rest of the range.
+
+use crate::harness::{self, Domain, FixedPoint};
+
+/// A window the solver copes with: depths up to 64 increments, few passes.
+const WINDOW: Domain = Domain {
+    height: (1, 64),
+    first_depth: (1, 64),
+    min_cut: (0, 8),
+    allowance: (0, 64),
+    tool_angle: (0, 99),
+    finishing: (0, 3),
+    infeed: (0, 2),
+    starts: (1, 2),
+    internal: (0, 1),
+    positive_z: (0, 1),
+    taper: (-64, 64),
+    length: (200, 400),
+    run_out_kind: (0, 3),
+    run_out: (0, 16),
+    chamfer: (0, 99),
+    chamfer_angle: (1, 89),
+    units: (0, 7),
+    pass_limit: 64,
+};
+
+#[kani::proof]
+#[kani::unwind(80)]
+fn depth_monotonicity() {
+    harness::depth_monotonicity(&WINDOW, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(80)]
+fn termination() {
+    harness::termination(&WINDOW, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(80)]
+fn finishing() {
+    harness::finishing(&WINDOW, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(80)]
+fn run_out_direction() {
+    harness::run_out_direction(&WINDOW, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(80)]
+fn no_overcut() {
+    harness::no_overcut(&WINDOW, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(40)]
+#[kani::solver(cadical)]
+fn equivalence() {
+    const TINY: Domain = Domain {
+        height: (1, 8),
+        first_depth: (1, 8),
+        min_cut: (0, 2),
+        allowance: (0, 8),
+        tool_angle: (0, 60),
+        infeed: (0, 2),
+        taper: (-4, 4),
+        run_out_kind: (0, 1),
+        run_out: (0, 2),
+        pass_limit: 16,
+        ..Domain::POINT
+    };
+    harness::equivalence(&TINY, &FixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(40)]
+#[kani::solver(cadical)]
+fn no_panic() {
+    // The whole documented range; the pass count is bounded by the limit,
+    // so the up-front count and the first moves are what the solver sees.
+    const FULL: Domain = Domain { pass_limit: 32, ..Domain::FULL };
+    harness::no_panic(&FULL, &FixedPoint, 12);
+}
+
+#[kani::proof]
+#[kani::solver(cadical)]
+fn isqrt_rounds() {
+    harness::isqrt_rounds(0, i64::MAX, cycleref::engine::round_sqrt);
+}

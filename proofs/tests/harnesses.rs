@@ -1,0 +1,152 @@
+//! The proof harnesses under `cargo test`: each property exhaustively over a
+//! small domain (small-scope checking) and by sampling over the documented
+//! ranges. The domains are stated next to each test; the README's table
+//! summarises them. A longer exhaustive run over larger domains:
+//!
+//! ```sh
+//! cargo test -p cycleref-proofs --release --test harnesses -- --ignored
+//! ```
+
+use cycleref_proofs::harness::{self, Domain, FixedPoint};
+use cycleref_proofs::shim::{check, Mode};
+
+/// Exhaustive over every combination of the domain's choices.
+fn exhaustive(max_runs: u64) -> Mode {
+    Mode::Exhaustive { max_runs }
+}
+
+/// Random choices over the domain, with a fixed seed.
+const SAMPLE: Mode = Mode::Sample { runs: 3_000, seed: 0x6376_7265_6672_6566 };
+
+/// The schedule's inputs: k 1..=20, Δd 1..=20, Δdmin 0..=4, d 0..=k, all
+/// three infeed modes (about 100 000 cycles).
+const SCHEDULE: Domain =
+    Domain { height: (1, 20), first_depth: (1, 20), min_cut: (0, 4), allowance: (0, 20), infeed: (0, 2), ..Domain::POINT };
+
+/// Larger for the ignored run: k 1..=48, Δd 1..=48, Δdmin 0..=8, d 0..=k.
+const SCHEDULE_WIDE: Domain =
+    Domain { height: (1, 48), first_depth: (1, 48), min_cut: (0, 8), allowance: (0, 48), infeed: (0, 2), ..Domain::POINT };
+
+/// Geometry: every side, direction, infeed, tool angle in steps, tapers
+/// including X as the long axis (|i| >= |W| = 40), every run-out kind, all
+/// unit codes, over a small schedule.
+const GEOMETRY: Domain = Domain {
+    height: (6, 8),
+    first_depth: (3, 4),
+    min_cut: (1, 1),
+    allowance: (0, 1),
+    tool_angle: (60, 60),
+    finishing: (1, 1),
+    infeed: (0, 2),
+    internal: (0, 1),
+    positive_z: (0, 1),
+    taper: (-42, 42),
+    length: (40, 40),
+    run_out_kind: (0, 3),
+    run_out: (1, 2),
+    chamfer: (3, 3),
+    chamfer_angle: (30, 30),
+    units: (0, 3),
+    ..Domain::POINT
+};
+
+/// Sampling domain: the documented ranges for the depth words, with
+/// lengths chosen so that most cycles expand (pass limit 2000).
+const WIDE: Domain = Domain {
+    height: (1, 999_999_999),
+    first_depth: (1, 999_999_999),
+    min_cut: (0, 999_999_999),
+    allowance: (0, 999_999_999),
+    tool_angle: (0, 99),
+    finishing: (0, 5),
+    infeed: (0, 2),
+    starts: (1, 4),
+    internal: (0, 1),
+    positive_z: (0, 1),
+    taper: (-300_000_000, 300_000_000),
+    length: (1, 999_999_999),
+    run_out_kind: (0, 3),
+    run_out: (0, 999_999_999),
+    chamfer: (0, 99),
+    chamfer_angle: (1, 89),
+    units: (0, 7),
+    pass_limit: 2_000,
+};
+
+#[test]
+fn p1_depth_monotonicity() {
+    check("depth monotonicity", exhaustive(200_000), || harness::depth_monotonicity(&SCHEDULE, &FixedPoint));
+    check("depth monotonicity (sampled)", SAMPLE, || harness::depth_monotonicity(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p2_termination() {
+    check("termination", exhaustive(200_000), || harness::termination(&SCHEDULE, &FixedPoint));
+    check("termination (sampled)", SAMPLE, || harness::termination(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p3_finishing() {
+    let d = Domain { finishing: (0, 3), starts: (1, 3), ..SCHEDULE };
+    let d = Domain { height: (1, 12), first_depth: (1, 12), allowance: (0, 12), ..d };
+    check("finishing", exhaustive(400_000), || harness::finishing(&d, &FixedPoint));
+    check("finishing (sampled)", SAMPLE, || harness::finishing(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p4_run_out_direction() {
+    check("run-out direction", exhaustive(2_000_000), || harness::run_out_direction(&GEOMETRY, &FixedPoint));
+    check("run-out direction (sampled)", SAMPLE, || harness::run_out_direction(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p5_no_overcut() {
+    let d = Domain { run_out_kind: (0, 0), units: (0, 0), taper: (-3, 3), tool_angle: (0, 99), ..GEOMETRY };
+    check("no overcut", exhaustive(2_000_000), || harness::no_overcut(&d, &FixedPoint));
+    check("no overcut (sampled)", SAMPLE, || harness::no_overcut(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p6_equivalence() {
+    let d = Domain { height: (1, 10), first_depth: (1, 10), min_cut: (0, 3), allowance: (0, 10), ..SCHEDULE };
+    check("equivalence (schedule)", exhaustive(200_000), || harness::equivalence(&d, &FixedPoint));
+    let g = Domain { tool_angle: (0, 99), units: (0, 7), ..GEOMETRY };
+    check("equivalence (geometry)", Mode::Sample { runs: 20_000, seed: 7 }, || harness::equivalence(&g, &FixedPoint));
+    check("equivalence (sampled)", SAMPLE, || harness::equivalence(&WIDE, &FixedPoint));
+}
+
+#[test]
+fn p7_no_panic() {
+    check("no panic (sampled, full range)", Mode::Sample { runs: 20_000, seed: 11 }, || {
+        harness::no_panic(&Domain::FULL, &FixedPoint, 200)
+    });
+    check("no panic (sampled, wide)", SAMPLE, || harness::no_panic(&WIDE, &FixedPoint, 100_000));
+}
+
+#[test]
+fn p8_isqrt_rounds() {
+    let sqrt = cycleref::engine::round_sqrt;
+    check("isqrt (exhaustive 0..=2^20)", exhaustive(1 << 21), || harness::isqrt_rounds(0, 1 << 20, sqrt));
+    check("isqrt (sampled)", Mode::Sample { runs: 200_000, seed: 3 }, || harness::isqrt_rounds(0, i64::MAX, sqrt));
+}
+
+#[test]
+#[ignore = "long run: about ten minutes in release; see README"]
+fn long_exhaustive() {
+    let r = check("depth monotonicity (wide)", exhaustive(20_000_000), || {
+        harness::depth_monotonicity(&SCHEDULE_WIDE, &FixedPoint)
+    });
+    eprintln!("depth monotonicity: {} runs", r.runs);
+    let r = check("termination (wide)", exhaustive(20_000_000), || harness::termination(&SCHEDULE_WIDE, &FixedPoint));
+    eprintln!("termination: {} runs", r.runs);
+    let eq = Domain { height: (1, 24), first_depth: (1, 24), min_cut: (0, 4), allowance: (0, 24), ..SCHEDULE };
+    let r = check("equivalence (wide)", exhaustive(20_000_000), || harness::equivalence(&eq, &FixedPoint));
+    eprintln!("equivalence: {} runs", r.runs);
+    let g = Domain { taper: (-60, 60), finishing: (0, 2), units: (0, 7), tool_angle: (29, 31), ..GEOMETRY };
+    let r = check("run-out direction (wide)", exhaustive(50_000_000), || harness::run_out_direction(&g, &FixedPoint));
+    eprintln!("run-out: {} runs", r.runs);
+    let r = check("isqrt (exhaustive 0..=2^26)", exhaustive(1 << 27), || {
+        harness::isqrt_rounds(0, 1 << 26, cycleref::engine::round_sqrt)
+    });
+    eprintln!("isqrt: {} runs", r.runs);
+}
