@@ -69,8 +69,9 @@ struct Common {
     /// Parameter file (TOML), applied after the profile's defaults.
     #[arg(long, value_name = "FILE")]
     params: Option<PathBuf>,
-    /// Engine that expands the cycles.
-    #[arg(long, value_enum, default_value_t = Engine::Spec)]
+    /// Engine that expands the cycles: the fixed-point engine (`impl`) or
+    /// the exact-decimal reference model (`spec`); both give the same output.
+    #[arg(long, value_enum, default_value_t = Engine::Impl)]
     engine: Engine,
     /// Program file, or `-` for standard input.
     #[arg(default_value = "-")]
@@ -94,6 +95,8 @@ enum Increment {
 
 #[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
 enum Engine {
+    /// The fixed-point engine (cycleref::engine).
+    Impl,
     /// The exact-decimal reference model (cycleref-spec).
     Spec,
 }
@@ -185,6 +188,7 @@ impl Job {
 
     fn expand(&self, cycle: &G76Cycle, line: usize) -> Result<Vec<Move>, Failure> {
         let r: Result<Vec<Move>, CycleError> = match self.engine {
+            Engine::Impl => cycleref::engine::expand_g76(cycle).map(Iterator::collect),
             Engine::Spec => cycleref_spec::g76::expand(cycle),
         };
         r.map_err(|e| Failure(format!("{}: line {line}, G76: {e}", self.name)))

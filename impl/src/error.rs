@@ -95,6 +95,8 @@ pub enum CycleError {
     },
     /// F0 or I0.
     ZeroLead,
+    /// A lead outside the range tables (F up to 9999, I 0.0001..2540).
+    LeadOutOfRange,
     /// Note 6: Δdmin > k.
     MinCutExceedsHeight {
         /// Δdmin.
@@ -163,6 +165,9 @@ impl fmt::Display for CycleError {
                 write!(f, "{} = {value} is outside {range}", field.word())
             }
             CycleError::ZeroLead => write!(f, "the lead F(I) is zero: no thread can be cut"),
+            CycleError::LeadOutOfRange => {
+                write!(f, "the lead F(I) is outside the range table (F up to 9999, I 0.0001..2540)")
+            }
             CycleError::MinCutExceedsHeight { min_cut, height } => write!(
                 f,
                 "Q(Δdmin) = {min_cut} is larger than the thread height P(k) = {height} (alarm: note 6, \

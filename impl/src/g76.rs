@@ -173,6 +173,19 @@ impl G76Cycle {
         if c.lead.is_zero() {
             return Err(CycleError::ZeroLead);
         }
+        if !c.lead.in_range() {
+            return Err(CycleError::LeadOutOfRange);
+        }
+        // The chamfer's length K = round(r × 0.1 × lead) is a run-out length:
+        // the same range table applies (an I lead of 0.0001 thread per inch
+        // is 254 m per revolution).
+        if let RunOut::Chamfer { tenths_of_lead, long: None, .. } = c.run_out {
+            let chamfer = c.lead.chamfer_increments(tenths_of_lead, c.units);
+            if chamfer > MAX_LENGTH.unsigned_abs().into() {
+                let value = i64::try_from(chamfer).unwrap_or(i64::MAX);
+                return Err(CycleError::OutOfRange { field: Field::RunOutLong, value: c.len(value) });
+            }
+        }
         // Note 6: minimum cut or finishing allowance larger than the thread height.
         if c.min_cut > c.thread_height {
             return Err(CycleError::MinCutExceedsHeight {

@@ -65,4 +65,36 @@ impl Lead {
     pub const fn is_zero(self) -> bool {
         self.mantissa == 0
     }
+
+    /// True when the value is inside the widest range table of the manuals:
+    /// `F` at most 9999 (mm or inch) per revolution, `I` from 0.0001 to 2540
+    /// threads per inch (988TA: "0.0001 < I < 2540"), with at most
+    /// [`MAX_LEAD_SCALE`] decimals. The reader applies the tighter table of
+    /// the unit; this bound is what the engines rely on.
+    #[must_use]
+    pub const fn in_range(self) -> bool {
+        if self.scale > MAX_LEAD_SCALE || self.mantissa == 0 {
+            return false;
+        }
+        let one = 10_u64.pow(self.scale);
+        match self.word {
+            LeadWord::F => self.mantissa <= 9999 * one,
+            // I >= 0.0001 and I <= 2540.
+            LeadWord::I => self.mantissa as u128 * 10_000 >= one as u128 && self.mantissa <= 2540 * one,
+        }
+    }
+
+    /// The run-out chamfer `round(r × 0.1 × lead)` in increments of
+    /// `units`, exactly, ties away from zero (seed 000 P(r): "单位: 0.1×L").
+    /// For a lead [`in_range`](Self::in_range) every product fits `u128`.
+    #[must_use]
+    pub fn chamfer_increments(self, tenths_of_lead: u32, units: Units) -> u128 {
+        let r = self.increments_per_rev(units);
+        let num = u128::from(tenths_of_lead).saturating_mul(r.num);
+        let den = r.den.saturating_mul(10);
+        if den == 0 {
+            return u128::MAX;
+        }
+        (num + den / 2) / den
+    }
 }

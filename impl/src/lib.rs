@@ -11,6 +11,7 @@
 #![deny(missing_docs)]
 
 pub mod angle;
+pub mod engine;
 pub mod error;
 pub mod g76;
 pub mod lead;
@@ -19,6 +20,7 @@ pub mod tan;
 pub mod units;
 
 pub use angle::StartAngle;
+pub use engine::{expand_g76, G76Moves};
 pub use error::{CycleError, Field};
 pub use g76::{G76Cycle, Infeed, RunOut};
 pub use lead::{Lead, LeadWord, Ratio};

@@ -171,7 +171,11 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
     let run_out = match pick(d.run_out_kind) {
         0 => RunOut::None,
         1 => RunOut::Amounts { short: pick(d.run_out), long: pick(d.run_out) },
-        2 => RunOut::Chamfer { tenths_of_lead: count(d.chamfer), angle_degrees: count(d.chamfer_angle), long: None },
+        2 => RunOut::Chamfer {
+            tenths_of_lead: count(d.chamfer),
+            angle_degrees: count(d.chamfer_angle),
+            long: None,
+        },
         _ => RunOut::Chamfer {
             tenths_of_lead: count(d.chamfer),
             angle_degrees: count(d.chamfer_angle),
@@ -292,7 +296,7 @@ pub fn termination<E: Engine>(d: &Domain, engine: &E) {
     let mut depths: Vec<i64> =
         passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1).map(|p| p.depth).collect();
     depths.dedup();
-    let f = depths.len() as i64;
+    let f = i64::try_from(depths.len()).unwrap_or(i64::MAX);
     if last == 0 {
         assert_eq!(f, 0, "d = k: nothing to rough");
     } else {
@@ -314,7 +318,7 @@ pub fn finishing<E: Engine>(d: &Domain, engine: &E) {
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let all = passes(moves);
-    let last_rough_z = all.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.bn.z).last();
+    let last_rough_z = all.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.bn.z).next_back();
     let finish: Vec<_> = all.iter().filter(|p| p.kind == PassKind::Finish).collect();
     assert_eq!(finish.len() as u64, u64::from(c.finishing_passes) * u64::from(c.starts));
     for (i, p) in finish.iter().enumerate() {
@@ -413,7 +417,8 @@ pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
     match engine.expand(&c) {
         Ok(moves) => {
             for m in moves.take(max_moves) {
-                let inside = m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH;
+                let inside = m.to.x.abs() <= cycleref::units::MAX_LENGTH
+                    && m.to.z.abs() <= cycleref::units::MAX_LENGTH;
                 assert!(inside, "a move outside the coordinate range: {m:?} of {c:?}");
             }
             cover!(true, "a cycle that expands");

@@ -4,6 +4,7 @@
 //! once against [`verify`], which is the real `kani` API under `cargo kani`
 //! and the [`shim`] (exhaustive small-scope enumeration and random sampling)
 //! under `cargo test`.
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 pub mod harness;

@@ -8,7 +8,14 @@
 //! ```
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
-use cycleref_proofs::shim::{check, Mode};
+use cycleref_proofs::shim::{self, Mode};
+
+/// Runs a harness and prints its run count (`--nocapture` shows them).
+fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
+    let r = shim::check(name, mode, body);
+    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
+    r
+}
 
 /// Exhaustive over every combination of the domain's choices.
 fn exhaustive(max_runs: u64) -> Mode {
@@ -20,12 +27,24 @@ const SAMPLE: Mode = Mode::Sample { runs: 3_000, seed: 0x6376_7265_6672_6566 };
 
 /// The schedule's inputs: k 1..=20, Δd 1..=20, Δdmin 0..=4, d 0..=k, all
 /// three infeed modes (about 100 000 cycles).
-const SCHEDULE: Domain =
-    Domain { height: (1, 20), first_depth: (1, 20), min_cut: (0, 4), allowance: (0, 20), infeed: (0, 2), ..Domain::POINT };
+const SCHEDULE: Domain = Domain {
+    height: (1, 20),
+    first_depth: (1, 20),
+    min_cut: (0, 4),
+    allowance: (0, 20),
+    infeed: (0, 2),
+    ..Domain::POINT
+};
 
 /// Larger for the ignored run: k 1..=48, Δd 1..=48, Δdmin 0..=8, d 0..=k.
-const SCHEDULE_WIDE: Domain =
-    Domain { height: (1, 48), first_depth: (1, 48), min_cut: (0, 8), allowance: (0, 48), infeed: (0, 2), ..Domain::POINT };
+const SCHEDULE_WIDE: Domain = Domain {
+    height: (1, 48),
+    first_depth: (1, 48),
+    min_cut: (0, 8),
+    allowance: (0, 48),
+    infeed: (0, 2),
+    ..Domain::POINT
+};
 
 /// Geometry: every side, direction, infeed, tool angle in steps, tapers
 /// including X as the long axis (|i| >= |W| = 40), every run-out kind, all
@@ -111,7 +130,9 @@ fn p6_equivalence() {
     let d = Domain { height: (1, 10), first_depth: (1, 10), min_cut: (0, 3), allowance: (0, 10), ..SCHEDULE };
     check("equivalence (schedule)", exhaustive(200_000), || harness::equivalence(&d, &FixedPoint));
     let g = Domain { tool_angle: (0, 99), units: (0, 7), ..GEOMETRY };
-    check("equivalence (geometry)", Mode::Sample { runs: 20_000, seed: 7 }, || harness::equivalence(&g, &FixedPoint));
+    check("equivalence (geometry)", Mode::Sample { runs: 20_000, seed: 7 }, || {
+        harness::equivalence(&g, &FixedPoint)
+    });
     check("equivalence (sampled)", SAMPLE, || harness::equivalence(&WIDE, &FixedPoint));
 }
 
@@ -127,7 +148,9 @@ fn p7_no_panic() {
 fn p8_isqrt_rounds() {
     let sqrt = cycleref::engine::round_sqrt;
     check("isqrt (exhaustive 0..=2^20)", exhaustive(1 << 21), || harness::isqrt_rounds(0, 1 << 20, sqrt));
-    check("isqrt (sampled)", Mode::Sample { runs: 200_000, seed: 3 }, || harness::isqrt_rounds(0, i64::MAX, sqrt));
+    check("isqrt (sampled)", Mode::Sample { runs: 200_000, seed: 3 }, || {
+        harness::isqrt_rounds(0, i64::MAX, sqrt)
+    });
 }
 
 #[test]
@@ -137,13 +160,18 @@ fn long_exhaustive() {
         harness::depth_monotonicity(&SCHEDULE_WIDE, &FixedPoint)
     });
     eprintln!("depth monotonicity: {} runs", r.runs);
-    let r = check("termination (wide)", exhaustive(20_000_000), || harness::termination(&SCHEDULE_WIDE, &FixedPoint));
+    let r = check("termination (wide)", exhaustive(20_000_000), || {
+        harness::termination(&SCHEDULE_WIDE, &FixedPoint)
+    });
     eprintln!("termination: {} runs", r.runs);
-    let eq = Domain { height: (1, 24), first_depth: (1, 24), min_cut: (0, 4), allowance: (0, 24), ..SCHEDULE };
+    let eq =
+        Domain { height: (1, 24), first_depth: (1, 24), min_cut: (0, 4), allowance: (0, 24), ..SCHEDULE };
     let r = check("equivalence (wide)", exhaustive(20_000_000), || harness::equivalence(&eq, &FixedPoint));
     eprintln!("equivalence: {} runs", r.runs);
     let g = Domain { taper: (-60, 60), finishing: (0, 2), units: (0, 7), tool_angle: (29, 31), ..GEOMETRY };
-    let r = check("run-out direction (wide)", exhaustive(50_000_000), || harness::run_out_direction(&g, &FixedPoint));
+    let r = check("run-out direction (wide)", exhaustive(50_000_000), || {
+        harness::run_out_direction(&g, &FixedPoint)
+    });
     eprintln!("run-out: {} runs", r.runs);
     let r = check("isqrt (exhaustive 0..=2^26)", exhaustive(1 << 27), || {
         harness::isqrt_rounds(0, 1 << 26, cycleref::engine::round_sqrt)

@@ -14,14 +14,20 @@ fn real(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
 }
 
 /// The small schedule domain of `harnesses.rs`.
-const SCHEDULE: Domain =
-    Domain { height: (1, 20), first_depth: (1, 20), min_cut: (0, 4), allowance: (0, 20), infeed: (0, 2), ..Domain::POINT };
+const SCHEDULE: Domain = Domain {
+    height: (1, 20),
+    first_depth: (1, 20),
+    min_cut: (0, 4),
+    allowance: (0, 20),
+    infeed: (0, 2),
+    ..Domain::POINT
+};
 
 const GEOMETRY: Domain = Domain {
-    height: (6, 9),
-    first_depth: (3, 5),
-    allowance: (0, 2),
-    tool_angle: (0, 99),
+    height: (6, 8),
+    first_depth: (3, 4),
+    allowance: (0, 1),
+    tool_angle: (58, 62),
     infeed: (0, 2),
     internal: (0, 1),
     positive_z: (0, 1),
@@ -31,7 +37,6 @@ const GEOMETRY: Domain = Domain {
     run_out: (1, 3),
     ..Domain::POINT
 };
-
 
 /// Applies `f` to every move of the real engine's output.
 fn mutant(f: impl Fn(&G76Cycle, Move) -> Move) -> impl Fn(&G76Cycle) -> Result<Moves, CycleError> {
@@ -48,7 +53,10 @@ fn mutated_schedule_is_caught_by_p1() {
             v.into_iter()
                 .map(|mut m| {
                     if let (Some(p), Some(s)) = (m.pass.as_mut(), second) {
-                        if p.kind == PassKind::Rough && p.number == 3 && c.infeed != cycleref::Infeed::LeftRight {
+                        if p.kind == PassKind::Rough
+                            && p.number == 3
+                            && c.infeed != cycleref::Infeed::LeftRight
+                        {
                             p.depth = s.depth;
                         }
                     }
@@ -58,7 +66,9 @@ fn mutated_schedule_is_caught_by_p1() {
                 .into_iter()
         })
     };
-    check("depth monotonicity", Mode::Exhaustive { max_runs: 200_000 }, || harness::depth_monotonicity(&SCHEDULE, &e));
+    check("depth monotonicity", Mode::Exhaustive { max_runs: 200_000 }, || {
+        harness::depth_monotonicity(&SCHEDULE, &e)
+    });
 }
 
 #[test]
@@ -67,7 +77,8 @@ fn schedule_stopping_short_is_caught_by_p2() {
     // The last rough level stops one increment short of k - d.
     let e = mutant(|c, mut m| {
         if let Some(p) = m.pass.as_mut() {
-            if p.kind == PassKind::Rough && p.depth == c.thread_height - c.finishing_allowance && p.depth > 1 {
+            if p.kind == PassKind::Rough && p.depth == c.thread_height - c.finishing_allowance && p.depth > 1
+            {
                 p.depth -= 1;
             }
         }
@@ -110,7 +121,9 @@ fn flipped_run_out_is_caught_by_p4() {
             out.into_iter()
         })
     };
-    check("run-out direction", Mode::Exhaustive { max_runs: 2_000_000 }, || harness::run_out_direction(&GEOMETRY, &e));
+    check("run-out direction", Mode::Exhaustive { max_runs: 4_000_000 }, || {
+        harness::run_out_direction(&GEOMETRY, &e)
+    });
 }
 
 #[test]
@@ -165,5 +178,5 @@ fn floor_sqrt_is_caught_by_p8() {
 #[test]
 fn the_real_engine_passes_the_same_checks() {
     let e = |c: &G76Cycle| real(c).map(Vec::into_iter);
-    check("control", Mode::Exhaustive { max_runs: 2_000_000 }, || harness::run_out_direction(&GEOMETRY, &e));
+    check("control", Mode::Exhaustive { max_runs: 4_000_000 }, || harness::run_out_direction(&GEOMETRY, &e));
 }

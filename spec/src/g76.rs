@@ -336,6 +336,7 @@ pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
             let lead = c.lead.increments_per_rev(u);
             let chamfer =
                 round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
+            // validate() has refused a chamfer beyond the range table.
             let chamfer = i64::try_from(chamfer).unwrap_or(i64::MAX);
             let short = crate::tan::mul_tan_round(chamfer, 2 * angle_degrees).unwrap_or(i64::MAX);
             (short, long.unwrap_or(chamfer))
@@ -414,12 +415,14 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
 
     // Note 7 and reading R-SHORT: the shortest pass must be longer than the
     // flank shift and not shorter than the run-out.
+    // On either long axis a pass whose shift reaches |W| would start at or
+    // beyond the end line.
     let max_shift = plan.iter().map(|p| p.z_shift).max().unwrap_or(Decimal::ZERO);
+    if max_shift >= w.abs() {
+        return Err(CycleError::ThreadTooShort { shift: len(max_shift, u), length: len(w.abs(), u) });
+    }
     match g.long_axis {
         LongAxis::Z => {
-            if max_shift >= w.abs() {
-                return Err(CycleError::ThreadTooShort { shift: len(max_shift, u), length: len(w.abs(), u) });
-            }
             if let Some((_, kk)) = run_out {
                 if kk > w.abs() - max_shift {
                     return Err(CycleError::RunOutTooLong {

@@ -1,0 +1,145 @@
+//! The engine does not allocate: a counting global allocator sees no
+//! allocation while `expand_g76` checks a cycle and its iterator yields
+//! every move.
+//!
+//! (`cycleref` is `#![no_std]` without `alloc`, so it cannot allocate; this
+//! test checks the same thing at run time, for the whole call path.)
+//!
+//! A global allocator needs `unsafe impl GlobalAlloc`: this test file is
+//! the one place in the workspace that allows `unsafe` (the workspace lint
+//! is `deny`, every library crate has `#![forbid(unsafe_code)]`).
+#![allow(unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use cycleref::engine::expand_g76;
+use cycleref::g76::{G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
+use cycleref::lead::{Lead, LeadWord};
+use cycleref::units::{Point, Units, XMode};
+
+thread_local! {
+    /// Allocations made by this thread while counting.
+    static COUNT: Cell<Option<u64>> = const { Cell::new(None) };
+}
+
+/// The system allocator, counting the allocations of the threads that
+/// asked for it (the test harness allocates on other threads meanwhile).
+struct Counting;
+
+fn count() {
+    // `try_with`: the thread-local may be gone while a thread exits.
+    let _ = COUNT.try_with(|c| {
+        if let Some(n) = c.get() {
+            c.set(Some(n + 1));
+        }
+    });
+}
+
+// SAFETY: every method forwards to `System` with the caller's arguments
+// unchanged, so `System`'s guarantees hold; the counter is a thread-local
+// `Cell` of a `Copy` value, which neither allocates nor re-enters the
+// allocator.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        count();
+        // SAFETY: forwarded unchanged (see the impl).
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        count();
+        // SAFETY: forwarded unchanged (see the impl).
+        unsafe { System.alloc_zeroed(layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        count();
+        // SAFETY: forwarded unchanged (see the impl).
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: forwarded unchanged (see the impl).
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Allocations made by `f` on this thread.
+fn allocations(f: impl FnOnce()) -> u64 {
+    COUNT.with(|c| c.set(Some(0)));
+    f();
+    COUNT.with(|c| c.replace(None)).unwrap_or(0)
+}
+
+/// Expands `c` and walks all its moves; returns (moves, allocations).
+fn walk(c: &G76Cycle) -> (u64, u64) {
+    let mut moves = 0_u64;
+    let mut x = 0_i64;
+    let n = allocations(|| {
+        let it = expand_g76(c).unwrap_or_else(|e| panic!("{e}"));
+        for m in it {
+            moves += 1;
+            x ^= m.to.x;
+        }
+    });
+    assert_ne!(x, 1, "keeps the loop");
+    (moves, n)
+}
+
+/// M68x6 (manuals/gsk988ta-g76.txt, O0013).
+fn m68x6() -> G76Cycle {
+    G76Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(80_000, 10_000),
+        end: Point::new(60_640, -62_000),
+        taper: 0,
+        thread_height: 3680,
+        first_depth: 1800,
+        min_cut: 150,
+        finishing_allowance: 100,
+        finishing_passes: 2,
+        tool_angle: 60,
+        infeed: Infeed::RightFlank,
+        lead_in: 0,
+        starts: 1,
+        lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },
+        run_out: RunOut::Chamfer { tenths_of_lead: 5, angle_degrees: 45, long: None },
+        pass_limit: DEFAULT_PASS_LIMIT,
+    }
+}
+
+#[test]
+fn counter_counts() {
+    let n = allocations(|| drop(std::hint::black_box(vec![1_u8; 10])));
+    assert_eq!(n, 1);
+}
+
+#[test]
+fn m68x6_does_not_allocate() {
+    let (moves, n) = walk(&m68x6());
+    assert_eq!(moves, 30);
+    assert_eq!(n, 0);
+}
+
+#[test]
+fn multi_start_does_not_allocate() {
+    // Seven starts, D2, lead-in with an I lead, many levels.
+    let c = G76Cycle {
+        starts: 7,
+        infeed: Infeed::LeftRight,
+        first_depth: 300,
+        min_cut: 20,
+        lead_in: 2000,
+        lead: Lead { word: LeadWord::I, mantissa: 4, scale: 0 },
+        end: Point::new(60_640, -162_000),
+        ..m68x6()
+    };
+    let (moves, n) = walk(&c);
+    assert!(moves > 7 * 40 * 5, "{moves}");
+    assert_eq!(n, 0);
+}
