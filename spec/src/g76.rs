@@ -84,7 +84,7 @@ fn len(v: Decimal, u: Units) -> Length {
 /// * B: "Z 轴绝对坐标与 A 点相同、X 轴绝对坐标与 C 点 X 轴绝对坐标的差值为 k",
 ///   on the side of A (reading R-SIDE: external when A is outside C,
 ///   internal when inside).
-/// * Long axis: "C 点与 D 点 Z 轴坐标差的绝对值大于 X 轴坐标差的绝对值 (半径值,
+/// * Long axis (reading R-LONG): "C 点与 D 点 Z 轴坐标差的绝对值大于 X 轴坐标差的绝对值 (半径值,
 ///   等于 i 的绝对值) 时, Z 轴为长轴; 反之, X 轴为长轴".
 ///
 /// # Errors
@@ -134,8 +134,8 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
     min_cut.max(from_increments(1, u))
 }
 
-/// Depth of rough level `n` from the previous level's depth (DOMAIN decision
-/// 3, seed 000 "注意 1"):
+/// Depth of rough level `n` from the previous level's depth (reading
+/// R-DEPTH, DOMAIN decision 3, seed 000 "注意 1"):
 ///
 /// `Dn = min(k - d, max(round(Δd √n), D(n-1) + max(Δdmin, 1 increment)))`.
 ///
@@ -176,8 +176,8 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
     Ok(levels)
 }
 
-/// Reading R-LIMIT: the number of rough levels, found before any move is
-/// made. Until the first level where the minimum cut takes over (`round(Δd
+/// Reading R-LIMIT (with R-LINEAR): the number of rough levels, found
+/// before any move is made. Until the first level where the minimum cut takes over (`round(Δd
 /// √n) < D(n-1) + Δdmin`), the levels follow the law; from that level on
 /// every level adds exactly Δdmin (proved in docs/INTERPRETATIONS.md and by
 /// the proof harnesses), so the count is `n - 1 + ceil((k - d - D(n-1)) /

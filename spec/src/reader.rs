@@ -92,7 +92,7 @@ impl MotionMode {
     }
 }
 
-/// Modal values of G76 block 1 and, on the 988TA, J and K.
+/// Modal values of G76 block 1 and, on the 988TA, J and K (reading R-MODAL).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct G76Modal {
     finishing_passes: Option<u32>,
@@ -218,6 +218,7 @@ impl Reader<'_> {
         ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
     }
 
+    /// A length word (reading R-POINT: FANUC bare values are increments).
     fn length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
         let bare = self.machine.profile.bare_length_is_increments && !self.machine.calculator_input;
         self.to_increments(block, w, bare)
@@ -328,6 +329,7 @@ impl Reader<'_> {
                 Some(20 | 21) => {
                     let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
                     if unit != self.units.unit {
+                        // Reading R-UNITS.
                         if self.moved || self.x.is_some() || self.z.is_some() {
                             return Err(err(&block, Some(w), ErrorKind::UnitChangeAfterMotion));
                         }
