@@ -321,7 +321,7 @@ impl<'a> Panel<'a> {
         let start = self.call.cycle.start;
         let mut at = start;
         // Index in `passes` of each (kind, number, start).
-        let mut index: BTreeMap<(u8, u32, u32), usize> = BTreeMap::new();
+        let mut index: BTreeMap<(u8, u32, u16), usize> = BTreeMap::new();
         for m in moves {
             let from = at;
             at = m.to;

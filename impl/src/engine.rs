@@ -82,7 +82,7 @@
 //!   least the depth of the pass, at least one increment). Moving on to the
 //!   next pass takes at most one square root and the start angle's gcd
 //!   (at most ~15 steps for `L ≤ 999`).
-//! * Memory: a [`G76Moves`] is a fixed-size value (408 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (392 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -710,7 +710,7 @@ impl G76Moves {
     fn begin_start(&mut self, start: u32) {
         self.start = start;
         // start < L ≤ 999.
-        self.pass.start = start + 1;
+        self.pass.start = u16::try_from(start + 1).unwrap_or(u16::MAX);
         self.angle = StartAngle::of_start(start, self.frame.starts);
         self.step = 0;
         self.at = self.frame.a;
@@ -792,6 +792,8 @@ impl G76Moves {
 impl Iterator for G76Moves {
     type Item = Move;
 
+    // Inlined across crates: a call per move costs more than the move.
+    #[inline]
     fn next(&mut self) -> Option<Move> {
         loop {
             if self.stage == Stage::Done {

@@ -70,8 +70,8 @@ pub struct Pass {
     pub kind: PassKind,
     /// 1-based number among the passes of its kind (rough 1..=n, finish 1..=m).
     pub number: u32,
-    /// 1-based thread start (1..=L).
-    pub start: u32,
+    /// 1-based thread start (1..=L, L ≤ 999).
+    pub start: u16,
     /// Thread depth of the pass from B (radius increments).
     pub depth: i64,
     /// Cut of the pass: depth minus the previous level's depth (radius

@@ -233,7 +233,7 @@ fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
     for m in moves {
         if m.role == Role::Approach {
             if let Some(p) = m.pass {
-                out.push(PassView { kind: p.kind, depth: p.depth, cut: p.cut, start: p.start, bn: m.to });
+                out.push(PassView { kind: p.kind, depth: p.depth, cut: p.cut, start: u32::from(p.start), bn: m.to });
             }
         }
     }

@@ -36,12 +36,12 @@ const SCHEDULE: Domain = Domain {
     ..Domain::POINT
 };
 
-/// Larger for the ignored run: k 1..=48, Δd 1..=48, Δdmin 0..=8, d 0..=k.
+/// Larger for the ignored run: k 1..=150, Δd 1..=150, Δdmin 0..=12, d 0..=k.
 const SCHEDULE_WIDE: Domain = Domain {
-    height: (1, 48),
-    first_depth: (1, 48),
-    min_cut: (0, 8),
-    allowance: (0, 48),
+    height: (1, 150),
+    first_depth: (1, 150),
+    min_cut: (0, 12),
+    allowance: (0, 150),
     infeed: (0, 2),
     ..Domain::POINT
 };
@@ -154,27 +154,53 @@ fn p8_isqrt_rounds() {
 }
 
 #[test]
-#[ignore = "long run: about ten minutes in release; see README"]
+#[ignore = "long run: several minutes in release; see README"]
 fn long_exhaustive() {
-    let r = check("depth monotonicity (wide)", exhaustive(20_000_000), || {
+    let started = std::time::Instant::now();
+    check("depth monotonicity (wide)", exhaustive(200_000_000), || {
         harness::depth_monotonicity(&SCHEDULE_WIDE, &FixedPoint)
     });
-    eprintln!("depth monotonicity: {} runs", r.runs);
-    let r = check("termination (wide)", exhaustive(20_000_000), || {
+    check("termination (wide)", exhaustive(200_000_000), || {
         harness::termination(&SCHEDULE_WIDE, &FixedPoint)
     });
-    eprintln!("termination: {} runs", r.runs);
+    let f = Domain {
+        height: (1, 40),
+        first_depth: (1, 40),
+        allowance: (0, 40),
+        finishing: (0, 4),
+        starts: (1, 3),
+        ..SCHEDULE
+    };
+    check("finishing (wide)", exhaustive(200_000_000), || harness::finishing(&f, &FixedPoint));
     let eq =
-        Domain { height: (1, 24), first_depth: (1, 24), min_cut: (0, 4), allowance: (0, 24), ..SCHEDULE };
-    let r = check("equivalence (wide)", exhaustive(20_000_000), || harness::equivalence(&eq, &FixedPoint));
-    eprintln!("equivalence: {} runs", r.runs);
-    let g = Domain { taper: (-60, 60), finishing: (0, 2), units: (0, 7), tool_angle: (29, 31), ..GEOMETRY };
-    let r = check("run-out direction (wide)", exhaustive(50_000_000), || {
+        Domain { height: (1, 60), first_depth: (1, 60), min_cut: (0, 6), allowance: (0, 60), ..SCHEDULE };
+    check("equivalence (wide)", exhaustive(200_000_000), || harness::equivalence(&eq, &FixedPoint));
+    let g = Domain {
+        height: (6, 12),
+        taper: (-90, 90),
+        finishing: (0, 2),
+        units: (0, 7),
+        tool_angle: (29, 31),
+        length: (80, 80),
+        ..GEOMETRY
+    };
+    check("run-out direction (wide)", exhaustive(200_000_000), || {
         harness::run_out_direction(&g, &FixedPoint)
     });
-    eprintln!("run-out: {} runs", r.runs);
-    let r = check("isqrt (exhaustive 0..=2^26)", exhaustive(1 << 27), || {
-        harness::isqrt_rounds(0, 1 << 26, cycleref::engine::round_sqrt)
+    let o = Domain {
+        height: (1, 30),
+        first_depth: (1, 30),
+        allowance: (0, 30),
+        tool_angle: (0, 99),
+        length: (200, 200),
+        run_out_kind: (0, 0),
+        units: (0, 0),
+        taper: (0, 0),
+        ..GEOMETRY
+    };
+    check("no overcut (wide)", exhaustive(200_000_000), || harness::no_overcut(&o, &FixedPoint));
+    check("isqrt (exhaustive 0..=2^30)", exhaustive((1 << 30) + 2), || {
+        harness::isqrt_rounds(0, 1 << 30, cycleref::engine::round_sqrt)
     });
-    eprintln!("isqrt: {} runs", r.runs);
+    eprintln!("long exhaustive run: {:.0?}", started.elapsed());
 }

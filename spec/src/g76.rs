@@ -456,7 +456,7 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     for planned in &plan {
         for start in 0..c.starts {
             let mut pass = planned.pass;
-            pass.start = start + 1;
+            pass.start = u16::try_from(start + 1).expect("L <= 999 (validate)");
             let angle = StartAngle::of_start(start, c.starts);
             let depth = from_increments(pass.depth, u);
             // Seed 000 "进刀点实际坐标位置计算": X = X 终点 + 锥度 R(i) ∓ 牙高 P(k)
