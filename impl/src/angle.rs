@@ -29,21 +29,12 @@ impl StartAngle {
     }
 
     /// The angle of start `index` (0-based) of an `starts`-start thread:
-    /// `index * 360° / starts`, in lowest terms. `starts` of 0 counts as 1.
+    /// `index * 360° / starts`, in lowest terms. `starts` of 0 counts as 1;
+    /// `index` is taken modulo `starts`.
     #[must_use]
     pub const fn of_start(index: u32, starts: u32) -> StartAngle {
         let den = if starts == 0 { 1 } else { starts };
-        let num = (index as u64 % den as u64) * FULL_TURN_MILLIDEGREES;
-        let g = gcd(num, den as u64);
-        // g divides den, so the quotient fits u32; num / g < 360 000 × den
-        // with den = starts ≤ 999 for a valid cycle, below 2^32, and
-        // saturates otherwise.
-        #[allow(clippy::cast_possible_truncation)]
-        let d = (den as u64 / g) as u32;
-        let n = num / g;
-        #[allow(clippy::cast_possible_truncation)]
-        let n = if n > u32::MAX as u64 { u32::MAX } else { n as u32 };
-        StartAngle { num: n, den: d }
+        StartSpacing::new(den).angle(index % den)
     }
 
     /// True for 0°.
@@ -58,6 +49,49 @@ impl StartAngle {
     pub const fn rounded_millidegrees(self) -> u64 {
         let d = self.den as u64;
         (2 * self.num as u64 + d) / (2 * d)
+    }
+}
+
+/// The spacing of the starts of an `L`-start thread, `360° / L` in lowest
+/// terms, computed once so that each start's angle needs no division unless
+/// it must be reduced (the engine asks for one angle per pass and start).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct StartSpacing {
+    /// `360 000 / gcd(360 000, L)`: thousandths of a degree per start, over `den`.
+    step: u32,
+    /// `L / gcd(360 000, L)`.
+    den: u32,
+}
+
+impl StartSpacing {
+    /// The spacing of `starts` starts (`starts` ≥ 1; 0 counts as 1).
+    #[must_use]
+    pub const fn new(starts: u32) -> StartSpacing {
+        let l = if starts == 0 { 1 } else { starts as u64 };
+        let g = gcd(FULL_TURN_MILLIDEGREES, l);
+        // g divides both, so the quotients fit u32 (≤ 360 000 and ≤ L).
+        #[allow(clippy::cast_possible_truncation)]
+        StartSpacing { step: (FULL_TURN_MILLIDEGREES / g) as u32, den: (l / g) as u32 }
+    }
+
+    /// The angle of start `index` (0-based, below L): `index × step / den`,
+    /// reduced by `gcd(index, den)` (`step` and `den` are coprime).
+    #[must_use]
+    pub const fn angle(self, index: u32) -> StartAngle {
+        let g = if self.den == 1 { 1 } else { gcd(index as u64, self.den as u64) };
+        let num = index as u64 * self.step as u64;
+        if g == 1 {
+            // index < L ≤ 999 and step ≤ 360 000 for a valid cycle; saturate otherwise.
+            #[allow(clippy::cast_possible_truncation)]
+            let n = if num > u32::MAX as u64 { u32::MAX } else { num as u32 };
+            return StartAngle { num: n, den: self.den };
+        }
+        let n = num / g;
+        #[allow(clippy::cast_possible_truncation)]
+        let n = if n > u32::MAX as u64 { u32::MAX } else { n as u32 };
+        #[allow(clippy::cast_possible_truncation)]
+        let d = (self.den as u64 / g) as u32;
+        StartAngle { num: n, den: d }
     }
 }
 
@@ -112,6 +146,19 @@ mod tests {
         }
         assert_eq!(gcd(998 * 360_000, 999), 9);
         assert_eq!(StartAngle::of_start(3, 8), StartAngle { num: 135_000, den: 1 });
+        // Every start of every L against the plain reduction of j·360000/L.
+        for l in 1..=999_u32 {
+            let spacing = StartSpacing::new(l);
+            for j in 0..l {
+                let num = u64::from(j) * 360_000;
+                let g = euclid(num, u64::from(l));
+                let expected = StartAngle {
+                    num: u32::try_from(num / g).unwrap(),
+                    den: u32::try_from(u64::from(l) / g).unwrap(),
+                };
+                assert_eq!(spacing.angle(j), expected, "start {j} of {l}");
+            }
+        }
         assert_eq!(StartAngle::of_start(1, 7), StartAngle { num: 360_000, den: 7 });
     }
 }

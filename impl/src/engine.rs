@@ -80,16 +80,17 @@
 //!   retract, return), of which the zero-length ones are skipped; at least
 //!   two remain (the pass start Bn is never A, since A is clear of B by at
 //!   least the depth of the pass, at least one increment). Moving on to the
-//!   next pass takes at most one square root and the start angle's gcd
-//!   (at most ~15 steps for `L ≤ 999`).
-//! * Memory: a [`G76Moves`] is a fixed-size value (392 bytes on 64-bit
+//!   next pass takes at most one square root; the next start, a binary gcd
+//!   of numbers below 1000 (no division unless the angle must be reduced,
+//!   [`StartSpacing`]).
+//! * Memory: a [`G76Moves`] is a fixed-size value (400 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
 
-use crate::angle::StartAngle;
+use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{G76Cycle, Infeed, RunOut};
 use crate::lead::{Lead, Ratio};
@@ -358,6 +359,8 @@ struct Frame {
     lead_in: Option<(i64, i64)>,
     /// L.
     starts: u32,
+    /// The spacing of the starts, 360° / L.
+    spacing: StartSpacing,
 }
 
 /// The path of one pass: the candidate moves' end points.
@@ -400,10 +403,15 @@ impl Frame {
                     // (end.z - bn.z)), the rounding on the whole sum. The
                     // divisor is t(|W| - shift) ≠ 0 (ThreadTooShort).
                     let zr = end.z - t * kk;
-                    let den = i128::from(end.z) - i128::from(bn.z);
-                    let num = i128::from(bn.x) * den
-                        + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
-                    let xr = saturate_i64(round_div(num, den));
+                    let xr = if end.x == bn.x {
+                        // A straight cut: no division (the common case).
+                        bn.x
+                    } else {
+                        let den = i128::from(end.z) - i128::from(bn.z);
+                        let num = i128::from(bn.x) * den
+                            + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
+                        saturate_i64(round_div(num, den))
+                    };
                     // J away from the work, at most to E; J may be i64::MAX.
                     let jx = xf.saturating_mul(j).min(s * (self.a.x - end.x));
                     let last = Point::new(end.x + s * jx, end.z);
@@ -665,6 +673,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         run_out,
         lead_in,
         starts: c.starts,
+        spacing: StartSpacing::new(c.starts),
     };
     // Δd < 2^30: Δd² < 2^60.
     let q = c.first_depth.unsigned_abs();
@@ -711,7 +720,7 @@ impl G76Moves {
         self.start = start;
         // start < L ≤ 999.
         self.pass.start = u16::try_from(start + 1).unwrap_or(u16::MAX);
-        self.angle = StartAngle::of_start(start, self.frame.starts);
+        self.angle = self.frame.spacing.angle(start);
         self.step = 0;
         self.at = self.frame.a;
         self.sync_done = false;

@@ -19,7 +19,7 @@ pub mod moves;
 pub mod tan;
 pub mod units;
 
-pub use angle::StartAngle;
+pub use angle::{StartAngle, StartSpacing};
 pub use engine::{expand_g76, G76Moves};
 pub use error::{CycleError, Field};
 pub use g76::{G76Cycle, Infeed, RunOut};

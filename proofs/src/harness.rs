@@ -3,7 +3,7 @@
 //!
 //! Every harness takes a [`Domain`] (the inputs it may choose) and an
 //! engine (a function from a cycle to its moves). The Kani proofs in
-//! [`crate::kani_proofs`] call them with bounded domains and the real
+//! `proofs/src/kani_proofs.rs` (compiled only under `cfg(kani)`) call them with bounded domains and the real
 //! engine; the tests in `proofs/tests/harnesses.rs` call them through the
 //! shim, exhaustively over small domains and by sampling over the full
 //! documented ranges; `proofs/tests/mutants.rs` calls them with engines
@@ -233,7 +233,13 @@ fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
     for m in moves {
         if m.role == Role::Approach {
             if let Some(p) = m.pass {
-                out.push(PassView { kind: p.kind, depth: p.depth, cut: p.cut, start: u32::from(p.start), bn: m.to });
+                out.push(PassView {
+                    kind: p.kind,
+                    depth: p.depth,
+                    cut: p.cut,
+                    start: u32::from(p.start),
+                    bn: m.to,
+                });
             }
         }
     }
