@@ -165,6 +165,34 @@ fn reader(cr: &mut Criterion) {
     g.finish();
 }
 
+/// G32 beside G76: one tapered block with a run-out (two moves), reference
+/// against engine.
+fn g32(cr: &mut Criterion) {
+    use cycleref::{G32Block, G32RunOut, Lead, LeadWord, Point, StartAngle, Units, XMode};
+    let b = G32Block {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(30_000, 2_000),
+        end: Point::new(40_001, -48_000),
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: G32RunOut::Amounts { short: 1_000, long: 2_000 },
+        start_angle: StartAngle::ZERO,
+        sync: true,
+    };
+    assert_eq!(cycleref::expand_g32(&b).expect("valid").count(), 2);
+    let mut g = cr.benchmark_group("g32/taper_run_out");
+    g.throughput(elements(1)).warm_up_time(WARM_UP).measurement_time(Duration::from_millis(2_500));
+    g.bench_function("reference", |bn| bn.iter(|| cycleref_spec::g32::expand(black_box(&b)).expect("valid")));
+    g.bench_function("engine", |bn| {
+        bn.iter(|| {
+            for m in cycleref::expand_g32(black_box(&b)).expect("valid") {
+                black_box(m);
+            }
+        });
+    });
+    g.finish();
+}
+
 /// What `criterion_group!` and `criterion_main!` would generate, written
 /// out (their functions carry no docs, which the workspace lints deny).
 fn main() {
@@ -173,5 +201,6 @@ fn main() {
     expand(&mut cr);
     flat(&mut cr);
     reader(&mut cr);
+    g32(&mut cr);
     cr.final_summary();
 }

@@ -3,7 +3,8 @@
 use std::fmt::Write as _;
 
 use cycleref::units::write_fixed;
-use cycleref::{Flank, LeadWord, Motion, Move, PassKind, Role, Units};
+use cycleref::{Flank, IncrementSystem, LeadWord, Motion, Move, PassKind, Role, StartAngle, Units};
+use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{G76Call, Restore};
 use serde_json::{json, Value};
 
@@ -28,6 +29,29 @@ pub fn lead_word(lead: cycleref::Lead) -> String {
         s.push_str(".0");
     }
     format!("{letter}{s}")
+}
+
+/// The value of a Q word for `angle` in the profile's unit: whole
+/// thousandths of a degree, or degrees with the increment system's
+/// decimals (3 at IS-B, 4 at IS-C), rounded to nearest where the exact
+/// angle has more digits (360°/7).
+pub fn q_word(angle: StartAngle, u: Units, q: QUnit) -> String {
+    match q {
+        QUnit::Millidegrees { .. } => angle.rounded_millidegrees().to_string(),
+        QUnit::Degrees { .. } => {
+            let decimals: u32 = match u.system {
+                IncrementSystem::IsB => 3,
+                IncrementSystem::IsC => 4,
+            };
+            // Units of 10^-decimals degree: num / den millidegrees × 10^(decimals - 3).
+            let scale = u64::from(10_u32.pow(decimals - 3));
+            let den = u64::from(angle.den);
+            let v = (2 * u64::from(angle.num) * scale + den) / (2 * den);
+            let mut s = String::new();
+            let _ = write_fixed(&mut s, i128::from(v), decimals);
+            s
+        }
+    }
 }
 
 /// Name of a pass kind.
@@ -61,7 +85,7 @@ pub fn flank_name(f: Flank) -> &'static str {
 
 /// Writes the NC blocks of one expanded cycle (the `nc` format contract,
 /// documented in the README).
-pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move]) {
+pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move], q: QUnit) {
     let u = call.cycle.units;
     let rough = moves.iter().filter_map(|m| m.pass).filter(|p| p.kind == PassKind::Rough);
     let rough_passes = rough.map(|p| p.number).max().unwrap_or(0);
@@ -91,6 +115,21 @@ pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move]) {
                 );
             }
         }
+        nc_move(out, m, u, q);
+    }
+    restore(out, &call.restore);
+}
+
+/// Writes moves without pass comments (G32 blocks).
+pub fn nc_moves(out: &mut String, moves: &[Move], u: Units, q: QUnit) {
+    for m in moves {
+        nc_move(out, m, u, q);
+    }
+}
+
+/// One move as an NC block.
+fn nc_move(out: &mut String, m: &Move, u: Units, q: QUnit) {
+    {
         let x = fixed(m.to.x, u);
         let z = fixed(m.to.z, u);
         match m.motion {
@@ -100,16 +139,17 @@ pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move]) {
             Motion::Feed => {
                 let _ = writeln!(out, "G01 X{x} Z{z}");
             }
-            Motion::Thread { lead, start_angle, .. } => {
+            Motion::Thread { lead, start_angle, sync } => {
                 let _ = write!(out, "G32 X{x} Z{z} {}", lead_word(lead));
-                if !start_angle.is_zero() {
-                    let _ = write!(out, " Q{}", start_angle.rounded_millidegrees());
+                // Q only where synchronisation starts: on a continuation
+                // block the control ignores it (seed 002, Q rule 2).
+                if sync && !start_angle.is_zero() {
+                    let _ = write!(out, " Q{}", q_word(start_angle, u, q));
                 }
                 out.push('\n');
             }
         }
     }
-    restore(out, &call.restore);
 }
 
 fn restore(out: &mut String, r: &Restore) {

@@ -15,7 +15,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use cycleref::{CycleError, G76Cycle, IncrementSystem, InputUnit, Move, XMode};
+use cycleref::{CycleError, G32Block, G76Cycle, IncrementSystem, InputUnit, Move, XMode};
+use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::Item;
 use cycleref_spec::{read, Machine, ProfileName, Program};
 use serde_json::json;
@@ -149,6 +150,8 @@ struct Job {
     name: String,
     program: Program,
     engine: Engine,
+    /// The unit of Q in the nc output (the profile's G32 Q unit).
+    q_unit: QUnit,
 }
 
 impl Job {
@@ -183,7 +186,9 @@ impl Job {
             machine.x_mode = XMode::Radius;
         }
         let program = read(&text, &machine).map_err(|e| Failure(format!("{name}: {e}")))?;
-        Ok(Job { name, program, engine: c.engine })
+        let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
+        let q_unit = machine.profile.q_unit(bit);
+        Ok(Job { name, program, engine: c.engine, q_unit })
     }
 
     fn expand(&self, cycle: &G76Cycle, line: usize) -> Result<Vec<Move>, Failure> {
@@ -192,6 +197,14 @@ impl Job {
             Engine::Spec => cycleref_spec::g76::expand(cycle),
         };
         r.map_err(|e| Failure(format!("{}: line {line}, G76: {e}", self.name)))
+    }
+
+    fn expand_g32(&self, block: &G32Block, line: usize) -> Result<Vec<Move>, Failure> {
+        let r: Result<Vec<Move>, CycleError> = match self.engine {
+            Engine::Impl => cycleref::expand_g32(block).map(Iterator::collect),
+            Engine::Spec => cycleref_spec::g32::expand(block),
+        };
+        r.map_err(|e| Failure(format!("{}: line {line}, G32: {e}", self.name)))
     }
 
     fn nc(&self) -> Result<String, Failure> {
@@ -204,7 +217,11 @@ impl Job {
                 Item::G76Params(_) => {}
                 Item::G76(call) => {
                     let moves = self.expand(&call.cycle, call.block.line)?;
-                    format::nc_cycle(&mut out, call, &moves);
+                    format::nc_cycle(&mut out, call, &moves, self.q_unit);
+                }
+                Item::G32(call) => {
+                    let moves = self.expand_g32(&call.g32, call.block.line)?;
+                    format::nc_moves(&mut out, &moves, call.g32.units, self.q_unit);
                 }
             }
         }
@@ -213,16 +230,32 @@ impl Job {
 
     fn json(&self) -> Result<String, Failure> {
         let mut cycles = Vec::new();
-        for call in self.program.cycles() {
-            let moves = self.expand(&call.cycle, call.block.line)?;
-            let u = call.cycle.units;
-            cycles.push(json!({
-                "cycle": "G76",
-                "line": call.block.line,
-                "params_line": call.params_line,
-                "start": {"x": format::fixed(call.cycle.start.x, u), "z": format::fixed(call.cycle.start.z, u)},
-                "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
-            }));
+        for item in &self.program.items {
+            match item {
+                Item::G76(call) => {
+                    let moves = self.expand(&call.cycle, call.block.line)?;
+                    let u = call.cycle.units;
+                    cycles.push(json!({
+                        "cycle": "G76",
+                        "line": call.block.line,
+                        "params_line": call.params_line,
+                        "start": {"x": format::fixed(call.cycle.start.x, u), "z": format::fixed(call.cycle.start.z, u)},
+                        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
+                    }));
+                }
+                Item::G32(call) => {
+                    let moves = self.expand_g32(&call.g32, call.block.line)?;
+                    let u = call.g32.units;
+                    let s = call.g32.start;
+                    cycles.push(json!({
+                        "cycle": "G32",
+                        "line": call.block.line,
+                        "start": {"x": format::fixed(s.x, u), "z": format::fixed(s.z, u)},
+                        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
+                    }));
+                }
+                Item::Source(_) | Item::G76Params(_) => {}
+            }
         }
         let doc = json!({
             "format": "cycleref-moves/1",

@@ -9,6 +9,8 @@ const EXAMPLES: &[(&str, &[&str])] = &[
     ("seed000-extended.nc", &["--profile", "gsk988"]),
     ("fanuc-external.nc", &["--profile", "fanuc"]),
     ("fanuc-internal.nc", &["--profile", "fanuc"]),
+    ("gsk980-g32-taper.nc", &["--profile", "gsk980", "--increment", "is-c"]),
+    ("gsk980-g32-runout.nc", &["--profile", "gsk980"]),
 ];
 
 fn example(name: &str) -> String {
@@ -71,8 +73,10 @@ fn multi_start_writes_q_and_restores_the_motion_mode() {
     let out = cycleref(&["expand", "--profile", "gsk988", "-"], Some(program));
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8(out.stdout).unwrap();
-    // Starts at 0, 120 and 240 degrees: Q in thousandths where not 0.
-    assert!(text.contains(" Q120000\n") && text.contains(" Q240000\n"), "{text}");
+    // Starts at 0, 120 and 240 degrees: Q in degrees on the 988TA (its G32
+    // unit), on the synchronising move only.
+    assert!(text.contains(" Q120.000\n") && text.contains(" Q240.000\n"), "{text}");
+    assert_eq!(text.matches(" Q120.000\n").count(), 5, "{text}");
     // G01 was modal before the cycle: it is restored before `X90`.
     assert!(text.ends_with("G01\nX90\n"), "{text}");
 }
@@ -110,6 +114,17 @@ fn json_parses_and_carries_the_annotations() {
     assert_eq!(moves[1]["motion"], "thread");
     assert_eq!(moves[1]["sync"], true);
     assert_eq!(moves[2]["role"], "run-out");
+}
+
+#[test]
+fn g32_blocks_become_plain_thread_moves() {
+    let out = cycleref(&["expand", "--profile", "gsk980", &example("gsk980-g32-runout.nc")], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    // The run-out is its own G32 block; J and K are gone; Q in 0.001° on the
+    // synchronising move only.
+    assert!(text.contains("G32 X40.000 Z-27.000 F2.0 Q90000\nG32 X43.000 Z-30.000 F2.0\n"), "{text}");
+    assert!(text.contains("G32 X37.600 Z-39.000 F2.0\nG32 X40.000 Z-40.000 F2.0\n"), "{text}");
+    assert!(!text.contains(" J") && !text.contains(" K"), "{text}");
 }
 
 #[test]

@@ -78,6 +78,9 @@ impl Field {
 /// Why a cycle cannot be expanded.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CycleError {
+    /// A G32 block whose end point is where the tool already is: there is
+    /// no thread to cut ("missing end point").
+    NoMotion,
     /// A length outside the manual's range table (±999 999 999 increments).
     OutOfRange {
         /// Which word.
@@ -165,6 +168,9 @@ impl fmt::Display for CycleError {
                 write!(f, "{} = {value} is outside {range}", field.word())
             }
             CycleError::ZeroLead => write!(f, "the lead F(I) is zero: no thread can be cut"),
+            CycleError::NoMotion => {
+                write!(f, "the end point X(U) Z(W) is the current position: there is no thread to cut")
+            }
             CycleError::LeadOutOfRange => {
                 write!(f, "the lead F(I) is outside the range table (F up to 9999, I 0.0001..2540)")
             }
@@ -184,7 +190,7 @@ impl fmt::Display for CycleError {
             CycleError::RunOutTooLong { run_out, length } => write!(
                 f,
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
-                 ({length}) (alarm: note 7)"
+                 ({length}) (alarm: G76 note 7, G32 note 4)"
             ),
             CycleError::StartInsideThread => write!(
                 f,

@@ -13,6 +13,7 @@
 pub mod angle;
 pub mod engine;
 pub mod error;
+pub mod g32;
 pub mod g76;
 pub mod lead;
 pub mod moves;
@@ -20,8 +21,10 @@ pub mod tan;
 pub mod units;
 
 pub use angle::{StartAngle, StartSpacing};
+pub use engine::g32::{expand_g32, G32Moves};
 pub use engine::{expand_g76, G76Moves};
 pub use error::{CycleError, Field};
+pub use g32::{G32Block, G32RunOut};
 pub use g76::{G76Cycle, Infeed, RunOut};
 pub use lead::{Lead, LeadWord, Ratio};
 pub use moves::{Flank, Motion, Move, Pass, PassKind, Role};

@@ -447,3 +447,82 @@ pub fn isqrt_rounds(lo: i64, hi: i64, sqrt: fn(u128) -> u128) {
     cover!(x > 1 && s * s > x, "rounded up");
     cover!(x > 1 && s * s < x, "rounded down");
 }
+
+/// A G32 block of a small domain: start and end within `reach` increments
+/// of the origin (any direction, straight, tapered, face), a run-out with
+/// `|J|, K <= run_out`, IS-B/IS-C, mm/inch, diameter/radius.
+pub fn any_g32(reach: i64, run_out: i64) -> cycleref::G32Block {
+    use cycleref::{G32Block, G32RunOut, StartAngle};
+    let code = any_in(0, 7);
+    let units = Units {
+        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
+        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
+    };
+    let x_mode = if code & 4 == 4 { XMode::Radius } else { XMode::Diameter };
+    let start = Point::new(any_in(-reach, reach), any_in(-reach, reach));
+    let end = Point::new(any_in(-reach, reach), any_in(-reach, reach));
+    let run_out = if any_in(0, 1) == 1 {
+        G32RunOut::Amounts { short: any_in(-run_out, run_out), long: any_in(0, run_out) }
+    } else {
+        G32RunOut::None
+    };
+    G32Block {
+        units,
+        x_mode,
+        start,
+        end,
+        lead: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+        run_out,
+        start_angle: StartAngle::ZERO,
+        sync: any_in(0, 1) == 1,
+    }
+}
+
+/// Property 4 for G32: every run-out ends at the end's long-axis coordinate
+/// displaced exactly J (with its sign) along the short axis, and starts
+/// exactly K before the end along the long axis, in the cutting direction;
+/// the cut and the run-out are thread moves and only the first may
+/// synchronise.
+pub fn g32_run_out<F, I>(reach: i64, run_out: i64, engine: &F)
+where
+    F: Fn(&cycleref::G32Block) -> Result<I, CycleError>,
+    I: Iterator<Item = Move>,
+{
+    use cycleref::G32RunOut;
+    let b = any_g32(reach, run_out);
+    // The reader never makes a run-out with J = 0 (all profiles: none).
+    assume(!matches!(b.run_out, G32RunOut::Amounts { short: 0, .. }));
+    let Ok(moves) = engine(&b) else {
+        assume(false);
+        return;
+    };
+    let moves: Vec<Move> = moves.collect();
+    let xf = b.x_mode.factor();
+    let (dx, dz) = (b.end.x - b.start.x, b.end.z - b.start.z);
+    let z_long = xf * dz.abs() > dx.abs();
+    for (i, m) in moves.iter().enumerate() {
+        let Motion::Thread { sync, .. } = m.motion else { panic!("G32 moves are thread moves") };
+        assert_eq!(sync, b.sync && i == 0, "only the first move may synchronise");
+    }
+    match b.run_out {
+        G32RunOut::None => {
+            assert_eq!(moves.len(), 1);
+            assert_eq!(moves.first().map(|m| m.to), Some(b.end));
+        }
+        G32RunOut::Amounts { short, long } => {
+            let last = moves.last().expect("a run-out").to;
+            let run_start = if moves.len() == 2 { moves[0].to } else { b.start };
+            if z_long {
+                assert_eq!(last, Point::new(b.end.x + xf * short, b.end.z), "run-out end: J along X");
+                assert_eq!(run_start.z, b.end.z - dz.signum() * long, "run-out start: K before the end");
+            } else {
+                assert_eq!(last, Point::new(b.end.x, b.end.z + short), "run-out end: J along Z");
+                assert_eq!(run_start.x, b.end.x - dx.signum() * xf * long, "run-out start: K before the end");
+            }
+            cover!(z_long && short > 0, "Z long, J outwards");
+            cover!(z_long && short < 0, "Z long, J inwards");
+            cover!(!z_long && dz == 0, "face thread with run-out");
+            cover!(long == 0, "pull-out only");
+        }
+    }
+}

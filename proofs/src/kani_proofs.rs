@@ -94,3 +94,9 @@ fn no_panic() {
 fn isqrt_rounds() {
     harness::isqrt_rounds(0, i64::MAX, cycleref::engine::round_sqrt);
 }
+
+#[kani::proof]
+#[kani::unwind(4)]
+fn g32_run_out() {
+    harness::g32_run_out(1_000, 100, &cycleref::expand_g32);
+}

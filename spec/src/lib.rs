@@ -18,6 +18,7 @@
 
 pub mod error;
 pub mod exact;
+pub mod g32;
 pub mod g76;
 pub mod lex;
 pub mod profile;

@@ -91,6 +91,41 @@ pub enum RunOutRules {
     Gsk988,
 }
 
+/// G32 run-out rules of a control (reading R-G32RUNOUT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum G32Rules {
+    /// FANUC: G32 has no J/K.
+    NoRunOut,
+    /// GSK 980TDi (seed 002): J signed, K unsigned, both modal, cancelled by
+    /// a non-thread motion block; J or J,K omitted: none; K omitted: K = |J|;
+    /// J = 0: none; J != 0 with K = 0: K = |J|; J = 0 with K != 0: none.
+    Gsk980,
+    /// GSK 988TA: J omitted or 0: none; K omitted (J != 0): no long-axis
+    /// run-out, J along the short axis (K = 0 is read the same way); a
+    /// block with a run-out ends a continuous thread (the next block
+    /// synchronises again).
+    Gsk988,
+}
+
+/// What G32's Q (start angle) means (reading R-G32Q).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum QUnit {
+    /// Thousandths of a degree, a whole number, 0..=360000 (FANUC: no
+    /// decimal point at all; GSK 980TDi No.182.7 = 0: "Q180 或 Q180.0 均认为是
+    /// 0.18°").
+    Millidegrees {
+        /// A decimal point is an error (FANUC).
+        no_point: bool,
+    },
+    /// Degrees, to the increment's decimals; 0..=360 (980TDi No.182.7 = 1)
+    /// or any value reduced modulo 360 (988TA: "如果指定了大于 360.000 的值，按去除
+    /// 整圈后的值来计算").
+    Degrees {
+        /// Values beyond 360 are reduced modulo 360 rather than refused.
+        wrap: bool,
+    },
+}
+
 /// The data that distinguishes one control from another.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Profile {
@@ -116,6 +151,8 @@ pub struct Profile {
     pub max_depth_increments: i64,
     /// Parameter numbers, in the control's own numbering.
     pub params: ParamNumbers,
+    /// G32 run-out rules.
+    pub g32_rules: G32Rules,
 }
 
 /// The parameter numbers a profile uses for G76.
@@ -153,6 +190,7 @@ impl Profile {
                 bare_length_is_increments: true,
                 run_out: RunOutRules::ChamferOnly,
                 jk_modal: false,
+                g32_rules: G32Rules::NoRunOut,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -174,6 +212,7 @@ impl Profile {
                 bare_length_is_increments: false,
                 run_out: RunOutRules::Gsk980,
                 jk_modal: false,
+                g32_rules: G32Rules::Gsk980,
                 max_depth_increments: 99_999_999,
                 params: ParamNumbers {
                     finishing_passes: "57",
@@ -195,6 +234,7 @@ impl Profile {
                 bare_length_is_increments: false,
                 run_out: RunOutRules::Gsk988,
                 jk_modal: true,
+                g32_rules: G32Rules::Gsk988,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -231,6 +271,22 @@ impl Profile {
             m.insert(n.to_string(), ParamValue::Int(0));
         }
         m
+    }
+
+    /// What G32's Q means under parameter `bit` (182.7 on the 980TDi).
+    #[must_use]
+    pub fn q_unit(&self, bit: i64) -> QUnit {
+        match self.name {
+            ProfileName::Fanuc => QUnit::Millidegrees { no_point: true },
+            ProfileName::Gsk980 => {
+                if bit == 0 {
+                    QUnit::Millidegrees { no_point: false }
+                } else {
+                    QUnit::Degrees { wrap: false }
+                }
+            }
+            ProfileName::Gsk988 => QUnit::Degrees { wrap: true },
+        }
     }
 
     /// What P(k), Q(Δd) and Q(Δdmin) mean under parameter `bit` (the value

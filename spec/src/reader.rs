@@ -6,6 +6,8 @@
 //! reference model ([`crate::g76`]) and the engine (`cycleref::engine`)
 //! expand.
 
+use cycleref::angle::StartAngle;
+use cycleref::g32::{G32Block, G32RunOut};
 use cycleref::g76::{G76Cycle, Infeed, RunOut};
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
 use cycleref::units::{Point, MAX_LENGTH};
@@ -14,7 +16,7 @@ use rust_decimal::Decimal;
 
 use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{lex, Block, Word};
-use crate::profile::{Machine, PSplit, PqUnit, RunOutRules};
+use crate::profile::{G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
 /// What the reader found in a program, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -25,6 +27,17 @@ pub enum Item {
     G76Params(Block),
     /// G76 block 2: a cycle to expand.
     G76(G76Call),
+    /// A G32 thread-cutting block.
+    G32(G32Call),
+}
+
+/// One G32 block of a program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct G32Call {
+    /// The block.
+    pub block: Block,
+    /// The resolved block.
+    pub g32: G32Block,
 }
 
 /// One G76 cycle of a program.
@@ -62,6 +75,14 @@ pub struct Program {
 }
 
 impl Program {
+    /// The G32 blocks of the program.
+    pub fn threads(&self) -> impl Iterator<Item = &G32Call> {
+        self.items.iter().filter_map(|i| match i {
+            Item::G32(c) => Some(c),
+            _ => None,
+        })
+    }
+
     /// The cycles of the program.
     pub fn cycles(&self) -> impl Iterator<Item = &G76Call> {
         self.items.iter().filter_map(|i| match i {
@@ -127,6 +148,12 @@ struct Reader<'m> {
     spindle_on: bool,
     modal: G76Modal,
     one_shot: G76OneShot,
+    /// G32's modal J and K (seed 002: "J、K是模态代码 … 在执行非螺纹切削代码时取消").
+    g32_j: Option<i64>,
+    g32_k: Option<i64>,
+    /// The start angle of the open continuous thread, if the previous block
+    /// was a G32 block that leaves the synchronisation running.
+    thread_run: Option<StartAngle>,
 }
 
 fn err(block: &Block, word: Option<&Word>, kind: ErrorKind) -> ProgramError {
@@ -152,6 +179,9 @@ pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
         spindle_on: false,
         modal: G76Modal::default(),
         one_shot: G76OneShot::default(),
+        g32_j: None,
+        g32_k: None,
+        thread_run: None,
     };
     if let Some(mode) = machine.profile.params.thread_mode {
         if machine.int_param(mode) != 0 {
@@ -365,6 +395,22 @@ impl Reader<'_> {
                 self.speed = true;
             }
         }
+        if !block.words.is_empty() {
+            // Continuity needs consecutive G32 blocks (a comment line does not count).
+            let thread_block = motion.unwrap_or(self.motion) == MotionMode::G32
+                && !g76
+                && !g50
+                && !g04
+                && ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c));
+            if !thread_block {
+                self.thread_run = None;
+                // Seed 002: J and K are cancelled by a non-thread motion.
+                if motion.is_some_and(|m| m != MotionMode::G32) || g76 {
+                    self.g32_j = None;
+                    self.g32_k = None;
+                }
+            }
+        }
         if g76 {
             if motion.is_some() {
                 return Err(err(
@@ -388,6 +434,17 @@ impl Reader<'_> {
         }
         if let Some(m) = motion {
             self.motion = m;
+        }
+        if motion == Some(MotionMode::G32)
+            && !g04
+            && !g50
+            && !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c))
+        {
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule: "G32 cuts to an end point" },
+            ));
         }
         if g04 {
             return Ok(Item::Source(block));
@@ -417,8 +474,10 @@ impl Reader<'_> {
         }
         if xw.is_some() || zw.is_some() || uw.is_some() || ww.is_some() {
             if self.motion == MotionMode::G32 {
-                self.check_spindle(&block)?;
+                return self.g32_block(block).map(Item::G32);
             }
+            self.g32_j = None;
+            self.g32_k = None;
             self.x = self.axis(&block, xw, uw, self.x)?;
             self.z = self.axis(&block, zw, ww, self.z)?;
             self.moved = true;
@@ -467,6 +526,132 @@ impl Reader<'_> {
             }
         }
         Ok(())
+    }
+
+    /// A G32 block: `X(U) Z(W) F(I) J K Q` (seed 002).
+    fn g32_block(&mut self, block: Block) -> Result<G32Call, ProgramError> {
+        let rules = self.machine.profile.g32_rules;
+        let allowed = if rules == G32Rules::NoRunOut { "GXZUWFIQMST" } else { "GXZUWFIJKQMST" };
+        self.check_addresses(&block, allowed)?;
+        self.check_spindle(&block)?;
+        let (Some(x0), Some(z0)) = (self.x, self.z) else {
+            return Err(err(&block, None, ErrorKind::PositionUnknown));
+        };
+        let (xw, uw, zw, ww) = (block.get('X')?, block.get('U')?, block.get('Z')?, block.get('W')?);
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return Err(err(
+                &block,
+                uw.or(ww),
+                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
+            ));
+        }
+        let xe = self.axis(&block, xw, uw, Some(x0))?.unwrap_or(x0);
+        let ze = self.axis(&block, zw, ww, Some(z0))?.unwrap_or(z0);
+        let lead = match (block.get('F')?, block.get('I')?) {
+            (Some(f), Some(_)) => {
+                return Err(err(&block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
+            }
+            (Some(w), None) | (None, Some(w)) => self.lead(&block, w)?,
+            (None, None) => self.lead.ok_or_else(|| {
+                err(&block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
+            })?,
+        };
+        self.lead = Some(lead);
+        // J signed, K unsigned (seed 002), both modal.
+        if let Some(w) = block.get('J')? {
+            self.g32_j = Some(self.length(&block, w)?);
+        }
+        if let Some(w) = block.get('K')? {
+            self.g32_k = Some(self.unsigned_length(&block, w)?);
+        }
+        let run_out = resolve_g32_run_out(rules, self.g32_j, self.g32_k);
+        // Q: only the first block of a continuous thread counts (seed 002 rule 2).
+        let q = match block.get('Q')? {
+            Some(w) => Some(self.start_angle(&block, w)?),
+            None => None,
+        };
+        let (sync, start_angle) = match self.thread_run {
+            Some(angle) => (false, angle),
+            None => (true, q.unwrap_or(StartAngle::ZERO)),
+        };
+        let g32 = G32Block {
+            units: self.units,
+            x_mode: self.machine.x_mode,
+            start: Point::new(x0, z0),
+            end: Point::new(xe, ze),
+            lead,
+            run_out,
+            start_angle,
+            sync,
+        };
+        // The position after the block is where the run-out ends (seed 002,
+        // figure 3-82): the reference model says where.
+        let moves = crate::g32::expand(&g32).map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        let last = moves.last().map_or(g32.end, |m| m.to);
+        self.x = Some(last.x);
+        self.z = Some(last.z);
+        self.moved = true;
+        // 988TA: a run-out in a middle segment makes the thread discontinuous.
+        let breaks = rules == G32Rules::Gsk988 && run_out != G32RunOut::None;
+        self.thread_run = if breaks { None } else { Some(start_angle) };
+        Ok(G32Call { block, g32 })
+    }
+
+    /// G32's Q in the profile's unit (reading R-G32Q).
+    fn start_angle(&self, block: &Block, w: &Word) -> Result<StartAngle, ProgramError> {
+        let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
+        let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+        if w.number.negative {
+            return Err(out("0..360 degrees"));
+        }
+        match self.machine.profile.q_unit(bit) {
+            QUnit::Millidegrees { no_point } => {
+                if no_point && w.number.has_point() {
+                    return Err(err(
+                        block,
+                        Some(w),
+                        ErrorKind::DecimalPointNotAllowed { rule: "Q of G32 is given in 0.001 degree" },
+                    ));
+                }
+                match w.number.integer() {
+                    Some(v) if (0..=360_000).contains(&v) => {
+                        Ok(StartAngle::from_millidegrees(u64::try_from(v).unwrap_or(0)))
+                    }
+                    _ => Err(out("0..360000 thousandths of a degree, whole")),
+                }
+            }
+            QUnit::Degrees { wrap } => {
+                let d = w.number.decimal().ok_or_else(|| out("0..360 degrees"))?;
+                let decimals = match self.units.system {
+                    cycleref::IncrementSystem::IsB => 3,
+                    cycleref::IncrementSystem::IsC => 4,
+                };
+                let ten_thousandths = d * Decimal::from(10_000);
+                if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
+                    return Err(err(
+                        block,
+                        Some(w),
+                        ErrorKind::NotInIncrements {
+                            increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
+                        },
+                    ));
+                }
+                let mut t: u64 = u64::try_from(ten_thousandths.trunc()).map_err(|_| out("0..360 degrees"))?;
+                if t > 3_600_000 {
+                    if wrap {
+                        t %= 3_600_000;
+                    } else {
+                        return Err(out("0..360 degrees"));
+                    }
+                }
+                // t / 10 thousandths of a degree, in lowest terms.
+                Ok(if t % 10 == 0 {
+                    StartAngle::from_millidegrees(t / 10)
+                } else {
+                    StartAngle { num: u32::try_from(t).unwrap_or(u32::MAX), den: 10 }
+                })
+            }
+        }
     }
 
     /// G76 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's extras.
@@ -742,6 +927,20 @@ impl Reader<'_> {
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.moved = true;
         Ok(G76Call { params_line: one.line, block, cycle, restore })
+    }
+}
+
+/// Reading R-G32RUNOUT: the profile's rules for G32's modal J and K.
+#[must_use]
+pub fn resolve_g32_run_out(rules: G32Rules, j: Option<i64>, k: Option<i64>) -> G32RunOut {
+    match (rules, j, k) {
+        (G32Rules::NoRunOut, _, _) | (_, None | Some(0), _) => G32RunOut::None,
+        // Seed 002: K omitted, or K = 0 with J != 0: K = J.
+        (G32Rules::Gsk980, Some(j), None | Some(0)) => G32RunOut::Amounts { short: j, long: j.abs() },
+        (G32Rules::Gsk980, Some(j), Some(k)) => G32RunOut::Amounts { short: j, long: k },
+        // 988TA: K omitted: no long-axis run-out, J along the short axis.
+        (G32Rules::Gsk988, Some(j), None | Some(0)) => G32RunOut::Amounts { short: j, long: 0 },
+        (G32Rules::Gsk988, Some(j), Some(k)) => G32RunOut::Amounts { short: j, long: k },
     }
 }
 

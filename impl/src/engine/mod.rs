@@ -87,6 +87,8 @@
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
+pub mod g32;
+
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
 
