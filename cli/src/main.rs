@@ -6,8 +6,10 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod check;
 mod format;
 mod plot;
+mod vectors;
 
 use std::fmt::Write as _;
 use std::io::Read as _;
@@ -43,6 +45,35 @@ enum Command {
         #[command(flatten)]
         common: Common,
     },
+    /// Compare a vendor's toolpath (an expanded program or a CSV of moves)
+    /// with ours, pass by pass. Exit 0 when they agree, 1 when they differ.
+    Check {
+        #[command(flatten)]
+        common: Common,
+        /// The vendor's toolpath: plain G00/G01/G02/G03/G32 blocks, or a CSV
+        /// of moves (`.csv`; see the README for the columns).
+        #[arg(long, value_name = "TRACE")]
+        trace: PathBuf,
+        /// Largest difference, in least increments, still counted as equal.
+        #[arg(long, default_value_t = 0)]
+        tolerance: u64,
+        /// Report format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
+    /// Write a corpus of conformance vectors (programs, parameters and the
+    /// expected moves or error) as JSON files.
+    Vectors {
+        /// Number of cases.
+        #[arg(long, default_value_t = 100)]
+        count: u32,
+        /// Seed of the generator: the same seed gives the same corpus.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Output directory (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Draw the toolpath of every cycle in the XZ plane as SVG.
     Plot {
         #[command(flatten)]
@@ -50,6 +81,9 @@ enum Command {
         /// Output file.
         #[arg(short, long)]
         output: PathBuf,
+        /// A vendor's toolpath (as for `check`) to draw over ours.
+        #[arg(long, value_name = "TRACE")]
+        trace: Option<PathBuf>,
     },
 }
 
@@ -103,6 +137,12 @@ enum Engine {
 }
 
 #[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
+enum ReportFormat {
+    Text,
+    Json,
+}
+
+#[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
 enum Format {
     Nc,
     Json,
@@ -114,9 +154,9 @@ struct Failure(String);
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
-        Ok(out) => {
+        Ok((out, code)) => {
             print!("{out}");
-            ExitCode::SUCCESS
+            ExitCode::from(code)
         }
         Err(Failure(msg)) => {
             eprintln!("cycleref: {msg}");
@@ -125,23 +165,40 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(cli: Cli) -> Result<String, Failure> {
+/// Runs a command: its standard output and exit status, or a failure
+/// (exit status 2).
+fn run(cli: Cli) -> Result<(String, u8), Failure> {
+    let ok = |s: String| Ok((s, 0));
     match cli.command {
         Command::Expand { common, format } => {
             let job = Job::load(&common)?;
             match format {
-                Format::Nc => job.nc(),
-                Format::Json => job.json(),
+                Format::Nc => ok(job.nc()?),
+                Format::Json => ok(job.json()?),
             }
         }
-        Command::Passes { common } => Job::load(&common)?.passes(),
-        Command::Plot { common, output } => {
+        Command::Passes { common } => ok(Job::load(&common)?.passes()?),
+        Command::Plot { common, output, trace } => {
             let job = Job::load(&common)?;
-            let svg = job.plot()?;
+            let overlay = match trace {
+                Some(t) => Some(check::overlay(&job, &t).map_err(Failure)?),
+                None => None,
+            };
+            let svg = job.plot(overlay.as_ref())?;
             std::fs::write(&output, svg)
                 .map_err(|e| Failure(format!("{}: cannot write: {e}", output.display())))?;
-            Ok(String::new())
+            ok(String::new())
         }
+        Command::Check { common, trace, tolerance, format } => {
+            let job = Job::load(&common)?;
+            let report = check::run(&job, &trace, tolerance).map_err(Failure)?;
+            let text = match format {
+                ReportFormat::Text => report.text(),
+                ReportFormat::Json => report.json(),
+            };
+            Ok((text, u8::from(!report.agree())))
+        }
+        Command::Vectors { count, seed, out } => ok(vectors::run(count, seed, &out).map_err(Failure)?),
     }
 }
 
@@ -152,6 +209,8 @@ struct Job {
     engine: Engine,
     /// The unit of Q in the nc output (the profile's G32 Q unit).
     q_unit: QUnit,
+    /// The machine the program was read with.
+    machine: Machine,
 }
 
 impl Job {
@@ -188,7 +247,7 @@ impl Job {
         let program = read(&text, &machine).map_err(|e| Failure(format!("{name}: {e}")))?;
         let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
         let q_unit = machine.profile.q_unit(bit);
-        Ok(Job { name, program, engine: c.engine, q_unit })
+        Ok(Job { name, program, engine: c.engine, q_unit, machine })
     }
 
     fn expand(&self, cycle: &G76Cycle, line: usize) -> Result<Vec<Move>, Failure> {
@@ -309,12 +368,12 @@ impl Job {
         Ok(out)
     }
 
-    fn plot(&self) -> Result<String, Failure> {
+    fn plot(&self, overlay: Option<&plot::Overlay>) -> Result<String, Failure> {
         let mut cycles = Vec::new();
         for call in self.program.cycles() {
             let moves = self.expand(&call.cycle, call.block.line)?;
             cycles.push((call.clone(), moves));
         }
-        plot::svg(&self.name, &cycles).map_err(Failure)
+        plot::svg(&self.name, &cycles, overlay).map_err(Failure)
     }
 }

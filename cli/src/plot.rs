@@ -51,6 +51,8 @@ const RAPID: &str = "#8c8c8c";
 const RAPID_DASH: &str = "6 4";
 const FINISH: &str = "#d62728";
 const RUN_OUT: &str = "#2ca02c";
+/// A vendor's trace drawn over the toolpath.
+const TRACE: &str = "#d6278a";
 const LEAD_IN: &str = "#9467bd";
 const POINT: &str = "#000000";
 const GRID: &str = "#e4e4e4";
@@ -65,7 +67,7 @@ const LEGEND_PASSES: u32 = 8;
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
-pub fn svg(name: &str, cycles: &[(G76Call, Vec<Move>)]) -> Result<String, String> {
+pub fn svg(name: &str, cycles: &[(G76Call, Vec<Move>)], overlay: Option<&Overlay>) -> Result<String, String> {
     if cycles.is_empty() {
         return Err(format!("{name}: no G76 cycle to plot"));
     }
@@ -79,6 +81,9 @@ pub fn svg(name: &str, cycles: &[(G76Call, Vec<Move>)]) -> Result<String, String
     for (index, (call, moves)) in cycles.iter().enumerate() {
         let panel = Panel::new(name, call, moves)?;
         let mut group = panel.draw();
+        if let Some(o) = overlay {
+            group = panel.draw_overlay(group, o, index);
+        }
         if index > 0 {
             let top = PANEL_HEIGHT * count(index);
             group = group.set("transform", format!("translate(0 {})", num(top)));
@@ -206,6 +211,14 @@ impl Segments {
 /// Manhattan distance in increments.
 fn distance(p: Point, q: Point) -> u64 {
     p.x.abs_diff(q.x).saturating_add(p.z.abs_diff(q.z))
+}
+
+/// A vendor's toolpath to draw over ours (`cycleref plot --trace`).
+pub struct Overlay {
+    /// The trace's name, for the label.
+    pub name: String,
+    /// Its points in order, in increments.
+    pub points: Vec<Point>,
 }
 
 /// Scales from increments to pixels.
@@ -457,6 +470,43 @@ impl<'a> Panel<'a> {
             Some(PassKind::Finish) => (FINISH.into(), 2.0),
             None => (POINT.into(), 1.5),
         }
+    }
+
+    /// The trace as a magenta polyline over the toolpath, clipped to the
+    /// plot area, with a label: where it leaves our path, it shows.
+    fn draw_overlay(&self, g: Group, o: &Overlay, index: usize) -> Group {
+        let mut d = String::new();
+        for (i, p) in o.points.iter().enumerate() {
+            let (x, y) = self.map.px(*p);
+            let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(x), num(y));
+        }
+        let id = format!("plot-area-{index}");
+        let clip = svg::node::element::ClipPath::new().set("id", id.as_str()).add(
+            Rectangle::new()
+                .set("x", PLOT_LEFT)
+                .set("y", PLOT_TOP)
+                .set("width", PLOT_RIGHT - PLOT_LEFT)
+                .set("height", PLOT_BOTTOM - PLOT_TOP),
+        );
+        g.add(clip)
+            .add(
+                Path::new()
+                    .set("d", d)
+                    .set("fill", "none")
+                    .set("stroke", TRACE)
+                    .set("stroke-width", 1.2)
+                    .set("stroke-opacity", 0.85)
+                    .set("clip-path", format!("url(#{id})"))
+                    .add(Title::new(format!("trace {}", o.name))),
+            )
+            .add(
+                Text::new(format!("\u{2014} trace: {}", o.name))
+                    .set("x", PLOT_RIGHT)
+                    .set("y", 66)
+                    .set("text-anchor", "end")
+                    .set("font-size", 12)
+                    .set("fill", TRACE),
+            )
     }
 
     fn draw_heading(&self, g: Group) -> Group {

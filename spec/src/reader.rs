@@ -203,55 +203,77 @@ pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
     Ok(Program { items, units: r.units })
 }
 
-impl Reader<'_> {
-    fn increment_text(&self) -> String {
-        let unit = match self.units.unit {
-            InputUnit::Metric => "mm",
-            InputUnit::Inch => "inch",
-        };
-        let mut s = String::from("0.");
-        for _ in 1..self.units.decimals() {
-            s.push('0');
-        }
-        s.push('1');
-        format!("{s} {unit}")
-    }
+/// A length word in least increments of `units`, under `machine`'s
+/// decimal-point rule (reading R-POINT): with a decimal point, or without
+/// one on a GSK profile, the value is in mm (inch) and must be a whole
+/// number of increments; without one on FANUC (unless calculator-type
+/// input), it is the number of increments. The one home of the rule, used
+/// by the program reader and by trace readers.
+///
+/// # Errors
+///
+/// A value finer than the increment or beyond the range tables.
+pub fn length_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+    let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
+    to_increments(units, block, w, bare)
+}
 
-    /// A length word in increments. `bare_increments` says what a value
-    /// without a decimal point means.
+fn increment_text(units: Units) -> String {
+    let unit = match units.unit {
+        InputUnit::Metric => "mm",
+        InputUnit::Inch => "inch",
+    };
+    let mut s = String::from("0.");
+    for _ in 1..units.decimals() {
+        s.push('0');
+    }
+    s.push('1');
+    format!("{s} {unit}")
+}
+
+fn range_err(units: Units, signed: bool) -> ErrorKind {
+    let mut max = String::new();
+    let _ = cycleref::units::write_fixed(&mut max, i128::from(MAX_LENGTH), units.decimals());
+    ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
+}
+
+/// A length word in increments. `bare_increments` says what a value
+/// without a decimal point means.
+fn to_increments(units: Units, block: &Block, w: &Word, bare_increments: bool) -> Result<i64, ProgramError> {
+    let n = &w.number;
+    let v = if !n.has_point() && bare_increments {
+        n.integer()
+    } else {
+        n.decimal().and_then(|d| {
+            let scaled = d * Decimal::from(units.per_unit());
+            if scaled.fract().is_zero() {
+                i64::try_from(scaled.trunc()).ok()
+            } else {
+                None
+            }
+        })
+    };
+    let v = v.ok_or_else(|| {
+        err(block, Some(w), ErrorKind::NotInIncrements { increment: increment_text(units) })
+    })?;
+    if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+        return Err(err(block, Some(w), range_err(units, true)));
+    }
+    Ok(v)
+}
+
+impl Reader<'_> {
     fn to_increments(&self, block: &Block, w: &Word, bare_increments: bool) -> Result<i64, ProgramError> {
-        let n = &w.number;
-        let v = if !n.has_point() && bare_increments {
-            n.integer()
-        } else {
-            n.decimal().and_then(|d| {
-                let scaled = d * Decimal::from(self.units.per_unit());
-                if scaled.fract().is_zero() {
-                    i64::try_from(scaled.trunc()).ok()
-                } else {
-                    None
-                }
-            })
-        };
-        let v = v.ok_or_else(|| {
-            err(block, Some(w), ErrorKind::NotInIncrements { increment: self.increment_text() })
-        })?;
-        if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
-            return Err(err(block, Some(w), self.range_err(true)));
-        }
-        Ok(v)
+        to_increments(self.units, block, w, bare_increments)
     }
 
     fn range_err(&self, signed: bool) -> ErrorKind {
-        let mut max = String::new();
-        let _ = cycleref::units::write_fixed(&mut max, i128::from(MAX_LENGTH), self.units.decimals());
-        ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
+        range_err(self.units, signed)
     }
 
     /// A length word (reading R-POINT: FANUC bare values are increments).
     fn length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
-        let bare = self.machine.profile.bare_length_is_increments && !self.machine.calculator_input;
-        self.to_increments(block, w, bare)
+        length_word(self.machine, self.units, block, w)
     }
 
     fn unsigned_length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
@@ -599,59 +621,7 @@ impl Reader<'_> {
 
     /// G32's Q in the profile's unit (reading R-G32Q).
     fn start_angle(&self, block: &Block, w: &Word) -> Result<StartAngle, ProgramError> {
-        let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
-        let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
-        if w.number.negative {
-            return Err(out("0..360 degrees"));
-        }
-        match self.machine.profile.q_unit(bit) {
-            QUnit::Millidegrees { no_point } => {
-                if no_point && w.number.has_point() {
-                    return Err(err(
-                        block,
-                        Some(w),
-                        ErrorKind::DecimalPointNotAllowed { rule: "Q of G32 is given in 0.001 degree" },
-                    ));
-                }
-                match w.number.integer() {
-                    Some(v) if (0..=360_000).contains(&v) => {
-                        Ok(StartAngle::from_millidegrees(u64::try_from(v).unwrap_or(0)))
-                    }
-                    _ => Err(out("0..360000 thousandths of a degree, whole")),
-                }
-            }
-            QUnit::Degrees { wrap } => {
-                let d = w.number.decimal().ok_or_else(|| out("0..360 degrees"))?;
-                let decimals = match self.units.system {
-                    cycleref::IncrementSystem::IsB => 3,
-                    cycleref::IncrementSystem::IsC => 4,
-                };
-                let ten_thousandths = d * Decimal::from(10_000);
-                if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
-                    return Err(err(
-                        block,
-                        Some(w),
-                        ErrorKind::NotInIncrements {
-                            increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
-                        },
-                    ));
-                }
-                let mut t: u64 = u64::try_from(ten_thousandths.trunc()).map_err(|_| out("0..360 degrees"))?;
-                if t > 3_600_000 {
-                    if wrap {
-                        t %= 3_600_000;
-                    } else {
-                        return Err(out("0..360 degrees"));
-                    }
-                }
-                // t / 10 thousandths of a degree, in lowest terms.
-                Ok(if t % 10 == 0 {
-                    StartAngle::from_millidegrees(t / 10)
-                } else {
-                    StartAngle { num: u32::try_from(t).unwrap_or(u32::MAX), den: 10 }
-                })
-            }
-        }
+        q_word(self.machine, self.units, block, w)
     }
 
     /// G76 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's extras.
@@ -927,6 +897,69 @@ impl Reader<'_> {
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.moved = true;
         Ok(G76Call { params_line: one.line, block, cycle, restore })
+    }
+}
+
+/// G32's Q as a start angle, in the profile's unit (reading R-G32Q): the one
+/// home of the rule, used by the program reader and by trace readers.
+///
+/// # Errors
+///
+/// A value outside 0..360°, finer than the unit, or a decimal point where
+/// the profile forbids one.
+pub fn q_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Result<StartAngle, ProgramError> {
+    let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
+    let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+    if w.number.negative {
+        return Err(out("0..360 degrees"));
+    }
+    match machine.profile.q_unit(bit) {
+        QUnit::Millidegrees { no_point } => {
+            if no_point && w.number.has_point() {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::DecimalPointNotAllowed { rule: "Q of G32 is given in 0.001 degree" },
+                ));
+            }
+            match w.number.integer() {
+                Some(v) if (0..=360_000).contains(&v) => {
+                    Ok(StartAngle::from_millidegrees(u64::try_from(v).unwrap_or(0)))
+                }
+                _ => Err(out("0..360000 thousandths of a degree, whole")),
+            }
+        }
+        QUnit::Degrees { wrap } => {
+            let d = w.number.decimal().ok_or_else(|| out("0..360 degrees"))?;
+            let decimals = match units.system {
+                cycleref::IncrementSystem::IsB => 3,
+                cycleref::IncrementSystem::IsC => 4,
+            };
+            let ten_thousandths = d * Decimal::from(10_000);
+            if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::NotInIncrements {
+                        increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
+                    },
+                ));
+            }
+            let mut t: u64 = u64::try_from(ten_thousandths.trunc()).map_err(|_| out("0..360 degrees"))?;
+            if t > 3_600_000 {
+                if wrap {
+                    t %= 3_600_000;
+                } else {
+                    return Err(out("0..360 degrees"));
+                }
+            }
+            // t / 10 thousandths of a degree, in lowest terms.
+            Ok(if t % 10 == 0 {
+                StartAngle::from_millidegrees(t / 10)
+            } else {
+                StartAngle { num: u32::try_from(t).unwrap_or(u32::MAX), den: 10 }
+            })
+        }
     }
 }
 
