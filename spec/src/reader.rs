@@ -113,6 +113,9 @@ impl MotionMode {
     }
 }
 
+/// X, Z, U and W of a block.
+type AxisWords<'a> = (Option<&'a Word>, Option<&'a Word>, Option<&'a Word>, Option<&'a Word>);
+
 /// Modal values of G76 block 1 and, on the 988TA, J and K (reading R-MODAL).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct G76Modal {
@@ -471,17 +474,7 @@ impl Reader<'_> {
         if g04 {
             return Ok(Item::Source(block));
         }
-        let xw = block.get('X')?;
-        let zw = block.get('Z')?;
-        let uw = block.get('U')?;
-        let ww = block.get('W')?;
-        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
-            return Err(err(
-                &block,
-                uw.or(ww),
-                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
-            ));
-        }
+        let (xw, zw, uw, ww) = Self::axis_words(&block)?;
         if g50 {
             if uw.is_some() || ww.is_some() {
                 return Err(err(&block, uw.or(ww), ErrorKind::Unsupported("U/W in G50".into())));
@@ -529,6 +522,27 @@ impl Reader<'_> {
         Ok(cur)
     }
 
+    /// X, Z, U and W of a block; X with U or Z with W is an error.
+    fn axis_words(block: &Block) -> Result<AxisWords<'_>, ProgramError> {
+        let (xw, zw, uw, ww) = (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?);
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return Err(err(
+                block,
+                uw.or(ww),
+                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
+            ));
+        }
+        Ok((xw, zw, uw, ww))
+    }
+
+    /// The end point X(U) Z(W) of a block that starts at `from`.
+    fn end_point(&self, block: &Block, from: Point) -> Result<Point, ProgramError> {
+        let (xw, zw, uw, ww) = Self::axis_words(block)?;
+        let x = self.axis(block, xw, uw, Some(from.x))?.unwrap_or(from.x);
+        let z = self.axis(block, zw, ww, Some(from.z))?.unwrap_or(from.z);
+        Ok(Point::new(x, z))
+    }
+
     fn check_spindle(&self, block: &Block) -> Result<(), ProgramError> {
         if self.speed && self.spindle_on {
             Ok(())
@@ -550,6 +564,44 @@ impl Reader<'_> {
         Ok(())
     }
 
+    /// P(k) or Q(Δd) of G76 block 2: required, in the profile's P/Q unit,
+    /// 1..=the profile's range table.
+    fn depth_word(
+        &self,
+        block: &Block,
+        letter: char,
+        what: &'static str,
+        rule: &'static str,
+    ) -> Result<i64, ProgramError> {
+        let max = self.machine.profile.max_depth_increments;
+        let w = block.get(letter)?.ok_or_else(|| err(block, None, ErrorKind::Missing { what, rule }))?;
+        let v = self.pq_length(block, w)?;
+        if v == 0 || v > max {
+            return Err(err(
+                block,
+                Some(w),
+                ErrorKind::OutOfRange { range: format!("1..{max} least increments") },
+            ));
+        }
+        Ok(v)
+    }
+
+    /// The lead of a thread block: its F or I, else the modal one; it
+    /// becomes the modal lead.
+    fn block_lead(&mut self, block: &Block) -> Result<Lead, ProgramError> {
+        let lead = match (block.get('F')?, block.get('I')?) {
+            (Some(f), Some(_)) => {
+                return Err(err(block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
+            }
+            (Some(w), None) | (None, Some(w)) => self.lead(block, w)?,
+            (None, None) => self.lead.ok_or_else(|| {
+                err(block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
+            })?,
+        };
+        self.lead = Some(lead);
+        Ok(lead)
+    }
+
     /// A G32 block: `X(U) Z(W) F(I) J K Q` (seed 002).
     fn g32_block(&mut self, block: Block) -> Result<G32Call, ProgramError> {
         let rules = self.machine.profile.g32_rules;
@@ -559,26 +611,8 @@ impl Reader<'_> {
         let (Some(x0), Some(z0)) = (self.x, self.z) else {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
         };
-        let (xw, uw, zw, ww) = (block.get('X')?, block.get('U')?, block.get('Z')?, block.get('W')?);
-        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
-            return Err(err(
-                &block,
-                uw.or(ww),
-                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
-            ));
-        }
-        let xe = self.axis(&block, xw, uw, Some(x0))?.unwrap_or(x0);
-        let ze = self.axis(&block, zw, ww, Some(z0))?.unwrap_or(z0);
-        let lead = match (block.get('F')?, block.get('I')?) {
-            (Some(f), Some(_)) => {
-                return Err(err(&block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
-            }
-            (Some(w), None) | (None, Some(w)) => self.lead(&block, w)?,
-            (None, None) => self.lead.ok_or_else(|| {
-                err(&block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
-            })?,
-        };
-        self.lead = Some(lead);
+        let Point { x: xe, z: ze } = self.end_point(&block, Point::new(x0, z0))?;
+        let lead = self.block_lead(&block)?;
         // J signed, K unsigned (seed 002), both modal.
         if let Some(w) = block.get('J')? {
             self.g32_j = Some(self.length(&block, w)?);
@@ -749,75 +783,15 @@ impl Reader<'_> {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
         };
         self.check_spindle(&block)?;
-        let xw = block.get('X')?;
-        let uw = block.get('U')?;
-        let zw = block.get('Z')?;
-        let ww = block.get('W')?;
-        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
-            return Err(err(
-                &block,
-                uw.or(ww),
-                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
-            ));
-        }
-        let xd = self.axis(&block, xw, uw, Some(xa))?.unwrap_or(xa);
-        let zd = self.axis(&block, zw, ww, Some(za))?.unwrap_or(za);
+        let Point { x: xd, z: zd } = self.end_point(&block, Point::new(xa, za))?;
         let taper = match block.get('R')? {
             Some(w) => self.length(&block, w)?,
             None => 0,
         };
-        let k = block.get('P')?.ok_or_else(|| {
-            err(
-                &block,
-                None,
-                ErrorKind::Missing { what: "P(k) (thread height)", rule: "alarm when P(k) is not given" },
-            )
-        })?;
-        let k = self.pq_length(&block, k).and_then(|v| {
-            if v == 0 || v > profile.max_depth_increments {
-                Err(err(
-                    &block,
-                    Some(k),
-                    ErrorKind::OutOfRange {
-                        range: format!("1..{} least increments", profile.max_depth_increments),
-                    },
-                ))
-            } else {
-                Ok(v)
-            }
-        })?;
-        let dd = block.get('Q')?.ok_or_else(|| {
-            err(
-                &block,
-                None,
-                ErrorKind::Missing { what: "Q(Δd) (first depth)", rule: "alarm when Δd is not given" },
-            )
-        })?;
-        let first_depth = self.pq_length(&block, dd).and_then(|v| {
-            if v == 0 || v > profile.max_depth_increments {
-                Err(err(
-                    &block,
-                    Some(dd),
-                    ErrorKind::OutOfRange {
-                        range: format!("1..{} least increments", profile.max_depth_increments),
-                    },
-                ))
-            } else {
-                Ok(v)
-            }
-        })?;
-        let f = block.get('F')?;
-        let i = block.get('I')?;
-        let lead = match (f, i) {
-            (Some(f), Some(_)) => {
-                return Err(err(&block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
-            }
-            (Some(w), None) | (None, Some(w)) => self.lead(&block, w)?,
-            (None, None) => self.lead.ok_or_else(|| {
-                err(&block, None, ErrorKind::Missing { what: "F(I) (lead)", rule: "a thread needs a lead" })
-            })?,
-        };
-        self.lead = Some(lead);
+        let k = self.depth_word(&block, 'P', "P(k) (thread height)", "alarm when P(k) is not given")?;
+        let first_depth =
+            self.depth_word(&block, 'Q', "Q(Δd) (first depth)", "alarm when Δd is not given")?;
+        let lead = self.block_lead(&block)?;
         let mut j = None;
         let mut kk = None;
         if profile.block2_extra.contains('J') {
