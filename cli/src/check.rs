@@ -211,6 +211,13 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
                     });
                     out.push(t.inject(&m, Context::G76 { line, pass, role: m.role }));
                 }
+                // G76 is one-shot: the motion mode before it is in force again.
+                t.motion = match call.restore.motion {
+                    Some("G01") => Kind::Feed,
+                    Some("G02" | "G03") => Kind::Arc,
+                    Some("G32") => Kind::Thread,
+                    _ => Kind::Rapid,
+                };
             }
             Item::G32(call) => {
                 let line = call.block.line;

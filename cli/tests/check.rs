@@ -179,3 +179,15 @@ fn plot_overlays_a_trace() {
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("trace: ") && text.contains("#d6278a") && text.contains("clip-path"));
 }
+
+#[test]
+fn the_motion_mode_after_a_cycle_is_the_one_before_it() {
+    // G01 is modal before the G76; the `X90 Z20` after it is a feed move in
+    // the program and in our expansion (which restores G01).
+    let program = "M03 S500\nG01 X80 Z10 F0.2\nG76 P010060 Q0.1 R0\nG76 X60 Z-30 P2 Q1 F6\nX90 Z20\n";
+    let prog = tmp("modal.nc", program);
+    let out = cycleref(&["expand", prog.to_str().unwrap()]);
+    let trace = tmp("modal-trace.nc", &String::from_utf8(out.stdout).unwrap());
+    let out = cycleref(&["check", "--trace", trace.to_str().unwrap(), prog.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+}
