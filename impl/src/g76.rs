@@ -176,10 +176,11 @@ impl G76Cycle {
         if !c.lead.in_range() {
             return Err(CycleError::LeadOutOfRange);
         }
-        // The chamfer's length K = round(r × 0.1 × lead) is a run-out length:
-        // the same range table applies (an I lead of 0.0001 thread per inch
-        // is 254 m per revolution).
-        if let RunOut::Chamfer { tenths_of_lead, long: None, .. } = c.run_out {
+        // The chamfer's length round(r × 0.1 × lead) is a run-out length
+        // (K, and J through the angle, also when K is programmed): the same
+        // range table applies (an I lead of 0.0001 thread per inch is 254 m
+        // per revolution).
+        if let RunOut::Chamfer { tenths_of_lead, .. } = c.run_out {
             let chamfer = c.lead.chamfer_increments(tenths_of_lead, c.units);
             if chamfer > MAX_LENGTH.unsigned_abs().into() {
                 let value = i64::try_from(chamfer).unwrap_or(i64::MAX);

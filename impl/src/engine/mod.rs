@@ -268,10 +268,10 @@ fn round_ratio(num: u128, r: Ratio) -> Option<u128> {
 }
 
 /// The run-out amounts `(J, K)` in increments, or `None` for no run-out,
-/// as the reference's `run_out_amounts` (reading R-RUNOUT), including its
-/// saturation: a chamfer beyond `i64` is `i64::MAX`, and `J` of a chamfer
-/// beyond the range tables (where the tangent product is not proved exact)
-/// is `i64::MAX`, i.e. the run-out goes all the way to E.
+/// as the reference's `run_out_amounts` (reading R-RUNOUT). `validate()`
+/// has bounded the chamfer by the range table, so the saturations below
+/// (to `i64::MAX`, as the reference's `unwrap_or`) are never reached for a
+/// validated cycle.
 fn run_out_amounts(c: &G76Cycle) -> Option<(i64, i64)> {
     let (j, k) = match c.run_out {
         RunOut::None => return None,
