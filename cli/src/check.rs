@@ -294,7 +294,9 @@ fn theirs_csv(text: &str, units: Units) -> Result<Vec<Step>, String> {
         let length = |s: &str, what: &str| -> Result<i64, String> {
             let d = rust_decimal::Decimal::from_str_exact(s)
                 .map_err(|_| format!("CSV line {n}: {what} `{s}` is not a decimal"))?;
-            let v = d * rust_decimal::Decimal::from(units.per_unit());
+            let v = d
+                .checked_mul(rust_decimal::Decimal::from(units.per_unit()))
+                .ok_or_else(|| format!("CSV line {n}: {what} `{s}` is out of range"))?;
             if !v.fract().is_zero() {
                 return Err(format!("CSV line {n}: {what} `{s}` is not a whole number of increments"));
             }
@@ -312,7 +314,9 @@ fn theirs_csv(text: &str, units: Units) -> Result<Vec<Step>, String> {
                 let d = rust_decimal::Decimal::from_str_exact(s).map_err(|_| {
                     format!("CSV line {n}: q `{s}` is not a decimal (thousandths of a degree)")
                 })?;
-                let tenths = d * rust_decimal::Decimal::from(10);
+                let tenths = d
+                    .checked_mul(rust_decimal::Decimal::from(10))
+                    .ok_or_else(|| format!("CSV line {n}: q `{s}` out of range"))?;
                 if !tenths.fract().is_zero() || d.is_sign_negative() {
                     return Err(format!(
                         "CSV line {n}: q `{s}` must be a multiple of 0.1 thousandth of a degree"

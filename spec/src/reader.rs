@@ -247,8 +247,8 @@ fn to_increments(units: Units, block: &Block, w: &Word, bare_increments: bool) -
     let v = if !n.has_point() && bare_increments {
         n.integer()
     } else {
-        n.decimal().and_then(|d| {
-            let scaled = d * Decimal::from(units.per_unit());
+        // checked: a 28-digit value times 10^5 overflows a Decimal.
+        n.decimal().and_then(|d| d.checked_mul(Decimal::from(units.per_unit()))).and_then(|scaled| {
             if scaled.fract().is_zero() {
                 i64::try_from(scaled.trunc()).ok()
             } else {
@@ -753,9 +753,9 @@ impl Reader<'_> {
     }
 
     fn param_length(&self, number: &str) -> Result<i64, ProgramError> {
-        let d = self.machine.length_param(number) * Decimal::from(self.units.per_unit());
-        match i64::try_from(d.trunc()) {
-            Ok(v) if d.fract().is_zero() && (0..=MAX_LENGTH).contains(&v) => Ok(v),
+        let d = self.machine.length_param(number).checked_mul(Decimal::from(self.units.per_unit()));
+        match d.map(|d| (i64::try_from(d.trunc()), d.fract().is_zero())) {
+            Some((Ok(v), true)) if (0..=MAX_LENGTH).contains(&v) => Ok(v),
             _ => Err(ProgramError {
                 line: 0,
                 word: None,
@@ -909,7 +909,7 @@ pub fn q_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Resul
                 cycleref::IncrementSystem::IsB => 3,
                 cycleref::IncrementSystem::IsC => 4,
             };
-            let ten_thousandths = d * Decimal::from(10_000);
+            let ten_thousandths = d.checked_mul(Decimal::from(10_000)).ok_or_else(|| out("0..360 degrees"))?;
             if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
                 return Err(err(
                     block,

@@ -341,3 +341,18 @@ fn cycle_alarms_carry_the_block_line() {
     assert!(matches!(e, CycleError::RunOutTooLong { .. }), "{e}");
     assert!(e.to_string().contains("note 7"), "{e}");
 }
+
+/// Found by fuzzing (fuzz/): values with 28 digits overflowed a Decimal
+/// when scaled to increments or to ten-thousandths of a degree and
+/// panicked; they are errors now.
+#[test]
+fn huge_values_are_errors_not_panics() {
+    let e = error("M03 S500\nG00 X40 Z2\nG32 Z-30 F2 Q9888888888888888888888888888\n", &gsk988());
+    assert_eq!(e.word.as_deref(), Some("Q9888888888888888888888888888"));
+    let e = error("G00 X9888888888888888888888888.888 Z2\n", &gsk988());
+    assert_eq!(e.word.as_deref(), Some("X9888888888888888888888888.888"));
+    let mut m = gsk988();
+    m.apply_toml("[parameters]\n5140 = \"79228162514264337593543950335\"\n").unwrap();
+    let e = error("M03 S500\nG00 X80 Z10\nG76 X60 Z-30 P2 Q0.5 F2\n", &m);
+    assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
+}
