@@ -811,14 +811,15 @@ impl Iterator for G76Moves {
                 return None;
             }
             let step = self.step;
-            let p = self.path;
             // (thread?, end point, role); None when the path has no such move.
+            // Only the field needed is read (copying the whole path per move
+            // showed in the profile).
             let candidate = match step {
-                0 => Some((false, p.approach, Role::Approach)),
-                1 => p.lead_in.map(|to| (true, to, Role::LeadIn)),
-                2 => Some((true, p.cut, Role::Cut)),
-                3 => p.run_out.map(|to| (true, to, Role::RunOut)),
-                4 => Some((false, p.retract, Role::Retract)),
+                0 => Some((false, self.path.approach, Role::Approach)),
+                1 => self.path.lead_in.map(|to| (true, to, Role::LeadIn)),
+                2 => Some((true, self.path.cut, Role::Cut)),
+                3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
+                4 => Some((false, self.path.retract, Role::Retract)),
                 5 => Some((false, self.frame.a, Role::Return)),
                 _ => {
                     // The path of this start is done: next start, or next pass.
