@@ -47,3 +47,46 @@ fn thread_start_one_past_the_range_limit_is_refused() {
     );
     assert_eq!(cycleref_spec::g76::expand(&c).map(|_| ()), Err(e));
 }
+
+fn g32(start: Point, end: Point, short: i64, long: i64) -> cycleref::G32Block {
+    cycleref::G32Block {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start,
+        end,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: cycleref::G32RunOut::Amounts { short, long },
+        start_angle: cycleref::StartAngle::ZERO,
+        sync: true,
+    }
+}
+
+fn both(b: &cycleref::G32Block) -> Result<Vec<cycleref::Move>, CycleError> {
+    let ours = cycleref::expand_g32(b).map(Iterator::collect::<Vec<_>>);
+    assert_eq!(ours, cycleref_spec::g32::expand(b));
+    ours
+}
+
+/// A G32 run-out as long as the move is allowed (the whole move is the
+/// run-out); one increment longer is the alarm. Z long, and X long with a
+/// diameter X, where K is a radius (found by cargo-mutants: `xf * K` could
+/// become `xf + K` unnoticed).
+#[test]
+fn g32_run_out_exactly_the_length_of_the_move() {
+    // Z long: |W| = 10.000.
+    let moves = both(&g32(Point::new(40_000, 0), Point::new(40_000, -10_000), 1_000, 10_000)).unwrap();
+    assert_eq!(moves.len(), 1);
+    assert_eq!(moves[0].to, Point::new(42_000, -10_000));
+    assert!(matches!(
+        both(&g32(Point::new(40_000, 0), Point::new(40_000, -10_000), 1_000, 10_001)),
+        Err(CycleError::RunOutTooLong { .. })
+    ));
+    // X long (a face thread), diameter X: 60.000 on the diameter is 30.000 radius.
+    let moves = both(&g32(Point::new(80_000, 0), Point::new(20_000, 0), -1_000, 30_000)).unwrap();
+    assert_eq!(moves.len(), 1);
+    assert_eq!(moves[0].to, Point::new(20_000, -1_000));
+    assert!(matches!(
+        both(&g32(Point::new(80_000, 0), Point::new(20_000, 0), -1_000, 30_001)),
+        Err(CycleError::RunOutTooLong { .. })
+    ));
+}
