@@ -909,7 +909,8 @@ pub fn q_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Resul
                 cycleref::IncrementSystem::IsB => 3,
                 cycleref::IncrementSystem::IsC => 4,
             };
-            let ten_thousandths = d.checked_mul(Decimal::from(10_000)).ok_or_else(|| out("0..360 degrees"))?;
+            let ten_thousandths =
+                d.checked_mul(Decimal::from(10_000)).ok_or_else(|| out("0..360 degrees"))?;
             if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
                 return Err(err(
                     block,
