@@ -24,7 +24,11 @@ use cycleref_spec::{read, Machine, ProfileName, Program};
 use serde_json::json;
 
 #[derive(Parser)]
-#[command(name = "cycleref", version, about = "Reference expansion and checking of lathe thread-cutting cycles (G76, G32)")]
+#[command(
+    name = "cycleref",
+    version,
+    about = "Reference expansion and checking of lathe thread-cutting cycles (G76, G32)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
