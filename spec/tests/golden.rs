@@ -240,3 +240,134 @@ fn fanuc_internal() {
         pass("36.000", "1.932", ("36.000", "-39.700"), ("35.400", "-40.000"), ("26.000", "3.000"))
     );
 }
+
+fn expand_text(src: &str) -> Vec<Move> {
+    let program = read(src, &Machine::new(ProfileName::Gsk988)).unwrap_or_else(|e| panic!("{e}"));
+    let call = program.cycles().next().expect("one G76");
+    cycleref_spec::g76::expand(&call.cycle).expect("expands")
+}
+
+/// The pass starts (approach ends) with their flank, as `(X, Z, flank)`.
+fn starts(moves: &[Move]) -> Vec<(String, String, cycleref::Flank, PassKind, u32)> {
+    let f = |v: i64| {
+        let mut s = String::new();
+        cycleref::units::write_fixed(&mut s, i128::from(v), 3).unwrap();
+        s
+    };
+    moves
+        .iter()
+        .filter(|m| m.role == Role::Approach)
+        .map(|m| {
+            let p = m.pass.unwrap();
+            (f(m.to.x), f(m.to.z), p.flank, p.kind, p.number)
+        })
+        .collect()
+}
+
+/// Infeed D2 (左右等量轮流切入) on seed 000's thread without run-out:
+/// k = 3, Δd = 1.8, d = 0.5 (k' = 2.5), a = 45 (tan 22.5° = 0.41421356).
+/// Levels 1.8 and 2.5. The centre line zc = round(2.5 × 0.41421356) =
+/// round(1.035534) = 1.036 (reading R-INFEED).
+/// Level 1 (not the last): right flank shift round(1.8 × 0.41421356) =
+/// round(0.745584) = 0.746 → Z 9.254; left flank 2 × 1.036 - 0.746 = 1.326
+/// → Z 8.674; X = 60 + 2 × (3 - 1.8) = 62.4 for both.
+/// Level 2 (the last, k - d): once, shift 1.036 → Z 8.964, X 61.0.
+/// Finishing at X60 (D), the last rough Z 8.964.
+#[test]
+fn infeed_d2_left_right() {
+    use cycleref::Flank::{Centre, Left, Right};
+    let moves = expand_text("M03 S500\nG00 X80 Z10\nG76 P010045 Q0.15 R0.5 D2\nG76 X60 Z-60 P3 Q1.8 F3\n");
+    assert_eq!(
+        starts(&moves),
+        vec![
+            ("62.400".into(), "9.254".into(), Right, PassKind::Rough, 1),
+            ("62.400".into(), "8.674".into(), Left, PassKind::Rough, 2),
+            ("61.000".into(), "8.964".into(), Right, PassKind::Rough, 3),
+            ("60.000".into(), "8.964".into(), Centre, PassKind::Finish, 1),
+        ]
+    );
+    // Both passes of level 1 cut 1.8 (the level's cut), level 2 cuts 0.7.
+    let cuts: Vec<i64> =
+        moves.iter().filter(|m| m.role == Role::Approach).map(|m| m.pass.unwrap().cut).collect();
+    assert_eq!(cuts, vec![1800, 1800, 700, 500]);
+}
+
+/// Infeed D1 (右中轮流切入): k = 3, Δd = 1, Δdmin = 0.1, d = 0.2 (k' = 2.8),
+/// a = 60 (tan 30° = 0.5773503). Levels round(√n) to 0.001: 1.000, 1.414,
+/// 1.732, 2.000, 2.236, 2.449, 2.646, then √8 = 2.828 ≥ 2.8 → 2.800 (every
+/// law step is above Δdmin). zc = round(2.8 × 0.5773503) = round(1.616581)
+/// = 1.617 → Z 8.383. Odd levels on the right flank: 1.000 × tan = 0.57735
+/// → 0.577 (Z 9.423); 1.732 → 0.99997 → 1.000 (Z 9.000); 2.236 → 1.290955 →
+/// 1.291 (Z 8.709); 2.646 → 1.527669 → 1.528 (Z 8.472). Even levels on the
+/// centre line, Z 8.383. X = 60 + 2 (3 - D).
+#[test]
+fn infeed_d1_right_centre() {
+    use cycleref::Flank::{Centre, Right};
+    let moves = expand_text("M03 S500\nG00 X80 Z10\nG76 P010060 Q0.1 R0.2 D1\nG76 X60 Z-60 P3 Q1 F3\n");
+    let r = PassKind::Rough;
+    assert_eq!(
+        starts(&moves),
+        vec![
+            ("64.000".into(), "9.423".into(), Right, r, 1),
+            ("63.172".into(), "8.383".into(), Centre, r, 2),
+            ("62.536".into(), "9.000".into(), Right, r, 3),
+            ("62.000".into(), "8.383".into(), Centre, r, 4),
+            ("61.528".into(), "8.709".into(), Right, r, 5),
+            ("61.102".into(), "8.383".into(), Centre, r, 6),
+            ("60.708".into(), "8.472".into(), Right, r, 7),
+            ("60.400".into(), "8.383".into(), Centre, r, 8),
+            ("60.000".into(), "8.383".into(), Centre, PassKind::Finish, 1),
+        ]
+    );
+}
+
+/// Lead-in E (旋进) on the M68x6 thread: E = 0.5, lead 6: the smallest whole
+/// number of leads not shorter than E is 1, so the screw-in is 6.000 long
+/// along Z (reading R-LEADIN). Pass 1: Bn = (64.400, 8.961), so An =
+/// (64.400 + 2 × 0.5, 8.961 + 6) = (65.400, 14.961): a rapid to An, then a
+/// thread move (synchronised) to Bn, then the cut (not synchronised again).
+#[test]
+fn lead_in_screws_in_over_one_lead() {
+    let moves = expand_text(
+        "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1 E0.5\nG76 X60.64 Z-62 P3.680 Q1.800 F6\n",
+    );
+    let first: Vec<String> = render(&moves[..4], 3);
+    assert_eq!(
+        first,
+        vec!["G00 X65.400 Z14.961", "G32 X64.400 Z8.961", "G32 X64.400 Z-59.000", "G32 X70.400 Z-62.000"]
+    );
+    let syncs: Vec<bool> =
+        moves[..4].iter().map(|m| matches!(m.motion, Motion::Thread { sync: true, .. })).collect();
+    assert_eq!(syncs, vec![false, true, false, false]);
+    assert_eq!(moves[1].role, Role::LeadIn);
+}
+
+/// Three starts (L3): every pass is cut for starts at 0°, 120° and 240°
+/// before the next depth (reading R-STARTS); the start angle travels with
+/// the synchronised move.
+#[test]
+fn three_starts_cut_each_depth_in_turn() {
+    let moves = expand_text("M03 S500\nG00 X80 Z10\nG76 P010060 Q0.1 R0 L3\nG76 X60 Z-30 P1 Q1 F6\n");
+    let order: Vec<(u32, u16, u32, u32)> = moves
+        .iter()
+        .filter_map(|m| match m.motion {
+            Motion::Thread { start_angle, sync: true, .. } => {
+                let p = m.pass.unwrap();
+                Some((p.number, p.start, start_angle.num, start_angle.den))
+            }
+            _ => None,
+        })
+        .collect();
+    // k = 1, Δd = 1: one rough level at k - d = 1, then one finishing pass.
+    assert_eq!(
+        order,
+        vec![
+            (1, 1, 0, 1),
+            (1, 2, 120_000, 1),
+            (1, 3, 240_000, 1),
+            (1, 1, 0, 1),
+            (1, 2, 120_000, 1),
+            (1, 3, 240_000, 1)
+        ]
+    );
+}
