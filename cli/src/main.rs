@@ -378,6 +378,11 @@ impl Job {
             let moves = self.expand(&call.cycle, call.block.line)?;
             cycles.push((call.clone(), moves));
         }
-        plot::svg(&self.name, &cycles, overlay).map_err(Failure)
+        let mut threads = Vec::new();
+        for call in self.program.threads() {
+            let moves = self.expand_g32(&call.g32, call.block.line)?;
+            threads.push((call.clone(), moves));
+        }
+        plot::svg(&self.name, &cycles, &threads, overlay).map_err(Failure)
     }
 }

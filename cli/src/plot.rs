@@ -29,7 +29,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 
 use cycleref::{G76Cycle, InputUnit, Motion, Move, PassKind, Point, Role, XMode};
-use cycleref_spec::reader::G76Call;
+use cycleref_spec::reader::{G32Call, G76Call};
 use svg::node::element::{Circle, Group, Line, Path, Rectangle, Text, Title};
 use svg::Document;
 
@@ -67,11 +67,17 @@ const LEGEND_PASSES: u32 = 8;
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
-pub fn svg(name: &str, cycles: &[(G76Call, Vec<Move>)], overlay: Option<&Overlay>) -> Result<String, String> {
-    if cycles.is_empty() {
-        return Err(format!("{name}: no G76 cycle to plot"));
+pub fn svg(
+    name: &str,
+    cycles: &[(G76Call, Vec<Move>)],
+    threads: &[(G32Call, Vec<Move>)],
+    overlay: Option<&Overlay>,
+) -> Result<String, String> {
+    if cycles.is_empty() && threads.is_empty() {
+        return Err(format!("{name}: no G76 cycle or G32 block to plot"));
     }
-    let height = PANEL_HEIGHT * count(cycles.len());
+    let panels = cycles.len() + usize::from(!threads.is_empty());
+    let height = PANEL_HEIGHT * count(panels);
     let mut doc = Document::new()
         .set("width", WIDTH)
         .set("height", height)
@@ -98,7 +104,103 @@ pub fn svg(name: &str, cycles: &[(G76Call, Vec<Move>)], overlay: Option<&Overlay
         }
         doc = doc.add(group);
     }
+    if !threads.is_empty() {
+        let top = PANEL_HEIGHT * count(cycles.len());
+        let mut group = g32_panel(name, threads);
+        if !cycles.is_empty() {
+            group = group.set("transform", format!("translate(0 {})", num(top)));
+        }
+        doc = doc.add(group);
+    }
     Ok(format!("{doc}\n"))
+}
+
+/// One panel with every G32 block of the program: thread moves in a blue
+/// ramp by block, run-outs green, the start of each synchronised run marked.
+/// The moves between the blocks are the program's own and are not drawn.
+fn g32_panel(name: &str, threads: &[(G32Call, Vec<Move>)]) -> Group {
+    let first = &threads[0].0;
+    let per_unit = first.g32.units.per_unit();
+    let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
+    let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
+    for p in points {
+        x_min = x_min.min(p.x);
+        x_max = x_max.max(p.x);
+        z_min = z_min.min(p.z);
+        z_max = z_max.max(p.z);
+    }
+    let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
+    let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
+    let map = Mapping { per_unit, z_lo, z_hi, x_lo, x_hi };
+    let unit = match first.g32.units.unit {
+        InputUnit::Metric => "mm",
+        InputUnit::Inch => "inch",
+    };
+    let x_kind = match first.g32.x_mode {
+        XMode::Diameter => "diameter",
+        XMode::Radius => "radius",
+    };
+    let lines = format!("lines {}-{}", first.block.line, threads[threads.len() - 1].0.block.line);
+    let mut g = Group::new()
+        .add(
+            Text::new(format!("{name} \u{2014} G32 blocks ({lines})"))
+                .set("x", PLOT_LEFT)
+                .set("y", 28)
+                .set("font-size", 17)
+                .set("font-weight", "bold")
+                .set("fill", "#000000"),
+        )
+        .add(
+            Text::new(format!(
+                "{} block{}; blue: thread, green: run-out, circles: where the spindle synchronises",
+                threads.len(),
+                if threads.len() == 1 { "" } else { "s" }
+            ))
+            .set("x", PLOT_LEFT)
+            .set("y", 50)
+            .set("font-size", 12)
+            .set("fill", "#444444"),
+        );
+    g = draw_axes(g, &map, unit, x_kind);
+    let total = u32::try_from(threads.len()).unwrap_or(u32::MAX);
+    for (i, (call, moves)) in threads.iter().enumerate() {
+        let mut at = call.g32.start;
+        if call.g32.sync {
+            let (x, y) = map.px(at);
+            g = g.add(
+                Circle::new()
+                    .set("cx", num(x))
+                    .set("cy", num(y))
+                    .set("r", 4)
+                    .set("fill", "none")
+                    .set("stroke", POINT)
+                    .add(Title::new(format!("line {}: synchronisation starts", call.block.line))),
+            );
+        }
+        for m in moves {
+            let (x1, y1) = map.px(at);
+            let (x2, y2) = map.px(m.to);
+            let run_out = m.role == Role::RunOut;
+            let colour =
+                if run_out { RUN_OUT.to_string() } else { ramp(u32::try_from(i + 1).unwrap_or(1), total) };
+            g = g.add(
+                Line::new()
+                    .set("x1", num(x1))
+                    .set("y1", num(y1))
+                    .set("x2", num(x2))
+                    .set("y2", num(y2))
+                    .set("stroke", colour)
+                    .set("stroke-width", if run_out { 3.0 } else { 1.8 })
+                    .add(Title::new(format!(
+                        "line {}: {}",
+                        call.block.line,
+                        crate::format::role_name(m.role)
+                    ))),
+            );
+            at = m.to;
+        }
+    }
+    g
 }
 
 /// `n` as a float (counts here are far below 2^52).
@@ -540,94 +642,12 @@ impl<'a> Panel<'a> {
         .add(Text::new(sub).set("x", PLOT_LEFT).set("y", 50).set("font-size", 12).set("fill", "#444444"))
     }
 
-    fn draw_axes(&self, mut g: Group) -> Group {
-        let m = &self.map;
-        g = g.add(
-            Rectangle::new()
-                .set("x", PLOT_LEFT)
-                .set("y", PLOT_TOP)
-                .set("width", PLOT_RIGHT - PLOT_LEFT)
-                .set("height", PLOT_BOTTOM - PLOT_TOP)
-                .set("fill", "none")
-                .set("stroke", "#333333"),
-        );
-        let (zs, zdec) = ticks(m.z_lo, m.z_hi, 10.0);
-        for z in zs {
-            let x = num(m.px_z(z));
-            g = g
-                .add(
-                    Line::new()
-                        .set("x1", x.as_str())
-                        .set("x2", x.as_str())
-                        .set("y1", PLOT_TOP)
-                        .set("y2", PLOT_BOTTOM)
-                        .set("stroke", GRID),
-                )
-                .add(
-                    Line::new()
-                        .set("x1", x.as_str())
-                        .set("x2", x.as_str())
-                        .set("y1", PLOT_BOTTOM)
-                        .set("y2", PLOT_BOTTOM + 5.0)
-                        .set("stroke", "#333333"),
-                )
-                .add(
-                    Text::new(format!("{:.*}", zdec, z + 0.0))
-                        .set("x", x.as_str())
-                        .set("y", PLOT_BOTTOM + 19.0)
-                        .set("font-size", 12)
-                        .set("text-anchor", "middle"),
-                );
-        }
-        let (xs, xdec) = ticks(m.x_lo, m.x_hi, 8.0);
-        for v in xs {
-            let y = num(m.px_x(v));
-            g = g
-                .add(
-                    Line::new()
-                        .set("x1", PLOT_LEFT)
-                        .set("x2", PLOT_RIGHT)
-                        .set("y1", y.as_str())
-                        .set("y2", y.as_str())
-                        .set("stroke", GRID),
-                )
-                .add(
-                    Line::new()
-                        .set("x1", PLOT_LEFT - 5.0)
-                        .set("x2", PLOT_LEFT)
-                        .set("y1", y.as_str())
-                        .set("y2", y.as_str())
-                        .set("stroke", "#333333"),
-                )
-                .add(
-                    Text::new(format!("{:.*}", xdec, v + 0.0))
-                        .set("x", PLOT_LEFT - 8.0)
-                        .set("y", y.as_str())
-                        .set("dy", "0.35em")
-                        .set("font-size", 12)
-                        .set("text-anchor", "end"),
-                );
-        }
+    fn draw_axes(&self, g: Group) -> Group {
         let x_kind = match self.call.cycle.x_mode {
             XMode::Diameter => "diameter",
             XMode::Radius => "radius",
         };
-        let mid_y = num((PLOT_TOP + PLOT_BOTTOM) / 2.0);
-        g.add(
-            Text::new(format!("Z ({})", self.unit()))
-                .set("x", num((PLOT_LEFT + PLOT_RIGHT) / 2.0))
-                .set("y", PLOT_BOTTOM + 42.0)
-                .set("font-size", 13)
-                .set("text-anchor", "middle"),
-        )
-        .add(
-            Text::new(format!("X ({x_kind}, {})", self.unit()))
-                .set("x", 24)
-                .set("y", mid_y.as_str())
-                .set("font-size", 13)
-                .set("text-anchor", "middle")
-                .set("transform", format!("rotate(-90 24 {mid_y})")),
-        )
+        draw_axes(g, &self.map, self.unit(), x_kind)
     }
 
     fn draw_points(&self, mut g: Group) -> Group {
@@ -807,6 +827,92 @@ impl<'a> Panel<'a> {
         }
         g
     }
+}
+
+/// The plot frame, grid, ticks and axis labels.
+fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> Group {
+    g = g.add(
+        Rectangle::new()
+            .set("x", PLOT_LEFT)
+            .set("y", PLOT_TOP)
+            .set("width", PLOT_RIGHT - PLOT_LEFT)
+            .set("height", PLOT_BOTTOM - PLOT_TOP)
+            .set("fill", "none")
+            .set("stroke", "#333333"),
+    );
+    let (zs, zdec) = ticks(m.z_lo, m.z_hi, 10.0);
+    for z in zs {
+        let x = num(m.px_z(z));
+        g = g
+            .add(
+                Line::new()
+                    .set("x1", x.as_str())
+                    .set("x2", x.as_str())
+                    .set("y1", PLOT_TOP)
+                    .set("y2", PLOT_BOTTOM)
+                    .set("stroke", GRID),
+            )
+            .add(
+                Line::new()
+                    .set("x1", x.as_str())
+                    .set("x2", x.as_str())
+                    .set("y1", PLOT_BOTTOM)
+                    .set("y2", PLOT_BOTTOM + 5.0)
+                    .set("stroke", "#333333"),
+            )
+            .add(
+                Text::new(format!("{:.*}", zdec, z + 0.0))
+                    .set("x", x.as_str())
+                    .set("y", PLOT_BOTTOM + 19.0)
+                    .set("font-size", 12)
+                    .set("text-anchor", "middle"),
+            );
+    }
+    let (xs, xdec) = ticks(m.x_lo, m.x_hi, 8.0);
+    for v in xs {
+        let y = num(m.px_x(v));
+        g = g
+            .add(
+                Line::new()
+                    .set("x1", PLOT_LEFT)
+                    .set("x2", PLOT_RIGHT)
+                    .set("y1", y.as_str())
+                    .set("y2", y.as_str())
+                    .set("stroke", GRID),
+            )
+            .add(
+                Line::new()
+                    .set("x1", PLOT_LEFT - 5.0)
+                    .set("x2", PLOT_LEFT)
+                    .set("y1", y.as_str())
+                    .set("y2", y.as_str())
+                    .set("stroke", "#333333"),
+            )
+            .add(
+                Text::new(format!("{:.*}", xdec, v + 0.0))
+                    .set("x", PLOT_LEFT - 8.0)
+                    .set("y", y.as_str())
+                    .set("dy", "0.35em")
+                    .set("font-size", 12)
+                    .set("text-anchor", "end"),
+            );
+    }
+    let mid_y = num((PLOT_TOP + PLOT_BOTTOM) / 2.0);
+    g.add(
+        Text::new(format!("Z ({})", unit))
+            .set("x", num((PLOT_LEFT + PLOT_RIGHT) / 2.0))
+            .set("y", PLOT_BOTTOM + 42.0)
+            .set("font-size", 13)
+            .set("text-anchor", "middle"),
+    )
+    .add(
+        Text::new(format!("X ({x_kind}, {})", unit))
+            .set("x", 24)
+            .set("y", mid_y.as_str())
+            .set("font-size", 13)
+            .set("text-anchor", "middle")
+            .set("transform", format!("rotate(-90 24 {mid_y})")),
+    )
 }
 
 /// `[lo, hi]` widened by `fraction` of its span on each side (by half a

@@ -192,3 +192,22 @@ fn many_moves_stay_small() {
     assert!(p.paths < 3000, "paths: {}", p.paths);
     assert!(doc.len() < 1_000_000, "size: {}", doc.len());
 }
+
+/// A program with G32 blocks gets a panel of its thread moves and run-outs.
+#[test]
+fn g32_blocks_are_drawn() {
+    let svg = std::env::temp_dir().join(format!("cycleref-g32-{}.svg", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
+        .args(["plot", "--profile", "gsk980"])
+        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk980-g32-runout.nc"))
+        .arg("-o")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("G32 blocks (lines 5-11)"), "{text}");
+    assert_eq!(text.matches("line 11: run-out").count(), 1);
+    assert_eq!(text.matches("synchronisation starts").count(), 2);
+    let _ = std::fs::remove_file(&svg);
+}
