@@ -369,6 +369,38 @@ impl Job {
             }
             out.push('\n');
         }
+        let threads: Vec<_> = self.program.threads().collect();
+        if !threads.is_empty() {
+            let _ = writeln!(out, "G32 blocks ({}):", self.name);
+            let _ = writeln!(
+                out,
+                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+                "line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"
+            );
+            for call in threads {
+                let moves = self.expand_g32(&call.g32, call.block.line)?;
+                let u = call.g32.units;
+                let cut =
+                    moves.iter().find(|m| m.role == cycleref::Role::Cut).map_or(call.g32.start, |m| m.to);
+                let run_out = moves.iter().find(|m| m.role == cycleref::Role::RunOut);
+                let (rx, rz) = run_out.map_or(("-".into(), "-".into()), |m| {
+                    (format::fixed(m.to.x, u), format::fixed(m.to.z, u))
+                });
+                let _ = writeln!(
+                    out,
+                    "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+                    call.block.line,
+                    if call.g32.sync { "yes" } else { "no" },
+                    format::fixed(call.g32.start.x, u),
+                    format::fixed(call.g32.start.z, u),
+                    format::fixed(cut.x, u),
+                    format::fixed(cut.z, u),
+                    rx,
+                    rz
+                );
+            }
+            out.push('\n');
+        }
         Ok(out)
     }
 

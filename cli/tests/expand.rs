@@ -139,3 +139,11 @@ fn passes_table() {
         "{text}"
     );
 }
+
+#[test]
+fn passes_table_lists_g32_blocks() {
+    let out = cycleref(&["passes", "--profile", "gsk980", &example("gsk980-g32-runout.nc")], None);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("    11    no         34.000        -30.000         37.600        -39.000         40.000        -40.000"), "{text}");
+    assert!(text.contains("     9   yes         30.000          2.000         34.000        -10.000              -              -"), "{text}");
+}
