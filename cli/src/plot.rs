@@ -122,16 +122,7 @@ fn g32_panel(name: &str, threads: &[(G32Call, Vec<Move>)]) -> Group {
     let first = &threads[0].0;
     let per_unit = first.g32.units.per_unit();
     let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
-    let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
-    for p in points {
-        x_min = x_min.min(p.x);
-        x_max = x_max.max(p.x);
-        z_min = z_min.min(p.z);
-        z_max = z_max.max(p.z);
-    }
-    let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
-    let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
-    let map = Mapping { per_unit, z_lo, z_hi, x_lo, x_hi };
+    let map = Mapping::around(points, per_unit);
     let unit = match first.g32.units.unit {
         InputUnit::Metric => "mm",
         InputUnit::Inch => "inch",
@@ -333,6 +324,20 @@ struct Mapping {
 }
 
 impl Mapping {
+    /// The mapping that shows every one of `points`, with a margin.
+    fn around(points: impl Iterator<Item = Point>, per_unit: i64) -> Mapping {
+        let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
+        for p in points {
+            x_min = x_min.min(p.x);
+            x_max = x_max.max(p.x);
+            z_min = z_min.min(p.z);
+            z_max = z_max.max(p.z);
+        }
+        let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
+        let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
+        Mapping { per_unit, z_lo, z_hi, x_lo, x_hi }
+    }
+
     fn px_z(&self, z: f64) -> f64 {
         PLOT_LEFT + (z - self.z_lo) / (self.z_hi - self.z_lo) * (PLOT_RIGHT - PLOT_LEFT)
     }
@@ -398,17 +403,7 @@ impl<'a> Panel<'a> {
         let points = [c.start, Point::new(b_x, c.start.z), Point::new(c_x, c.start.z), c.end];
         let per_unit = c.units.per_unit();
 
-        let all = points.iter().chain(moves.iter().map(|m| &m.to));
-        let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
-        for p in all {
-            x_min = x_min.min(p.x);
-            x_max = x_max.max(p.x);
-            z_min = z_min.min(p.z);
-            z_max = z_max.max(p.z);
-        }
-        let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
-        let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
-        let map = Mapping { per_unit, z_lo, z_hi, x_lo, x_hi };
+        let map = Mapping::around(points.iter().copied().chain(moves.iter().map(|m| m.to)), per_unit);
 
         let mut panel = Panel {
             name,

@@ -85,6 +85,17 @@ impl Domain {
         pass_limit: 2_000,
     };
 
+    /// The schedule's inputs, small enough to enumerate: k 1..=20, Δd 1..=20,
+    /// Δdmin 0..=4, d 0..=k, all three infeed modes.
+    pub const SCHEDULE: Domain = Domain {
+        height: (1, 20),
+        first_depth: (1, 20),
+        min_cut: (0, 4),
+        allowance: (0, 20),
+        infeed: (0, 2),
+        ..Domain::POINT
+    };
+
     /// A small domain: fixed typical values (metric IS-B, diameter, external,
     /// towards -Z, straight, D0, one start, no run-out, a = 60), to be
     /// widened field by field by each harness.

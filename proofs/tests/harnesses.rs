@@ -27,14 +27,7 @@ const SAMPLE: Mode = Mode::Sample { runs: 3_000, seed: 0x6376_7265_6672_6566 };
 
 /// The schedule's inputs: k 1..=20, Δd 1..=20, Δdmin 0..=4, d 0..=k, all
 /// three infeed modes (about 100 000 cycles).
-const SCHEDULE: Domain = Domain {
-    height: (1, 20),
-    first_depth: (1, 20),
-    min_cut: (0, 4),
-    allowance: (0, 20),
-    infeed: (0, 2),
-    ..Domain::POINT
-};
+const SCHEDULE: Domain = Domain::SCHEDULE;
 
 /// Larger for the ignored run: k 1..=150, Δd 1..=150, Δdmin 0..=12, d 0..=k.
 const SCHEDULE_WIDE: Domain = Domain {

@@ -14,14 +14,7 @@ fn real(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
 }
 
 /// The small schedule domain of `harnesses.rs`.
-const SCHEDULE: Domain = Domain {
-    height: (1, 20),
-    first_depth: (1, 20),
-    min_cut: (0, 4),
-    allowance: (0, 20),
-    infeed: (0, 2),
-    ..Domain::POINT
-};
+const SCHEDULE: Domain = Domain::SCHEDULE;
 
 const GEOMETRY: Domain = Domain {
     height: (6, 8),
