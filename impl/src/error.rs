@@ -46,6 +46,46 @@ pub enum Field {
     RunOutLong,
     /// A computed coordinate of a pass.
     PassCoordinate,
+    /// X of the G75.1 groove start point S.
+    GrooveStartX,
+    /// Z of the G75.1 groove start point S.
+    GrooveStartZ,
+    /// X of the tool position before a G75.1 cycle.
+    GrooveFromX,
+    /// Z of the tool position before a G75.1 cycle.
+    GrooveFromZ,
+    /// P(Δi) of G75.1 block 1.
+    Peck,
+    /// Q(Δk) of G75.1 block 1.
+    Step,
+    /// H(h) of G75.1 block 1.
+    GrooveDepth,
+    /// D(d) of G75.1 block 1.
+    BottomWidth,
+    /// A(∠a) of G75.1 block 1.
+    FlankA,
+    /// B(∠b) of G75.1 block 1.
+    FlankB,
+    /// L(∠p) of G75.1 block 1.
+    Slope,
+    /// R(e) of G75.1 block 2.
+    Retract,
+    /// V(Δv) of G75.1 block 2.
+    LayerDepth,
+    /// U(Δu) of G75.1 block 2.
+    AllowanceX,
+    /// W(Δw) of G75.1 block 2.
+    AllowanceZ,
+    /// I(r) of G75.1 block 2.
+    ToolWidth,
+    /// A(r1) of G75.1 block 2.
+    CornerR1,
+    /// B(r2) of G75.1 block 2.
+    CornerR2,
+    /// D(r3) of G75.1 block 2.
+    CornerR3,
+    /// E(r4) of G75.1 block 2.
+    CornerR4,
 }
 
 impl Field {
@@ -71,6 +111,26 @@ impl Field {
             Field::RunOutShort => "J (run-out, short axis)",
             Field::RunOutLong => "K (run-out, long axis)",
             Field::PassCoordinate => "a pass coordinate",
+            Field::GrooveStartX => "X of the groove start point",
+            Field::GrooveStartZ => "Z of the groove start point",
+            Field::GrooveFromX => "X of the tool before G75.1",
+            Field::GrooveFromZ => "Z of the tool before G75.1",
+            Field::Peck => "P(Δi) (radial peck)",
+            Field::Step => "Q(Δk) (axial step)",
+            Field::GrooveDepth => "H(h) (groove depth)",
+            Field::BottomWidth => "D(d) (bottom width)",
+            Field::FlankA => "A(∠a) (flank angle 1)",
+            Field::FlankB => "B(∠b) (flank angle 2)",
+            Field::Slope => "L(∠p) (slope angle)",
+            Field::Retract => "R(e) (retract)",
+            Field::LayerDepth => "V(Δv) (layer depth)",
+            Field::AllowanceX => "U(Δu) (X finishing allowance)",
+            Field::AllowanceZ => "W(Δw) (Z finishing allowance)",
+            Field::ToolWidth => "I(r) (tool width)",
+            Field::CornerR1 => "A(r1) (outer corner at the start)",
+            Field::CornerR2 => "B(r2) (outer corner at the far end)",
+            Field::CornerR3 => "D(r3) (bottom corner at the start side)",
+            Field::CornerR4 => "E(r4) (bottom corner at the far side)",
         }
     }
 }
@@ -148,6 +208,69 @@ pub enum CycleError {
         /// The limit.
         limit: u32,
     },
+    /// A G75.1 word outside the manual's range for it.
+    WordOutOfRange {
+        /// Which word.
+        field: Field,
+        /// The value.
+        value: Length,
+        /// The manual's range, in its words.
+        rule: &'static str,
+    },
+    /// A G75.1 angle outside its range (A, B: 0 < angle <= 90; L: 0 <= L < 90).
+    AngleOutOfRange {
+        /// A, B or L.
+        field: Field,
+        /// The value in 0.0001 degree.
+        value: u32,
+    },
+    /// G75.1 with H0: there is no groove.
+    NoGrooveDepth,
+    /// G75.1 slope L not below flank angle B: flank B never meets the opening.
+    SlopeNotBelowFlank {
+        /// L in 0.0001 degree.
+        slope: u32,
+        /// B in 0.0001 degree.
+        flank_b: u32,
+    },
+    /// G75.1 U(Δu) at least the depth |H|: no room is left to rough.
+    AllowanceExceedsDepth {
+        /// Δu.
+        allowance: Length,
+        /// |H|.
+        depth: Length,
+    },
+    /// G75.1 corners larger than the edge they sit on.
+    CornerTooLarge {
+        /// The edge.
+        edge: GrooveEdge,
+    },
+    /// G75.1: the groove, less the allowances and the bottom corners, is
+    /// narrower than the tool at its bottom.
+    GrooveNarrowerThanTool {
+        /// The tool width I (0 for a pointed tool).
+        tool_width: Length,
+    },
+    /// G75.1 needs more pecks than [`crate::g75::MAX_PECKS`].
+    TooManyPecks {
+        /// The limit.
+        limit: u64,
+    },
+    /// An engine could not decide the rounding of a computed value (or the
+    /// sign of an alarm comparison) at its highest precision
+    /// (`docs/G75.md` §6). It refuses rather than guess.
+    UndecidedRounding,
+}
+
+/// An edge of the G75.1 groove, for [`CycleError::CornerTooLarge`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum GrooveEdge {
+    /// Flank A: corners A(r1) and D(r3).
+    FlankA,
+    /// The inner bottom: corners D(r3) and E(r4) (and the tool width).
+    Bottom,
+    /// Flank B: corners E(r4) and B(r2).
+    FlankB,
 }
 
 impl fmt::Display for CycleError {
@@ -211,6 +334,49 @@ impl fmt::Display for CycleError {
                 let more = if exact { "" } else { "more than " };
                 write!(f, "the cycle needs {more}{passes} rough passes, above the pass limit {limit}")
             }
+            CycleError::WordOutOfRange { field, value, rule } => {
+                write!(f, "{} = {value} is outside its range ({rule})", field.word())
+            }
+            CycleError::AngleOutOfRange { field, value } => {
+                let range = if field == Field::Slope { "0 <= L < 90" } else { "0 < angle <= 90" };
+                write!(f, "{} = ", field.word())?;
+                crate::units::write_fixed(f, i128::from(value), 4)?;
+                write!(f, " degrees is outside {range}")
+            }
+            CycleError::NoGrooveDepth => write!(f, "G75.1 H(h) = 0: the groove has no depth"),
+            CycleError::SlopeNotBelowFlank { slope, flank_b } => {
+                write!(f, "L(∠p) = ")?;
+                crate::units::write_fixed(f, i128::from(slope), 4)?;
+                write!(f, " degrees is not below B(∠b) = ")?;
+                crate::units::write_fixed(f, i128::from(flank_b), 4)?;
+                write!(f, " degrees: flank B never meets the slope of the opening")
+            }
+            CycleError::AllowanceExceedsDepth { allowance, depth } => write!(
+                f,
+                "U(Δu) = {allowance} is not smaller than the groove depth |H| = {depth}: the allowance \
+                 is larger than the groove"
+            ),
+            CycleError::CornerTooLarge { edge } => {
+                let (edge, words) = match edge {
+                    GrooveEdge::FlankA => ("flank A", "A(r1) and D(r3)"),
+                    GrooveEdge::Bottom => ("the inner bottom D(d)", "D(r3) and E(r4)"),
+                    GrooveEdge::FlankB => ("flank B", "E(r4) and B(r2)"),
+                };
+                write!(f, "the corners {words} together are longer than {edge}")
+            }
+            CycleError::GrooveNarrowerThanTool { tool_width } => write!(
+                f,
+                "the groove, less the allowances U/W and the bottom corners D(r3)/E(r4), is narrower \
+                 at its bottom than the tool I = {tool_width}"
+            ),
+            CycleError::TooManyPecks { limit } => {
+                write!(f, "the G75.1 cycle needs more than {limit} pecks")
+            }
+            CycleError::UndecidedRounding => write!(
+                f,
+                "a G75.1 coordinate could not be rounded to the least increment with certainty at \
+                 512 fraction bits; refused rather than guessed"
+            ),
         }
     }
 }

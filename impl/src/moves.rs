@@ -24,6 +24,23 @@ pub enum Motion {
         /// (the control waits for the one-revolution signal here).
         sync: bool,
     },
+    /// Circular feed (G02 when `clockwise`, else G03) around `centre`.
+    Arc {
+        /// The arc's centre, absolute (X in X-word units).
+        centre: Point,
+        /// True for G02: clockwise seen with +Z to the right and +X up
+        /// (R-G75ARC).
+        clockwise: bool,
+    },
+}
+
+/// Which plunge of a G75.1 cycle a move belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Plunge {
+    /// 1-based layer (m).
+    pub layer: u32,
+    /// 1-based plunge within the layer (n).
+    pub number: u32,
 }
 
 /// What a move does within its pass, in the manual's terms.
@@ -39,8 +56,23 @@ pub enum Role {
     RunOut,
     /// Rapid along X to E (退刀终点), the X of A.
     Retract,
-    /// Rapid along Z back to A.
+    /// Rapid along Z back to A; for G75.1 the moves back to the start
+    /// point and to the point before the cycle (step 10).
     Return,
+    /// G75.1 step 3/5: a peck, a radial feed of at most Δi (Δi/2 radius).
+    Peck(Plunge),
+    /// G75.1 step 4: the rapid retract e after a peck.
+    PeckRetract(Plunge),
+    /// G75.1 step 6: the rapid retract to the plunge start Amn.
+    PlungeRetract(Plunge),
+    /// G75.1 step 7: the axial rapid of at most Δk to the start of this plunge.
+    Step(Plunge),
+    /// G75.1 steps 8 and 2: the rapids to the start of this layer.
+    LayerChange(u32),
+    /// G75.1 step 9: the rough contour along the profile less the allowances.
+    RoughContour,
+    /// G75.1 step 10: the finishing contour along the programmed profile.
+    FinishContour,
 }
 
 /// Rough or finishing pass.
