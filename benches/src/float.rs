@@ -422,7 +422,7 @@ mod tests {
             .map(|m| {
                 let kind = match m.motion {
                     Motion::Thread { .. } => MoveKind::Thread,
-                    Motion::Rapid | Motion::Feed => MoveKind::Rapid,
+                    Motion::Rapid | Motion::Feed | Motion::Arc { .. } => MoveKind::Rapid,
                 };
                 (kind, m.to.x, m.to.z)
             })

@@ -57,6 +57,8 @@ enum Context {
     G76 { line: usize, pass: Pass, role: Role },
     /// A G32 move.
     G32 { line: usize, role: Role },
+    /// A G75.1 move (line of block 2).
+    G75 { line: usize, role: Role },
 }
 
 /// One move of either toolpath.
@@ -176,6 +178,7 @@ impl<'m> Tracker<'m> {
             Motion::Thread { lead, start_angle, sync } => {
                 (Kind::Thread, Some(lead), if sync { start_angle } else { StartAngle::ZERO }, sync)
             }
+            Motion::Arc { .. } => (Kind::Arc, None, StartAngle::ZERO, false),
         };
         self.motion = kind;
         self.in_thread = kind == Kind::Thread;
@@ -224,6 +227,19 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
                 for m in job.expand_g32(&call.g32, line).map_err(|f| f.0)? {
                     out.push(t.inject(&m, Context::G32 { line, role: m.role }));
                 }
+            }
+            Item::G75Params(_) => {}
+            Item::G75(call) => {
+                let line = call.block.line;
+                for m in job.expand_g75(&call.cycle, line).map_err(|f| f.0)? {
+                    out.push(t.inject(&m, Context::G75 { line, role: m.role }));
+                }
+                t.motion = match call.restore.motion {
+                    Some("G01") => Kind::Feed,
+                    Some("G02" | "G03") => Kind::Arc,
+                    Some("G32") => Kind::Thread,
+                    _ => Kind::Rapid,
+                };
             }
         }
     }
@@ -596,13 +612,20 @@ fn extra(g: &Group) -> Divergence {
 /// The point a move ends at, in the manual's terms.
 fn point_name(c: Context, kind: Kind) -> &'static str {
     match c {
-        Context::G76 { role, .. } | Context::G32 { role, .. } => match role {
+        Context::G76 { role, .. } | Context::G32 { role, .. } | Context::G75 { role, .. } => match role {
             Role::Approach => "Bn (pass start, or An before a lead-in)",
             Role::LeadIn => "Bn (end of the lead-in)",
             Role::Cut => "end of cut (run-out start)",
             Role::RunOut => "run-out end",
             Role::Retract => "E (retract end)",
             Role::Return => "A (start point)",
+            Role::Peck(_) => "peck end (Bmn at the last peck)",
+            Role::PeckRetract(_) => "retract e after a peck",
+            Role::PlungeRetract(_) => "Amn (plunge start)",
+            Role::Step(_) => "Amn (next plunge start)",
+            Role::LayerChange(_) => "Am1 (layer start)",
+            Role::RoughContour => "rough contour point",
+            Role::FinishContour => "finishing contour point",
         },
         Context::Source { .. } => match kind {
             Kind::Rapid => "rapid end",
@@ -632,6 +655,10 @@ impl Report {
                 fixed(pass.cut, self.units)
             ),
             Context::G32 { line, .. } => format!("G32 at line {line}"),
+            Context::G75 { line, role } => match crate::format::plunge_of(role) {
+                Some(p) => format!("G75.1 at line {line}, layer {} plunge {}", p.layer, p.number),
+                None => format!("G75.1 at line {line}, {}", crate::format::role_name(role)),
+            },
             Context::Source { line } => format!("program line {line}"),
         }
     }
@@ -639,7 +666,7 @@ impl Report {
     fn theirs_line(s: &Step) -> usize {
         match s.context {
             Context::Source { line } => line,
-            Context::G76 { line, .. } | Context::G32 { line, .. } => line,
+            Context::G76 { line, .. } | Context::G32 { line, .. } | Context::G75 { line, .. } => line,
         }
     }
 
@@ -784,6 +811,14 @@ impl Report {
                 });
                 v["point"] = json!(point_name(s.context, s.kind));
                 v["role"] = json!(crate::format::role_name(role));
+            }
+            Context::G75 { line, role } => {
+                v["cycle"] = json!({"code": "G75.1", "line": line});
+                v["point"] = json!(point_name(s.context, s.kind));
+                v["role"] = json!(crate::format::role_name(role));
+                if let Some(p) = crate::format::plunge_of(role) {
+                    v["plunge"] = json!({"layer": p.layer, "number": p.number});
+                }
             }
             Context::G32 { line, role } => {
                 v["cycle"] = json!({"code": "G32", "line": line});

@@ -5,7 +5,8 @@ use std::fmt::Write as _;
 use cycleref::units::write_fixed;
 use cycleref::{Flank, IncrementSystem, LeadWord, Motion, Move, PassKind, Role, StartAngle, Units};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G76Call, Restore};
+use cycleref::{PathType, Point};
+use cycleref_spec::reader::{G75Call, G76Call, Restore};
 use serde_json::{json, Value};
 
 /// `v` increments as a decimal with the increment's number of decimals.
@@ -71,6 +72,102 @@ pub fn role_name(r: Role) -> &'static str {
         Role::RunOut => "run-out",
         Role::Retract => "retract",
         Role::Return => "return",
+        Role::Peck(_) => "peck",
+        Role::PeckRetract(_) => "peck-retract",
+        Role::PlungeRetract(_) => "plunge-retract",
+        Role::Step(_) => "step",
+        Role::LayerChange(_) => "layer-change",
+        Role::RoughContour => "rough-contour",
+        Role::FinishContour => "finish-contour",
+    }
+}
+
+/// The plunge a G75.1 move belongs to, if any.
+pub fn plunge_of(r: Role) -> Option<cycleref::Plunge> {
+    match r {
+        Role::Peck(p) | Role::PeckRetract(p) | Role::PlungeRetract(p) | Role::Step(p) => Some(p),
+        _ => None,
+    }
+}
+
+/// An arc's I (X distance from the start to the centre, as a radius) and K
+/// (Z distance), as written in the nc format: I may need one more decimal
+/// than the increment when X is a diameter and the distance is odd.
+pub fn arc_ik(from: Point, centre: Point, x_factor: i64, units: Units) -> (String, String) {
+    let dx = centre.x - from.x;
+    let i = if dx % x_factor == 0 {
+        fixed(dx / x_factor, units)
+    } else {
+        // Half an increment: print dx * 5 with one more decimal.
+        let mut s = String::new();
+        let _ = write_fixed(&mut s, i128::from(dx) * 5, units.decimals() + 1);
+        s
+    };
+    (i, fixed(centre.z - from.z, units))
+}
+
+/// Writes the NC blocks of one expanded G75.1 cycle: a comment per layer
+/// and per plunge, then its moves (the `nc` format contract).
+pub fn nc_groove(out: &mut String, call: &G75Call, moves: &[Move]) {
+    let c = &call.cycle;
+    let u = c.units;
+    let layers = moves
+        .iter()
+        .filter_map(|m| plunge_of(m.role))
+        .map(|p| p.layer)
+        .max()
+        .unwrap_or(0);
+    let plunges = moves.iter().filter(|m| matches!(m.role, Role::PlungeRetract(_))).count();
+    let path = match c.path {
+        PathType::Rough => "J0 rough",
+        PathType::RoughAndFinish => "J1 rough + finish",
+        PathType::Finish => "J2 finish",
+    };
+    let _ = writeln!(
+        out,
+        "(G75.1 lines {}-{}: {path}, {layers} layer{} {plunges} plunge{}, tool {})",
+        call.params_line,
+        call.block.line,
+        if layers == 1 { "," } else { "s," },
+        if plunges == 1 { "" } else { "s" },
+        match c.tool_width {
+            Some(w) => format!("width I{}", fixed(w, u)),
+            None => "pointed".to_string(),
+        }
+    );
+    let mut current: Option<cycleref::Plunge> = None;
+    let mut contour = None;
+    let mut at = c.from;
+    for m in moves {
+        if let Role::Peck(p) = m.role {
+            if current != Some(p) {
+                current = Some(p);
+                let _ = writeln!(out, "(layer {} plunge {})", p.layer, p.number);
+            }
+        }
+        let name = match m.role {
+            Role::RoughContour => Some("rough contour"),
+            Role::FinishContour => Some("finishing contour"),
+            _ => None,
+        };
+        if name.is_some() && name != contour {
+            let _ = writeln!(out, "({})", name.unwrap_or_default());
+        }
+        contour = name;
+        nc_arc_or_move(out, m, at, c.x_mode.factor(), u);
+        at = m.to;
+    }
+    restore(out, &call.restore);
+}
+
+/// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
+fn nc_arc_or_move(out: &mut String, m: &Move, from: Point, x_factor: i64, u: Units) {
+    if let Motion::Arc { centre, clockwise } = m.motion {
+        let (i, k) = arc_ik(from, centre, x_factor, u);
+        let g = if clockwise { "G02" } else { "G03" };
+        let _ = writeln!(out, "{g} X{} Z{} I{i} K{k}", fixed(m.to.x, u), fixed(m.to.z, u));
+    } else {
+        nc_move(out, m, u, QUnit::Millidegrees { no_point: true });
     }
 }
 
@@ -148,6 +245,11 @@ fn nc_move(out: &mut String, m: &Move, u: Units, q: QUnit) {
                 }
                 out.push('\n');
             }
+            Motion::Arc { centre, clockwise } => {
+                // Without the start point the centre is written absolute.
+                let g = if clockwise { "G02" } else { "G03" };
+                let _ = writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", fixed(centre.x, u), fixed(centre.z, u));
+            }
         }
     }
 }
@@ -182,6 +284,16 @@ pub fn move_json(m: &Move, units: Units) -> Value {
             );
             obj.insert("sync".into(), json!(sync));
         }
+        Motion::Arc { centre, clockwise } => {
+            obj.insert("motion".into(), json!(if clockwise { "arc-cw" } else { "arc-ccw" }));
+            obj.insert("centre".into(), json!({"x": fixed(centre.x, units), "z": fixed(centre.z, units)}));
+        }
+    }
+    if let Some(p) = plunge_of(m.role) {
+        obj.insert("plunge".into(), json!({"layer": p.layer, "number": p.number}));
+    }
+    if let Role::LayerChange(l) = m.role {
+        obj.insert("plunge".into(), json!({"layer": l}));
     }
     if let Some(p) = m.pass {
         obj.insert(
@@ -198,7 +310,7 @@ pub fn move_json(m: &Move, units: Units) -> Value {
     }
     // Keep a stable key order: motion first.
     let mut ordered = serde_json::Map::new();
-    for key in ["motion", "x", "z", "role", "lead", "start_angle_millidegrees", "sync", "pass"] {
+    for key in ["motion", "x", "z", "centre", "role", "lead", "start_angle_millidegrees", "sync", "pass", "plunge"] {
         if let Some(val) = obj.remove(key) {
             ordered.insert(key.into(), val);
         }

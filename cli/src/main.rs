@@ -17,7 +17,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use cycleref::{CycleError, G32Block, G76Cycle, IncrementSystem, InputUnit, Move, XMode};
+use cycleref::{CycleError, G32Block, G75Cycle, G76Cycle, IncrementSystem, InputUnit, Move, XMode};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::Item;
 use cycleref_spec::{read, Machine, ProfileName, Program};
@@ -270,6 +270,14 @@ impl Job {
         r.map_err(|e| Failure(format!("{}: line {line}, G32: {e}", self.name)))
     }
 
+    fn expand_g75(&self, cycle: &G75Cycle, line: usize) -> Result<Vec<Move>, Failure> {
+        let r: Result<Vec<Move>, CycleError> = match self.engine {
+            Engine::Impl => cycleref::expand_g75(cycle).map(Iterator::collect),
+            Engine::Spec => cycleref_spec::g75::expand(cycle),
+        };
+        r.map_err(|e| Failure(format!("{}: line {line}, G75.1: {e}", self.name)))
+    }
+
     fn nc(&self) -> Result<String, Failure> {
         let mut out = String::new();
         for item in &self.program.items {
@@ -285,6 +293,11 @@ impl Job {
                 Item::G32(call) => {
                     let moves = self.expand_g32(&call.g32, call.block.line)?;
                     format::nc_moves(&mut out, &moves, call.g32.units, self.q_unit);
+                }
+                Item::G75Params(_) => {}
+                Item::G75(call) => {
+                    let moves = self.expand_g75(&call.cycle, call.block.line)?;
+                    format::nc_groove(&mut out, call, &moves);
                 }
             }
         }
@@ -317,7 +330,21 @@ impl Job {
                         "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
                     }));
                 }
-                Item::Source(_) | Item::G76Params(_) => {}
+                Item::G75(call) => {
+                    let moves = self.expand_g75(&call.cycle, call.block.line)?;
+                    let c = &call.cycle;
+                    let u = c.units;
+                    let fx = |p: cycleref::Point| json!({"x": format::fixed(p.x, u), "z": format::fixed(p.z, u)});
+                    cycles.push(json!({
+                        "cycle": "G75.1",
+                        "line": call.block.line,
+                        "params_line": call.params_line,
+                        "from": fx(c.from),
+                        "start": fx(c.start),
+                        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
+                    }));
+                }
+                Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
         }
         let doc = json!({

@@ -29,7 +29,7 @@ use cycleref::{
     XMode,
 };
 use cycleref_spec::profile::{ParamValue, Profile};
-use cycleref_spec::reader::{G32Call, G76Call, Item};
+use cycleref_spec::reader::{G32Call, G75Call, G76Call, Item};
 use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
 use serde_json::{json, Map, Value};
 
@@ -155,6 +155,15 @@ pub fn cycle_kind_name(e: &CycleError) -> &'static str {
         CycleError::ThreadTooShort { .. } => "thread_too_short",
         CycleError::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
         CycleError::TooManyPasses { .. } => "too_many_passes",
+        CycleError::WordOutOfRange { .. } => "word_out_of_range",
+        CycleError::AngleOutOfRange { .. } => "angle_out_of_range",
+        CycleError::NoGrooveDepth => "no_groove_depth",
+        CycleError::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
+        CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
+        CycleError::CornerTooLarge { .. } => "corner_too_large",
+        CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
+        CycleError::TooManyPecks { .. } => "too_many_pecks",
+        CycleError::UndecidedRounding => "undecided_rounding",
     }
 }
 
@@ -2121,7 +2130,16 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                 }
                 (call.block.line, engine)
             }
-            Item::Source(_) | Item::G76Params(_) => continue,
+            Item::G75(call) => {
+                let engine = cycleref::expand_g75(&call.cycle).map(|m| m.collect::<Vec<_>>());
+                let reference = cycleref_spec::g75::expand(&call.cycle);
+                same(id, "G75.1", call.block.line, &engine, &reference)?;
+                if let Ok(moves) = &engine {
+                    cycles.push(g75_json(call, moves));
+                }
+                (call.block.line, engine)
+            }
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => continue,
         };
         match result {
             Ok(moves) => count += moves.len(),
@@ -2184,6 +2202,19 @@ fn g32_json(call: &G32Call, moves: &[Move]) -> Value {
         "cycle": "G32",
         "line": call.block.line,
         "start": {"x": format::fixed(s.x, u), "z": format::fixed(s.z, u)},
+        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
+    })
+}
+
+fn g75_json(call: &G75Call, moves: &[Move]) -> Value {
+    let c = &call.cycle;
+    let u = c.units;
+    json!({
+        "cycle": "G75.1",
+        "line": call.block.line,
+        "params_line": call.params_line,
+        "from": {"x": format::fixed(c.from.x, u), "z": format::fixed(c.from.z, u)},
+        "start": {"x": format::fixed(c.start.x, u), "z": format::fixed(c.start.z, u)},
         "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
     })
 }

@@ -278,7 +278,17 @@ fn expand(
                     emit(CyclerefMove::from_move(&m, decimals, CyclerefCycle::G32, line));
                 }
             }
-            Item::Source(_) | Item::G76Params(_) => {}
+            Item::G75(call) => {
+                let line = call.block.line;
+                let moves = cycleref::expand_g75(&call.cycle).map_err(|e| {
+                    Failure::new(CyclerefStatus::CycleError, line, format!("line {line}, G75.1: {e}"))
+                })?;
+                let decimals = call.cycle.units.decimals();
+                for m in moves {
+                    emit(CyclerefMove::from_move(&m, decimals, CyclerefCycle::G75, line));
+                }
+            }
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
         }
     }
     Ok(n)

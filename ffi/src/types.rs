@@ -76,6 +76,8 @@ pub enum CyclerefCycle {
     G76 = 0,
     /// A G32 thread-cutting block.
     G32 = 1,
+    /// A G75.1 radial trapezoidal groove cycle.
+    G75 = 2,
 }
 
 /// How the tool moves to the end point of a move.
@@ -88,6 +90,10 @@ pub enum CyclerefMotion {
     Feed = 1,
     /// Constant-lead thread cutting synchronised with the spindle (G32).
     Thread = 2,
+    /// Clockwise arc (G02) around `centre_x`, `centre_z`.
+    ArcCw = 3,
+    /// Counter-clockwise arc (G03) around `centre_x`, `centre_z`.
+    ArcCcw = 4,
 }
 
 /// What a move does within its pass.
@@ -104,8 +110,23 @@ pub enum CyclerefRole {
     RunOut = 3,
     /// Rapid along X to the X of A.
     Retract = 4,
-    /// Rapid along Z back to A.
+    /// Rapid along Z back to A (G75.1: back to the start point and to the
+    /// point before the cycle).
     Return = 5,
+    /// G75.1: a peck (radial feed of at most Δi).
+    Peck = 6,
+    /// G75.1: the rapid retract e after a peck.
+    PeckRetract = 7,
+    /// G75.1: the rapid retract to the plunge start.
+    PlungeRetract = 8,
+    /// G75.1: the axial rapid to the next plunge.
+    Step = 9,
+    /// G75.1: the rapids to the next layer's start.
+    LayerChange = 10,
+    /// G75.1: the rough contour.
+    RoughContour = 11,
+    /// G75.1: the finishing contour.
+    FinishContour = 12,
 }
 
 /// Rough or finishing pass.
@@ -262,6 +283,15 @@ pub struct CyclerefMove {
     pub sync: u8,
     /// 1 when the pass fields are meaningful, 0 when the move has no pass.
     pub has_pass: u8,
+    /// X of an arc's centre (absolute, X-word units); 0 for other motions.
+    pub centre_x: i64,
+    /// Z of an arc's centre (absolute); 0 for other motions.
+    pub centre_z: i64,
+    /// G75.1: 1-based layer of the move's plunge (also of a layer change);
+    /// 0 when the move belongs to no plunge.
+    pub plunge_layer: u32,
+    /// G75.1: 1-based plunge within its layer; 0 when none.
+    pub plunge_number: u32,
 }
 
 impl Default for CyclerefMove {
@@ -287,6 +317,10 @@ impl Default for CyclerefMove {
             pass_flank: CyclerefFlank::Right,
             sync: 0,
             has_pass: 0,
+            centre_x: 0,
+            centre_z: 0,
+            plunge_layer: 0,
+            plunge_number: 0,
         }
     }
 }
@@ -304,7 +338,22 @@ impl CyclerefMove {
             Role::RunOut => CyclerefRole::RunOut,
             Role::Retract => CyclerefRole::Retract,
             Role::Return => CyclerefRole::Return,
+            Role::Peck(_) => CyclerefRole::Peck,
+            Role::PeckRetract(_) => CyclerefRole::PeckRetract,
+            Role::PlungeRetract(_) => CyclerefRole::PlungeRetract,
+            Role::Step(_) => CyclerefRole::Step,
+            Role::LayerChange(_) => CyclerefRole::LayerChange,
+            Role::RoughContour => CyclerefRole::RoughContour,
+            Role::FinishContour => CyclerefRole::FinishContour,
         };
+        match m.role {
+            Role::Peck(p) | Role::PeckRetract(p) | Role::PlungeRetract(p) | Role::Step(p) => {
+                out.plunge_layer = p.layer;
+                out.plunge_number = p.number;
+            }
+            Role::LayerChange(l) => out.plunge_layer = l,
+            _ => {}
+        }
         match m.motion {
             Motion::Rapid => out.motion = CyclerefMotion::Rapid,
             Motion::Feed => out.motion = CyclerefMotion::Feed,
@@ -319,6 +368,11 @@ impl CyclerefMove {
                 out.start_angle_num = start_angle.num;
                 out.start_angle_den = start_angle.den;
                 out.sync = u8::from(sync);
+            }
+            Motion::Arc { centre, clockwise } => {
+                out.motion = if clockwise { CyclerefMotion::ArcCw } else { CyclerefMotion::ArcCcw };
+                out.centre_x = centre.x;
+                out.centre_z = centre.z;
             }
         }
         if let Some(p) = m.pass {

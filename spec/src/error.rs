@@ -43,8 +43,10 @@ pub enum ErrorKind {
         /// The allowed range.
         range: String,
     },
-    /// An address the profile's G76 does not have.
+    /// An address the profile's cycle does not have.
     AddressNotInProfile {
+        /// The cycle (and block) the word was found in.
+        cycle: &'static str,
         /// The profile.
         profile: String,
     },
@@ -86,8 +88,8 @@ impl fmt::Display for ErrorKind {
             ErrorKind::DecimalPointNotAllowed { rule } => write!(f, "no decimal point allowed: {rule}"),
             ErrorKind::Missing { what, rule } => write!(f, "{what} is missing ({rule})"),
             ErrorKind::OutOfRange { range } => write!(f, "the value is outside the range table: {range}"),
-            ErrorKind::AddressNotInProfile { profile } => {
-                write!(f, "this address is not part of G76 on the {profile} profile")
+            ErrorKind::AddressNotInProfile { cycle, profile } => {
+                write!(f, "this address is not part of {cycle} on the {profile} profile")
             }
             ErrorKind::Duplicate => write!(f, "the address appears twice in the block"),
             ErrorKind::PartialP => write!(

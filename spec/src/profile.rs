@@ -153,6 +153,9 @@ pub struct Profile {
     pub params: ParamNumbers,
     /// G32 run-out rules.
     pub g32_rules: G32Rules,
+    /// The control has G75.1, the radial trapezoidal groove cycle (the
+    /// GSK 980TDi, seed 001).
+    pub g75_1: bool,
 }
 
 /// The parameter numbers a profile uses for G76.
@@ -191,6 +194,7 @@ impl Profile {
                 run_out: RunOutRules::ChamferOnly,
                 jk_modal: false,
                 g32_rules: G32Rules::NoRunOut,
+                g75_1: false,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -213,6 +217,7 @@ impl Profile {
                 run_out: RunOutRules::Gsk980,
                 jk_modal: false,
                 g32_rules: G32Rules::Gsk980,
+                g75_1: true,
                 max_depth_increments: 99_999_999,
                 params: ParamNumbers {
                     finishing_passes: "57",
@@ -235,6 +240,7 @@ impl Profile {
                 run_out: RunOutRules::Gsk988,
                 jk_modal: true,
                 g32_rules: G32Rules::Gsk988,
+                g75_1: false,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",

@@ -8,6 +8,7 @@
 
 use cycleref::angle::StartAngle;
 use cycleref::g32::{G32Block, G32RunOut};
+use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
 use cycleref::g76::{G76Cycle, Infeed, RunOut};
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
 use cycleref::units::{Point, MAX_LENGTH};
@@ -29,6 +30,23 @@ pub enum Item {
     G76(G76Call),
     /// A G32 thread-cutting block.
     G32(G32Call),
+    /// G75.1 block 1 (X Z P Q H D A B L): waits for its block 2.
+    G75Params(Block),
+    /// G75.1 block 2: a groove cycle to expand.
+    G75(G75Call),
+}
+
+/// One G75.1 cycle of a program (its two blocks).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct G75Call {
+    /// Block 2 (R V U W I J A B D E P).
+    pub block: Block,
+    /// Line of block 1.
+    pub params_line: usize,
+    /// The resolved cycle.
+    pub cycle: G75Cycle,
+    /// Modal state to restore after the expansion.
+    pub restore: Restore,
 }
 
 /// One G32 block of a program.
@@ -79,6 +97,14 @@ impl Program {
     pub fn threads(&self) -> impl Iterator<Item = &G32Call> {
         self.items.iter().filter_map(|i| match i {
             Item::G32(c) => Some(c),
+            _ => None,
+        })
+    }
+
+    /// The G75.1 cycles of the program.
+    pub fn grooves(&self) -> impl Iterator<Item = &G75Call> {
+        self.items.iter().filter_map(|i| match i {
+            Item::G75(c) => Some(c),
             _ => None,
         })
     }
@@ -157,6 +183,23 @@ struct Reader<'m> {
     /// The start angle of the open continuous thread, if the previous block
     /// was a G32 block that leaves the synchronisation running.
     thread_run: Option<StartAngle>,
+    /// G75.1 block 1 waiting for its block 2.
+    g75_pending: Option<G75Block1>,
+}
+
+/// The values of a G75.1 block 1, kept until block 2 arrives.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct G75Block1 {
+    block: Block,
+    from: Point,
+    start: Point,
+    peck: i64,
+    step: i64,
+    depth: i64,
+    width: i64,
+    flank_a: u32,
+    flank_b: u32,
+    slope: u32,
 }
 
 fn err(block: &Block, word: Option<&Word>, kind: ErrorKind) -> ProgramError {
@@ -185,6 +228,7 @@ pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
         g32_j: None,
         g32_k: None,
         thread_run: None,
+        g75_pending: None,
     };
     if let Some(mode) = machine.profile.params.thread_mode {
         if machine.int_param(mode) != 0 {
@@ -201,9 +245,34 @@ pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
     }
     let mut items = Vec::with_capacity(blocks.len());
     for block in blocks {
+        if let Some(first) = &r.g75_pending {
+            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
+            if !block.words.is_empty() && !is_g75_1(&block) {
+                return Err(lone_g75(&first.block));
+            }
+        }
         items.push(r.block(block)?);
     }
+    if let Some(first) = &r.g75_pending {
+        return Err(lone_g75(&first.block));
+    }
     Ok(Program { items, units: r.units })
+}
+
+/// True when `block` programs G75.1.
+fn is_g75_1(block: &Block) -> bool {
+    block.all('G').any(|w| w.number.decimal() == Decimal::from_str_exact("75.1").ok())
+}
+
+fn lone_g75(block: &Block) -> ProgramError {
+    err(
+        block,
+        None,
+        ErrorKind::Missing {
+            what: "the second G75.1 block (R V U W I J A B D E P)",
+            rule: "G75.1 always takes two blocks, note 3: 必须有两行 G75.1 代码",
+        },
+    )
 }
 
 /// A length word in least increments of `units`, under `machine`'s
@@ -366,6 +435,7 @@ impl Reader<'_> {
     fn block(&mut self, block: Block) -> Result<Item, ProgramError> {
         // G codes of the block.
         let mut g76 = false;
+        let mut g75 = false;
         let mut g50 = false;
         let mut g04 = false;
         let mut motion = None;
@@ -392,13 +462,27 @@ impl Reader<'_> {
                     }
                 }
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
+                None if Decimal::from_str_exact("75.1").ok() == w.number.decimal() => {
+                    if !self.machine.profile.g75_1 {
+                        return Err(err(
+                            &block,
+                            Some(w),
+                            ErrorKind::Unsupported(format!(
+                                "G75.1 on the {} profile (G75.1 is a GSK 980TDi cycle: use the gsk980 \
+                                 profile)",
+                                self.machine.profile.name
+                            )),
+                        ));
+                    }
+                    g75 = true;
+                }
                 _ => {
                     return Err(err(
                         &block,
                         Some(w),
                         ErrorKind::Unsupported(format!(
                             "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
-                             G76, G96-G99)"
+                             G75.1, G76, G96-G99)"
                         )),
                     ))
                 }
@@ -430,11 +514,27 @@ impl Reader<'_> {
             if !thread_block {
                 self.thread_run = None;
                 // Seed 002: J and K are cancelled by a non-thread motion.
-                if motion.is_some_and(|m| m != MotionMode::G32) || g76 {
+                if motion.is_some_and(|m| m != MotionMode::G32) || g76 || g75 {
                     self.g32_j = None;
                     self.g32_k = None;
                 }
             }
+        }
+        if g75 {
+            if motion.is_some() || g76 || g50 || g04 {
+                return Err(err(
+                    &block,
+                    None,
+                    ErrorKind::Unsupported("another G code of group 00/01 in the same block as G75.1".into()),
+                ));
+            }
+            return match self.g75_pending.take() {
+                None => {
+                    self.g75_pending = Some(self.g75_block1(&block)?);
+                    Ok(Item::G75Params(block))
+                }
+                Some(first) => self.g75_block2(first, block).map(Item::G75),
+            };
         }
         if g76 {
             if motion.is_some() {
@@ -551,13 +651,13 @@ impl Reader<'_> {
         }
     }
 
-    fn check_addresses(&self, block: &Block, allowed: &str) -> Result<(), ProgramError> {
+    fn check_addresses(&self, block: &Block, cycle: &'static str, allowed: &str) -> Result<(), ProgramError> {
         for w in &block.words {
             if !allowed.contains(w.letter) {
                 return Err(err(
                     block,
                     Some(w),
-                    ErrorKind::AddressNotInProfile { profile: self.machine.profile.name.to_string() },
+                    ErrorKind::AddressNotInProfile { cycle, profile: self.machine.profile.name.to_string() },
                 ));
             }
         }
@@ -606,7 +706,7 @@ impl Reader<'_> {
     fn g32_block(&mut self, block: Block) -> Result<G32Call, ProgramError> {
         let rules = self.machine.profile.g32_rules;
         let allowed = if rules == G32Rules::NoRunOut { "GXZUWFIQMST" } else { "GXZUWFIJKQMST" };
-        self.check_addresses(&block, allowed)?;
+        self.check_addresses(&block, "G32", allowed)?;
         self.check_spindle(&block)?;
         let (Some(x0), Some(z0)) = (self.x, self.z) else {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
@@ -662,7 +762,7 @@ impl Reader<'_> {
     fn g76_block1(&mut self, block: &Block) -> Result<(), ProgramError> {
         let profile = &self.machine.profile;
         let allowed = format!("GPQRMST{}", profile.block1_extra);
-        self.check_addresses(block, &allowed)?;
+        self.check_addresses(block, "G76 block 1", &allowed)?;
         if let Some(p) = block.get('P')? {
             self.split_p(block, p)?;
         }
@@ -772,7 +872,7 @@ impl Reader<'_> {
     fn g76_block2(&mut self, block: Block) -> Result<G76Call, ProgramError> {
         let profile = self.machine.profile.clone();
         let allowed = format!("GXZUWRPQFIMST{}", profile.block2_extra);
-        self.check_addresses(&block, &allowed)?;
+        self.check_addresses(&block, "G76 block 2", &allowed)?;
         let with_line = |mut e: ProgramError| {
             if e.line == 0 {
                 e.line = block.line;
@@ -871,6 +971,188 @@ impl Reader<'_> {
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.moved = true;
         Ok(G76Call { params_line: one.line, block, cycle, restore })
+    }
+}
+
+impl Reader<'_> {
+    /// An angle word of G75.1 (A, B, L) in degrees, to 0.0001 degree; bare
+    /// values are degrees ("A45 B30" in the seed's example). Range tables
+    /// are checked by [`G75Cycle::validate`]; this refuses only what cannot
+    /// be an angle at all.
+    fn g75_angle(&self, block: &Block, w: &Word) -> Result<u32, ProgramError> {
+        let out = || {
+            err(
+                block,
+                Some(w),
+                ErrorKind::OutOfRange { range: "0..90 degrees (A, B: 0 < a <= 90; L: 0 <= L < 90)".into() },
+            )
+        };
+        let d = w.number.decimal().ok_or_else(out)?;
+        if d.is_sign_negative() && !d.is_zero() {
+            return Err(out());
+        }
+        // The range table gives angles to 0.001 degree at IS-B and 0.0001
+        // degree at IS-C.
+        let decimals: u32 = match self.units.system {
+            cycleref::IncrementSystem::IsB => 3,
+            cycleref::IncrementSystem::IsC => 4,
+        };
+        let t = d.checked_mul(Decimal::from(10_000)).ok_or_else(out)?;
+        if d.normalize().scale() > decimals || !t.fract().is_zero() {
+            return Err(err(
+                block,
+                Some(w),
+                ErrorKind::NotInIncrements { increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)) },
+            ));
+        }
+        let t = u32::try_from(t.trunc()).map_err(|_| out())?;
+        if t > 4 * RIGHT_ANGLE {
+            return Err(out());
+        }
+        Ok(t)
+    }
+
+    /// A required length word of G75.1 block 1.
+    fn g75_required<'b>(block: &'b Block, letter: char, what: &'static str) -> Result<&'b Word, ProgramError> {
+        block.get(letter)?.ok_or_else(|| {
+            err(
+                block,
+                None,
+                ErrorKind::Missing {
+                    what,
+                    rule: "G75.1 block 1 needs H, D, P and Q; only they cannot be omitted (note 3)",
+                },
+            )
+        })
+    }
+
+    /// G75.1 block 1: `X Z P(Δi) Q(Δk) H(h) D(d) A(∠a) B(∠b) L(∠p)` (seed 001).
+    fn g75_block1(&self, block: &Block) -> Result<G75Block1, ProgramError> {
+        self.check_addresses(block, "G75.1 block 1", "GXZPQHDABLMST")?;
+        let (Some(x0), Some(z0)) = (self.x, self.z) else {
+            return Err(err(block, None, ErrorKind::PositionUnknown));
+        };
+        // Note 3: "凹槽起点（X，Z）忽略时，默认当前刀具位置为凹槽起点".
+        let x = match block.get('X')? {
+            Some(w) => self.length(block, w)?,
+            None => x0,
+        };
+        let z = match block.get('Z')? {
+            Some(w) => self.length(block, w)?,
+            None => z0,
+        };
+        let p = Self::g75_required(block, 'P', "P(Δi) (radial peck)")?;
+        let q = Self::g75_required(block, 'Q', "Q(Δk) (axial step)")?;
+        let h = Self::g75_required(block, 'H', "H(h) (groove depth)")?;
+        let d = Self::g75_required(block, 'D', "D(d) (bottom width)")?;
+        // P and Q follow state parameter 182.7 like G76's (seed 001:
+        // "可由状态参数 NO182.7 选择").
+        let peck = self.pq_length(block, p)?;
+        let step = self.pq_length(block, q)?;
+        let depth = self.length(block, h)?;
+        let width = self.length(block, d)?;
+        let angle = |letter: char, default: u32| -> Result<u32, ProgramError> {
+            match block.get(letter)? {
+                Some(w) => self.g75_angle(block, w),
+                None => Ok(default),
+            }
+        };
+        Ok(G75Block1 {
+            block: block.clone(),
+            from: Point::new(x0, z0),
+            start: Point::new(x, z),
+            peck,
+            step,
+            depth,
+            width,
+            flank_a: angle('A', RIGHT_ANGLE)?,
+            flank_b: angle('B', RIGHT_ANGLE)?,
+            slope: angle('L', 0)?,
+        })
+    }
+
+    /// G75.1 block 2: `R(e) V(Δv) U(Δu) W(Δw) I(r) J A(r1) B(r2) D(r3) E(r4)
+    /// P(a)(b)(d)(e)` (seed 001).
+    fn g75_block2(&mut self, first: G75Block1, block: Block) -> Result<G75Call, ProgramError> {
+        self.check_addresses(&block, "G75.1 block 2", "GRVUWIJABDEPMST")?;
+        let opt = |letter: char| -> Result<Option<i64>, ProgramError> {
+            match block.get(letter)? {
+                Some(w) => self.length(&block, w).map(Some),
+                None => Ok(None),
+            }
+        };
+        let retract = opt('R')?.unwrap_or(0);
+        let layer = opt('V')?;
+        let allowance_x = opt('U')?.unwrap_or(0);
+        let allowance_z = opt('W')?.unwrap_or(0);
+        // "输入负值时当成正值处理": a negative I is its magnitude.
+        let tool_width = opt('I')?.map(i64::abs);
+        let path = match block.get('J')? {
+            None => PathType::Rough,
+            Some(w) => match Self::count(&block, w, 0, 2)? {
+                0 => PathType::Rough,
+                1 => PathType::RoughAndFinish,
+                _ => PathType::Finish,
+            },
+        };
+        let kinds = self.g75_corner_kinds(&block)?;
+        let mut corners = [Corner::SHARP; 4];
+        for (i, letter) in ['A', 'B', 'D', 'E'].into_iter().enumerate() {
+            corners[i] = Corner { size: opt(letter)?.unwrap_or(0), kind: kinds[i] };
+        }
+        let cycle = G75Cycle {
+            units: self.units,
+            x_mode: self.machine.x_mode,
+            from: first.from,
+            start: first.start,
+            peck: first.peck,
+            step: first.step,
+            depth: first.depth,
+            width: first.width,
+            flank_a: first.flank_a,
+            flank_b: first.flank_b,
+            slope: first.slope,
+            retract,
+            layer,
+            allowance_x,
+            allowance_z,
+            tool_width,
+            path,
+            corners,
+        };
+        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        let restore = Restore { motion: (self.motion != MotionMode::G00).then(|| self.motion.code()) };
+        // Step 10: the tool ends where it was before the cycle.
+        self.moved = true;
+        Ok(G75Call { block, params_line: first.block.line, cycle, restore })
+    }
+
+    /// Reading R-G75P: the digits of P(a)(b)(d)(e) are read from the right
+    /// (e is the last digit), so leading zeros may be dropped (P11 rounds
+    /// D and E); each digit is 0 (chamfer) or 1 (round); omitted: chamfers.
+    fn g75_corner_kinds(&self, block: &Block) -> Result<[CornerKind; 4], ProgramError> {
+        let mut kinds = [CornerKind::Chamfer; 4];
+        let Some(p) = block.get('P')? else {
+            return Ok(kinds);
+        };
+        let bad = || {
+            err(
+                block,
+                Some(p),
+                ErrorKind::OutOfRange { range: "P(a)(b)(d)(e): up to four digits, each 0 or 1".into() },
+            )
+        };
+        if p.number.has_point() || p.number.negative {
+            return Err(bad());
+        }
+        let digits = p.number.int_digits.as_bytes();
+        if digits.len() > 4 || digits.iter().any(|&c| c != b'0' && c != b'1') {
+            return Err(bad());
+        }
+        for (i, &c) in digits.iter().rev().enumerate() {
+            kinds[3 - i] = if c == b'1' { CornerKind::Round } else { CornerKind::Chamfer };
+        }
+        Ok(kinds)
     }
 }
 

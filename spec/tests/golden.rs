@@ -30,6 +30,8 @@ fn render(moves: &[Move], decimals: u32) -> Vec<String> {
                 Motion::Rapid => "G00",
                 Motion::Feed => "G01",
                 Motion::Thread { .. } => "G32",
+                Motion::Arc { clockwise: true, .. } => "G02",
+                Motion::Arc { clockwise: false, .. } => "G03",
             };
             format!("{g} X{} Z{}", f(m.to.x), f(m.to.z))
         })

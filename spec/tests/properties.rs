@@ -182,6 +182,7 @@ proptest! {
                 }
                 Role::Return => prop_assert_eq!(m.to, c.start),
                 Role::LeadIn => {}
+                other => prop_assert!(false, "a G76 move with the G75.1 role {:?}", other),
             }
             prop_assert!(m.to != at, "zero-length move");
             at = m.to;
