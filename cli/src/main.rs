@@ -9,6 +9,7 @@
 mod check;
 mod format;
 mod plot;
+mod plot_g75;
 mod vectors;
 
 use std::fmt::Write as _;
@@ -206,6 +207,14 @@ fn run(cli: Cli) -> Result<(String, u8), Failure> {
     }
 }
 
+/// The finishing contour's moves without its first move (the rapid to the
+/// contour's start, which becomes the profile's first point).
+fn profile_from_contour(contour: &[Move]) -> Vec<Move> {
+    let start = contour.iter().position(|m| m.motion != cycleref::Motion::Rapid).unwrap_or(0);
+    let first = start.saturating_sub(1);
+    contour[first..].to_vec()
+}
+
 /// A program read and ready to expand.
 struct Job {
     name: String,
@@ -396,6 +405,9 @@ impl Job {
             }
             out.push('\n');
         }
+        for call in self.program.grooves() {
+            self.groove_table(&mut out, call)?;
+        }
         let threads: Vec<_> = self.program.threads().collect();
         if !threads.is_empty() {
             let _ = writeln!(out, "G32 blocks ({}):", self.name);
@@ -431,6 +443,63 @@ impl Job {
         Ok(out)
     }
 
+    /// The layers and plunges of a G75.1 cycle: one row per plunge with its
+    /// Z, the X it starts from (Amn), the X it reaches (Bmn) and its pecks.
+    fn groove_table(&self, out: &mut String, call: &cycleref_spec::reader::G75Call) -> Result<(), Failure> {
+        let moves = self.expand_g75(&call.cycle, call.block.line)?;
+        let u = call.cycle.units;
+        let _ = writeln!(out, "G75.1 at lines {}-{} ({}):", call.params_line, call.block.line, self.name);
+        let _ = writeln!(
+            out,
+            "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+            "layer", "plunge", "Z", "from X (Amn)", "to X (Bmn)", "pecks"
+        );
+        let mut at = call.cycle.from;
+        let mut row: Option<(cycleref::Plunge, cycleref::Point, cycleref::Point, u32)> = None;
+        let flush = |out: &mut String, row: &Option<(cycleref::Plunge, cycleref::Point, cycleref::Point, u32)>| {
+            if let Some((p, start, bottom, pecks)) = row {
+                let _ = writeln!(
+                    out,
+                    "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+                    p.layer,
+                    p.number,
+                    format::fixed(start.z, u),
+                    format::fixed(start.x, u),
+                    format::fixed(bottom.x, u),
+                    pecks
+                );
+            }
+        };
+        for m in &moves {
+            if let cycleref::Role::Peck(p) = m.role {
+                match &mut row {
+                    Some((q, _, bottom, pecks)) if *q == p => {
+                        *bottom = m.to;
+                        *pecks += 1;
+                    }
+                    _ => {
+                        flush(out, &row);
+                        row = Some((p, at, m.to, 1));
+                    }
+                }
+            }
+            at = m.to;
+        }
+        flush(out, &row);
+        let contours = [
+            (cycleref::Role::RoughContour, "rough contour (step 9)"),
+            (cycleref::Role::FinishContour, "finishing contour (step 10)"),
+        ];
+        for (role, name) in contours {
+            let n = moves.iter().filter(|m| m.role == role && m.motion != cycleref::Motion::Rapid).count();
+            if n > 0 {
+                let _ = writeln!(out, "{name}: {n} cutting moves");
+            }
+        }
+        out.push('\n');
+        Ok(())
+    }
+
     fn plot(&self, overlay: Option<&plot::Overlay>) -> Result<String, Failure> {
         let mut cycles = Vec::new();
         for call in self.program.cycles() {
@@ -442,6 +511,27 @@ impl Job {
             let moves = self.expand_g32(&call.g32, call.block.line)?;
             threads.push((call.clone(), moves));
         }
-        plot::svg(&self.name, &cycles, &threads, overlay).map_err(Failure)
+        let mut outlines = Vec::new();
+        for call in self.program.grooves() {
+            let moves = self.expand_g75(&call.cycle, call.block.line)?;
+            // The profile and the roughing region are the paths of the same
+            // groove for a pointed tool (plot_g75's module documentation).
+            let pointed = G75Cycle { tool_width: None, ..call.cycle };
+            let profile = self.expand_g75(&G75Cycle { path: cycleref::PathType::Finish, ..pointed }, call.block.line)?;
+            let rough = self.expand_g75(&G75Cycle { path: cycleref::PathType::Rough, ..pointed }, call.block.line)?;
+            let profile: Vec<Move> =
+                profile.into_iter().filter(|m| m.role == cycleref::Role::FinishContour).collect();
+            outlines.push((call, moves, profile, rough));
+        }
+        let grooves: Vec<_> = outlines
+            .iter()
+            .map(|(call, moves, profile, rough)| plot_g75::Groove {
+                call,
+                moves,
+                profile: profile_from_contour(profile),
+                rough: rough.clone(),
+            })
+            .collect();
+        plot::svg(&self.name, &cycles, &threads, &grooves, overlay).map_err(Failure)
     }
 }

@@ -40,16 +40,16 @@ const WIDTH: f64 = 1200.0;
 /// Height of one panel (px).
 const PANEL_HEIGHT: f64 = 560.0;
 /// Plot area within a panel.
-const PLOT_LEFT: f64 = 90.0;
+pub(crate) const PLOT_LEFT: f64 = 90.0;
 const PLOT_RIGHT: f64 = 880.0;
 const PLOT_TOP: f64 = 72.0;
 const PLOT_BOTTOM: f64 = 480.0;
 /// Left edge of the legend.
 const LEGEND_LEFT: f64 = 905.0;
 
-const RAPID: &str = "#8c8c8c";
-const RAPID_DASH: &str = "6 4";
-const FINISH: &str = "#d62728";
+pub(crate) const RAPID: &str = "#8c8c8c";
+pub(crate) const RAPID_DASH: &str = "6 4";
+pub(crate) const FINISH: &str = "#d62728";
 const RUN_OUT: &str = "#2ca02c";
 /// A vendor's trace drawn over the toolpath.
 const TRACE: &str = "#d6278a";
@@ -71,12 +71,13 @@ pub fn svg(
     name: &str,
     cycles: &[(G76Call, Vec<Move>)],
     threads: &[(G32Call, Vec<Move>)],
+    grooves: &[crate::plot_g75::Groove<'_>],
     overlay: Option<&Overlay>,
 ) -> Result<String, String> {
-    if cycles.is_empty() && threads.is_empty() {
-        return Err(format!("{name}: no G76 cycle or G32 block to plot"));
+    if cycles.is_empty() && threads.is_empty() && grooves.is_empty() {
+        return Err(format!("{name}: no G76 cycle, G32 block or G75.1 cycle to plot"));
     }
-    let panels = cycles.len() + usize::from(!threads.is_empty());
+    let panels = cycles.len() + usize::from(!threads.is_empty()) + grooves.len();
     let height = PANEL_HEIGHT * count(panels);
     let mut doc = Document::new()
         .set("width", WIDTH)
@@ -109,6 +110,23 @@ pub fn svg(
         let mut group = g32_panel(name, threads);
         if !cycles.is_empty() {
             group = group.set("transform", format!("translate(0 {})", num(top)));
+        }
+        doc = doc.add(group);
+    }
+    let before = cycles.len() + usize::from(!threads.is_empty());
+    for (i, groove) in grooves.iter().enumerate() {
+        let top = PANEL_HEIGHT * count(before + i);
+        let mut group = groove.draw(name);
+        if before + i > 0 {
+            group = group.set("transform", format!("translate(0 {})", num(top)));
+            doc = doc.add(
+                Line::new()
+                    .set("x1", 0)
+                    .set("x2", WIDTH)
+                    .set("y1", num(top))
+                    .set("y2", num(top))
+                    .set("stroke", "#bbbbbb"),
+            );
         }
         doc = doc.add(group);
     }
@@ -201,7 +219,7 @@ fn count(n: usize) -> f64 {
 }
 
 /// A pixel coordinate, to 0.1 px, without a trailing `.0` or a `-0`.
-fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     let r = (v * 10.0).round() / 10.0 + 0.0;
     format!("{r}")
 }
@@ -253,7 +271,7 @@ fn ticks(lo: f64, hi: f64, target: f64) -> (Vec<f64>, usize) {
 }
 
 /// Colour of rough pass `number` of `total` on the ramp.
-fn ramp(number: u32, total: u32) -> String {
+pub(crate) fn ramp(number: u32, total: u32) -> String {
     let t = if total <= 1 { 1.0 } else { f64::from(number.saturating_sub(1)) / f64::from(total - 1) };
     let mix = |a: f64, b: f64| -> u8 {
         let v = (a + (b - a) * t).round().clamp(0.0, 255.0);
@@ -315,7 +333,7 @@ pub struct Overlay {
 }
 
 /// Scales from increments to pixels.
-struct Mapping {
+pub(crate) struct Mapping {
     per_unit: i64,
     z_lo: f64,
     z_hi: f64,
@@ -325,7 +343,7 @@ struct Mapping {
 
 impl Mapping {
     /// The mapping that shows every one of `points`, with a margin.
-    fn around(points: impl Iterator<Item = Point>, per_unit: i64) -> Mapping {
+    pub(crate) fn around(points: impl Iterator<Item = Point>, per_unit: i64) -> Mapping {
         let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
         for p in points {
             x_min = x_min.min(p.x);
@@ -346,12 +364,17 @@ impl Mapping {
         PLOT_BOTTOM - (x - self.x_lo) / (self.x_hi - self.x_lo) * (PLOT_BOTTOM - PLOT_TOP)
     }
 
-    fn px(&self, p: Point) -> (f64, f64) {
+    pub(crate) fn px(&self, p: Point) -> (f64, f64) {
         (self.px_z(units_of(p.z, self.per_unit)), self.px_x(units_of(p.x, self.per_unit)))
     }
 
+    /// Increments per unit (mm or inch).
+    pub(crate) fn per_unit(&self) -> i64 {
+        self.per_unit
+    }
+
     /// Pixels per unit along Z and along X.
-    fn scales(&self) -> (f64, f64) {
+    pub(crate) fn scales(&self) -> (f64, f64) {
         (
             (PLOT_RIGHT - PLOT_LEFT) / (self.z_hi - self.z_lo),
             (PLOT_BOTTOM - PLOT_TOP) / (self.x_hi - self.x_lo),
@@ -825,7 +848,7 @@ impl<'a> Panel<'a> {
 }
 
 /// The plot frame, grid, ticks and axis labels.
-fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> Group {
+pub(crate) fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> Group {
     g = g.add(
         Rectangle::new()
             .set("x", PLOT_LEFT)

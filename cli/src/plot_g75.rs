@@ -1,0 +1,233 @@
+//! The panel of a G75.1 groove cycle in `cycleref plot`.
+//!
+//! Drawn, bottom to top: the workpiece's surface line and the programmed
+//! groove profile (filled light grey, with its chamfers and rounds), the
+//! roughing region (the profile less the allowances, dotted), then the
+//! toolpath: rapids dashed grey, pecks in a blue ramp by layer, the rough
+//! contour orange, the finishing contour red (rounds as arcs). For a
+//! grooving tool (I), the tool's cutting edge is drawn at the bottom of
+//! every plunge as a translucent bar of the tool's width, so the width and
+//! the ridges it leaves are visible.
+//!
+//! The profile and the roughing region are not computed here: they are the
+//! paths of the same cycle run by the same engine for a pointed tool (J2
+//! for the profile, J0 for the roughing region), so the drawing cannot
+//! disagree with the expansion.
+
+use std::fmt::Write as _;
+
+use cycleref::{InputUnit, Motion, Move, Point, Role, XMode};
+use cycleref_spec::reader::G75Call;
+use svg::node::element::{Group, Path, Rectangle, Text, Title};
+
+use crate::format::fixed;
+use crate::plot::{draw_axes, num, ramp, Mapping, FINISH, PLOT_LEFT, RAPID, RAPID_DASH};
+
+/// Orange: the rough contour (step 9).
+const ROUGH: &str = "#ff7f0e";
+/// The groove's fill.
+const GROOVE_FILL: &str = "#eeeeee";
+/// The profile's outline.
+const PROFILE: &str = "#222222";
+
+/// What a G75.1 panel draws.
+pub struct Groove<'a> {
+    /// The cycle.
+    pub call: &'a G75Call,
+    /// Its moves.
+    pub moves: &'a [Move],
+    /// The finishing contour of the same groove for a pointed tool (the
+    /// programmed profile), from its start on the surface to its end.
+    pub profile: Vec<Move>,
+    /// The rough contour of the same groove for a pointed tool (the
+    /// roughing region's outline).
+    pub rough: Vec<Move>,
+}
+
+impl Groove<'_> {
+    /// The panel.
+    pub fn draw(&self, name: &str) -> Group {
+        let c = &self.call.cycle;
+        let u = c.units;
+        let per_unit = u.per_unit();
+        let points = std::iter::once(c.from)
+            .chain(std::iter::once(c.start))
+            .chain(self.moves.iter().map(|m| m.to))
+            .chain(self.profile.iter().map(|m| m.to));
+        let map = Mapping::around(points, per_unit);
+        let unit = match u.unit {
+            InputUnit::Metric => "mm",
+            InputUnit::Inch => "inch",
+        };
+        let x_kind = match c.x_mode {
+            XMode::Diameter => "diameter",
+            XMode::Radius => "radius",
+        };
+        let tool = match c.tool_width {
+            Some(w) => format!("grooving tool I{} (bars: its cutting edge at each plunge bottom)", fixed(w, u)),
+            None => "pointed tool (no I)".to_string(),
+        };
+        let mut g = Group::new()
+            .add(
+                Text::new(format!(
+                    "{name} \u{2014} G75.1 at lines {}-{}",
+                    self.call.params_line, self.call.block.line
+                ))
+                .set("x", PLOT_LEFT)
+                .set("y", 28)
+                .set("font-size", 17)
+                .set("font-weight", "bold")
+                .set("fill", "#000000"),
+            )
+            .add(
+                Text::new(format!(
+                    "grey: groove profile, dotted: less the allowances; blue: pecks, orange: rough \
+                     contour, red: finishing; {tool}"
+                ))
+                .set("x", PLOT_LEFT)
+                .set("y", 50)
+                .set("font-size", 12)
+                .set("fill", "#444444"),
+            );
+        g = draw_axes(g, &map, unit, x_kind);
+        let x_factor = c.x_mode.factor();
+        // The groove: the profile closed along the surface.
+        if let Some(first) = self.profile.first() {
+            let mut d = String::new();
+            let (x, y) = map.px(first.to);
+            let _ = write!(d, "M{} {}", num(x), num(y));
+            let mut at = first.to;
+            for m in &self.profile[1..] {
+                segment(&mut d, &map, at, m, x_factor);
+                at = m.to;
+            }
+            let closed = format!("{d}Z");
+            g = g
+                .add(Path::new().set("d", closed).set("fill", GROOVE_FILL).set("stroke", "none"))
+                .add(
+                    Path::new()
+                        .set("d", d)
+                        .set("fill", "none")
+                        .set("stroke", PROFILE)
+                        .set("stroke-width", 2.2)
+                        .add(Title::new("the programmed groove profile")),
+                );
+        }
+        if let Some(first) = self.rough.iter().find(|m| m.role == Role::RoughContour) {
+            let mut d = String::new();
+            let start = self.rough.iter().take_while(|m| !std::ptr::eq(*m, first)).last().map_or(c.from, |m| m.to);
+            let (x, y) = map.px(start);
+            let _ = write!(d, "M{} {}", num(x), num(y));
+            let mut at = start;
+            for m in self.rough.iter().skip_while(|m| !std::ptr::eq(*m, first)) {
+                if m.role != Role::RoughContour || m.motion == Motion::Rapid && at != start {
+                    break;
+                }
+                segment(&mut d, &map, at, m, x_factor);
+                at = m.to;
+            }
+            g = g.add(
+                Path::new()
+                    .set("d", d)
+                    .set("fill", "none")
+                    .set("stroke", PROFILE)
+                    .set("stroke-width", 1)
+                    .set("stroke-dasharray", "2 3")
+                    .add(Title::new("the groove less the allowances U/W (roughing region)")),
+            );
+        }
+        let layers = self
+            .moves
+            .iter()
+            .filter_map(|m| crate::format::plunge_of(m.role))
+            .map(|p| p.layer)
+            .max()
+            .unwrap_or(1);
+        let mut at = c.from;
+        let mut rapids = String::new();
+        let mut bars = Group::new();
+        for (i, m) in self.moves.iter().enumerate() {
+            if m.motion == Motion::Rapid {
+                let (x1, y1) = map.px(at);
+                let (x2, y2) = map.px(m.to);
+                let _ = write!(rapids, "M{} {}L{} {}", num(x1), num(y1), num(x2), num(y2));
+            } else {
+                let (colour, width) = match m.role {
+                    Role::Peck(p) => (ramp(p.layer, layers), 1.6),
+                    Role::RoughContour => (ROUGH.to_string(), 2.0),
+                    _ => (FINISH.to_string(), 2.0),
+                };
+                let mut d = String::new();
+                let (x, y) = map.px(at);
+                let _ = write!(d, "M{} {}", num(x), num(y));
+                segment(&mut d, &map, at, m, x_factor);
+                g = g.add(
+                    Path::new()
+                        .set("d", d)
+                        .set("fill", "none")
+                        .set("stroke", colour)
+                        .set("stroke-width", width)
+                        .add(Title::new(format!(
+                            "{} to X{} Z{}",
+                            crate::format::role_name(m.role),
+                            fixed(m.to.x, u),
+                            fixed(m.to.z, u)
+                        ))),
+                );
+            }
+            // The tool's edge at the bottom of each plunge (the last peck).
+            if let (Role::Peck(p), Some(w)) = (m.role, c.tool_width) {
+                let last = !matches!(self.moves.get(i + 1).map(|n| n.role), Some(Role::PeckRetract(q)) if q == p);
+                if last && w > 0 {
+                    let far = Point::new(m.to.x, m.to.z + c.axial_sign() * w);
+                    let (x1, y1) = map.px(m.to);
+                    let (x2, _) = map.px(far);
+                    bars = bars.add(
+                        Rectangle::new()
+                            .set("x", num(x1.min(x2)))
+                            .set("y", num(y1 - 3.0))
+                            .set("width", num((x2 - x1).abs().max(0.5)))
+                            .set("height", 6)
+                            .set("fill", "#1f77b4")
+                            .set("fill-opacity", 0.25)
+                            .add(Title::new(format!("layer {} plunge {}: tool edge", p.layer, p.number))),
+                    );
+                }
+            }
+            at = m.to;
+        }
+        g.add(bars).add(
+            Path::new()
+                .set("d", rapids)
+                .set("fill", "none")
+                .set("stroke", RAPID)
+                .set("stroke-width", 1)
+                .set("stroke-dasharray", RAPID_DASH),
+        )
+    }
+}
+
+/// Appends the path data of move `m` from `at`: a line, or for an arc an
+/// elliptical arc (the two axes have their own scales; X is drawn as
+/// programmed, so a radius `r` spans `r·x_factor` X units).
+fn segment(d: &mut String, map: &Mapping, at: Point, m: &Move, x_factor: i64) {
+    let (x, y) = map.px(m.to);
+    match m.motion {
+        Motion::Arc { centre, clockwise } => {
+            let dz = (at.z - centre.z) as f64;
+            let dr = (at.x - centre.x) as f64 / x_factor as f64;
+            let r = (dz * dz + dr * dr).sqrt();
+            let (sz, sx) = map.scales();
+            let per = map.per_unit() as f64;
+            let rx = r / per * sz;
+            let ry = r * x_factor as f64 / per * sx;
+            // The picture's y grows downwards, so clockwise on the drawing
+            // (Z right, X up) is SVG's sweep flag 1.
+            let sweep = u8::from(clockwise);
+            let _ = write!(d, "A{} {} 0 0 {sweep} {} {}", num(rx), num(ry), num(x), num(y));
+        }
+        _ => {
+            let _ = write!(d, "L{} {}", num(x), num(y));
+        }
+    }
+}
