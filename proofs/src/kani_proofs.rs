@@ -100,3 +100,55 @@ fn isqrt_rounds() {
 fn g32_run_out() {
     harness::g32_run_out(1_000, 100, &cycleref::expand_g32);
 }
+
+/// G75.1: right-angle grooves up to 6 increments deep and wide, few pecks.
+const GROOVE_WINDOW: crate::groove::GrooveDomain = crate::groove::GrooveDomain {
+    depth: (1, 6),
+    width: (0, 6),
+    peck: (1, 4),
+    step: (1, 4),
+    retract: (0, 1),
+    layer: (0, 3),
+    allowance_x: (0, 1),
+    allowance_z: (0, 1),
+    tool_width: (-1, 2),
+    corner: (0, 1),
+    corner_kinds: (0, 15),
+    flank: (900_000, 900_000),
+    slope: (0, 0),
+    path: (0, 2),
+    signs: (0, 3),
+    units: (0, 7),
+};
+
+#[kani::proof]
+#[kani::unwind(64)]
+fn groove_pecks_and_steps() {
+    crate::groove::groove_pecks_and_steps(&GROOVE_WINDOW, &crate::groove::GrooveFixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(64)]
+fn groove_layers() {
+    crate::groove::groove_layers(&GROOVE_WINDOW, &crate::groove::GrooveFixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(64)]
+fn groove_inside() {
+    crate::groove::groove_inside(&GROOVE_WINDOW, &crate::groove::GrooveFixedPoint);
+}
+
+#[kani::proof]
+#[kani::unwind(64)]
+fn groove_finish_is_profile() {
+    crate::groove::groove_finish_is_profile(&GROOVE_WINDOW, &crate::groove::GrooveFixedPoint);
+}
+
+/// Every documented input, the first 8 moves: no panic, no overflow.
+#[kani::proof]
+#[kani::unwind(64)]
+#[kani::solver(cadical)]
+fn groove_no_panic() {
+    crate::groove::groove_no_panic(&crate::groove::GrooveDomain::FULL, 8);
+}

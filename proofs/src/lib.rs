@@ -7,6 +7,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod groove;
 pub mod harness;
 #[cfg(kani)]
 mod kani_proofs;

@@ -1,0 +1,444 @@
+//! The G75.1 proof harnesses (docs/G75.md §10): one function per property,
+//! shared by Kani (`proofs/src/kani_proofs.rs`) and the tests
+//! (`proofs/tests/g75_harnesses.rs`), like [`crate::harness`] for G76.
+//!
+//! The properties that need the groove's exact boundaries are stated for
+//! right-angle grooves (A = B = 90°, L = 0), where every boundary is an
+//! integer or a half-integer and the check is exact integer arithmetic; the
+//! differential tests (`proofs/tests/g75_equivalence.rs`) carry them to every
+//! angle through the reference model, whose geometry is exact.
+
+use cycleref::g75::{corner, Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
+use cycleref::{CycleError, IncrementSystem, InputUnit, Motion, Move, Point, Role, Units, XMode};
+
+use crate::cover;
+use crate::verify::{any_in, assume};
+
+/// The inputs a G75.1 harness may choose: inclusive ranges in least
+/// increments and 0.0001°, and codes for the discrete choices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GrooveDomain {
+    /// |H|, X-word units.
+    pub depth: (i64, i64),
+    /// |D|.
+    pub width: (i64, i64),
+    /// P(Δi).
+    pub peck: (i64, i64),
+    /// Q(Δk).
+    pub step: (i64, i64),
+    /// R(e).
+    pub retract: (i64, i64),
+    /// V(Δv); 0 = no V.
+    pub layer: (i64, i64),
+    /// U(Δu).
+    pub allowance_x: (i64, i64),
+    /// W(Δw).
+    pub allowance_z: (i64, i64),
+    /// I(r); -1 = no I (pointed tool).
+    pub tool_width: (i64, i64),
+    /// Size of each corner r1..r4.
+    pub corner: (i64, i64),
+    /// Kinds of the corners as 4 bits (bit i set: corner i is a round).
+    pub corner_kinds: (i64, i64),
+    /// A and B, 0.0001°.
+    pub flank: (i64, i64),
+    /// L, 0.0001°.
+    pub slope: (i64, i64),
+    /// J: 0, 1, 2.
+    pub path: (i64, i64),
+    /// Bit 0: H > 0 (internal); bit 1: D < 0.
+    pub signs: (i64, i64),
+    /// Bit 0 IS-C, bit 1 inch, bit 2 radius X.
+    pub units: (i64, i64),
+}
+
+impl GrooveDomain {
+    /// Right-angle grooves small enough to enumerate a slice of: every
+    /// exact-boundary property is checked here.
+    pub const SQUARE: GrooveDomain = GrooveDomain {
+        depth: (1, 12),
+        width: (0, 10),
+        peck: (1, 5),
+        step: (1, 4),
+        retract: (0, 1),
+        layer: (0, 5),
+        allowance_x: (0, 2),
+        allowance_z: (0, 2),
+        tool_width: (-1, 3),
+        corner: (0, 2),
+        corner_kinds: (0, 15),
+        flank: (900_000, 900_000),
+        slope: (0, 0),
+        path: (0, 2),
+        signs: (0, 3),
+        units: (0, 7),
+    };
+
+    /// The documented ranges (the manual's range tables), for sampling and
+    /// for the no-panic proof.
+    pub const FULL: GrooveDomain = GrooveDomain {
+        depth: (1, 99_999_999),
+        width: (0, 99_999_999),
+        peck: (1, 99_999_999),
+        step: (1, 99_999_999),
+        retract: (0, 999_999),
+        layer: (0, 99_999_999),
+        allowance_x: (0, 99_999_999),
+        allowance_z: (0, 99_999_999),
+        tool_width: (-1, 99_999_999),
+        corner: (0, 999_999),
+        corner_kinds: (0, 15),
+        flank: (1, 900_000),
+        slope: (0, 899_999),
+        path: (0, 2),
+        signs: (0, 3),
+        units: (0, 7),
+    };
+}
+
+/// A G75.1 cycle chosen from `d`: S = (X100, Z0) (in mm at the chosen
+/// units), the tool 10 increments clear of the opening.
+pub fn any_groove(d: &GrooveDomain) -> G75Cycle {
+    let pick = |r: (i64, i64)| any_in(r.0, r.1);
+    let depth = pick(d.depth);
+    let width = pick(d.width);
+    let signs = pick(d.signs);
+    let units_code = pick(d.units);
+    let units = Units {
+        system: if units_code & 1 == 0 { IncrementSystem::IsB } else { IncrementSystem::IsC },
+        unit: if units_code & 2 == 0 { InputUnit::Metric } else { InputUnit::Inch },
+    };
+    let x_mode = if units_code & 4 == 0 { XMode::Diameter } else { XMode::Radius };
+    let sx = if signs & 1 == 1 { 1 } else { -1 };
+    let sz = if signs & 2 == 2 { -1 } else { 1 };
+    let start = Point::new(100 * units.per_unit(), 0);
+    let layer = pick(d.layer);
+    let tool = pick(d.tool_width);
+    let kinds = pick(d.corner_kinds);
+    let mut corners = [Corner::SHARP; 4];
+    for (i, c) in corners.iter_mut().enumerate() {
+        let size = pick(d.corner);
+        let kind = if kinds >> i & 1 == 1 { CornerKind::Round } else { CornerKind::Chamfer };
+        *c = Corner { size, kind };
+    }
+    let angle = |r: (i64, i64)| u32::try_from(any_in(r.0, r.1)).unwrap_or(0);
+    G75Cycle {
+        units,
+        x_mode,
+        from: Point::new(start.x - sx * 10, start.z - sz * 10),
+        start,
+        peck: pick(d.peck),
+        step: pick(d.step),
+        depth: sx * depth,
+        width: if sz < 0 { -width } else { width },
+        flank_a: angle(d.flank),
+        flank_b: angle(d.flank),
+        slope: angle(d.slope),
+        retract: pick(d.retract),
+        layer: (layer > 0).then_some(layer),
+        allowance_x: pick(d.allowance_x),
+        allowance_z: pick(d.allowance_z),
+        tool_width: (tool >= 0).then_some(tool),
+        path: match pick(d.path) {
+            0 => PathType::Rough,
+            1 => PathType::RoughAndFinish,
+            _ => PathType::Finish,
+        },
+        corners,
+    }
+}
+
+/// What a groove harness runs: an engine from a cycle to its moves.
+pub trait GrooveEngine {
+    /// The moves of `c`.
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    fn expand(&self, c: &G75Cycle) -> Result<Moves, CycleError>;
+}
+
+/// Moves collected from an engine (Kani handles a vector of a bounded
+/// length; the windows keep it short).
+pub type Moves = std::vec::Vec<Move>;
+
+/// The fixed-point engine, `cycleref::expand_g75`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct GrooveFixedPoint;
+
+impl GrooveEngine for GrooveFixedPoint {
+    fn expand(&self, c: &G75Cycle) -> Result<Moves, CycleError> {
+        cycleref::expand_g75(c).map(Iterator::collect)
+    }
+}
+
+/// Local coordinates (docs/G75.md §2) of an absolute point: (u, y).
+fn local(c: &G75Cycle, p: Point) -> (i64, i64) {
+    (c.axial_sign() * (p.z - c.start.z), c.radial_sign() * (p.x - c.start.x))
+}
+
+/// Expands a chosen cycle, or prunes the run when it is refused.
+fn expanded(c: &G75Cycle, engine: &impl GrooveEngine) -> Moves {
+    match engine.expand(c) {
+        Ok(moves) => moves,
+        Err(_) => {
+            assume(false);
+            Moves::new()
+        }
+    }
+}
+
+/// Property: every peck takes at most Δi of new depth (Δi/2 of radius), a
+/// peck moves along X only and away from the opening, every axial step is
+/// at most Δk and along Z only, no move is empty, and the path ends where
+/// it began.
+pub fn groove_pecks_and_steps(d: &GrooveDomain, engine: &impl GrooveEngine) {
+    let c = any_groove(d);
+    let moves = expanded(&c, engine);
+    let mut at = c.from;
+    let mut deepest: Option<i64> = None;
+    for m in &moves {
+        assert_ne!(m.to, at, "no empty move");
+        let (u0, y0) = local(&c, at);
+        let (u1, y1) = local(&c, m.to);
+        match m.role {
+            Role::Peck(_) => {
+                assert_eq!(u0, u1, "a peck moves along X only");
+                assert!(y1 > y0, "a peck goes into the groove");
+                let before = deepest.map_or(y0, |v| v.max(y0));
+                assert!(y1 - before <= c.peck, "a peck takes at most Δi of new depth");
+                cover!(y1 - before == c.peck, "a full peck");
+                deepest = Some(before.max(y1));
+            }
+            Role::PeckRetract(_) => {
+                assert_eq!(u0, u1);
+                assert!(y1 < y0 && y0 - y1 <= c.retract * c.x_mode.factor(), "retract e at most");
+            }
+            Role::PlungeRetract(_) => {
+                assert_eq!(u0, u1);
+                deepest = None;
+            }
+            Role::Step(_) => {
+                assert_eq!(y0, y1, "a step moves along Z only");
+                assert!(u1 > u0 && u1 - u0 <= c.step, "a step goes on by at most Δk");
+                cover!(u1 - u0 < c.step, "a short last step");
+            }
+            _ => {}
+        }
+        at = m.to;
+    }
+    assert_eq!(at, c.from, "the cycle ends where it began (step 10)");
+}
+
+/// Property: layers. Every plunge of a layer reaches the same depth, the
+/// layers get deeper by at most Δv each, and the last one reaches the
+/// roughing bottom |H| - Δu.
+pub fn groove_layers(d: &GrooveDomain, engine: &impl GrooveEngine) {
+    let c = any_groove(d);
+    assume(c.path.roughs());
+    let moves = expanded(&c, engine);
+    let mut bottoms: [Option<i64>; 64] = [None; 64];
+    let mut layers = 0_usize;
+    for m in &moves {
+        if let Role::Peck(p) = m.role {
+            let layer = usize::try_from(p.layer).unwrap_or(usize::MAX);
+            assert!((1..=64).contains(&layer), "the harness's windows have at most 64 layers");
+            let (_, y) = local(&c, m.to);
+            let slot = &mut bottoms[layer - 1];
+            *slot = Some(slot.map_or(y, |b: i64| b.max(y)));
+            layers = layers.max(layer);
+        }
+    }
+    // Every plunge's last peck reaches its layer's bottom.
+    let mut last: Option<(cycleref::Plunge, i64)> = None;
+    for m in &moves {
+        match m.role {
+            Role::Peck(p) => last = Some((p, local(&c, m.to).1)),
+            Role::PlungeRetract(p) => {
+                let (q, y) = last.expect("a plunge has pecks");
+                assert_eq!(p, q);
+                assert_eq!(Some(y), bottoms[usize::try_from(p.layer).unwrap_or(1) - 1], "plunge reaches its layer");
+            }
+            _ => {}
+        }
+    }
+    let roughing_bottom = c.depth.abs() - c.allowance_x;
+    let mut previous = 0;
+    for b in bottoms.iter().take(layers) {
+        let b = b.expect("every layer has plunges");
+        assert!(b > previous, "layers get deeper");
+        if let Some(v) = c.layer {
+            assert!(b - previous <= v, "a layer is at most Δv deep");
+        }
+        previous = b;
+    }
+    assert_eq!(previous, roughing_bottom, "the last layer reaches |H| - U");
+    cover!(layers > 1, "several layers");
+}
+
+/// The roughing region of a right-angle groove, doubled so every boundary
+/// is an integer (docs/G75.md §5 with cot 90° = 0, cot 45° = 1, tan 45° =
+/// 1): `2u ≥ left2(y)`, `2(u + w) ≤ right2(y)`, `y ≤ |H| - Δu`.
+struct SquareRegion {
+    f: i64,
+    bottom: i64,
+    d: i64,
+    dw: i64,
+    t3: i64,
+    t4: i64,
+}
+
+impl SquareRegion {
+    fn new(c: &G75Cycle) -> SquareRegion {
+        SquareRegion {
+            f: c.x_mode.factor(),
+            bottom: c.depth.abs() - c.allowance_x,
+            d: c.width.abs(),
+            dw: c.allowance_z,
+            t3: c.corners[corner::R3].size,
+            t4: c.corners[corner::R4].size,
+        }
+    }
+
+    /// f·left(y), exact: max(Δw, t3 + Δw - (bottom - y)/f) (chord3 only with t3 > 0).
+    fn left_f(&self, y: i64) -> i64 {
+        let flank = self.f * self.dw;
+        if self.t3 > 0 {
+            flank.max(self.f * (self.t3 + self.dw) - (self.bottom - y))
+        } else {
+            flank
+        }
+    }
+
+    /// f·right(y), exact.
+    fn right_f(&self, y: i64) -> i64 {
+        let flank = self.f * (self.d - self.dw);
+        if self.t4 > 0 {
+            flank.min(self.f * (self.d - self.t4 - self.dw) + (self.bottom - y))
+        } else {
+            flank
+        }
+    }
+
+    /// The tool, reference point (u, y) and width w, lies in the region
+    /// (or above the opening, y ≤ 0, where there is only air).
+    fn holds(&self, u: i64, y: i64, w: i64) -> bool {
+        y <= 0 || y <= self.bottom && self.f * u >= self.left_f(y) && self.f * (u + w) <= self.right_f(y)
+    }
+}
+
+/// Property: no roughing position of the tool, with its width, lies outside
+/// the groove less the allowances (right-angle grooves: exact). Checked at
+/// the end of every roughing move (pecks, retracts, steps, layer changes and
+/// the rough contour); the region is convex, so the moves between them stay
+/// inside too.
+pub fn groove_inside(d: &GrooveDomain, engine: &impl GrooveEngine) {
+    let c = any_groove(d);
+    assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0);
+    let moves = expanded(&c, engine);
+    let region = SquareRegion::new(&c);
+    let w = c.width_of_tool();
+    for m in &moves {
+        let roughing = matches!(
+            m.role,
+            Role::Peck(_)
+                | Role::PeckRetract(_)
+                | Role::PlungeRetract(_)
+                | Role::Step(_)
+                | Role::LayerChange(_)
+                | Role::RoughContour
+        );
+        if roughing {
+            let (u, y) = local(&c, m.to);
+            assert!(region.holds(u, y, w), "{:?} at u {u} y {y} w {w} leaves the roughing region", m.role);
+            cover!(y > 0 && region.f * u == region.left_f(y), "touches the left boundary");
+            cover!(y > 0 && region.f * (u + w) == region.right_f(y), "touches the right boundary");
+        }
+    }
+    cover!(c.corners[corner::R3].size > 0 && c.path.roughs(), "with a bottom corner");
+}
+
+/// Property: with J1 or J2 the finishing contour passes exactly through the
+/// programmed profile (right-angle grooves, where every point is exact):
+/// T1s, T1a, T3a, T3b, T4b, T4c, P3/T2b, T2s, with the far side shifted by
+/// the tool width, rounds as arcs about their centres.
+pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &impl GrooveEngine) {
+    let c = any_groove(d);
+    assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0 && c.path.finishes());
+    let moves = expanded(&c, engine);
+    let f = c.x_mode.factor();
+    let y_bottom = c.depth.abs();
+    let dd = c.width.abs();
+    let w = c.width_of_tool();
+    let [r1, r2, r3, r4] = c.corners;
+    // Expected cutting moves of the contour (docs/G75.md §3 with a = b = 90°).
+    let mut expected: std::vec::Vec<(i64, i64, Option<(i64, i64)>)> = std::vec::Vec::new();
+    let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
+    if r1.size > 0 {
+        expected.push((0, f * r1.size, arc(r1, (-r1.size, f * r1.size))));
+    }
+    if r3.size > 0 {
+        expected.push((0, y_bottom - f * r3.size, None));
+        expected.push((r3.size, y_bottom, arc(r3, (r3.size, y_bottom - f * r3.size))));
+    } else {
+        expected.push((0, y_bottom, None));
+    }
+    if r4.size > 0 {
+        expected.push((dd - r4.size - w, y_bottom, None));
+        expected.push((dd - w, y_bottom - f * r4.size, arc(r4, (dd - r4.size - w, y_bottom - f * r4.size))));
+    } else {
+        expected.push((dd - w, y_bottom, None));
+    }
+    if r2.size > 0 {
+        expected.push((dd - w, f * r2.size, None));
+        expected.push((dd + r2.size - w, 0, arc(r2, (dd + r2.size - w, f * r2.size))));
+    } else {
+        expected.push((dd - w, 0, None));
+    }
+    // The contour's first cutting move is the r1 chamfer/round (or flank A).
+    let got: std::vec::Vec<(i64, i64, Option<(i64, i64)>)> = moves
+        .iter()
+        .filter(|m| m.role == Role::FinishContour && m.motion != Motion::Rapid)
+        .map(|m| {
+            let (u, y) = local(&c, m.to);
+            let centre = match m.motion {
+                Motion::Arc { centre, .. } => Some(local(&c, centre)),
+                _ => None,
+            };
+            (u, y, centre)
+        })
+        .collect();
+    // A chamfer of size 0 leaves no move; a flank of zero length neither.
+    let expected: std::vec::Vec<_> = {
+        let mut at = if r1.size > 0 { (-r1.size, 0) } else { (0, 0) };
+        let mut out = std::vec::Vec::new();
+        for e in expected {
+            if (e.0, e.1) != at {
+                out.push(e);
+                at = (e.0, e.1);
+            }
+        }
+        out
+    };
+    assert_eq!(got, expected, "the finishing contour is the programmed profile");
+    cover!(got.iter().any(|g| g.2.is_some()), "with an arc");
+}
+
+/// Property: over the documented ranges, expanding never panics or
+/// overflows; every move lies within the coordinate range; a cycle either
+/// expands or is refused with an alarm. Bounded to the first `limit` moves.
+pub fn groove_no_panic(d: &GrooveDomain, limit: usize) {
+    let c = any_groove(d);
+    if let Ok(moves) = cycleref::expand_g75(&c) {
+        for m in moves.take(limit) {
+            assert!(m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH);
+        }
+        cover!(true, "a valid groove");
+    }
+}
+
+/// `from`, for tests: the tool position before the cycle (kept public for
+/// the mutants).
+pub fn local_of(c: &G75Cycle, p: Point) -> (i64, i64) {
+    local(c, p)
+}

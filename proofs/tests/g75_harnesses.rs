@@ -1,0 +1,143 @@
+//! The G75.1 harnesses (`proofs/src/groove.rs`) under `cargo test`: each
+//! property exhaustively over a slice of small right-angle grooves and by
+//! sampling over the documented ranges. The longer run:
+//!
+//! ```sh
+//! cargo test -p cycleref-proofs --release --test g75_harnesses -- --ignored
+//! ```
+
+use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
+use cycleref_proofs::shim::{self, Mode};
+
+fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
+    let r = shim::check(name, mode, body);
+    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
+    r
+}
+
+/// Small right-angle grooves: depth 1..=8, width 0..=6, pecks 1..=3, steps
+/// 1..=3, with or without layers of 3, allowances 0..=1, pointed tool or
+/// widths 1..=2, corner sizes 0..=1 of every kind pattern, every J, both
+/// signs of H and D, IS-B metric diameter and IS-C inch radius.
+const SMALL: GrooveDomain = GrooveDomain {
+    depth: (1, 8),
+    width: (0, 6),
+    peck: (1, 3),
+    step: (1, 3),
+    retract: (1, 1),
+    layer: (0, 3),
+    allowance_x: (0, 1),
+    allowance_z: (0, 1),
+    tool_width: (-1, 2),
+    corner: (0, 1),
+    corner_kinds: (0, 15),
+    flank: (900_000, 900_000),
+    slope: (0, 0),
+    path: (0, 2),
+    signs: (0, 3),
+    units: (0, 0),
+};
+
+/// Wider, for sampling: right-angle grooves up to 400 increments.
+const SQUARE_WIDE: GrooveDomain = GrooveDomain {
+    depth: (1, 400),
+    width: (0, 400),
+    peck: (1, 60),
+    step: (1, 60),
+    retract: (0, 20),
+    layer: (0, 120),
+    allowance_x: (0, 40),
+    allowance_z: (0, 40),
+    tool_width: (-1, 80),
+    corner: (0, 40),
+    ..GrooveDomain::SQUARE
+};
+
+/// Every angle, small enough to expand quickly.
+const ANGLES: GrooveDomain = GrooveDomain {
+    depth: (1, 4_000),
+    width: (0, 4_000),
+    peck: (50, 800),
+    step: (50, 800),
+    retract: (0, 50),
+    layer: (0, 2_000),
+    allowance_x: (0, 200),
+    allowance_z: (0, 200),
+    tool_width: (-1, 400),
+    corner: (0, 300),
+    flank: (1, 900_000),
+    slope: (0, 899_999),
+    ..GrooveDomain::SQUARE
+};
+
+const SAMPLE: Mode = Mode::Sample { runs: 2_000, seed: 0x6737_3531 };
+
+fn small(max_runs: u64) -> Mode {
+    Mode::Exhaustive { max_runs }
+}
+
+/// The exhaustive slice: the choices that matter for each property, the
+/// rest fixed (a wider slice in the ignored run).
+const PECKS: GrooveDomain =
+    GrooveDomain { corner: (0, 0), corner_kinds: (0, 0), allowance_z: (0, 0), path: (0, 0), ..SMALL };
+
+#[test]
+fn pecks_and_steps() {
+    check("pecks (exhaustive)", small(200_000), || groove::groove_pecks_and_steps(&PECKS, &GrooveFixedPoint));
+    check("pecks (square, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("pecks (angles, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&ANGLES, &GrooveFixedPoint));
+}
+
+#[test]
+fn layers() {
+    check("layers (exhaustive)", small(200_000), || groove::groove_layers(&PECKS, &GrooveFixedPoint));
+    check("layers (angles, sampled)", SAMPLE, || groove::groove_layers(&ANGLES, &GrooveFixedPoint));
+}
+
+/// Corners and allowances matter here; pecking does not.
+const REGION: GrooveDomain =
+    GrooveDomain { peck: (3, 3), step: (1, 2), signs: (0, 0), path: (0, 0), corner_kinds: (0, 3), ..SMALL };
+
+#[test]
+fn inside_the_roughing_region() {
+    check("inside (exhaustive)", small(400_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
+    check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
+}
+
+/// Corners and tool widths matter; roughing does not (J2 and J1).
+const PROFILE: GrooveDomain = GrooveDomain {
+    peck: (8, 8),
+    step: (3, 3),
+    layer: (0, 0),
+    path: (1, 2),
+    corner: (0, 2),
+    signs: (0, 3),
+    depth: (6, 9),
+    width: (2, 7),
+    ..SMALL
+};
+
+#[test]
+fn finishing_contour_is_the_profile() {
+    check("profile (exhaustive)", small(800_000), || {
+        groove::groove_finish_is_profile(&PROFILE, &GrooveFixedPoint);
+    });
+    check("profile (sampled)", SAMPLE, || groove::groove_finish_is_profile(&SQUARE_WIDE, &GrooveFixedPoint));
+}
+
+#[test]
+fn no_panic_over_the_documented_ranges() {
+    check("no panic (sampled)", Mode::Sample { runs: 20_000, seed: 7 }, || {
+        groove::groove_no_panic(&GrooveDomain::FULL, 64);
+    });
+}
+
+/// The long run: wider exhaustive slices.
+#[test]
+#[ignore = "long: run with --release -- --ignored"]
+fn long_run() {
+    let wide = GrooveDomain { depth: (1, 14), width: (0, 10), peck: (1, 5), step: (1, 4), ..SMALL };
+    check("pecks (long)", small(20_000_000), || groove::groove_pecks_and_steps(&wide, &GrooveFixedPoint));
+    check("inside (long)", small(20_000_000), || groove::groove_inside(&wide, &GrooveFixedPoint));
+    check("profile (long)", small(20_000_000), || groove::groove_finish_is_profile(&wide, &GrooveFixedPoint));
+}
