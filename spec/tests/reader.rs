@@ -298,7 +298,7 @@ fn addresses_outside_the_profile() {
         &Machine::new(ProfileName::Fanuc),
     );
     assert_eq!(e.word.as_deref(), Some("J1"));
-    assert!(e.to_string().contains("not part of G76 on the fanuc profile"), "{e}");
+    assert!(e.to_string().contains("not part of G76 block 2 on the fanuc profile"), "{e}");
     let e = error(&format!("{HEAD}G76 P020560 D1\n"), &Machine::new(ProfileName::Gsk980));
     assert_eq!(e.word.as_deref(), Some("D1"));
 }
