@@ -19,10 +19,12 @@
 pub mod error;
 pub mod exact;
 pub mod g32;
+pub mod g75;
 pub mod g76;
 pub mod lex;
 pub mod profile;
 pub mod reader;
+pub mod real;
 pub mod tan;
 
 pub use error::{ErrorKind, ProgramError};

@@ -176,7 +176,8 @@ impl Rational {
     /// (`docs/G75.md` §6 "nearest: `floor(v + 1/2)`").
     #[must_use]
     pub fn nearest(&self) -> BigInt {
-        (&self.num * 2 + &self.den).div_floor(&(&self.den * 2))
+        let twice: BigInt = &self.num * 2 + &self.den;
+        twice.div_floor(&(&self.den * 2))
     }
 
     /// `self · 2^bits` rounded down and up: the tightest enclosure of the

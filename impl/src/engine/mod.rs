@@ -88,6 +88,8 @@
 //!   whatever the number of passes and starts.
 
 pub mod g32;
+pub mod g75;
+pub mod real;
 
 use core::cmp::Ordering;
 use core::iter::FusedIterator;

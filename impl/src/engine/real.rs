@@ -1,0 +1,1212 @@
+//! Exact rounding support for the G75.1 engine (`docs/G75.md` §6,
+//! reading R-G75ROUND): dyadic fixed-point interval arithmetic, the sine,
+//! cosine, tangent and cotangent of angles `k · 0.00005°`, and the four
+//! decisions the cycle makes on a real number (floor, ceil, nearest, sign).
+//!
+//! # Numbers
+//!
+//! An [`Fx<N>`] is a signed integer of `N` 64-bit limbs (two's complement,
+//! little-endian) read as `int · 2^-P` with `P = 64·(N − 2)` fraction bits:
+//! the two top limbs hold the integer part, so every value lies in
+//! `(−2^127, 2^127)`. The engine uses two precisions:
+//!
+//! * [`FAST`] = 4 limbs, `P = 128` (the fast path);
+//! * [`SLOW`] = 10 limbs, `P = 512` (the precision at which `docs/G75.md` §6
+//!   says an undecided rounding is refused).
+//!
+//! An [`Iv<N>`] is a closed interval `[lo, hi]` of such numbers that contains
+//! the exact real value it stands for. Every operation rounds its lower end
+//! down and its upper end up, so the containment is kept. Additions and
+//! subtractions are exact; a product or quotient is exact whenever the exact
+//! result is representable, so an operation on point intervals (exact
+//! values) gives a point interval exactly when the exact result is a dyadic
+//! number with at most `P` fraction bits. All exact values of the G75.1
+//! geometry are dyadic with few fraction bits (the only exact trigonometric
+//! values are 0, 1/2 and 1, and the only divisors are `f` ∈ {1, 2} and
+//! sines, cosines and `1 − tan L·cot b` that are 1/2 or 1 when exact), so
+//! exact inputs give exact point intervals and are decided exactly.
+//!
+//! An operation that would overflow (a magnitude of `2^127` or more), a
+//! division by an interval that contains 0 and a series that does not
+//! converge within its iteration bound "poison" the interval: every decision
+//! on a poisoned interval is undecided, so the engine refuses
+//! ([`crate::CycleError::UndecidedRounding`]) instead of guessing. None of
+//! these can happen for a validated cycle: the largest magnitude the G75.1
+//! formulas reach is below `2^96` (see `engine/g75.rs`).
+//!
+//! # Trigonometry
+//!
+//! `sin` and `cos` of `x = k · π / 3 600 000` (`0 ≤ k ≤ 1 800 000`, 0° to
+//! 90°) by their Taylor series. Each term is enclosed by interval
+//! arithmetic; the series alternate with terms that decrease in magnitude
+//! (`x < 2`), so the remainder after a term is at most the next term, whose
+//! upper bound is added to both ends (a rigorous truncation bound). `π`
+//! comes from [`PI_FRACTION`], hard-coded. The exact cases of
+//! `docs/G75.md` §6 (sin 0, 30°, 90°; cos 0, 60°, 90°; tan 0, 45°; cot 45°,
+//! 90°) are returned as exact point intervals.
+//!
+//! No heap, no floating point, no `unsafe`, no panics: every index is
+//! bounded by the const generic `N` (checked at compile time to lie in
+//! `3..=MAX_LIMBS`), every arithmetic operation is checked or wrapping on
+//! purpose (limb arithmetic with explicit carries).
+
+use core::cmp::Ordering;
+
+/// Limbs of the fast precision: 128 fraction bits.
+pub const FAST: usize = 4;
+
+/// Limbs of the slow precision: 512 fraction bits (`docs/G75.md` §6).
+pub const SLOW: usize = 10;
+
+/// Most limbs an [`Fx`] may have (the scratch buffers are sized for it).
+pub const MAX_LIMBS: usize = 14;
+
+/// Scratch size: a full product of two numbers of [`MAX_LIMBS`] limbs.
+const SCRATCH: usize = 2 * MAX_LIMBS;
+
+/// The fraction bits of π − 3, most significant 64-bit word first: `π =
+/// 3 + Σ PI_FRACTION[i] · 2^(−64(i+1)) + δ`, `0 ≤ δ < 2^-640`.
+///
+/// These are the well-known hexadecimal digits of π
+/// (`3.243F6A8885A308D313198A2E03707344A4093822299F31D0…`, the same digits
+/// that initialise Blowfish's P-array and first S-box). The test
+/// `pi_matches_machin` recomputes π from Machin's formula
+/// `π = 16 atan(1/5) − 4 atan(1/239)` with this module's interval
+/// arithmetic at 704 fraction bits and checks every one of these 640 bits.
+pub const PI_FRACTION: [u64; 10] = [
+    0x243F_6A88_85A3_08D3,
+    0x1319_8A2E_0370_7344,
+    0xA409_3822_299F_31D0,
+    0x082E_FA98_EC4E_6C89,
+    0x4528_21E6_38D0_1377,
+    0xBE54_66CF_34E9_0C6C,
+    0xC0AC_29B7_C97C_50DD,
+    0x3F84_D5B5_B547_0917,
+    0x9216_D5D9_8979_FB1B,
+    0xD131_0BA6_98DF_B5AC,
+];
+
+/// 90° in the angle unit of this module, 0.00005°.
+pub const RIGHT: u32 = 1_800_000;
+
+/// 180° in the angle unit of this module: the angle `k` is `k·π/HALF_TURN`.
+pub const HALF_TURN: u32 = 3_600_000;
+
+// ---------------------------------------------------------------------------
+// Limb arithmetic on little-endian slices of u64.
+// ---------------------------------------------------------------------------
+
+/// True when every limb is 0.
+fn limbs_zero(a: &[u64]) -> bool {
+    a.iter().all(|&x| x == 0)
+}
+
+/// `a += b` over `a.len()` limbs (`b` shorter or equal, read as zero
+/// beyond its end); returns the carry out of the top limb.
+fn limbs_add(a: &mut [u64], b: &[u64]) -> bool {
+    let mut carry = false;
+    for (i, x) in a.iter_mut().enumerate() {
+        let y = b.get(i).copied().unwrap_or(0);
+        let (s1, c1) = x.overflowing_add(y);
+        let (s2, c2) = s1.overflowing_add(u64::from(carry));
+        *x = s2;
+        carry = c1 || c2;
+    }
+    carry
+}
+
+/// `a -= b` over `a.len()` limbs; returns the borrow out of the top limb.
+fn limbs_sub(a: &mut [u64], b: &[u64]) -> bool {
+    let mut borrow = false;
+    for (i, x) in a.iter_mut().enumerate() {
+        let y = b.get(i).copied().unwrap_or(0);
+        let (s1, b1) = x.overflowing_sub(y);
+        let (s2, b2) = s1.overflowing_sub(u64::from(borrow));
+        *x = s2;
+        borrow = b1 || b2;
+    }
+    borrow
+}
+
+/// `a += 1`; returns the carry out.
+fn limbs_inc(a: &mut [u64]) -> bool {
+    for x in a.iter_mut() {
+        let (s, c) = x.overflowing_add(1);
+        *x = s;
+        if !c {
+            return false;
+        }
+    }
+    true
+}
+
+/// Two's complement negation in place.
+fn limbs_neg(a: &mut [u64]) {
+    for x in a.iter_mut() {
+        *x = !*x;
+    }
+    limbs_inc(a);
+}
+
+/// Unsigned comparison of `a` and `b` (the shorter read as zero-extended).
+fn limbs_cmp(a: &[u64], b: &[u64]) -> Ordering {
+    let n = a.len().max(b.len());
+    for i in (0..n).rev() {
+        let x = a.get(i).copied().unwrap_or(0);
+        let y = b.get(i).copied().unwrap_or(0);
+        match x.cmp(&y) {
+            Ordering::Equal => {}
+            o => return o,
+        }
+    }
+    Ordering::Equal
+}
+
+/// `out = a · b`; `out` must be zero on entry and hold `a.len() + b.len()`
+/// limbs (the product of an `m`- and an `n`-limb number fits `m + n` limbs).
+fn limbs_mul(a: &[u64], b: &[u64], out: &mut [u64]) {
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0 {
+            continue;
+        }
+        let mut carry: u64 = 0;
+        for (j, &y) in b.iter().enumerate() {
+            if let Some(slot) = out.get_mut(i + j) {
+                // x·y + slot + carry ≤ (2^64 − 1)^2 + 2(2^64 − 1) = 2^128 − 1.
+                let t = u128::from(x) * u128::from(y) + u128::from(*slot) + u128::from(carry);
+                *slot = low64(t);
+                carry = high64(t);
+            }
+        }
+        let mut k = i + b.len();
+        while carry != 0 {
+            if let Some(slot) = out.get_mut(k) {
+                let (s, c) = slot.overflowing_add(carry);
+                *slot = s;
+                carry = u64::from(c);
+                k += 1;
+            } else {
+                break;
+            }
+        }
+    }
+}
+
+/// `a / d` in place for a one-limb divisor `d > 0`; returns the remainder.
+fn limbs_div_small(a: &mut [u64], d: u64) -> u64 {
+    let mut rem: u64 = 0;
+    for x in a.iter_mut().rev() {
+        // rem < d, so the partial dividend is below d·2^64 and the quotient
+        // digit fits a limb.
+        let cur = (u128::from(rem) << 64) | u128::from(*x);
+        let d128 = u128::from(d);
+        *x = low64(cur / d128);
+        rem = low64(cur % d128);
+    }
+    rem
+}
+
+/// `a · k` in place for a one-limb factor; returns the limb carried out.
+fn limbs_mul_small(a: &mut [u64], k: u64) -> u64 {
+    let mut carry: u64 = 0;
+    for x in a.iter_mut() {
+        let t = u128::from(*x) * u128::from(k) + u128::from(carry);
+        *x = low64(t);
+        carry = high64(t);
+    }
+    carry
+}
+
+/// `a <<= 1`; returns the bit shifted out.
+fn limbs_shl1(a: &mut [u64]) -> bool {
+    let mut carry = false;
+    for x in a.iter_mut() {
+        let out = *x >> 63 == 1;
+        *x = (*x << 1) | u64::from(carry);
+        carry = out;
+    }
+    carry
+}
+
+/// Bit `i` of `a`.
+fn limbs_bit(a: &[u64], i: usize) -> bool {
+    a.get(i / 64).is_some_and(|x| (x >> (i % 64)) & 1 == 1)
+}
+
+/// Sets bit `i` of `a`.
+fn limbs_set_bit(a: &mut [u64], i: usize) {
+    if let Some(x) = a.get_mut(i / 64) {
+        *x |= 1 << (i % 64);
+    }
+}
+
+/// The number of significant bits of `a` (0 for zero).
+fn limbs_bits(a: &[u64]) -> usize {
+    for i in (0..a.len()).rev() {
+        if let Some(&x) = a.get(i) {
+            if x != 0 {
+                return 64 * i + (64 - x.leading_zeros() as usize);
+            }
+        }
+    }
+    0
+}
+
+/// Long division `num / den` (binary, restoring): the quotient goes to `q`
+/// (as long as `num`, zero on entry), the remainder is left in `rem`
+/// (zero on entry, one limb longer than `den`). `den` must not be zero.
+fn limbs_divmod(num: &[u64], den: &[u64], q: &mut [u64], rem: &mut [u64]) {
+    for i in (0..limbs_bits(num)).rev() {
+        // rem < den ≤ 2^(64·den.len()) − 1, so the shift fits rem's extra limb.
+        limbs_shl1(rem);
+        if limbs_bit(num, i) {
+            if let Some(x) = rem.first_mut() {
+                *x |= 1;
+            }
+        }
+        if limbs_cmp(rem, den) != Ordering::Less {
+            limbs_sub(rem, den);
+            limbs_set_bit(q, i);
+        }
+    }
+}
+
+/// The low 64 bits of `v`.
+const fn low64(v: u128) -> u64 {
+    // Truncation on purpose: the low limb.
+    #[allow(clippy::cast_possible_truncation)]
+    let r = v as u64;
+    r
+}
+
+/// The high 64 bits of `v`.
+const fn high64(v: u128) -> u64 {
+    low64(v >> 64)
+}
+
+// ---------------------------------------------------------------------------
+// Fixed-point numbers.
+// ---------------------------------------------------------------------------
+
+/// A signed dyadic number `int · 2^-P`, `P = 64·(N − 2)`: `N` limbs of two's
+/// complement, little-endian; the top two limbs are the integer part (see
+/// the [module documentation](self)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Fx<const N: usize> {
+    l: [u64; N],
+}
+
+/// How a result that is not representable is rounded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Dir {
+    /// Towards −∞ (lower ends).
+    Down,
+    /// Towards +∞ (upper ends).
+    Up,
+}
+
+impl<const N: usize> Fx<N> {
+    /// Compile-time check of the limb count (evaluated by every constructor).
+    const LIMBS_OK: () = assert!(N >= 3 && N <= MAX_LIMBS, "Fx needs 3..=MAX_LIMBS limbs");
+
+    /// Number of fraction limbs, `N − 2`.
+    const FRAC: usize = N - 2;
+
+    /// Fraction bits `P`.
+    pub const FRACTION_BITS: u32 = 64 * (N as u32 - 2);
+
+    /// Zero.
+    #[must_use]
+    pub const fn zero() -> Fx<N> {
+        let () = Self::LIMBS_OK;
+        Fx { l: [0; N] }
+    }
+
+    /// The integer `v`, exactly.
+    #[must_use]
+    pub fn from_int(v: i128) -> Fx<N> {
+        let mut x = Fx::zero();
+        let bits = v.to_le_bytes();
+        let mut lo = [0_u8; 8];
+        let mut hi = [0_u8; 8];
+        lo.copy_from_slice(bits.get(..8).unwrap_or(&[0; 8]));
+        hi.copy_from_slice(bits.get(8..).unwrap_or(&[0; 8]));
+        if let Some(s) = x.l.get_mut(Self::FRAC) {
+            *s = u64::from_le_bytes(lo);
+        }
+        if let Some(s) = x.l.get_mut(Self::FRAC + 1) {
+            *s = u64::from_le_bytes(hi);
+        }
+        x
+    }
+
+    /// `ulps · 2^-P`.
+    #[must_use]
+    pub fn from_ulps(ulps: u64) -> Fx<N> {
+        let mut x = Fx::zero();
+        if let Some(s) = x.l.first_mut() {
+            *s = ulps;
+        }
+        x
+    }
+
+    /// `2^-1`.
+    fn half() -> Fx<N> {
+        let mut x = Fx::zero();
+        if let Some(s) = x.l.get_mut(Self::FRAC - 1) {
+            *s = 1 << 63;
+        }
+        x
+    }
+
+    /// True for a negative number.
+    #[must_use]
+    pub fn is_negative(&self) -> bool {
+        self.l.last().is_some_and(|x| x >> 63 == 1)
+    }
+
+    /// True for zero.
+    #[must_use]
+    pub fn is_zero(&self) -> bool {
+        limbs_zero(&self.l)
+    }
+
+    /// Sign and magnitude (the magnitude as an unsigned `N`-limb number).
+    fn magnitude(&self) -> (bool, [u64; N]) {
+        let neg = self.is_negative();
+        let mut m = self.l;
+        if neg {
+            limbs_neg(&mut m);
+        }
+        (neg, m)
+    }
+
+    /// The number `±m` from a magnitude of any length; `None` unless
+    /// `m < 2^(64N − 1)`.
+    fn from_magnitude(neg: bool, m: &[u64]) -> Option<Fx<N>> {
+        if m.iter().skip(N).any(|&x| x != 0) {
+            return None;
+        }
+        let mut x = Fx::zero();
+        for (d, s) in x.l.iter_mut().zip(m) {
+            *d = *s;
+        }
+        if x.is_negative() {
+            return None;
+        }
+        if neg {
+            limbs_neg(&mut x.l);
+        }
+        Some(x)
+    }
+
+    /// `self + o`; `None` on overflow.
+    #[must_use]
+    pub fn checked_add(&self, o: &Fx<N>) -> Option<Fx<N>> {
+        let mut r = *self;
+        limbs_add(&mut r.l, &o.l);
+        // Signed overflow: both operands of one sign, the result of the other.
+        let (a, b, s) = (self.is_negative(), o.is_negative(), r.is_negative());
+        (a != b || a == s).then_some(r)
+    }
+
+    /// `self − o`; `None` on overflow.
+    #[must_use]
+    pub fn checked_sub(&self, o: &Fx<N>) -> Option<Fx<N>> {
+        let mut r = *self;
+        limbs_sub(&mut r.l, &o.l);
+        let (a, b, s) = (self.is_negative(), o.is_negative(), r.is_negative());
+        (a == b || a == s).then_some(r)
+    }
+
+    /// `−self`; `None` for the most negative number.
+    #[must_use]
+    pub fn checked_neg(&self) -> Option<Fx<N>> {
+        let mut r = *self;
+        limbs_neg(&mut r.l);
+        (self.is_zero() || r.is_negative() != self.is_negative()).then_some(r)
+    }
+
+    /// Signed comparison.
+    #[must_use]
+    pub fn cmp_signed(&self, o: &Fx<N>) -> Ordering {
+        match (self.is_negative(), o.is_negative()) {
+            (true, false) => Ordering::Less,
+            (false, true) => Ordering::Greater,
+            // Same sign: two's complement orders like unsigned.
+            _ => limbs_cmp(&self.l, &o.l),
+        }
+    }
+
+    /// The smaller of two numbers.
+    fn min(self, o: Fx<N>) -> Fx<N> {
+        if self.cmp_signed(&o) == Ordering::Greater {
+            o
+        } else {
+            self
+        }
+    }
+
+    /// The larger of two numbers.
+    fn max(self, o: Fx<N>) -> Fx<N> {
+        if self.cmp_signed(&o) == Ordering::Less {
+            o
+        } else {
+            self
+        }
+    }
+
+    /// The magnitude `m` rounded by `dir` after dropping its `drop` low limbs
+    /// (`m / 2^(64·drop)`), with the sign `neg`.
+    fn round_shifted(neg: bool, m: &mut [u64], drop: usize, inexact_below: bool, dir: Dir) -> Option<Fx<N>> {
+        let inexact = inexact_below || !limbs_zero(m.get(..drop).unwrap_or(&[]));
+        let kept = m.get_mut(drop..)?;
+        // Away from zero for Down on a negative and Up on a positive value.
+        if inexact && ((dir == Dir::Up) != neg) && limbs_inc(kept) {
+            return None;
+        }
+        let neg = neg && !limbs_zero(kept);
+        Fx::from_magnitude(neg, kept)
+    }
+
+    /// `self · o` rounded by `dir`; `None` on overflow.
+    fn mul_round(&self, o: &Fx<N>, dir: Dir) -> Option<Fx<N>> {
+        let (na, ma) = self.magnitude();
+        let (nb, mb) = o.magnitude();
+        let mut p = [0_u64; SCRATCH];
+        let prod = p.get_mut(..2 * N)?;
+        limbs_mul(&ma, &mb, prod);
+        // (A·2^-P)(B·2^-P) = (A·B·2^-P)·2^-P: drop P bits = N − 2 limbs.
+        Fx::round_shifted(na != nb, prod, Self::FRAC, false, dir)
+    }
+
+    /// `self / o` rounded by `dir`; `None` on overflow or division by zero.
+    fn div_round(&self, o: &Fx<N>, dir: Dir) -> Option<Fx<N>> {
+        if o.is_zero() {
+            return None;
+        }
+        let (na, ma) = self.magnitude();
+        let (nb, mb) = o.magnitude();
+        // (A·2^-P)/(B·2^-P) = (A·2^P / B)·2^-P: the dividend is A shifted up
+        // by N − 2 limbs (2N − 2 limbs in all).
+        let mut num = [0_u64; SCRATCH];
+        for (d, s) in num.iter_mut().skip(Self::FRAC).zip(ma.iter()) {
+            *d = *s;
+        }
+        let num = num.get(..2 * N - 2)?;
+        let mut q = [0_u64; SCRATCH];
+        let q = q.get_mut(..2 * N - 2)?;
+        let mut rem = [0_u64; MAX_LIMBS + 1];
+        let rem = rem.get_mut(..=N)?;
+        limbs_divmod(num, &mb, q, rem);
+        let inexact = !limbs_zero(rem);
+        Fx::round_shifted(na != nb, q, 0, inexact, dir)
+    }
+
+    /// `self · k`, exact; `None` on overflow.
+    #[must_use]
+    pub fn mul_int(&self, k: i64) -> Option<Fx<N>> {
+        let (neg, mut m) = self.magnitude();
+        let carry = limbs_mul_small(&mut m, k.unsigned_abs());
+        if carry != 0 {
+            return None;
+        }
+        let neg = neg != (k < 0);
+        Fx::from_magnitude(neg && !limbs_zero(&m), &m)
+    }
+
+    /// `self / k` rounded by `dir`, `k > 0`.
+    fn div_small(&self, k: u64, dir: Dir) -> Option<Fx<N>> {
+        if k == 0 {
+            return None;
+        }
+        let (neg, mut m) = self.magnitude();
+        let rem = limbs_div_small(&mut m, k);
+        Fx::round_shifted(neg, &mut m, 0, rem != 0, dir)
+    }
+
+    /// `floor(self)`: the top two limbs read as a signed integer (the
+    /// arithmetic shift right by `P`).
+    #[must_use]
+    pub fn floor(&self) -> i128 {
+        let lo = self.l.get(Self::FRAC).copied().unwrap_or(0);
+        let hi = self.l.get(Self::FRAC + 1).copied().unwrap_or(0);
+        let u = (u128::from(hi) << 64) | u128::from(lo);
+        i128::from_le_bytes(u.to_le_bytes())
+    }
+
+    /// True when the number has a non-zero fraction.
+    fn has_fraction(&self) -> bool {
+        !limbs_zero(self.l.get(..Self::FRAC).unwrap_or(&[]))
+    }
+
+    /// `ceil(self)`; `None` only at the top of the range.
+    #[must_use]
+    pub fn ceil(&self) -> Option<i128> {
+        self.floor().checked_add(i128::from(self.has_fraction()))
+    }
+
+    /// The limbs (little-endian two's complement), for tests.
+    #[must_use]
+    pub const fn limbs(&self) -> &[u64; N] {
+        &self.l
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Intervals.
+// ---------------------------------------------------------------------------
+
+/// A closed interval `[lo, hi]` of [`Fx<N>`] that contains an exact real
+/// value, or a poisoned interval (an overflow, a division by an interval
+/// containing 0, a series that did not converge) on which every decision is
+/// undecided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Iv<const N: usize> {
+    lo: Fx<N>,
+    hi: Fx<N>,
+    ok: bool,
+}
+
+/// A rounding to an integer (`docs/G75.md` §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Rounding {
+    /// `floor(v)`.
+    Floor,
+    /// `ceil(v)`.
+    Ceil,
+    /// `floor(v + 1/2)`: nearest, ties upwards.
+    Nearest,
+}
+
+impl<const N: usize> Iv<N> {
+    /// The poisoned interval.
+    #[must_use]
+    pub fn poison() -> Iv<N> {
+        Iv { lo: Fx::zero(), hi: Fx::zero(), ok: false }
+    }
+
+    /// The exact value `x`.
+    #[must_use]
+    pub fn point(x: Fx<N>) -> Iv<N> {
+        Iv { lo: x, hi: x, ok: true }
+    }
+
+    /// The exact integer `v`.
+    #[must_use]
+    pub fn int(v: i128) -> Iv<N> {
+        Iv::point(Fx::from_int(v))
+    }
+
+    /// The exact value `1/2`.
+    #[must_use]
+    pub fn half() -> Iv<N> {
+        Iv::point(Fx::half())
+    }
+
+    /// `[lo, hi]`; poisoned when `lo > hi`.
+    #[must_use]
+    pub fn new(lo: Fx<N>, hi: Fx<N>) -> Iv<N> {
+        Iv { lo, hi, ok: lo.cmp_signed(&hi) != Ordering::Greater }
+    }
+
+    /// From optional ends: poisoned if either is missing.
+    fn of(lo: Option<Fx<N>>, hi: Option<Fx<N>>, ok: bool) -> Iv<N> {
+        match (lo, hi) {
+            (Some(lo), Some(hi)) if ok => Iv { lo, hi, ok: true },
+            _ => Iv::poison(),
+        }
+    }
+
+    /// The lower end.
+    #[must_use]
+    pub const fn lower(&self) -> &Fx<N> {
+        &self.lo
+    }
+
+    /// The upper end.
+    #[must_use]
+    pub const fn upper(&self) -> &Fx<N> {
+        &self.hi
+    }
+
+    /// False for a poisoned interval.
+    #[must_use]
+    pub const fn is_valid(&self) -> bool {
+        self.ok
+    }
+
+    /// True for an exact value (a valid point interval).
+    #[must_use]
+    pub fn is_point(&self) -> bool {
+        self.ok && self.lo == self.hi
+    }
+
+    /// `self + o`, exact.
+    #[must_use]
+    pub fn add(&self, o: &Iv<N>) -> Iv<N> {
+        Iv::of(self.lo.checked_add(&o.lo), self.hi.checked_add(&o.hi), self.ok && o.ok)
+    }
+
+    /// `self − o`, exact.
+    #[must_use]
+    pub fn sub(&self, o: &Iv<N>) -> Iv<N> {
+        Iv::of(self.lo.checked_sub(&o.hi), self.hi.checked_sub(&o.lo), self.ok && o.ok)
+    }
+
+    /// `−self`, exact.
+    #[must_use]
+    pub fn neg(&self) -> Iv<N> {
+        Iv::of(self.hi.checked_neg(), self.lo.checked_neg(), self.ok)
+    }
+
+    /// `self · o`, rounded outwards (exact when the product is representable).
+    #[must_use]
+    pub fn mul(&self, o: &Iv<N>) -> Iv<N> {
+        if !(self.ok && o.ok) {
+            return Iv::poison();
+        }
+        // Exact shortcuts (the general rule gives the same intervals).
+        let one = Fx::from_int(1);
+        if self.is_point() && (self.lo.is_zero() || self.lo == one) {
+            return if self.lo.is_zero() { *self } else { *o };
+        }
+        if o.is_point() && (o.lo.is_zero() || o.lo == one) {
+            return if o.lo.is_zero() { *o } else { *self };
+        }
+        let nonneg = |v: &Iv<N>| !v.lo.is_negative();
+        if nonneg(self) && nonneg(o) {
+            // Both non-negative: the product is monotone in each end.
+            return Iv::of(self.lo.mul_round(&o.lo, Dir::Down), self.hi.mul_round(&o.hi, Dir::Up), true);
+        }
+        let pairs = [(&self.lo, &o.lo), (&self.lo, &o.hi), (&self.hi, &o.lo), (&self.hi, &o.hi)];
+        let mut lo: Option<Fx<N>> = None;
+        let mut hi: Option<Fx<N>> = None;
+        for (x, y) in pairs {
+            let (Some(d), Some(u)) = (x.mul_round(y, Dir::Down), x.mul_round(y, Dir::Up)) else {
+                return Iv::poison();
+            };
+            lo = Some(lo.map_or(d, |l| l.min(d)));
+            hi = Some(hi.map_or(u, |h| h.max(u)));
+        }
+        Iv::of(lo, hi, true)
+    }
+
+    /// `self / o` for a divisor interval of positive numbers, rounded
+    /// outwards; poisoned when `o` contains 0 or a negative number.
+    #[must_use]
+    pub fn div(&self, o: &Iv<N>) -> Iv<N> {
+        if !(self.ok && o.ok) || o.lo.is_negative() || o.lo.is_zero() {
+            return Iv::poison();
+        }
+        if o.is_point() && o.lo == Fx::from_int(1) {
+            // x / 1 = x exactly.
+            return *self;
+        }
+        // For a positive divisor, x/y is increasing in x and, for x ≥ 0,
+        // decreasing in y (increasing for x < 0).
+        let lo = if self.lo.is_negative() {
+            self.lo.div_round(&o.lo, Dir::Down)
+        } else {
+            self.lo.div_round(&o.hi, Dir::Down)
+        };
+        let hi = if self.hi.is_negative() {
+            self.hi.div_round(&o.hi, Dir::Up)
+        } else {
+            self.hi.div_round(&o.lo, Dir::Up)
+        };
+        Iv::of(lo, hi, true)
+    }
+
+    /// `self · k` for an integer `k`, exact.
+    #[must_use]
+    pub fn mul_int(&self, k: i64) -> Iv<N> {
+        let (a, b) = (self.lo.mul_int(k), self.hi.mul_int(k));
+        if k < 0 {
+            Iv::of(b, a, self.ok)
+        } else {
+            Iv::of(a, b, self.ok)
+        }
+    }
+
+    /// `self / k` for an integer `k > 0`, rounded outwards.
+    #[must_use]
+    pub fn div_int(&self, k: u64) -> Iv<N> {
+        Iv::of(self.lo.div_small(k, Dir::Down), self.hi.div_small(k, Dir::Up), self.ok)
+    }
+
+    /// `max(self, o)`: `[max(lo₁, lo₂), max(hi₁, hi₂)]`.
+    #[must_use]
+    pub fn max(&self, o: &Iv<N>) -> Iv<N> {
+        Iv::of(Some(self.lo.max(o.lo)), Some(self.hi.max(o.hi)), self.ok && o.ok)
+    }
+
+    /// `min(self, o)`: `[min(lo₁, lo₂), min(hi₁, hi₂)]`.
+    #[must_use]
+    pub fn min(&self, o: &Iv<N>) -> Iv<N> {
+        Iv::of(Some(self.lo.min(o.lo)), Some(self.hi.min(o.hi)), self.ok && o.ok)
+    }
+
+    /// The rounding of every number of the interval, when it is the same
+    /// for all (always for a point interval); `None` when undecided.
+    #[must_use]
+    pub fn round(&self, r: Rounding) -> Option<i128> {
+        if !self.ok {
+            return None;
+        }
+        let (a, b) = match r {
+            Rounding::Floor => (Some(self.lo.floor()), Some(self.hi.floor())),
+            Rounding::Ceil => (self.lo.ceil(), self.hi.ceil()),
+            Rounding::Nearest => {
+                let half = Fx::half();
+                (self.lo.checked_add(&half).map(|x| x.floor()), self.hi.checked_add(&half).map(|x| x.floor()))
+            }
+        };
+        match (a, b) {
+            (Some(a), Some(b)) if a == b => Some(a),
+            _ => None,
+        }
+    }
+
+    /// The sign of every number of the interval (its ordering against 0),
+    /// when it is the same for all; `None` when undecided.
+    #[must_use]
+    pub fn sign(&self) -> Option<Ordering> {
+        if !self.ok {
+            None
+        } else if !self.lo.is_negative() && !self.lo.is_zero() {
+            Some(Ordering::Greater)
+        } else if self.hi.is_negative() {
+            Some(Ordering::Less)
+        } else if self.lo.is_zero() && self.hi.is_zero() {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Trigonometry.
+// ---------------------------------------------------------------------------
+
+/// π enclosed at the precision `N`: `[trunc(π·2^P), trunc(π·2^P) + 1]·2^-P`
+/// (exactly the truncation of the digits of [`PI_FRACTION`], which the
+/// constant holds to 640 bits); poisoned beyond 640 fraction bits.
+#[must_use]
+pub fn pi<const N: usize>() -> Iv<N> {
+    let frac = Fx::<N>::FRAC;
+    if frac > PI_FRACTION.len() {
+        return Iv::poison();
+    }
+    let mut lo = Fx::<N>::from_int(3);
+    // Fraction limb i (most significant first) goes to limb FRAC − 1 − i.
+    for (i, w) in PI_FRACTION.iter().take(frac).enumerate() {
+        if let Some(s) = lo.l.get_mut(frac - 1 - i) {
+            *s = *w;
+        }
+    }
+    Iv::of(Some(lo), lo.checked_add(&Fx::from_ulps(1)), true)
+}
+
+/// The bound on the number of terms of a series (far more than needed: at
+/// 832 fraction bits, the largest precision [`MAX_LIMBS`] allows, the terms
+/// of `x < 1.6` fall below one unit after about 140 steps).
+const MAX_TERMS: u64 = 400;
+
+/// `sin x` and `cos x` for `x = k · π / 3 600 000` by their Taylor series
+/// (no exact cases: see [`sin_cos`]). `k ≤ 1 800 000`, so `0 ≤ x ≤ π/2 < 2`:
+/// the terms `x^j/j!` decrease from `j = 1` on and the series alternate, so
+/// the remainder after the last term summed is at most the next term.
+fn sin_cos_series<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+    let x = pi::<N>().mul_int(i64::from(k)).div_int(u64::from(HALF_TURN));
+    let x2 = x.mul(&x);
+    // A term whose upper bound is at most 4 units of the last place ends
+    // the series: its bound is then added to both ends as the remainder.
+    let small = Fx::<N>::from_ulps(4);
+    let series = |first: Iv<N>, first_index: u64| -> Iv<N> {
+        let mut sum = first;
+        let mut term = first;
+        let mut j: u64 = 1;
+        while j <= MAX_TERMS {
+            // t_j = t_(j−1) · x² / ((f + 2j − 1)(f + 2j)), f = 1 for sin
+            // (x^(2j+1)/(2j+1)!), 0 for cos (x^(2j)/(2j)!).
+            let a = first_index + 2 * j - 1;
+            term = term.mul(&x2).div_int(a * (a + 1));
+            if !term.ok {
+                return Iv::poison();
+            }
+            if term.hi.cmp_signed(&small) != Ordering::Greater {
+                let bound = Iv::new(term.hi.checked_neg().unwrap_or(term.hi), term.hi);
+                return sum.add(&bound);
+            }
+            sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
+            j += 1;
+        }
+        Iv::poison()
+    };
+    (series(x, 1), series(Iv::int(1), 0))
+}
+
+/// `sin(k·0.00005°)`, exact for 0, 30° and 90° (`docs/G75.md` §6).
+#[must_use]
+pub fn sin<const N: usize>(k: u32) -> Iv<N> {
+    match k {
+        0 => Iv::int(0),
+        600_000 => Iv::half(),
+        RIGHT => Iv::int(1),
+        k if k > RIGHT => Iv::poison(),
+        k => sin_cos_series(k).0,
+    }
+}
+
+/// `cos(k·0.00005°)`, exact for 0, 60° and 90° (`docs/G75.md` §6).
+#[must_use]
+pub fn cos<const N: usize>(k: u32) -> Iv<N> {
+    match k {
+        0 => Iv::int(1),
+        1_200_000 => Iv::half(),
+        RIGHT => Iv::int(0),
+        k if k > RIGHT => Iv::poison(),
+        k => sin_cos_series(k).1,
+    }
+}
+
+/// The sine and cosine of `k·0.00005°` together (one series evaluation for
+/// both when neither is an exact case).
+#[must_use]
+pub fn sin_cos<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+    match k {
+        0 | 600_000 | 1_200_000 | RIGHT => (sin(k), cos(k)),
+        k if k > RIGHT => (Iv::poison(), Iv::poison()),
+        k => sin_cos_series(k),
+    }
+}
+
+/// `tan(k·0.00005°)` from that angle's sine and cosine: exact for 0 and
+/// 45°, `s/c` otherwise; poisoned for 90° and beyond.
+#[must_use]
+pub fn tan_of<const N: usize>(k: u32, s: &Iv<N>, c: &Iv<N>) -> Iv<N> {
+    match k {
+        0 => Iv::int(0),
+        900_000 => Iv::int(1),
+        k if k >= RIGHT => Iv::poison(),
+        _ => s.div(c),
+    }
+}
+
+/// `cot(k·0.00005°)` from that angle's sine and cosine: exact for 45° and
+/// 90°, `c/s` otherwise; poisoned for 0 and beyond 90°.
+#[must_use]
+pub fn cot_of<const N: usize>(k: u32, s: &Iv<N>, c: &Iv<N>) -> Iv<N> {
+    match k {
+        900_000 => Iv::int(1),
+        RIGHT => Iv::int(0),
+        k if k == 0 || k > RIGHT => Iv::poison(),
+        _ => c.div(s),
+    }
+}
+
+/// `tan(k·0.00005°)`, exact for 0 and 45° (`docs/G75.md` §6).
+#[must_use]
+pub fn tan<const N: usize>(k: u32) -> Iv<N> {
+    match k {
+        0 | 900_000 => tan_of(k, &Iv::poison(), &Iv::poison()),
+        k => {
+            let (s, c) = sin_cos::<N>(k);
+            tan_of(k, &s, &c)
+        }
+    }
+}
+
+/// `cot(k·0.00005°)`, exact for 45° and 90° (`docs/G75.md` §6).
+#[must_use]
+pub fn cot<const N: usize>(k: u32) -> Iv<N> {
+    match k {
+        900_000 | RIGHT => cot_of(k, &Iv::poison(), &Iv::poison()),
+        k => {
+            let (s, c) = sin_cos::<N>(k);
+            cot_of(k, &s, &c)
+        }
+    }
+}
+
+/// `tan` and `cot` of one angle together (one series evaluation), with the
+/// exact cases of [`tan`] and [`cot`].
+#[must_use]
+pub fn tan_cot<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+    let (s, c) = sin_cos::<N>(k);
+    (tan_of(k, &s, &c), cot_of(k, &s, &c))
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    use super::*;
+    use std::string::String;
+    use std::vec::Vec;
+
+    type F = Fx<FAST>;
+    type S = Fx<SLOW>;
+
+    /// The interval contains `num / 10^digits` within one unit of the last
+    /// decimal, and is narrower than `10^-digits`: `lo·10^d ≤ num + 1`,
+    /// `hi·10^d ≥ num`, `(hi − lo)·10^d < 1`.
+    fn encloses_decimal<const N: usize>(iv: &Iv<N>, digits: &str) {
+        let (int, frac) = digits.split_once('.').unwrap();
+        let text: String = [int, frac].concat();
+        let num: i128 = text.parse().unwrap();
+        let scale = |x: &Fx<N>| {
+            let mut v = *x;
+            for _ in 0..frac.len() {
+                v = v.mul_int(10).unwrap();
+            }
+            v
+        };
+        let (lo, hi) = (scale(iv.lower()), scale(iv.upper()));
+        assert!(lo.floor() <= num + 1, "lower end too high for {digits}");
+        assert!(hi.ceil().unwrap() >= num, "upper end too low for {digits}");
+        let width = hi.checked_sub(&lo).unwrap();
+        assert_eq!(width.floor(), 0, "interval too wide for {digits}");
+    }
+
+    #[test]
+    fn fixed_point_basics() {
+        let three = F::from_int(3);
+        let two = F::from_int(2);
+        assert_eq!(three.checked_add(&two).unwrap().floor(), 5);
+        assert_eq!(two.checked_sub(&three).unwrap().floor(), -1);
+        let m = F::from_int(-7);
+        assert_eq!(m.floor(), -7);
+        assert_eq!(m.ceil(), Some(-7));
+        assert!(m.is_negative());
+        assert_eq!(m.checked_neg().unwrap(), F::from_int(7));
+        // 7 / 2 = 3.5: floor 3, ceil 4, exact.
+        let q = F::from_int(7).div_round(&two, Dir::Down).unwrap();
+        assert_eq!(q, F::from_int(7).div_round(&two, Dir::Up).unwrap());
+        assert_eq!((q.floor(), q.ceil()), (3, Some(4)));
+        // −7 / 2 = −3.5.
+        let q = m.div_round(&two, Dir::Down).unwrap();
+        assert_eq!((q.floor(), q.ceil()), (-4, Some(-3)));
+        // 1/3 is inexact: the two roundings differ by one unit.
+        let d = F::from_int(1).div_round(&three, Dir::Down).unwrap();
+        let u = F::from_int(1).div_round(&three, Dir::Up).unwrap();
+        assert_eq!(u.checked_sub(&d).unwrap(), F::from_ulps(1));
+        let d = F::from_int(-1).div_round(&three, Dir::Down).unwrap();
+        let u = F::from_int(-1).div_round(&three, Dir::Up).unwrap();
+        assert_eq!(u.checked_sub(&d).unwrap(), F::from_ulps(1));
+        // Products: exact for dyadic results, one unit apart otherwise.
+        let h = F::half();
+        assert_eq!(h.mul_round(&h, Dir::Down), h.mul_round(&h, Dir::Up));
+        assert_eq!(h.mul_round(&m, Dir::Down).unwrap(), F::from_int(-7).div_small(2, Dir::Down).unwrap());
+        let tiny = F::from_ulps(1);
+        assert_eq!(tiny.mul_round(&tiny, Dir::Down).unwrap(), F::zero());
+        assert_eq!(tiny.mul_round(&tiny, Dir::Up).unwrap(), tiny);
+        let ntiny = tiny.checked_neg().unwrap();
+        assert_eq!(ntiny.mul_round(&tiny, Dir::Down).unwrap(), ntiny);
+        assert_eq!(ntiny.mul_round(&tiny, Dir::Up).unwrap(), F::zero());
+        // Overflow is reported, not wrapped.
+        let big = F::from_int(i128::MAX >> 1);
+        assert!(big.checked_add(&big).is_some());
+        let top = F::from_int(1 << 126);
+        assert!(top.checked_add(&top).is_none());
+        assert!(top.checked_neg().unwrap().checked_sub(&top).is_some());
+        assert!(top
+            .checked_neg()
+            .unwrap()
+            .checked_sub(&top)
+            .unwrap()
+            .checked_sub(&F::from_ulps(1))
+            .is_none());
+        assert!(big.mul_round(&two, Dir::Down).is_some());
+        assert!(big.mul_round(&three, Dir::Down).is_none());
+        assert!(big.mul_int(4).is_none());
+        assert!(F::from_int(1).div_round(&F::zero(), Dir::Up).is_none());
+    }
+
+    /// Division against multiplication on pseudo-random operands: the
+    /// quotient's two roundings bracket the exact one and are one unit apart
+    /// or equal, and q·b reproduces a within the rounding.
+    #[test]
+    fn division_brackets() {
+        let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for _ in 0..2000 {
+            let mut a = F::zero();
+            let mut b = F::zero();
+            for i in 0..FAST - 1 {
+                a.l[i] = next();
+                b.l[i] = next() >> (next() % 64);
+            }
+            a.l[FAST - 1] = next() >> 40;
+            if next() % 2 == 0 {
+                a = a.checked_neg().unwrap();
+            }
+            if b.is_zero() {
+                continue;
+            }
+            let (Some(d), Some(u)) = (a.div_round(&b, Dir::Down), a.div_round(&b, Dir::Up)) else {
+                continue;
+            };
+            let gap = u.checked_sub(&d).unwrap();
+            assert!(gap == F::zero() || gap == F::from_ulps(1));
+            // d·b ≤ a ≤ u·b (b > 0), checked with exact products.
+            let lo = d.mul_round(&b, Dir::Down).unwrap();
+            let hi = u.mul_round(&b, Dir::Up).unwrap();
+            assert_ne!(lo.cmp_signed(&a), Ordering::Greater);
+            assert_ne!(hi.cmp_signed(&a), Ordering::Less);
+        }
+    }
+
+    #[test]
+    fn interval_decisions() {
+        let p = Iv::<FAST>::int(5).div_int(2);
+        assert!(p.is_point());
+        assert_eq!(p.round(Rounding::Floor), Some(2));
+        assert_eq!(p.round(Rounding::Ceil), Some(3));
+        // Ties go up.
+        assert_eq!(p.round(Rounding::Nearest), Some(3));
+        let n = p.neg();
+        assert_eq!(n.round(Rounding::Nearest), Some(-2));
+        assert_eq!(n.round(Rounding::Floor), Some(-3));
+        assert_eq!(n.round(Rounding::Ceil), Some(-2));
+        // An interval straddling an integer decides nearest but not floor.
+        let s = Iv::new(F::from_int(2).checked_sub(&F::from_ulps(1)).unwrap(), F::from_int(2));
+        assert_eq!(s.round(Rounding::Floor), None);
+        assert_eq!(s.round(Rounding::Ceil), Some(2));
+        assert_eq!(s.round(Rounding::Nearest), Some(2));
+        assert_eq!(s.sign(), Some(Ordering::Greater));
+        let z = Iv::new(F::from_ulps(1).checked_neg().unwrap(), F::from_ulps(1));
+        assert_eq!(z.sign(), None);
+        assert_eq!(Iv::<FAST>::int(0).sign(), Some(Ordering::Equal));
+        assert_eq!(Iv::<FAST>::int(-3).sign(), Some(Ordering::Less));
+        assert_eq!(Iv::<FAST>::poison().round(Rounding::Floor), None);
+        // Exact zero times anything is an exact zero.
+        let third = Iv::<FAST>::int(1).div_int(3);
+        assert!(!third.is_point());
+        assert!(Iv::<FAST>::int(0).mul(&third).is_point());
+        assert!(third.neg().mul(&Iv::int(0)).is_point());
+        // Mixed signs.
+        let m = Iv::new(F::from_int(-2), F::from_int(3)).mul(&Iv::new(F::from_int(-5), F::from_int(4)));
+        assert_eq!((m.lower().floor(), m.upper().floor()), (-15, 12));
+        // Division by an interval containing 0 is poisoned.
+        assert!(!third.div(&z).is_valid());
+    }
+
+    #[test]
+    fn exact_trigonometric_cases() {
+        assert!(sin::<FAST>(0).is_point() && sin::<FAST>(0).round(Rounding::Floor) == Some(0));
+        assert_eq!(sin::<FAST>(600_000), Iv::half());
+        assert_eq!(sin::<FAST>(RIGHT), Iv::int(1));
+        assert_eq!(cos::<FAST>(0), Iv::int(1));
+        assert_eq!(cos::<FAST>(1_200_000), Iv::half());
+        assert_eq!(cos::<FAST>(RIGHT), Iv::int(0));
+        assert_eq!(tan::<FAST>(0), Iv::int(0));
+        assert_eq!(tan::<FAST>(900_000), Iv::int(1));
+        assert_eq!(cot::<FAST>(900_000), Iv::int(1));
+        assert_eq!(cot::<FAST>(RIGHT), Iv::int(0));
+        assert!(!tan::<FAST>(RIGHT).is_valid());
+        assert!(!cot::<FAST>(0).is_valid());
+        assert_eq!(tan_cot::<SLOW>(900_000), (Iv::int(1), Iv::int(1)));
+        // Non-exact values are proper intervals.
+        assert!(!sin::<FAST>(1_200_000).is_point());
+        assert!(!cos::<FAST>(600_000).is_point());
+        assert!(!tan::<FAST>(600_000).is_point());
+    }
+
+    #[test]
+    fn trigonometric_values() {
+        // 1° = 20 000 units of 0.00005°.
+        encloses_decimal(&sin::<FAST>(20_000), "0.017452406437283512819418978516316");
+        encloses_decimal(&sin::<SLOW>(20_000), "0.017452406437283512819418978516316");
+        encloses_decimal(&cos::<FAST>(900_000), "0.70710678118654752440084436210484");
+        encloses_decimal(&sin::<FAST>(900_000), "0.70710678118654752440084436210484");
+        encloses_decimal(&cos::<SLOW>(900_000), "0.70710678118654752440084436210484");
+        // sin 60° = cos 30° = √3/2, tan 30° = 1/√3, tan 60° = √3.
+        encloses_decimal(&sin::<FAST>(1_200_000), "0.86602540378443864676372317075293");
+        encloses_decimal(&cos::<SLOW>(600_000), "0.86602540378443864676372317075293");
+        encloses_decimal(&tan::<FAST>(600_000), "0.57735026918962576450914878050195");
+        encloses_decimal(&cot::<SLOW>(600_000), "1.7320508075688772935274463415058");
+        // Near the ends of the range: cot 0.0001° and tan 89.99995°.
+        encloses_decimal(&cot::<FAST>(2), "572957.79513024143235064998");
+        encloses_decimal(&tan::<FAST>(RIGHT - 1), "1145915.59026135552932729735");
+        // sin 30° from the series agrees with the exact 1/2.
+        let s = sin_cos_series::<FAST>(600_000).0;
+        // ... but the series alone cannot decide its rounding: that is why
+        // the exact cases exist.
+        assert_eq!(s.round(Rounding::Nearest), None);
+        assert!(s.lower().floor() == 0 && s.upper().ceil() == Some(1));
+        // Widths: the fast path keeps more than 118 bits, the slow more than 500.
+        let w = |iv: &Iv<FAST>| iv.upper().checked_sub(iv.lower()).unwrap();
+        assert!(w(&sin::<FAST>(123_457)).cmp_signed(&Fx::from_ulps(1 << 10)) == Ordering::Less);
+        let ws = sin::<SLOW>(123_457);
+        let ws = ws.upper().checked_sub(ws.lower()).unwrap();
+        assert!(ws.cmp_signed(&Fx::from_ulps(1 << 10)) == Ordering::Less);
+        // sin² + cos² = 1 within the widths.
+        for k in [1, 7, 20_000, 333_333, 900_001, 1_799_999] {
+            let (s, c) = sin_cos::<FAST>(k);
+            let one = s.mul(&s).add(&c.mul(&c));
+            assert_eq!(one.round(Rounding::Nearest), Some(1));
+            assert!(one.lower().floor() <= 1 && one.upper().ceil() >= Some(1));
+        }
+    }
+
+    /// `atan(1/m)` enclosed by its alternating series at the precision `N`.
+    fn atan_inv<const N: usize>(m: u64) -> Iv<N> {
+        let m2 = m * m;
+        let mut power = Iv::<N>::int(1).div_int(m); // 1/m^(2j+1)
+        let mut sum = power;
+        let mut j: u64 = 1;
+        loop {
+            power = power.div_int(m2);
+            let term = power.div_int(2 * j + 1);
+            if term.upper().cmp_signed(&Fx::from_ulps(4)) != Ordering::Greater {
+                let hi = *term.upper();
+                return sum.add(&Iv::new(hi.checked_neg().unwrap(), hi));
+            }
+            sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
+            j += 1;
+        }
+    }
+
+    /// The hard-coded digits of π against Machin's formula at 704 fraction
+    /// bits: all 640 bits of [`PI_FRACTION`] are decided and equal.
+    #[test]
+    fn pi_matches_machin() {
+        const N: usize = 13; // 704 fraction bits
+        let machin = atan_inv::<N>(5).mul_int(16).sub(&atan_inv::<N>(239).mul_int(4));
+        assert!(machin.is_valid());
+        let words = |x: &Fx<N>| -> Vec<u64> {
+            // Fraction limbs 10..=1 (most significant first) hold bits 1..640.
+            (0..10).map(|i| x.limbs()[Fx::<N>::FRAC - 1 - i]).collect()
+        };
+        assert_eq!(machin.lower().floor(), 3);
+        assert_eq!(machin.upper().floor(), 3);
+        assert_eq!(words(machin.lower()), PI_FRACTION.to_vec());
+        assert_eq!(words(machin.upper()), PI_FRACTION.to_vec());
+        // And pi() at both engine precisions encloses it.
+        let p = pi::<SLOW>();
+        assert_eq!(p.upper().checked_sub(p.lower()).unwrap(), Fx::from_ulps(1));
+        assert_eq!(
+            p.lower().limbs()[..8],
+            [
+                PI_FRACTION[7],
+                PI_FRACTION[6],
+                PI_FRACTION[5],
+                PI_FRACTION[4],
+                PI_FRACTION[3],
+                PI_FRACTION[2],
+                PI_FRACTION[1],
+                PI_FRACTION[0]
+            ]
+        );
+        encloses_decimal(&pi::<FAST>(), "3.14159265358979323846264338327950288");
+        let _ = S::zero();
+    }
+}

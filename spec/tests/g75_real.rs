@@ -1,0 +1,576 @@
+//! The exact real arithmetic of the G75.1 reference model
+//! (`cycleref_spec::real`) and smoke tests of the model itself
+//! (`cycleref_spec::g75`): trigonometric values against known decimals and
+//! against the independently derived half-degree tangent table, the exact
+//! rational cases, the rounding decisions at ties, the refusal of an
+//! undecidable rounding, the seed's example expanding without error, and
+//! the order of the alarms.
+//!
+//! The golden, hand-worked expansions are in `g75_golden.rs` (written
+//! independently); nothing here fixes a full move list.
+
+use std::cmp::Ordering;
+use std::collections::HashMap;
+
+use cycleref::error::{CycleError, Field, GrooveEdge};
+use cycleref::g75::{corner, Corner, CornerKind, G75Cycle, PathType, MAX_PECKS};
+use cycleref::moves::{Motion, Role};
+use cycleref::units::{IncrementSystem, InputUnit, Point, Units, XMode};
+use cycleref_spec::g75;
+use cycleref_spec::real::{Rational, Real, RIGHT_ANGLE};
+use num_bigint::BigInt;
+use proptest::prelude::*;
+
+/// `deg` degrees in the unit of `real` (0.00005°).
+const fn deg(d: u32) -> u32 {
+    d * 20_000
+}
+
+#[test]
+fn trig_values_against_known_decimals() {
+    // sin 1° = 0.017452406437283512819418978516316…
+    assert_eq!(Real::sin(deg(1)).to_decimal(30).unwrap(), "0.017452406437283512819418978516");
+    // cos 45° = 0.70710678118654752440084436210485…
+    assert_eq!(Real::cos(deg(45)).to_decimal(30).unwrap(), "0.707106781186547524400844362104");
+    // tan 30° = 0.57735026918962576450914878050196…
+    assert_eq!(Real::tan(deg(30)).to_decimal(30).unwrap(), "0.577350269189625764509148780501");
+    // cot 60° = tan 30°.
+    assert_eq!(Real::cot(deg(60)).to_decimal(30).unwrap(), "0.577350269189625764509148780501");
+    // sin 60° = √3/2 = 0.86602540378443864676372317075294…
+    assert_eq!(Real::sin(deg(60)).to_decimal(30).unwrap(), "0.866025403784438646763723170752");
+    // cos 89.99995° = sin(0.00005°) = 8.726646259970540264423827…e-7
+    assert_eq!(Real::cos(RIGHT_ANGLE - 1).to_decimal(22).unwrap(), "0.0000008726646259970540");
+    // tan 0.00005° = 8.726646259973863125…e-7 and cot 0.00005° =
+    // 1145915.5902613555293… (the smallest angle: half of A0.0001).
+    assert_eq!(Real::tan(1).to_decimal(22).unwrap(), "0.0000008726646259973863");
+    assert_eq!(Real::cot(1).to_decimal(6).unwrap(), "1145915.590261");
+}
+
+#[test]
+fn enclosures_are_narrow_and_contain_the_value() {
+    let s = Real::sin(deg(1));
+    for bits in [64, 128, 256, 512] {
+        let iv = s.enclose(bits).unwrap();
+        assert_eq!(iv.bits(), bits);
+        // At most a few units of the last place wide.
+        assert!(iv.width() <= Rational::new(4, BigInt::from(1) << bits), "{bits}: {:?}", iv.width());
+        let known = Rational::new(17_452_406_437_283_512_819_i128, BigInt::from(10).pow(21));
+        assert!(iv.lower() <= Rational::new(17_452_406_437_283_513_i128, BigInt::from(10).pow(18)));
+        assert!(iv.upper() >= known);
+    }
+}
+
+#[test]
+fn tangents_agree_with_the_half_degree_table() {
+    // spec::tan's table was derived independently (decimal fixed point,
+    // `spec/tests/tan_tables.rs`): round(tan(h/2 °) × 10^26).
+    let scale = Real::int(BigInt::from(10).pow(26));
+    for h in 0..180_u32 {
+        let entry = cycleref_spec::tan::tan_half_degrees_scaled(h).unwrap();
+        let v = (Real::tan(h * 10_000) * &scale).nearest().unwrap();
+        assert_eq!(v, BigInt::from(entry), "tan({h}/2 °)");
+    }
+}
+
+#[test]
+fn pythagoras_holds_to_the_last_bit() {
+    for k in [1, 7, 20_000, 123_457, 600_000, 900_000, 1_200_001, 1_799_999] {
+        let (s, c) = (Real::sin(k), Real::cos(k));
+        let one = &s * &s + &c * &c;
+        let iv = one.enclose(256).unwrap();
+        assert!(iv.lower() <= Rational::one() && iv.upper() >= Rational::one(), "k = {k}");
+        assert!(iv.width() < Rational::new(1, BigInt::from(1) << 250), "k = {k}");
+        let t = Real::tan(k) * Real::cot(k);
+        let iv = t.enclose(256).unwrap();
+        assert!(iv.lower() <= Rational::one() && iv.upper() >= Rational::one(), "k = {k}");
+    }
+}
+
+#[test]
+fn exact_rational_cases() {
+    let half = Rational::new(1, 2);
+    let cases: [(Real, Rational); 10] = [
+        (Real::sin(0), Rational::zero()),
+        (Real::sin(deg(30)), half.clone()),
+        (Real::sin(deg(90)), Rational::one()),
+        (Real::cos(0), Rational::one()),
+        (Real::cos(deg(60)), half),
+        (Real::cos(deg(90)), Rational::zero()),
+        (Real::tan(0), Rational::zero()),
+        (Real::tan(deg(45)), Rational::one()),
+        (Real::cot(deg(45)), Rational::one()),
+        (Real::cot(deg(90)), Rational::zero()),
+    ];
+    for (i, (v, r)) in cases.iter().enumerate() {
+        assert_eq!(v.as_exact(), Some(r), "case {i}");
+    }
+    // Everything else is held as an expression, even at 60° and 30°.
+    for v in [Real::sin(deg(60)), Real::cos(deg(30)), Real::tan(deg(60)), Real::cot(deg(30)), Real::sin(1)] {
+        assert!(!v.is_exact());
+    }
+    // Arithmetic on exact values stays exact; 0 · x is exact 0.
+    let v = Real::ratio(7, 3) * Real::cot(deg(45)) + Real::sin(deg(30));
+    assert_eq!(v.as_exact(), Some(&Rational::new(17, 6)));
+    assert_eq!((Real::int(0) * Real::sin(1)).as_exact(), Some(&Rational::zero()));
+    assert!((Real::int(2) * Real::sin(1)).as_exact().is_none());
+}
+
+#[test]
+fn exact_ties_round_up() {
+    let n = |v: Real| v.nearest().unwrap();
+    assert_eq!(n(Real::ratio(5, 2)), BigInt::from(3));
+    assert_eq!(n(Real::ratio(-5, 2)), BigInt::from(-2));
+    assert_eq!(n(Real::ratio(1, 2)), BigInt::from(1));
+    assert_eq!(n(Real::ratio(-1, 2)), BigInt::from(0));
+    assert_eq!(n(Real::ratio(7, 3)), BigInt::from(2));
+    assert_eq!(n(Real::ratio(-7, 3)), BigInt::from(-2));
+    // Y odd on a diameter lathe at 45°: (Y/f)·cot 45° = 100000.5 → 100001.
+    assert_eq!(n(Real::ratio(200_001, 2) * Real::cot(deg(45))), BigInt::from(100_001));
+    assert_eq!(Real::ratio(200_001, 2).floor().unwrap(), BigInt::from(100_000));
+    assert_eq!(Real::ratio(200_001, 2).ceil().unwrap(), BigInt::from(100_001));
+    assert_eq!(Real::int(-4).floor().unwrap(), BigInt::from(-4));
+    assert_eq!(Real::int(-4).ceil().unwrap(), BigInt::from(-4));
+}
+
+#[test]
+fn irrational_roundings_are_decided() {
+    // √3 = 3 tan 30° = 1.732…; 100000 √3 = 173205.0807…
+    let r3 = Real::int(3) * Real::tan(deg(30));
+    assert_eq!(r3.floor().unwrap(), BigInt::from(1));
+    assert_eq!(r3.ceil().unwrap(), BigInt::from(2));
+    assert_eq!(r3.nearest().unwrap(), BigInt::from(2));
+    let big = Real::int(100_000) * Real::cot(deg(30));
+    assert_eq!(big.nearest().unwrap(), BigInt::from(173_205));
+    assert_eq!((-&big).nearest().unwrap(), BigInt::from(-173_205));
+    assert_eq!((-&big).floor().unwrap(), BigInt::from(-173_206));
+    // 1/2 + 10^-30 is above the tie, decided only beyond 64 bits.
+    let near_tie = Real::ratio(1, 2) + Real::ratio(1, BigInt::from(10).pow(30)) * Real::sin(deg(90) - 1);
+    assert_eq!(near_tie.nearest().unwrap(), BigInt::from(1));
+    let below = Real::ratio(1, 2) - Real::ratio(1, BigInt::from(10).pow(30)) * Real::sin(1);
+    assert_eq!(below.nearest().unwrap(), BigInt::from(0));
+    assert_eq!(below.compare(&Real::ratio(1, 2)).unwrap(), Ordering::Less);
+}
+
+#[test]
+fn max_and_min_round_without_deciding_equal_branches() {
+    // Two expressions of the same irrational number: their comparison is
+    // undecidable, the rounding of their max is not.
+    let a = Real::int(3) * Real::tan(deg(30));
+    let b = Real::cot(deg(30));
+    assert_eq!(a.compare(&b), Err(CycleError::UndecidedRounding));
+    assert_eq!(a.max(&b).ceil().unwrap(), BigInt::from(2));
+    assert_eq!(a.min(&b).floor().unwrap(), BigInt::from(1));
+    assert_eq!(Real::ratio(1, 3).max(&Real::ratio(1, 2)).as_exact(), Some(&Rational::new(1, 2)));
+}
+
+#[test]
+fn an_exact_integer_in_irrational_form_is_refused() {
+    // 4 sin²60° − 3 = 0 exactly, but only as an expression of √3: no
+    // precision decides its floor or sign.
+    let s = Real::sin(deg(60));
+    let zero = Real::int(4) * &s * &s - Real::int(3);
+    assert_eq!(zero.floor(), Err(CycleError::UndecidedRounding));
+    assert_eq!(zero.sign(), Err(CycleError::UndecidedRounding));
+    assert_eq!(zero.to_decimal(5), None);
+}
+
+// ---------------------------------------------------------------------------
+// The model.
+// ---------------------------------------------------------------------------
+
+const IS_C: Units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metric };
+
+/// The seed's example at IS-C metric: G00 X60 Z30, then
+/// `G75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30; G75.1 R0.5;`.
+fn seed() -> G75Cycle {
+    G75Cycle {
+        units: IS_C,
+        x_mode: XMode::Diameter,
+        from: Point::new(600_000, 300_000),
+        start: Point::new(500_000, 300_000),
+        peck: 30_000,
+        step: 50_000,
+        depth: -200_000,
+        width: -100_000,
+        flank_a: 450_000,
+        flank_b: 300_000,
+        slope: 0,
+        retract: 5_000,
+        layer: None,
+        allowance_x: 0,
+        allowance_z: 0,
+        tool_width: None,
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    }
+}
+
+fn with_corners(mut c: G75Cycle) -> G75Cycle {
+    c.corners[corner::R1] = Corner { size: 10_000, kind: CornerKind::Round };
+    c.corners[corner::R2] = Corner { size: 5_000, kind: CornerKind::Chamfer };
+    c.corners[corner::R3] = Corner { size: 10_000, kind: CornerKind::Round };
+    c.corners[corner::R4] = Corner { size: 5_000, kind: CornerKind::Round };
+    c
+}
+
+/// The shape every expansion has: it starts with the approach, ends at
+/// `from`, never repeats a position, and carries no pass.
+fn check_shape(c: &G75Cycle, moves: &[cycleref::Move]) {
+    assert!(!moves.is_empty());
+    assert_eq!(moves[0].role, Role::Approach);
+    let last = moves.last().unwrap();
+    assert_eq!(last.to, c.from);
+    assert_eq!(last.role, Role::Return);
+    let mut at = c.from;
+    for m in moves {
+        assert_ne!(m.to, at, "zero-length move {m:?}");
+        assert!(m.pass.is_none());
+        at = m.to;
+    }
+}
+
+#[test]
+fn seed_example_expands() {
+    let c = seed();
+    let moves = g75::expand(&c).unwrap();
+    check_shape(&c, &moves);
+    // Three plunges of seven pecks each (Δi = 3 mm diameter, depth 20 mm).
+    let pecks = moves.iter().filter(|m| matches!(m.role, Role::Peck(_))).count();
+    assert_eq!(pecks, 21);
+    // The groove's exact profile: P1 at Z20, P2 at Z10, P3 at u = 37.3205…
+    let p = g75::profile(&c).unwrap();
+    assert_eq!(p.p1.rounded, g75::LocalPoint::new(100_000, 200_000));
+    assert_eq!(p.p2.rounded, g75::LocalPoint::new(200_000, 200_000));
+    assert_eq!(p.p3.rounded, g75::LocalPoint::new(373_205, 0));
+    assert_eq!(p.p3.exact.u.to_decimal(6).unwrap(), "373205.080756");
+    assert_eq!(p.y_top, 0);
+}
+
+#[test]
+fn seed_example_with_corners_and_finishing_expands() {
+    for path in [PathType::Rough, PathType::RoughAndFinish, PathType::Finish] {
+        let c = G75Cycle { path, ..with_corners(seed()) };
+        let moves = g75::expand(&c).unwrap();
+        check_shape(&c, &moves);
+        let arcs: Vec<_> = moves
+            .iter()
+            .filter_map(|m| match m.motion {
+                Motion::Arc { clockwise, .. } => Some(clockwise),
+                _ => None,
+            })
+            .collect();
+        if path.finishes() {
+            // r1 (convex) is G03, r3 and r4 (concave) are G02 on this groove
+            // cut towards −X and −Z; r2 is a chamfer.
+            assert_eq!(arcs, [false, true, true]);
+        } else {
+            assert!(arcs.is_empty());
+        }
+        let with_i4 = G75Cycle { tool_width: Some(40_000), ..c };
+        check_shape(&with_i4, &g75::expand(&with_i4).unwrap());
+    }
+}
+
+#[test]
+fn right_angle_groove_is_exact() {
+    let c = G75Cycle { flank_a: 900_000, flank_b: 900_000, path: PathType::RoughAndFinish, ..seed() };
+    let p = g75::profile(&c).unwrap();
+    for q in [&p.p1, &p.p2, &p.p3] {
+        assert!(q.exact.u.is_exact() && q.exact.y.is_exact());
+    }
+    let c = with_corners(c);
+    let p = g75::profile(&c).unwrap();
+    // tan 45° is exact, so the round corners of a square groove are exact.
+    for feature in p.corners.iter().flatten() {
+        assert!(feature.tangent.is_exact());
+        assert!(feature.start.exact.u.is_exact() && feature.end.exact.y.is_exact());
+    }
+    check_shape(&c, &g75::expand(&c).unwrap());
+}
+
+#[test]
+fn layers_slope_and_allowances_expand() {
+    let c = G75Cycle {
+        layer: Some(70_000),
+        slope: 100_000,
+        allowance_x: 4_000,
+        allowance_z: 2_000,
+        path: PathType::RoughAndFinish,
+        ..with_corners(seed())
+    };
+    let moves = g75::expand(&c).unwrap();
+    check_shape(&c, &moves);
+    let layers: Vec<u32> = moves
+        .iter()
+        .filter_map(|m| match m.role {
+            Role::LayerChange(l) => Some(l),
+            _ => None,
+        })
+        .collect();
+    assert!(layers.contains(&2) && layers.contains(&3));
+    assert!(g75::profile(&c).unwrap().y_top < 0);
+}
+
+#[test]
+fn alarm_order() {
+    // Corners too large: flank A first, then the bottom, then flank B.
+    let mut c = seed();
+    c.corners[corner::R1] = Corner { size: 999_999, kind: CornerKind::Chamfer };
+    c.corners[corner::R3] = Corner { size: 999_999, kind: CornerKind::Chamfer };
+    assert_eq!(g75::expand(&c), Err(CycleError::CornerTooLarge { edge: GrooveEdge::FlankA }));
+    c.corners[corner::R1] = Corner::SHARP;
+    c.corners[corner::R3] = Corner { size: 60_000, kind: CornerKind::Chamfer };
+    c.corners[corner::R4] = Corner { size: 60_000, kind: CornerKind::Chamfer };
+    assert_eq!(g75::expand(&c), Err(CycleError::CornerTooLarge { edge: GrooveEdge::Bottom }));
+    // Flank B is (Y/f)/sin 30° = 20 mm long.
+    c.corners[corner::R3] = Corner::SHARP;
+    c.corners[corner::R2] = Corner { size: 150_000, kind: CornerKind::Chamfer };
+    assert_eq!(g75::expand(&c), Err(CycleError::CornerTooLarge { edge: GrooveEdge::FlankB }));
+    // Corners that just meet are accepted: t4 + t2 = 20 mm, t3 + t4 = d.
+    c.corners[corner::R2] = Corner { size: 140_000, kind: CornerKind::Chamfer };
+    assert!(g75::profile(&c).is_ok());
+    c.corners[corner::R2] = Corner::SHARP;
+    c.corners[corner::R3] = Corner { size: 50_000, kind: CornerKind::Chamfer };
+    c.corners[corner::R4] = Corner { size: 50_000, kind: CornerKind::Chamfer };
+    assert!(g75::profile(&c).is_ok());
+    // A tool wider than the bottom, for every J.
+    for path in [PathType::Rough, PathType::Finish] {
+        let c = G75Cycle { tool_width: Some(100_001), path, ..seed() };
+        let w = cycleref::Length::new(100_001, IS_C);
+        assert_eq!(g75::expand(&c), Err(CycleError::GrooveNarrowerThanTool { tool_width: w }));
+    }
+    let c = G75Cycle { tool_width: Some(100_000), ..seed() };
+    assert!(g75::expand(&c).is_ok());
+    // Too many pecks, but only when roughing.
+    let c = G75Cycle { peck: 1, step: 1, ..seed() };
+    assert_eq!(g75::expand(&c), Err(CycleError::TooManyPecks { limit: MAX_PECKS }));
+    let c = G75Cycle { path: PathType::Finish, ..c };
+    assert!(g75::expand(&c).is_ok());
+    let c = G75Cycle { layer: Some(1), ..seed() };
+    assert_eq!(g75::expand(&c), Err(CycleError::TooManyPecks { limit: MAX_PECKS }));
+    // A coordinate beyond the range tables: the first peck's X.
+    let c = G75Cycle {
+        start: Point::new(999_999_000, 0),
+        from: Point::new(999_999_000, 10),
+        depth: 200_000,
+        ..seed()
+    };
+    match g75::expand(&c) {
+        Err(CycleError::OutOfRange { field: Field::PassCoordinate, value }) => {
+            assert_eq!(value.increments, 1_000_029_000);
+        }
+        other => panic!("{other:?}"),
+    }
+    // validate() comes first.
+    let c = G75Cycle { depth: 0, ..c };
+    assert_eq!(g75::expand(&c), Err(CycleError::NoGrooveDepth));
+}
+
+#[test]
+fn an_irrational_formula_with_an_integer_value_is_refused() {
+    // A90 B60 L30 D0: u3 = (Y/f)·cot 60° / (1 − tan 30°·cot 60°) = √3·Y/(2f)
+    // and y3 = −f·u3·tan 30° = −Y/2 exactly, an integer given only as a
+    // product of irrationals: y_top = floor(y3) cannot be decided.
+    let c = G75Cycle { flank_a: 900_000, flank_b: 600_000, slope: 300_000, width: 0, ..seed() };
+    assert_eq!(g75::expand(&c), Err(CycleError::UndecidedRounding));
+}
+
+#[test]
+fn a_round_bottom_corner_on_a_60_degree_flank_is_refused_as_written() {
+    // docs/G75.md as written: y_K1 = floor(Y − Δu − f·t3·sin a − Δu·cos a)
+    // with t3 = ρ3·tan(a/2). At a = 60°, tan 30°·sin 60° = 1/2 exactly,
+    // but only as a product of two irrational values, so y_K1 = Y − Δu −
+    // f·ρ3/2 − Δu/2 is an integer the intervals can never decide whenever
+    // f·ρ3 + Δu is even (here U0, diameter). The same holds whenever
+    // f·ρ3 = Δu at any angle (tan(a/2)·sin a = 1 − cos a). Reported; the
+    // definition would need these products exactly.
+    let mut c = G75Cycle { flank_a: 600_000, flank_b: 600_000, path: PathType::RoughAndFinish, ..seed() };
+    c.corners[corner::R3] = Corner { size: 5_000, kind: CornerKind::Round };
+    assert_eq!(g75::expand(&c), Err(CycleError::UndecidedRounding));
+    c.allowance_x = 1_001;
+    assert!(g75::expand(&c).is_ok());
+    let mut c = G75Cycle { flank_a: 400_000, allowance_x: 2_000, ..seed() };
+    c.corners[corner::R3] = Corner { size: 1_000, kind: CornerKind::Round };
+    assert_eq!(g75::expand(&c), Err(CycleError::UndecidedRounding));
+}
+
+#[test]
+fn rough_contour_top_points_can_leave_the_region() {
+    // Found by `expansions_are_well_formed`: a shallow groove with large
+    // allowances and an r4 chamfer. The r4 chord less the allowances meets
+    // flank B less Δw at y_K4 = −1583, above y_top = −1582, so at y_top the
+    // chord bounds the region: right(y_top) = chord4_r(y_top) = 31612.685…,
+    // while docs/G75.md §8 puts R3 at floor(flankB_r(y_top)) = 31613, and K4
+    // above the layer top. Reported: §8 contradicts §10's "every tool
+    // position of roughing … lies in the roughing region" here (the points
+    // are in the air above the opening, nothing is cut).
+    let mut c = G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Radius,
+        from: Point::new(100_000, 0),
+        start: Point::new(100_000, 0),
+        peck: 1_000,
+        step: 2_600,
+        depth: 2_798,
+        width: 17_505,
+        flank_a: 106_420,
+        flank_b: 680_328,
+        slope: 26_501,
+        retract: 0,
+        layer: None,
+        allowance_x: 1_633,
+        allowance_z: 2_549,
+        tool_width: None,
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    c.corners[corner::R3] = Corner { size: 2_002, kind: CornerKind::Chamfer };
+    c.corners[corner::R4] = Corner { size: 2_304, kind: CornerKind::Chamfer };
+    let g = g75::groove(&c);
+    let y_top = g75::y_top(&g).unwrap();
+    assert_eq!((y_top, g75::y_k4(&g).unwrap()), (-1_582, -1_583));
+    let contour = g75::rough_contour(&g, y_top).unwrap();
+    let r3 = *contour.last().unwrap();
+    assert_eq!(r3, g75::LocalPoint::new(31_613, -1_582));
+    let right = g75::right(&g, &Real::int(y_top));
+    assert_eq!(right.to_decimal(3).unwrap(), "31612.685");
+    assert_eq!(Real::int(r3.u).compare(&right), Ok(Ordering::Greater));
+    assert!(g75::expand(&c).is_ok());
+}
+
+/// Random cycles of IS-B size, kept small (at most some 10⁵ pecks and 200
+/// layers) so that every case runs quickly; `alarm_order` covers the large
+/// counts.
+fn arb_cycle() -> impl Strategy<Value = G75Cycle> {
+    let corner = (0_i64..3_000, any::<bool>()).prop_map(|(size, round)| Corner {
+        size,
+        kind: if round { CornerKind::Round } else { CornerKind::Chamfer },
+    });
+    (
+        (500_i64..=40_000, 500_i64..=40_000, 1_i64..=200_000, 0_i64..=100_000, any::<bool>(), any::<bool>()),
+        (1_u32..=900_000, 1_u32..=900_000, 0_u32..900_000),
+        (0_i64..=5_000, proptest::option::of(1_000_i64..=100_000), 0_i64..=3_000, 0_i64..=3_000),
+        (
+            proptest::option::of(0_i64..=10_000),
+            0_u8..3,
+            [corner.clone(), corner.clone(), corner.clone(), corner],
+        ),
+        (any::<bool>(), -50_000_i64..50_000, -50_000_i64..50_000),
+    )
+        .prop_map(|(words, angles, block2, tool, place)| {
+            let (peck, step, depth, width, neg_h, neg_d) = words;
+            let (flank_a, flank_b, slope) = angles;
+            let (retract, layer, allowance_x, allowance_z) = block2;
+            let (tool_width, j, corners) = tool;
+            let (radius, fx, fz) = place;
+            G75Cycle {
+                units: Units::IS_B_METRIC,
+                x_mode: if radius { XMode::Radius } else { XMode::Diameter },
+                from: Point::new(100_000 + fx, fz),
+                start: Point::new(100_000, 0),
+                peck,
+                step,
+                depth: if neg_h { -depth } else { depth },
+                width: if neg_d { -width } else { width },
+                flank_a,
+                flank_b,
+                slope: slope % flank_b,
+                retract,
+                layer,
+                allowance_x,
+                allowance_z,
+                tool_width,
+                path: [PathType::Rough, PathType::RoughAndFinish, PathType::Finish][usize::from(j)],
+                corners,
+            }
+        })
+}
+
+/// Every tool position of roughing (the moves before the finishing
+/// contour), with its width, lies in the roughing region, decided exactly
+/// against the unrounded boundaries (`docs/G75.md` §10). For an integer
+/// `u`, `u ≥ left(y)` is `u ≥ ceil(left(y))` and `u + w ≤ right(y)` is
+/// `u + w ≤ floor(right(y))`; the bounds are decided once per depth.
+///
+/// Except R0 and R3, the rough contour's points at `y_top`: `docs/G75.md`
+/// §8 puts them on the flank lines, which lie outside the region when a
+/// bottom corner's chord meets its flank above `y_top` (see
+/// `rough_contour_top_points_can_leave_the_region`); they are checked
+/// against the flank lines only.
+fn check_in_region(c: &G75Cycle, moves: &[cycleref::Move]) -> Result<(), TestCaseError> {
+    let g = g75::groove(c);
+    let y_top = g75::y_top(&g).ok();
+    let mut bounds: HashMap<i128, Option<(BigInt, BigInt)>> = HashMap::new();
+    for m in moves {
+        if matches!(m.role, Role::FinishContour | Role::Return) {
+            break;
+        }
+        let u = g.sz * (i128::from(m.to.z) - i128::from(c.start.z));
+        let y = g.sx * (i128::from(m.to.x) - i128::from(c.start.x));
+        prop_assert!(y <= g75::bottom_rough(&g), "{:?} below the roughing bottom", m);
+        let bound = bounds.entry(y).or_insert_with(|| {
+            let y = Real::int(y);
+            let left = g75::left(&g, &y).ceil();
+            let right = g75::right(&g, &y).floor();
+            match (left, right) {
+                (Ok(l), Ok(r)) => Some((l, r)),
+                _ => None,
+            }
+        });
+        if m.role == Role::RoughContour && Some(y) == y_top {
+            let y = Real::int(y);
+            if let (Ok(left), Ok(right)) =
+                (g75::flank_a_rough(&g, &y).ceil(), g75::flank_b_rough(&g, &y).floor())
+            {
+                prop_assert!(BigInt::from(u) >= left, "{:?} before flank A", m);
+                prop_assert!(BigInt::from(u + g.tool) <= right, "{:?} beyond flank B", m);
+            }
+        } else if let Some((left, right)) = bound {
+            prop_assert!(BigInt::from(u) >= *left, "{:?} before the start-side boundary", m);
+            prop_assert!(BigInt::from(u + g.tool) <= *right, "{:?} beyond the far-side boundary", m);
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Any cycle either expands into a well-formed path or is refused with
+    /// an alarm; pecks take at most Δi and steps at most Δk.
+    #[test]
+    fn expansions_are_well_formed(c in arb_cycle()) {
+        match g75::expand(&c) {
+            Ok(moves) => {
+                check_shape(&c, &moves);
+                check_in_region(&c, &moves)?;
+                let f = c.x_mode.factor();
+                let mut at = c.from;
+                for m in &moves {
+                    match m.role {
+                        Role::Peck(_) => {
+                            prop_assert_eq!(m.to.z, at.z);
+                            prop_assert!((m.to.x - at.x).abs() <= c.peck + f * c.retract);
+                        }
+                        Role::Step(_) => {
+                            prop_assert_eq!(m.to.x, at.x);
+                            prop_assert!((m.to.z - at.z).abs() <= c.step);
+                        }
+                        _ => {}
+                    }
+                    at = m.to;
+                }
+            }
+            Err(e) => {
+                prop_assert!(c.validate().is_err() || matches!(
+                    e,
+                    CycleError::CornerTooLarge { .. }
+                        | CycleError::GrooveNarrowerThanTool { .. }
+                        | CycleError::TooManyPecks { .. }
+                        | CycleError::OutOfRange { .. }
+                        | CycleError::UndecidedRounding
+                ), "{:?}", e);
+            }
+        }
+    }
+}
