@@ -1,7 +1,7 @@
 (seed 001 / manuals/gsk980tdi-g75.1.txt, example O0008: trapezoidal groove,)
 (depth 20 dia, bottom 10, flank angles 45 and 30 degrees. The manual assumes)
-(IS-C (0.0001 mm): run with --profile gsk980 --increment is-c. It programs no)
-(I, so the cycle is a pointed tool's (reading R-G75SEED); add I4 to block 2)
+(IS-C, 0.0001 mm: run with --profile gsk980 --increment is-c. It programs no)
+(I, so the cycle is a pointed tool's, reading R-G75SEED; add I4 to block 2)
 (to have the cycle compensate the 4 mm grooving tool the manual assumes.)
 O0008;
 G00 X60 Z30 M3 S500;

@@ -1,6 +1,6 @@
-(A trapezoidal groove on a 10-degree slope (L10), flanks 60 and 75 degrees,)
-(a 2.5 mm tool, layers V3, rough + finish with rounds at all four corners)
-(P1111). GSK 980TDi profile, IS-B.)
+(A trapezoidal groove on a 10-degree slope L10, flanks 60 and 75 degrees,)
+(a 2.5 mm tool, layers V3, rough + finish with rounds at all four corners,)
+(P1111. GSK 980TDi profile, IS-B.)
 O0011;
 M03 S600;
 G00 X90 Z12;

@@ -1,7 +1,7 @@
 (A square groove on the GSK 980TDi profile, IS-B: two layers V4, allowances)
 (U0.4 W0.2, a 3 mm grooving tool I3, rough + finish J1, a 0.5 chamfer at the)
-(start corner A and rounds of 0.4 and 0.3 at the bottom corners D and E)
-(P0011). Worked by hand in proofs/tests/g75_golden.rs.)
+(start corner A and rounds of 0.4 and 0.3 at the bottom corners D and E,)
+(P0011. Worked by hand in proofs/tests/g75_golden.rs.)
 O0010;
 M03 S800;
 G00 X40 Z5;

@@ -1028,6 +1028,20 @@ impl Reader<'_> {
 
     /// G75.1 block 1: `X Z P(Δi) Q(Δk) H(h) D(d) A(∠a) B(∠b) L(∠p)` (seed 001).
     fn g75_block1(&self, block: &Block) -> Result<G75Block1, ProgramError> {
+        // A block 2 where a block 1 is due (R-G75PAIR): it has block-2 words
+        // and none of block 1's required ones.
+        let second = ['R', 'V', 'U', 'W', 'I', 'J', 'E'].iter().any(|&c| block.has(c));
+        let first = ['H', 'Q', 'X', 'Z', 'L'].iter().any(|&c| block.has(c));
+        if second && !first {
+            return Err(err(
+                block,
+                None,
+                ErrorKind::Missing {
+                    what: "the first G75.1 block (X Z P Q H D A B L) before this one",
+                    rule: "G75.1 always takes two blocks, note 3: 必须有两行 G75.1 代码",
+                },
+            ));
+        }
         self.check_addresses(block, "G75.1 block 1", "GXZPQHDABLMST")?;
         let (Some(x0), Some(z0)) = (self.x, self.z) else {
             return Err(err(block, None, ErrorKind::PositionUnknown));
