@@ -29,7 +29,9 @@ fn group(cr: &mut Criterion, name: &str, c: &G75Cycle, reference_samples: usize)
     let mut g = cr.benchmark_group(format!("g75/{name}"));
     g.throughput(Throughput::Elements(moves)).warm_up_time(WARM_UP).measurement_time(MEASURE);
     g.sample_size(reference_samples);
-    g.bench_function("reference", |b| b.iter(|| cycleref_spec::g75::expand(black_box(c)).expect("valid").len()));
+    g.bench_function("reference", |b| {
+        b.iter(|| cycleref_spec::g75::expand(black_box(c)).expect("valid").len())
+    });
     g.sample_size(50);
     g.bench_function("engine", |b| b.iter(|| cycleref::expand_g75(black_box(c)).expect("valid").count()));
     g.finish();

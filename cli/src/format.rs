@@ -4,8 +4,8 @@ use std::fmt::Write as _;
 
 use cycleref::units::write_fixed;
 use cycleref::{Flank, IncrementSystem, LeadWord, Motion, Move, PassKind, Role, StartAngle, Units};
-use cycleref_spec::profile::QUnit;
 use cycleref::{PathType, Point};
+use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{G75Call, G76Call, Restore};
 use serde_json::{json, Value};
 
@@ -111,12 +111,7 @@ pub fn arc_ik(from: Point, centre: Point, x_factor: i64, units: Units) -> (Strin
 pub fn nc_groove(out: &mut String, call: &G75Call, moves: &[Move]) {
     let c = &call.cycle;
     let u = c.units;
-    let layers = moves
-        .iter()
-        .filter_map(|m| plunge_of(m.role))
-        .map(|p| p.layer)
-        .max()
-        .unwrap_or(0);
+    let layers = moves.iter().filter_map(|m| plunge_of(m.role)).map(|p| p.layer).max().unwrap_or(0);
     let plunges = moves.iter().filter(|m| matches!(m.role, Role::PlungeRetract(_))).count();
     let path = match c.path {
         PathType::Rough => "J0 rough",
@@ -248,7 +243,8 @@ fn nc_move(out: &mut String, m: &Move, u: Units, q: QUnit) {
             Motion::Arc { centre, clockwise } => {
                 // Without the start point the centre is written absolute.
                 let g = if clockwise { "G02" } else { "G03" };
-                let _ = writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", fixed(centre.x, u), fixed(centre.z, u));
+                let _ =
+                    writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", fixed(centre.x, u), fixed(centre.z, u));
             }
         }
     }
@@ -310,7 +306,9 @@ pub fn move_json(m: &Move, units: Units) -> Value {
     }
     // Keep a stable key order: motion first.
     let mut ordered = serde_json::Map::new();
-    for key in ["motion", "x", "z", "centre", "role", "lead", "start_angle_millidegrees", "sync", "pass", "plunge"] {
+    for key in
+        ["motion", "x", "z", "centre", "role", "lead", "start_angle_millidegrees", "sync", "pass", "plunge"]
+    {
         if let Some(val) = obj.remove(key) {
             ordered.insert(key.into(), val);
         }

@@ -343,7 +343,8 @@ impl Job {
                     let moves = self.expand_g75(&call.cycle, call.block.line)?;
                     let c = &call.cycle;
                     let u = c.units;
-                    let fx = |p: cycleref::Point| json!({"x": format::fixed(p.x, u), "z": format::fixed(p.z, u)});
+                    let fx =
+                        |p: cycleref::Point| json!({"x": format::fixed(p.x, u), "z": format::fixed(p.z, u)});
                     cycles.push(json!({
                         "cycle": "G75.1",
                         "line": call.block.line,
@@ -456,20 +457,21 @@ impl Job {
         );
         let mut at = call.cycle.from;
         let mut row: Option<(cycleref::Plunge, cycleref::Point, cycleref::Point, u32)> = None;
-        let flush = |out: &mut String, row: &Option<(cycleref::Plunge, cycleref::Point, cycleref::Point, u32)>| {
-            if let Some((p, start, bottom, pecks)) = row {
-                let _ = writeln!(
-                    out,
-                    "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
-                    p.layer,
-                    p.number,
-                    format::fixed(start.z, u),
-                    format::fixed(start.x, u),
-                    format::fixed(bottom.x, u),
-                    pecks
-                );
-            }
-        };
+        let flush =
+            |out: &mut String, row: &Option<(cycleref::Plunge, cycleref::Point, cycleref::Point, u32)>| {
+                if let Some((p, start, bottom, pecks)) = row {
+                    let _ = writeln!(
+                        out,
+                        "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+                        p.layer,
+                        p.number,
+                        format::fixed(start.z, u),
+                        format::fixed(start.x, u),
+                        format::fixed(bottom.x, u),
+                        pecks
+                    );
+                }
+            };
         for m in &moves {
             if let cycleref::Role::Peck(p) = m.role {
                 match &mut row {
@@ -517,8 +519,10 @@ impl Job {
             // The profile and the roughing region are the paths of the same
             // groove for a pointed tool (plot_g75's module documentation).
             let pointed = G75Cycle { tool_width: None, ..call.cycle };
-            let profile = self.expand_g75(&G75Cycle { path: cycleref::PathType::Finish, ..pointed }, call.block.line)?;
-            let rough = self.expand_g75(&G75Cycle { path: cycleref::PathType::Rough, ..pointed }, call.block.line)?;
+            let profile =
+                self.expand_g75(&G75Cycle { path: cycleref::PathType::Finish, ..pointed }, call.block.line)?;
+            let rough =
+                self.expand_g75(&G75Cycle { path: cycleref::PathType::Rough, ..pointed }, call.block.line)?;
             let profile: Vec<Move> =
                 profile.into_iter().filter(|m| m.role == cycleref::Role::FinishContour).collect();
             outlines.push((call, moves, profile, rough));

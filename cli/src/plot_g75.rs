@@ -64,7 +64,9 @@ impl Groove<'_> {
             XMode::Radius => "radius",
         };
         let tool = match c.tool_width {
-            Some(w) => format!("grooving tool I{} (bars: its cutting edge at each plunge bottom)", fixed(w, u)),
+            Some(w) => {
+                format!("grooving tool I{} (bars: its cutting edge at each plunge bottom)", fixed(w, u))
+            }
             None => "pointed tool (no I)".to_string(),
         };
         let mut g = Group::new()
@@ -102,20 +104,19 @@ impl Groove<'_> {
                 at = m.to;
             }
             let closed = format!("{d}Z");
-            g = g
-                .add(Path::new().set("d", closed).set("fill", GROOVE_FILL).set("stroke", "none"))
-                .add(
-                    Path::new()
-                        .set("d", d)
-                        .set("fill", "none")
-                        .set("stroke", PROFILE)
-                        .set("stroke-width", 2.2)
-                        .add(Title::new("the programmed groove profile")),
-                );
+            g = g.add(Path::new().set("d", closed).set("fill", GROOVE_FILL).set("stroke", "none")).add(
+                Path::new()
+                    .set("d", d)
+                    .set("fill", "none")
+                    .set("stroke", PROFILE)
+                    .set("stroke-width", 2.2)
+                    .add(Title::new("the programmed groove profile")),
+            );
         }
         if let Some(first) = self.rough.iter().find(|m| m.role == Role::RoughContour) {
             let mut d = String::new();
-            let start = self.rough.iter().take_while(|m| !std::ptr::eq(*m, first)).last().map_or(c.from, |m| m.to);
+            let start =
+                self.rough.iter().take_while(|m| !std::ptr::eq(*m, first)).last().map_or(c.from, |m| m.to);
             let (x, y) = map.px(start);
             let _ = write!(d, "M{} {}", num(x), num(y));
             let mut at = start;
@@ -177,7 +178,8 @@ impl Groove<'_> {
             }
             // The tool's edge at the bottom of each plunge (the last peck).
             if let (Role::Peck(p), Some(w)) = (m.role, c.tool_width) {
-                let last = !matches!(self.moves.get(i + 1).map(|n| n.role), Some(Role::PeckRetract(q)) if q == p);
+                let last =
+                    !matches!(self.moves.get(i + 1).map(|n| n.role), Some(Role::PeckRetract(q)) if q == p);
                 if last && w > 0 {
                     let far = Point::new(m.to.x, m.to.z + c.axial_sign() * w);
                     let (x1, y1) = map.px(m.to);

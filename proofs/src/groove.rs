@@ -236,6 +236,9 @@ pub fn groove_pecks_and_steps(d: &GrooveDomain, engine: &impl GrooveEngine) {
 pub fn groove_layers(d: &GrooveDomain, engine: &impl GrooveEngine) {
     let c = any_groove(d);
     assume(c.path.roughs());
+    // At most 64 layers (the window's bound; R-G75LAYER: ceil((|H| - U) / V)).
+    let rough_depth = c.depth.abs() - c.allowance_x;
+    assume(c.layer.is_none_or(|v| v > 0 && (rough_depth + v - 1) / v <= 64));
     let moves = expanded(&c, engine);
     let mut bottoms: [Option<i64>; 64] = [None; 64];
     let mut layers = 0_usize;
@@ -257,7 +260,11 @@ pub fn groove_layers(d: &GrooveDomain, engine: &impl GrooveEngine) {
             Role::PlungeRetract(p) => {
                 let (q, y) = last.expect("a plunge has pecks");
                 assert_eq!(p, q);
-                assert_eq!(Some(y), bottoms[usize::try_from(p.layer).unwrap_or(1) - 1], "plunge reaches its layer");
+                assert_eq!(
+                    Some(y),
+                    bottoms[usize::try_from(p.layer).unwrap_or(1) - 1],
+                    "plunge reaches its layer"
+                );
             }
             _ => {}
         }
@@ -431,7 +438,9 @@ pub fn groove_no_panic(d: &GrooveDomain, limit: usize) {
     let c = any_groove(d);
     if let Ok(moves) = cycleref::expand_g75(&c) {
         for m in moves.take(limit) {
-            assert!(m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH);
+            assert!(
+                m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH
+            );
         }
         cover!(true, "a valid groove");
     }

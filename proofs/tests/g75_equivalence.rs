@@ -47,8 +47,9 @@ fn angle(lo: u32, hi: u32) -> impl Strategy<Value = u32> {
 }
 
 fn corner() -> impl Strategy<Value = Corner> {
-    (prop_oneof![2 => Just(0_i64), 3 => 1_i64..400, 1 => 1_i64..20_000], any::<bool>())
-        .prop_map(|(size, round)| Corner { size, kind: if round { CornerKind::Round } else { CornerKind::Chamfer } })
+    (prop_oneof![2 => Just(0_i64), 3 => 1_i64..400, 1 => 1_i64..20_000], any::<bool>()).prop_map(
+        |(size, round)| Corner { size, kind: if round { CornerKind::Round } else { CornerKind::Chamfer } },
+    )
 }
 
 /// Grooves over a realistic part of the ranges (sizes up to 20 mm at IS-B),
@@ -79,7 +80,13 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
     let shape = (angle(1, 900_000), angle(1, 900_000), prop_oneof![Just(0_u32), angle(0, 899_999)]);
     let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(), corner(), corner(), corner()]);
     (units, sizes, allowances, shape, rest).prop_map(
-        |((units, x_mode), (depth, width, peck, step, retract, layer), (u, w, tool), (a, b, l), (sx, sz, j, corners))| {
+        |(
+            (units, x_mode),
+            (depth, width, peck, step, retract, layer),
+            (u, w, tool),
+            (a, b, l),
+            (sx, sz, j, corners),
+        )| {
             let sx = if sx { 1 } else { -1 };
             let sz = if sz { 1 } else { -1 };
             let start = Point::new(50_000, 1_000);

@@ -92,7 +92,8 @@ fn seed_plunge(z: &str, n: u32) -> Vec<String> {
     v
 }
 
-const SEED: &str = "O0008;\nG00 X60 Z30 M3 S500;\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30;\nG75.1 R0.5;\nM30;\n";
+const SEED: &str =
+    "O0008;\nG00 X60 Z30 M3 S500;\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30;\nG75.1 R0.5;\nM30;\n";
 
 /// Seed 001's example as written (IS-C, no I: a pointed tool, R-G75SEED).
 ///

@@ -84,7 +84,9 @@ const PECKS: GrooveDomain =
 #[test]
 fn pecks_and_steps() {
     check("pecks (exhaustive)", small(200_000), || groove::groove_pecks_and_steps(&PECKS, &GrooveFixedPoint));
-    check("pecks (square, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("pecks (square, sampled)", SAMPLE, || {
+        groove::groove_pecks_and_steps(&SQUARE_WIDE, &GrooveFixedPoint)
+    });
     check("pecks (angles, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&ANGLES, &GrooveFixedPoint));
 }
 
@@ -95,8 +97,16 @@ fn layers() {
 }
 
 /// Corners and allowances matter here; pecking does not.
-const REGION: GrooveDomain =
-    GrooveDomain { peck: (3, 3), step: (1, 2), signs: (0, 0), path: (0, 0), corner_kinds: (0, 3), ..SMALL };
+const REGION: GrooveDomain = GrooveDomain {
+    depth: (1, 6),
+    width: (0, 5),
+    peck: (3, 3),
+    step: (1, 2),
+    signs: (0, 0),
+    path: (0, 0),
+    corner_kinds: (0, 3),
+    ..SMALL
+};
 
 #[test]
 fn inside_the_roughing_region() {
@@ -110,10 +120,11 @@ const PROFILE: GrooveDomain = GrooveDomain {
     step: (3, 3),
     layer: (0, 0),
     path: (1, 2),
-    corner: (0, 2),
+    corner: (0, 1),
     signs: (0, 3),
-    depth: (6, 9),
-    width: (2, 7),
+    depth: (6, 7),
+    width: (3, 6),
+    allowance_x: (0, 0),
     ..SMALL
 };
 

@@ -11,8 +11,9 @@
 //! `(−2^127, 2^127)`. The engine uses two precisions:
 //!
 //! * [`FAST`] = 4 limbs, `P = 128` (the fast path);
-//! * [`SLOW`] = 10 limbs, `P = 512` (the precision at which `docs/G75.md` §6
-//!   says an undecided rounding is refused).
+//! * [`SLOW`] = 10 limbs, `P = 512` (the highest precision of
+//!   `docs/G75.md` §6, at which reading R-G75TIE applies:
+//!   [`Iv::round_tie`], [`Iv::sign_tie`]).
 //!
 //! An [`Iv<N>`] is a closed interval `[lo, hi]` of such numbers that contains
 //! the exact real value it stands for. Every operation rounds its lower end
@@ -782,6 +783,52 @@ impl<const N: usize> Iv<N> {
             Some(Ordering::Equal)
         } else {
             None
+        }
+    }
+
+    /// The rounding of the exact value enclosed, for an enclosure at the
+    /// highest precision (reading R-G75TIE, `docs/G75.md` §6): as
+    /// [`Iv::round`] when that decides; otherwise, when the interval holds
+    /// exactly one rounding boundary (an integer for floor and ceil, a
+    /// half-integer for nearest; inside or on an end), the value is taken
+    /// to lie on it: `floor(k) = ceil(k) = k`, and the nearest of `k + 1/2`
+    /// is `k + 1` (ties up). `None` for a poisoned interval or one that
+    /// holds two or more boundaries.
+    #[must_use]
+    pub fn round_tie(&self, r: Rounding) -> Option<i128> {
+        if let Some(v) = self.round(r) {
+            return Some(v);
+        }
+        if !self.ok {
+            return None;
+        }
+        // The boundaries, shifted to the integers: the half-integers `j − 1/2`
+        // of nearest are the integers `j` of `[lo + 1/2, hi + 1/2]`, and the
+        // nearest of `j − 1/2` is `j`.
+        let (lo, hi) = match r {
+            Rounding::Floor | Rounding::Ceil => (self.lo, self.hi),
+            Rounding::Nearest => {
+                let half = Fx::half();
+                (self.lo.checked_add(&half)?, self.hi.checked_add(&half)?)
+            }
+        };
+        // The integers of [lo, hi] are ceil(lo)..=floor(hi): one exactly when
+        // the two are equal.
+        let first = lo.ceil()?;
+        (first == hi.floor()).then_some(first)
+    }
+
+    /// The sign of the exact value enclosed, for an enclosure at the highest
+    /// precision (reading R-G75TIE): as [`Iv::sign`] when that decides;
+    /// otherwise the interval contains 0 (its only boundary) and the value is
+    /// taken to be 0. `None` only for a poisoned interval.
+    #[must_use]
+    pub fn sign_tie(&self) -> Option<Ordering> {
+        match self.sign() {
+            Some(o) => Some(o),
+            // Undecided and valid: lo ≤ 0 ≤ hi.
+            None if self.ok => Some(Ordering::Equal),
+            None => None,
         }
     }
 }
