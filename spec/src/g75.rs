@@ -20,6 +20,11 @@
 //!   K3, K4, Q2) before the tool width is subtracted, `floor` for the
 //!   depths `y_K1`, `y_K4`, `y_top`.
 //!
+//! A rounding (or an alarm's comparison) that 512 fraction bits cannot
+//! decide falls under R-G75TIE (`crate::real`): a value whose enclosure
+//! still holds exactly one rounding boundary lies on it; only two
+//! boundaries or more give `CycleError::UndecidedRounding`.
+//!
 //! Readings this model adds where `docs/G75.md` is silent are marked
 //! `R-G75…:` in comments (R-G75MAXMIN, R-G75K1Y, R-G75NARROWJ, R-G75PECKJ2,
 //! R-G75DECIDE, R-G75RANGE, R-G75ARCZERO, R-G75ROLES).
@@ -773,14 +778,23 @@ pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
 // §8 Step 9: the rough contour.
 // ---------------------------------------------------------------------------
 
-/// `R0 = (ceil(flankA_r(y_top)), y_top)`: where the rough contour starts,
-/// on flank A (less Δw) at the layer top.
+/// `R0 = (ceil(left(y_top)), y_top)`: where the rough contour starts, on
+/// the start-side boundary of the roughing region at the layer top
+/// (`docs/G75.md` §8: "rapid along Z to `R0 = (ceil(left(y_top)), y_top)`").
+///
+/// `left` is flank A (less Δw) unless the chord of r3 (less both
+/// allowances) meets it above the layer top; then the chord bounds the
+/// region over the whole depth and R0 lies on it ("When the moved chord
+/// meets its flank above the layer top, the chord is the boundary over the
+/// whole depth: R0 (R3) lies on it and K1 (K4) is not a vertex").
+/// R-G75MAXMIN: `left(y_top)` is rounded as one value.
 ///
 /// # Errors
 ///
 /// [`CycleError::UndecidedRounding`].
 pub fn r0(g: &Groove, y_top: i128) -> Result<LocalPoint, CycleError> {
-    Ok(LocalPoint::new(ceil(&flank_a_rough(g, &int(y_top)))?, y_top))
+    // R-G75MAXMIN: ceil of max(flankA_r, chord3_r) as one value.
+    Ok(LocalPoint::new(ceil(&left(g, &int(y_top)))?, y_top))
 }
 
 /// `y_K1 = floor(Y − Δu − f·t3·sin a − Δu·cos a)`: the depth where flank A
@@ -799,10 +813,12 @@ pub fn y_k1(g: &Groove) -> Result<i128, CycleError> {
 /// `K1 = (ceil(flankA_r(y_K1)), y_K1)`: the end of flank A on the rough
 /// contour when r3 is programmed.
 ///
-/// R-G75K1Y: "K1's u is taken on flank A at the exact y_K1, then rounded
-/// in": the formula of flankA_r is evaluated exactly at the depth `y_K1`
-/// that K1 has (the rounded integer, which is itself exact), and only then
-/// rounded up.
+/// R-G75K1Y: "K1's u is taken on flank A at the integer y_K1, where flank A
+/// is the active boundary, then rounded in": the formula of flankA_r is
+/// evaluated exactly at the depth `y_K1` that K1 has (the rounded integer,
+/// at or above the exact meeting point, so on flank A's side), and only
+/// then rounded up. [`rough_vertices`] makes K1 a vertex only when
+/// `y_K1 > y_top`.
 ///
 /// # Errors
 ///
@@ -847,7 +863,8 @@ pub fn y_k4(g: &Groove) -> Result<i128, CycleError> {
     floor(&(int(bottom_rough(g)) - int(g.f) * t * &a.sin_b - &du * &a.cos_b))
 }
 
-/// `K4 = (floor(flankB_r(y_K4)) − w, y_K4)` (R-G75K1Y as for [`k1`]).
+/// `K4 = (floor(flankB_r(y_K4)) − w, y_K4)` (R-G75K1Y as for [`k1`]: flank
+/// B at the integer `y_K4`); a vertex only when `y_K4 > y_top`.
 ///
 /// # Errors
 ///
@@ -880,39 +897,84 @@ pub fn q2(g: &Groove) -> Result<LocalPoint, CycleError> {
     Ok(LocalPoint::new(floor(&flank_b_rough(g, &int(y)))? - g.tool, y))
 }
 
-/// `R3 = (floor(flankB_r(y_top)) − w, y_top)`: where the rough contour
-/// ends, on flank B (less Δw) at the layer top.
+/// `R3 = (floor(right(y_top)) − w, y_top)`: where the rough contour ends,
+/// on the far-side boundary of the roughing region at the layer top (flank
+/// B less Δw, or the chord of r4 less both allowances when it meets flank
+/// B above the layer top), as [`r0`]. R-G75MAXMIN: `right(y_top)` is
+/// rounded as one value.
 ///
 /// # Errors
 ///
 /// [`CycleError::UndecidedRounding`].
 pub fn r3(g: &Groove, y_top: i128) -> Result<LocalPoint, CycleError> {
-    Ok(LocalPoint::new(floor(&flank_b_rough(g, &int(y_top)))? - g.tool, y_top))
+    // R-G75MAXMIN: floor of min(flankB_r, chord4_r) as one value, then − w.
+    Ok(LocalPoint::new(floor(&right(g, &int(y_top)))? - g.tool, y_top))
+}
+
+/// A vertex of the rough contour before the tool width is subtracted:
+/// `far` for the vertices on the far side (K3, K4, Q2, R3), whose tool
+/// position is the vertex less w (R-G75TOOL).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct RoughVertex {
+    /// The vertex, rounded into the region, without the tool width.
+    pub at: LocalPoint,
+    /// On the far side: the tool's reference corner is at `at.u − w`.
+    pub far: bool,
+}
+
+/// The vertices of the roughing region that the rough contour visits
+/// (`docs/G75.md` §8 step 9), in order, without the tool width: R0; K1
+/// (only when t3 > 0 and `y_K1 > y_top`) and K2 when t3 > 0, or Q1; K3 and
+/// K4 (only when t4 > 0 and `y_K4 > y_top`) when t4 > 0, or Q2; R3.
+///
+/// "feed to `K1` (only when `y_K1 > y_top`) then `K2` (or to `Q1` … when
+/// t3 = 0); feed to `K3` then `K4` (only when `y_K4 > y_top`) (or `Q2` …
+/// when t4 = 0)": when the moved chord meets its flank at or above the
+/// layer top, the chord bounds the region down from R0 (R3) and K1 (K4)
+/// is no vertex. `y_K1` (`y_K4`) is still decided, in the order of
+/// R-G75DECIDE (R0, y_K1, K1, K2 or Q1, K3, y_K4, K4 or Q2, R3).
+///
+/// # Errors
+///
+/// [`CycleError::UndecidedRounding`].
+pub fn rough_vertices(g: &Groove, y_top: i128) -> Result<Vec<RoughVertex>, CycleError> {
+    let near = |at: LocalPoint| RoughVertex { at, far: false };
+    // The far-side functions subtract w; the vertex is the point before.
+    let far = |at: LocalPoint| RoughVertex { at: LocalPoint::new(at.u + g.tool, at.y), far: true };
+    let mut points = vec![near(r0(g, y_top)?)];
+    if has_corner(g, corner::R3) {
+        // K1 is a vertex only below the layer top (docs/G75.md §8).
+        if y_k1(g)? > y_top {
+            points.push(near(k1(g)?));
+        }
+        points.push(near(k2(g)?));
+    } else {
+        points.push(near(q1(g)?));
+    }
+    if has_corner(g, corner::R4) {
+        points.push(far(k3(g)?));
+        // K4 is a vertex only below the layer top (docs/G75.md §8).
+        if y_k4(g)? > y_top {
+            points.push(far(k4(g)?));
+        }
+    } else {
+        points.push(far(q2(g)?));
+    }
+    points.push(far(r3(g, y_top)?));
+    Ok(points)
 }
 
 /// The feed points of the rough contour (step ⑨: "刀具沿着粗车轨迹轮廓切削"),
-/// in order: R0, then K1, K2 (or Q1 without r3), then K3, K4 (or Q2 without
-/// r4), then R3.
+/// in order, as tool positions (far-side vertices less w): R0, then K1 (if
+/// `y_K1 > y_top`), K2 (or Q1 without r3), then K3, K4 (if
+/// `y_K4 > y_top`) (or Q2 without r4), then R3 ([`rough_vertices`]).
 ///
 /// # Errors
 ///
 /// [`CycleError::UndecidedRounding`].
 pub fn rough_contour(g: &Groove, y_top: i128) -> Result<Vec<LocalPoint>, CycleError> {
-    let mut points = vec![r0(g, y_top)?];
-    if has_corner(g, corner::R3) {
-        points.push(k1(g)?);
-        points.push(k2(g)?);
-    } else {
-        points.push(q1(g)?);
-    }
-    if has_corner(g, corner::R4) {
-        points.push(k3(g)?);
-        points.push(k4(g)?);
-    } else {
-        points.push(q2(g)?);
-    }
-    points.push(r3(g, y_top)?);
-    Ok(points)
+    let vertices = rough_vertices(g, y_top)?;
+    Ok(vertices.iter().map(|v| if v.far { v.at.less_tool(g.tool) } else { v.at }).collect())
 }
 
 // ---------------------------------------------------------------------------
@@ -1067,14 +1129,22 @@ pub struct Profile {
     pub corners: [Option<CornerProfile>; 4],
     /// `floor(y3)`.
     pub y_top: i128,
+    /// The vertices of the roughing region the rough contour visits
+    /// ([`rough_vertices`]), without the tool width: R0 =
+    /// `(ceil(left(y_top)), y_top)`, K1 (when t3 > 0 and `y_K1 > y_top`),
+    /// K2 (or Q1), K3 (or Q2), K4 (when t4 > 0 and `y_K4 > y_top`), R3 =
+    /// `(floor(right(y_top)), y_top)`.
+    pub rough: Vec<RoughVertex>,
 }
 
 /// The profile of a cycle, exact and rounded, after `validate()` and the
-/// corner alarms.
+/// corner alarms, with the rough contour's vertices (`docs/G75.md` §8 step
+/// 9) whatever J is.
 ///
 /// # Errors
 ///
-/// As [`expand`], up to the corner alarms.
+/// As [`expand`], up to the corner alarms; the alarms of the roughing path
+/// (groove narrower than the tool, too many pecks) are not checked.
 pub fn profile(c: &G75Cycle) -> Result<Profile, CycleError> {
     c.validate()?;
     let g = groove(c);
@@ -1096,14 +1166,15 @@ pub fn profile(c: &G75Cycle) -> Result<Profile, CycleError> {
             });
         }
     }
-    Ok(Profile {
-        s: ProfilePoint::of(RealPoint::new(int(0), int(0)))?,
-        p1: ProfilePoint::of(p1(&g))?,
-        p2: ProfilePoint::of(p2(&g))?,
-        p3: ProfilePoint::of(p3(&g))?,
-        corners,
-        y_top: y_top(&g)?,
-    })
+    let (s, p1, p2, p3) = (
+        ProfilePoint::of(RealPoint::new(int(0), int(0)))?,
+        ProfilePoint::of(p1(&g))?,
+        ProfilePoint::of(p2(&g))?,
+        ProfilePoint::of(p3(&g))?,
+    );
+    let y_top = y_top(&g)?;
+    let rough = rough_vertices(&g, y_top)?;
+    Ok(Profile { s, p1, p2, p3, corners, y_top, rough })
 }
 
 // ---------------------------------------------------------------------------
@@ -1255,8 +1326,9 @@ fn rough_moves(g: &Groove, path: &mut Path, layers: &[Layer], a11: LocalPoint, y
 /// undecidable one (`UndecidedRounding`) is reported where it is first
 /// needed: the corner alarms, the last layer's plunge range, `y_top`, the
 /// layers' plunge ranges (J0, J1; else only layer 1's), the rough contour
-/// (R0, K1/K2 or Q1, K3/K4 or Q2, R3), the finishing contour in path order
-/// (each point, then a round's centre, then its direction).
+/// (R0, y_K1, K1 if below y_top, K2 or Q1, K3, y_K4, K4 if below y_top or
+/// Q2, R3), the finishing contour in path order (each point, then a round's
+/// centre, then its direction).
 ///
 /// R-G75RANGE: the coordinates are checked after the moves are made, in
 /// move order, each move's end X then Z, then an arc's centre X then Z.

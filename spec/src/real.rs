@@ -20,12 +20,35 @@
 //! ([`Real::sign`], [`Real::compare`]). An exact rational is decided
 //! exactly. Any other value is enclosed at 64 fraction bits, and the
 //! precision doubles (128, 256, 512) until both ends of the interval give
-//! the same answer; if they still differ at 512 fraction bits the decision
-//! is refused with [`CycleError::UndecidedRounding`] ("If an engine cannot
-//! decide a rounding (or the sign of an alarm comparison) at 512 fraction
-//! bits, it returns `CycleError::UndecidedRounding` rather than guess").
-//! Every enclosure is rigorous: the true value always lies in it, so a
-//! decision, once made, is the decision of the exact value.
+//! the same answer. Every enclosure is rigorous: the true value always lies
+//! in it, so a decision made this way is the decision of the exact value.
+//!
+//! # Values on a rounding boundary (R-G75TIE)
+//!
+//! Exact identities among the trigonometric values make some values
+//! exactly a rounding boundary although they are computed from irrational
+//! terms (`tan 30°·sin 60° = 1/2`, `tan(a/2)·sin a = 1 − cos a`, …); no
+//! enclosure can decide them. `docs/G75.md` §6, R-G75TIE: "a value whose
+//! enclosure at 512 fraction bits still contains exactly one rounding
+//! boundary (an integer for floor and ceil, a half-integer for nearest,
+//! zero for a sign) is taken to lie on it, and is then rounded by the rule
+//! above (a tie goes up)". So, only after the 512-bit enclosure has failed
+//! to decide (the whole ladder 64 → 128 → 256 → 512 is run first), the
+//! boundaries in the closed 512-bit enclosure are counted (one strictly
+//! inside or on an end counts alike):
+//!
+//! * exactly one integer `k`: `floor = ceil = k`;
+//! * exactly one half-integer `k + 1/2`: `nearest = floor(k + 1/2 + 1/2) =
+//!   k + 1`;
+//! * zero in the enclosure of a sign: the sign is 0 (`Ordering::Equal`);
+//! * two boundaries or more (or no enclosure at all, a divisor still
+//!   enclosing 0): [`CycleError::UndecidedRounding`] ("`UndecidedRounding`
+//!   remains for an enclosure that still holds two boundaries at 512
+//!   bits").
+//!
+//! The rule is wrong only for a value within about `2⁻⁵⁰⁰` of a boundary
+//! without lying on it, which `docs/G75.md` accepts; the fixed-point engine
+//! applies the same rule at the same precision.
 //!
 //! # Trigonometry
 //!
@@ -62,7 +85,9 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 pub const FIRST_PRECISION: u32 = 64;
 
 /// The highest precision (fraction bits): a decision still open here is
-/// refused with [`CycleError::UndecidedRounding`] (`docs/G75.md` §6).
+/// made by the boundary rule R-G75TIE (`docs/G75.md` §6), or refused with
+/// [`CycleError::UndecidedRounding`] when the enclosure holds two
+/// boundaries or more.
 pub const MAX_PRECISION: u32 = 512;
 
 /// Guard bits of the trigonometric series beyond the requested precision.
@@ -391,6 +416,38 @@ impl Interval {
             None
         }
     }
+
+    /// The only integer in the closed interval, if there is exactly one
+    /// (R-G75TIE: one boundary, strictly inside or on an end).
+    fn only_integer(&self) -> Option<BigInt> {
+        let d = pow2(self.bits);
+        let (first, last) = (div_ceil(&self.lo, &d), self.hi.div_floor(&d));
+        (first == last).then_some(first)
+    }
+
+    /// R-G75TIE for `floor` and `ceil`: a value whose enclosure holds
+    /// exactly one integer `k` is taken to be `k`, and `floor(k) = ceil(k)
+    /// = k`; `None` for two integers or more.
+    fn tie_integer(&self) -> Option<BigInt> {
+        self.only_integer()
+    }
+
+    /// R-G75TIE for `nearest`: a value whose enclosure holds exactly one
+    /// half-integer `k + 1/2` is taken to be `k + 1/2`, and `floor(k + 1/2
+    /// + 1/2) = k + 1` (a tie goes up); `None` for two half-integers or
+    /// more. `k + 1/2 ∈ [lo, hi]` exactly when `k ∈ [lo − 1/2, hi − 1/2]`.
+    fn tie_nearest(&self) -> Option<BigInt> {
+        let half = pow2(self.bits) >> 1_u32;
+        let shifted = Interval { lo: &self.lo - &half, hi: &self.hi - &half, bits: self.bits };
+        shifted.only_integer().map(|k| k + 1)
+    }
+
+    /// R-G75TIE for a sign: an enclosure that holds 0 (the only boundary
+    /// of a sign) is taken to be 0; `None` when it does not hold 0 (then
+    /// [`Interval::sign`] decides).
+    fn tie_sign(&self) -> Option<Ordering> {
+        (!self.lo.is_positive() && !self.hi.is_negative()).then_some(Ordering::Equal)
+    }
 }
 
 /// A trigonometric function of an angle of 0° to 90°.
@@ -713,65 +770,88 @@ impl Real {
     }
 
     /// Decides `exact(r)` or, for an expression, `interval(enclosure)` at
-    /// 64, 128, 256 and 512 fraction bits, the first that decides.
+    /// 64, 128, 256 and 512 fraction bits, the first that decides; when
+    /// none does, `tie(the 512-bit enclosure)` (R-G75TIE).
+    ///
+    /// R-G75TIE (`docs/G75.md` §6): the boundary rule applies only after
+    /// the whole precision ladder, to the 512-bit enclosure, and only when
+    /// that enclosure holds exactly one boundary (`tie` returns `None` for
+    /// two or more); otherwise, and when there is no 512-bit enclosure (a
+    /// divisor's still contains 0), the decision is refused.
     fn decide<T>(
         &self,
         exact: impl Fn(&Rational) -> T,
         interval: impl Fn(&Interval) -> Option<T>,
+        tie: impl Fn(&Interval) -> Option<T>,
     ) -> Result<T, CycleError> {
         if let Some(r) = self.as_exact() {
             return Ok(exact(r));
         }
         let mut bits = FIRST_PRECISION;
+        let mut last = None;
         while bits <= MAX_PRECISION {
-            if let Some(v) = self.enclose(bits).as_ref().and_then(&interval) {
+            last = self.enclose(bits);
+            if let Some(v) = last.as_ref().and_then(&interval) {
                 return Ok(v);
             }
             bits *= 2;
         }
-        Err(CycleError::UndecidedRounding)
+        // R-G75TIE: still undecided at 512 fraction bits; one boundary in
+        // the enclosure: the value lies on it. Two or more: refused.
+        last.as_ref().and_then(tie).ok_or(CycleError::UndecidedRounding)
     }
 
-    /// `floor(self)`, decided exactly (`docs/G75.md` §6).
+    /// `floor(self)`, decided exactly (`docs/G75.md` §6); a value whose
+    /// 512-bit enclosure still holds exactly one integer `k` is taken to be
+    /// `k` (R-G75TIE).
     ///
     /// # Errors
     ///
-    /// [`CycleError::UndecidedRounding`] when 512 fraction bits do not
-    /// decide it.
+    /// [`CycleError::UndecidedRounding`] when the 512-bit enclosure holds
+    /// two integers or more (or a divisor's enclosure still contains 0).
     pub fn floor(&self) -> Result<BigInt, CycleError> {
-        self.decide(Rational::floor, Interval::floor)
+        self.decide(Rational::floor, Interval::floor, Interval::tie_integer)
     }
 
-    /// `ceil(self)`, decided exactly.
+    /// `ceil(self)`, decided exactly; a value whose 512-bit enclosure still
+    /// holds exactly one integer `k` is taken to be `k` (R-G75TIE).
     ///
     /// # Errors
     ///
     /// As [`Real::floor`].
     pub fn ceil(&self) -> Result<BigInt, CycleError> {
-        self.decide(Rational::ceil, Interval::ceil)
+        self.decide(Rational::ceil, Interval::ceil, Interval::tie_integer)
     }
 
     /// `floor(self + 1/2)`, the nearest integer with ties upwards, decided
-    /// exactly.
+    /// exactly; a value whose 512-bit enclosure still holds exactly one
+    /// half-integer `k + 1/2` is taken to be it and rounds to `k + 1`
+    /// (R-G75TIE).
     ///
     /// # Errors
     ///
-    /// As [`Real::floor`].
+    /// [`CycleError::UndecidedRounding`] when the 512-bit enclosure holds
+    /// two half-integers or more (or a divisor's enclosure still contains
+    /// 0).
     pub fn nearest(&self) -> Result<BigInt, CycleError> {
-        self.decide(Rational::nearest, Interval::nearest)
+        self.decide(Rational::nearest, Interval::nearest, Interval::tie_nearest)
     }
 
-    /// The sign of the number (its ordering against 0), decided exactly.
+    /// The sign of the number (its ordering against 0), decided exactly; a
+    /// value whose 512-bit enclosure still holds 0 is taken to be 0
+    /// (R-G75TIE: an irrational-looking expression that is exactly 0).
     ///
     /// # Errors
     ///
-    /// [`CycleError::UndecidedRounding`] when 512 fraction bits do not
-    /// decide it (an irrational-looking expression that is exactly 0).
+    /// [`CycleError::UndecidedRounding`] only when there is no 512-bit
+    /// enclosure (a divisor's enclosure still contains 0): a sign has one
+    /// boundary.
     pub fn sign(&self) -> Result<Ordering, CycleError> {
-        self.decide(Rational::sign, Interval::sign)
+        self.decide(Rational::sign, Interval::sign, Interval::tie_sign)
     }
 
-    /// `self` against `other`, decided exactly (the sign of the difference).
+    /// `self` against `other`, decided exactly (the sign of the difference,
+    /// with R-G75TIE: equal when 512 bits cannot tell them apart).
     ///
     /// # Errors
     ///

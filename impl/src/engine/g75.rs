@@ -22,10 +22,12 @@
 //!    `i64` (reading R-G75RANGE).
 //!
 //! [`CycleError::UndecidedRounding`] comes from the first value that cannot
-//! be decided, values being computed in the order: the corner comparisons,
-//! the last layer's plunge range, layer 1's, `y_top`, the other layers'
-//! (while counting pecks), the rough contour (J0, J1), the finishing
-//! contour (J1, J2). Values that the chosen J does not use are not computed
+//! be decided even with reading R-G75TIE (below): only an enclosure that
+//! still holds two rounding boundaries at 512 bits (a poisoned one, which
+//! the magnitudes below rule out). Values are computed in the order: the
+//! corner comparisons, the last layer's plunge range, layer 1's, `y_top`,
+//! the other layers' (while counting pecks), the rough contour (J0, J1),
+//! the finishing contour (J1, J2). Values that the chosen J does not use are not computed
 //! (reading R-G75NEED): J0 never computes the finishing points, J2 never
 //! the rough contour.
 //!
@@ -37,10 +39,22 @@
 //! interval does not decide the rounding, again from the same formula at
 //! 512 fraction bits (reading R-G75ROUND). Exact inputs (right angles, 45°,
 //! the other exact cases of §6) give exact point intervals, decided
-//! exactly. The formulas are evaluated as written — in particular
-//! `((Y − Δu − y)/f)·cot(a/2)` is 0 exactly at `y = Y − Δu` — so an
-//! expression is exact in this engine exactly when it is exact in the
-//! reference model.
+//! exactly.
+//!
+//! R-G75TIE: a value still undecided at 512 bits whose enclosure holds
+//! exactly one rounding boundary (an integer for floor and ceil, a
+//! half-integer for nearest, 0 for a sign; inside or on an end) is taken
+//! to lie on it: `floor(k) = ceil(k) = k`, the nearest of `k + 1/2` is
+//! `k + 1`, the sign is 0 ([`Iv::round_tie`], [`Iv::sign_tie`]). This is
+//! how identities among irrational values are decided (a round on a 60°
+//! flank, `tan 30°·sin 60° = 1/2`; a round whose `f·ρ` equals Δu,
+//! `y_K1 = Y − 2Δu`). The rule is applied only to the 512-bit enclosure,
+//! never to the 128-bit one, in `Eval::round`, `Eval::sign` and
+//! `plunges_at` alike.
+//!
+//! The formulas are evaluated as written — in particular `((Y − Δu −
+//! y)/f)·cot(a/2)` is 0 exactly at `y = Y − Δu` — so an expression is exact
+//! in this engine exactly when it is exact in the reference model.
 //!
 //! # Magnitudes
 //!
@@ -63,9 +77,10 @@
 //! per layer while counting pecks (at most `MAX_PECKS` layers, since every
 //! layer has at least one peck). Per move: O(1); a layer change evaluates
 //! the layer's plunge range again (a handful of 256-bit interval products;
-//! in the practically impossible case that 128 bits do not decide it, the
-//! 512-bit context is rebuilt, a bounded amount of work). A [`G75Moves`] is
-//! a fixed-size value (2 088 bytes on 64-bit targets: the precomputed tail
+//! when 128 bits do not decide it, in practice only for a boundary exactly
+//! on an integer (R-G75TIE), the 512-bit context is rebuilt once for that
+//! layer, a bounded amount of work). A [`G75Moves`] is a fixed-size value
+//! (2 088 bytes on 64-bit targets: the precomputed tail
 //! of at most 22 moves and the 128-bit enclosures of the region's
 //! boundaries; the test `size_of_the_iterator` bounds it).
 //!
@@ -90,11 +105,14 @@
 //!   is the last layer's `A_Mf ≥ A_M1` itself (at `y = Y − Δu`, `left` is
 //!   K2's formula and `right` K3's); `K1.u ≤ K2.u`, `K4.u ≥ K3.u` and
 //!   `y_K1, y_K4 ≤ Y − Δu` hold for every cycle (the chords meet the
-//!   flanks above the bottom). `y_K1` (`y_K4`) may lie above `y_top` when
-//!   the corner covers most of its flank and Δu > 0; the contour then goes
-//!   up into the air at R0 → K1, which is allowed.
+//!   flanks above the bottom). `y_K1` (`y_K4`) may lie at or above
+//!   `y_top` when the corner covers most of its flank and Δu > 0; then
+//!   (§8) K1 (K4) is not a vertex and R0 (R3) lies on the chord.
+//! * R-G75ARCZERO: an arc whose rounded end is its start is left out like
+//!   any empty move (`TailBuilder::go`), centre and all.
 //! * R-G75PROFILE: [`groove_profile`] checks `validate()` and the corners
-//!   only, keeps every point (none is left out as empty), and range-checks
+//!   only, keeps every point (none is left out as empty; K1 and K4 are
+//!   vertices only below `y_top`, as in the rough contour), and range-checks
 //!   its own points in its order.
 
 use core::cmp::Ordering;
@@ -364,11 +382,9 @@ impl<const N: usize> Ctx<N> {
             Q::Y3 => self.y3,
             Q::U3 => self.u3,
             Q::YK1 => Ctx::y_k(g, &r.t3, &self.sin_a, &self.cos_a),
-            Q::K1 => r.flank_a(g, &Ctx::y_k(g, &r.t3, &self.sin_a, &self.cos_a)),
             Q::K2 => r.p1u.add(&r.t3).add(&int(g.dw)),
             Q::K3 => r.p1u.add(&int(g.width)).sub(&r.t4).sub(&int(g.dw)),
             Q::YK4 => Ctx::y_k(g, &r.t4, &self.sin_b, &self.cos_b),
-            Q::K4 => r.flank_b(g, &Ctx::y_k(g, &r.t4, &self.sin_b, &self.cos_b)),
             Q::P1U => r.p1u,
             Q::P2U => r.p1u.add(&int(g.width)),
             Q::T1sU => self.t1.mul(&self.cos_l).neg(),
@@ -428,16 +444,12 @@ enum Q {
     U3,
     /// `Y − Δu − f·t3·sin a − Δu·cos a`.
     YK1,
-    /// `flankA_r` at the exact `YK1`.
-    K1,
     /// `(Y/f)·cot a + t3 + Δw`.
     K2,
     /// `(Y/f)·cot a + d − t4 − Δw`.
     K3,
     /// `Y − Δu − f·t4·sin b − Δu·cos b`.
     YK4,
-    /// `flankB_r` at the exact `YK4`.
-    K4,
     /// P1.u.
     P1U,
     /// P2.u.
@@ -489,8 +501,8 @@ enum Q {
 // ---------------------------------------------------------------------------
 
 /// Decides roundings and signs of the cycle's quantities (R-G75ROUND): at
-/// 128 fraction bits, then, if undecided, at 512 (the 512-bit context is
-/// built at most once per expansion).
+/// 128 fraction bits, then, if undecided, at 512 with R-G75TIE (the 512-bit
+/// context is built at most once per expansion).
 struct Eval {
     g: Geo,
     fast: Ctx<FAST>,
@@ -507,13 +519,15 @@ impl Eval {
         self.slow.get_or_insert_with(|| Ctx::new(g))
     }
 
-    /// `q` rounded by `r`.
+    /// `q` rounded by `r`: decided at 128 bits, else at 512 bits with
+    /// reading R-G75TIE (a value whose 512-bit enclosure holds exactly one
+    /// rounding boundary lies on it).
     fn round(&mut self, q: Q, r: Rounding) -> Result<i128, CycleError> {
         if let Some(v) = self.fast.eval(&self.g, q).round(r) {
             return Ok(v);
         }
         let g = self.g;
-        self.slow().eval(&g, q).round(r).ok_or(CycleError::UndecidedRounding)
+        self.slow().eval(&g, q).round_tie(r).ok_or(CycleError::UndecidedRounding)
     }
 
     /// `floor(q)`.
@@ -531,13 +545,14 @@ impl Eval {
         self.round(q, Rounding::Nearest)
     }
 
-    /// The sign of `q`.
+    /// The sign of `q`: decided at 128 bits, else at 512 bits with reading
+    /// R-G75TIE (a 512-bit enclosure that holds 0 is taken to be 0).
     fn sign(&mut self, q: Q) -> Result<Ordering, CycleError> {
         if let Some(v) = self.fast.eval(&self.g, q).sign() {
             return Ok(v);
         }
         let g = self.g;
-        self.slow().eval(&g, q).sign().ok_or(CycleError::UndecidedRounding)
+        self.slow().eval(&g, q).sign_tie().ok_or(CycleError::UndecidedRounding)
     }
 
     /// §3: the corners must fit their edges (flank A, bottom, flank B).
@@ -564,21 +579,28 @@ impl Eval {
 }
 
 /// The plunge range of the layer ending at `y`, for the iterator: the same
-/// decisions as [`Eval::plunges`] (the fast context's region, then, if
-/// undecided, a 512-bit context rebuilt from the words). `None` only if
-/// undecided at 512 bits, which [`expand_g75`] has excluded for every layer.
+/// decisions as [`Eval::plunges`], each end on its own (the fast context's
+/// region, then, if undecided, a 512-bit context rebuilt from the words,
+/// at most once, with reading R-G75TIE). `None` only if undecided at 512
+/// bits, which [`expand_g75`] has excluded for every layer.
 fn plunges_at(g: &Geo, fast: &Region<FAST>, y: i64) -> Option<(i128, i128)> {
     let yv = Iv::int(i128::from(y));
-    let w = i128::from(g.w);
-    let decide = |left: Iv<FAST>, right: Iv<FAST>| {
-        Some((left.round(Rounding::Ceil)?, right.round(Rounding::Floor)? - w))
+    let mut slow: Option<Region<SLOW>> = None;
+    let first = match fast.left(g, &yv).round(Rounding::Ceil) {
+        Some(v) => v,
+        None => slow
+            .get_or_insert_with(|| Ctx::<SLOW>::new(g).r)
+            .left(g, &Iv::int(i128::from(y)))
+            .round_tie(Rounding::Ceil)?,
     };
-    if let Some(v) = decide(fast.left(g, &yv), fast.right(g, &yv)) {
-        return Some(v);
-    }
-    let slow = Ctx::<SLOW>::new(g).r;
-    let yv = Iv::int(i128::from(y));
-    Some((slow.left(g, &yv).round(Rounding::Ceil)?, slow.right(g, &yv).round(Rounding::Floor)? - w))
+    let last = match fast.right(g, &yv).round(Rounding::Floor) {
+        Some(v) => v,
+        None => slow
+            .get_or_insert_with(|| Ctx::<SLOW>::new(g).r)
+            .right(g, &Iv::int(i128::from(y)))
+            .round_tie(Rounding::Floor)?,
+    };
+    Some((first, last - i128::from(g.w)))
 }
 
 // ---------------------------------------------------------------------------
@@ -698,7 +720,14 @@ struct RoughLocal {
 }
 
 /// R0, K1 and K2 (or Q1), K3 and K4 (or Q2), R3, rounded into the region
-/// (§6), before subtracting w. At most 6 vertices.
+/// (§6, §8 step 9), before subtracting w. At most 6 vertices.
+///
+/// R0 and R3 are `left` and `right` at `y_top` (R-G75MAXMIN: the chord
+/// where it is the boundary). R-G75K1Y: K1's u is flank A's at the integer
+/// `y_K1` (K4's flank B's at `y_K4`), rounded in; K1 is a vertex only when
+/// `y_K1 > y_top` (K4 when `y_K4 > y_top`): otherwise the chord is the
+/// boundary over the whole depth and R0 (R3) already lies on it. K2 and K3
+/// are vertices whenever r3, r4 are programmed.
 fn rough_vertices(ev: &mut Eval, y_top: i128) -> Result<([RoughLocal; 6], usize), CycleError> {
     let g = ev.g;
     let bottom = i128::from(g.depth - g.du);
@@ -710,10 +739,13 @@ fn rough_vertices(ev: &mut Eval, y_top: i128) -> Result<([RoughLocal; 6], usize)
             n += 1;
         }
     };
-    push((ev.ceil(Q::FlankA(y_top))?, y_top), false);
+    // R0 = (ceil(left(y_top)), y_top).
+    push((ev.ceil(Q::Left(y_top))?, y_top), false);
     if g.size(corner::R3) > 0 {
         let y_k1 = ev.floor(Q::YK1)?;
-        push((ev.ceil(Q::K1)?, y_k1), false);
+        if y_k1 > y_top {
+            push((ev.ceil(Q::FlankA(y_k1))?, y_k1), false);
+        }
         push((ev.ceil(Q::K2)?, bottom), false);
     } else {
         push((ev.ceil(Q::FlankA(bottom))?, bottom), false);
@@ -721,11 +753,14 @@ fn rough_vertices(ev: &mut Eval, y_top: i128) -> Result<([RoughLocal; 6], usize)
     if g.size(corner::R4) > 0 {
         push((ev.floor(Q::K3)?, bottom), true);
         let y_k4 = ev.floor(Q::YK4)?;
-        push((ev.floor(Q::K4)?, y_k4), true);
+        if y_k4 > y_top {
+            push((ev.floor(Q::FlankB(y_k4))?, y_k4), true);
+        }
     } else {
         push((ev.floor(Q::FlankB(bottom))?, bottom), true);
     }
-    push((ev.floor(Q::FlankB(y_top))?, y_top), true);
+    // R3 = (floor(right(y_top)) − w, y_top), w subtracted by the caller.
+    push((ev.floor(Q::Right(y_top))?, y_top), true);
     Ok((v, n))
 }
 
@@ -982,7 +1017,8 @@ fn narrow(v: i128) -> i64 {
 /// [`CycleError::CornerTooLarge`], [`CycleError::GrooveNarrowerThanTool`],
 /// [`CycleError::TooManyPecks`], [`CycleError::OutOfRange`] for a move
 /// coordinate; [`CycleError::UndecidedRounding`] where a needed value cannot
-/// be decided at 512 fraction bits.
+/// be decided at 512 fraction bits even by R-G75TIE (an enclosure holding
+/// two rounding boundaries).
 pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     c.validate()?;
     let g = Geo::new(c);
@@ -1402,7 +1438,9 @@ pub struct GrooveProfile {
     pub finish_len: usize,
     /// The roughing region's vertices, rounded into the region, before
     /// subtracting the tool width: R0, K1 and K2 (or Q1), K3 and K4 (or
-    /// Q2), R3. Only the first `rough_len` entries are meaningful.
+    /// Q2), R3, with K1 (K4) only when `y_K1 > y_top` (`y_K4 > y_top`), as
+    /// in the rough contour (§8 step 9). Only the first `rough_len` entries
+    /// are meaningful.
     pub rough: [Point; 6],
     /// Number of points in [`GrooveProfile::rough`] (4 to 6).
     pub rough_len: usize,
@@ -1920,56 +1958,208 @@ mod tests {
         }
     }
 
-    /// Undecidable roundings are refused: with A = 60° and a round r3, the
-    /// depth of K1 is `Y − Δu − f·ρ·tan 30°·sin 60° − Δu·cos 60°`, an
-    /// integer computed from irrational factors (tan 30°·sin 60° = 1/2), so
-    /// no enclosure decides its floor (docs/G75.md §6 says refuse).
+    /// R-G75TIE on the slope example (examples/gsk980-g75-slope.nc) at IS-B:
+    /// with A = 60° and a round r3 the depth of K1 is `Y − Δu − f·ρ·tan 30°·
+    /// sin 60° − Δu·cos 60° = 9000 − 300 − 2·400·(1/2) − 300·(1/2) = 8150`,
+    /// an integer computed from irrational factors (tan 30°·sin 60° = 1/2)
+    /// that no enclosure decides; the second layer's right boundary
+    /// `flankB_r(6000) = 4500·cot 60° + 6000 + 1500·cot 75° − 100 = 1500√3 +
+    /// 5900 + 1500(2 − √3) = 8900` is another. Both are taken to lie on the
+    /// integer, and the cycle expands.
     #[test]
-    fn undecidable_rounding_is_refused() {
-        // The slope example (examples/gsk980-g75-slope.nc) at IS-B.
+    fn tie_values_are_decided() {
         let c = slope_example();
-        // 9000 − 300 − 2·400·(1/2) − 300·(1/2) = 8150 exactly.
-        assert_eq!(expand_g75(&c).err(), Some(CycleError::UndecidedRounding));
-        // J2 does not need K1: it expands.
-        assert!(expand_g75(&G75Cycle { path: PathType::Finish, ..c }).is_ok());
-        // U0.301 moves K1's depth off the integer (8148.5), but then the
-        // second layer's right boundary is exactly an integer too:
-        // flankB_r(6000) = 4500·cot 60° + 6000 + 1500·cot 75° − 100 = 1500√3 +
-        // 5900 + 1500(2 − √3) = 8900.
-        assert_eq!(
-            expand_g75(&G75Cycle { allowance_x: 301, ..c }).err(),
-            Some(CycleError::UndecidedRounding)
-        );
-        // B74 removes that coincidence.
-        assert!(expand_g75(&G75Cycle { allowance_x: 301, flank_b: 740_000, ..c }).is_ok());
+        let g = Geo::new(&c);
+        // The 512-bit enclosures alone leave both floors open ...
+        let slow = Ctx::<SLOW>::new(&g);
+        assert_eq!(slow.eval(&g, Q::YK1).round(Rounding::Floor), None);
+        assert_eq!(slow.eval(&g, Q::Right(6_000)).round(Rounding::Floor), None);
+        // ... and R-G75TIE decides them on the boundary.
+        let mut ev = Eval::new(g);
+        assert_eq!(ev.floor(Q::YK1), Ok(8_150));
+        assert_eq!(ev.floor(Q::Right(6_000)), Ok(8_900));
+        assert_eq!(ev.plunges(6_000), Ok((1_833, 6_400)));
+        assert_eq!(plunges_at(&g, &ev.fast.r, 6_000), Some((1_833, 6_400)));
+        // U0.301 moves K1's depth off the integer (8148.5), the second
+        // layer's boundary stays 8900.
+        let moves: Vec<Move> = expand_g75(&G75Cycle { allowance_x: 301, ..c }).unwrap().collect();
+        // Layer 2 (from y = 3000): plunges at 1833, 3833, 5833, then 6400.
+        assert!(moves
+            .iter()
+            .any(|m| m.role == Role::Step(Plunge { layer: 2, number: 4 })
+                && m.to == Point::new(77_000, -6_400)));
+        // The rounded sign of an exact zero enclosed by irrational terms:
+        // tan 30°·sin 60° − 1/2.
+        let zero = crate::engine::real::tan::<SLOW>(600_000)
+            .mul(&crate::engine::real::sin::<SLOW>(1_200_000))
+            .sub(&Iv::half());
+        assert_eq!(zero.sign(), None);
+        assert_eq!(zero.sign_tie(), Some(Ordering::Equal));
     }
 
-    /// The commonest undecidable family: a round bottom corner whose radius
-    /// (in X-word units) equals the X allowance. Then `f·t3·sin a =
-    /// f·ρ·tan(a/2)·sin a = f·ρ·(1 − cos a)`, so the depth of K1 is
-    /// `Y − Δu − f·ρ + (f·ρ − Δu)·cos a = Y − 2Δu`, an integer, at every
-    /// angle; docs/G75.md §6 makes both engines refuse it.
+    /// The slope example expands (R-G75TIE), with the rough contour of §8
+    /// step 9 worked out from the formulas (mpmath, 80 digits): `y_top =
+    /// floor(y3) = floor(−3628.815…) = −3629`; R0 = (ceil(left(−3629)) =
+    /// ceil(−947.602…), −3629) = (−947, −3629) (flank A: the chord of r3
+    /// meets it at y_K1 = 8150 > y_top); K1 = (ceil(flankA_r(8150)) =
+    /// ceil(4075·cot 60° + 100) = ceil(2452.702…), 8150); K2 =
+    /// (ceil(4500·cot 60° + 400·tan 30° + 100) = ceil(2929.016…), 8700); K3 =
+    /// (floor(8191.145…), 8700); y_K4 = floor(8029.409…) = 8029, K4 =
+    /// (floor(flankB_r(8029)) = floor(8628.165…), 8029); R3 =
+    /// (floor(right(−3629)) = floor(10190.041…), −3629). Absolute: X = 80000
+    /// − y, Z = −u, the far side less w = 2500.
     #[test]
-    fn round_corner_equal_to_the_allowance_is_undecidable() {
+    fn slope_example_expands() {
+        let c = slope_example();
+        let moves: Vec<Move> = expand_g75(&c).unwrap().collect();
+        let contour: Vec<(Motion, Point)> =
+            moves.iter().filter(|m| m.role == Role::RoughContour).map(|m| (m.motion, m.to)).collect();
+        assert_eq!(
+            contour,
+            [
+                (Motion::Rapid, Point::new(83_629, 947)),
+                (Motion::Feed, Point::new(71_850, -2_453)),
+                (Motion::Feed, Point::new(71_300, -2_930)),
+                (Motion::Feed, Point::new(71_300, -8_191 + 2_500)),
+                (Motion::Feed, Point::new(71_971, -8_628 + 2_500)),
+                (Motion::Feed, Point::new(83_629, -10_190 + 2_500)),
+                // Back to A11 = (ceil(left(3000)) = ceil(966.025…), y_top).
+                (Motion::Rapid, Point::new(83_629, -967)),
+            ]
+        );
+        let p = groove_profile(&c).unwrap();
+        assert_eq!(
+            p.roughing(),
+            [
+                Point::new(83_629, 947),
+                Point::new(71_850, -2_453),
+                Point::new(71_300, -2_930),
+                Point::new(71_300, -8_191),
+                Point::new(71_971, -8_628),
+                Point::new(83_629, -10_190),
+            ]
+        );
+        // Three layers (V3 over 8.7 mm of diameter): every plunge retracts to
+        // its layer's top (y_top, 3000, 6000); the path ends at `from`.
+        let tops: Vec<i64> =
+            moves.iter().filter(|m| matches!(m.role, Role::PlungeRetract(_))).map(|m| m.to.x).collect();
+        assert!(tops.iter().all(|x| [83_629, 77_000, 74_000].contains(x)), "{tops:?}");
+        assert!(tops.contains(&74_000));
+        assert_eq!(moves.last().map(|m| m.to), Some(c.from));
+    }
+
+    /// A round r3 on a 60° flank whose K1 depth is exactly an integer, worked
+    /// by hand: `G75.1 X50 Z0 H-10 D-6 A60` (B90, L0), `U0.2 W0.1 D1 P0010`
+    /// (r3 a round of ρ = 1000), J0, IS-B diameter. t3 = 1000·tan 30° =
+    /// 1000/√3, `f·t3·sin 60° = 2·(1000/√3)·(√3/2) = 1000`, so `y_K1 = 10000
+    /// − 200 − 1000 − 200·cos 60° = 8700` exactly (R-G75TIE: taken on the
+    /// integer). y_top = 0 (L = 0) < 8700, so K1 is a vertex: K1 =
+    /// (ceil(flankA_r(8700)), 8700) = (ceil(4350/√3 + 100), 8700) =
+    /// (ceil(2611.473…), 8700) = (2612, 8700). R0 = (ceil(left(0)), 0):
+    /// flankA_r(0) = 100, chord3_r(0) = 5000/√3 + 1000/√3 + 100 − 4900·√3 <
+    /// 0, so (100, 0). K2 = (ceil(6000/√3 + 100), 9800) = (ceil(3564.101…),
+    /// 9800) = (3565, 9800). No r4: Q2 = (floor(5000/√3 + 6000 − 100), 9800)
+    /// = (floor(8786.751…), 9800) = (8786, 9800), and R3 = (8786, 0) (cot 90°
+    /// = 0). Absolute: X = 50000 − y, Z = −u.
+    #[test]
+    fn sixty_degree_round_with_an_integer_k1_depth() {
+        let c = G75Cycle {
+            units: Units::IS_B_METRIC,
+            x_mode: XMode::Diameter,
+            from: Point::new(52_000, 1_000),
+            start: Point::new(50_000, 0),
+            peck: 2_000,
+            step: 1_500,
+            depth: -10_000,
+            width: -6_000,
+            flank_a: 600_000,
+            flank_b: 900_000,
+            slope: 0,
+            retract: 200,
+            layer: None,
+            allowance_x: 200,
+            allowance_z: 100,
+            tool_width: None,
+            path: PathType::Rough,
+            corners: [
+                Corner::SHARP,
+                Corner::SHARP,
+                Corner { size: 1_000, kind: CornerKind::Round },
+                Corner::SHARP,
+            ],
+        };
+        let g = Geo::new(&c);
+        // Undecided at 512 bits without the rule.
+        assert_eq!(Ctx::<SLOW>::new(&g).eval(&g, Q::YK1).round(Rounding::Floor), None);
+        let p = groove_profile(&c).unwrap();
+        assert_eq!(
+            p.roughing(),
+            [
+                Point::new(50_000, -100),
+                Point::new(41_300, -2_612),
+                Point::new(40_200, -3_565),
+                Point::new(40_200, -8_786),
+                Point::new(50_000, -8_786),
+            ]
+        );
+        let moves: Vec<Move> = expand_g75(&c).unwrap().collect();
+        let contour: Vec<Point> =
+            moves.iter().filter(|m| m.role == Role::RoughContour).map(|m| m.to).collect();
+        // A11 = (ceil(left(9800)), 0) = (3565, 0): rapid to R0, the feeds, back.
+        assert_eq!(
+            contour,
+            [
+                Point::new(50_000, -100),
+                Point::new(41_300, -2_612),
+                Point::new(40_200, -3_565),
+                Point::new(40_200, -8_786),
+                Point::new(50_000, -8_786),
+                Point::new(50_000, -3_565),
+            ]
+        );
+    }
+
+    /// The commonest tie family: a round bottom corner whose radius (in
+    /// X-word units) equals the X allowance. Then `f·t3·sin a = f·ρ·tan(a/2)·
+    /// sin a = f·ρ·(1 − cos a)`, so the depth of K1 is `Y − Δu − f·ρ +
+    /// (f·ρ − Δu)·cos a = Y − 2Δu`, an integer, at every angle; R-G75TIE
+    /// takes it on the integer.
+    #[test]
+    fn round_corner_equal_to_the_allowance_is_decided() {
         // The golden square groove with A80: U0.8 and D0.4 (f·ρ = 800 = Δu).
         let c = G75Cycle { flank_a: 800_000, allowance_x: 800, ..square() };
-        assert_eq!(expand_g75(&c).err(), Some(CycleError::UndecidedRounding));
-        // At A90 every value is exact: decided.
+        let g = Geo::new(&c);
+        assert_eq!(Ctx::<SLOW>::new(&g).eval(&g, Q::YK1).round(Rounding::Floor), None);
+        // y_K1 = 6000 − 1600 = 4400; K1 = (ceil(2200·cot 80° + 200) =
+        // ceil(587.919…), 4400); y_K4 = 6000 − 800 − 600 − 800·0 = 4600 (B90,
+        // exact). R0 (200, 0), K2 (ceil(1064.620…), 5200), K3
+        // (floor(8028.980…), 5200), K4 and R3 at floor(8328.980…) (mpmath).
+        let p = groove_profile(&c).unwrap();
+        assert_eq!(
+            p.roughing(),
+            [
+                Point::new(30_000, -200),
+                Point::new(25_600, -588),
+                Point::new(24_800, -1_065),
+                Point::new(24_800, -8_028),
+                Point::new(25_400, -8_328),
+                Point::new(30_000, -8_328),
+            ]
+        );
+        assert!(expand_g75(&c).is_ok());
         assert!(expand_g75(&G75Cycle { flank_a: 900_000, ..c }).is_ok());
-        // U0.799: irrational, decided.
         assert!(expand_g75(&G75Cycle { allowance_x: 799, ..c }).is_ok());
-        // J2 does not compute K1.
         assert!(expand_g75(&G75Cycle { path: PathType::Finish, ..c }).is_ok());
     }
 
-    /// K4's u is `floor(flankB_r(y))` at the exact real `y = Y − Δu − f·t4·sin b
-    /// − Δu·cos b`, not at its floor (docs/G75.md §8: "K4 = (floor(flankB_r(
-    /// y_K4 exact)) − w, y_K4)"). Here `y = 80 + 16·cos 15° = 95.4548…`,
-    /// `flankB_r(y) = 48·cot 23.7156° + 89 + (0.5452…/2)·cot 15° = 199.2835…`
-    /// (mpmath, 60 digits), so K4 = (199, 95); at the floored y = 95 the flank
-    /// would give floor(200.1322…) = 200 instead.
+    /// R-G75K1Y: K4's u is `floor(flankB_r(y_K4))` at the integer `y_K4 =
+    /// floor(Y − Δu − f·t4·sin b − Δu·cos b)`, not at the exact real depth.
+    /// Here the exact depth is `80 + 16·cos 15° = 95.4548…`, so y_K4 = 95 and
+    /// `flankB_r(95) = 48·cot 23.7156° + 89 + (1/2)·cot 15° = 200.1322…`
+    /// (mpmath, 60 digits): K4 = (200, 95); at the exact depth the flank
+    /// would give floor(199.2835…) = 199 instead.
     #[test]
-    fn k_vertices_use_the_exact_depth() {
+    fn k_vertices_use_the_integer_depth() {
         let c = G75Cycle {
             units: Units::IS_B_METRIC,
             x_mode: XMode::Diameter,
@@ -1996,19 +2186,118 @@ mod tests {
             ],
         };
         let p = groove_profile(&c).unwrap();
-        // R0, Q1, K3, K4, R3: K4 = (199, 95) → X = 50000 − 95, Z = 1000 − 199.
-        assert_eq!(p.roughing()[3], Point::new(49_905, 801));
-        // In the moves, less w = 53: Z = 1000 − 146.
+        // R0, Q1, K3, K4, R3: K4 = (200, 95) → X = 50000 − 95, Z = 1000 − 200.
+        assert_eq!(p.roughing()[3], Point::new(49_905, 800));
+        // In the moves, less w = 53: Z = 1000 − 147.
         let moves: Vec<Move> = expand_g75(&c).unwrap().collect();
-        assert!(moves.iter().any(|m| m.role == Role::RoughContour && m.to == Point::new(49_905, 854)));
+        assert!(moves.iter().any(|m| m.role == Role::RoughContour && m.to == Point::new(49_905, 853)));
+    }
+
+    /// R-G75ARCZERO: a round whose rounded end is its start is left out like
+    /// any empty move. At A = 0.0001° a round r3 of ρ = 1 has `t3 =
+    /// tan(0.00005°) ≈ 8.7·10⁻⁷`, so T3a and T3b both round to (P1.u, Y) with
+    /// P1.u = `1·cot 0.0001°` = 572957.795… → 572958.
+    #[test]
+    fn empty_arc_is_dropped() {
+        let c = G75Cycle {
+            units: Units::IS_B_METRIC,
+            x_mode: XMode::Diameter,
+            from: Point::new(110, 10),
+            start: Point::new(100, 0),
+            peck: 2,
+            step: 2,
+            depth: -2,
+            width: 10,
+            flank_a: 1,
+            flank_b: 900_000,
+            slope: 0,
+            retract: 0,
+            layer: None,
+            allowance_x: 0,
+            allowance_z: 0,
+            tool_width: None,
+            path: PathType::Finish,
+            corners: [
+                Corner::SHARP,
+                Corner::SHARP,
+                Corner { size: 1, kind: CornerKind::Round },
+                Corner::SHARP,
+            ],
+        };
+        // The profile keeps the round (R-G75PROFILE), of zero length.
+        let p = groove_profile(&c).unwrap();
+        let f = p.finishing();
+        assert_eq!(f[1].at, Point::new(98, 572_958));
+        assert_eq!(f[2].at, f[1].at);
+        assert!(matches!(f[2].segment, ProfileSegment::Arc { .. }));
+        // The moves do not: S, P1 (= T3a = T3b), P2, P3.
+        let moves: Vec<Move> = expand_g75(&c).unwrap().collect();
+        assert!(moves.iter().all(|m| !matches!(m.motion, Motion::Arc { .. })));
+        let feeds: Vec<Point> = moves.iter().filter(|m| m.motion == Motion::Feed).map(|m| m.to).collect();
+        assert_eq!(feeds, [Point::new(98, 572_958), Point::new(98, 572_968), Point::new(100, 572_968)]);
+    }
+
+    /// K1 (K4) is a vertex only below the layer top: when the moved chord
+    /// meets its flank at or above `y_top` the chord is the boundary over
+    /// the whole depth and R0 (R3) lies on it (§8, R-G75K1Y). A square
+    /// groove (exact) with chamfers r3 = r4 = 3 over a depth of 4 and Δu = 1
+    /// at f = 1: y_K1 = 4 − 1 − 3·1 − 1·0 = 0 = y_top.
+    #[test]
+    fn k1_above_the_top_is_not_a_vertex() {
+        let c = G75Cycle {
+            units: Units::IS_B_METRIC,
+            x_mode: XMode::Radius,
+            from: Point::new(110, 10),
+            start: Point::new(100, 0),
+            peck: 2,
+            step: 2,
+            depth: -4,
+            width: 10,
+            flank_a: 900_000,
+            flank_b: 900_000,
+            slope: 0,
+            retract: 0,
+            layer: None,
+            allowance_x: 1,
+            allowance_z: 0,
+            tool_width: None,
+            path: PathType::Rough,
+            corners: [
+                Corner::SHARP,
+                Corner::SHARP,
+                Corner { size: 3, kind: CornerKind::Chamfer },
+                Corner { size: 3, kind: CornerKind::Chamfer },
+            ],
+        };
+        // left(0) = max(0, 3 − (3 − 0)·cot 45°) = 0; right(0) = min(10, 7 +
+        // 3) = 10. R0 (0, 0), K2 (3, 3), K3 (7, 3), R3 (10, 0): X = 100 − y,
+        // Z = u.
+        let p = groove_profile(&c).unwrap();
+        assert_eq!(
+            p.roughing(),
+            [Point::new(100, 0), Point::new(97, 3), Point::new(97, 7), Point::new(100, 10)]
+        );
+        // Δu = 0: y_K1 = 1 > 0, K1 = (0, 1) and K4 = (10, 1) are vertices.
+        let p = groove_profile(&G75Cycle { allowance_x: 0, ..c }).unwrap();
+        assert_eq!(
+            p.roughing(),
+            [
+                Point::new(100, 0),
+                Point::new(99, 0),
+                Point::new(96, 3),
+                Point::new(96, 7),
+                Point::new(99, 10),
+                Point::new(100, 10)
+            ]
+        );
     }
 
     /// A groove on a slope, with four rounds and layers: the moves satisfy
     /// the invariants of docs/G75.md §10 that need no exact boundary.
     #[test]
     fn slope_groove_invariants() {
-        // U0.301 instead of U0.3 and B74 instead of B75 (see
-        // undecidable_rounding_is_refused).
+        // U0.301 instead of U0.3 and B74 instead of B75: no value on a
+        // rounding boundary (tie_values_are_decided has the example itself).
         let c = G75Cycle { allowance_x: 301, flank_b: 740_000, ..slope_example() };
         let moves: Vec<Move> = expand_g75(&c).unwrap().collect();
         let local = |p: Point| (c.axial_sign() * (p.z - c.start.z), c.radial_sign() * (p.x - c.start.x));
@@ -2033,10 +2322,26 @@ mod tests {
         // The fast and slow contexts agree on every value they decide.
         let mut ev = Eval::new(Geo::new(&c));
         let slow = Ctx::<SLOW>::new(&ev.g);
-        for q in [Q::U3, Q::Y3, Q::K1, Q::K4, Q::C1U, Q::C2Y, Q::T4cU, Q::T2sY] {
+        for q in [
+            Q::U3,
+            Q::Y3,
+            Q::Left(3_000),
+            Q::YK4,
+            Q::FlankA(8_148),
+            Q::FlankB(8_029),
+            Q::C1U,
+            Q::C2Y,
+            Q::T4cU,
+            Q::T2sY,
+        ] {
             let fast = ev.nearest(q).unwrap();
             assert_eq!(slow.eval(&ev.g, q).round(Rounding::Nearest), Some(fast), "{q:?}");
         }
+        // y_K1 = 9000 − 301 − 400 − 150.5 = 8148.5 exactly: its floor is
+        // decided, its nearest only by R-G75TIE (the tie goes up).
+        assert_eq!(ev.floor(Q::YK1), Ok(8_148));
+        assert_eq!(slow.eval(&ev.g, Q::YK1).round(Rounding::Nearest), None);
+        assert_eq!(ev.nearest(Q::YK1), Ok(8_149));
     }
 
     /// `G00 X90 Z12; G75.1 X80 Z0 P1500 Q2000 H-9 D-6 A60 B75 L10; G75.1
@@ -2480,43 +2785,53 @@ mod tests {
             let rv: Vec<(i64, i64)> = p.roughing().iter().map(|q| local(*q)).collect();
             let y_top = rv[0].1;
             floor(y3, y_top);
-            ceil(flank_a(y_top as f64), rv[0].0);
-            let mut k = 1;
+            let left = |y: f64| if c.corners[2].size > 0 { flank_a(y).max(chord3(y)) } else { flank_a(y) };
+            let right = |y: f64| if c.corners[3].size > 0 { flank_b(y).min(chord4(y)) } else { flank_b(y) };
+            // R0, R3 on left/right (R-G75MAXMIN); K1, K4 on the flanks at the
+            // integer depth, only below y_top (R-G75K1Y). A depth too near an
+            // integer for the float leaves the vertex count open: skipped.
             let bottom = yy - du;
+            let near_int = |v: f64| (v - v.round()).abs() < 1e-6;
+            let yk1 = bottom - f * t3 * a.sin() - du * a.cos();
+            let yk4 = bottom - f * t4 * b.sin() - du * b.cos();
+            if (c.corners[2].size > 0 && near_int(yk1)) || (c.corners[3].size > 0 && near_int(yk4)) {
+                continue;
+            }
+            ceil(left(y_top as f64), rv[0].0);
+            let mut k = 1;
             if c.corners[2].size > 0 {
-                let yk1 = bottom - f * t3 * a.sin() - du * a.cos();
-                floor(yk1, rv[k].1);
-                ceil(flank_a(yk1), rv[k].0);
-                ceil(p1 + t3 + dw, rv[k + 1].0);
-                k += 2;
+                let y = yk1.floor();
+                if y as i64 > y_top {
+                    assert_eq!(rv[k].1, y as i64, "{c:?}");
+                    ceil(flank_a(y), rv[k].0);
+                    k += 1;
+                }
+                ceil(p1 + t3 + dw, rv[k].0);
+                k += 1;
             } else {
                 ceil(flank_a(bottom), rv[k].0);
                 k += 1;
             }
             if c.corners[3].size > 0 {
                 floor(p1 + d - t4 - dw, rv[k].0);
-                let yk4 = bottom - f * t4 * b.sin() - du * b.cos();
-                floor(yk4, rv[k + 1].1);
-                floor(flank_b(yk4), rv[k + 1].0);
-                k += 2;
+                k += 1;
+                let y = yk4.floor();
+                if y as i64 > y_top {
+                    assert_eq!(rv[k].1, y as i64, "{c:?}");
+                    floor(flank_b(y), rv[k].0);
+                    k += 1;
+                }
             } else {
                 floor(flank_b(bottom), rv[k].0);
                 k += 1;
             }
-            floor(flank_b(y_top as f64), rv[k].0);
+            floor(right(y_top as f64), rv[k].0);
+            assert_eq!(rv.len(), k + 1, "{c:?}");
             // Layer 1's plunge range, through the first move's Z (A11).
             if let Ok(mut moves) = expand_g75(&c) {
                 let y1 = c.layer.map_or(bottom, |v| (v as f64).min(bottom));
-                let mut left = flank_a(y1);
-                if c.corners[2].size > 0 {
-                    left = left.max(chord3(y1));
-                }
-                let mut right = flank_b(y1);
-                if c.corners[3].size > 0 {
-                    right = right.min(chord4(y1));
-                }
                 let first = moves.next().unwrap();
-                ceil(left, local(first.to).0);
+                ceil(left(y1), local(first.to).0);
                 if c.path.roughs() {
                     // The last plunge of layer 1: before the first layer change.
                     let last = moves
@@ -2524,7 +2839,7 @@ mod tests {
                         .filter(|m| matches!(m.role, Role::PlungeRetract(_)))
                         .last()
                         .unwrap();
-                    floor(right - w, local(last.to).0);
+                    floor(right(y1) - w, local(last.to).0);
                 }
                 compared += 1;
             }

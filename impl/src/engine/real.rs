@@ -1146,6 +1146,58 @@ mod tests {
         assert!(!third.div(&z).is_valid());
     }
 
+    /// R-G75TIE: one boundary in the enclosure decides on it; two do not.
+    #[test]
+    fn tie_decisions() {
+        let ulp = F::from_ulps(1);
+        let around = |v: F| Iv::new(v.checked_sub(&ulp).unwrap(), v.checked_add(&ulp).unwrap());
+        let two = F::from_int(2);
+        // An integer inside: floor and ceil give it.
+        let i = around(two);
+        assert_eq!((i.round(Rounding::Floor), i.round(Rounding::Ceil)), (None, None));
+        assert_eq!(i.round_tie(Rounding::Floor), Some(2));
+        assert_eq!(i.round_tie(Rounding::Ceil), Some(2));
+        assert_eq!(i.round_tie(Rounding::Nearest), Some(2));
+        // On an end: [2 − ulp, 2] and [2, 2 + ulp].
+        let below = Iv::new(two.checked_sub(&ulp).unwrap(), two);
+        assert_eq!(below.round(Rounding::Floor), None);
+        assert_eq!(below.round_tie(Rounding::Floor), Some(2));
+        let above = Iv::new(two, two.checked_add(&ulp).unwrap());
+        assert_eq!(above.round(Rounding::Ceil), None);
+        assert_eq!(above.round_tie(Rounding::Ceil), Some(2));
+        // A half-integer: nearest goes up, on both sides of 0.
+        let h = around(*Iv::<FAST>::int(3).div_int(2).lower());
+        assert_eq!(h.round(Rounding::Nearest), None);
+        assert_eq!(h.round_tie(Rounding::Nearest), Some(2));
+        assert_eq!(h.round_tie(Rounding::Floor), Some(1));
+        let nh = around(*Iv::<FAST>::int(-5).div_int(2).lower());
+        assert_eq!(nh.round_tie(Rounding::Nearest), Some(-2));
+        assert_eq!(nh.round_tie(Rounding::Ceil), Some(-2));
+        // Two boundaries: refused.
+        let wide = Iv::new(F::from_int(1), F::from_int(2));
+        assert_eq!(wide.round_tie(Rounding::Floor), None);
+        assert_eq!(wide.round_tie(Rounding::Ceil), None);
+        let halves = Iv::new(
+            F::from_int(1).checked_sub(&F::half()).unwrap(),
+            F::from_int(1).checked_add(&F::half()).unwrap(),
+        );
+        assert_eq!(halves.round_tie(Rounding::Nearest), None);
+        assert_eq!(halves.round_tie(Rounding::Floor), Some(1));
+        assert_eq!(Iv::<FAST>::poison().round_tie(Rounding::Floor), None);
+        // Signs: 0 inside or on an end is 0; decided signs stay.
+        assert_eq!(around(F::zero()).sign_tie(), Some(Ordering::Equal));
+        assert_eq!(Iv::new(F::zero(), ulp).sign_tie(), Some(Ordering::Equal));
+        assert_eq!(Iv::new(ulp, two).sign_tie(), Some(Ordering::Greater));
+        assert_eq!(Iv::<FAST>::int(-1).sign_tie(), Some(Ordering::Less));
+        assert_eq!(Iv::<FAST>::poison().sign_tie(), None);
+        // The identity tan 30°·sin 60° = 1/2 at 512 bits.
+        let t = tan::<SLOW>(600_000).mul(&sin::<SLOW>(1_200_000));
+        assert_eq!(t.round(Rounding::Nearest), None);
+        assert_eq!(t.mul_int(2).round(Rounding::Floor), None);
+        assert_eq!(t.mul_int(2).round_tie(Rounding::Floor), Some(1));
+        assert_eq!(t.round_tie(Rounding::Nearest), Some(1));
+    }
+
     #[test]
     fn exact_trigonometric_cases() {
         assert!(sin::<FAST>(0).is_point() && sin::<FAST>(0).round(Rounding::Floor) == Some(0));
