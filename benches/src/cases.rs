@@ -198,6 +198,50 @@ pub fn reader_program(blocks: usize) -> String {
     s
 }
 
+/// A G75.1 cycle read from `text` with the gsk980 profile at `increment`.
+///
+/// # Panics
+///
+/// When the text holds no valid G75.1 (the cases below are fixed).
+#[must_use]
+pub fn groove(text: &str, increment: cycleref::IncrementSystem) -> cycleref::G75Cycle {
+    let mut m = cycleref_spec::Machine::new(cycleref_spec::ProfileName::Gsk980);
+    m.increment = increment;
+    let program = cycleref_spec::read(text, &m).expect("the case reads");
+    let cycle = program.grooves().next().expect("one G75.1").cycle;
+    cycle
+}
+
+/// Seed 001's example (IS-C): 45° and 30° flanks, 3 plunges of 7 pecks.
+#[must_use]
+pub fn groove_seed() -> cycleref::G75Cycle {
+    groove(
+        "G00 X60 Z30 M3 S500\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG75.1 R0.5 I4 J1\n",
+        cycleref::IncrementSystem::IsC,
+    )
+}
+
+/// A groove on a slope with rounds at all four corners and layers: the
+/// geometry is all irrational (intervals), the path short.
+#[must_use]
+pub fn groove_slope() -> cycleref::G75Cycle {
+    groove(
+        "G00 X90 Z12\nG75.1 X80 Z0 P1500 Q2000 H-9 D-6 A60 B75 L10\n\
+         G75.1 R0.3 V3 U0.3 W0.1 I2.5 J1 A0.5 B0.5 D0.4 E0.4 P1111\n",
+        cycleref::IncrementSystem::IsB,
+    )
+}
+
+/// A wide groove with many plunges and pecks (about 100 000 moves): the
+/// per-move cost of the path.
+#[must_use]
+pub fn groove_wide() -> cycleref::G75Cycle {
+    groove(
+        "G00 X210 Z5\nG75.1 X200 Z0 P500 Q300 H-40 D-200 A80 B70\nG75.1 R0.1 V10 I3 J1\n",
+        cycleref::IncrementSystem::IsB,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -252,47 +296,4 @@ mod tests {
         assert_eq!(program.cycles().count(), 9);
         assert_eq!(reader_program(READER_BLOCKS).lines().count(), READER_BLOCKS);
     }
-}
-
-/// A G75.1 cycle read from `text` with the gsk980 profile at `increment`.
-///
-/// # Panics
-///
-/// When the text holds no valid G75.1 (the cases below are fixed).
-#[must_use]
-pub fn groove(text: &str, increment: cycleref::IncrementSystem) -> cycleref::G75Cycle {
-    let mut m = cycleref_spec::Machine::new(cycleref_spec::ProfileName::Gsk980);
-    m.increment = increment;
-    let program = cycleref_spec::read(text, &m).expect("the case reads");
-    program.grooves().next().expect("one G75.1").cycle
-}
-
-/// Seed 001's example (IS-C): 45° and 30° flanks, 3 plunges of 7 pecks.
-#[must_use]
-pub fn groove_seed() -> cycleref::G75Cycle {
-    groove(
-        "G00 X60 Z30 M3 S500\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG75.1 R0.5 I4 J1\n",
-        cycleref::IncrementSystem::IsC,
-    )
-}
-
-/// A groove on a slope with rounds at all four corners and layers: the
-/// geometry is all irrational (intervals), the path short.
-#[must_use]
-pub fn groove_slope() -> cycleref::G75Cycle {
-    groove(
-        "G00 X90 Z12\nG75.1 X80 Z0 P1500 Q2000 H-9 D-6 A60 B75 L10\n\
-         G75.1 R0.3 V3 U0.3 W0.1 I2.5 J1 A0.5 B0.5 D0.4 E0.4 P1111\n",
-        cycleref::IncrementSystem::IsB,
-    )
-}
-
-/// A wide groove with many plunges and pecks (about 100 000 moves): the
-/// per-move cost of the path.
-#[must_use]
-pub fn groove_wide() -> cycleref::G75Cycle {
-    groove(
-        "G00 X210 Z5\nG75.1 X200 Z0 P500 Q300 H-40 D-200 A80 B70\nG75.1 R0.1 V10 I3 J1\n",
-        cycleref::IncrementSystem::IsB,
-    )
 }

@@ -144,6 +144,15 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::ThreadTooShort { .. } => "thread_too_short",
         CycleError::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
         CycleError::TooManyPasses { .. } => "too_many_passes",
+        CycleError::WordOutOfRange { .. } => "word_out_of_range",
+        CycleError::AngleOutOfRange { .. } => "angle_out_of_range",
+        CycleError::NoGrooveDepth => "no_groove_depth",
+        CycleError::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
+        CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
+        CycleError::CornerTooLarge { .. } => "corner_too_large",
+        CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
+        CycleError::TooManyPecks { .. } => "too_many_pecks",
+        CycleError::UndecidedRounding => "undecided_rounding",
     };
     match k {
         ErrorKind::Syntax(_) => "syntax".into(),

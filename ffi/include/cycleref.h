@@ -1,5 +1,5 @@
 /*
- * cycleref: C interface to the lathe thread-cutting cycle engine (G76, G32).
+ * cycleref: C interface to the lathe thread-cutting and grooving cycle engine (G76, G32, G75.1).
  * SPDX-License-Identifier: MIT OR Apache-2.0
  */
 
@@ -83,6 +83,10 @@ enum CyclerefCycle
      * A G32 thread-cutting block.
      */
     CYCLEREF_CYCLE_G32 = 1,
+    /**
+     * A G75.1 radial trapezoidal groove cycle.
+     */
+    CYCLEREF_CYCLE_G75 = 2,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -112,6 +116,14 @@ enum CyclerefMotion
      * Constant-lead thread cutting synchronised with the spindle (G32).
      */
     CYCLEREF_MOTION_THREAD = 2,
+    /**
+     * Clockwise arc (G02) around `centre_x`, `centre_z`.
+     */
+    CYCLEREF_MOTION_ARC_CW = 3,
+    /**
+     * Counter-clockwise arc (G03) around `centre_x`, `centre_z`.
+     */
+    CYCLEREF_MOTION_ARC_CCW = 4,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -150,9 +162,38 @@ enum CyclerefRole
      */
     CYCLEREF_ROLE_RETRACT = 4,
     /**
-     * Rapid along Z back to A.
+     * Rapid along Z back to A (G75.1: back to the start point and to the
+     * point before the cycle).
      */
     CYCLEREF_ROLE_RETURN = 5,
+    /**
+     * G75.1: a peck (radial feed of at most Δi).
+     */
+    CYCLEREF_ROLE_PECK = 6,
+    /**
+     * G75.1: the rapid retract e after a peck.
+     */
+    CYCLEREF_ROLE_PECK_RETRACT = 7,
+    /**
+     * G75.1: the rapid retract to the plunge start.
+     */
+    CYCLEREF_ROLE_PLUNGE_RETRACT = 8,
+    /**
+     * G75.1: the axial rapid to the next plunge.
+     */
+    CYCLEREF_ROLE_STEP = 9,
+    /**
+     * G75.1: the rapids to the next layer's start.
+     */
+    CYCLEREF_ROLE_LAYER_CHANGE = 10,
+    /**
+     * G75.1: the rough contour.
+     */
+    CYCLEREF_ROLE_ROUGH_CONTOUR = 11,
+    /**
+     * G75.1: the finishing contour.
+     */
+    CYCLEREF_ROLE_FINISH_CONTOUR = 12,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -500,6 +541,23 @@ typedef struct CyclerefMove {
      * 1 when the pass fields are meaningful, 0 when the move has no pass.
      */
     uint8_t has_pass;
+    /**
+     * X of an arc's centre (absolute, X-word units); 0 for other motions.
+     */
+    int64_t centre_x;
+    /**
+     * Z of an arc's centre (absolute); 0 for other motions.
+     */
+    int64_t centre_z;
+    /**
+     * G75.1: 1-based layer of the move's plunge (also of a layer change);
+     * 0 when the move belongs to no plunge.
+     */
+    uint32_t plunge_layer;
+    /**
+     * G75.1: 1-based plunge within its layer; 0 when none.
+     */
+    uint32_t plunge_number;
 } CyclerefMove;
 
 /**
@@ -674,7 +732,7 @@ const char *cycleref_status_name(int32_t status);
 
 /**
  * Reads `program` with the machine of `opts` and writes every move of
- * every cycle (G76 and G32), in program order, to `moves`.
+ * every cycle (G76, G32 and G75.1), in program order, to `moves`.
  *
  * * `program`, `program_len`: the program text in UTF-8 (not necessarily
  *   NUL-terminated).

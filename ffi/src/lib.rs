@@ -331,7 +331,7 @@ pub extern "C" fn cycleref_status_name(status: i32) -> *const c_char {
 }
 
 /// Reads `program` with the machine of `opts` and writes every move of
-/// every cycle (G76 and G32), in program order, to `moves`.
+/// every cycle (G76, G32 and G75.1), in program order, to `moves`.
 ///
 /// * `program`, `program_len`: the program text in UTF-8 (not necessarily
 ///   NUL-terminated).

@@ -365,6 +365,10 @@ pub fn groove_inside(d: &GrooveDomain, engine: &impl GrooveEngine) {
     cover!(c.corners[corner::R3].size > 0 && c.path.roughs(), "with a bottom corner");
 }
 
+/// A contour move in local coordinates: its end `(u, y)` and, for an arc,
+/// its centre.
+type LocalMove = (i64, i64, Option<(i64, i64)>);
+
 /// Property: with J1 or J2 the finishing contour passes exactly through the
 /// programmed profile (right-angle grooves, where every point is exact):
 /// T1s, T1a, T3a, T3b, T4b, T4c, P3/T2b, T2s, with the far side shifted by
@@ -379,7 +383,7 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &impl GrooveEngine) {
     let w = c.width_of_tool();
     let [r1, r2, r3, r4] = c.corners;
     // Expected cutting moves of the contour (docs/G75.md §3 with a = b = 90°).
-    let mut expected: std::vec::Vec<(i64, i64, Option<(i64, i64)>)> = std::vec::Vec::new();
+    let mut expected: std::vec::Vec<LocalMove> = std::vec::Vec::new();
     let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
     if r1.size > 0 {
         expected.push((0, f * r1.size, arc(r1, (-r1.size, f * r1.size))));
@@ -403,7 +407,7 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &impl GrooveEngine) {
         expected.push((dd - w, 0, None));
     }
     // The contour's first cutting move is the r1 chamfer/round (or flank A).
-    let got: std::vec::Vec<(i64, i64, Option<(i64, i64)>)> = moves
+    let got: std::vec::Vec<LocalMove> = moves
         .iter()
         .filter(|m| m.role == Role::FinishContour && m.motion != Motion::Rapid)
         .map(|m| {

@@ -46,8 +46,11 @@ fn angle(lo: u32, hi: u32) -> impl Strategy<Value = u32> {
     ]
 }
 
-fn corner() -> impl Strategy<Value = Corner> {
-    (prop_oneof![2 => Just(0_i64), 3 => 1_i64..400, 1 => 1_i64..20_000], any::<bool>()).prop_map(
+/// Corner sizes scaled to the groove (`max`, the largest depth and width):
+/// mostly small enough to fit their edges, sometimes too large (the
+/// CornerTooLarge alarms).
+fn corner(max: i64) -> impl Strategy<Value = Corner> {
+    (prop_oneof![2 => Just(0_i64), 3 => 1_i64..max / 50 + 2, 1 => 1_i64..max], any::<bool>()).prop_map(
         |(size, round)| Corner { size, kind: if round { CornerKind::Round } else { CornerKind::Chamfer } },
     )
 }
@@ -78,7 +81,7 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
         prop_oneof![Just(None), (0_i64..max / 2 + 1).prop_map(Some)],
     );
     let shape = (angle(1, 900_000), angle(1, 900_000), prop_oneof![Just(0_u32), angle(0, 899_999)]);
-    let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(), corner(), corner(), corner()]);
+    let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(max), corner(max), corner(max), corner(max)]);
     (units, sizes, allowances, shape, rest).prop_map(
         |(
             (units, x_mode),

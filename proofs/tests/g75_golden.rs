@@ -69,7 +69,7 @@ fn error(text: &str, machine: &Machine) -> cycleref_spec::ProgramError {
         Ok(program) => {
             let call = program.grooves().next().expect("one G75.1");
             let spec = cycleref_spec::g75::expand(&call.cycle).expect_err("the reference refuses");
-            let engine = cycleref::expand_g75(&call.cycle).err().expect("the engine refuses");
+            let engine = cycleref::expand_g75(&call.cycle).expect_err("the engine refuses");
             assert_eq!(spec, engine, "both engines give the same alarm");
             cycleref_spec::ProgramError { line: call.block.line, word: None, kind: ErrorKind::Cycle(spec) }
         }

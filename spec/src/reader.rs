@@ -1002,7 +1002,9 @@ impl Reader<'_> {
             return Err(err(
                 block,
                 Some(w),
-                ErrorKind::NotInIncrements { increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)) },
+                ErrorKind::NotInIncrements {
+                    increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
+                },
             ));
         }
         let t = u32::try_from(t.trunc()).map_err(|_| out())?;
@@ -1013,7 +1015,11 @@ impl Reader<'_> {
     }
 
     /// A required length word of G75.1 block 1.
-    fn g75_required<'b>(block: &'b Block, letter: char, what: &'static str) -> Result<&'b Word, ProgramError> {
+    fn g75_required<'b>(
+        block: &'b Block,
+        letter: char,
+        what: &'static str,
+    ) -> Result<&'b Word, ProgramError> {
         block.get(letter)?.ok_or_else(|| {
             err(
                 block,
