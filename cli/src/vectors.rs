@@ -162,6 +162,7 @@ pub fn cycle_kind_name(e: &CycleError) -> &'static str {
         CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
         CycleError::CornerTooLarge { .. } => "corner_too_large",
         CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
+        CycleError::RidgesInLayers { .. } => "ridges_in_layers",
         CycleError::TooManyPecks { .. } => "too_many_pecks",
         CycleError::UndecidedRounding => "undecided_rounding",
     }

@@ -151,6 +151,7 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
         CycleError::CornerTooLarge { .. } => "corner_too_large",
         CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
+        CycleError::RidgesInLayers { .. } => "ridges_in_layers",
         CycleError::TooManyPecks { .. } => "too_many_pecks",
         CycleError::UndecidedRounding => "undecided_rounding",
     };

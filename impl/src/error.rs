@@ -251,6 +251,17 @@ pub enum CycleError {
         /// The tool width I (0 for a pointed tool).
         tool_width: Length,
     },
+    /// G75.1 roughed in layers (V) with a step Q(Δk) wider than the tool
+    /// I, where layer 1's plunge range is wider than the tool: layer 1's
+    /// plunges leave ridges, and the rapids of the next layer (the axial
+    /// steps of step ⑦ at the bottom of the layer above, the move down to
+    /// A21 of step ②) would run through them (reading R-G75RIDGE).
+    RidgesInLayers {
+        /// Q(Δk).
+        step: Length,
+        /// I (0 for a pointed tool).
+        tool_width: Length,
+    },
     /// G75.1 needs more pecks than [`crate::g75::MAX_PECKS`].
     TooManyPecks {
         /// The limit.
@@ -368,6 +379,12 @@ impl fmt::Display for CycleError {
                 f,
                 "the groove, less the allowances U/W and the bottom corners D(r3)/E(r4), is narrower \
                  at its bottom than the tool I = {tool_width}"
+            ),
+            CycleError::RidgesInLayers { step, tool_width } => write!(
+                f,
+                "Q(Δk) = {step} is wider than the tool (I = {tool_width}) in a groove roughed in \
+                 layers V(Δv): the plunges of a layer leave ridges between them and the next \
+                 layer's rapids would run through them; program Q no wider than the tool"
             ),
             CycleError::TooManyPecks { limit } => {
                 write!(f, "the G75.1 cycle needs more than {limit} pecks")

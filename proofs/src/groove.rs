@@ -365,6 +365,170 @@ pub fn groove_inside(d: &GrooveDomain, engine: &impl GrooveEngine) {
     cover!(c.corners[corner::R3].size > 0 && c.path.roughs(), "with a bottom corner");
 }
 
+/// Whether the tool, moving in a straight line from `(u0, y0)` to `(u1, y1)`
+/// (local, doubled: every coordinate times 2), sweeps the point `(pu, py)`
+/// (doubled) with its body: a grooving tool of width `w2` (doubled) occupies
+/// `[u, u + w]` at its reference point's depth `y` and everything above it
+/// (`y' ≤ y`, towards the opening), as a blade does.
+fn sweeps(from: (i64, i64), to: (i64, i64), w2: i64, p: (i64, i64)) -> bool {
+    let ((u0, y0), (u1, y1), (pu, py)) = (from, to, p);
+    if u0 == u1 {
+        return u0 <= pu && pu <= u0 + w2 && py <= y0.max(y1);
+    }
+    // t = n / den in [0, 1] where u(t) = u0 + (u1 − u0)·t, den > 0.
+    let (den, dir) = ((u1 - u0).abs(), (u1 - u0).signum());
+    let n_at = |u: i64| dir * (u - u0);
+    let (a, b) = (n_at(pu - w2), n_at(pu));
+    let (lo, hi) = (a.min(b).max(0), a.max(b).min(den));
+    if lo > hi {
+        return false;
+    }
+    // y(t) is linear: its largest value on [lo, hi] is at an end.
+    let below = |n: i64| {
+        i128::from(py) * i128::from(den)
+            <= i128::from(y0) * i128::from(den) + i128::from(y1 - y0) * i128::from(n)
+    };
+    below(lo) || below(hi)
+}
+
+/// Property: material (right-angle grooves, exact, grooving tools). The
+/// roughing region (§5) starts full of material, sampled at the centres of
+/// its increment cells; every feed move of the path removes what the tool's
+/// body sweeps (see [`sweeps`]). Then:
+///
+/// * no rapid move sweeps material that is still there (a rapid through
+///   material breaks the tool): the steps of step ⑦, the retracts, the
+///   layer changes and the returns all run in cut space or in the air;
+/// * once the plunges are done, what is left lies beside a layer's plunge
+///   range (the band the rough contour cuts, step ⑨) or in a ridge between
+///   two neighbouring plunges of layer 1, at most `Δk − w` wide; ridges
+///   occur only without layers (R-G75RIDGE refuses the others), so a ridge
+///   stands at most the roughing depth `|H| − Δu` high;
+/// * after the rough contour (J0, J1) nothing is left in the region.
+pub fn groove_material(d: &GrooveDomain, engine: &impl GrooveEngine) {
+    let c = any_groove(d);
+    assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0 && c.path.roughs());
+    let w = c.width_of_tool();
+    assume(w > 0);
+    let moves = expanded(&c, engine);
+    let region = SquareRegion::new(&c);
+    let (f, bottom) = (region.f, region.bottom);
+    // Cells (i, j): centre (i + 1/2, j + 1/2), i in [0, d), j in [0, bottom).
+    let (cols, rows) = (usize::try_from(region.d).unwrap_or(0), usize::try_from(bottom).unwrap_or(0));
+    // In the region: f·left(y) < f·u < f·right(y) at the centre (doubled:
+    // left_f and right_f are linear in y, so f·left(y + 1/2)·2 is exact).
+    let inside = |i: i64, j: i64| {
+        let (u2, y) = (2 * i + 1, j);
+        let left2 = region.left_f(y) + region.left_f(y + 1);
+        let right2 = region.right_f(y) + region.right_f(y + 1);
+        f * u2 > left2 && f * u2 < right2
+    };
+    let mut material = std::vec![false; cols * rows];
+    for j in 0..rows {
+        for i in 0..cols {
+            let (ii, jj) = (i64::try_from(i).unwrap_or(0), i64::try_from(j).unwrap_or(0));
+            material[j * cols + i] = inside(ii, jj);
+        }
+    }
+    let cell = |k: usize| {
+        let (i, j) = (k % cols, k / cols);
+        (2 * i64::try_from(i).unwrap_or(0) + 1, 2 * i64::try_from(j).unwrap_or(0) + 1)
+    };
+    // Plunge positions of each layer (u of the pecks), and layer bottoms.
+    let mut plunges: std::vec::Vec<(u32, i64, i64)> = std::vec::Vec::new(); // (layer, u, bottom)
+    let mut at = local(&c, c.from);
+    let mut contour_started = false;
+    let mut ridge_checked = false;
+    for m in &moves {
+        let to = local(&c, m.to);
+        if m.role == Role::RoughContour && !ridge_checked {
+            ridge_checked = true;
+            // What the plunges left.
+            for (k, left) in material.iter().enumerate() {
+                if !*left {
+                    continue;
+                }
+                let (pu2, py2) = cell(k);
+                // The layer holding this depth: the first whose bottom is below it.
+                let layer = plunges.iter().filter(|p| 2 * p.2 > py2).map(|p| p.0).min();
+                let Some(layer) = layer else {
+                    panic!("material at u {} y {} below every layer", pu2, py2);
+                };
+                let mut us: std::vec::Vec<i64> =
+                    plunges.iter().filter(|p| p.0 == layer).map(|p| p.1).collect();
+                us.sort_unstable();
+                us.dedup();
+                let (first, last) = (us[0], us[us.len() - 1]);
+                let band = pu2 < 2 * first || pu2 > 2 * (last + w);
+                let ridge = us.windows(2).find(|p| 2 * (p[0] + w) < pu2 && pu2 < 2 * p[1]).is_some_and(|p| {
+                    assert!(p[1] - p[0] - w <= c.step - w, "a ridge is at most Δk − w wide");
+                    true
+                });
+                assert!(
+                    band || ridge,
+                    "material at u {} y {} is neither beside the plunges nor a ridge",
+                    pu2,
+                    py2
+                );
+                if ridge && !band {
+                    assert!(c.layer.is_none_or(|v| v >= bottom), "a ridge only without layers (R-G75RIDGE)");
+                    assert!(c.step > w, "a ridge only when Δk > w");
+                    cover!(true, "a ridge between plunges");
+                }
+            }
+        }
+        if m.role == Role::RoughContour {
+            contour_started = true;
+        }
+        if let Role::Peck(p) = m.role {
+            plunges.push((p.layer, to.0, to.1));
+        }
+        let (from2, to2) = ((2 * at.0, 2 * at.1), (2 * to.0, 2 * to.1));
+        match m.motion {
+            Motion::Rapid => {
+                for (k, left) in material.iter().enumerate() {
+                    if *left {
+                        let p = cell(k);
+                        assert!(
+                            !sweeps(from2, to2, 2 * w, p),
+                            "{:?} rapid from {at:?} to {to:?} runs through material at doubled {p:?}",
+                            m.role
+                        );
+                    }
+                }
+            }
+            _ if !contour_started || m.role == Role::RoughContour => {
+                for (k, left) in material.iter_mut().enumerate() {
+                    if *left && sweeps(from2, to2, 2 * w, cell(k)) {
+                        *left = false;
+                    }
+                }
+            }
+            _ => {}
+        }
+        at = to;
+    }
+    // What the rough contour left: slivers along the boundary, where a
+    // vertex rounded into the region (R-G75ROUND) moves the contour off the
+    // exact boundary by less than an increment (up to 1 + 1/f beside K1 and
+    // K4, which sit at the integer depth above the exact corner of flank
+    // and chord).
+    for (k, left) in material.iter().enumerate() {
+        if *left {
+            let (pu2, py2) = cell(k);
+            let j = (py2 - 1) / 2;
+            let left2 = region.left_f(j) + region.left_f(j + 1);
+            let right2 = region.right_f(j) + region.right_f(j + 1);
+            // 2f·(u − left(y)) < 4f, or 2f·(right(y) − u) < 4f (cell centre).
+            let sliver = f * pu2 - left2 < 4 * f || right2 - f * pu2 < 4 * f;
+            assert!(sliver, "the rough contour leaves material at doubled ({pu2}, {py2}) inside the region");
+            cover!(true, "a sliver along the boundary");
+        }
+    }
+    cover!(c.layer.is_some_and(|v| v < bottom), "several layers");
+    cover!(c.corners[corner::R3].size > 0, "with a bottom corner");
+}
+
 /// A contour move in local coordinates: its end `(u, y)` and, for an arc,
 /// its centre.
 type LocalMove = (i64, i64, Option<(i64, i64)>);

@@ -145,6 +145,14 @@ fn groove_finish_is_profile() {
     crate::groove::groove_finish_is_profile(&GROOVE_WINDOW, &crate::groove::GrooveFixedPoint);
 }
 
+/// The material left by roughing: grooving tools only (the body model).
+#[kani::proof]
+#[kani::unwind(64)]
+fn groove_material() {
+    let window = crate::groove::GrooveDomain { tool_width: (1, 2), path: (0, 1), ..GROOVE_WINDOW };
+    crate::groove::groove_material(&window, &crate::groove::GrooveFixedPoint);
+}
+
 /// Every documented input, the first 8 moves: no panic, no overflow.
 #[kani::proof]
 #[kani::unwind(64)]

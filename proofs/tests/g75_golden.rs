@@ -298,6 +298,44 @@ fn groove_narrower_than_the_tool() {
     assert!(kind(&e).contains("GrooveNarrowerThanTool"), "{e}");
 }
 
+/// R-G75RIDGE: roughing in layers with a step wider than the tool.
+///
+/// The square groove steps Q3 with a 3 mm tool: its plunges (200, 3200,
+/// 4800 in layer 1) leave no gap, and layer 2's steps at the bottom of
+/// layer 1 run in cut space. With Q3.001 the first two plunges of layer 1
+/// (200 and 3201) are 3001 apart, one increment more than the tool, so a
+/// ridge 0.001 wide stands between them the whole depth of layer 1, and
+/// layer 2's step from 600 to 3601 at the depth of layer 1's bottom would
+/// run through it: refused. Without V there is one layer (its steps run in
+/// the air above the opening), and J2 does not rough: both expand.
+#[test]
+fn layers_with_a_step_wider_than_the_tool() {
+    let m = machine(cycleref::IncrementSystem::IsB);
+    let wide = SQUARE.replace("Q3000", "Q3001");
+    let e = error(&wide, &m);
+    assert!(kind(&e).contains("RidgesInLayers"), "{e}");
+    assert!(e.to_string().contains("Q(Δk) = 3.001"), "{e}");
+    assert!(e.to_string().contains("I = 3.000"), "{e}");
+    assert_eq!(e.line, 4);
+    // One layer: the ridge stays until the rough contour's bottom pass.
+    let (moves, _) = both(&wide.replace(" V4", ""), &m);
+    let plunges: Vec<i64> = moves.iter().filter(|m| matches!(m.role, Role::Step(_))).map(|m| m.to.z).collect();
+    // Z = −u: plunges at u = 600 (K2: the chord of r3 at the bottom), 3601, 4500.
+    assert_eq!(plunges, [-3_601, -4_500]);
+    let (moves, _) = both(&wide.replace("J1", "J2"), &m);
+    assert!(moves.iter().all(|m| !matches!(m.role, Role::Peck(_))));
+    // The seed's groove in layers: a pointed tool (w = 0) leaves a ridge
+    // between any two plunges; with I4, Q5 is still wider than the tool;
+    // with I5 it is not (layer 1: A11 = 10, A1f = 20 − 5 = 15, one step).
+    let mc = machine(cycleref::IncrementSystem::IsC);
+    let e = error(&SEED.replace("G75.1 R0.5;", "G75.1 R0.5 V10;"), &mc);
+    assert!(kind(&e).contains("RidgesInLayers"), "{e}");
+    let e = error(&SEED.replace("G75.1 R0.5;", "G75.1 R0.5 V10 I4;"), &mc);
+    assert!(kind(&e).contains("RidgesInLayers"), "{e}");
+    let (moves, _) = both(&SEED.replace("G75.1 R0.5;", "G75.1 R0.5 V10 I5;"), &mc);
+    assert!(moves.iter().any(|m| matches!(m.role, Role::Peck(p) if p.layer == 2)));
+}
+
 #[test]
 fn allowances_larger_than_the_groove() {
     let m = machine(cycleref::IncrementSystem::IsB);

@@ -114,6 +114,42 @@ fn inside_the_roughing_region() {
     check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
 }
 
+/// Grooving tools (w ≥ 1), layers, corners and allowances: the material
+/// left by the plunges and the rough contour (J0 and J1).
+const MATERIAL: GrooveDomain = GrooveDomain {
+    depth: (1, 7),
+    width: (1, 6),
+    peck: (2, 3),
+    step: (1, 3),
+    tool_width: (1, 2),
+    path: (0, 0),
+    signs: (0, 1),
+    corner_kinds: (0, 0),
+    ..SMALL
+};
+
+/// Wider, for sampling (the material grid has depth × width cells).
+const MATERIAL_WIDE: GrooveDomain = GrooveDomain {
+    depth: (1, 80),
+    width: (1, 100),
+    peck: (1, 30),
+    step: (1, 30),
+    layer: (0, 60),
+    allowance_x: (0, 20),
+    allowance_z: (0, 20),
+    tool_width: (1, 30),
+    corner: (0, 25),
+    ..SQUARE_WIDE
+};
+
+#[test]
+fn material_left_by_roughing() {
+    check("material (exhaustive)", small(400_000), || groove::groove_material(&MATERIAL, &GrooveFixedPoint));
+    check("material (sampled)", Mode::Sample { runs: 6_000, seed: 0x6d61_7431 }, || {
+        groove::groove_material(&MATERIAL_WIDE, &GrooveFixedPoint);
+    });
+}
+
 /// Corners and tool widths matter; roughing does not (J2 and J1).
 const PROFILE: GrooveDomain = GrooveDomain {
     peck: (8, 8),

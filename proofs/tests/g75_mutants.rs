@@ -154,3 +154,33 @@ fn a_finish_without_the_width_compensation_is_caught() {
     let d = GrooveDomain { tool_width: (1, 2), path: (1, 2), depth: (6, 7), width: (3, 6), ..SMALL };
     check("profile", EXHAUSTIVE, || groove::groove_finish_is_profile(&d, &e));
 }
+
+/// Grooving tools, layers, J0: the material harness's slice.
+const MATERIAL: GrooveDomain = GrooveDomain { tool_width: (1, 2), corner: (0, 1), signs: (0, 1), ..SMALL };
+
+#[test]
+#[should_panic(expected = "material")]
+fn a_step_at_the_plunge_bottom_is_caught() {
+    // The tool steps along Z before it retracts: the rapid runs at the
+    // bottom of the plunge, through the material beside it.
+    let e = Mutant(|_: &G75Cycle, mut v: Vec<Move>| {
+        for i in 1..v.len().saturating_sub(1) {
+            if matches!(v[i].role, Role::PlungeRetract(_)) && matches!(v[i + 1].role, Role::Step(_)) {
+                v[i].to.z = v[i + 1].to.z;
+                v[i].to.x = v[i - 1].to.x;
+            }
+        }
+        v
+    });
+    check("material", EXHAUSTIVE, || groove::groove_material(&MATERIAL, &e));
+}
+
+#[test]
+#[should_panic(expected = "material")]
+fn a_rough_contour_left_out_is_caught() {
+    // J0 without step 9: the band beside the plunges stays.
+    let e = Mutant(|_: &G75Cycle, v: Vec<Move>| {
+        v.into_iter().filter(|m| m.role != Role::RoughContour || m.motion == Motion::Rapid).collect()
+    });
+    check("material", EXHAUSTIVE, || groove::groove_material(&MATERIAL, &e));
+}

@@ -676,6 +676,39 @@ pub fn check_tool_fits(g: &Groove) -> Result<PlungeRange, CycleError> {
     Ok(range)
 }
 
+/// The alarm `RidgesInLayers` (R-G75RIDGE): when the cycle roughs (J0, J1)
+/// in more than one layer, "Z 轴快速移动进刀 Δk" (step ⑦) runs at the top of
+/// each layer m ≥ 2, the bottom of layer m − 1, and step ② moves down into
+/// layer m − 1 at `A_m1`. Those rapids cross only cut space when layer
+/// m − 1's plunges cut it without gaps, that is when no two neighbouring
+/// plunges are more than the tool width `w` apart. Their distances are Δk
+/// and, last, at most Δk, and layer 1's range is the widest (the region
+/// narrows with depth), so: refused when `M ≥ 2`, `Δk > w` and layer 1's
+/// range `A_1f − A_11 > w` (then its first two plunges are more than `w`
+/// apart and leave a ridge). A pointed tool (w = 0) in layers is thus
+/// refused unless layer 1 is a single plunge position. The check is
+/// conservative: a layer 2 whose rapids happen to miss every ridge is
+/// refused too.
+///
+/// # Errors
+///
+/// [`CycleError::RidgesInLayers`]; [`CycleError::UndecidedRounding`].
+pub fn check_ridges(g: &Groove) -> Result<(), CycleError> {
+    let c = &g.cycle;
+    if !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool {
+        return Ok(());
+    }
+    let range = plunge_range(g, 1)?;
+    if range.last - range.first > g.tool {
+        let w = i64::try_from(g.tool).unwrap_or(i64::MAX);
+        return Err(CycleError::RidgesInLayers {
+            step: Length::new(c.step, c.units),
+            tool_width: Length::new(w, c.units),
+        });
+    }
+    Ok(())
+}
+
 /// The number of pecks of one plunge from `top` to `bottom`:
 /// `ceil((bottom − top)/Δi)` (R-G75PECK: peck j feeds to
 /// `min(top + j·Δi, bottom)`).
@@ -1343,6 +1376,7 @@ pub fn expand(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
     // y_top, layers, rough contour, finishing contour in path order).
     check_corners(&g)?;
     check_tool_fits(&g)?;
+    check_ridges(&g)?;
     let y_top = y_top(&g)?;
     let layers = if c.path.roughs() { rough_layers(&g, y_top)? } else { Vec::new() };
     let a11 = match layers.first() {

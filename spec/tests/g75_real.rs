@@ -354,6 +354,7 @@ fn right_angle_groove_is_exact() {
 fn layers_slope_and_allowances_expand() {
     let c = G75Cycle {
         layer: Some(70_000),
+        tool_width: Some(50_000),
         slope: 100_000,
         allowance_x: 4_000,
         allowance_z: 2_000,
@@ -408,7 +409,15 @@ fn alarm_order() {
     assert_eq!(g75::expand(&c), Err(CycleError::TooManyPecks { limit: MAX_PECKS }));
     let c = G75Cycle { path: PathType::Finish, ..c };
     assert!(g75::expand(&c).is_ok());
+    // Layers with a pointed tool: the ridges come first (R-G75RIDGE).
     let c = G75Cycle { layer: Some(1), ..seed() };
+    let ridges = CycleError::RidgesInLayers {
+        step: cycleref::Length::new(50_000, IS_C),
+        tool_width: cycleref::Length::new(0, IS_C),
+    };
+    assert_eq!(g75::expand(&c), Err(ridges));
+    assert!(g75::expand(&G75Cycle { path: PathType::Finish, ..c }).is_ok());
+    let c = G75Cycle { layer: Some(1), tool_width: Some(50_000), ..seed() };
     assert_eq!(g75::expand(&c), Err(CycleError::TooManyPecks { limit: MAX_PECKS }));
     // A coordinate beyond the range tables: the first peck's X.
     let c = G75Cycle {
@@ -848,6 +857,7 @@ proptest! {
                     e,
                     CycleError::CornerTooLarge { .. }
                         | CycleError::GrooveNarrowerThanTool { .. }
+                        | CycleError::RidgesInLayers { .. }
                         | CycleError::TooManyPecks { .. }
                         | CycleError::OutOfRange { .. }
                 ), "{:?}", e);
@@ -882,6 +892,7 @@ proptest! {
                 e,
                 CycleError::CornerTooLarge { .. }
                     | CycleError::GrooveNarrowerThanTool { .. }
+                    | CycleError::RidgesInLayers { .. }
                     | CycleError::TooManyPecks { .. }
                     | CycleError::OutOfRange { .. }
             ), "{:?}", e),

@@ -1015,7 +1015,7 @@ fn narrow(v: i128) -> i64 {
 ///
 /// In this order (R-G75ORDER): [`G75Cycle::validate`]'s errors,
 /// [`CycleError::CornerTooLarge`], [`CycleError::GrooveNarrowerThanTool`],
-/// [`CycleError::TooManyPecks`], [`CycleError::OutOfRange`] for a move
+/// [`CycleError::RidgesInLayers`], [`CycleError::TooManyPecks`], [`CycleError::OutOfRange`] for a move
 /// coordinate; [`CycleError::UndecidedRounding`] where a needed value cannot
 /// be decided at 512 fraction bits even by R-G75TIE (an enclosure holding
 /// two rounding boundaries).
@@ -1048,6 +1048,14 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     }
     let y1 = y_of(1);
     let (a11, a1f) = if layers == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
+    // R-G75RIDGE: layered roughing with a step wider than the tool leaves
+    // ridges in layer 1 that the next layer's rapids would cross.
+    if c.path.roughs() && layers >= 2 && c.step > g.w && a1f - a11 > i128::from(g.w) {
+        return Err(CycleError::RidgesInLayers {
+            step: Length::new(c.step, c.units),
+            tool_width: Length::new(g.w, c.units),
+        });
+    }
     // Layer tops: y_top = floor(y3) (R-G75LAYER).
     let y_top = ev.floor(Q::Y3)?;
 
@@ -1889,11 +1897,12 @@ mod tests {
     /// moves of a cycle expanded with a shifted start (same local path).
     #[test]
     fn range_check_matches_move_order() {
+        // Layers need a step no wider than the tool (R-G75RIDGE).
         let cases = [
-            G75Cycle { layer: Some(70_000), ..seed() },
+            G75Cycle { layer: Some(70_000), tool_width: Some(50_000), ..seed() },
             G75Cycle {
                 layer: Some(70_000),
-                step: 7_000,
+                step: 3_000,
                 tool_width: Some(3_000),
                 path: PathType::RoughAndFinish,
                 ..seed()
@@ -1902,6 +1911,7 @@ mod tests {
                 depth: 200_000,
                 width: 100_000,
                 layer: Some(45_000),
+                tool_width: Some(60_000),
                 from: Point::new(400_000, 300_000),
                 path: PathType::RoughAndFinish,
                 corners: [Corner { size: 3_000, kind: CornerKind::Round }; 4],
