@@ -517,8 +517,10 @@ impl Job {
         for call in self.program.grooves() {
             let moves = self.expand_g75(&call.cycle, call.block.line)?;
             // The profile and the roughing region are the paths of the same
-            // groove for a pointed tool (plot_g75's module documentation).
-            let pointed = G75Cycle { tool_width: None, ..call.cycle };
+            // groove for a pointed tool (plot_g75's module documentation),
+            // in one layer: the rough contour does not depend on V, and a
+            // pointed tool in layers is refused (R-G75RIDGE).
+            let pointed = G75Cycle { tool_width: None, layer: None, ..call.cycle };
             let profile =
                 self.expand_g75(&G75Cycle { path: cycleref::PathType::Finish, ..pointed }, call.block.line)?;
             let rough =

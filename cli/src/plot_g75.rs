@@ -11,8 +11,9 @@
 //!
 //! The profile and the roughing region are not computed here: they are the
 //! paths of the same cycle run by the same engine for a pointed tool (J2
-//! for the profile, J0 for the roughing region), so the drawing cannot
-//! disagree with the expansion.
+//! for the profile, J0 in one layer for the roughing region: the rough
+//! contour does not depend on V), so the drawing cannot disagree with the
+//! expansion.
 
 use std::fmt::Write as _;
 
