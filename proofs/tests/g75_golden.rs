@@ -319,7 +319,8 @@ fn layers_with_a_step_wider_than_the_tool() {
     assert_eq!(e.line, 4);
     // One layer: the ridge stays until the rough contour's bottom pass.
     let (moves, _) = both(&wide.replace(" V4", ""), &m);
-    let plunges: Vec<i64> = moves.iter().filter(|m| matches!(m.role, Role::Step(_))).map(|m| m.to.z).collect();
+    let plunges: Vec<i64> =
+        moves.iter().filter(|m| matches!(m.role, Role::Step(_))).map(|m| m.to.z).collect();
     // Z = −u: plunges at u = 600 (K2: the chord of r3 at the bottom), 3601, 4500.
     assert_eq!(plunges, [-3_601, -4_500]);
     let (moves, _) = both(&wide.replace("J1", "J2"), &m);
