@@ -12,7 +12,8 @@
 //! no hash maps), so the same count and seed give the same bytes and a
 //! larger count extends a smaller one. The template of case `i` depends on
 //! `i` alone: 3 slots in 5 are valid programs, 2 in 5 programs that must be
-//! refused, and the first 60 cases use every template at least once.
+//! refused, and the first 90 cases (the checked-in corpus) use every
+//! template at least once.
 //!
 //! Expected results come from the program reader and the fixed-point
 //! engine; every cycle is also expanded by the exact reference model and a
@@ -23,10 +24,11 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::Path;
 
+use cycleref::g75::RIGHT_ANGLE;
 use cycleref::units::write_fixed;
 use cycleref::{
-    CycleError, G32RunOut, IncrementSystem, Infeed, InputUnit, LeadWord, Move, PassKind, Role, RunOut, Units,
-    XMode,
+    CornerKind, CycleError, G32RunOut, IncrementSystem, Infeed, InputUnit, LeadWord, Motion, Move, PassKind,
+    PathType, Role, RunOut, Units, XMode,
 };
 use cycleref_spec::profile::{ParamValue, Profile};
 use cycleref_spec::reader::{G32Call, G75Call, G76Call, Item};
@@ -1442,6 +1444,351 @@ fn v_g32_continuous(rng: &mut Rng) -> Draft {
     .requiring(&["g32:continuous", "g32:q"])
 }
 
+// ---- G75.1 grooves (GSK 980TDi only) ----
+
+/// One G75.1 cycle as written, in increments: X, P(Δi), H, V and U in
+/// X-word units, R and the corner sizes radius values, the rest along Z.
+#[derive(Clone)]
+struct Groove {
+    /// Where the tool is before the cycle (it returns there).
+    from: (i64, i64),
+    /// The start point S; a `None` coordinate is left out of block 1 (note
+    /// 3: the current position).
+    start: (Option<i64>, Option<i64>),
+    peck: i64,
+    step: i64,
+    depth: i64,
+    width: i64,
+    /// A, B, L as written, in degrees; `None`: left out (90°, 90°, 0°).
+    a: Option<String>,
+    b: Option<String>,
+    l: Option<String>,
+    retract: Option<i64>,
+    layer: Option<i64>,
+    u: Option<i64>,
+    w: Option<i64>,
+    tool: Option<i64>,
+    j: Option<u8>,
+    /// A(r1), B(r2), D(r3), E(r4); `None`: left out.
+    corners: [Option<i64>; 4],
+    /// P(a)(b)(d)(e) of block 2 as written.
+    digits: Option<String>,
+    /// Block 1 words left out: any of `P`, `Q`, `H`, `D`.
+    omit: &'static str,
+}
+
+/// A sharp, right-angled groove of radial depth `h_um` and bottom width
+/// `d_um` (microns of a radius), towards `sx` on X and `sz` on Z, with a
+/// peck and a step that are replaced by the templates; S is on an outer
+/// diameter for `sx < 0`, in a bore for `sx > 0`, and the tool stands clear
+/// of it.
+fn groove(rng: &mut Rng, ctx: &Ctx, sx: i64, sz: i64, h_um: i64, d_um: i64) -> Groove {
+    let xf = ctx.xf();
+    let r0 = if sx < 0 { rng.range(150, 400) } else { rng.range(120, 300) } * 100;
+    let zs = rng.range(-200, 200) * 100;
+    let clear = rng.range(10, 50) * 100;
+    let from_r = if sx < 0 { r0 + clear } else { r0 - clear };
+    let from_z = zs - sz * rng.range(0, 50) * 100;
+    Groove {
+        from: (xf * ctx.mm(from_r), ctx.mm(from_z)),
+        start: (Some(xf * ctx.mm(r0)), Some(ctx.mm(zs))),
+        peck: xf * ctx.mm(h_um),
+        step: ctx.mm(d_um).max(1),
+        depth: sx * xf * ctx.mm(h_um),
+        width: sz * ctx.mm(d_um),
+        a: None,
+        b: None,
+        l: None,
+        retract: None,
+        layer: None,
+        u: None,
+        w: None,
+        tool: None,
+        j: None,
+        corners: [None; 4],
+        digits: None,
+        omit: "",
+    }
+}
+
+/// P(Δi) that cuts `h` radius increments in at most `n` pecks, in X-word
+/// units, rounded up to 0.1 mm where the units allow.
+fn peck_for(ctx: &Ctx, h: i64, n: i64) -> i64 {
+    let grain = ctx.mm(100).max(1);
+    let per = (h + n - 1) / n.max(1);
+    ctx.xf() * ((per + grain - 1) / grain * grain).max(1)
+}
+
+/// `microns` of a radius in increments, at least one.
+fn small(ctx: &Ctx, microns: i64) -> i64 {
+    ctx.mm(microns).max(1)
+}
+
+/// A flank angle in degrees, as written.
+fn angle(rng: &mut Rng, choices: &[&str]) -> Option<String> {
+    Some(rng.pick(choices).to_string())
+}
+
+/// P(a)(b)(d)(e) for `round` (1 for a round, 0 for a chamfer, in the order
+/// A B D E), with the leading zeros sometimes left out (reading R-G75P).
+fn corner_digits(rng: &mut Rng, round: [bool; 4]) -> String {
+    let full: String = round.iter().map(|&r| if r { '1' } else { '0' }).collect();
+    if rng.chance(50) {
+        let trimmed = full.trim_start_matches('0');
+        if trimmed.is_empty() {
+            "0".into()
+        } else {
+            trimmed.into()
+        }
+    } else {
+        full
+    }
+}
+
+/// The two blocks of a G75.1.
+fn g75_lines(ctx: &Ctx, g: &Groove) -> Vec<String> {
+    let mut b1 = String::from("G75.1");
+    if let Some(x) = g.start.0 {
+        let _ = write!(b1, " X{}", ctx.num(x));
+    }
+    if let Some(z) = g.start.1 {
+        let _ = write!(b1, " Z{}", ctx.num(z));
+    }
+    for (letter, v, pq) in
+        [('P', g.peck, true), ('Q', g.step, true), ('H', g.depth, false), ('D', g.width, false)]
+    {
+        if !g.omit.contains(letter) {
+            let _ = write!(b1, " {letter}{}", if pq { ctx.pq(v) } else { ctx.num(v) });
+        }
+    }
+    for (letter, a) in [('A', &g.a), ('B', &g.b), ('L', &g.l)] {
+        if let Some(a) = a {
+            let _ = write!(b1, " {letter}{a}");
+        }
+    }
+    let mut b2 = String::from("G75.1");
+    for (letter, v) in [('R', g.retract), ('V', g.layer), ('U', g.u), ('W', g.w), ('I', g.tool)] {
+        if let Some(v) = v {
+            let _ = write!(b2, " {letter}{}", ctx.num(v));
+        }
+    }
+    if let Some(j) = g.j {
+        let _ = write!(b2, " J{j}");
+    }
+    for (letter, v) in ['A', 'B', 'D', 'E'].into_iter().zip(g.corners) {
+        if let Some(v) = v {
+            let _ = write!(b2, " {letter}{}", ctx.num(v));
+        }
+    }
+    if let Some(p) = &g.digits {
+        let _ = write!(b2, " P{p}");
+    }
+    vec![b1, b2]
+}
+
+/// The lines of a one-G75.1 program.
+fn g75_program(rng: &mut Rng, ctx: &Ctx, g: &Groove) -> Vec<String> {
+    let mut lines = head(rng, ctx, g.from);
+    lines.extend(g75_lines(ctx, g));
+    if rng.chance(30) {
+        let away = if g.depth < 0 { 1 } else { -1 };
+        lines.push(format!(
+            "G00 X{} Z{}",
+            ctx.num(g.from.0 + away * ctx.xf() * ctx.mm(5000)),
+            ctx.num(g.from.1 + ctx.mm(20_000))
+        ));
+    }
+    lines.push("M30".into());
+    lines
+}
+
+fn v_g75_seed(rng: &mut Rng) -> Draft {
+    let mut ctx = Ctx::new(ProfileName::Gsk980, rng);
+    // The seed's example is written for IS-C (P30000 is 3 mm).
+    ctx.increment = IncrementSystem::IsC;
+    let h_um = rng.range(60, 100) * 100;
+    let d_um = rng.range(60, 120) * 100;
+    let mut g = groove(rng, &ctx, -1, -1, h_um, d_um);
+    g.a = Some("45".into());
+    g.b = Some("30".into());
+    g.peck = peck_for(&ctx, ctx.mm(h_um), rng.range(3, 6));
+    g.step = small(&ctx, rng.range(d_um / 200, d_um / 100) * 100);
+    g.retract = Some(small(&ctx, rng.range(2, 10) * 100));
+    let with_tool = rng.chance(30);
+    if with_tool {
+        g.tool = Some(small(&ctx, rng.range(20, 40) * 100));
+    }
+    let lines = g75_program(rng, &ctx, &g);
+    let what =
+        if with_tool { "with the grooving tool's width I" } else { "as written, a pointed tool (R-G75SEED)" };
+    Draft::valid(
+        ctx,
+        lines,
+        format!("G75.1 shaped as seed 001's example O0008 (IS-C, A45 B30, pecks with a retract R), {what}"),
+        &["template:g75-seed"],
+    )
+    .requiring(&["g75", "g75:angled", "g75:pecking", "g75:j0", "g75:-x", "g75:-z"])
+}
+
+fn v_g75_square(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let xf = ctx.xf();
+    let (sx, sz) = (rng.sign(), rng.sign());
+    let h_um = rng.range(30, 60) * 100;
+    let w_um = rng.range(20, 40) * 100;
+    let d_um = w_um + rng.range(15, 40) * 100;
+    let mut g = groove(rng, &ctx, sx, sz, h_um, d_um);
+    let h = ctx.mm(h_um);
+    // Two layers: V is 55-75 % of the depth, U at most 10 %.
+    g.layer = Some(xf * (h * rng.range(55, 75) / 100).max(1));
+    g.u = Some(xf * small(&ctx, rng.range(1, 3) * 100));
+    g.w = Some(small(&ctx, rng.range(1, 3) * 100));
+    g.tool = Some(small(&ctx, w_um));
+    g.step = (ctx.mm(w_um) * rng.range(80, 100) / 100).max(1);
+    g.peck = peck_for(&ctx, h, rng.range(1, 2));
+    if rng.chance(80) {
+        g.retract = Some(small(&ctx, rng.range(1, 5) * 100));
+    }
+    g.j = Some(1);
+    if rng.chance(50) {
+        g.corners[0] = Some(small(&ctx, rng.range(2, 5) * 100));
+    }
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::valid(
+        ctx,
+        lines,
+        "G75.1 square groove in two layers V, allowances U W, a grooving tool I, rough and finish J1".into(),
+        &["template:g75-square"],
+    )
+    .requiring(&["g75:layers", "g75:allowances", "g75:tool-width", "g75:j1"])
+}
+
+fn v_g75_corners(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let (sx, sz) = (rng.sign(), rng.sign());
+    let h_um = rng.range(30, 60) * 100;
+    let with_tool = rng.chance(50);
+    let w_um = if with_tool { rng.range(15, 25) * 100 } else { 0 };
+    let d_um = w_um + rng.range(25, 45) * 100;
+    let mut g = groove(rng, &ctx, sx, sz, h_um, d_um);
+    g.a = angle(rng, &["45", "60", "62.5", "70", "75", "80"]);
+    g.b = angle(rng, &["45", "60", "75", "80", "90"]);
+    // One corner a round and another a chamfer, the other two either or none.
+    let round_at = rng.index(4);
+    let chamfer_at = (round_at + 1 + rng.index(3)) % 4;
+    let mut round = [false; 4];
+    for (i, corner) in g.corners.iter_mut().enumerate() {
+        let set = i == round_at || i == chamfer_at || rng.chance(50);
+        *corner = set.then(|| small(&ctx, rng.range(2, 8) * 100));
+        round[i] = i == round_at || (i != chamfer_at && rng.chance(50));
+    }
+    g.digits = Some(corner_digits(rng, round));
+    g.j = Some(1);
+    g.tool = with_tool.then(|| small(&ctx, w_um));
+    g.step = if with_tool {
+        (ctx.mm(w_um) * rng.range(80, 100) / 100).max(1)
+    } else {
+        small(&ctx, rng.range(15, 30) * 100)
+    };
+    g.peck = peck_for(&ctx, ctx.mm(h_um), rng.range(1, 2));
+    g.retract = Some(small(&ctx, rng.range(2, 5) * 100));
+    if rng.chance(40) {
+        g.u = Some(ctx.xf() * small(&ctx, rng.range(1, 2) * 100));
+        g.w = Some(small(&ctx, rng.range(1, 2) * 100));
+    }
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::valid(
+        ctx,
+        lines,
+        "G75.1 trapezoidal groove with chamfers and rounds at its corners (P digits), rough and finish J1"
+            .into(),
+        &["template:g75-corners"],
+    )
+    .requiring(&["g75:angled", "g75:corners", "g75:arcs", "g75:chamfers", "g75:j1"])
+}
+
+fn v_g75_slope(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let (sx, sz) = (rng.sign(), rng.sign());
+    let h_um = rng.range(30, 60) * 100;
+    let with_tool = rng.chance(40);
+    let w_um = if with_tool { rng.range(15, 25) * 100 } else { 0 };
+    let d_um = w_um + rng.range(25, 50) * 100;
+    let mut g = groove(rng, &ctx, sx, sz, h_um, d_um);
+    // Every B offered is steeper than every L (R-G75SLOPE: L < B).
+    g.l = angle(rng, &["5", "7.5", "10", "15", "20", "30"]);
+    if rng.chance(60) {
+        g.b = angle(rng, &["45", "60", "75", "90"]);
+    }
+    if rng.chance(50) {
+        g.a = angle(rng, &["60", "75", "90"]);
+    }
+    let mut round = [false; 4];
+    for (i, corner) in g.corners.iter_mut().enumerate() {
+        if rng.chance(40) {
+            *corner = Some(small(&ctx, rng.range(2, 6) * 100));
+            round[i] = rng.chance(50);
+        }
+    }
+    if g.corners.iter().any(Option::is_some) && rng.chance(80) {
+        g.digits = Some(corner_digits(rng, round));
+    }
+    g.tool = with_tool.then(|| small(&ctx, w_um));
+    g.step = small(&ctx, rng.range(15, 30) * 100);
+    g.peck = peck_for(&ctx, ctx.mm(h_um), rng.range(1, 3));
+    g.j = Some(2);
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::valid(
+        ctx,
+        lines,
+        "G75.1 groove whose opening lies on a slope L, finishing contour only (J2)".into(),
+        &["template:g75-slope"],
+    )
+    .requiring(&["g75:slope", "g75:j2"])
+}
+
+fn v_g75_internal(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let h_um = rng.range(20, 50) * 100;
+    let d_um = rng.range(30, 60) * 100;
+    let mut g = groove(rng, &ctx, 1, 1, h_um, d_um);
+    // The tool stands at S: block 1 leaves X, Z or both out (note 3).
+    let (xs, zs) = (g.start.0.unwrap_or(0), g.start.1.unwrap_or(0));
+    match rng.range(0, 3) {
+        0 => {
+            g.from.0 = xs;
+            g.start.0 = None;
+        }
+        1 => {
+            g.from.1 = zs;
+            g.start.1 = None;
+        }
+        _ => {
+            g.from = (xs, zs);
+            g.start = (None, None);
+        }
+    }
+    if rng.chance(50) {
+        g.a = angle(rng, &["60", "75", "90"]);
+        g.b = angle(rng, &["60", "75", "90"]);
+    }
+    g.peck = peck_for(&ctx, ctx.mm(h_um), rng.range(2, 3));
+    g.step = small(&ctx, rng.range(15, 30) * 100);
+    g.retract = Some(small(&ctx, rng.range(1, 5) * 100));
+    if rng.chance(50) {
+        g.j = Some(0);
+    }
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::valid(
+        ctx,
+        lines,
+        "G75.1 internal groove towards +Z from the current position (X/Z of block 1 left out), roughing J0"
+            .into(),
+        &["template:g75-internal", "rule:g75-start-omitted"],
+    )
+    .requiring(&["g75:+x", "g75:+z", "g75:j0", "g75:pecking"])
+}
+
 // ---- templates of programs that must be refused ----
 
 /// A usual one-G76 draft to break.
@@ -2014,6 +2361,304 @@ fn r_misc(rng: &mut Rng) -> Draft {
     Draft::refused(ctx, lines, format!("a program the reader refuses: {what}"), &["refuse:reader"], kind)
 }
 
+// ---- G75.1 programs that must be refused ----
+
+/// A valid right-angled G75.1 draft to break: A and B left out (90°), a
+/// pointed tool, one to three pecks and a few plunges, any J.
+fn g75_base(rng: &mut Rng) -> (Ctx, Groove) {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let (sx, sz) = (rng.sign(), rng.sign());
+    let h_um = rng.range(20, 60) * 100;
+    let d_um = rng.range(30, 80) * 100;
+    let mut g = groove(rng, &ctx, sx, sz, h_um, d_um);
+    g.peck = peck_for(&ctx, ctx.mm(h_um), rng.range(1, 3));
+    g.step = small(&ctx, rng.range(15, 30) * 100);
+    if rng.chance(60) {
+        g.retract = Some(small(&ctx, rng.range(1, 5) * 100));
+    }
+    if rng.chance(50) {
+        g.j = Some(u8::try_from(rng.range(0, 2)).unwrap_or(0));
+    }
+    (ctx, g)
+}
+
+/// The radial depth of `g` in radius increments, and the bottom width.
+fn g75_size(ctx: &Ctx, g: &Groove) -> (i64, i64) {
+    (g.depth.abs() / ctx.xf(), g.width.abs())
+}
+
+fn r_g75_missing(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let (letter, what) = rng.pick(&[("P", "P(Δi)"), ("Q", "Q(Δk)"), ("H", "H(h)"), ("D", "D(d)")]);
+    g.omit = letter;
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 block 1 without {what} (note 3: H, D, P and Q cannot be omitted)"),
+        &["refuse:g75-missing-word"],
+        "missing",
+    )
+}
+
+fn r_g75_lone(rng: &mut Rng) -> Draft {
+    let (ctx, g) = g75_base(rng);
+    let mut lines = head(rng, &ctx, g.from);
+    let blocks = g75_lines(&ctx, &g);
+    let mut block2 = blocks[1].clone();
+    if g.retract.is_none() {
+        // A block 2 needs one of its own words to be told from a block 1.
+        let _ = write!(block2, " R{}", ctx.num(small(&ctx, 500)));
+    }
+    let what = match rng.range(0, 3) {
+        0 => {
+            lines.push(blocks[0].clone());
+            lines.push(format!("G00 X{} Z{}", ctx.num(g.from.0), ctx.num(g.from.1)));
+            lines.push("M30".into());
+            "block 1 followed by another block"
+        }
+        1 => {
+            lines.push(blocks[0].clone());
+            "block 1 at the end of the program"
+        }
+        2 => {
+            lines.push(block2);
+            lines.push("M30".into());
+            "block 2 without a block 1"
+        }
+        _ => {
+            lines.push(block2);
+            lines.push(blocks[0].clone());
+            lines.push("M30".into());
+            "block 2 before block 1"
+        }
+    };
+    Draft::refused(
+        ctx,
+        lines,
+        format!("a lone G75.1 block: {what} (note 3: always two blocks)"),
+        &["refuse:g75-lone-block"],
+        "missing",
+    )
+}
+
+fn r_g75_angle(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let what = match rng.range(0, 4) {
+        0 => {
+            g.a = Some("0".into());
+            "A0"
+        }
+        1 => {
+            g.a = Some(rng.range(91, 180).to_string());
+            "A above 90 degrees"
+        }
+        2 => {
+            g.b = Some("0".into());
+            "B0"
+        }
+        3 => {
+            g.b = Some(rng.range(91, 180).to_string());
+            "B above 90 degrees"
+        }
+        _ => {
+            g.l = Some(rng.range(90, 120).to_string());
+            "L of 90 degrees or more"
+        }
+    };
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 with an angle outside its range: {what} (0 < A, B <= 90, 0 <= L < 90)"),
+        &["refuse:g75-angle-out-of-range"],
+        "cycle:angle_out_of_range",
+    )
+}
+
+fn r_g75_slope(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let b = rng.pick(&[15, 20, 30, 45, 60, 75]);
+    let l = if rng.chance(30) { b } else { rng.range(b + 1, 89) };
+    g.b = Some(b.to_string());
+    g.l = Some(l.to_string());
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 whose slope L{l} is not below the flank angle B{b} (R-G75SLOPE)"),
+        &["refuse:g75-slope-not-below-flank"],
+        "cycle:slope_not_below_flank",
+    )
+}
+
+fn r_g75_allowance(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let extra = if rng.chance(30) { 0 } else { ctx.xf() * small(&ctx, rng.range(1, 20) * 100) };
+    g.u = Some(g.depth.abs() + extra);
+    let lines = g75_program(rng, &ctx, &g);
+    let what = if extra == 0 { "equal to" } else { "larger than" };
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 whose allowance U is {what} the groove depth H"),
+        &["refuse:g75-allowance-exceeds-depth"],
+        "cycle:allowance_exceeds_depth",
+    )
+}
+
+fn r_g75_corner(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let (h, d) = g75_size(&ctx, &g);
+    // Square flanks: a chamfer or round of size c takes c of each edge.
+    let (what, pair, edge) = match rng.range(0, 2) {
+        0 => ("A(r1) and D(r3) longer than flank A", [0, 2], h),
+        1 => ("D(r3) and E(r4) longer than the bottom", [2, 3], d),
+        _ => ("E(r4) and B(r2) longer than flank B", [3, 1], h),
+    };
+    for i in pair {
+        g.corners[i] = Some(edge * rng.range(55, 80) / 100 + 1);
+    }
+    if rng.chance(50) {
+        let round = [rng.chance(50), rng.chance(50), rng.chance(50), rng.chance(50)];
+        g.digits = Some(corner_digits(rng, round));
+    }
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 with corners {what}"),
+        &["refuse:g75-corner-too-large"],
+        "cycle:corner_too_large",
+    )
+}
+
+fn r_g75_narrow(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let (_, d) = g75_size(&ctx, &g);
+    let what = match rng.range(0, 2) {
+        0 => {
+            g.tool = Some(d + small(&ctx, rng.range(1, 20) * 100));
+            "a tool I wider than the bottom D"
+        }
+        1 => {
+            g.w = Some(d / 2 + small(&ctx, rng.range(1, 10) * 100));
+            "an allowance W above half the bottom"
+        }
+        _ => {
+            // The bottom corners fit (d/4 + d/4 <= d) but leave d/2 of it.
+            g.corners[2] = Some(d / 4);
+            g.corners[3] = Some(d / 4);
+            g.tool = Some(d - 2 * (d / 4) + small(&ctx, rng.range(1, 10) * 100));
+            "bottom corners D(r3) E(r4) leaving less than the tool's width"
+        }
+    };
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 groove narrower than the tool: {what}"),
+        &["refuse:g75-groove-narrower-than-tool"],
+        "cycle:groove_narrower_than_tool",
+    )
+}
+
+fn r_g75_ridges(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let (h, d) = g75_size(&ctx, &g);
+    // Two to four layers; a tool (or a pointed one) under half the bottom,
+    // so that layer 1 has plunges more than its width apart.
+    g.layer = Some(ctx.xf() * (h * rng.range(30, 60) / 100).max(1));
+    let tool = if rng.chance(30) { 0 } else { (d * rng.range(20, 40) / 100).max(1) };
+    g.tool = (tool > 0).then_some(tool);
+    g.step = tool + small(&ctx, rng.range(1, 10) * 100);
+    g.j = rng.chance(50).then(|| u8::try_from(rng.range(0, 1)).unwrap_or(0));
+    let lines = g75_program(rng, &ctx, &g);
+    let what = if tool > 0 { "the tool I" } else { "a pointed tool" };
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 roughed in layers V with a step Q wider than {what} (R-G75RIDGE)"),
+        &["refuse:g75-ridges-in-layers"],
+        "cycle:ridges_in_layers",
+    )
+}
+
+fn r_g75_word(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    let units = ctx.units();
+    let over = rng.range(1, 1000);
+    let what = match rng.range(0, 6) {
+        0 => {
+            g.retract = Some(cycleref::g75::max_small(units) + over);
+            "R(e) above 99.999 (99.9999 at IS-C)"
+        }
+        1 => {
+            g.u = Some(-ctx.xf() * small(&ctx, rng.range(1, 5) * 100));
+            "a negative U (unsigned)"
+        }
+        2 => {
+            g.w = Some(-small(&ctx, rng.range(1, 5) * 100));
+            "a negative W (unsigned)"
+        }
+        3 => {
+            g.layer = Some(0);
+            "V0"
+        }
+        4 => {
+            g.corners[rng.index(4)] = Some(cycleref::g75::max_small(units) + over);
+            "a corner size above 99.999 (99.9999 at IS-C)"
+        }
+        5 => {
+            if rng.chance(50) {
+                g.peck = 0;
+                "P0"
+            } else {
+                g.step = 0;
+                "Q0"
+            }
+        }
+        _ => {
+            g.depth = g.depth.signum() * (cycleref::g75::max_size(units) + over);
+            "H beyond 9999.999 (9999.9999 at IS-C)"
+        }
+    };
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        format!("G75.1 with a word outside the manual's range: {what}"),
+        &["refuse:g75-word-out-of-range"],
+        "cycle:word_out_of_range",
+    )
+}
+
+fn r_g75_no_depth(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    g.depth = 0;
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(ctx, lines, "G75.1 with H0".into(), &["refuse:g75-no-depth"], "cycle:no_groove_depth")
+}
+
+fn r_g75_too_many_pecks(rng: &mut Rng) -> Draft {
+    let (ctx, mut g) = g75_base(rng);
+    // Pecks of one or two increments into a depth of 2000 or more of them,
+    // at a thousand plunges or more: above MAX_PECKS (10^6).
+    g.peck = rng.range(1, 2);
+    g.step = rng.range(1, 2);
+    g.depth = g.depth.signum() * g.peck * rng.range(2000, 4000);
+    g.width = g.width.signum() * g.step * rng.range(1000, 2000);
+    g.j = rng.chance(50).then(|| u8::try_from(rng.range(0, 1)).unwrap_or(0));
+    let lines = g75_program(rng, &ctx, &g);
+    Draft::refused(
+        ctx,
+        lines,
+        "G75.1 needing more than a million pecks (P and Q of one or two increments)".into(),
+        &["refuse:g75-too-many-pecks"],
+        "cycle:too_many_pecks",
+    )
+}
+
 // ---- the template schedule ----
 
 type Make = fn(&mut Rng) -> Draft;
@@ -2045,6 +2690,11 @@ const VALID: &[Make] = &[
     v_runout_988_k_only,
     v_g32_runout_988,
     v_fanuc_calc,
+    v_g75_seed,
+    v_g75_square,
+    v_g75_corners,
+    v_g75_slope,
+    v_g75_internal,
 ];
 
 /// Templates of refused programs, in the order the refused slots use them.
@@ -2073,6 +2723,17 @@ const REFUSED: &[Make] = &[
     r_pass_out_of_range,
     r_unit_change,
     r_misc,
+    r_g75_missing,
+    r_g75_lone,
+    r_g75_angle,
+    r_g75_slope,
+    r_g75_allowance,
+    r_g75_corner,
+    r_g75_narrow,
+    r_g75_ridges,
+    r_g75_word,
+    r_g75_no_depth,
+    r_g75_too_many_pecks,
 ];
 
 /// The template of case `index` (1-based): slots 2 and 4 of every 5 are
@@ -2136,6 +2797,7 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                 let reference = cycleref_spec::g75::expand(&call.cycle);
                 same(id, "G75.1", call.block.line, &engine, &reference)?;
                 if let Ok(moves) = &engine {
+                    g75_tags(call, moves, &mut tags);
                     cycles.push(g75_json(call, moves));
                 }
                 (call.block.line, engine)
@@ -2340,6 +3002,49 @@ fn g32_tags(call: &G32Call, moves: &[Move], tags: &mut BTreeSet<String>) {
     }
     if b.sync && !b.start_angle.is_zero() && !moves.is_empty() {
         tag(tags, "g32:q");
+    }
+}
+
+/// The features a valid G75.1 shows, read from the cycle and its moves.
+fn g75_tags(call: &G75Call, moves: &[Move], tags: &mut BTreeSet<String>) {
+    let c = &call.cycle;
+    tag(tags, "g75");
+    tag(tags, if c.depth < 0 { "g75:-x" } else { "g75:+x" });
+    tag(tags, if c.width < 0 { "g75:-z" } else { "g75:+z" });
+    if c.flank_a != RIGHT_ANGLE || c.flank_b != RIGHT_ANGLE {
+        tag(tags, "g75:angled");
+    }
+    if c.slope > 0 {
+        tag(tags, "g75:slope");
+    }
+    tag(
+        tags,
+        match c.path {
+            PathType::Rough => "g75:j0",
+            PathType::RoughAndFinish => "g75:j1",
+            PathType::Finish => "g75:j2",
+        },
+    );
+    if c.allowance_x > 0 || c.allowance_z > 0 {
+        tag(tags, "g75:allowances");
+    }
+    if c.tool_width.is_some_and(|w| w > 0) {
+        tag(tags, "g75:tool-width");
+    }
+    if moves.iter().any(|m| matches!(m.role, Role::LayerChange(_))) {
+        tag(tags, "g75:layers");
+    }
+    if moves.iter().any(|m| matches!(m.role, Role::PeckRetract(_))) {
+        tag(tags, "g75:pecking");
+    }
+    if c.corners.iter().any(|k| k.size > 0) {
+        tag(tags, "g75:corners");
+    }
+    if c.path.finishes() && c.corners.iter().any(|k| k.size > 0 && k.kind == CornerKind::Chamfer) {
+        tag(tags, "g75:chamfers");
+    }
+    if moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })) {
+        tag(tags, "g75:arcs");
     }
 }
 

@@ -1,5 +1,5 @@
 //! `cycleref vectors`: the checked-in corpus in `vectors/` is exactly what
-//! the generator writes for `--count 60 --seed 1`, it covers every feature
+//! the generator writes for `--count 90 --seed 1`, it covers every feature
 //! and every listed error kind, and every case replays: its program, read
 //! again with its machine settings, gives its expectation (the moves through
 //! `cycleref expand --format json` with both engines, the error through the
@@ -16,9 +16,9 @@ use serde_json::Value;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../vectors");
-const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 60 --seed 1 --out vectors";
+const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 90 --seed 1 --out vectors";
 
-/// Tags every corpus of 60 cases shows on at least one case with moves.
+/// Tags every corpus of 90 cases shows on at least one case with moves.
 const FEATURES: &[&str] = &[
     "profile:fanuc",
     "profile:gsk980",
@@ -96,9 +96,27 @@ const FEATURES: &[&str] = &[
     "rule:g32-gsk988-jk",
     "rule:g32-gsk988-j-only",
     "rule:g32-jk-cancelled",
+    "g75",
+    "g75:-x",
+    "g75:+x",
+    "g75:-z",
+    "g75:+z",
+    "g75:angled",
+    "g75:slope",
+    "g75:j0",
+    "g75:j1",
+    "g75:j2",
+    "g75:pecking",
+    "g75:layers",
+    "g75:allowances",
+    "g75:tool-width",
+    "g75:corners",
+    "g75:chamfers",
+    "g75:arcs",
+    "rule:g75-start-omitted",
 ];
 
-/// Error kinds every corpus of 60 cases refuses at least once, with the
+/// Error kinds every corpus of 90 cases refuses at least once, with the
 /// scenario tag of the refusal.
 const REFUSALS: &[(&str, &str)] = &[
     ("missing", "refuse:missing-p"),
@@ -124,6 +142,17 @@ const REFUSALS: &[(&str, &str)] = &[
     ("position_unknown", "refuse:position-unknown"),
     ("cycle:out_of_range", "refuse:pass-coordinate-out-of-range"),
     ("unit_change_after_motion", "refuse:unit-change-after-motion"),
+    ("missing", "refuse:g75-missing-word"),
+    ("missing", "refuse:g75-lone-block"),
+    ("cycle:angle_out_of_range", "refuse:g75-angle-out-of-range"),
+    ("cycle:slope_not_below_flank", "refuse:g75-slope-not-below-flank"),
+    ("cycle:allowance_exceeds_depth", "refuse:g75-allowance-exceeds-depth"),
+    ("cycle:corner_too_large", "refuse:g75-corner-too-large"),
+    ("cycle:groove_narrower_than_tool", "refuse:g75-groove-narrower-than-tool"),
+    ("cycle:ridges_in_layers", "refuse:g75-ridges-in-layers"),
+    ("cycle:word_out_of_range", "refuse:g75-word-out-of-range"),
+    ("cycle:no_groove_depth", "refuse:g75-no-depth"),
+    ("cycle:too_many_pecks", "refuse:g75-too-many-pecks"),
 ];
 
 /// The stable kind names of `vectors/README.md`, written out again here
@@ -223,7 +252,7 @@ fn cases(dir: &Path) -> Vec<Value> {
 
 #[test]
 fn checked_in_corpus_is_what_the_generator_writes() {
-    let fresh = files(&generate(60, 1, "fresh"));
+    let fresh = files(&generate(90, 1, "fresh"));
     let stored = files(Path::new(CORPUS));
     assert_eq!(
         fresh.keys().collect::<Vec<_>>(),
@@ -300,7 +329,7 @@ fn the_corpus_covers_every_feature_and_error_kind() {
 fn other_seeds_cover_everything_too() {
     // Each template fixes what it covers; the seed only varies the rest.
     for seed in [2, 3] {
-        assert_covered(&generate(60, seed, &format!("seed-{seed}")));
+        assert_covered(&generate(90, seed, &format!("seed-{seed}")));
     }
 }
 
@@ -350,6 +379,11 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
                 cycleref::expand_g32(&c.g32).map(Iterator::count),
                 cycleref_spec::g32::expand(&c.g32).map(|v| v.len()),
             ),
+            Item::G75(c) => (
+                c.block.line,
+                cycleref::expand_g75(&c.cycle).map(Iterator::count),
+                cycleref_spec::g75::expand(&c.cycle).map(|v| v.len()),
+            ),
             _ => continue,
         };
         assert_eq!(engine, reference, "line {line}: the engines differ");
@@ -364,7 +398,7 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
 fn every_case_replays() {
     let dir = scratch("replay");
     let all = cases(Path::new(CORPUS));
-    assert_eq!(all.len(), 60);
+    assert_eq!(all.len(), 90);
     for case in &all {
         let id = case["id"].as_str().unwrap();
         assert_eq!(case["schema"], "cycleref-vector/1", "{id}");

@@ -69,6 +69,9 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
             cycleref_spec::Item::G32(c) => out.extend(cycleref::expand_g32(&c.g32).unwrap().map(|m| {
                 CyclerefMove::from_move(&m, c.g32.units.decimals(), CyclerefCycle::G32, c.block.line)
             })),
+            cycleref_spec::Item::G75(c) => out.extend(cycleref::expand_g75(&c.cycle).unwrap().map(|m| {
+                CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G75, c.block.line)
+            })),
             _ => {}
         }
     }
@@ -101,6 +104,9 @@ fn every_example_equals_the_engine() {
         ("gsk980-g32-runout.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g32-taper.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
         ("seed000-extended.nc", CyclerefProfile::Gsk988, ProfileName::Gsk988, IsB),
+        ("gsk980-g75-seed.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
+        ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
     ] {
         let text = example(name);
         let mut o = options(profile);
@@ -137,6 +143,200 @@ fn g32_moves_have_no_pass() {
             (CyclerefCycle::G32, CyclerefMotion::Thread, 0, 0, 0)
         );
     }
+}
+
+/// A small right-angle G75.1 groove on the GSK 980TDi (IS-B, mm, X as a
+/// diameter): a 2 mm grooving tool, pecks with a retract, J1, and a round
+/// D(r3) of 0.5 at the bottom corner on the start side (P0010: the third
+/// digit, d, is 1).
+const GROOVE: &str =
+    "M03 S600\nG00 X52 Z3\nG75.1 X50 Z0 P4000 Q2000 H-6 D-5\nG75.1 R0.5 I2 J1 D0.5 P0010\nM30\n";
+
+/// The moves of `GROOVE`, worked out by hand from docs/G75.md (none copied
+/// from a program's output), as (motion, role, X, Z, plunge layer, plunge
+/// number) in increments of 0.001 mm.
+///
+/// S = (X50, Z0), from = (X52, Z3); H-6: sx = -1, Y = 6000 (diameter), f = 2;
+/// D-5: sz = -1, d = 5000; Δi = 4000, Δk = 2000 (182.7 = 0: increments);
+/// e = 500, so e_x = 1000; w = 2000; a = b = 90°, L = 0; ρ3 = 500, t3 =
+/// ρ3·tan 45° = 500. Local (u, y) maps to X = 50000 - y, Z = -u.
+///
+/// * Roughing region (§5): flankA_r = 0, flankB_r = 5000, bottom 6000,
+///   chord3_r(y) = 500 - (6000 - y)/2; one layer (no V), y1 = 6000, y_top =
+///   floor(y3) = 0.
+/// * Plunges (§7): A11 = ceil(max(0, 500)) = 500, A1f = 5000 - 2000 = 3000;
+///   at 500, 2500 (< 3000), then 3000. Pecks: to 4000 (X46), retract to
+///   max(0, 4000 - 1000) = 3000 (X47), to min(8000, 6000) = 6000 (X44), back
+///   to y_top (X50). Each step carries the plunge it moves to.
+/// * After the layer: back along Z to A11 (the X move is empty).
+/// * Rough contour (step 9): R0 = (ceil(left(0)), 0) = (0, 0); y_K1 =
+///   floor(6000 - 2·500) = 5000 > 0, K1 = (0, 5000) (X45 Z0); K2 = (500,
+///   6000) (X44 Z-0.5); t4 = 0: Q2 = (5000 - 2000, 6000) (X44 Z-3); R3 =
+///   (3000, 0) (X50 Z-3); back along Z to A11.
+/// * Finishing (step 10): along Z to F0 = S (X50 Z0; the X move is empty);
+///   flank A to T3a = (0, 6000 - 2·500) = (0, 5000) (X45 Z0); the round to
+///   T3b = (500, 6000) (X44 Z-0.5) about C3 = (500, 5000) (X45 Z-0.5),
+///   clockwise since sx·sz = +1 > 0 (R-G75ARCDIR: from east of the centre to
+///   south of it, with Z right and X up); the bottom to P2 - w = (3000, 6000);
+///   flank B to P3 - w = (3000, 0) (X50 Z-3).
+/// * Return: along Z to u = 0 (X50 Z0; the X moves are empty), then to from.
+fn groove_by_hand() -> Vec<(CyclerefMotion, CyclerefRole, i64, i64, u32, u32)> {
+    use CyclerefMotion::{ArcCw, Feed, Rapid};
+    use CyclerefRole::*;
+    let mut v = vec![(Rapid, Approach, 50_000, -500, 0, 0)];
+    for (n, z) in [(1, -500), (2, -2_500), (3, -3_000)] {
+        if n > 1 {
+            v.push((Rapid, Step, 50_000, z, 1, n));
+        }
+        v.extend([
+            (Feed, Peck, 46_000, z, 1, n),
+            (Rapid, PeckRetract, 47_000, z, 1, n),
+            (Feed, Peck, 44_000, z, 1, n),
+            (Rapid, PlungeRetract, 50_000, z, 1, n),
+        ]);
+    }
+    v.extend([
+        (Rapid, Approach, 50_000, -500, 0, 0),
+        (Rapid, RoughContour, 50_000, 0, 0, 0),
+        (Feed, RoughContour, 45_000, 0, 0, 0),
+        (Feed, RoughContour, 44_000, -500, 0, 0),
+        (Feed, RoughContour, 44_000, -3_000, 0, 0),
+        (Feed, RoughContour, 50_000, -3_000, 0, 0),
+        (Rapid, RoughContour, 50_000, -500, 0, 0),
+        (Rapid, FinishContour, 50_000, 0, 0, 0),
+        (Feed, FinishContour, 45_000, 0, 0, 0),
+        (ArcCw, FinishContour, 44_000, -500, 0, 0),
+        (Feed, FinishContour, 44_000, -3_000, 0, 0),
+        (Feed, FinishContour, 50_000, -3_000, 0, 0),
+        (Rapid, Return, 50_000, 0, 0, 0),
+        (Rapid, Return, 52_000, 3_000, 0, 0),
+    ]);
+    v
+}
+
+#[test]
+fn g75_groove_worked_by_hand() {
+    let moves = expand(GROOVE, &options(CyclerefProfile::Gsk980)).unwrap();
+    let got: Vec<_> =
+        moves.iter().map(|m| (m.motion, m.role, m.x, m.z, m.plunge_layer, m.plunge_number)).collect();
+    assert_eq!(got, groove_by_hand());
+    assert_eq!(moves.len(), 29);
+    for m in &moves {
+        // Every move is the G75.1's, from its block 2, in 0.001 mm; no pass,
+        // no thread fields.
+        assert_eq!((m.cycle, m.line, m.decimals, m.has_pass, m.sync), (CyclerefCycle::G75, 4, 3, 0, 0));
+        assert_eq!((m.lead_mantissa, m.pass_number, m.pass_depth), (0, 0, 0));
+        if m.motion != CyclerefMotion::ArcCw {
+            assert_eq!((m.centre_x, m.centre_z), (0, 0));
+        }
+    }
+    // The round D(r3): centre C3 = (u, y) = (500, 5000), X45.000 Z-0.500.
+    let arc = moves.iter().find(|m| m.motion == CyclerefMotion::ArcCw).unwrap();
+    assert_eq!((arc.x, arc.z, arc.centre_x, arc.centre_z), (44_000, -500, 45_000, -500));
+    // Its start (the end of flank A) and its end are both 0.5 mm (a radius)
+    // from the centre: 1000 diameter increments in X, 500 in Z.
+    let before = moves[moves.iter().position(|m| m.motion == CyclerefMotion::ArcCw).unwrap() - 1];
+    assert_eq!((before.x - arc.centre_x, before.z - arc.centre_z), (0, 500));
+    assert_eq!((arc.x - arc.centre_x, arc.z - arc.centre_z), (-1_000, 0));
+    // The C values of the enums (include/cycleref.h) the moves carry.
+    assert_eq!(
+        [CyclerefCycle::G75 as u32, CyclerefMotion::ArcCw as u32, CyclerefMotion::ArcCcw as u32],
+        [2, 3, 4]
+    );
+    let codes: Vec<u32> = moves.iter().take(6).map(|m| m.role as u32).collect();
+    // approach, peck, peck-retract, peck, plunge-retract, step.
+    assert_eq!(codes, [0, 6, 7, 6, 8, 9]);
+    assert_eq!(
+        [
+            CyclerefRole::LayerChange,
+            CyclerefRole::RoughContour,
+            CyclerefRole::FinishContour,
+            CyclerefRole::Return
+        ]
+        .map(|r| r as u32),
+        [10, 11, 12, 5]
+    );
+    assert_eq!(moves, engine_moves(GROOVE, &Machine::new(ProfileName::Gsk980)));
+    // D-5 turned to D5 (the groove towards +Z) mirrors Z about S's Z0, all
+    // but the return to the point before the cycle, and turns the round the
+    // other way: sx·sz = -1 < 0 gives G03 (R-G75ARCDIR).
+    let mirrored = expand(&GROOVE.replace("D-5", "D5"), &options(CyclerefProfile::Gsk980)).unwrap();
+    assert_eq!(mirrored.len(), moves.len());
+    let n = moves.len() - 1;
+    for (a, b) in mirrored[..n].iter().zip(&moves[..n]) {
+        assert_eq!(
+            (a.x, a.z, a.role, a.plunge_layer, a.plunge_number),
+            (b.x, -b.z, b.role, b.plunge_layer, b.plunge_number)
+        );
+    }
+    assert_eq!((mirrored[n].x, mirrored[n].z), (52_000, 3_000));
+    let arc = mirrored.iter().find(|m| m.centre_x != 0).unwrap();
+    assert_eq!((arc.motion, arc.centre_x, arc.centre_z), (CyclerefMotion::ArcCcw, 45_000, 500));
+}
+
+/// Layers: V3 splits the 6 mm (diameter) depth into two; the moves to the
+/// second layer are `LAYER_CHANGE` with `plunge_layer` 2 and no plunge number.
+#[test]
+fn g75_layers_through_the_c_interface() {
+    // Q2 is no wider than I2 (R-G75RIDGE); J0 roughs only.
+    let text = GROOVE.replace("R0.5 I2 J1", "R0.5 V3 I2 J0");
+    let moves = expand(&text, &options(CyclerefProfile::Gsk980)).unwrap();
+    assert_eq!(moves, engine_moves(&text, &Machine::new(ProfileName::Gsk980)));
+    // Layer 1 ends at y = 3000 (X47), layer 2 at 6000 (X44). At y = 3000 the
+    // round's chord is not the boundary (500 - (6000 - 3000)/2 < 0), so A11 =
+    // 0 and layer 1's plunges are at 0, 2000, 3000; layer 2 starts at A21 =
+    // ceil(left(6000)) = 500: along Z at layer 1's top (X50), then down along
+    // X to layer 1's bottom (X47), and plunges at 500, 2500, 3000.
+    let change: Vec<_> = moves
+        .iter()
+        .filter(|m| m.role == CyclerefRole::LayerChange)
+        .map(|m| (m.motion, m.x, m.z, m.plunge_layer, m.plunge_number))
+        .collect();
+    assert_eq!(
+        change,
+        [(CyclerefMotion::Rapid, 50_000, -500, 2, 0), (CyclerefMotion::Rapid, 47_000, -500, 2, 0)]
+    );
+    // One peck per plunge: 3000 (Δi = 4000) to X47 in layer 1, from X47 to
+    // X44 in layer 2.
+    let pecks: Vec<_> = moves
+        .iter()
+        .filter(|m| m.role == CyclerefRole::Peck)
+        .map(|m| (m.plunge_layer, m.plunge_number, m.x, m.z))
+        .collect();
+    assert_eq!(
+        pecks,
+        [
+            (1, 1, 47_000, 0),
+            (1, 2, 47_000, -2_000),
+            (1, 3, 47_000, -3_000),
+            (2, 1, 44_000, -500),
+            (2, 2, 44_000, -2_500),
+            (2, 3, 44_000, -3_000),
+        ]
+    );
+    assert!(moves.iter().all(|m| m.role != CyclerefRole::FinishContour));
+}
+
+#[test]
+fn g75_errors_through_the_c_interface() {
+    let o = options(CyclerefProfile::Gsk980);
+    // The engine's alarm: a 6 mm tool in a bottom of 5 mm less the round's 0.5.
+    let wide = GROOVE.replace("I2", "I6");
+    let (status, count, _, err) = expand_with(wide.as_bytes(), &o, 40);
+    assert_eq!(
+        (status, count, err.status, err.line),
+        (CyclerefStatus::CycleError, 0, CyclerefStatus::CycleError, 4)
+    );
+    assert!(err.message().starts_with("line 4, G75.1: the groove"), "{}", err.message());
+    // The reader's: block 1 without its block 2.
+    let lone = "M03 S600\nG00 X52 Z3\nG75.1 X50 Z0 P4000 Q2000 H-6 D-5\nM30\n";
+    let (status, _, _, err) = expand_with(lone.as_bytes(), &o, 40);
+    assert_eq!((status, err.line), (CyclerefStatus::ProgramError, 3));
+    assert!(err.message().contains("two blocks"), "{}", err.message());
+    // G75.1 is a GSK 980TDi cycle: the 988TA profile refuses it.
+    let (status, _, _, err) = expand_with(GROOVE.as_bytes(), &options(CyclerefProfile::Gsk988), 40);
+    assert_eq!((status, err.line), (CyclerefStatus::ProgramError, 3));
+    assert!(err.message().contains("G75.1"), "{}", err.message());
 }
 
 #[test]

@@ -394,7 +394,7 @@ fn sweeps(from: (i64, i64), to: (i64, i64), w2: i64, p: (i64, i64)) -> bool {
 /// Property: material (right-angle grooves, exact, grooving tools). The
 /// roughing region (§5) starts full of material, sampled at the centres of
 /// its increment cells; every feed move of the path removes what the tool's
-/// body sweeps (see [`sweeps`]). Then:
+/// body sweeps (see `sweeps`). Then:
 ///
 /// * no rapid move sweeps material that is still there (a rapid through
 ///   material breaks the tool): the steps of step ⑦, the retracts, the
