@@ -13,9 +13,12 @@
 //! 3. [`CycleError::GrooveNarrowerThanTool`] at the last layer (§7), for
 //!    every J: the approach point A11 of step 1 needs layer 1's plunge
 //!    range whatever J is (reading R-G75NARROW);
-//! 4. [`CycleError::TooManyPecks`] (§9), counted before any move, only when
+//! 4. [`CycleError::RidgesInLayers`] (§7, reading R-G75RIDGE): roughing
+//!    (J0, J1) in more than one layer with Δk > w where layer 1's plunge
+//!    range is wider than w;
+//! 5. [`CycleError::TooManyPecks`] (§9), counted before any move, only when
 //!    the cycle roughs (J0, J1): J2 makes no pecks (reading R-G75PECKS);
-//! 5. [`CycleError::OutOfRange`] with [`Field::PassCoordinate`]: the first
+//! 6. [`CycleError::OutOfRange`] with [`Field::PassCoordinate`]: the first
 //!    coordinate of the emitted moves, in move order (each move's end X,
 //!    end Z, then an arc's centre X, centre Z), beyond
 //!    [`MAX_LENGTH`]; the value is the absolute coordinate, saturated to
