@@ -179,12 +179,28 @@ fn no_panic_over_the_documented_ranges() {
     });
 }
 
-/// The long run: wider exhaustive slices.
+/// The long run: wider exhaustive slices, each over the choices its
+/// property depends on (each slice below 20 000 000 runs).
 #[test]
 #[ignore = "long: run with --release -- --ignored"]
 fn long_run() {
     let wide = GrooveDomain { depth: (1, 14), width: (0, 10), peck: (1, 5), step: (1, 4), ..SMALL };
-    check("pecks (long)", small(20_000_000), || groove::groove_pecks_and_steps(&wide, &GrooveFixedPoint));
-    check("inside (long)", small(20_000_000), || groove::groove_inside(&wide, &GrooveFixedPoint));
-    check("profile (long)", small(20_000_000), || groove::groove_finish_is_profile(&wide, &GrooveFixedPoint));
+    let pecks = GrooveDomain { corner: (0, 0), corner_kinds: (0, 0), path: (0, 0), ..wide };
+    check("pecks (long)", small(20_000_000), || groove::groove_pecks_and_steps(&pecks, &GrooveFixedPoint));
+    let inside = GrooveDomain {
+        depth: (1, 10),
+        peck: (3, 3),
+        path: (0, 0),
+        corner_kinds: (0, 3),
+        signs: (0, 0),
+        ..wide
+    };
+    check("inside (long)", small(20_000_000), || groove::groove_inside(&inside, &GrooveFixedPoint));
+    let material = GrooveDomain { tool_width: (1, 3), ..inside };
+    check("material (long)", small(20_000_000), || groove::groove_material(&material, &GrooveFixedPoint));
+    let profile =
+        GrooveDomain { peck: (8, 8), step: (3, 3), layer: (0, 0), path: (1, 2), allowance_x: (0, 0), ..wide };
+    check("profile (long)", small(20_000_000), || {
+        groove::groove_finish_is_profile(&profile, &GrooveFixedPoint)
+    });
 }
