@@ -327,6 +327,12 @@ impl SquareRegion {
         }
     }
 
+    /// `(2f·left, 2f·right)` at the depth `j + 1/2` (exact: each boundary
+    /// is linear on `[j, j + 1]`, its kink being at an integer depth).
+    fn bounds_at_centre(&self, j: i64) -> (i64, i64) {
+        (self.left_f(j) + self.left_f(j + 1), self.right_f(j) + self.right_f(j + 1))
+    }
+
     /// The tool, reference point (u, y) and width w, lies in the region
     /// (or above the opening, y ≤ 0, where there is only air).
     fn holds(&self, u: i64, y: i64, w: i64) -> bool {
@@ -401,10 +407,15 @@ fn sweeps(from: (i64, i64), to: (i64, i64), w2: i64, p: (i64, i64)) -> bool {
 ///   layer changes and the returns all run in cut space or in the air;
 /// * once the plunges are done, what is left lies beside a layer's plunge
 ///   range (the band the rough contour cuts, step ⑨) or in a ridge between
-///   two neighbouring plunges of layer 1, at most `Δk − w` wide; ridges
-///   occur only without layers (R-G75RIDGE refuses the others), so a ridge
-///   stands at most the roughing depth `|H| − Δu` high;
-/// * after the rough contour (J0, J1) nothing is left in the region.
+///   two neighbouring plunges, at most `Δk − w` wide; ridges occur only
+///   without layers (R-G75RIDGE refuses the others), so a ridge stands at
+///   most the roughing depth `|H| − Δu` high;
+/// * after the rough contour (J0, J1) only slivers along the boundary are
+///   left, where a vertex rounded into the region (R-G75ROUND) moves the
+///   contour off the exact boundary: by less than one increment, and by
+///   less than `1 + 1/f` beside K1 and K4, which sit at the integer depth
+///   above the exact corner of flank and chord. The check allows 2, the
+///   bound at f = 1.
 pub fn groove_material(d: &GrooveDomain, engine: &impl GrooveEngine) {
     let c = any_groove(d);
     assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0 && c.path.roughs());
@@ -412,121 +423,107 @@ pub fn groove_material(d: &GrooveDomain, engine: &impl GrooveEngine) {
     assume(w > 0);
     let moves = expanded(&c, engine);
     let region = SquareRegion::new(&c);
-    let (f, bottom) = (region.f, region.bottom);
-    // Cells (i, j): centre (i + 1/2, j + 1/2), i in [0, d), j in [0, bottom).
-    let (cols, rows) = (usize::try_from(region.d).unwrap_or(0), usize::try_from(bottom).unwrap_or(0));
-    // In the region: f·left(y) < f·u < f·right(y) at the centre (doubled:
-    // left_f and right_f are linear in y, so f·left(y + 1/2)·2 is exact).
-    let inside = |i: i64, j: i64| {
-        let (u2, y) = (2 * i + 1, j);
-        let left2 = region.left_f(y) + region.left_f(y + 1);
-        let right2 = region.right_f(y) + region.right_f(y + 1);
-        f * u2 > left2 && f * u2 < right2
-    };
-    let mut material = std::vec![false; cols * rows];
-    for j in 0..rows {
-        for i in 0..cols {
-            let (ii, jj) = (i64::try_from(i).unwrap_or(0), i64::try_from(j).unwrap_or(0));
-            material[j * cols + i] = inside(ii, jj);
-        }
-    }
+    // Cells k = j·cols + i, centre (i + 1/2, j + 1/2), i in [0, d), j in
+    // [0, bottom); `cell` gives the centre doubled.
+    let (cols, rows) = (usize::try_from(region.d).unwrap_or(0), usize::try_from(region.bottom).unwrap_or(0));
     let cell = |k: usize| {
-        let (i, j) = (k % cols, k / cols);
-        (2 * i64::try_from(i).unwrap_or(0) + 1, 2 * i64::try_from(j).unwrap_or(0) + 1)
+        let (i, j) = (i64::try_from(k % cols).unwrap_or(0), i64::try_from(k / cols).unwrap_or(0));
+        (2 * i + 1, 2 * j + 1)
     };
-    // Plunge positions of each layer (u of the pecks), and layer bottoms.
-    let mut plunges: std::vec::Vec<(u32, i64, i64)> = std::vec::Vec::new(); // (layer, u, bottom)
+    // 2f·u against 2f·left and 2f·right at the centre's depth: the distances
+    // from the boundaries, times 2f.
+    let margins = |(u2, y2): (i64, i64)| {
+        let (left2, right2) = region.bounds_at_centre((y2 - 1) / 2);
+        (region.f * u2 - left2, right2 - region.f * u2)
+    };
+    let mut material: std::vec::Vec<bool> = (0..cols * rows)
+        .map(|k| {
+            let (from_left, from_right) = margins(cell(k));
+            from_left > 0 && from_right > 0
+        })
+        .collect();
+    // (layer, u, bottom) of every peck.
+    let mut pecks: std::vec::Vec<(u32, i64, i64)> = std::vec::Vec::new();
     let mut at = local(&c, c.from);
     let mut contour_started = false;
-    let mut ridge_checked = false;
     for m in &moves {
         let to = local(&c, m.to);
-        if m.role == Role::RoughContour && !ridge_checked {
-            ridge_checked = true;
-            // What the plunges left.
-            for (k, left) in material.iter().enumerate() {
-                if !*left {
-                    continue;
-                }
-                let (pu2, py2) = cell(k);
-                // The layer holding this depth: the first whose bottom is below it.
-                let layer = plunges.iter().filter(|p| 2 * p.2 > py2).map(|p| p.0).min();
-                let Some(layer) = layer else {
-                    panic!("material at u {} y {} below every layer", pu2, py2);
-                };
-                let mut us: std::vec::Vec<i64> =
-                    plunges.iter().filter(|p| p.0 == layer).map(|p| p.1).collect();
-                us.sort_unstable();
-                us.dedup();
-                let (first, last) = (us[0], us[us.len() - 1]);
-                let band = pu2 < 2 * first || pu2 > 2 * (last + w);
-                let ridge = us.windows(2).find(|p| 2 * (p[0] + w) < pu2 && pu2 < 2 * p[1]).is_some_and(|p| {
-                    assert!(p[1] - p[0] - w <= c.step - w, "a ridge is at most Δk − w wide");
-                    true
-                });
-                assert!(
-                    band || ridge,
-                    "material at u {} y {} is neither beside the plunges nor a ridge",
-                    pu2,
-                    py2
-                );
-                if ridge && !band {
-                    assert!(c.layer.is_none_or(|v| v >= bottom), "a ridge only without layers (R-G75RIDGE)");
-                    assert!(c.step > w, "a ridge only when Δk > w");
-                    cover!(true, "a ridge between plunges");
-                }
-            }
-        }
-        if m.role == Role::RoughContour {
+        if m.role == Role::RoughContour && !contour_started {
             contour_started = true;
+            let left = material.iter().enumerate().filter(|(_, here)| **here).map(|(k, _)| cell(k));
+            check_plunge_leftovers(&c, &pecks, left);
         }
         if let Role::Peck(p) = m.role {
-            plunges.push((p.layer, to.0, to.1));
+            pecks.push((p.layer, to.0, to.1));
         }
         let (from2, to2) = ((2 * at.0, 2 * at.1), (2 * to.0, 2 * to.1));
-        match m.motion {
-            Motion::Rapid => {
-                for (k, left) in material.iter().enumerate() {
-                    if *left {
-                        let p = cell(k);
-                        assert!(
-                            !sweeps(from2, to2, 2 * w, p),
-                            "{:?} rapid from {at:?} to {to:?} runs through material at doubled {p:?}",
-                            m.role
-                        );
-                    }
-                }
+        if m.motion == Motion::Rapid {
+            for (k, _) in material.iter().enumerate().filter(|(_, here)| **here) {
+                let p = cell(k);
+                assert!(
+                    !sweeps(from2, to2, 2 * w, p),
+                    "{:?} rapid from {at:?} to {to:?} runs through material at doubled {p:?}",
+                    m.role
+                );
             }
-            _ if !contour_started || m.role == Role::RoughContour => {
-                for (k, left) in material.iter_mut().enumerate() {
-                    if *left && sweeps(from2, to2, 2 * w, cell(k)) {
-                        *left = false;
-                    }
-                }
+        } else if !contour_started || m.role == Role::RoughContour {
+            // Roughing feeds remove material; the finishing contour is not
+            // roughing and is left out.
+            for (k, left) in material.iter_mut().enumerate() {
+                *left = *left && !sweeps(from2, to2, 2 * w, cell(k));
             }
-            _ => {}
         }
         at = to;
     }
-    // What the rough contour left: slivers along the boundary, where a
-    // vertex rounded into the region (R-G75ROUND) moves the contour off the
-    // exact boundary by less than an increment (up to 1 + 1/f beside K1 and
-    // K4, which sit at the integer depth above the exact corner of flank
-    // and chord).
-    for (k, left) in material.iter().enumerate() {
-        if *left {
-            let (pu2, py2) = cell(k);
-            let j = (py2 - 1) / 2;
-            let left2 = region.left_f(j) + region.left_f(j + 1);
-            let right2 = region.right_f(j) + region.right_f(j + 1);
-            // 2f·(u − left(y)) < 4f, or 2f·(right(y) − u) < 4f (cell centre).
-            let sliver = f * pu2 - left2 < 4 * f || right2 - f * pu2 < 4 * f;
-            assert!(sliver, "the rough contour leaves material at doubled ({pu2}, {py2}) inside the region");
-            cover!(true, "a sliver along the boundary");
+    for (k, _) in material.iter().enumerate().filter(|(_, here)| **here) {
+        let (from_left, from_right) = margins(cell(k));
+        // Less than 2 increments from a boundary (times 2f).
+        let sliver = from_left < 4 * region.f || from_right < 4 * region.f;
+        assert!(sliver, "the rough contour leaves material at doubled {:?} inside the region", cell(k));
+        cover!(true, "a sliver along the boundary");
+    }
+    cover!(c.layer.is_some_and(|v| v < region.bottom), "several layers");
+    cover!(c.corners[corner::R3].size > 0, "with a bottom corner");
+}
+
+/// What the plunges left (`groove_material`): each cell (doubled centre)
+/// lies beside its layer's plunge range, or in a ridge between two
+/// neighbouring plunges at most `Δk − w` wide, which only a single layer
+/// may have (R-G75RIDGE).
+fn check_plunge_leftovers(c: &G75Cycle, pecks: &[(u32, i64, i64)], left: impl Iterator<Item = (i64, i64)>) {
+    let w = c.width_of_tool();
+    // Each layer's bottom and sorted plunge positions, once.
+    let layers = pecks.iter().map(|p| p.0).max().unwrap_or(0);
+    let plunges: std::vec::Vec<(i64, std::vec::Vec<i64>)> = (1..=layers)
+        .map(|layer| {
+            let bottom = pecks.iter().filter(|p| p.0 == layer).map(|p| p.2).max().unwrap_or(0);
+            let mut us: std::vec::Vec<i64> = pecks.iter().filter(|p| p.0 == layer).map(|p| p.1).collect();
+            us.sort_unstable();
+            us.dedup();
+            (bottom, us)
+        })
+        .collect();
+    for (pu2, py2) in left {
+        // The layer holding this depth: the first whose bottom is below it.
+        let Some((_, us)) = plunges.iter().find(|(bottom, _)| 2 * bottom > py2) else {
+            panic!("material at doubled ({pu2}, {py2}) below every layer");
+        };
+        let (first, last) = (us[0], us[us.len() - 1]);
+        let band = pu2 < 2 * first || pu2 > 2 * (last + w);
+        let gap = us.windows(2).find(|p| 2 * (p[0] + w) < pu2 && pu2 < 2 * p[1]);
+        assert!(
+            band || gap.is_some(),
+            "material at doubled ({pu2}, {py2}) is neither beside the plunges nor a ridge"
+        );
+        if let (Some(p), false) = (gap, band) {
+            assert!(p[1] - p[0] <= c.step, "a ridge is at most Δk − w wide");
+            assert!(
+                c.layer.is_none_or(|v| v >= c.depth.abs() - c.allowance_x),
+                "a ridge only without layers"
+            );
+            cover!(true, "a ridge between plunges");
         }
     }
-    cover!(c.layer.is_some_and(|v| v < bottom), "several layers");
-    cover!(c.corners[corner::R3].size > 0, "with a bottom corner");
 }
 
 /// A contour move in local coordinates: its end `(u, y)` and, for an arc,
