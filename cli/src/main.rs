@@ -516,17 +516,17 @@ impl Job {
         let mut outlines = Vec::new();
         for call in self.program.grooves() {
             let moves = self.expand_g75(&call.cycle, call.block.line)?;
-            // The profile and the roughing region are the paths of the same
-            // groove for a pointed tool (plot_g75's module documentation),
-            // in one layer: the rough contour does not depend on V, and a
-            // pointed tool in layers is refused (R-G75RIDGE).
-            let pointed = G75Cycle { tool_width: None, layer: None, ..call.cycle };
-            let profile =
-                self.expand_g75(&G75Cycle { path: cycleref::PathType::Finish, ..pointed }, call.block.line)?;
-            let rough =
-                self.expand_g75(&G75Cycle { path: cycleref::PathType::Rough, ..pointed }, call.block.line)?;
+            // The profile is the finishing path of the same groove for a
+            // pointed tool; the roughing region's outline is the engine's
+            // profile of it (plot_g75's module documentation).
+            let pointed = G75Cycle { tool_width: None, path: cycleref::PathType::Finish, ..call.cycle };
+            let profile = self.expand_g75(&pointed, call.block.line)?;
             let profile: Vec<Move> =
                 profile.into_iter().filter(|m| m.role == cycleref::Role::FinishContour).collect();
+            let rough = cycleref::groove_profile(&call.cycle)
+                .map_err(|e| Failure(format!("{}: line {}, G75.1: {e}", self.name, call.block.line)))?
+                .roughing()
+                .to_vec();
             outlines.push((call, moves, profile, rough));
         }
         let grooves: Vec<_> = outlines

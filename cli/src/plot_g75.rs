@@ -9,11 +9,11 @@
 //! every plunge as a translucent bar of the tool's width, so the width and
 //! the ridges it leaves are visible.
 //!
-//! The profile and the roughing region are not computed here: they are the
-//! paths of the same cycle run by the same engine for a pointed tool (J2
-//! for the profile, J0 in one layer for the roughing region: the rough
-//! contour does not depend on V), so the drawing cannot disagree with the
-//! expansion.
+//! The profile and the roughing region are not computed here: the profile
+//! is the finishing path (J2) of the same cycle run by the same engine for a
+//! pointed tool, and the roughing region's outline is the engine's
+//! `groove_profile` (the vertices the rough contour visits, without the
+//! tool width), so the drawing cannot disagree with the expansion.
 
 use std::fmt::Write as _;
 
@@ -40,9 +40,10 @@ pub struct Groove<'a> {
     /// The finishing contour of the same groove for a pointed tool (the
     /// programmed profile), from its start on the surface to its end.
     pub profile: Vec<Move>,
-    /// The rough contour of the same groove for a pointed tool (the
-    /// roughing region's outline).
-    pub rough: Vec<Move>,
+    /// The roughing region's outline (`cycleref::groove_profile`): R0, K1
+    /// and K2 (or Q1), K3 and K4 (or Q2), R3, absolute, without the tool
+    /// width.
+    pub rough: Vec<Point>,
 }
 
 impl Groove<'_> {
@@ -114,19 +115,12 @@ impl Groove<'_> {
                     .add(Title::new("the programmed groove profile")),
             );
         }
-        if let Some(first) = self.rough.iter().find(|m| m.role == Role::RoughContour) {
-            let mut d = String::new();
-            let start =
-                self.rough.iter().take_while(|m| !std::ptr::eq(*m, first)).last().map_or(c.from, |m| m.to);
-            let (x, y) = map.px(start);
-            let _ = write!(d, "M{} {}", num(x), num(y));
-            let mut at = start;
-            for m in self.rough.iter().skip_while(|m| !std::ptr::eq(*m, first)) {
-                if m.role != Role::RoughContour || m.motion == Motion::Rapid && at != start {
-                    break;
-                }
-                segment(&mut d, &map, at, m, x_factor);
-                at = m.to;
+        if let Some((first, rest)) = self.rough.split_first() {
+            let (x, y) = map.px(*first);
+            let mut d = format!("M{} {}", num(x), num(y));
+            for p in rest {
+                let (x, y) = map.px(*p);
+                let _ = write!(d, " L{} {}", num(x), num(y));
             }
             g = g.add(
                 Path::new()

@@ -158,8 +158,12 @@ fn json_moves_of_the_square_groove() {
 #[test]
 fn passes_lists_layers_and_plunges() {
     let text = square("passes", &[]);
-    let rows: Vec<Vec<&str>> =
-        text.lines().map(|l| l.split_whitespace().collect::<Vec<_>>()).filter(|r| r.len() == 6).collect();
+    // The table's rows: those that start with a layer number.
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|r| r.len() == 6 && r[0].parse::<u32>().is_ok())
+        .collect();
     let expected = [
         ["1", "1", "-0.200", "30.000", "26.000", "2"],
         ["1", "2", "-3.200", "30.000", "26.000", "2"],
@@ -168,14 +172,7 @@ fn passes_lists_layers_and_plunges() {
         ["2", "2", "-3.600", "26.000", "24.400", "1"],
         ["2", "3", "-4.500", "26.000", "24.400", "1"],
     ];
-    // The header row has six words too ("layer plunge Z from X (Amn)" …
-    // does not): keep the rows that start with a number.
-    let rows: Vec<&Vec<&str>> = rows.iter().filter(|r| r[0].parse::<u32>().is_ok()).collect();
-    assert_eq!(
-        rows,
-        expected.iter().map(|r| r.to_vec()).collect::<Vec<_>>().iter().collect::<Vec<_>>(),
-        "{text}"
-    );
+    assert_eq!(rows, expected, "{text}");
     assert!(text.contains("rough contour (step 9): 5 cutting moves"), "{text}");
     assert!(text.contains("finishing contour (step 10): 6 cutting moves"), "{text}");
 }
