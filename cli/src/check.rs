@@ -21,6 +21,7 @@ use std::path::Path;
 
 use cycleref::{InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units};
 use cycleref_spec::lex::{lex, Block};
+use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::reader::{length_word, q_word, Item};
 use cycleref_spec::{Machine, ProgramError};
 use serde_json::{json, Value};
@@ -95,7 +96,7 @@ impl<'m> Tracker<'m> {
     }
 
     /// The move of a block, if it moves.
-    fn block(&mut self, b: &Block) -> Result<Option<Step>, ProgramError> {
+    fn block(&mut self, b: &Block<'_>) -> Result<Option<Step>, ProgramError> {
         if b.words.is_empty() {
             return Ok(None);
         }
@@ -116,7 +117,7 @@ impl<'m> Tracker<'m> {
             if let Some(w) = b.get(letter)? {
                 // I is an arc centre outside G32; F is shared with the feed.
                 if letter == 'F' || self.motion == Kind::Thread {
-                    let frac = w.number.frac_digits.clone().unwrap_or_default();
+                    let frac = w.number.frac_digits.unwrap_or_default();
                     let frac = frac.trim_end_matches('0');
                     let digits = format!("{}{frac}", w.number.int_digits);
                     let mantissa = digits.trim_start_matches('0').parse().unwrap_or(0);
@@ -191,9 +192,10 @@ impl<'m> Tracker<'m> {
 
 /// Our toolpath: the program's motion blocks and its expanded cycles.
 fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
-    let mut t = Tracker::new(machine, job.program.units);
+    let program = job.program()?;
+    let mut t = Tracker::new(machine, program.units);
     let mut out = Vec::new();
-    for item in &job.program.items {
+    for item in &program.items {
         match item {
             Item::Source(b) => {
                 if let Some(s) = t.block(b).map_err(|e| format!("{}: {e}", job.name))? {
@@ -203,7 +205,7 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
             Item::G76Params(_) => {}
             Item::G76(call) => {
                 let line = call.block.line;
-                for m in job.expand(&call.cycle, line).map_err(|f| f.0)? {
+                for m in job.expand(Cycle::G76(call))? {
                     let pass = m.pass.unwrap_or(Pass {
                         kind: PassKind::Rough,
                         number: 0,
@@ -224,14 +226,14 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
             }
             Item::G32(call) => {
                 let line = call.block.line;
-                for m in job.expand_g32(&call.g32, line).map_err(|f| f.0)? {
+                for m in job.expand(Cycle::G32(call))? {
                     out.push(t.inject(&m, Context::G32 { line, role: m.role }));
                 }
             }
             Item::G75Params(_) => {}
             Item::G75(call) => {
                 let line = call.block.line;
-                for m in job.expand_g75(&call.cycle, line).map_err(|f| f.0)? {
+                for m in job.expand(Cycle::G75(call))? {
                     out.push(t.inject(&m, Context::G75 { line, role: m.role }));
                 }
                 t.motion = match call.restore.motion {
@@ -511,7 +513,7 @@ pub fn overlay(job: &Job, trace: &Path) -> Result<crate::plot::Overlay, String> 
 
 fn read_trace(job: &Job, trace: &Path) -> Result<Vec<Step>, String> {
     let text = std::fs::read_to_string(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
-    let units = job.program.units;
+    let units = job.validate()?.units;
     let is_csv = trace.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
     if is_csv { theirs_csv(&text, units) } else { theirs_nc(&text, &job.machine, units) }
         .map_err(|e| format!("{}: {e}", trace.display()))
@@ -519,7 +521,7 @@ fn read_trace(job: &Job, trace: &Path) -> Result<Vec<Step>, String> {
 
 /// Runs the comparison of `job`'s program with the trace at `trace`.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
-    let units = job.program.units;
+    let units = job.validate()?.units;
     let ours = ours(job, &job.machine)?;
     let theirs = read_trace(job, trace)?;
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);

@@ -1,35 +1,76 @@
 //! Text forms of moves: NC blocks, JSON and the pass table.
 
-use std::fmt::Write as _;
+use std::fmt;
 
 use cycleref::units::write_fixed;
-use cycleref::{Flank, IncrementSystem, LeadWord, Motion, Move, PassKind, Role, StartAngle, Units};
-use cycleref::{PathType, Point};
+use cycleref::Point;
+use cycleref::{Flank, IncrementSystem, LeadWord, PassKind, Role, StartAngle, Units};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G75Call, G76Call, Restore};
-use serde_json::{json, Value};
 
 /// `v` increments as a decimal with the increment's number of decimals.
 pub fn fixed(v: i64, units: Units) -> String {
-    let mut s = String::new();
-    let _ = write_fixed(&mut s, i128::from(v), units.decimals());
-    s
+    Fixed::new(v, units).to_string()
 }
 
-/// The lead word as programmed (`F6`, `F1.5`, `I20`).
-pub fn lead_word(lead: cycleref::Lead) -> String {
-    let letter = match lead.word {
-        LeadWord::F => 'F',
-        LeadWord::I => 'I',
-    };
-    let mut s = String::new();
-    let _ = write_fixed(&mut s, i128::from(lead.mantissa), lead.scale);
-    if lead.scale == 0 {
-        // Always with a decimal point: on FANUC a bare value may be read in
-        // other units.
-        s.push_str(".0");
+/// A length in increments, displayed as a decimal with the increment's
+/// number of decimals (`64.400`), without an allocation.
+#[derive(Clone, Copy, Debug)]
+pub struct Fixed {
+    value: i64,
+    decimals: u32,
+}
+
+impl Fixed {
+    /// `value` increments of `units`.
+    #[must_use]
+    pub fn new(value: i64, units: Units) -> Fixed {
+        Fixed { value, decimals: units.decimals() }
     }
-    format!("{letter}{s}")
+}
+
+impl fmt::Display for Fixed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_fixed(f, i128::from(self.value), self.decimals)
+    }
+}
+
+impl serde::Serialize for Fixed {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+/// The lead word as programmed (`F6.0`, `F1.5`, `I20.0`), displayed without
+/// an allocation.
+#[derive(Clone, Copy, Debug)]
+pub struct LeadText(pub cycleref::Lead);
+
+impl fmt::Display for LeadText {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let lead = self.0;
+        f.write_str(match lead.word {
+            LeadWord::F => "F",
+            LeadWord::I => "I",
+        })?;
+        write_fixed(f, i128::from(lead.mantissa), lead.scale)?;
+        if lead.scale == 0 {
+            // Always with a decimal point: on FANUC a bare value may be read
+            // in other units.
+            f.write_str(".0")?;
+        }
+        Ok(())
+    }
+}
+
+impl serde::Serialize for LeadText {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+/// The lead word as programmed (`F6.0`, `F1.5`, `I20.0`).
+pub fn lead_word(lead: cycleref::Lead) -> String {
+    LeadText(lead).to_string()
 }
 
 /// The value of a Q word for `angle` in the profile's unit: whole
@@ -106,66 +147,6 @@ pub fn arc_ik(from: Point, centre: Point, x_factor: i64, units: Units) -> (Strin
     (i, fixed(centre.z - from.z, units))
 }
 
-/// Writes the NC blocks of one expanded G75.1 cycle: a comment per layer
-/// and per plunge, then its moves (the `nc` format contract).
-pub fn nc_groove(out: &mut String, call: &G75Call, moves: &[Move]) {
-    let c = &call.cycle;
-    let u = c.units;
-    let layers = moves.iter().filter_map(|m| plunge_of(m.role)).map(|p| p.layer).max().unwrap_or(0);
-    let plunges = moves.iter().filter(|m| matches!(m.role, Role::PlungeRetract(_))).count();
-    let path = match c.path {
-        PathType::Rough => "J0 rough",
-        PathType::RoughAndFinish => "J1 rough + finish",
-        PathType::Finish => "J2 finish",
-    };
-    let _ = writeln!(
-        out,
-        "(G75.1 lines {}-{}: {path}, {layers} layer{} {plunges} plunge{}, tool {})",
-        call.params_line,
-        call.block.line,
-        if layers == 1 { "," } else { "s," },
-        if plunges == 1 { "" } else { "s" },
-        match c.tool_width {
-            Some(w) => format!("width I{}", fixed(w, u)),
-            None => "pointed".to_string(),
-        }
-    );
-    let mut current: Option<cycleref::Plunge> = None;
-    let mut contour = None;
-    let mut at = c.from;
-    for m in moves {
-        if let Role::Peck(p) = m.role {
-            if current != Some(p) {
-                current = Some(p);
-                let _ = writeln!(out, "(layer {} plunge {})", p.layer, p.number);
-            }
-        }
-        let name = match m.role {
-            Role::RoughContour => Some("rough contour"),
-            Role::FinishContour => Some("finishing contour"),
-            _ => None,
-        };
-        if name.is_some() && name != contour {
-            let _ = writeln!(out, "({})", name.unwrap_or_default());
-        }
-        contour = name;
-        nc_arc_or_move(out, m, at, c.x_mode.factor(), u);
-        at = m.to;
-    }
-    restore(out, &call.restore);
-}
-
-/// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
-fn nc_arc_or_move(out: &mut String, m: &Move, from: Point, x_factor: i64, u: Units) {
-    if let Motion::Arc { centre, clockwise } = m.motion {
-        let (i, k) = arc_ik(from, centre, x_factor, u);
-        let g = if clockwise { "G02" } else { "G03" };
-        let _ = writeln!(out, "{g} X{} Z{} I{i} K{k}", fixed(m.to.x, u), fixed(m.to.z, u));
-    } else {
-        nc_move(out, m, u, QUnit::Millidegrees { no_point: true });
-    }
-}
-
 /// Name of a flank position.
 pub fn flank_name(f: Flank) -> &'static str {
     match f {
@@ -173,145 +154,4 @@ pub fn flank_name(f: Flank) -> &'static str {
         Flank::Centre => "centre",
         Flank::Left => "left",
     }
-}
-
-/// Writes the NC blocks of one expanded cycle (the `nc` format contract,
-/// documented in the README).
-pub fn nc_cycle(out: &mut String, call: &G76Call, moves: &[Move], q: QUnit) {
-    let u = call.cycle.units;
-    let rough = moves.iter().filter_map(|m| m.pass).filter(|p| p.kind == PassKind::Rough);
-    let rough_passes = rough.map(|p| p.number).max().unwrap_or(0);
-    let _ = writeln!(
-        out,
-        "(G76 line {}: {} rough + {} finish passes x {} start{})",
-        call.block.line,
-        rough_passes,
-        call.cycle.finishing_passes,
-        call.cycle.starts,
-        if call.cycle.starts == 1 { "" } else { "s" }
-    );
-    let mut current = None;
-    for m in moves {
-        if let Some(p) = m.pass {
-            let key = (p.kind, p.number, p.start);
-            if current != Some(key) {
-                current = Some(key);
-                let _ = writeln!(
-                    out,
-                    "({} {} start {} depth {} cut {})",
-                    kind_name(p.kind),
-                    p.number,
-                    p.start,
-                    fixed(p.depth, u),
-                    fixed(p.cut, u)
-                );
-            }
-        }
-        nc_move(out, m, u, q);
-    }
-    restore(out, &call.restore);
-}
-
-/// Writes moves without pass comments (G32 blocks).
-pub fn nc_moves(out: &mut String, moves: &[Move], u: Units, q: QUnit) {
-    for m in moves {
-        nc_move(out, m, u, q);
-    }
-}
-
-/// One move as an NC block.
-fn nc_move(out: &mut String, m: &Move, u: Units, q: QUnit) {
-    {
-        let x = fixed(m.to.x, u);
-        let z = fixed(m.to.z, u);
-        match m.motion {
-            Motion::Rapid => {
-                let _ = writeln!(out, "G00 X{x} Z{z}");
-            }
-            Motion::Feed => {
-                let _ = writeln!(out, "G01 X{x} Z{z}");
-            }
-            Motion::Thread { lead, start_angle, sync } => {
-                let _ = write!(out, "G32 X{x} Z{z} {}", lead_word(lead));
-                // Q only where synchronisation starts: on a continuation
-                // block the control ignores it (seed 002, Q rule 2).
-                if sync && !start_angle.is_zero() {
-                    let _ = write!(out, " Q{}", q_word(start_angle, u, q));
-                }
-                out.push('\n');
-            }
-            Motion::Arc { centre, clockwise } => {
-                // Without the start point the centre is written absolute.
-                let g = if clockwise { "G02" } else { "G03" };
-                let _ =
-                    writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", fixed(centre.x, u), fixed(centre.z, u));
-            }
-        }
-    }
-}
-
-fn restore(out: &mut String, r: &Restore) {
-    if let Some(g) = r.motion {
-        let _ = writeln!(out, "{g}");
-    }
-}
-
-/// One move as JSON (the `json` format contract).
-pub fn move_json(m: &Move, units: Units) -> Value {
-    let mut v = json!({
-        "role": role_name(m.role),
-        "x": fixed(m.to.x, units),
-        "z": fixed(m.to.z, units),
-    });
-    let obj = v.as_object_mut().expect("object");
-    match m.motion {
-        Motion::Rapid => {
-            obj.insert("motion".into(), json!("rapid"));
-        }
-        Motion::Feed => {
-            obj.insert("motion".into(), json!("feed"));
-        }
-        Motion::Thread { lead, start_angle, sync } => {
-            obj.insert("motion".into(), json!("thread"));
-            obj.insert("lead".into(), json!(lead_word(lead)));
-            obj.insert(
-                "start_angle_millidegrees".into(),
-                json!({"num": start_angle.num, "den": start_angle.den}),
-            );
-            obj.insert("sync".into(), json!(sync));
-        }
-        Motion::Arc { centre, clockwise } => {
-            obj.insert("motion".into(), json!(if clockwise { "arc-cw" } else { "arc-ccw" }));
-            obj.insert("centre".into(), json!({"x": fixed(centre.x, units), "z": fixed(centre.z, units)}));
-        }
-    }
-    if let Some(p) = plunge_of(m.role) {
-        obj.insert("plunge".into(), json!({"layer": p.layer, "number": p.number}));
-    }
-    if let Role::LayerChange(l) = m.role {
-        obj.insert("plunge".into(), json!({"layer": l}));
-    }
-    if let Some(p) = m.pass {
-        obj.insert(
-            "pass".into(),
-            json!({
-                "kind": kind_name(p.kind),
-                "number": p.number,
-                "start": p.start,
-                "depth": fixed(p.depth, units),
-                "cut": fixed(p.cut, units),
-                "flank": flank_name(p.flank),
-            }),
-        );
-    }
-    // Keep a stable key order: motion first.
-    let mut ordered = serde_json::Map::new();
-    for key in
-        ["motion", "x", "z", "centre", "role", "lead", "start_angle_millidegrees", "sync", "pass", "plunge"]
-    {
-        if let Some(val) = obj.remove(key) {
-            ordered.insert(key.into(), val);
-        }
-    }
-    Value::Object(ordered)
 }

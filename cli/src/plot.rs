@@ -67,10 +67,10 @@ const LEGEND_PASSES: u32 = 8;
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
-pub fn svg(
+pub(crate) fn svg(
     name: &str,
-    cycles: &[(G76Call, Vec<Move>)],
-    threads: &[(G32Call, Vec<Move>)],
+    cycles: &[(G76Call<'_>, Vec<Move>)],
+    threads: &[(G32Call<'_>, Vec<Move>)],
     grooves: &[crate::plot_g75::Groove<'_>],
     overlay: Option<&Overlay>,
 ) -> Result<String, String> {
@@ -136,7 +136,7 @@ pub fn svg(
 /// One panel with every G32 block of the program: thread moves in a blue
 /// ramp by block, run-outs green, the start of each synchronised run marked.
 /// The moves between the blocks are the program's own and are not drawn.
-fn g32_panel(name: &str, threads: &[(G32Call, Vec<Move>)]) -> Group {
+fn g32_panel(name: &str, threads: &[(G32Call<'_>, Vec<Move>)]) -> Group {
     let first = &threads[0].0;
     let per_unit = first.g32.units.per_unit();
     let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
@@ -396,7 +396,7 @@ struct PassPath {
 /// One cycle, ready to draw.
 struct Panel<'a> {
     name: &'a str,
-    call: &'a G76Call,
+    call: &'a G76Call<'a>,
     map: Mapping,
     /// A, B, C, D.
     points: [Point; 4],
@@ -415,7 +415,7 @@ struct Panel<'a> {
 }
 
 impl<'a> Panel<'a> {
-    fn new(name: &'a str, call: &'a G76Call, moves: &[Move]) -> Result<Panel<'a>, String> {
+    fn new(name: &'a str, call: &'a G76Call<'a>, moves: &[Move]) -> Result<Panel<'a>, String> {
         let c: &G76Cycle = &call.cycle;
         let line = call.block.line;
         let g = cycleref_spec::g76::geometry(c).map_err(|e| format!("{name}: line {line}, G76: {e}"))?;
@@ -942,6 +942,121 @@ fn padded(lo: f64, hi: f64, fraction: f64) -> (f64, f64) {
     } else {
         (lo - 0.5, hi + 0.5)
     }
+}
+
+/// The most cycles `plot` draws when no `--line` picks them: beyond this
+/// a drawing is no longer a picture a person can read (and its file grows
+/// with every panel). Counted: each G76 and G75.1 cycle and each G32 block.
+pub const MAX_CYCLES: usize = 24;
+
+/// Draws `job`'s cycles: those whose line (block 2 of G76 and G75.1,
+/// either block of G75.1, the G32 block) is in `lines`, or without
+/// `lines`, the first [`MAX_CYCLES`]. Returns the SVG document and, when
+/// cycles were left out, a note for the user saying how many and how to
+/// pick others.
+///
+/// # Errors
+///
+/// The program's first error, a line of `lines` with no cycle, or nothing
+/// to draw.
+pub fn run(
+    job: &crate::Job,
+    lines: &[usize],
+    overlay: Option<&Overlay>,
+) -> Result<(String, Option<String>), crate::Failure> {
+    use cycleref_spec::pipeline::Cycle;
+    use cycleref_spec::reader::Item;
+    job.validate()?;
+    let mut cycles = Vec::new();
+    let mut threads = Vec::new();
+    let mut grooves = Vec::new();
+    let (mut total, mut drawn) = (0_usize, 0_usize);
+    let mut found = BTreeSet::new();
+    for item in job.reader() {
+        let item = item.map_err(|e| job.fail(&e.into()))?;
+        let Some(cycle) = Cycle::of(&item) else { continue };
+        total += 1;
+        let wanted = if lines.is_empty() {
+            drawn < MAX_CYCLES
+        } else {
+            let block1 = match cycle {
+                Cycle::G75(c) => Some(c.params_line),
+                _ => None,
+            };
+            let mut hit = false;
+            for l in [Some(cycle.line()), block1].into_iter().flatten() {
+                if lines.contains(&l) {
+                    found.insert(l);
+                    hit = true;
+                }
+            }
+            hit
+        };
+        if !wanted {
+            continue;
+        }
+        drawn += 1;
+        let moves: Vec<Move> = job.expand(cycle)?.collect();
+        match item {
+            Item::G76(call) => cycles.push((call, moves)),
+            Item::G32(call) => threads.push((call, moves)),
+            Item::G75(call) => {
+                // The profile is the finishing path of the same groove for a
+                // pointed tool; the roughing region's outline is the
+                // engine's profile of it (plot_g75's module documentation).
+                let pointed = cycleref_spec::reader::G75Call {
+                    cycle: cycleref::G75Cycle {
+                        tool_width: None,
+                        path: cycleref::PathType::Finish,
+                        ..call.cycle
+                    },
+                    ..call.clone()
+                };
+                let profile: Vec<Move> =
+                    job.expand(Cycle::G75(&pointed))?.filter(|m| m.role == Role::FinishContour).collect();
+                let rough = cycleref::groove_profile(&call.cycle)
+                    .map_err(|e| {
+                        crate::Failure::msg(format!("{}: line {}, G75.1: {e}", job.name, call.block.line))
+                    })?
+                    .roughing()
+                    .to_vec();
+                grooves.push((call, moves, profile_from_contour(&profile), rough));
+            }
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
+        }
+    }
+    if let Some(missing) = lines.iter().find(|l| !found.contains(*l)) {
+        return Err(crate::Failure::msg(format!(
+            "{}: --line {missing}: no G76, G32 or G75.1 block at that line",
+            job.name
+        )));
+    }
+    let panels: Vec<_> = grooves
+        .iter()
+        .map(|(call, moves, profile, rough)| crate::plot_g75::Groove {
+            call,
+            moves,
+            profile: profile.clone(),
+            rough: rough.clone(),
+        })
+        .collect();
+    let svg = svg(&job.name, &cycles, &threads, &panels, overlay).map_err(crate::Failure::Message)?;
+    let note = (drawn < total).then(|| {
+        format!(
+            "{}: drew {drawn} of {total} cycles (at most {MAX_CYCLES} without --line); pick others with \
+             --line N, N the line of a G76 or G75.1 block or of a G32 block (repeatable)",
+            job.name
+        )
+    });
+    Ok((svg, note))
+}
+
+/// The finishing contour's moves without its first move (the rapid to the
+/// contour's start, which becomes the profile's first point).
+fn profile_from_contour(contour: &[Move]) -> Vec<Move> {
+    let start = contour.iter().position(|m| m.motion != Motion::Rapid).unwrap_or(0);
+    let first = start.saturating_sub(1);
+    contour[first..].to_vec()
 }
 
 #[cfg(test)]

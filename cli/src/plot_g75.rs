@@ -34,7 +34,7 @@ const PROFILE: &str = "#222222";
 /// What a G75.1 panel draws.
 pub struct Groove<'a> {
     /// The cycle.
-    pub call: &'a G75Call,
+    pub call: &'a G75Call<'a>,
     /// Its moves.
     pub moves: &'a [Move],
     /// The finishing contour of the same groove for a pointed tool (the

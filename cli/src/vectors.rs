@@ -31,11 +31,12 @@ use cycleref::{
     PathType, Role, RunOut, Units, XMode,
 };
 use cycleref_spec::profile::{ParamValue, Profile};
-use cycleref_spec::reader::{G32Call, G75Call, G76Call, Item};
+use cycleref_spec::reader::{G32Call, G75Call, G76Call};
 use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
 use serde_json::{json, Map, Value};
 
-use crate::format;
+use crate::json::{CycleJson, UnitsJson};
+use cycleref_spec::pipeline::{expand, Cycle, Engine};
 
 /// Schema of a case file.
 const CASE_SCHEMA: &str = "cycleref-vector/1";
@@ -119,54 +120,12 @@ fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
 // ---- stable names of the error kinds ----
 
 /// The stable name of what is wrong with a program, as written in the
-/// `expect.error.kind` field: the reader's kinds by name, a cycle alarm as
-/// `cycle:` and the alarm's name. A new variant must be named here.
+/// `expect.error.kind` field: [`ErrorKind::name`], and for a cycle alarm
+/// `cycle:` and [`CycleError::name`].
 pub fn kind_name(kind: &ErrorKind) -> String {
-    let name = match kind {
-        ErrorKind::Syntax(_) => "syntax",
-        ErrorKind::NotInIncrements { .. } => "not_in_increments",
-        ErrorKind::DecimalPointNotAllowed { .. } => "decimal_point_not_allowed",
-        ErrorKind::Missing { .. } => "missing",
-        ErrorKind::OutOfRange { .. } => "out_of_range",
-        ErrorKind::AddressNotInProfile { .. } => "address_not_in_profile",
-        ErrorKind::Duplicate => "duplicate",
-        ErrorKind::PartialP => "partial_p",
-        ErrorKind::Unsupported(_) => "unsupported",
-        ErrorKind::PositionUnknown => "position_unknown",
-        ErrorKind::NoSpindleSpeed => "no_spindle_speed",
-        ErrorKind::UnitChangeAfterMotion => "unit_change_after_motion",
-        ErrorKind::Parameter(_) => "parameter",
-        ErrorKind::Cycle(e) => return format!("cycle:{}", cycle_kind_name(e)),
-    };
-    name.to_string()
-}
-
-/// The stable name of a cycle alarm (without the `cycle:` prefix).
-pub fn cycle_kind_name(e: &CycleError) -> &'static str {
-    match e {
-        CycleError::NoMotion => "no_motion",
-        CycleError::OutOfRange { .. } => "out_of_range",
-        CycleError::CountOutOfRange { .. } => "count_out_of_range",
-        CycleError::ZeroLead => "zero_lead",
-        CycleError::LeadOutOfRange => "lead_out_of_range",
-        CycleError::MinCutExceedsHeight { .. } => "min_cut_exceeds_height",
-        CycleError::AllowanceExceedsHeight { .. } => "allowance_exceeds_height",
-        CycleError::FaceThread => "face_thread",
-        CycleError::RunOutTooLong { .. } => "run_out_too_long",
-        CycleError::StartInsideThread => "start_inside_thread",
-        CycleError::ThreadTooShort { .. } => "thread_too_short",
-        CycleError::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
-        CycleError::TooManyPasses { .. } => "too_many_passes",
-        CycleError::WordOutOfRange { .. } => "word_out_of_range",
-        CycleError::AngleOutOfRange { .. } => "angle_out_of_range",
-        CycleError::NoGrooveDepth => "no_groove_depth",
-        CycleError::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
-        CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
-        CycleError::CornerTooLarge { .. } => "corner_too_large",
-        CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
-        CycleError::RidgesInLayers { .. } => "ridges_in_layers",
-        CycleError::TooManyPecks { .. } => "too_many_pecks",
-        CycleError::UndecidedRounding => "undecided_rounding",
+    match kind {
+        ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
+        k => k.name().to_string(),
     }
 }
 
@@ -2771,43 +2730,23 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
     let mut cycles = Vec::new();
     let mut count = 0;
     for item in &program.items {
-        let (line, result) = match item {
-            Item::G76(call) => {
-                let engine = cycleref::expand_g76(&call.cycle).map(|m| m.collect::<Vec<_>>());
-                let reference = cycleref_spec::g76::expand(&call.cycle);
-                same(id, "G76", call.block.line, &engine, &reference)?;
-                if let Ok(moves) = &engine {
-                    g76_tags(call, moves, &mut tags);
-                    cycles.push(g76_json(call, moves));
+        let Some(cycle) = Cycle::of(item) else { continue };
+        let engine = expand(cycle, Engine::Impl).map(Iterator::collect::<Vec<_>>);
+        let reference = expand(cycle, Engine::Spec).map(Iterator::collect::<Vec<_>>);
+        same(id, cycle.code(), cycle.line(), &engine, &reference)?;
+        match engine {
+            Ok(moves) => {
+                match cycle {
+                    Cycle::G76(call) => g76_tags(call, &moves, &mut tags),
+                    Cycle::G32(call) => g32_tags(call, &moves, &mut tags),
+                    Cycle::G75(call) => g75_tags(call, &moves, &mut tags),
                 }
-                (call.block.line, engine)
+                count += moves.len();
+                let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
+                cycles.push(serde_json::to_value(CycleJson::new(cycle, typed)).map_err(|e| e.to_string())?);
             }
-            Item::G32(call) => {
-                let engine = cycleref::expand_g32(&call.g32).map(|m| m.collect::<Vec<_>>());
-                let reference = cycleref_spec::g32::expand(&call.g32);
-                same(id, "G32", call.block.line, &engine, &reference)?;
-                if let Ok(moves) = &engine {
-                    g32_tags(call, moves, &mut tags);
-                    cycles.push(g32_json(call, moves));
-                }
-                (call.block.line, engine)
-            }
-            Item::G75(call) => {
-                let engine = cycleref::expand_g75(&call.cycle).map(|m| m.collect::<Vec<_>>());
-                let reference = cycleref_spec::g75::expand(&call.cycle);
-                same(id, "G75.1", call.block.line, &engine, &reference)?;
-                if let Ok(moves) = &engine {
-                    g75_tags(call, moves, &mut tags);
-                    cycles.push(g75_json(call, moves));
-                }
-                (call.block.line, engine)
-            }
-            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => continue,
-        };
-        match result {
-            Ok(moves) => count += moves.len(),
             Err(e) => {
-                let error = ProgramError { line, word: None, kind: ErrorKind::Cycle(e) };
+                let error = ProgramError { line: cycle.line(), word: None, kind: ErrorKind::Cycle(e) };
                 return Ok(Evaluated { outcome: Err(error), tags, moves: count });
             }
         }
@@ -2847,46 +2786,8 @@ fn same(
     Err(format!("{id}: {cycle} at line {line}: the engine and the reference model differ: {detail}"))
 }
 
-fn g76_json(call: &G76Call, moves: &[Move]) -> Value {
-    let u = call.cycle.units;
-    json!({
-        "cycle": "G76",
-        "line": call.block.line,
-        "params_line": call.params_line,
-        "start": {"x": format::fixed(call.cycle.start.x, u), "z": format::fixed(call.cycle.start.z, u)},
-        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
-    })
-}
-
-fn g32_json(call: &G32Call, moves: &[Move]) -> Value {
-    let u = call.g32.units;
-    let s = call.g32.start;
-    json!({
-        "cycle": "G32",
-        "line": call.block.line,
-        "start": {"x": format::fixed(s.x, u), "z": format::fixed(s.z, u)},
-        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
-    })
-}
-
-fn g75_json(call: &G75Call, moves: &[Move]) -> Value {
-    let c = &call.cycle;
-    let u = c.units;
-    json!({
-        "cycle": "G75.1",
-        "line": call.block.line,
-        "params_line": call.params_line,
-        "from": {"x": format::fixed(c.from.x, u), "z": format::fixed(c.from.z, u)},
-        "start": {"x": format::fixed(c.start.x, u), "z": format::fixed(c.start.z, u)},
-        "moves": moves.iter().map(|m| format::move_json(m, u)).collect::<Vec<_>>(),
-    })
-}
-
 fn units_json(u: Units) -> Value {
-    json!({
-        "unit": match u.unit { InputUnit::Metric => "mm", InputUnit::Inch => "inch" },
-        "decimals": u.decimals(),
-    })
+    serde_json::to_value(UnitsJson::new(u)).unwrap_or(Value::Null)
 }
 
 fn tag(tags: &mut BTreeSet<String>, t: &str) {

@@ -88,7 +88,7 @@ fn errors_exit_2_with_nothing_on_stdout() {
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     let err = String::from_utf8(out.stderr).unwrap();
-    assert!(err.contains("-: line 4: P(k) (thread height) is missing"), "{err}");
+    assert!(err.contains("<stdin>: line 4: P(k) (thread height) is missing"), "{err}");
     // A cycle alarm found while expanding, after earlier blocks were read.
     let program = "M03 S500\nG00 X80 Z10\nG76 P010060 Q0.1 R0\nG76 X60 Z-30 P2 Q1 F6 J1 K40\n";
     for engine in ["impl", "spec"] {

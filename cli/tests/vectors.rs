@@ -186,6 +186,8 @@ fn kind(k: &ErrorKind) -> String {
     };
     match k {
         ErrorKind::Syntax(_) => "syntax".into(),
+        ErrorKind::Misplaced { .. } => "misplaced".into(),
+        ErrorKind::Encoding { .. } => "encoding".into(),
         ErrorKind::NotInIncrements { .. } => "not_in_increments".into(),
         ErrorKind::DecimalPointNotAllowed { .. } => "decimal_point_not_allowed".into(),
         ErrorKind::Missing { .. } => "missing".into(),

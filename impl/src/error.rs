@@ -397,3 +397,39 @@ impl fmt::Display for CycleError {
         }
     }
 }
+
+impl core::error::Error for CycleError {}
+
+impl CycleError {
+    /// The alarm's stable name (`min_cut_exceeds_height`), as the
+    /// conformance vectors write it after `cycle:`. A name never changes
+    /// meaning; a new alarm gets a new name.
+    #[must_use]
+    pub const fn name(&self) -> &'static str {
+        match self {
+            Self::NoMotion => "no_motion",
+            Self::OutOfRange { .. } => "out_of_range",
+            Self::CountOutOfRange { .. } => "count_out_of_range",
+            Self::ZeroLead => "zero_lead",
+            Self::LeadOutOfRange => "lead_out_of_range",
+            Self::MinCutExceedsHeight { .. } => "min_cut_exceeds_height",
+            Self::AllowanceExceedsHeight { .. } => "allowance_exceeds_height",
+            Self::FaceThread => "face_thread",
+            Self::RunOutTooLong { .. } => "run_out_too_long",
+            Self::StartInsideThread => "start_inside_thread",
+            Self::ThreadTooShort { .. } => "thread_too_short",
+            Self::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
+            Self::TooManyPasses { .. } => "too_many_passes",
+            Self::WordOutOfRange { .. } => "word_out_of_range",
+            Self::AngleOutOfRange { .. } => "angle_out_of_range",
+            Self::NoGrooveDepth => "no_groove_depth",
+            Self::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
+            Self::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
+            Self::CornerTooLarge { .. } => "corner_too_large",
+            Self::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",
+            Self::RidgesInLayers { .. } => "ridges_in_layers",
+            Self::TooManyPecks { .. } => "too_many_pecks",
+            Self::UndecidedRounding => "undecided_rounding",
+        }
+    }
+}

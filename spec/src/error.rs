@@ -21,6 +21,19 @@ pub struct ProgramError {
 pub enum ErrorKind {
     /// Text that is not a word, comment or block end.
     Syntax(String),
+    /// A word where the program's format does not allow it (`N` inside a
+    /// block, `O` beside other words).
+    Misplaced {
+        /// The rule.
+        rule: &'static str,
+    },
+    /// A byte outside a comment that is not UTF-8 (reading R-ENCODING).
+    Encoding {
+        /// 1-based byte column in the line.
+        column: usize,
+        /// The byte.
+        byte: u8,
+    },
     /// A length that is not a whole number of least increments.
     NotInIncrements {
         /// The least increment, for example `0.001 mm`.
@@ -68,6 +81,34 @@ pub enum ErrorKind {
     Cycle(CycleError),
 }
 
+impl ErrorKind {
+    /// The stable name of the kind (`not_in_increments`), as the
+    /// conformance vectors write it; a cycle alarm is `cycle` here, and its
+    /// own name is [`CycleError::name`]. A name never changes meaning; a
+    /// new kind gets a new name.
+    #[must_use]
+    pub const fn name(&self) -> &'static str {
+        match self {
+            ErrorKind::Syntax(_) => "syntax",
+            ErrorKind::Misplaced { .. } => "misplaced",
+            ErrorKind::Encoding { .. } => "encoding",
+            ErrorKind::NotInIncrements { .. } => "not_in_increments",
+            ErrorKind::DecimalPointNotAllowed { .. } => "decimal_point_not_allowed",
+            ErrorKind::Missing { .. } => "missing",
+            ErrorKind::OutOfRange { .. } => "out_of_range",
+            ErrorKind::AddressNotInProfile { .. } => "address_not_in_profile",
+            ErrorKind::Duplicate => "duplicate",
+            ErrorKind::PartialP => "partial_p",
+            ErrorKind::Unsupported(_) => "unsupported",
+            ErrorKind::PositionUnknown => "position_unknown",
+            ErrorKind::NoSpindleSpeed => "no_spindle_speed",
+            ErrorKind::UnitChangeAfterMotion => "unit_change_after_motion",
+            ErrorKind::Parameter(_) => "parameter",
+            ErrorKind::Cycle(_) => "cycle",
+        }
+    }
+}
+
 impl fmt::Display for ProgramError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "line {}", self.line)?;
@@ -82,6 +123,12 @@ impl fmt::Display for ErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ErrorKind::Syntax(s) => write!(f, "cannot read {s}"),
+            ErrorKind::Misplaced { rule } => write!(f, "misplaced word: {rule}"),
+            ErrorKind::Encoding { column, byte } => write!(
+                f,
+                "byte 0x{byte:02X} at byte column {column} is not UTF-8 text (only a comment may hold text \
+                 in another encoding, such as GBK)"
+            ),
             ErrorKind::NotInIncrements { increment } => {
                 write!(f, "the value is not a whole number of least increments ({increment})")
             }
@@ -115,4 +162,11 @@ impl fmt::Display for ErrorKind {
     }
 }
 
-impl std::error::Error for ProgramError {}
+impl std::error::Error for ProgramError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match &self.kind {
+            ErrorKind::Cycle(e) => Some(e),
+            _ => None,
+        }
+    }
+}

@@ -1,51 +1,92 @@
-//! Splitting program text into blocks of words.
+//! Splitting program text into blocks of words, one block at a time.
 //!
-//! Accepts `%` lines, `O` numbers, `N` numbers, `( )` comments (also the
+//! [`Lexer`] walks the program's bytes and yields one [`Block`] at a time,
+//! borrowing its text and words from the source: no per-word or per-block
+//! allocation on the usual path (a block's words live inline up to
+//! [`INLINE_WORDS`]), so reading costs the same memory whatever the
+//! program's length. [`lex`] collects the blocks for callers that want them
+//! all.
+//!
+//! Accepted: `%` lines, a program number `O` in a block of its own, a
+//! sequence number `N` at the start of a block, `( )` comments (also the
 //! full-width `（ ）` of the Chinese manuals), `;` (and `；`) or a newline as
 //! block end, blank lines, spaces anywhere between words and between an
-//! address and its value, words in any order, upper or lower case, and a
-//! leading `/` (block delete, treated as switched off). Every block keeps its
-//! source line and text for messages and for echoing.
+//! address and its value, words in any order, upper or lower case, a
+//! leading `/` (block delete, treated as switched off) and a UTF-8
+//! byte-order mark at the start of the text.
+//!
+//! The text is read as bytes (reading R-ENCODING). Bytes inside a comment
+//! are opaque: GSK controls write Chinese comments in GBK, which is not
+//! UTF-8, and such a comment is kept and echoed byte for byte. Outside a
+//! comment the text must be UTF-8; any other byte is an error naming its
+//! line and byte column.
+//!
+//! Every block keeps its source line and text for messages and for echoing.
 
+use std::borrow::Cow;
+
+use arrayvec::ArrayVec;
 use rust_decimal::Decimal;
 
 use crate::error::{ErrorKind, ProgramError};
 
+/// How many words a block holds without a heap allocation. Longer blocks
+/// are read all the same, with one allocation.
+pub const INLINE_WORDS: usize = 12;
+
 /// A number as written after an address.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Number {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Number<'a> {
     /// A leading minus sign.
     pub negative: bool,
     /// Digits before the decimal point, as written (leading zeros kept).
-    pub int_digits: String,
+    pub int_digits: &'a str,
     /// Digits after the decimal point, when there is a decimal point.
-    pub frac_digits: Option<String>,
+    pub frac_digits: Option<&'a str>,
 }
 
-impl Number {
+impl Number<'_> {
     /// True when the number was written with a decimal point.
     #[must_use]
     pub fn has_point(&self) -> bool {
         self.frac_digits.is_some()
     }
 
-    /// The exact value.
+    /// The exact value, with the scale as written (`2.50` has scale 2), or
+    /// `None` when no [`Decimal`] holds it exactly.
     #[must_use]
     pub fn decimal(&self) -> Option<Decimal> {
-        let mut s = String::new();
+        let frac = self.frac_digits.unwrap_or("");
+        // The usual case without an allocation: at most 28 decimals and a
+        // mantissa below 2^96.
+        let mut mantissa: u128 = 0;
+        let mut fits = frac.len() <= 28;
+        for b in self.int_digits.bytes().chain(frac.bytes()) {
+            match mantissa.checked_mul(10).and_then(|m| m.checked_add(u128::from(b - b'0'))) {
+                Some(m) if m < (1 << 96) => mantissa = m,
+                _ => {
+                    fits = false;
+                    break;
+                }
+            }
+        }
+        if fits {
+            let scale = u32::try_from(frac.len()).ok()?;
+            let signed = i128::try_from(mantissa).ok()?;
+            let mut d = Decimal::try_from_i128_with_scale(signed, scale).ok()?;
+            d.set_sign_negative(self.negative);
+            return Some(d);
+        }
+        // Beyond that, `from_str_exact` decides (it may still hold the
+        // value by dropping trailing zeros, or refuse to round).
+        let mut s = String::with_capacity(self.int_digits.len() + frac.len() + 3);
         if self.negative {
             s.push('-');
         }
-        if self.int_digits.is_empty() {
-            s.push('0');
-        } else {
-            s.push_str(&self.int_digits);
-        }
-        if let Some(f) = &self.frac_digits {
-            if !f.is_empty() {
-                s.push('.');
-                s.push_str(f);
-            }
+        s.push_str(if self.int_digits.is_empty() { "0" } else { self.int_digits });
+        if !frac.is_empty() {
+            s.push('.');
+            s.push_str(frac);
         }
         Decimal::from_str_exact(&s).ok()
     }
@@ -54,7 +95,7 @@ impl Number {
     /// zeros counts as whole).
     #[must_use]
     pub fn integer(&self) -> Option<i64> {
-        if let Some(f) = &self.frac_digits {
+        if let Some(f) = self.frac_digits {
             if f.bytes().any(|b| b != b'0') {
                 return None;
             }
@@ -67,29 +108,92 @@ impl Number {
 
 /// An address letter and its number.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Word {
+pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
     /// The value.
-    pub number: Number,
-    /// The word as written (for messages).
-    pub text: String,
+    pub number: Number<'a>,
+    /// The word as written, without the spaces inside it (for messages).
+    pub text: Cow<'a, str>,
+}
+
+/// The words of a block: inline up to [`INLINE_WORDS`], on the heap
+/// beyond. Derefs to a slice.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Words<'a>(WordStore<'a>);
+
+// The inline variant is the point: no allocation for an ordinary block.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum WordStore<'a> {
+    Inline(ArrayVec<Word<'a>, INLINE_WORDS>),
+    Heap(Vec<Word<'a>>),
+}
+
+impl<'a> Words<'a> {
+    /// No words.
+    #[must_use]
+    pub fn new() -> Words<'a> {
+        Words(WordStore::Inline(ArrayVec::new()))
+    }
+
+    /// Adds `w` after the others.
+    pub fn push(&mut self, w: Word<'a>) {
+        match &mut self.0 {
+            WordStore::Inline(v) => {
+                if let Err(e) = v.try_push(w) {
+                    let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
+                    heap.extend(v.drain(..));
+                    heap.push(e.element());
+                    self.0 = WordStore::Heap(heap);
+                }
+            }
+            WordStore::Heap(v) => v.push(w),
+        }
+    }
+}
+
+impl Default for Words<'_> {
+    fn default() -> Self {
+        Words::new()
+    }
+}
+
+impl<'a> std::ops::Deref for Words<'a> {
+    type Target = [Word<'a>];
+
+    fn deref(&self) -> &[Word<'a>] {
+        match &self.0 {
+            WordStore::Inline(v) => v,
+            WordStore::Heap(v) => v,
+        }
+    }
+}
+
+impl<'b, 'a> IntoIterator for &'b Words<'a> {
+    type Item = &'b Word<'a>;
+    type IntoIter = std::slice::Iter<'b, Word<'a>>;
+
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
 }
 
 /// One block of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Block {
+pub struct Block<'a> {
     /// 1-based source line.
     pub line: usize,
-    /// The block's source text without its block end.
-    pub text: String,
+    /// The block's source text without its block end, as bytes: a comment
+    /// may hold text in another encoding than UTF-8 (reading R-ENCODING).
+    pub text: Cow<'a, [u8]>,
     /// The words, in source order (comments, `N`, `O` and `%` removed).
-    pub words: Vec<Word>,
+    pub words: Words<'a>,
 }
 
-impl Block {
+impl<'a> Block<'a> {
     /// The words with address `letter`.
-    pub fn all(&self, letter: char) -> impl Iterator<Item = &Word> {
+    pub fn all(&self, letter: char) -> impl Iterator<Item = &Word<'a>> {
         self.words.iter().filter(move |w| w.letter == letter)
     }
 
@@ -98,13 +202,13 @@ impl Block {
     /// # Errors
     ///
     /// [`ErrorKind::Duplicate`] when the address appears twice.
-    pub fn get(&self, letter: char) -> Result<Option<&Word>, ProgramError> {
+    pub fn get(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
         let mut it = self.all(letter);
         let first = it.next();
         if let Some(second) = it.next() {
             return Err(ProgramError {
                 line: self.line,
-                word: Some(second.text.clone()),
+                word: Some(second.text.to_string()),
                 kind: ErrorKind::Duplicate,
             });
         }
@@ -116,106 +220,309 @@ impl Block {
     pub fn has(&self, letter: char) -> bool {
         self.words.iter().any(|w| w.letter == letter)
     }
+
+    /// The text for a person: UTF-8 as it is, other bytes (a GBK comment)
+    /// replaced by U+FFFD.
+    #[must_use]
+    pub fn text_lossy(&self) -> Cow<'_, str> {
+        String::from_utf8_lossy(&self.text)
+    }
 }
 
 /// Splits `source` into blocks.
 ///
 /// # Errors
 ///
-/// [`ErrorKind::Syntax`] for characters that are not part of a word, an
-/// unclosed comment or an address without a number.
-pub fn lex(source: &str) -> Result<Vec<Block>, ProgramError> {
-    let mut blocks: Vec<Block> = Vec::new();
-    for (i, line) in source.lines().enumerate() {
-        let line_no = i + 1;
-        let chars: Vec<(usize, char)> = line.char_indices().collect();
-        let mut pos = 0;
-        let mut start_byte = 0;
-        let mut words = Vec::new();
-        let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
-        let first_block = blocks.len();
-        let mut flush = |words: &mut Vec<Word>, from: usize, to: usize| {
-            let text = line[from..to].trim().to_string();
-            if text.is_empty() && words.is_empty() {
-                return;
-            }
-            // A comment after a block end on the same line belongs to that block.
-            if words.is_empty() && blocks.len() > first_block {
-                if let Some(prev) = blocks.last_mut() {
-                    prev.text.push(' ');
-                    prev.text.push_str(&text);
-                    return;
-                }
-            }
-            blocks.push(Block { line: line_no, text, words: std::mem::take(words) });
+/// The first error of [`Lexer`].
+pub fn lex(source: &str) -> Result<Vec<Block<'_>>, ProgramError> {
+    Lexer::new(source.as_bytes()).collect()
+}
+
+/// The blocks of a program, one at a time (see the module documentation).
+///
+/// After an error the lexer yields nothing more.
+#[derive(Clone, Debug)]
+pub struct Lexer<'a> {
+    src: &'a [u8],
+    /// Byte offset of the next line.
+    pos: usize,
+    /// Number of the next line (1-based).
+    line: usize,
+    /// The current line and where in it the next block starts.
+    current: Option<(&'a [u8], usize)>,
+    done: bool,
+}
+
+const BOM: &[u8] = b"\xEF\xBB\xBF";
+const FULL_SEMI: &[u8] = "；".as_bytes();
+const FULL_OPEN: &[u8] = "（".as_bytes();
+const FULL_CLOSE: &[u8] = "）".as_bytes();
+
+impl<'a> Lexer<'a> {
+    /// A lexer over the bytes of a program. A UTF-8 byte-order mark at the
+    /// start is skipped.
+    #[must_use]
+    pub fn new(src: &'a [u8]) -> Lexer<'a> {
+        let pos = if src.starts_with(BOM) { BOM.len() } else { 0 };
+        Lexer { src, pos, line: 0, current: None, done: false }
+    }
+
+    /// The next line, without its line end (`\n` or `\r\n`).
+    fn next_line(&mut self) -> Option<&'a [u8]> {
+        if self.pos >= self.src.len() {
+            return None;
+        }
+        let rest = &self.src[self.pos..];
+        let (line, advance) = match rest.iter().position(|&b| b == b'\n') {
+            Some(i) => (&rest[..i], i + 1),
+            None => (rest, rest.len()),
         };
-        while pos < chars.len() {
-            let (byte, c) = chars[pos];
-            match c {
-                ';' | '；' => {
-                    flush(&mut words, start_byte, byte);
-                    pos += 1;
-                    start_byte = chars.get(pos).map_or(line.len(), |p| p.0);
+        self.pos += advance;
+        self.line += 1;
+        Some(line.strip_suffix(b"\r").unwrap_or(line))
+    }
+
+    /// Reads one segment of `line` from `start` (up to a block end or the
+    /// line's end): its words and the offset after its block end, or
+    /// `None` for the offset when the line is finished.
+    fn segment(&self, line: &'a [u8], start: usize) -> Result<Segment<'a>, ProgramError> {
+        let line_no = self.line;
+        let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
+        let mut words = Words::new();
+        let mut pos = start;
+        // N and O only first; nothing after O.
+        let mut seen = false;
+        let mut program_number = false;
+        while pos < line.len() {
+            let b = line[pos];
+            match b {
+                b';' => return Ok(Segment { words, end: pos, next: Some(pos + 1) }),
+                b'(' => {
+                    pos =
+                        comment_end(line, pos + 1).ok_or_else(|| syntax("an unclosed comment `(`".into()))?
                 }
-                '(' | '（' => {
-                    let close = chars[pos..].iter().position(|&(_, ch)| ch == ')' || ch == '）');
-                    match close {
-                        Some(off) => pos += off + 1,
-                        None => return Err(syntax("an unclosed comment `(`".into())),
-                    }
-                }
-                '%' | '/' | '\u{3000}' => pos += 1,
-                c if c.is_whitespace() => pos += 1,
-                c if c.is_ascii_alphabetic() => {
-                    let letter = c.to_ascii_uppercase();
-                    pos += 1;
-                    while pos < chars.len() && (chars[pos].1 == ' ' || chars[pos].1 == '\t') {
-                        pos += 1;
-                    }
-                    let num_start = pos;
-                    let mut negative = false;
-                    if pos < chars.len() && (chars[pos].1 == '-' || chars[pos].1 == '+') {
-                        negative = chars[pos].1 == '-';
-                        pos += 1;
-                    }
-                    let mut int_digits = String::new();
-                    while pos < chars.len() && chars[pos].1.is_ascii_digit() {
-                        int_digits.push(chars[pos].1);
-                        pos += 1;
-                    }
-                    let mut frac_digits = None;
-                    if pos < chars.len() && chars[pos].1 == '.' {
-                        pos += 1;
-                        let mut f = String::new();
-                        while pos < chars.len() && chars[pos].1.is_ascii_digit() {
-                            f.push(chars[pos].1);
-                            pos += 1;
+                b'%' | b'/' => pos += 1,
+                b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
+                b if b.is_ascii_alphabetic() => {
+                    let (word, end) = read_word(line, pos, line_no)?;
+                    match word.letter {
+                        'N' if !seen => {}
+                        'N' => {
+                            return Err(misplaced(
+                                line_no,
+                                &word,
+                                "a sequence number N may only start a block (after an optional `/`)",
+                            ))
                         }
-                        frac_digits = Some(f);
+                        'O' if !seen => program_number = true,
+                        'O' => {
+                            return Err(misplaced(
+                                line_no,
+                                &word,
+                                "a program number O must stand at the start of a block of its own",
+                            ))
+                        }
+                        _ if program_number => {
+                            return Err(misplaced(
+                                line_no,
+                                &word,
+                                "a program number O must stand in a block of its own; nothing may follow it",
+                            ))
+                        }
+                        _ => words.push(word),
                     }
-                    let no_digits =
-                        int_digits.is_empty() && frac_digits.as_ref().is_none_or(|f| f.is_empty());
-                    let end_byte = chars.get(pos).map_or(line.len(), |p| p.0);
-                    let text: String = line[byte..end_byte].chars().filter(|c| !c.is_whitespace()).collect();
-                    if no_digits {
-                        return Err(ProgramError {
-                            line: line_no,
-                            word: Some(text),
-                            kind: ErrorKind::Syntax(format!(
-                                "the address `{letter}` without a number{}",
-                                if num_start == pos { "" } else { " (only a sign)" }
-                            )),
-                        });
+                    seen = true;
+                    pos = end;
+                }
+                b if b.is_ascii() => {
+                    return Err(syntax(format!("the character `{}`", char::from(b))));
+                }
+                _ => {
+                    let rest = &line[pos..];
+                    if rest.starts_with(FULL_SEMI) {
+                        return Ok(Segment { words, end: pos, next: Some(pos + FULL_SEMI.len()) });
                     }
-                    if letter == 'N' || letter == 'O' {
+                    if rest.starts_with(FULL_OPEN) {
+                        pos = comment_end(line, pos + FULL_OPEN.len())
+                            .ok_or_else(|| syntax("an unclosed comment `（`".into()))?;
                         continue;
                     }
-                    words.push(Word { letter, number: Number { negative, int_digits, frac_digits }, text });
+                    match decode(rest) {
+                        Some(c) if c.is_whitespace() => pos += c.len_utf8(),
+                        Some(c) => return Err(syntax(format!("the character `{c}`"))),
+                        None => {
+                            return Err(ProgramError {
+                                line: line_no,
+                                word: None,
+                                kind: ErrorKind::Encoding { column: pos + 1, byte: b },
+                            })
+                        }
+                    }
                 }
-                other => return Err(syntax(format!("the character `{other}`"))),
             }
         }
-        flush(&mut words, start_byte, line.len());
+        Ok(Segment { words, end: line.len(), next: None })
     }
-    Ok(blocks)
+}
+
+/// A block's worth of a line.
+struct Segment<'a> {
+    words: Words<'a>,
+    /// Where the block's text ends (its block end, or the line's end).
+    end: usize,
+    /// Where the next block starts, if the line goes on.
+    next: Option<usize>,
+}
+
+impl<'a> Iterator for Lexer<'a> {
+    type Item = Result<Block<'a>, ProgramError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        let r = self.next_block();
+        if !matches!(r, Some(Ok(_))) {
+            self.done = true;
+        }
+        r
+    }
+}
+
+impl<'a> Lexer<'a> {
+    fn next_block(&mut self) -> Option<Result<Block<'a>, ProgramError>> {
+        loop {
+            let (line, start) = match self.current.take() {
+                Some(c) => c,
+                None => (self.next_line()?, 0),
+            };
+            let seg = match self.segment(line, start) {
+                Ok(s) => s,
+                Err(e) => return Some(Err(e)),
+            };
+            let text = trim(&line[start..seg.end]);
+            self.current = seg.next.map(|n| (line, n));
+            if text.is_empty() && seg.words.is_empty() {
+                continue;
+            }
+            let mut block = Block { line: self.line, text: Cow::Borrowed(text), words: seg.words };
+            // A comment after a block end on the same line belongs to that
+            // block: take every following segment without words.
+            while let Some((line, start)) = self.current {
+                let seg = match self.segment(line, start) {
+                    Ok(s) => s,
+                    Err(e) => return Some(Err(e)),
+                };
+                if !seg.words.is_empty() {
+                    break;
+                }
+                let more = trim(&line[start..seg.end]);
+                if !more.is_empty() {
+                    let t = block.text.to_mut();
+                    t.push(b' ');
+                    t.extend_from_slice(more);
+                }
+                self.current = seg.next.map(|n| (line, n));
+            }
+            return Some(Ok(block));
+        }
+    }
+}
+
+fn misplaced(line: usize, word: &Word<'_>, rule: &'static str) -> ProgramError {
+    ProgramError { line, word: Some(word.text.to_string()), kind: ErrorKind::Misplaced { rule } }
+}
+
+/// The offset after the comment that starts before `from`, whose bytes are
+/// opaque: it ends at the first `)` or `）`.
+fn comment_end(line: &[u8], from: usize) -> Option<usize> {
+    let rest = &line[from..];
+    let close = rest.iter().enumerate().find_map(|(i, &b)| match b {
+        b')' => Some(i + 1),
+        0xEF if rest[i..].starts_with(FULL_CLOSE) => Some(i + FULL_CLOSE.len()),
+        _ => None,
+    })?;
+    Some(from + close)
+}
+
+/// The UTF-8 character at the start of `bytes`, if they start with one.
+fn decode(bytes: &[u8]) -> Option<char> {
+    let len = match bytes.first()? {
+        0x00..=0x7F => 1,
+        0xC2..=0xDF => 2,
+        0xE0..=0xEF => 3,
+        0xF0..=0xF4 => 4,
+        _ => return None,
+    };
+    std::str::from_utf8(bytes.get(..len)?).ok()?.chars().next()
+}
+
+/// The UTF-8 character that ends `bytes`, if they end with one.
+fn decode_last(bytes: &[u8]) -> Option<char> {
+    (1..=4.min(bytes.len())).find_map(|n| {
+        let tail = &bytes[bytes.len() - n..];
+        std::str::from_utf8(tail).ok().and_then(|s| {
+            let mut cs = s.chars();
+            let c = cs.next_back()?;
+            (c.len_utf8() == n).then_some(c)
+        })
+    })
+}
+
+/// `bytes` without leading and trailing white space (as `str::trim`).
+fn trim(mut bytes: &[u8]) -> &[u8] {
+    while let Some(c) = decode(bytes).filter(|c| c.is_whitespace()) {
+        bytes = &bytes[c.len_utf8()..];
+    }
+    while let Some(c) = decode_last(bytes).filter(|c| c.is_whitespace()) {
+        bytes = &bytes[..bytes.len() - c.len_utf8()];
+    }
+    bytes
+}
+
+/// The word that starts at `start` (an ASCII letter) and the offset after it.
+fn read_word(line: &[u8], start: usize, line_no: usize) -> Result<(Word<'_>, usize), ProgramError> {
+    let letter = char::from(line[start].to_ascii_uppercase());
+    let mut pos = start + 1;
+    while pos < line.len() && (line[pos] == b' ' || line[pos] == b'\t') {
+        pos += 1;
+    }
+    let num_start = pos;
+    let mut negative = false;
+    if pos < line.len() && (line[pos] == b'-' || line[pos] == b'+') {
+        negative = line[pos] == b'-';
+        pos += 1;
+    }
+    let digits = |from: usize| from + line[from..].iter().take_while(|b| b.is_ascii_digit()).count();
+    let int_end = digits(pos);
+    let int_digits = ascii(&line[pos..int_end]);
+    pos = int_end;
+    let mut frac_digits = None;
+    if pos < line.len() && line[pos] == b'.' {
+        let end = digits(pos + 1);
+        frac_digits = Some(ascii(&line[pos + 1..end]));
+        pos = end;
+    }
+    let raw = ascii(&line[start..pos]);
+    let text: Cow<'_, str> = if raw.bytes().any(|b| b == b' ' || b == b'\t') {
+        Cow::Owned(raw.chars().filter(|c| !c.is_whitespace()).collect())
+    } else {
+        Cow::Borrowed(raw)
+    };
+    if int_digits.is_empty() && frac_digits.is_none_or(str::is_empty) {
+        return Err(ProgramError {
+            line: line_no,
+            word: Some(text.into_owned()),
+            kind: ErrorKind::Syntax(format!(
+                "the address `{letter}` without a number{}",
+                if num_start == pos { "" } else { " (only a sign)" }
+            )),
+        });
+    }
+    Ok((Word { letter, number: Number { negative, int_digits, frac_digits }, text }, pos))
+}
+
+/// ASCII bytes as text (they are: letters, digits, signs, points, spaces).
+fn ascii(bytes: &[u8]) -> &str {
+    std::str::from_utf8(bytes).unwrap_or_default()
 }

@@ -3,9 +3,12 @@
 //! The exact reference model of lathe thread-cutting canned cycles, and the
 //! NC program reader that feeds it and the fixed-point engine (`cycleref`).
 //!
-//! * [`reader`] reads a whole program with a [`profile::Machine`] and resolves
-//!   every G76 into a [`cycleref::G76Cycle`] (one home for the program's
-//!   meaning, used by both engines).
+//! * [`reader`] reads a program, one item at a time, with a
+//!   [`profile::Machine`] and resolves every cycle into its typed parameters
+//!   ([`cycleref::G76Cycle`] and its twins): one home for the program's
+//!   meaning, used by both engines.
+//! * [`pipeline`] is the one way to run a program: each cycle of the reader
+//!   expanded by the chosen [`Engine`], as an iterator of moves.
 //! * [`g76`] expands a cycle exactly as the manuals define it, one function
 //!   per formula, each quoting the manual.
 //! * [`exact`] and [`tan`] hold the only arithmetic beyond `+ - ×`: rounding
@@ -22,11 +25,13 @@ pub mod g32;
 pub mod g75;
 pub mod g76;
 pub mod lex;
+pub mod pipeline;
 pub mod profile;
 pub mod reader;
 pub mod real;
 pub mod tan;
 
 pub use error::{ErrorKind, ProgramError};
+pub use pipeline::{expand, Cycle, Engine, Moves, RunError};
 pub use profile::{Machine, ProfileName};
-pub use reader::{read, G76Call, Item, Program};
+pub use reader::{read, G76Call, Item, Program, Reader};

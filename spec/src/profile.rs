@@ -415,10 +415,25 @@ impl Machine {
     ///
     /// A message naming the key and what was wrong with it.
     pub fn apply_toml(&mut self, text: &str) -> Result<(), String> {
+        self.apply(text, false)
+    }
+
+    /// As [`Machine::apply_toml`], but the file's `profile` (still checked
+    /// to be a profile's name) does not replace the machine's: a profile
+    /// chosen on the command line wins over the file's.
+    ///
+    /// # Errors
+    ///
+    /// As [`Machine::apply_toml`].
+    pub fn apply_toml_keeping_profile(&mut self, text: &str) -> Result<(), String> {
+        self.apply(text, true)
+    }
+
+    fn apply(&mut self, text: &str, keep_profile: bool) -> Result<(), String> {
         let table: toml::Table = text.parse().map_err(|e| format!("parameter file: {e}"))?;
         if let Some(v) = table.get("profile") {
             let name: ProfileName = v.as_str().ok_or("`profile` must be a string")?.parse()?;
-            if name != self.profile.name {
+            if name != self.profile.name && !keep_profile {
                 self.profile = Profile::get(name);
                 self.params = self.profile.default_params();
             }

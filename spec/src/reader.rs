@@ -15,32 +15,33 @@ use cycleref::units::{Point, MAX_LENGTH};
 use cycleref::{InputUnit, Units};
 use rust_decimal::Decimal;
 
+use crate::error::ErrorKind::NotInIncrements;
 use crate::error::{ErrorKind, ProgramError};
-use crate::lex::{lex, Block, Word};
+use crate::lex::{Block, Lexer, Word};
 use crate::profile::{G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
 /// What the reader found in a program, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Item {
+pub enum Item<'a> {
     /// A block that is not part of a cycle: echoed as written.
-    Source(Block),
+    Source(Block<'a>),
     /// G76 block 1 (P Q R ...): sets modal values, produces no motion.
-    G76Params(Block),
+    G76Params(Block<'a>),
     /// G76 block 2: a cycle to expand.
-    G76(G76Call),
+    G76(G76Call<'a>),
     /// A G32 thread-cutting block.
-    G32(G32Call),
+    G32(G32Call<'a>),
     /// G75.1 block 1 (X Z P Q H D A B L): waits for its block 2.
-    G75Params(Block),
+    G75Params(Block<'a>),
     /// G75.1 block 2: a groove cycle to expand.
-    G75(G75Call),
+    G75(G75Call<'a>),
 }
 
 /// One G75.1 cycle of a program (its two blocks).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct G75Call {
+pub struct G75Call<'a> {
     /// Block 2 (R V U W I J A B D E P).
-    pub block: Block,
+    pub block: Block<'a>,
     /// Line of block 1.
     pub params_line: usize,
     /// The resolved cycle.
@@ -51,18 +52,18 @@ pub struct G75Call {
 
 /// One G32 block of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct G32Call {
+pub struct G32Call<'a> {
     /// The block.
-    pub block: Block,
+    pub block: Block<'a>,
     /// The resolved block.
     pub g32: G32Block,
 }
 
 /// One G76 cycle of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct G76Call {
+pub struct G76Call<'a> {
     /// Block 2 (the one with X(U) Z(W)).
-    pub block: Block,
+    pub block: Block<'a>,
     /// Line of the block 1 whose values are in force, if any.
     pub params_line: Option<usize>,
     /// The resolved cycle.
@@ -74,7 +75,7 @@ pub struct G76Call {
 
 /// Modal state to restore after an expanded cycle, whose last block leaves
 /// G00 and the lead in F.
-#[derive(Clone, Debug, PartialEq, Eq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Restore {
     /// The motion G code in force before the cycle when it was not G00
     /// (G76 is a one-shot code; the expansion ends with G00). The F register
@@ -85,16 +86,16 @@ pub struct Restore {
 
 /// A program read with a machine.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Program {
+pub struct Program<'a> {
     /// The blocks and cycles, in order.
-    pub items: Vec<Item>,
+    pub items: Vec<Item<'a>>,
     /// The units in force for the cycles (fixed before the first motion).
     pub units: Units,
 }
 
-impl Program {
+impl<'a> Program<'a> {
     /// The G32 blocks of the program.
-    pub fn threads(&self) -> impl Iterator<Item = &G32Call> {
+    pub fn threads(&self) -> impl Iterator<Item = &G32Call<'a>> {
         self.items.iter().filter_map(|i| match i {
             Item::G32(c) => Some(c),
             _ => None,
@@ -102,7 +103,7 @@ impl Program {
     }
 
     /// The G75.1 cycles of the program.
-    pub fn grooves(&self) -> impl Iterator<Item = &G75Call> {
+    pub fn grooves(&self) -> impl Iterator<Item = &G75Call<'a>> {
         self.items.iter().filter_map(|i| match i {
             Item::G75(c) => Some(c),
             _ => None,
@@ -110,7 +111,7 @@ impl Program {
     }
 
     /// The cycles of the program.
-    pub fn cycles(&self) -> impl Iterator<Item = &G76Call> {
+    pub fn cycles(&self) -> impl Iterator<Item = &G76Call<'a>> {
         self.items.iter().filter_map(|i| match i {
             Item::G76(c) => Some(c),
             _ => None,
@@ -140,7 +141,8 @@ impl MotionMode {
 }
 
 /// X, Z, U and W of a block.
-type AxisWords<'a> = (Option<&'a Word>, Option<&'a Word>, Option<&'a Word>, Option<&'a Word>);
+type AxisWords<'b, 'a> =
+    (Option<&'b Word<'a>>, Option<&'b Word<'a>>, Option<&'b Word<'a>>, Option<&'b Word<'a>>);
 
 /// Modal values of G76 block 1 and, on the 988TA, J and K (reading R-MODAL).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -165,7 +167,7 @@ struct G76OneShot {
     line: Option<usize>,
 }
 
-struct Reader<'m> {
+struct State<'m> {
     machine: &'m Machine,
     units: Units,
     x: Option<i64>,
@@ -190,7 +192,8 @@ struct Reader<'m> {
 /// The values of a G75.1 block 1, kept until block 2 arrives.
 #[derive(Clone, Debug, PartialEq, Eq)]
 struct G75Block1 {
-    block: Block,
+    /// Its line.
+    line: usize,
     from: Point,
     start: Point,
     peck: i64,
@@ -202,77 +205,166 @@ struct G75Block1 {
     slope: u32,
 }
 
-fn err(block: &Block, word: Option<&Word>, kind: ErrorKind) -> ProgramError {
-    ProgramError { line: block.line, word: word.map(|w| w.text.clone()), kind }
+fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramError {
+    ProgramError { line: block.line, word: word.map(|w| w.text.to_string()), kind }
 }
 
-/// Reads `source` with `machine`.
+/// Reads `source` with `machine`, collecting every item.
+///
+/// This holds the whole program in memory; [`Reader`] reads it one item at
+/// a time in constant memory.
 ///
 /// # Errors
 ///
 /// The first [`ProgramError`] in program order.
-pub fn read(source: &str, machine: &Machine) -> Result<Program, ProgramError> {
-    let blocks = lex(source)?;
-    let mut r = Reader {
-        machine,
-        units: machine.units(),
-        x: None,
-        z: None,
-        moved: false,
-        motion: MotionMode::G00,
-        lead: None,
-        speed: false,
-        spindle_on: false,
-        modal: G76Modal::default(),
-        one_shot: G76OneShot::default(),
-        g32_j: None,
-        g32_k: None,
-        thread_run: None,
-        g75_pending: None,
-    };
-    if let Some(mode) = machine.profile.params.thread_mode {
-        if machine.int_param(mode) != 0 {
-            return Err(ProgramError {
-                line: 1,
-                word: None,
-                kind: ErrorKind::Parameter(format!(
-                    "{mode} = {} selects the high-speed threading mode, whose run-out rules are not \
-                     modelled; set it to 0",
-                    machine.int_param(mode)
-                )),
-            });
+pub fn read<'a>(source: &'a str, machine: &Machine) -> Result<Program<'a>, ProgramError> {
+    let mut reader = Reader::new(source.as_bytes(), machine);
+    let items = reader.by_ref().collect::<Result<Vec<_>, _>>()?;
+    Ok(Program { items, units: reader.units() })
+}
+
+/// The items of a program, one at a time, in program order.
+///
+/// The reader is the program's meaning in one place: it keeps the modal
+/// state the cycles depend on and resolves each cycle's words into its
+/// typed parameters, validated ([`G76Cycle::validate`] and its twins).
+/// Its memory is the modal state and the current block, whatever the
+/// program's length; items borrow their text from the source.
+///
+/// After the first error it yields nothing more. A program is read in two
+/// phases by the command (reading R-STREAM): the first pass reads every
+/// item and checks every cycle, and only a program without error is read a
+/// second time to write its output, so an error leaves no output behind.
+///
+/// ```
+/// use cycleref_spec::reader::{Item, Reader};
+/// use cycleref_spec::{Machine, ProfileName};
+///
+/// let program = b"M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+/// let machine = Machine::new(ProfileName::Gsk988);
+/// let mut cycles = 0;
+/// for item in Reader::new(program, &machine) {
+///     if let Item::G76(call) = item? {
+///         assert_eq!(call.cycle.thread_height, 3680);
+///         cycles += 1;
+///     }
+/// }
+/// assert_eq!(cycles, 1);
+/// # Ok::<(), cycleref_spec::ProgramError>(())
+/// ```
+pub struct Reader<'a, 'm> {
+    lexer: Lexer<'a>,
+    state: State<'m>,
+    started: bool,
+    done: bool,
+}
+
+impl<'a, 'm> Reader<'a, 'm> {
+    /// A reader of `source` (the program's bytes) with `machine`.
+    #[must_use]
+    pub fn new(source: &'a [u8], machine: &'m Machine) -> Reader<'a, 'm> {
+        Reader {
+            lexer: Lexer::new(source),
+            state: State {
+                machine,
+                units: machine.units(),
+                x: None,
+                z: None,
+                moved: false,
+                motion: MotionMode::G00,
+                lead: None,
+                speed: false,
+                spindle_on: false,
+                modal: G76Modal::default(),
+                one_shot: G76OneShot::default(),
+                g32_j: None,
+                g32_k: None,
+                thread_run: None,
+                g75_pending: None,
+            },
+            started: false,
+            done: false,
         }
     }
-    let mut items = Vec::with_capacity(blocks.len());
-    for block in blocks {
-        if let Some(first) = &r.g75_pending {
-            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
-            if !block.words.is_empty() && !is_g75_1(&block) {
-                return Err(lone_g75(&first.block));
+
+    /// The units in force (fixed before the first motion, reading R-UNITS).
+    #[must_use]
+    pub fn units(&self) -> Units {
+        self.state.units
+    }
+
+    fn step(&mut self) -> Option<Result<Item<'a>, ProgramError>> {
+        if !self.started {
+            self.started = true;
+            if let Err(e) = self.state.check_machine() {
+                return Some(Err(e));
             }
         }
-        items.push(r.block(block)?);
+        let block = match self.lexer.next() {
+            Some(Ok(b)) => b,
+            Some(Err(e)) => return Some(Err(e)),
+            None => return self.state.g75_pending.take().map(|first| Err(lone_g75(first.line))),
+        };
+        if let Some(first) = &self.state.g75_pending {
+            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
+            if !block.words.is_empty() && !is_g75_1(&block) {
+                return Some(Err(lone_g75(first.line)));
+            }
+        }
+        Some(self.state.block(block))
     }
-    if let Some(first) = &r.g75_pending {
-        return Err(lone_g75(&first.block));
+}
+
+impl<'a> Iterator for Reader<'a, '_> {
+    type Item = Result<Item<'a>, ProgramError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        let r = self.step();
+        if !matches!(r, Some(Ok(_))) {
+            self.done = true;
+        }
+        r
     }
-    Ok(Program { items, units: r.units })
+}
+
+impl State<'_> {
+    /// The machine's settings that no program can use.
+    fn check_machine(&self) -> Result<(), ProgramError> {
+        let machine = self.machine;
+        if let Some(mode) = machine.profile.params.thread_mode {
+            if machine.int_param(mode) != 0 {
+                return Err(ProgramError {
+                    line: 1,
+                    word: None,
+                    kind: ErrorKind::Parameter(format!(
+                        "{mode} = {} selects the high-speed threading mode, whose run-out rules are not \
+                         modelled; set it to 0",
+                        machine.int_param(mode)
+                    )),
+                });
+            }
+        }
+        Ok(())
+    }
 }
 
 /// True when `block` programs G75.1.
-fn is_g75_1(block: &Block) -> bool {
+fn is_g75_1(block: &Block<'_>) -> bool {
     block.all('G').any(|w| w.number.decimal() == Decimal::from_str_exact("75.1").ok())
 }
 
-fn lone_g75(block: &Block) -> ProgramError {
-    err(
-        block,
-        None,
-        ErrorKind::Missing {
+fn lone_g75(line: usize) -> ProgramError {
+    ProgramError {
+        line,
+        word: None,
+        kind: ErrorKind::Missing {
             what: "the second G75.1 block (R V U W I J A B D E P)",
             rule: "G75.1 always takes two blocks, note 3: 必须有两行 G75.1 代码",
         },
-    )
+    }
 }
 
 /// A length word in least increments of `units`, under `machine`'s
@@ -285,7 +377,12 @@ fn lone_g75(block: &Block) -> ProgramError {
 /// # Errors
 ///
 /// A value finer than the increment or beyond the range tables.
-pub fn length_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+pub fn length_word(
+    machine: &Machine,
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+) -> Result<i64, ProgramError> {
     let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
     to_increments(units, block, w, bare)
 }
@@ -311,31 +408,51 @@ fn range_err(units: Units, signed: bool) -> ErrorKind {
 
 /// A length word in increments. `bare_increments` says what a value
 /// without a decimal point means.
-fn to_increments(units: Units, block: &Block, w: &Word, bare_increments: bool) -> Result<i64, ProgramError> {
+fn to_increments(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
     let n = &w.number;
+    let not_in_increments = || NotInIncrements { increment: increment_text(units) };
+    // A value too large for any range table gets the range message, even
+    // where it is too large for the arithmetic too; a value finer than the
+    // increment gets the increment's.
     let v = if !n.has_point() && bare_increments {
-        n.integer()
+        n.integer().ok_or_else(|| range_err(units, true))
     } else {
-        // checked: a 28-digit value times 10^5 overflows a Decimal.
-        n.decimal().and_then(|d| d.checked_mul(Decimal::from(units.per_unit()))).and_then(|scaled| {
-            if scaled.fract().is_zero() {
-                i64::try_from(scaled.trunc()).ok()
-            } else {
-                None
+        match n.decimal() {
+            // checked: a 28-digit value times 10^5 overflows a Decimal.
+            Some(d) => match d.checked_mul(Decimal::from(units.per_unit())) {
+                Some(scaled) if !scaled.fract().is_zero() => Err(not_in_increments()),
+                Some(scaled) => i64::try_from(scaled.trunc()).map_err(|_| range_err(units, true)),
+                None => Err(range_err(units, true)),
+            },
+            None => {
+                let frac = n.frac_digits.unwrap_or_default().trim_end_matches('0');
+                if frac.len() > units.decimals() as usize {
+                    Err(not_in_increments())
+                } else {
+                    Err(range_err(units, true))
+                }
             }
-        })
+        }
     };
-    let v = v.ok_or_else(|| {
-        err(block, Some(w), ErrorKind::NotInIncrements { increment: increment_text(units) })
-    })?;
+    let v = v.map_err(|kind| err(block, Some(w), kind))?;
     if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
         return Err(err(block, Some(w), range_err(units, true)));
     }
     Ok(v)
 }
 
-impl Reader<'_> {
-    fn to_increments(&self, block: &Block, w: &Word, bare_increments: bool) -> Result<i64, ProgramError> {
+impl State<'_> {
+    fn to_increments(
+        &self,
+        block: &Block<'_>,
+        w: &Word<'_>,
+        bare_increments: bool,
+    ) -> Result<i64, ProgramError> {
         to_increments(self.units, block, w, bare_increments)
     }
 
@@ -344,11 +461,11 @@ impl Reader<'_> {
     }
 
     /// A length word (reading R-POINT: FANUC bare values are increments).
-    fn length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+    fn length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         length_word(self.machine, self.units, block, w)
     }
 
-    fn unsigned_length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+    fn unsigned_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         let v = self.length(block, w)?;
         if v < 0 {
             return Err(err(block, Some(w), self.range_err(false)));
@@ -357,7 +474,7 @@ impl Reader<'_> {
     }
 
     /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
-    fn pq_length(&self, block: &Block, w: &Word) -> Result<i64, ProgramError> {
+    fn pq_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
         let v = match self.machine.profile.pq_unit(bit) {
             PqUnit::IncrementsNoPoint => {
@@ -395,7 +512,7 @@ impl Reader<'_> {
         Ok(v)
     }
 
-    fn count(block: &Block, w: &Word, lo: i64, hi: i64) -> Result<u32, ProgramError> {
+    fn count(block: &Block<'_>, w: &Word<'_>, lo: i64, hi: i64) -> Result<u32, ProgramError> {
         match w.number.integer() {
             Some(v) if (lo..=hi).contains(&v) && !w.number.has_point() => {
                 Ok(u32::try_from(v).unwrap_or(u32::MAX))
@@ -406,11 +523,10 @@ impl Reader<'_> {
         }
     }
 
-    fn lead(&self, block: &Block, w: &Word) -> Result<Lead, ProgramError> {
+    fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
         let n = &w.number;
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
-        let frac = n.frac_digits.clone().unwrap_or_default();
-        let frac = frac.trim_end_matches('0');
+        let frac = n.frac_digits.unwrap_or_default().trim_end_matches('0');
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
         // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
@@ -427,12 +543,13 @@ impl Reader<'_> {
         if n.negative || value < lo || value > hi || scale > MAX_LEAD_SCALE {
             return Err(out(range));
         }
-        let digits = format!("{}{frac}", n.int_digits);
-        let mantissa: u64 = digits.trim_start_matches('0').parse().unwrap_or(0);
+        // Within the range table and MAX_LEAD_SCALE, the digits fit a u64.
+        let mantissa =
+            n.int_digits.bytes().chain(frac.bytes()).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
         Ok(Lead { word, mantissa, scale })
     }
 
-    fn block(&mut self, block: Block) -> Result<Item, ProgramError> {
+    fn block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
         // G codes of the block.
         let mut g76 = false;
         let mut g75 = false;
@@ -602,9 +719,9 @@ impl Reader<'_> {
 
     fn axis(
         &self,
-        block: &Block,
-        abs: Option<&Word>,
-        inc: Option<&Word>,
+        block: &Block<'_>,
+        abs: Option<&Word<'_>>,
+        inc: Option<&Word<'_>>,
         cur: Option<i64>,
     ) -> Result<Option<i64>, ProgramError> {
         if let Some(w) = abs {
@@ -623,7 +740,7 @@ impl Reader<'_> {
     }
 
     /// X, Z, U and W of a block; X with U or Z with W is an error.
-    fn axis_words(block: &Block) -> Result<AxisWords<'_>, ProgramError> {
+    fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
         let (xw, zw, uw, ww) = (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?);
         if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
             return Err(err(
@@ -636,14 +753,14 @@ impl Reader<'_> {
     }
 
     /// The end point X(U) Z(W) of a block that starts at `from`.
-    fn end_point(&self, block: &Block, from: Point) -> Result<Point, ProgramError> {
+    fn end_point(&self, block: &Block<'_>, from: Point) -> Result<Point, ProgramError> {
         let (xw, zw, uw, ww) = Self::axis_words(block)?;
         let x = self.axis(block, xw, uw, Some(from.x))?.unwrap_or(from.x);
         let z = self.axis(block, zw, ww, Some(from.z))?.unwrap_or(from.z);
         Ok(Point::new(x, z))
     }
 
-    fn check_spindle(&self, block: &Block) -> Result<(), ProgramError> {
+    fn check_spindle(&self, block: &Block<'_>) -> Result<(), ProgramError> {
         if self.speed && self.spindle_on {
             Ok(())
         } else {
@@ -651,9 +768,16 @@ impl Reader<'_> {
         }
     }
 
-    fn check_addresses(&self, block: &Block, cycle: &'static str, allowed: &str) -> Result<(), ProgramError> {
+    /// Every word of `block` has an address of `allowed` or `extra`.
+    fn check_addresses(
+        &self,
+        block: &Block<'_>,
+        cycle: &'static str,
+        allowed: &str,
+        extra: &str,
+    ) -> Result<(), ProgramError> {
         for w in &block.words {
-            if !allowed.contains(w.letter) {
+            if !allowed.contains(w.letter) && !extra.contains(w.letter) {
                 return Err(err(
                     block,
                     Some(w),
@@ -668,7 +792,7 @@ impl Reader<'_> {
     /// 1..=the profile's range table.
     fn depth_word(
         &self,
-        block: &Block,
+        block: &Block<'_>,
         letter: char,
         what: &'static str,
         rule: &'static str,
@@ -688,7 +812,7 @@ impl Reader<'_> {
 
     /// The lead of a thread block: its F or I, else the modal one; it
     /// becomes the modal lead.
-    fn block_lead(&mut self, block: &Block) -> Result<Lead, ProgramError> {
+    fn block_lead(&mut self, block: &Block<'_>) -> Result<Lead, ProgramError> {
         let lead = match (block.get('F')?, block.get('I')?) {
             (Some(f), Some(_)) => {
                 return Err(err(block, Some(f), ErrorKind::Unsupported("both F and I in one block".into())))
@@ -703,10 +827,10 @@ impl Reader<'_> {
     }
 
     /// A G32 block: `X(U) Z(W) F(I) J K Q` (seed 002).
-    fn g32_block(&mut self, block: Block) -> Result<G32Call, ProgramError> {
+    fn g32_block<'a>(&mut self, block: Block<'a>) -> Result<G32Call<'a>, ProgramError> {
         let rules = self.machine.profile.g32_rules;
         let allowed = if rules == G32Rules::NoRunOut { "GXZUWFIQMST" } else { "GXZUWFIJKQMST" };
-        self.check_addresses(&block, "G32", allowed)?;
+        self.check_addresses(&block, "G32", allowed, "")?;
         self.check_spindle(&block)?;
         let (Some(x0), Some(z0)) = (self.x, self.z) else {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
@@ -754,15 +878,14 @@ impl Reader<'_> {
     }
 
     /// G32's Q in the profile's unit (reading R-G32Q).
-    fn start_angle(&self, block: &Block, w: &Word) -> Result<StartAngle, ProgramError> {
+    fn start_angle(&self, block: &Block<'_>, w: &Word<'_>) -> Result<StartAngle, ProgramError> {
         q_word(self.machine, self.units, block, w)
     }
 
     /// G76 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's extras.
-    fn g76_block1(&mut self, block: &Block) -> Result<(), ProgramError> {
+    fn g76_block1(&mut self, block: &Block<'_>) -> Result<(), ProgramError> {
         let profile = &self.machine.profile;
-        let allowed = format!("GPQRMST{}", profile.block1_extra);
-        self.check_addresses(block, "G76 block 1", &allowed)?;
+        self.check_addresses(block, "G76 block 1", "GPQRMST", profile.block1_extra)?;
         if let Some(p) = block.get('P')? {
             self.split_p(block, p)?;
         }
@@ -797,7 +920,7 @@ impl Reader<'_> {
     }
 
     /// Reading R-PSPLIT: last two digits a, next two r, the rest m.
-    fn split_p(&mut self, block: &Block, p: &Word) -> Result<(), ProgramError> {
+    fn split_p(&mut self, block: &Block<'_>, p: &Word<'_>) -> Result<(), ProgramError> {
         if p.number.has_point() || p.number.negative {
             return Err(err(
                 block,
@@ -869,10 +992,9 @@ impl Reader<'_> {
     }
 
     /// G76 block 2: `X(U) Z(W) R(i) P(k) Q(Δd) F(I)` and the profile's extras.
-    fn g76_block2(&mut self, block: Block) -> Result<G76Call, ProgramError> {
-        let profile = self.machine.profile.clone();
-        let allowed = format!("GXZUWRPQFIMST{}", profile.block2_extra);
-        self.check_addresses(&block, "G76 block 2", &allowed)?;
+    fn g76_block2<'a>(&mut self, block: Block<'a>) -> Result<G76Call<'a>, ProgramError> {
+        let profile = &self.machine.profile;
+        self.check_addresses(&block, "G76 block 2", "GXZUWRPQFIMST", profile.block2_extra)?;
         let with_line = |mut e: ProgramError| {
             if e.line == 0 {
                 e.line = block.line;
@@ -974,12 +1096,12 @@ impl Reader<'_> {
     }
 }
 
-impl Reader<'_> {
+impl State<'_> {
     /// An angle word of G75.1 (A, B, L) in degrees, to 0.0001 degree; bare
     /// values are degrees ("A45 B30" in the seed's example). Range tables
     /// are checked by [`G75Cycle::validate`]; this refuses only what cannot
     /// be an angle at all.
-    fn g75_angle(&self, block: &Block, w: &Word) -> Result<u32, ProgramError> {
+    fn g75_angle(&self, block: &Block<'_>, w: &Word<'_>) -> Result<u32, ProgramError> {
         let out = || {
             err(
                 block,
@@ -1015,11 +1137,11 @@ impl Reader<'_> {
     }
 
     /// A required length word of G75.1 block 1.
-    fn g75_required<'b>(
-        block: &'b Block,
+    fn g75_required<'b, 'a>(
+        block: &'b Block<'a>,
         letter: char,
         what: &'static str,
-    ) -> Result<&'b Word, ProgramError> {
+    ) -> Result<&'b Word<'a>, ProgramError> {
         block.get(letter)?.ok_or_else(|| {
             err(
                 block,
@@ -1033,7 +1155,7 @@ impl Reader<'_> {
     }
 
     /// G75.1 block 1: `X Z P(Δi) Q(Δk) H(h) D(d) A(∠a) B(∠b) L(∠p)` (seed 001).
-    fn g75_block1(&self, block: &Block) -> Result<G75Block1, ProgramError> {
+    fn g75_block1<'a>(&self, block: &Block<'a>) -> Result<G75Block1, ProgramError> {
         // A block 2 where a block 1 is due (R-G75PAIR): it has block-2 words
         // and none of block 1's required ones.
         let second = ['R', 'V', 'U', 'W', 'I', 'J', 'E'].iter().any(|&c| block.has(c));
@@ -1048,7 +1170,7 @@ impl Reader<'_> {
                 },
             ));
         }
-        self.check_addresses(block, "G75.1 block 1", "GXZPQHDABLMST")?;
+        self.check_addresses(block, "G75.1 block 1", "GXZPQHDABLMST", "")?;
         let (Some(x0), Some(z0)) = (self.x, self.z) else {
             return Err(err(block, None, ErrorKind::PositionUnknown));
         };
@@ -1078,7 +1200,7 @@ impl Reader<'_> {
             }
         };
         Ok(G75Block1 {
-            block: block.clone(),
+            line: block.line,
             from: Point::new(x0, z0),
             start: Point::new(x, z),
             peck,
@@ -1093,8 +1215,8 @@ impl Reader<'_> {
 
     /// G75.1 block 2: `R(e) V(Δv) U(Δu) W(Δw) I(r) J A(r1) B(r2) D(r3) E(r4)
     /// P(a)(b)(d)(e)` (seed 001).
-    fn g75_block2(&mut self, first: G75Block1, block: Block) -> Result<G75Call, ProgramError> {
-        self.check_addresses(&block, "G75.1 block 2", "GRVUWIJABDEPMST")?;
+    fn g75_block2<'a>(&mut self, first: G75Block1, block: Block<'a>) -> Result<G75Call<'a>, ProgramError> {
+        self.check_addresses(&block, "G75.1 block 2", "GRVUWIJABDEPMST", "")?;
         let opt = |letter: char| -> Result<Option<i64>, ProgramError> {
             match block.get(letter)? {
                 Some(w) => self.length(&block, w).map(Some),
@@ -1144,13 +1266,13 @@ impl Reader<'_> {
         let restore = Restore { motion: (self.motion != MotionMode::G00).then(|| self.motion.code()) };
         // Step 10: the tool ends where it was before the cycle.
         self.moved = true;
-        Ok(G75Call { block, params_line: first.block.line, cycle, restore })
+        Ok(G75Call { block, params_line: first.line, cycle, restore })
     }
 
     /// Reading R-G75P: the digits of P(a)(b)(d)(e) are read from the right
     /// (e is the last digit), so leading zeros may be dropped (P11 rounds
     /// D and E); each digit is 0 (chamfer) or 1 (round); omitted: chamfers.
-    fn g75_corner_kinds(&self, block: &Block) -> Result<[CornerKind; 4], ProgramError> {
+    fn g75_corner_kinds(&self, block: &Block<'_>) -> Result<[CornerKind; 4], ProgramError> {
         let mut kinds = [CornerKind::Chamfer; 4];
         let Some(p) = block.get('P')? else {
             return Ok(kinds);
@@ -1183,7 +1305,12 @@ impl Reader<'_> {
 ///
 /// A value outside 0..360°, finer than the unit, or a decimal point where
 /// the profile forbids one.
-pub fn q_word(machine: &Machine, units: Units, block: &Block, w: &Word) -> Result<StartAngle, ProgramError> {
+pub fn q_word(
+    machine: &Machine,
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+) -> Result<StartAngle, ProgramError> {
     let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
     let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
     if w.number.negative {

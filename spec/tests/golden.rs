@@ -39,7 +39,8 @@ fn render(moves: &[Move], decimals: u32) -> Vec<String> {
 }
 
 fn expand_example(name: &str, machine: &Machine) -> Vec<Move> {
-    let program = read(&example(name), machine).expect("reads");
+    let text = example(name);
+    let program = read(&text, machine).expect("reads");
     let call = program.cycles().next().expect("one G76");
     cycleref_spec::g76::expand(&call.cycle).expect("expands")
 }

@@ -1,0 +1,232 @@
+//! The `cycleref-moves/1` document as typed values that serialize straight
+//! into a writer (the `json` and `jsonl` output contracts in the README).
+//!
+//! Every document of moves is written from these types: `expand --format
+//! json` and `jsonl`, and the expected moves of `vectors`. Fields are in
+//! the contract's order; the moves of a cycle are taken from the engine as
+//! they are written, so a cycle of a million moves costs no memory here.
+
+use std::cell::RefCell;
+
+use cycleref::{InputUnit, Motion, Move, Point, Role, Units};
+use cycleref_spec::pipeline::{Cycle, Moves};
+use serde::ser::{Serialize, SerializeSeq, Serializer};
+
+use crate::format::{flank_name, kind_name, plunge_of, role_name, Fixed, LeadText};
+
+/// `{"unit": "mm", "decimals": 3}`.
+#[derive(serde::Serialize)]
+pub struct UnitsJson {
+    unit: &'static str,
+    decimals: u32,
+}
+
+impl UnitsJson {
+    /// The units' description.
+    #[must_use]
+    pub fn new(u: Units) -> UnitsJson {
+        UnitsJson {
+            unit: match u.unit {
+                InputUnit::Metric => "mm",
+                InputUnit::Inch => "inch",
+            },
+            decimals: u.decimals(),
+        }
+    }
+}
+
+/// `{"x": "…", "z": "…"}`.
+#[derive(serde::Serialize)]
+struct PointJson {
+    x: Fixed,
+    z: Fixed,
+}
+
+impl PointJson {
+    fn new(p: Point, u: Units) -> PointJson {
+        PointJson { x: Fixed::new(p.x, u), z: Fixed::new(p.z, u) }
+    }
+}
+
+#[derive(serde::Serialize)]
+struct AngleJson {
+    num: u32,
+    den: u32,
+}
+
+#[derive(serde::Serialize)]
+struct PassJson {
+    kind: &'static str,
+    number: u32,
+    start: u16,
+    depth: Fixed,
+    cut: Fixed,
+    flank: &'static str,
+}
+
+#[derive(serde::Serialize)]
+struct PlungeJson {
+    layer: u32,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    number: Option<u32>,
+}
+
+/// One move (the `json` contract's move object).
+#[derive(serde::Serialize)]
+pub struct MoveJson {
+    motion: &'static str,
+    x: Fixed,
+    z: Fixed,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    centre: Option<PointJson>,
+    role: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lead: Option<LeadText>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    start_angle_millidegrees: Option<AngleJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sync: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pass: Option<PassJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    plunge: Option<PlungeJson>,
+}
+
+impl MoveJson {
+    /// The JSON form of `m`.
+    #[must_use]
+    pub fn new(m: &Move, u: Units) -> MoveJson {
+        let (motion, centre, lead, angle, sync) = match m.motion {
+            Motion::Rapid => ("rapid", None, None, None, None),
+            Motion::Feed => ("feed", None, None, None, None),
+            Motion::Thread { lead, start_angle, sync } => (
+                "thread",
+                None,
+                Some(LeadText(lead)),
+                Some(AngleJson { num: start_angle.num, den: start_angle.den }),
+                Some(sync),
+            ),
+            Motion::Arc { centre, clockwise } => (
+                if clockwise { "arc-cw" } else { "arc-ccw" },
+                Some(PointJson::new(centre, u)),
+                None,
+                None,
+                None,
+            ),
+        };
+        let plunge = match m.role {
+            Role::LayerChange(l) => Some(PlungeJson { layer: l, number: None }),
+            r => plunge_of(r).map(|p| PlungeJson { layer: p.layer, number: Some(p.number) }),
+        };
+        MoveJson {
+            motion,
+            x: Fixed::new(m.to.x, u),
+            z: Fixed::new(m.to.z, u),
+            centre,
+            role: role_name(m.role),
+            lead,
+            start_angle_millidegrees: angle,
+            sync,
+            pass: m.pass.map(|p| PassJson {
+                kind: kind_name(p.kind),
+                number: p.number,
+                start: p.start,
+                depth: Fixed::new(p.depth, u),
+                cut: Fixed::new(p.cut, u),
+                flank: flank_name(p.flank),
+            }),
+            plunge,
+        }
+    }
+}
+
+/// The moves of a cycle, serialized as they are taken from the engine.
+/// It serializes once: the moves are consumed.
+pub struct MovesJson {
+    moves: RefCell<Option<Moves>>,
+    units: Units,
+}
+
+impl Serialize for MovesJson {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut seq = s.serialize_seq(None)?;
+        if let Some(moves) = self.moves.borrow_mut().take() {
+            for m in moves {
+                seq.serialize_element(&MoveJson::new(&m, self.units))?;
+            }
+        }
+        seq.end()
+    }
+}
+
+/// One cycle with its moves (the `json` contract's cycle object).
+#[derive(serde::Serialize)]
+pub struct CycleJson {
+    cycle: &'static str,
+    line: usize,
+    /// G76: the line of block 1 or null; G75.1: block 1's line; G32: absent.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    params_line: Option<Option<usize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    from: Option<PointJson>,
+    start: PointJson,
+    moves: MovesJson,
+}
+
+impl CycleJson {
+    /// The JSON form of `cycle`, whose moves are `moves`.
+    #[must_use]
+    pub fn new(cycle: Cycle<'_, '_>, moves: Moves) -> CycleJson {
+        let u = cycle.units();
+        let (params_line, from, start) = match cycle {
+            Cycle::G76(c) => (Some(c.params_line), None, c.cycle.start),
+            Cycle::G32(c) => (None, None, c.g32.start),
+            Cycle::G75(c) => {
+                (Some(Some(c.params_line)), Some(PointJson::new(c.cycle.from, u)), c.cycle.start)
+            }
+        };
+        CycleJson {
+            cycle: cycle.code(),
+            line: cycle.line(),
+            params_line,
+            from,
+            start: PointJson::new(start, u),
+            moves: MovesJson { moves: RefCell::new(Some(moves)), units: u },
+        }
+    }
+}
+
+/// A sequence serialized from an iterator of serializable values, taken
+/// as they are written. It serializes once.
+pub struct StreamSeq<I>(pub RefCell<Option<I>>);
+
+impl<I, T, E> Serialize for StreamSeq<I>
+where
+    I: Iterator<Item = Result<T, E>>,
+    T: Serialize,
+    E: std::fmt::Display,
+{
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut seq = s.serialize_seq(None)?;
+        if let Some(items) = self.0.borrow_mut().take() {
+            for item in items {
+                let item = item.map_err(serde::ser::Error::custom)?;
+                seq.serialize_element(&item)?;
+            }
+        }
+        seq.end()
+    }
+}
+
+/// The `cycleref-moves/1` document.
+#[derive(serde::Serialize)]
+pub struct MovesDocument<'n, C> {
+    /// Always `cycleref-moves/1`.
+    pub format: &'static str,
+    /// The program's name.
+    pub file: &'n str,
+    /// The units of every length.
+    pub units: UnitsJson,
+    /// The cycles.
+    pub cycles: C,
+}

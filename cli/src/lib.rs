@@ -1,0 +1,35 @@
+//! The library under the `cycleref` command.
+//!
+//! Data flows one way: the program's bytes ([`Job`]) → the reader
+//! ([`cycleref_spec::Reader`]) → each cycle expanded by the chosen engine
+//! ([`cycleref_spec::pipeline`]) → a writer. The modules:
+//!
+//! * [`job`]: the program, its machine (profile, parameter file, options)
+//!   and the failures a command can end in;
+//! * [`output`]: the streaming writers of `expand` (nc, json, jsonl) and
+//!   `passes`;
+//! * [`json`]: the typed `cycleref-moves/1` documents, serialized straight
+//!   into the writer;
+//! * [`format`]: the text forms of lengths, leads, angles and names;
+//! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
+//! * [`plot`] and `plot_g75`: `plot`, the SVG drawing;
+//! * [`vectors`]: the generator of conformance vectors.
+//!
+//! Every command is a function of this library; the binary parses the
+//! arguments and maps the outcome to an exit status: 0 success (and, for
+//! `check`, agreement), 1 `check` found a difference, 2 an error. A closed
+//! output pipe ends a command quietly with status 0.
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod check;
+pub mod format;
+pub mod job;
+pub mod json;
+pub mod output;
+pub mod plot;
+mod plot_g75;
+pub mod vectors;
+
+pub use job::{Failure, Job, Options, Profile};
+pub use output::Format;

@@ -1,0 +1,438 @@
+//! The streaming writers of `expand` (nc, json, jsonl) and `passes`.
+//!
+//! Each writer is the second phase of a run (reading R-STREAM): the
+//! program was read and every cycle checked by [`Job::validate`], so the
+//! writer reads the program again and writes each block or move as it
+//! comes, through one buffered writer. Memory is that of the reader and of
+//! one cycle's engine, whatever the program's length. A failure while
+//! writing is returned as it is; the caller decides what a closed pipe
+//! means.
+
+use std::cell::RefCell;
+use std::io::{self, Write};
+
+use cycleref::{Motion, Move, PassKind, PathType, Point, Role, Units};
+use cycleref_spec::pipeline::{Cycle, Moves};
+use cycleref_spec::profile::QUnit;
+use cycleref_spec::reader::{G75Call, G76Call, Item, Restore};
+
+use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText};
+use crate::job::{Failure, Job};
+use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
+
+/// The format of `expand`'s output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// The program with each cycle replaced by plain blocks.
+    Nc,
+    /// One `cycleref-moves/1` document.
+    Json,
+    /// One JSON object per cycle per line, then a summary line.
+    Jsonl,
+}
+
+/// Writes `job`'s expansion in `format` to `out`: first the whole program
+/// is read and checked, then the output is streamed.
+///
+/// # Errors
+///
+/// The program's first error (nothing written), or a failure to write.
+pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure> {
+    let summary = job.validate()?;
+    let mut out = io::BufWriter::with_capacity(1 << 16, out);
+    let written = match format {
+        Format::Nc => nc(job, &mut out),
+        Format::Json => json(job, summary.units, &mut out),
+        Format::Jsonl => jsonl(job, summary.units, &mut out),
+    };
+    written.and_then(|()| out.flush()).map_err(|e| Failure::output(&e))
+}
+
+/// A reader error in the second phase: the first phase read the same
+/// program without one, so this cannot happen; it is reported, never
+/// ignored.
+fn phase_two(e: impl std::fmt::Display) -> io::Error {
+    io::Error::other(format!("the program read differently the second time: {e}"))
+}
+
+/// The moves of `cycle`, which the first phase expanded without alarm.
+fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
+    job.expand(cycle).map_err(|f| match f {
+        Failure::Message(m) => phase_two(m),
+        Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
+    })
+}
+
+fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    for item in job.reader() {
+        let item = item.map_err(phase_two)?;
+        match &item {
+            Item::Source(b) => {
+                out.write_all(&b.text)?;
+                out.write_all(b"\n")?;
+            }
+            Item::G76Params(_) | Item::G75Params(_) => {}
+            Item::G76(call) => nc_g76(out, call, moves(job, Cycle::G76(call))?, job.q_unit)?,
+            Item::G32(call) => {
+                for m in moves(job, Cycle::G32(call))? {
+                    nc_move(out, &m, call.g32.units, job.q_unit)?;
+                }
+            }
+            Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
+        }
+    }
+    Ok(())
+}
+
+/// The NC blocks of one G76 cycle: a heading, a comment before each pass
+/// and start, the moves (the `nc` format contract, in the README).
+fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> io::Result<()> {
+    let u = call.cycle.units;
+    // The heading counts the rough passes: a first look at the moves (the
+    // engine's iterator is a few hundred bytes; the reference's, one
+    // cycle's moves).
+    let rough = moves.clone().filter_map(|m| m.pass).filter(|p| p.kind == PassKind::Rough);
+    let rough_passes = rough.map(|p| p.number).max().unwrap_or(0);
+    let starts = call.cycle.starts;
+    writeln!(
+        out,
+        "(G76 line {}: {} rough + {} finish passes x {} start{})",
+        call.block.line,
+        rough_passes,
+        call.cycle.finishing_passes,
+        starts,
+        if starts == 1 { "" } else { "s" }
+    )?;
+    let mut current = None;
+    for m in moves {
+        if let Some(p) = m.pass {
+            let key = (p.kind, p.number, p.start);
+            if current != Some(key) {
+                current = Some(key);
+                writeln!(
+                    out,
+                    "({} {} start {} depth {} cut {})",
+                    kind_name(p.kind),
+                    p.number,
+                    p.start,
+                    Fixed::new(p.depth, u),
+                    Fixed::new(p.cut, u)
+                )?;
+            }
+        }
+        nc_move(out, &m, u, q)?;
+    }
+    restore(out, call.restore)
+}
+
+/// The NC blocks of one G75.1 cycle: a heading, a comment per layer and
+/// plunge and before each contour, the moves.
+fn nc_g75<W: Write>(out: &mut W, call: &G75Call<'_>, moves: Moves) -> io::Result<()> {
+    let c = &call.cycle;
+    let u = c.units;
+    let (mut layers, mut plunges) = (0, 0);
+    for m in moves.clone() {
+        if let Some(p) = crate::format::plunge_of(m.role) {
+            layers = layers.max(p.layer);
+        }
+        plunges += usize::from(matches!(m.role, Role::PlungeRetract(_)));
+    }
+    let path = match c.path {
+        PathType::Rough => "J0 rough",
+        PathType::RoughAndFinish => "J1 rough + finish",
+        PathType::Finish => "J2 finish",
+    };
+    write!(
+        out,
+        "(G75.1 lines {}-{}: {path}, {layers} layer{} {plunges} plunge{}, tool ",
+        call.params_line,
+        call.block.line,
+        if layers == 1 { "," } else { "s," },
+        if plunges == 1 { "" } else { "s" },
+    )?;
+    match c.tool_width {
+        Some(w) => writeln!(out, "width I{})", Fixed::new(w, u))?,
+        None => writeln!(out, "pointed)")?,
+    }
+    let mut current = None;
+    let mut contour = None;
+    let mut at = c.from;
+    for m in moves {
+        if let Role::Peck(p) = m.role {
+            if current != Some(p) {
+                current = Some(p);
+                writeln!(out, "(layer {} plunge {})", p.layer, p.number)?;
+            }
+        }
+        let name = match m.role {
+            Role::RoughContour => Some("rough contour"),
+            Role::FinishContour => Some("finishing contour"),
+            _ => None,
+        };
+        if let Some(n) = name.filter(|_| name != contour) {
+            writeln!(out, "({n})")?;
+        }
+        contour = name;
+        nc_groove_move(out, &m, at, c.x_mode.factor(), u)?;
+        at = m.to;
+    }
+    restore(out, call.restore)
+}
+
+/// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
+fn nc_groove_move<W: Write>(out: &mut W, m: &Move, from: Point, x_factor: i64, u: Units) -> io::Result<()> {
+    if let Motion::Arc { centre, clockwise } = m.motion {
+        let (i, k) = arc_ik(from, centre, x_factor, u);
+        let g = if clockwise { "G02" } else { "G03" };
+        writeln!(out, "{g} X{} Z{} I{i} K{k}", Fixed::new(m.to.x, u), Fixed::new(m.to.z, u))
+    } else {
+        nc_move(out, m, u, QUnit::Millidegrees { no_point: true })
+    }
+}
+
+/// One move as an NC block.
+fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
+    let (x, z) = (Fixed::new(m.to.x, u), Fixed::new(m.to.z, u));
+    match m.motion {
+        Motion::Rapid => writeln!(out, "G00 X{x} Z{z}"),
+        Motion::Feed => writeln!(out, "G01 X{x} Z{z}"),
+        Motion::Thread { lead, start_angle, sync } => {
+            write!(out, "G32 X{x} Z{z} {}", LeadText(lead))?;
+            // Q only where synchronisation starts: on a continuation block
+            // the control ignores it (seed 002, Q rule 2).
+            if sync && !start_angle.is_zero() {
+                write!(out, " Q{}", q_word(start_angle, u, q))?;
+            }
+            out.write_all(b"\n")
+        }
+        Motion::Arc { centre, clockwise } => {
+            // Without the start point the centre is written absolute.
+            let g = if clockwise { "G02" } else { "G03" };
+            writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", Fixed::new(centre.x, u), Fixed::new(centre.z, u))
+        }
+    }
+}
+
+fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
+    match r.motion {
+        Some(g) => writeln!(out, "{g}"),
+        None => Ok(()),
+    }
+}
+
+/// The cycles of `job`, each with its moves, as they are read.
+fn cycle_documents(job: &Job) -> impl Iterator<Item = io::Result<CycleJson>> + '_ {
+    job.reader().filter_map(move |item| match item {
+        Err(e) => Some(Err(phase_two(e))),
+        Ok(item) => Cycle::of(&item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))),
+    })
+}
+
+fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
+    let doc = MovesDocument {
+        format: "cycleref-moves/1",
+        file: &job.name,
+        units: UnitsJson::new(units),
+        cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)))),
+    };
+    let mut ser = serde_json::Serializer::pretty(&mut *out);
+    serde::Serialize::serialize(&doc, &mut ser).map_err(io::Error::from)?;
+    out.write_all(b"\n")
+}
+
+/// The summary line of the jsonl format.
+#[derive(serde::Serialize)]
+struct JsonlSummary<'n> {
+    format: &'static str,
+    file: &'n str,
+    units: UnitsJson,
+    cycles: usize,
+    moves: u64,
+}
+
+fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
+    let (mut cycles, mut moves_total) = (0, 0_u64);
+    for item in job.reader() {
+        let item = item.map_err(phase_two)?;
+        let Some(c) = Cycle::of(&item) else { continue };
+        let m = moves(job, c)?;
+        // Counted on a copy of the iterator: the summary line is exact.
+        moves_total += m.clone().count() as u64;
+        cycles += 1;
+        serde_json::to_writer(&mut *out, &CycleJson::new(c, m)).map_err(io::Error::from)?;
+        out.write_all(b"\n")?;
+    }
+    let summary = JsonlSummary {
+        format: "cycleref-moves-jsonl/1",
+        file: &job.name,
+        units: UnitsJson::new(units),
+        cycles,
+        moves: moves_total,
+    };
+    serde_json::to_writer(&mut *out, &summary).map_err(io::Error::from)?;
+    out.write_all(b"\n")
+}
+
+/// Writes the pass tables of `job`: every G76 cycle, then every G75.1
+/// cycle, then one table of the G32 blocks (each a pass over the program).
+///
+/// # Errors
+///
+/// The program's first error (nothing written), or a failure to write.
+pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
+    job.validate()?;
+    let mut out = io::BufWriter::with_capacity(1 << 16, out);
+    let written = g76_tables(job, &mut out)
+        .and_then(|()| groove_tables(job, &mut out))
+        .and_then(|()| thread_table(job, &mut out))
+        .and_then(|()| out.flush());
+    written.map_err(|e| Failure::output(&e))
+}
+
+const PASS_ROW: [&str; 8] = ["pass", "kind", "start", "flank", "depth", "cut", "X", "Z"];
+
+fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    for item in job.reader() {
+        let item = item.map_err(phase_two)?;
+        let Item::G76(call) = &item else { continue };
+        let u = call.cycle.units;
+        writeln!(out, "G76 at line {} ({}):", call.block.line, job.name)?;
+        let [a, b, c, d, e, f, g, h] = PASS_ROW;
+        writeln!(out, "{a:>6} {b:>6} {c:>5} {d:>6} {e:>12} {f:>12} {g:>14} {h:>14}")?;
+        let mut moves = moves(job, Cycle::G76(call))?.peekable();
+        while let Some(m) = moves.next() {
+            if m.role != Role::Approach {
+                continue;
+            }
+            let Some(p) = m.pass else { continue };
+            // The pass start Bn is where the approach ends, unless a
+            // lead-in of the same pass follows: then where that ends.
+            let bn =
+                moves.peek().filter(|n| n.role == Role::LeadIn && n.pass == Some(p)).map_or(m.to, |n| n.to);
+            writeln!(
+                out,
+                "{:>6} {:>6} {:>5} {:>6} {:>12} {:>12} {:>14} {:>14}",
+                p.number,
+                kind_name(p.kind),
+                p.start,
+                flank_name(p.flank),
+                Fixed::new(p.depth, u).to_string(),
+                Fixed::new(p.cut, u).to_string(),
+                Fixed::new(bn.x, u).to_string(),
+                Fixed::new(bn.z, u).to_string()
+            )?;
+        }
+        out.write_all(b"\n")?;
+    }
+    Ok(())
+}
+
+/// The layers and plunges of each G75.1 cycle: one row per plunge with its
+/// Z, the X it starts from (Amn), the X it reaches (Bmn) and its pecks.
+fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    for item in job.reader() {
+        let item = item.map_err(phase_two)?;
+        let Item::G75(call) = &item else { continue };
+        let u = call.cycle.units;
+        writeln!(out, "G75.1 at lines {}-{} ({}):", call.params_line, call.block.line, job.name)?;
+        writeln!(
+            out,
+            "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+            "layer", "plunge", "Z", "from X (Amn)", "to X (Bmn)", "pecks"
+        )?;
+        let row = |out: &mut W, r: &Option<(cycleref::Plunge, Point, Point, u32)>| -> io::Result<()> {
+            if let Some((p, start, bottom, pecks)) = r {
+                writeln!(
+                    out,
+                    "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+                    p.layer,
+                    p.number,
+                    Fixed::new(start.z, u).to_string(),
+                    Fixed::new(start.x, u).to_string(),
+                    Fixed::new(bottom.x, u).to_string(),
+                    pecks
+                )?;
+            }
+            Ok(())
+        };
+        let mut at = call.cycle.from;
+        let mut current: Option<(cycleref::Plunge, Point, Point, u32)> = None;
+        let (mut rough, mut finish) = (0, 0);
+        for m in moves(job, Cycle::G75(call))? {
+            if let Role::Peck(p) = m.role {
+                match &mut current {
+                    Some((q, _, bottom, pecks)) if *q == p => {
+                        *bottom = m.to;
+                        *pecks += 1;
+                    }
+                    _ => {
+                        row(out, &current)?;
+                        current = Some((p, at, m.to, 1));
+                    }
+                }
+            }
+            if m.motion != Motion::Rapid {
+                rough += usize::from(m.role == Role::RoughContour);
+                finish += usize::from(m.role == Role::FinishContour);
+            }
+            at = m.to;
+        }
+        row(out, &current)?;
+        if rough > 0 {
+            writeln!(out, "rough contour (step 9): {rough} cutting moves")?;
+        }
+        if finish > 0 {
+            writeln!(out, "finishing contour (step 10): {finish} cutting moves")?;
+        }
+        out.write_all(b"\n")?;
+    }
+    Ok(())
+}
+
+/// One table of the program's G32 blocks: synchronisation, where the cut
+/// ends and where the run-out ends.
+fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    let mut any = false;
+    for item in job.reader() {
+        let item = item.map_err(phase_two)?;
+        let Item::G32(call) = &item else { continue };
+        if !any {
+            any = true;
+            writeln!(out, "G32 blocks ({}):", job.name)?;
+            writeln!(
+                out,
+                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+                "line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"
+            )?;
+        }
+        let u = call.g32.units;
+        let (mut cut, mut run_out) = (None, None);
+        for m in moves(job, Cycle::G32(call))? {
+            match m.role {
+                Role::Cut if cut.is_none() => cut = Some(m.to),
+                Role::RunOut if run_out.is_none() => run_out = Some(m.to),
+                _ => {}
+            }
+        }
+        let cut = cut.unwrap_or(call.g32.start);
+        let (rx, rz) = run_out.map_or(("-".into(), "-".into()), |p: Point| {
+            (Fixed::new(p.x, u).to_string(), Fixed::new(p.z, u).to_string())
+        });
+        writeln!(
+            out,
+            "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+            call.block.line,
+            if call.g32.sync { "yes" } else { "no" },
+            Fixed::new(call.g32.start.x, u).to_string(),
+            Fixed::new(call.g32.start.z, u).to_string(),
+            Fixed::new(cut.x, u).to_string(),
+            Fixed::new(cut.z, u).to_string(),
+            rx,
+            rz
+        )?;
+    }
+    if any {
+        out.write_all(b"\n")?;
+    }
+    Ok(())
+}

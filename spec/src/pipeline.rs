@@ -1,0 +1,265 @@
+//! One way to run a program: read it, and expand each of its cycles with a
+//! chosen engine.
+//!
+//! Every consumer (the command's writers, `passes`, `plot`, `check`,
+//! `vectors`, the C interface) goes through [`Cycle`] and [`expand`]: a new
+//! cycle adds one variant here, one front end in the [reader](crate::reader),
+//! one engine, one reference and one formatter entry, nothing else.
+//!
+//! Data flows one way: text → [`Reader`] → [`Item`] → [`Cycle`] →
+//! [`expand`] → [`Moves`]. Nothing here holds more than one cycle: the
+//! engine's moves are computed as they are taken; the reference model's
+//! (exact decimals, written for clarity, not speed) are those of one cycle.
+
+use std::fmt;
+
+use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, Move, Point, Units};
+
+use crate::error::ProgramError;
+use crate::profile::Machine;
+use crate::reader::{G32Call, G75Call, G76Call, Item, Reader, Restore};
+
+/// Which model expands the cycles. Both give the same moves, move by move.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Engine {
+    /// The fixed-point engine of the `cycleref` crate: integers, no heap,
+    /// moves computed one at a time.
+    #[default]
+    Impl,
+    /// The exact-decimal reference model of this crate: the authority.
+    Spec,
+}
+
+/// A cycle of a program, borrowed from the item the reader produced.
+#[derive(Clone, Copy, Debug)]
+pub enum Cycle<'r, 'a> {
+    /// A G76 multiple thread-cutting cycle.
+    G76(&'r G76Call<'a>),
+    /// A G32 thread-cutting block.
+    G32(&'r G32Call<'a>),
+    /// A G75.1 groove cycle.
+    G75(&'r G75Call<'a>),
+}
+
+impl<'r, 'a> Cycle<'r, 'a> {
+    /// The cycle an item calls, if it calls one.
+    #[must_use]
+    pub fn of(item: &'r Item<'a>) -> Option<Cycle<'r, 'a>> {
+        match item {
+            Item::G76(c) => Some(Cycle::G76(c)),
+            Item::G32(c) => Some(Cycle::G32(c)),
+            Item::G75(c) => Some(Cycle::G75(c)),
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => None,
+        }
+    }
+
+    /// The G code, as the manuals write it (`G76`, `G32`, `G75.1`).
+    #[must_use]
+    pub fn code(self) -> &'static str {
+        match self {
+            Cycle::G76(_) => "G76",
+            Cycle::G32(_) => "G32",
+            Cycle::G75(_) => "G75.1",
+        }
+    }
+
+    /// The line of the block that runs the cycle (G76 and G75.1: block 2).
+    #[must_use]
+    pub fn line(self) -> usize {
+        match self {
+            Cycle::G76(c) => c.block.line,
+            Cycle::G32(c) => c.block.line,
+            Cycle::G75(c) => c.block.line,
+        }
+    }
+
+    /// The units of the cycle's lengths.
+    #[must_use]
+    pub fn units(self) -> Units {
+        match self {
+            Cycle::G76(c) => c.cycle.units,
+            Cycle::G32(c) => c.g32.units,
+            Cycle::G75(c) => c.cycle.units,
+        }
+    }
+
+    /// Where the tool is when the cycle starts.
+    #[must_use]
+    pub fn from(self) -> Point {
+        match self {
+            Cycle::G76(c) => c.cycle.start,
+            Cycle::G32(c) => c.g32.start,
+            Cycle::G75(c) => c.cycle.from,
+        }
+    }
+
+    /// The modal state to program after the cycle's moves (G76 and G75.1
+    /// are one-shot codes whose expansion ends in G00).
+    #[must_use]
+    pub fn restore(self) -> Restore {
+        match self {
+            Cycle::G76(c) => c.restore,
+            Cycle::G75(c) => c.restore,
+            Cycle::G32(_) => Restore::default(),
+        }
+    }
+}
+
+/// The moves of one cycle, in order.
+#[derive(Clone, Debug)]
+pub struct Moves(Inner);
+
+// Unboxed on purpose: one cycle's iterator lives on the stack, taken move by
+// move in the hot loop (G75.1's, the largest, is boxed).
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug)]
+enum Inner {
+    G76(G76Moves),
+    G32(G32Moves),
+    G75(Box<G75Moves>),
+    Reference(std::vec::IntoIter<Move>),
+}
+
+impl Iterator for Moves {
+    type Item = Move;
+
+    #[inline]
+    fn next(&mut self) -> Option<Move> {
+        match &mut self.0 {
+            Inner::G76(m) => m.next(),
+            Inner::G32(m) => m.next(),
+            Inner::G75(m) => m.next(),
+            Inner::Reference(m) => m.next(),
+        }
+    }
+}
+
+/// The moves of `cycle` by `engine`.
+///
+/// Every alarm is raised here, before the first move: taking the moves
+/// cannot fail.
+///
+/// # Errors
+///
+/// The cycle's alarm ([`CycleError`]); both engines raise the same one.
+///
+/// ```
+/// use cycleref_spec::pipeline::{expand, Cycle, Engine};
+/// use cycleref_spec::{read, Machine, ProfileName};
+///
+/// let text = "M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+/// let program = read(text, &Machine::new(ProfileName::Gsk988))?;
+/// let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+/// let ours: Vec<_> = expand(cycle, Engine::Impl)?.collect();
+/// let reference: Vec<_> = expand(cycle, Engine::Spec)?.collect();
+/// assert_eq!(ours, reference);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError> {
+    let inner = match (engine, cycle) {
+        (Engine::Impl, Cycle::G76(c)) => Inner::G76(cycleref::expand_g76(&c.cycle)?),
+        (Engine::Impl, Cycle::G32(c)) => Inner::G32(cycleref::expand_g32(&c.g32)?),
+        (Engine::Impl, Cycle::G75(c)) => Inner::G75(Box::new(cycleref::expand_g75(&c.cycle)?)),
+        (Engine::Spec, Cycle::G76(c)) => Inner::Reference(crate::g76::expand(&c.cycle)?.into_iter()),
+        (Engine::Spec, Cycle::G32(c)) => Inner::Reference(crate::g32::expand(&c.g32)?.into_iter()),
+        (Engine::Spec, Cycle::G75(c)) => Inner::Reference(crate::g75::expand(&c.cycle)?.into_iter()),
+    };
+    Ok(Moves(inner))
+}
+
+/// Why a program cannot be expanded: the reader refused a block, or a
+/// cycle raised its alarm.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum RunError {
+    /// The reader's error (its line, word and rule).
+    Program(ProgramError),
+    /// A cycle's alarm while it was expanded.
+    Cycle {
+        /// The line of the block that runs the cycle.
+        line: usize,
+        /// The cycle's G code.
+        code: &'static str,
+        /// The alarm.
+        error: CycleError,
+    },
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Program(e) => write!(f, "{e}"),
+            RunError::Cycle { line, code, error } => write!(f, "line {line}, {code}: {error}"),
+        }
+    }
+}
+
+impl std::error::Error for RunError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            RunError::Program(e) => Some(e),
+            RunError::Cycle { error, .. } => Some(error),
+        }
+    }
+}
+
+impl From<ProgramError> for RunError {
+    fn from(e: ProgramError) -> RunError {
+        RunError::Program(e)
+    }
+}
+
+/// The moves of `cycle` by `engine`, its alarm named with its line.
+///
+/// # Errors
+///
+/// [`RunError::Cycle`].
+pub fn expand_at(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, RunError> {
+    expand(cycle, engine).map_err(|error| RunError::Cycle { line: cycle.line(), code: cycle.code(), error })
+}
+
+/// What the first phase learnt of a program that reads and expands
+/// without error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Summary {
+    /// The units in force for the cycles.
+    pub units: Units,
+    /// The number of items (blocks and cycles).
+    pub items: usize,
+    /// The number of cycles.
+    pub cycles: usize,
+    /// The number of moves of all cycles.
+    pub moves: u64,
+}
+
+/// The first phase of a run (reading R-STREAM): reads every item of
+/// `source` and expands every cycle with `engine`, keeping nothing but
+/// counts, so that the second phase can stream its output knowing that no
+/// error will interrupt it.
+///
+/// `count_moves` also takes every move (the engine's cost per move); without
+/// it `moves` is 0 and only the alarms are checked.
+///
+/// # Errors
+///
+/// The first error in program order.
+pub fn validate(
+    source: &[u8],
+    machine: &Machine,
+    engine: Engine,
+    count_moves: bool,
+) -> Result<Summary, RunError> {
+    let mut reader = Reader::new(source, machine);
+    let (mut items, mut cycles, mut moves) = (0, 0, 0_u64);
+    for item in reader.by_ref() {
+        let item = item?;
+        items += 1;
+        if let Some(cycle) = Cycle::of(&item) {
+            cycles += 1;
+            let m = expand_at(cycle, engine)?;
+            if count_moves {
+                moves += m.count() as u64;
+            }
+        }
+    }
+    Ok(Summary { units: reader.units(), items, cycles, moves })
+}
