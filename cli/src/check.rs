@@ -117,9 +117,9 @@ impl<'m> Tracker<'m> {
             if let Some(w) = b.get(letter)? {
                 // I is an arc centre outside G32; F is shared with the feed.
                 if letter == 'F' || self.motion == Kind::Thread {
-                    let frac = w.number.frac_digits.unwrap_or_default();
+                    let frac = w.number.frac_digits().unwrap_or_default();
                     let frac = frac.trim_end_matches('0');
-                    let digits = format!("{}{frac}", w.number.int_digits);
+                    let digits = format!("{}{frac}", w.number.int_digits());
                     let mantissa = digits.trim_start_matches('0').parse().unwrap_or(0);
                     let word = if letter == 'F' { LeadWord::F } else { LeadWord::I };
                     self.lead = Some(Lead { word, mantissa, scale: u32::try_from(frac.len()).unwrap_or(0) });
@@ -263,14 +263,16 @@ fn theirs_nc(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, S
             {
                 return Err(format!(
                     "line {}: `{}`: a trace holds plain G00/G01/G02/G03/G32 blocks, not canned cycles",
-                    b.line, w.text
+                    b.line,
+                    w.text()
                 ));
             }
             let g32_here = b.all('G').any(|g| g.number.integer() == Some(32));
             if (w.letter == 'J' || w.letter == 'K') && (t.motion == Kind::Thread || g32_here) {
                 return Err(format!(
                     "line {}: `{}`: a trace holds plain moves; write the run-out as its own block",
-                    b.line, w.text
+                    b.line,
+                    w.text()
                 ));
             }
         }

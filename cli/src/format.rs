@@ -13,11 +13,44 @@ pub fn fixed(v: i64, units: Units) -> String {
 }
 
 /// A length in increments, displayed as a decimal with the increment's
-/// number of decimals (`64.400`), without an allocation.
+/// number of decimals (`64.400`), without an allocation. Width and
+/// alignment flags apply (`{:>12}`).
 #[derive(Clone, Copy, Debug)]
 pub struct Fixed {
     value: i64,
     decimals: u32,
+}
+
+/// Room for any number [`encode_fixed`] writes: 20 digits, a point and a
+/// sign, with decimals up to 40.
+pub const FIXED_BUF: usize = 64;
+
+/// `mag / 10^decimals` as text, with a leading `-` when `negative`, written
+/// at the end of `buf`; the text is returned. `decimals` is at most 40.
+pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mut mag: u64, decimals: u32) -> &[u8] {
+    let mut i = FIXED_BUF;
+    for _ in 0..decimals.min(40) {
+        i -= 1;
+        buf[i] = b'0' + (mag % 10) as u8;
+        mag /= 10;
+    }
+    if decimals > 0 {
+        i -= 1;
+        buf[i] = b'.';
+    }
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (mag % 10) as u8;
+        mag /= 10;
+        if mag == 0 {
+            break;
+        }
+    }
+    if negative {
+        i -= 1;
+        buf[i] = b'-';
+    }
+    &buf[i..]
 }
 
 impl Fixed {
@@ -26,17 +59,24 @@ impl Fixed {
     pub fn new(value: i64, units: Units) -> Fixed {
         Fixed { value, decimals: units.decimals() }
     }
+
+    /// The text, written into `buf`.
+    pub fn encode(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        encode_fixed(buf, self.value < 0, self.value.unsigned_abs(), self.decimals)
+    }
 }
 
 impl fmt::Display for Fixed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write_fixed(f, i128::from(self.value), self.decimals)
+        let mut buf = [0; FIXED_BUF];
+        f.pad(std::str::from_utf8(self.encode(&mut buf)).map_err(|_| fmt::Error)?)
     }
 }
 
 impl serde::Serialize for Fixed {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_str(self)
+        let mut buf = [0; FIXED_BUF];
+        s.serialize_str(std::str::from_utf8(self.encode(&mut buf)).map_err(serde::ser::Error::custom)?)
     }
 }
 
@@ -45,26 +85,43 @@ impl serde::Serialize for Fixed {
 #[derive(Clone, Copy, Debug)]
 pub struct LeadText(pub cycleref::Lead);
 
+impl LeadText {
+    /// The text, written into `buf`.
+    pub fn encode(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        let lead = self.0;
+        // Always with a decimal point: on FANUC a bare value may be read in
+        // other units. Room for ".0" and the letter is kept at the end.
+        let len = {
+            let text = encode_fixed(buf, false, lead.mantissa, lead.scale);
+            text.len()
+        };
+        let mut start = FIXED_BUF - len;
+        if lead.scale == 0 {
+            buf.copy_within(start.., start - 2);
+            buf[FIXED_BUF - 2] = b'.';
+            buf[FIXED_BUF - 1] = b'0';
+            start -= 2;
+        }
+        start -= 1;
+        buf[start] = match lead.word {
+            LeadWord::F => b'F',
+            LeadWord::I => b'I',
+        };
+        &buf[start..]
+    }
+}
+
 impl fmt::Display for LeadText {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let lead = self.0;
-        f.write_str(match lead.word {
-            LeadWord::F => "F",
-            LeadWord::I => "I",
-        })?;
-        write_fixed(f, i128::from(lead.mantissa), lead.scale)?;
-        if lead.scale == 0 {
-            // Always with a decimal point: on FANUC a bare value may be read
-            // in other units.
-            f.write_str(".0")?;
-        }
-        Ok(())
+        let mut buf = [0; FIXED_BUF];
+        f.pad(std::str::from_utf8(self.encode(&mut buf)).map_err(|_| fmt::Error)?)
     }
 }
 
 impl serde::Serialize for LeadText {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_str(self)
+        let mut buf = [0; FIXED_BUF];
+        s.serialize_str(std::str::from_utf8(self.encode(&mut buf)).map_err(serde::ser::Error::custom)?)
     }
 }
 
@@ -153,5 +210,37 @@ pub fn flank_name(f: Flank) -> &'static str {
         Flank::Right => "right",
         Flank::Centre => "centre",
         Flank::Left => "left",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cycleref::{IncrementSystem, InputUnit, Lead};
+
+    #[test]
+    fn fixed_and_lead_text_match_the_written_forms() {
+        let mm = Units { system: IncrementSystem::IsB, unit: InputUnit::Metric };
+        let inch_c = Units { system: IncrementSystem::IsC, unit: InputUnit::Inch };
+        for (v, u, text) in [
+            (64_400, mm, "64.400"),
+            (-5, mm, "-0.005"),
+            (0, mm, "0.000"),
+            (-59_000, mm, "-59.000"),
+            (i64::MAX, mm, "9223372036854775.807"),
+            (i64::MIN, mm, "-9223372036854775.808"),
+            (1, inch_c, "0.00001"),
+        ] {
+            assert_eq!(Fixed::new(v, u).to_string(), text);
+        }
+        assert_eq!(format!("{:>8}|{:<7}|", Fixed::new(1_800, mm), Fixed::new(-5, mm)), "   1.800|-0.005 |");
+        for (word, mantissa, scale, text) in [
+            (LeadWord::F, 6, 0, "F6.0"),
+            (LeadWord::F, 15, 1, "F1.5"),
+            (LeadWord::I, 20, 0, "I20.0"),
+            (LeadWord::F, 1, 6, "F0.000001"),
+        ] {
+            assert_eq!(LeadText(Lead { word, mantissa, scale }).to_string(), text);
+        }
     }
 }

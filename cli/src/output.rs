@@ -16,7 +16,7 @@ use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{G75Call, G76Call, Item, Restore};
 
-use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText};
+use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, FIXED_BUF};
 use crate::job::{Failure, Job};
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
 
@@ -190,27 +190,41 @@ fn nc_groove_move<W: Write>(out: &mut W, m: &Move, from: Point, x_factor: i64, u
     }
 }
 
+/// Writes `head`, then `X` and `Z` of `to` (the hot path of every writer:
+/// bytes straight into the buffer, no formatting machinery).
+fn xz<W: Write>(out: &mut W, head: &[u8], to: Point, u: Units) -> io::Result<()> {
+    let mut buf = [0; FIXED_BUF];
+    out.write_all(head)?;
+    out.write_all(b"X")?;
+    out.write_all(Fixed::new(to.x, u).encode(&mut buf))?;
+    out.write_all(b" Z")?;
+    out.write_all(Fixed::new(to.z, u).encode(&mut buf))
+}
+
 /// One move as an NC block.
 fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
-    let (x, z) = (Fixed::new(m.to.x, u), Fixed::new(m.to.z, u));
     match m.motion {
-        Motion::Rapid => writeln!(out, "G00 X{x} Z{z}"),
-        Motion::Feed => writeln!(out, "G01 X{x} Z{z}"),
+        Motion::Rapid => xz(out, b"G00 ", m.to, u)?,
+        Motion::Feed => xz(out, b"G01 ", m.to, u)?,
         Motion::Thread { lead, start_angle, sync } => {
-            write!(out, "G32 X{x} Z{z} {}", LeadText(lead))?;
+            xz(out, b"G32 ", m.to, u)?;
+            let mut buf = [0; FIXED_BUF];
+            out.write_all(b" ")?;
+            out.write_all(LeadText(lead).encode(&mut buf))?;
             // Q only where synchronisation starts: on a continuation block
             // the control ignores it (seed 002, Q rule 2).
             if sync && !start_angle.is_zero() {
                 write!(out, " Q{}", q_word(start_angle, u, q))?;
             }
-            out.write_all(b"\n")
         }
         Motion::Arc { centre, clockwise } => {
             // Without the start point the centre is written absolute.
-            let g = if clockwise { "G02" } else { "G03" };
-            writeln!(out, "{g} X{x} Z{z} (centre X{} Z{})", Fixed::new(centre.x, u), Fixed::new(centre.z, u))
+            xz(out, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
+            xz(out, b" (centre ", centre, u)?;
+            out.write_all(b")")?;
         }
     }
+    out.write_all(b"\n")
 }
 
 fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
@@ -316,10 +330,10 @@ fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                 kind_name(p.kind),
                 p.start,
                 flank_name(p.flank),
-                Fixed::new(p.depth, u).to_string(),
-                Fixed::new(p.cut, u).to_string(),
-                Fixed::new(bn.x, u).to_string(),
-                Fixed::new(bn.z, u).to_string()
+                Fixed::new(p.depth, u),
+                Fixed::new(p.cut, u),
+                Fixed::new(bn.x, u),
+                Fixed::new(bn.z, u)
             )?;
         }
         out.write_all(b"\n")?;
@@ -347,9 +361,9 @@ fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                     "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
                     p.layer,
                     p.number,
-                    Fixed::new(start.z, u).to_string(),
-                    Fixed::new(start.x, u).to_string(),
-                    Fixed::new(bottom.x, u).to_string(),
+                    Fixed::new(start.z, u),
+                    Fixed::new(start.x, u),
+                    Fixed::new(bottom.x, u),
                     pecks
                 )?;
             }
@@ -423,10 +437,10 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
             call.block.line,
             if call.g32.sync { "yes" } else { "no" },
-            Fixed::new(call.g32.start.x, u).to_string(),
-            Fixed::new(call.g32.start.z, u).to_string(),
-            Fixed::new(cut.x, u).to_string(),
-            Fixed::new(cut.z, u).to_string(),
+            Fixed::new(call.g32.start.x, u),
+            Fixed::new(call.g32.start.z, u),
+            Fixed::new(cut.x, u),
+            Fixed::new(cut.z, u),
             rx,
             rz
         )?;

@@ -32,36 +32,61 @@ use crate::error::{ErrorKind, ProgramError};
 
 /// How many words a block holds without a heap allocation. Longer blocks
 /// are read all the same, with one allocation.
-pub const INLINE_WORDS: usize = 12;
+pub const INLINE_WORDS: usize = 10;
 
-/// A number as written after an address.
+/// A number as written after an address: a sign, digits, perhaps a
+/// decimal point and more digits, borrowed from the program's text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Number<'a> {
     /// A leading minus sign.
     pub negative: bool,
-    /// Digits before the decimal point, as written (leading zeros kept).
-    pub int_digits: &'a str,
-    /// Digits after the decimal point, when there is a decimal point.
-    pub frac_digits: Option<&'a str>,
+    /// The digits and the decimal point, as written (`060.640`, `.5`, `6`).
+    digits: &'a str,
+    /// Where the decimal point is in `digits`, if there is one.
+    point: Option<u32>,
 }
 
-impl Number<'_> {
+impl<'a> Number<'a> {
+    /// A number from its parts: `digits` are ASCII digits with at most one
+    /// `.` (the decimal point).
+    #[must_use]
+    pub fn new(negative: bool, digits: &'a str) -> Number<'a> {
+        let point = digits.bytes().position(|b| b == b'.').and_then(|p| u32::try_from(p).ok());
+        Number { negative, digits, point }
+    }
+
+    /// Digits before the decimal point, as written (leading zeros kept).
+    #[must_use]
+    pub fn int_digits(&self) -> &'a str {
+        match self.point {
+            Some(p) => self.digits.get(..p as usize).unwrap_or_default(),
+            None => self.digits,
+        }
+    }
+
+    /// Digits after the decimal point, when there is a decimal point.
+    #[must_use]
+    pub fn frac_digits(&self) -> Option<&'a str> {
+        self.point.map(|p| self.digits.get(p as usize + 1..).unwrap_or_default())
+    }
+
     /// True when the number was written with a decimal point.
     #[must_use]
     pub fn has_point(&self) -> bool {
-        self.frac_digits.is_some()
+        self.point.is_some()
     }
 
     /// The exact value, with the scale as written (`2.50` has scale 2), or
     /// `None` when no [`Decimal`] holds it exactly.
     #[must_use]
     pub fn decimal(&self) -> Option<Decimal> {
-        let frac = self.frac_digits.unwrap_or("");
+        let frac = self.frac_digits().unwrap_or("");
+        let int = self.int_digits();
         // The usual case without an allocation: at most 28 decimals and a
         // mantissa below 2^96.
         let mut mantissa: u128 = 0;
         let mut fits = frac.len() <= 28;
-        for b in self.int_digits.bytes().chain(frac.bytes()) {
+        for b in int.bytes().chain(frac.bytes()) {
             match mantissa.checked_mul(10).and_then(|m| m.checked_add(u128::from(b - b'0'))) {
                 Some(m) if m < (1 << 96) => mantissa = m,
                 _ => {
@@ -79,11 +104,11 @@ impl Number<'_> {
         }
         // Beyond that, `from_str_exact` decides (it may still hold the
         // value by dropping trailing zeros, or refuse to round).
-        let mut s = String::with_capacity(self.int_digits.len() + frac.len() + 3);
+        let mut s = String::with_capacity(int.len() + frac.len() + 3);
         if self.negative {
             s.push('-');
         }
-        s.push_str(if self.int_digits.is_empty() { "0" } else { self.int_digits });
+        s.push_str(if int.is_empty() { "0" } else { int });
         if !frac.is_empty() {
             s.push('.');
             s.push_str(frac);
@@ -91,30 +116,72 @@ impl Number<'_> {
         Decimal::from_str_exact(&s).ok()
     }
 
+    /// The value in units of 10^-`decimals` (least increments), exactly,
+    /// by integer arithmetic: `Some(Some(v))`; `Some(None)` when the value
+    /// is finer than that; `None` when it has too many digits for this
+    /// shortcut (more than 18 with the decimals), which [`Number::decimal`]
+    /// then decides.
+    #[must_use]
+    pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
+        let frac = self.frac_digits().unwrap_or("").trim_end_matches('0');
+        let int = self.int_digits().trim_start_matches('0');
+        let d = decimals as usize;
+        if frac.len() > d {
+            return Some(None);
+        }
+        if int.len() + d > 18 {
+            return None;
+        }
+        let digits = |s: &str| s.bytes().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+        let scale = 10_i64.pow(decimals);
+        let pad = 10_i64.pow(u32::try_from(d - frac.len()).ok()?);
+        let v = digits(int) * scale + digits(frac) * pad;
+        Some(Some(if self.negative { -v } else { v }))
+    }
+
     /// The value when it is a whole number (a decimal point followed only by
     /// zeros counts as whole).
     #[must_use]
     pub fn integer(&self) -> Option<i64> {
-        if let Some(f) = self.frac_digits {
+        if let Some(f) = self.frac_digits() {
             if f.bytes().any(|b| b != b'0') {
                 return None;
             }
         }
-        let digits = self.int_digits.trim_start_matches('0');
+        let digits = self.int_digits().trim_start_matches('0');
         let v: i64 = if digits.is_empty() { 0 } else { digits.parse().ok()? };
         Some(if self.negative { -v } else { v })
     }
 }
 
 /// An address letter and its number.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
     /// The value.
     pub number: Number<'a>,
+    /// The word as written, from its letter to its last digit (spaces
+    /// between the letter and the number kept).
+    raw: &'a str,
+}
+
+impl<'a> Word<'a> {
+    /// A word from its parts; `raw` is the text it was read from.
+    #[must_use]
+    pub fn new(letter: char, number: Number<'a>, raw: &'a str) -> Word<'a> {
+        Word { letter, number, raw }
+    }
+
     /// The word as written, without the spaces inside it (for messages).
-    pub text: Cow<'a, str>,
+    #[must_use]
+    pub fn text(&self) -> Cow<'a, str> {
+        if self.raw.bytes().any(|b| b == b' ' || b == b'\t') {
+            Cow::Owned(self.raw.chars().filter(|c| !c.is_whitespace()).collect())
+        } else {
+            Cow::Borrowed(self.raw)
+        }
+    }
 }
 
 /// The words of a block: inline up to [`INLINE_WORDS`], on the heap
@@ -208,7 +275,7 @@ impl<'a> Block<'a> {
         if let Some(second) = it.next() {
             return Err(ProgramError {
                 line: self.line,
-                word: Some(second.text.to_string()),
+                word: Some(second.text().into_owned()),
                 kind: ErrorKind::Duplicate,
             });
         }
@@ -430,7 +497,7 @@ impl<'a> Lexer<'a> {
 }
 
 fn misplaced(line: usize, word: &Word<'_>, rule: &'static str) -> ProgramError {
-    ProgramError { line, word: Some(word.text.to_string()), kind: ErrorKind::Misplaced { rule } }
+    ProgramError { line, word: Some(word.text().into_owned()), kind: ErrorKind::Misplaced { rule } }
 }
 
 /// The offset after the comment that starts before `from`, whose bytes are
@@ -494,35 +561,28 @@ fn read_word(line: &[u8], start: usize, line_no: usize) -> Result<(Word<'_>, usi
         pos += 1;
     }
     let digits = |from: usize| from + line[from..].iter().take_while(|b| b.is_ascii_digit()).count();
-    let int_end = digits(pos);
-    let int_digits = ascii(&line[pos..int_end]);
-    pos = int_end;
-    let mut frac_digits = None;
+    let digits_start = pos;
+    pos = digits(pos);
+    let int_len = pos - digits_start;
+    let mut frac_len = None;
     if pos < line.len() && line[pos] == b'.' {
         let end = digits(pos + 1);
-        frac_digits = Some(ascii(&line[pos + 1..end]));
+        frac_len = Some(end - pos - 1);
         pos = end;
     }
-    let raw = ascii(&line[start..pos]);
-    let text: Cow<'_, str> = if raw.bytes().any(|b| b == b' ' || b == b'\t') {
-        Cow::Owned(raw.chars().filter(|c| !c.is_whitespace()).collect())
-    } else {
-        Cow::Borrowed(raw)
-    };
-    if int_digits.is_empty() && frac_digits.is_none_or(str::is_empty) {
+    // ASCII by construction: a letter, spaces, a sign, digits, a point.
+    let raw = std::str::from_utf8(&line[start..pos]).unwrap_or_default();
+    let number = Number::new(negative, raw.get(digits_start - start..).unwrap_or_default());
+    let word = Word { letter, number, raw };
+    if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
         return Err(ProgramError {
             line: line_no,
-            word: Some(text.into_owned()),
+            word: Some(word.text().into_owned()),
             kind: ErrorKind::Syntax(format!(
                 "the address `{letter}` without a number{}",
                 if num_start == pos { "" } else { " (only a sign)" }
             )),
         });
     }
-    Ok((Word { letter, number: Number { negative, int_digits, frac_digits }, text }, pos))
-}
-
-/// ASCII bytes as text (they are: letters, digits, signs, points, spaces).
-fn ascii(bytes: &[u8]) -> &str {
-    std::str::from_utf8(bytes).unwrap_or_default()
+    Ok((word, pos))
 }

@@ -206,7 +206,7 @@ struct G75Block1 {
 }
 
 fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramError {
-    ProgramError { line: block.line, word: word.map(|w| w.text.to_string()), kind }
+    ProgramError { line: block.line, word: word.map(|w| w.text().into_owned()), kind }
 }
 
 /// Reads `source` with `machine`, collecting every item.
@@ -421,6 +421,8 @@ fn to_increments(
     // increment gets the increment's.
     let v = if !n.has_point() && bare_increments {
         n.integer().ok_or_else(|| range_err(units, true))
+    } else if let Some(v) = n.scaled(units.decimals()) {
+        v.ok_or_else(not_in_increments)
     } else {
         match n.decimal() {
             // checked: a 28-digit value times 10^5 overflows a Decimal.
@@ -430,7 +432,7 @@ fn to_increments(
                 None => Err(range_err(units, true)),
             },
             None => {
-                let frac = n.frac_digits.unwrap_or_default().trim_end_matches('0');
+                let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
                 if frac.len() > units.decimals() as usize {
                     Err(not_in_increments())
                 } else {
@@ -526,7 +528,7 @@ impl State<'_> {
     fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
         let n = &w.number;
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
-        let frac = n.frac_digits.unwrap_or_default().trim_end_matches('0');
+        let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
         // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
@@ -545,7 +547,7 @@ impl State<'_> {
         }
         // Within the range table and MAX_LEAD_SCALE, the digits fit a u64.
         let mantissa =
-            n.int_digits.bytes().chain(frac.bytes()).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
+            n.int_digits().bytes().chain(frac.bytes()).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
         Ok(Lead { word, mantissa, scale })
     }
 
@@ -928,7 +930,7 @@ impl State<'_> {
                 ErrorKind::DecimalPointNotAllowed { rule: "P(m)(r)(a) is a string of digits" },
             ));
         }
-        let digits = &p.number.int_digits;
+        let digits = p.number.int_digits();
         let n = digits.len();
         let part = |from: usize, to: usize| -> u32 { digits[from..to].parse().unwrap_or(0) };
         let whole = self.machine.profile.p_split == PSplit::WholeOnly;
@@ -1287,7 +1289,7 @@ impl State<'_> {
         if p.number.has_point() || p.number.negative {
             return Err(bad());
         }
-        let digits = p.number.int_digits.as_bytes();
+        let digits = p.number.int_digits().as_bytes();
         if digits.len() > 4 || digits.iter().any(|&c| c != b'0' && c != b'1') {
             return Err(bad());
         }
