@@ -32,7 +32,7 @@ use crate::error::{ErrorKind, ProgramError};
 
 /// How many words a block holds without a heap allocation. Longer blocks
 /// are read all the same, with one allocation.
-pub const INLINE_WORDS: usize = 10;
+pub const INLINE_WORDS: usize = 6;
 
 /// A number as written after an address: a sign, digits, perhaps a
 /// decimal point and more digits, borrowed from the program's text.
@@ -187,7 +187,22 @@ impl<'a> Word<'a> {
 /// The words of a block: inline up to [`INLINE_WORDS`], on the heap
 /// beyond. Derefs to a slice.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Words<'a>(WordStore<'a>);
+pub struct Words<'a> {
+    store: WordStore<'a>,
+    /// Bit `letter - 'A'` set when the letter is there ...
+    present: u32,
+    /// ... and when it is there more than once.
+    repeated: u32,
+}
+
+/// The bit of an address letter in [`Words`]' masks (0 for a non-letter).
+fn letter_bit(letter: char) -> u32 {
+    if letter.is_ascii_uppercase() {
+        1 << (letter as u32 - 'A' as u32)
+    } else {
+        0
+    }
+}
 
 // The inline variant is the point: no allocation for an ordinary block.
 #[allow(clippy::large_enum_variant)]
@@ -201,18 +216,33 @@ impl<'a> Words<'a> {
     /// No words.
     #[must_use]
     pub fn new() -> Words<'a> {
-        Words(WordStore::Inline(ArrayVec::new()))
+        Words { store: WordStore::Inline(ArrayVec::new()), present: 0, repeated: 0 }
+    }
+
+    /// True when a word has the address `letter`.
+    #[must_use]
+    pub fn has(&self, letter: char) -> bool {
+        self.present & letter_bit(letter) != 0
+    }
+
+    /// True when more than one word has the address `letter`.
+    #[must_use]
+    pub fn repeats(&self, letter: char) -> bool {
+        self.repeated & letter_bit(letter) != 0
     }
 
     /// Adds `w` after the others.
     pub fn push(&mut self, w: Word<'a>) {
-        match &mut self.0 {
+        let bit = letter_bit(w.letter);
+        self.repeated |= self.present & bit;
+        self.present |= bit;
+        match &mut self.store {
             WordStore::Inline(v) => {
                 if let Err(e) = v.try_push(w) {
                     let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
                     heap.extend(v.drain(..));
                     heap.push(e.element());
-                    self.0 = WordStore::Heap(heap);
+                    self.store = WordStore::Heap(heap);
                 }
             }
             WordStore::Heap(v) => v.push(w),
@@ -230,7 +260,7 @@ impl<'a> std::ops::Deref for Words<'a> {
     type Target = [Word<'a>];
 
     fn deref(&self) -> &[Word<'a>] {
-        match &self.0 {
+        match &self.store {
             WordStore::Inline(v) => v,
             WordStore::Heap(v) => v,
         }
@@ -261,7 +291,8 @@ pub struct Block<'a> {
 impl<'a> Block<'a> {
     /// The words with address `letter`.
     pub fn all(&self, letter: char) -> impl Iterator<Item = &Word<'a>> {
-        self.words.iter().filter(move |w| w.letter == letter)
+        let words: &[Word<'a>] = if self.words.has(letter) { &self.words } else { &[] };
+        words.iter().filter(move |w| w.letter == letter)
     }
 
     /// The single word with address `letter`, if any.
@@ -270,6 +301,9 @@ impl<'a> Block<'a> {
     ///
     /// [`ErrorKind::Duplicate`] when the address appears twice.
     pub fn get(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
+        if !self.words.repeats(letter) {
+            return Ok(self.all(letter).next());
+        }
         let mut it = self.all(letter);
         let first = it.next();
         if let Some(second) = it.next() {
@@ -285,7 +319,7 @@ impl<'a> Block<'a> {
     /// True when the block has a word with address `letter`.
     #[must_use]
     pub fn has(&self, letter: char) -> bool {
-        self.words.iter().any(|w| w.letter == letter)
+        self.words.has(letter)
     }
 
     /// The text for a person: UTF-8 as it is, other bytes (a GBK comment)
@@ -316,7 +350,7 @@ pub struct Lexer<'a> {
     /// Number of the next line (1-based).
     line: usize,
     /// The current line and where in it the next block starts.
-    current: Option<(&'a [u8], usize)>,
+    current: Option<(Line<'a>, usize)>,
     done: bool,
 }
 
@@ -335,7 +369,7 @@ impl<'a> Lexer<'a> {
     }
 
     /// The next line, without its line end (`\n` or `\r\n`).
-    fn next_line(&mut self) -> Option<&'a [u8]> {
+    fn next_line(&mut self) -> Option<Line<'a>> {
         if self.pos >= self.src.len() {
             return None;
         }
@@ -346,13 +380,16 @@ impl<'a> Lexer<'a> {
         };
         self.pos += advance;
         self.line += 1;
-        Some(line.strip_suffix(b"\r").unwrap_or(line))
+        let bytes = line.strip_suffix(b"\r").unwrap_or(line);
+        // One check per line: then every word is a slice of it for free.
+        Some(Line { bytes, text: std::str::from_utf8(bytes).ok() })
     }
 
     /// Reads one segment of `line` from `start` (up to a block end or the
     /// line's end): its words and the offset after its block end, or
     /// `None` for the offset when the line is finished.
-    fn segment(&self, line: &'a [u8], start: usize) -> Result<Segment<'a>, ProgramError> {
+    fn segment(&self, whole: Line<'a>, start: usize) -> Result<Segment<'a>, ProgramError> {
+        let line = whole.bytes;
         let line_no = self.line;
         let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
         let mut words = Words::new();
@@ -371,7 +408,7 @@ impl<'a> Lexer<'a> {
                 b'%' | b'/' => pos += 1,
                 b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
                 b if b.is_ascii_alphabetic() => {
-                    let (word, end) = read_word(line, pos, line_no)?;
+                    let (word, end) = read_word(whole, pos, line_no)?;
                     match word.letter {
                         'N' if !seen => {}
                         'N' => {
@@ -432,6 +469,14 @@ impl<'a> Lexer<'a> {
     }
 }
 
+/// A line of the program, and its text when it is all UTF-8 (a line with
+/// a GBK comment is not).
+#[derive(Clone, Copy, Debug)]
+struct Line<'a> {
+    bytes: &'a [u8],
+    text: Option<&'a str>,
+}
+
 /// A block's worth of a line.
 struct Segment<'a> {
     words: Words<'a>,
@@ -467,7 +512,7 @@ impl<'a> Lexer<'a> {
                 Ok(s) => s,
                 Err(e) => return Some(Err(e)),
             };
-            let text = trim(&line[start..seg.end]);
+            let text = trim(&line.bytes[start..seg.end]);
             self.current = seg.next.map(|n| (line, n));
             if text.is_empty() && seg.words.is_empty() {
                 continue;
@@ -483,7 +528,7 @@ impl<'a> Lexer<'a> {
                 if !seg.words.is_empty() {
                     break;
                 }
-                let more = trim(&line[start..seg.end]);
+                let more = trim(&line.bytes[start..seg.end]);
                 if !more.is_empty() {
                     let t = block.text.to_mut();
                     t.push(b' ');
@@ -514,8 +559,8 @@ fn comment_end(line: &[u8], from: usize) -> Option<usize> {
 
 /// The UTF-8 character at the start of `bytes`, if they start with one.
 fn decode(bytes: &[u8]) -> Option<char> {
-    let len = match bytes.first()? {
-        0x00..=0x7F => 1,
+    let len = match *bytes.first()? {
+        b @ 0x00..=0x7F => return Some(char::from(b)),
         0xC2..=0xDF => 2,
         0xE0..=0xEF => 3,
         0xF0..=0xF4 => 4,
@@ -526,6 +571,9 @@ fn decode(bytes: &[u8]) -> Option<char> {
 
 /// The UTF-8 character that ends `bytes`, if they end with one.
 fn decode_last(bytes: &[u8]) -> Option<char> {
+    if let Some(&b) = bytes.last().filter(|b| b.is_ascii()) {
+        return Some(char::from(b));
+    }
     (1..=4.min(bytes.len())).find_map(|n| {
         let tail = &bytes[bytes.len() - n..];
         std::str::from_utf8(tail).ok().and_then(|s| {
@@ -548,7 +596,8 @@ fn trim(mut bytes: &[u8]) -> &[u8] {
 }
 
 /// The word that starts at `start` (an ASCII letter) and the offset after it.
-fn read_word(line: &[u8], start: usize, line_no: usize) -> Result<(Word<'_>, usize), ProgramError> {
+fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>, usize), ProgramError> {
+    let line = whole.bytes;
     let letter = char::from(line[start].to_ascii_uppercase());
     let mut pos = start + 1;
     while pos < line.len() && (line[pos] == b' ' || line[pos] == b'\t') {
@@ -571,7 +620,11 @@ fn read_word(line: &[u8], start: usize, line_no: usize) -> Result<(Word<'_>, usi
         pos = end;
     }
     // ASCII by construction: a letter, spaces, a sign, digits, a point.
-    let raw = std::str::from_utf8(&line[start..pos]).unwrap_or_default();
+    let raw = match whole.text {
+        Some(t) => t.get(start..pos),
+        None => std::str::from_utf8(&line[start..pos]).ok(),
+    }
+    .unwrap_or_default();
     let number = Number::new(negative, raw.get(digits_start - start..).unwrap_or_default());
     let word = Word { letter, number, raw };
     if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
