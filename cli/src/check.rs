@@ -1013,18 +1013,35 @@ fn compare_steps(ours: &[Step], theirs: &[Step], regions: &[Region], units: Unit
 enum Op {
     /// Our group i against their group j.
     Pair(usize, usize),
-    /// Our group i against their groups j and j + 1 joined.
-    JoinTheirs(usize, usize),
-    /// Our groups i and i + 1 joined against their group j.
-    JoinOurs(usize, usize),
+    /// Our groups i.. (p of them) joined against their groups j.. (q).
+    Join {
+        i: usize,
+        p: usize,
+        j: usize,
+        q: usize,
+    },
     Missing(usize),
     Extra(usize),
 }
 
+/// The joins tried: one group of ours against two of theirs, two against
+/// one, two against two (a rapid written for a cutting move splits a pass
+/// or moves a pass boundary; the reverse joins them).
+const JOINS: [(usize, usize); 3] = [(1, 2), (2, 1), (2, 2)];
+
+/// Groups joined into one: the later groups' rapids become moves among
+/// the cuts.
+fn joined(gs: &[Group]) -> Group {
+    let mut out = Group { rapids: Vec::new(), cuts: Vec::new() };
+    for (n, g) in gs.iter().enumerate() {
+        out = if n == 0 { g.clone() } else { out.joined(g) };
+    }
+    out
+}
+
 /// Aligns the groups by edit distance (a match costs 0, a substitution 1,
-/// a missing or extra group 1, two groups of one side against one of the
-/// other 1 when they differ only in kinds of move) and lists the
-/// differences in our order.
+/// a missing or extra group 1, a join of groups that differ only in kinds
+/// of move 1) and lists the differences in our order.
 fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -> Vec<Divergence> {
     let (n, m) = (a.len(), b.len());
     let cmp = |x: &Group, y: &Group| compare(x, y, tol, units, regions);
@@ -1042,16 +1059,13 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
         return out;
     }
     let equal: Vec<Vec<bool>> = a.iter().map(|x| b.iter().map(|y| cmp(x, y).is_empty()).collect()).collect();
-    // Joins, only where the lengths fit (cheap test first).
-    let join_theirs = |i: usize, j: usize| {
-        a[i].len() == b[j].len() + b[j + 1].len()
-            && a[i].rapids.len() == b[j].rapids.len()
-            && only_kinds(&cmp(&a[i], &b[j].joined(&b[j + 1])))
-    };
-    let join_ours = |i: usize, j: usize| {
-        b[j].len() == a[i].len() + a[i + 1].len()
-            && b[j].rapids.len() == a[i].rapids.len()
-            && only_kinds(&cmp(&a[i].joined(&a[i + 1]), &b[j]))
+    // A join of our groups i..i+p with their j..j+q, only where the sizes
+    // fit (the cheap test first).
+    let join = |i: usize, p: usize, j: usize, q: usize| {
+        let (x, y) = (&a[i..i + p], &b[j..j + q]);
+        x.iter().map(Group::len).sum::<usize>() == y.iter().map(Group::len).sum::<usize>()
+            && x[0].rapids.len() == y[0].rapids.len()
+            && only_kinds(&cmp(&joined(x), &joined(y)))
     };
     let big = u32::MAX / 2;
     let mut cost = vec![vec![0_u32; m + 1]; n + 1];
@@ -1061,20 +1075,17 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
     for (j, c) in cost[0].iter_mut().enumerate() {
         *c = u32::try_from(j).unwrap_or(big);
     }
-    let mut jt = vec![vec![false; m + 1]; n + 1];
-    let mut jo = vec![vec![false; m + 1]; n + 1];
+    // The join that reached a cell, if one did.
+    let mut via = vec![vec![None::<(usize, usize)>; m + 1]; n + 1];
     for i in 1..=n {
         for j in 1..=m {
             let sub = cost[i - 1][j - 1] + u32::from(!equal[i - 1][j - 1]);
             let mut c = sub.min(cost[i - 1][j] + 1).min(cost[i][j - 1] + 1);
-            if j >= 2 && cost[i - 1][j - 2] + 1 < c && join_theirs(i - 1, j - 2) {
-                jt[i][j] = true;
-                c = cost[i - 1][j - 2] + 1;
-            }
-            if i >= 2 && cost[i - 2][j - 1] + 1 < c && join_ours(i - 2, j - 1) {
-                jo[i][j] = true;
-                jt[i][j] = false;
-                c = cost[i - 2][j - 1] + 1;
+            for (p, q) in JOINS {
+                if i >= p && j >= q && cost[i - p][j - q] + 1 < c && join(i - p, p, j - q, q) {
+                    via[i][j] = Some((p, q));
+                    c = cost[i - p][j - q] + 1;
+                }
             }
             cost[i][j] = c;
         }
@@ -1086,14 +1097,10 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
     // equal cost: when passes repeat (finishing passes), the one reported
     // missing is the last, where a trace that stops early stops.
     while i > 0 || j > 0 {
-        if i > 0 && j > 0 && jo[i][j] {
-            ops.push(Op::JoinOurs(i - 2, j - 1));
-            i -= 2;
-            j -= 1;
-        } else if i > 0 && j > 0 && jt[i][j] {
-            ops.push(Op::JoinTheirs(i - 1, j - 2));
-            i -= 1;
-            j -= 2;
+        if let Some((p, q)) = via[i][j] {
+            ops.push(Op::Join { i: i - p, p, j: j - q, q });
+            i -= p;
+            j -= q;
         } else if i > 0 && cost[i][j] == cost[i - 1][j] + 1 {
             ops.push(Op::Missing(i - 1));
             i -= 1;
@@ -1111,8 +1118,7 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
     for op in ops {
         match op {
             Op::Pair(x, y) => out.extend(cmp(&a[x], &b[y])),
-            Op::JoinTheirs(x, y) => out.extend(cmp(&a[x], &b[y].joined(&b[y + 1]))),
-            Op::JoinOurs(x, y) => out.extend(cmp(&a[x].joined(&a[x + 1]), &b[y])),
+            Op::Join { i, p, j, q } => out.extend(cmp(&joined(&a[i..i + p]), &joined(&b[j..j + q]))),
             Op::Missing(x) => out.push(missing(&a[x])),
             Op::Extra(y) => out.push(extra(&b[y])),
         }
