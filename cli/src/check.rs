@@ -1001,6 +1001,21 @@ pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
     Ok(compare_steps(&ours, &theirs, &regions, job.program.units, tolerance))
 }
 
+/// The comparison of `job`'s program with a trace given as bytes (`.nc`
+/// text, or CSV when `is_csv`): what `run` does after reading the file.
+/// The fuzz target `check_trace` and the property tests call it.
+///
+/// # Errors
+///
+/// Our expansion's error, or the trace's, with its line.
+#[allow(dead_code)] // called by the fuzz target (fuzz/fuzz_targets/check_trace.rs), not by the command
+pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
+    let ours = ours(job, &job.machine)?;
+    let regions = regions(job)?;
+    let theirs = read_trace_bytes(bytes, is_csv, &job.machine, job.program.units)?;
+    Ok(compare_steps(&ours, &theirs, &regions, job.program.units, tolerance))
+}
+
 fn compare_steps(ours: &[Step], theirs: &[Step], regions: &[Region], units: Units, tolerance: u64) -> Report {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
     let (ga, gb) = (groups(ours), groups(theirs));
