@@ -1,29 +1,38 @@
 //! `cycleref check`: compares a vendor's toolpath with ours, pass by pass.
 //!
-//! Both toolpaths become lists of moves (kind, end point, and for thread
-//! moves the lead, the start angle and where synchronisation starts). Ours
-//! comes from the program's own motion blocks and the expansion of its
-//! cycles, each move annotated with the cycle, pass and point it is in the
-//! manual's terms; theirs from the trace, an expanded program or a CSV.
+//! Both toolpaths become lists of moves (kind, start and end point, an
+//! arc's centre, and for thread moves the lead, the start angle and where
+//! synchronisation starts). Ours comes from the program's own motion blocks
+//! and the expansion of its cycles, each move annotated with the cycle,
+//! pass and point it is in the manual's terms; theirs from the trace, an
+//! expanded program or a CSV.
 //!
 //! What does not matter is ignored: blocks that do not move, number
 //! formatting, N numbers and comments (the trace is read as words), and a
-//! rapid split into an X move and a Z move (in either order). What matters is
-//! compared strictly, within the tolerance: every thread and feed move's end
-//! point, lead and start angle, where synchronisation starts, the rapid
+//! rapid split into an X move and a Z move (in either order) whose corner
+//! path stays out of the regions the cycles cut (reading R-CHECKSPLIT; a
+//! split through them is a "rapid through the work"). What shapes the part
+//! is compared strictly: the kind of every move (rapid, feed, arc clockwise,
+//! arc counter-clockwise, thread), every end point and arc centre (within
+//! the tolerance, the only thing it applies to), every thread move's lead,
+//! where synchronisation starts and its start angle (exactly), the rapid
 //! points, and the order of the passes. The moves are grouped into passes
 //! (a run of rapids and the cutting moves after it), and the groups are
 //! aligned with an edit distance, so a missing or an extra pass is reported
-//! as such instead of shifting every later comparison.
+//! as such instead of shifting every later comparison; a rapid written for a
+//! cutting move (or the reverse) splits (or joins) a pass, and the alignment
+//! joins the pieces again to name that move.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
+use cycleref::units::MAX_LENGTH;
 use cycleref::{InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units};
-use cycleref_spec::lex::{lex, Block};
+use cycleref_spec::lex::{lex, Block, Word};
 use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::reader::{length_word, q_word, Item};
-use cycleref_spec::{Machine, ProgramError};
+use cycleref_spec::Machine;
+use rust_decimal::Decimal;
 use serde_json::{json, Value};
 
 use crate::format::{fixed, kind_name};
@@ -34,8 +43,11 @@ use crate::Job;
 enum Kind {
     Rapid,
     Feed,
+    /// G02.
+    ArcCw,
+    /// G03.
+    ArcCcw,
     Thread,
-    Arc,
 }
 
 impl Kind {
@@ -43,9 +55,14 @@ impl Kind {
         match self {
             Kind::Rapid => "rapid",
             Kind::Feed => "feed",
+            Kind::ArcCw => "arc-cw",
+            Kind::ArcCcw => "arc-ccw",
             Kind::Thread => "thread",
-            Kind::Arc => "arc",
         }
+    }
+
+    fn is_arc(self) -> bool {
+        matches!(self, Kind::ArcCw | Kind::ArcCcw)
     }
 }
 
@@ -66,7 +83,11 @@ enum Context {
 #[derive(Clone, Copy, Debug)]
 struct Step {
     kind: Kind,
+    /// Where the move starts, when known.
+    from: Option<Point>,
     to: Point,
+    /// The centre of an arc, absolute (X in X-word units).
+    centre: Option<Point>,
     /// Lead of a thread move.
     lead: Option<Lead>,
     /// Start angle where synchronisation starts (thread moves).
@@ -75,6 +96,63 @@ struct Step {
     sync: bool,
     /// Our annotation, or the trace's line.
     context: Context,
+}
+
+/// A message naming a block's line and, when there is one, its word.
+fn at(b: &Block, w: Option<&Word>, msg: &str) -> String {
+    match w {
+        Some(w) => format!("line {}, word `{}`: {msg}", b.line, w.text()),
+        None => format!("line {}: {msg}", b.line),
+    }
+}
+
+/// The lead of an F or I word, exactly as written.
+fn lead_of(b: &Block, w: &Word, word: LeadWord) -> Result<Lead, String> {
+    let bad =
+        || at(b, Some(w), "the lead is outside every range table (F up to 9999, I from 0.0001 to 2540)");
+    if w.number.negative {
+        return Err(bad());
+    }
+    let frac = w.number.frac_digits().unwrap_or_default();
+    let frac = frac.trim_end_matches('0');
+    let digits = format!("{}{frac}", w.number.int_digits());
+    let digits = digits.trim_start_matches('0');
+    let mantissa = if digits.is_empty() { 0 } else { digits.parse().map_err(|_| bad())? };
+    let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).map_err(|_| bad())? };
+    if lead.in_range() {
+        Ok(lead)
+    } else {
+        Err(bad())
+    }
+}
+
+/// The X distance of an I word in X-word increments: I is a radius, and
+/// may have one more decimal than the increment when X is a diameter (the
+/// `nc` contract, `format::arc_ik`).
+fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, String> {
+    let f = machine.x_mode.factor();
+    let n = &w.number;
+    let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
+    let out = || at(b, Some(w), "the arc centre distance is outside the range table");
+    let radius_increments = if !n.has_point() && bare {
+        Decimal::from(n.integer().ok_or_else(out)?)
+    } else {
+        let d = n.decimal().ok_or_else(out)?;
+        d.checked_mul(Decimal::from(units.per_unit())).ok_or_else(out)?
+    };
+    let dx = radius_increments.checked_mul(Decimal::from(f)).ok_or_else(out)?;
+    if !dx.fract().is_zero() {
+        return Err(at(
+            b,
+            Some(w),
+            "I is not a whole number of X increments (a radius; one more decimal than the increment only when X is a diameter)",
+        ));
+    }
+    let dx = i64::try_from(dx.trunc()).map_err(|_| out())?;
+    if dx.unsigned_abs() > 2 * MAX_LENGTH.unsigned_abs() {
+        return Err(out());
+    }
+    Ok(dx)
 }
 
 /// Reads a trace or our own program's motion blocks: modal motion,
@@ -88,15 +166,87 @@ struct Tracker<'m> {
     lead: Option<Lead>,
     /// The previous move was a thread move (a continuous thread).
     in_thread: bool,
+    /// Reading a vendor's trace: every word must be one of a plain move.
+    strict: bool,
 }
 
 impl<'m> Tracker<'m> {
-    fn new(machine: &'m Machine, units: Units) -> Tracker<'m> {
-        Tracker { machine, units, x: None, z: None, motion: Kind::Rapid, lead: None, in_thread: false }
+    fn new(machine: &'m Machine, units: Units, strict: bool) -> Tracker<'m> {
+        Tracker {
+            machine,
+            units,
+            x: None,
+            z: None,
+            motion: Kind::Rapid,
+            lead: None,
+            in_thread: false,
+            strict,
+        }
+    }
+
+    /// A trace's words that the check does not read are refused: they might
+    /// shape the part (reading R-CHECKWORDS).
+    fn strict_words(&self, b: &Block, motion: Kind) -> Result<(), String> {
+        let dwell = b.all('G').any(|g| g.number.integer() == Some(4));
+        for w in &b.words {
+            let ok = match w.letter {
+                'G' => {
+                    let g = w.number.integer();
+                    if !matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99)) {
+                        return Err(at(
+                            b,
+                            Some(w),
+                            "a trace holds plain G00/G01/G02/G03/G32 blocks, not canned cycles or other modes",
+                        ));
+                    }
+                    let unit = match self.units.unit {
+                        InputUnit::Metric => 21,
+                        InputUnit::Inch => 20,
+                    };
+                    if matches!(g, Some(20 | 21)) && g != Some(unit) {
+                        return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
+                    }
+                    true
+                }
+                'M' => {
+                    if matches!(w.number.integer(), Some(98 | 99)) {
+                        return Err(at(b, Some(w), "a trace holds plain moves, not subprogram calls"));
+                    }
+                    true
+                }
+                'X' | 'U' => true,
+                'Z' | 'W' | 'F' | 'S' | 'T' => true,
+                'P' => dwell,
+                'Q' => motion == Kind::Thread,
+                'I' => motion.is_arc() || motion == Kind::Thread,
+                'J' | 'K' if motion == Kind::Thread => {
+                    return Err(at(b, Some(w), "a trace holds plain moves; write the run-out as its own block"))
+                }
+                'K' => motion.is_arc(),
+                'R' if motion.is_arc() => {
+                    return Err(at(
+                        b,
+                        Some(w),
+                        "an arc in a trace gives its centre as I and K: the centre R implies is in general not a \
+                         point of the increment grid, so it cannot be compared exactly (reading R-CHECKARC)",
+                    ))
+                }
+                _ => false,
+            };
+            if !ok {
+                return Err(at(
+                    b,
+                    Some(w),
+                    &format!("not a word of a plain {} move in a trace", motion.name()),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// The move of a block, if it moves.
-    fn block(&mut self, b: &Block<'_>) -> Result<Option<Step>, ProgramError> {
+    fn block(&mut self, b: &Block<'_>) -> Result<Option<Step>, String> {
+        let pe = |e: cycleref_spec::ProgramError| e.to_string();
         if b.words.is_empty() {
             return Ok(None);
         }
@@ -106,32 +256,37 @@ impl<'m> Tracker<'m> {
             match w.number.integer() {
                 Some(0) => self.motion = Kind::Rapid,
                 Some(1) => self.motion = Kind::Feed,
-                Some(2 | 3) => self.motion = Kind::Arc,
+                Some(2) => self.motion = Kind::ArcCw,
+                Some(3) => self.motion = Kind::ArcCcw,
                 Some(32) => self.motion = Kind::Thread,
                 Some(50) => g50 = true,
                 Some(4) => dwell = true,
                 _ => {}
             }
         }
+        if self.strict {
+            self.strict_words(b, self.motion)?;
+        }
         for letter in ['F', 'I'] {
-            if let Some(w) = b.get(letter)? {
+            if let Some(w) = b.get(letter).map_err(pe)? {
                 // I is an arc centre outside G32; F is shared with the feed.
                 if letter == 'F' || self.motion == Kind::Thread {
-                    let frac = w.number.frac_digits().unwrap_or_default();
-                    let frac = frac.trim_end_matches('0');
-                    let digits = format!("{}{frac}", w.number.int_digits());
-                    let mantissa = digits.trim_start_matches('0').parse().unwrap_or(0);
                     let word = if letter == 'F' { LeadWord::F } else { LeadWord::I };
-                    self.lead = Some(Lead { word, mantissa, scale: u32::try_from(frac.len()).unwrap_or(0) });
+                    match lead_of(b, w, word) {
+                        Ok(l) => self.lead = Some(l),
+                        Err(e) if self.motion == Kind::Thread => return Err(e),
+                        // A feed rate is not a lead; a thread later needs its own F.
+                        Err(_) => self.lead = None,
+                    }
                 }
             }
         }
-        let coord = |abs: char, inc: char, cur: Option<i64>| -> Result<Option<i64>, ProgramError> {
-            if let Some(w) = b.get(abs)? {
-                return Ok(Some(length_word(self.machine, self.units, b, w)?));
+        let coord = |abs: char, inc: char, cur: Option<i64>| -> Result<Option<i64>, String> {
+            if let Some(w) = b.get(abs).map_err(pe)? {
+                return Ok(Some(length_word(self.machine, self.units, b, w).map_err(pe)?));
             }
-            if let Some(w) = b.get(inc)? {
-                let d = length_word(self.machine, self.units, b, w)?;
+            if let Some(w) = b.get(inc).map_err(pe)? {
+                let d = length_word(self.machine, self.units, b, w).map_err(pe)?;
                 return Ok(cur.map(|c| c + d));
             }
             Ok(cur)
@@ -158,42 +313,222 @@ impl<'m> Tracker<'m> {
         if from == (Some(x), Some(z)) {
             return Ok(None);
         }
+        let from = match from {
+            (Some(fx), Some(fz)) => Some(Point::new(fx, fz)),
+            _ => None,
+        };
         let kind = self.motion;
+        let centre = if kind.is_arc() { Some(self.centre(b, from)?) } else { None };
         let sync = kind == Kind::Thread && !self.in_thread;
-        let angle = match (kind, b.get('Q')?) {
-            (Kind::Thread, Some(w)) if sync => q_word(self.machine, self.units, b, w)?,
+        let angle = match (kind, b.get('Q').map_err(pe)?) {
+            (Kind::Thread, Some(w)) if sync => q_word(self.machine, self.units, b, w).map_err(pe)?,
             _ => StartAngle::ZERO,
         };
         self.in_thread = kind == Kind::Thread;
         let lead = if kind == Kind::Thread { self.lead } else { None };
-        Ok(Some(Step { kind, to, lead, angle, sync, context: Context::Source { line: b.line } }))
+        Ok(Some(Step {
+            kind,
+            from,
+            to,
+            centre,
+            lead,
+            angle,
+            sync,
+            context: Context::Source { line: b.line },
+        }))
+    }
+
+    /// An arc's centre from its I and K (an omitted one is 0); R is refused
+    /// (reading R-CHECKARC), and an arc without I, K or R is an error.
+    fn centre(&self, b: &Block, from: Option<Point>) -> Result<Point, String> {
+        let pe = |e: cycleref_spec::ProgramError| e.to_string();
+        let g = b.all('G').find(|g| matches!(g.number.integer(), Some(2 | 3)));
+        if let Some(r) = b.get('R').map_err(pe)? {
+            return Err(at(
+                b,
+                Some(r),
+                "an arc is compared by its centre: give I and K (the centre R implies is in general not a point \
+                 of the increment grid, reading R-CHECKARC)",
+            ));
+        }
+        let (i, k) = (b.get('I').map_err(pe)?, b.get('K').map_err(pe)?);
+        if i.is_none() && k.is_none() {
+            return Err(at(b, g, "an arc without a centre: give I and K (reading R-CHECKARC)"));
+        }
+        let Some(from) = from else {
+            return Err(at(
+                b,
+                g,
+                "an arc whose start point is not known (no earlier block gives both X and Z)",
+            ));
+        };
+        let dx = match i {
+            Some(w) => arc_i(self.machine, self.units, b, w)?,
+            None => 0,
+        };
+        let dz = match k {
+            Some(w) => length_word(self.machine, self.units, b, w).map_err(pe)?,
+            None => 0,
+        };
+        Ok(Point::new(from.x + dx, from.z + dz))
     }
 
     /// One of our expanded moves: the tracker follows it.
     fn inject(&mut self, m: &Move, context: Context) -> Step {
+        let from = match (self.x, self.z) {
+            (Some(x), Some(z)) => Some(Point::new(x, z)),
+            _ => None,
+        };
         self.x = Some(m.to.x);
         self.z = Some(m.to.z);
-        let (kind, lead, angle, sync) = match m.motion {
-            Motion::Rapid => (Kind::Rapid, None, StartAngle::ZERO, false),
-            Motion::Feed => (Kind::Feed, None, StartAngle::ZERO, false),
+        let (kind, lead, angle, sync, centre) = match m.motion {
+            Motion::Rapid => (Kind::Rapid, None, StartAngle::ZERO, false, None),
+            Motion::Feed => (Kind::Feed, None, StartAngle::ZERO, false, None),
             Motion::Thread { lead, start_angle, sync } => {
-                (Kind::Thread, Some(lead), if sync { start_angle } else { StartAngle::ZERO }, sync)
+                (Kind::Thread, Some(lead), if sync { start_angle } else { StartAngle::ZERO }, sync, None)
             }
-            Motion::Arc { .. } => (Kind::Arc, None, StartAngle::ZERO, false),
+            Motion::Arc { centre, clockwise } => (
+                if clockwise { Kind::ArcCw } else { Kind::ArcCcw },
+                None,
+                StartAngle::ZERO,
+                false,
+                Some(centre),
+            ),
         };
         self.motion = kind;
         self.in_thread = kind == Kind::Thread;
         if let Some(l) = lead {
             self.lead = Some(l);
         }
-        Step { kind, to: m.to, lead, angle, sync, context }
+        Step { kind, from, to: m.to, centre, lead, angle, sync, context }
     }
+
+    /// The motion mode in force again after a one-shot cycle.
+    fn restore(&mut self, motion: Option<&str>) {
+        self.motion = match motion {
+            Some("G01") => Kind::Feed,
+            Some("G02") => Kind::ArcCw,
+            Some("G03") => Kind::ArcCcw,
+            Some("G32") => Kind::Thread,
+            _ => Kind::Rapid,
+        };
+    }
+}
+
+/// An open box `x_lo < x < x_hi`, `z_lo < z < z_hi` holding a region a
+/// cycle cuts (reading R-CHECKSPLIT): a rapid must not pass through it.
+#[derive(Clone, Copy, Debug)]
+struct Region {
+    x_lo: i128,
+    x_hi: i128,
+    z_lo: i128,
+    z_hi: i128,
+}
+
+impl Region {
+    fn spanning(points: &[(i128, i128)]) -> Option<Region> {
+        let (&(x0, z0), rest) = points.split_first()?;
+        let mut r = Region { x_lo: x0, x_hi: x0, z_lo: z0, z_hi: z0 };
+        for &(x, z) in rest {
+            r.x_lo = r.x_lo.min(x);
+            r.x_hi = r.x_hi.max(x);
+            r.z_lo = r.z_lo.min(z);
+            r.z_hi = r.z_hi.max(z);
+        }
+        Some(r)
+    }
+
+    /// True when the straight path from `p` to `q` meets the open box. Only
+    /// paths along one axis are decided (a split's legs are); a diagonal
+    /// gives false.
+    fn crossed_by(&self, p: Point, q: Point) -> bool {
+        let (px, pz, qx, qz) = (i128::from(p.x), i128::from(p.z), i128::from(q.x), i128::from(q.z));
+        if px == qx {
+            self.x_lo < px && px < self.x_hi && pz.min(qz) < self.z_hi && pz.max(qz) > self.z_lo
+        } else if pz == qz {
+            self.z_lo < pz && pz < self.z_hi && px.min(qx) < self.x_hi && px.max(qx) > self.x_lo
+        } else {
+            false
+        }
+    }
+}
+
+/// The regions the program's cycles cut (reading R-CHECKSPLIT).
+fn regions(job: &Job) -> Result<Vec<Region>, String> {
+    let program = job.program()?;
+    let mut out = Vec::new();
+    for item in &program.items {
+        match item {
+            Item::G76(call) => {
+                let c = &call.cycle;
+                let f = i128::from(c.x_mode.factor());
+                let (dx, dz) = (i128::from(c.end.x), i128::from(c.end.z));
+                let cx = dx + f * i128::from(c.taper);
+                let side = if i128::from(c.start.x) >= cx { 1 } else { -1 };
+                let crest = side * f * i128::from(c.thread_height);
+                // The Z where the cut nearest D starts: the thread runs from
+                // there to D (before it the tool is in the air: ours rapids
+                // to every pass start).
+                let moves: Vec<Move> = job.expand(Cycle::G76(call))?.collect();
+                let mut prev = c.start;
+                let mut zs: Option<i64> = None;
+                for m in &moves {
+                    if let Motion::Thread { sync: true, .. } = m.motion {
+                        let nearer = zs.is_none_or(|z| (prev.z - c.end.z).abs() < (z - c.end.z).abs());
+                        if nearer {
+                            zs = Some(prev.z);
+                        }
+                    }
+                    prev = m.to;
+                }
+                let zs = i128::from(zs.unwrap_or(c.start.z));
+                out.extend(Region::spanning(&[(dx, dz), (cx, zs), (dx + crest, dz), (cx + crest, zs)]));
+            }
+            Item::G32(call) => {
+                // No thread height: the box the cut itself spans (a taper's).
+                let g = &call.g32;
+                let moves: Vec<Move> = job.expand(Cycle::G32(call))?.collect();
+                if let Some(cut) = moves.iter().find(|m| m.role == Role::Cut) {
+                    let s = g.start;
+                    out.extend(Region::spanning(&[
+                        (i128::from(s.x), i128::from(s.z)),
+                        (i128::from(cut.to.x), i128::from(cut.to.z)),
+                    ]));
+                }
+            }
+            Item::G75(call) => {
+                let c = &call.cycle;
+                let p = cycleref::groove_profile(c)
+                    .map_err(|e| format!("{}: line {}, G75.1: {e}", job.name, call.block.line))?;
+                let f = i128::from(c.x_mode.factor());
+                let mut pts = vec![(i128::from(c.start.x), i128::from(c.start.z))];
+                let mut prev = c.start;
+                for q in p.finishing() {
+                    pts.push((i128::from(q.at.x), i128::from(q.at.z)));
+                    if let cycleref::ProfileSegment::Arc { centre, .. } = q.segment {
+                        // The round lies in its circle's box; the radius is
+                        // at most |dx|/f + |dz| (rounded up).
+                        let dx = (i128::from(prev.x) - i128::from(centre.x)).abs();
+                        let dz = (i128::from(prev.z) - i128::from(centre.z)).abs();
+                        let r = (dx + f - 1) / f + dz;
+                        let (ox, oz) = (i128::from(centre.x), i128::from(centre.z));
+                        pts.push((ox - f * r, oz - r));
+                        pts.push((ox + f * r, oz + r));
+                    }
+                    prev = q.at;
+                }
+                out.extend(Region::spanning(&pts));
+            }
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
+        }
+    }
+    Ok(out)
 }
 
 /// Our toolpath: the program's motion blocks and its expanded cycles.
 fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
     let program = job.program()?;
-    let mut t = Tracker::new(machine, program.units);
+    let mut t = Tracker::new(machine, program.units, false);
     let mut out = Vec::new();
     for item in &program.items {
         match item {
@@ -217,12 +552,7 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
                     out.push(t.inject(&m, Context::G76 { line, pass, role: m.role }));
                 }
                 // G76 is one-shot: the motion mode before it is in force again.
-                t.motion = match call.restore.motion {
-                    Some("G01") => Kind::Feed,
-                    Some("G02" | "G03") => Kind::Arc,
-                    Some("G32") => Kind::Thread,
-                    _ => Kind::Rapid,
-                };
+                t.restore(call.restore.motion);
             }
             Item::G32(call) => {
                 let line = call.block.line;
@@ -236,12 +566,7 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
                 for m in job.expand(Cycle::G75(call))? {
                     out.push(t.inject(&m, Context::G75 { line, role: m.role }));
                 }
-                t.motion = match call.restore.motion {
-                    Some("G01") => Kind::Feed,
-                    Some("G02" | "G03") => Kind::Arc,
-                    Some("G32") => Kind::Thread,
-                    _ => Kind::Rapid,
-                };
+                t.restore(call.restore.motion);
             }
         }
     }
@@ -251,117 +576,181 @@ fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
 /// The vendor's toolpath from an expanded program.
 fn theirs_nc(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, String> {
     let blocks = lex(text).map_err(|e| e.to_string())?;
-    let mut t = Tracker::new(machine, units);
+    let mut t = Tracker::new(machine, units, true);
     let mut out = Vec::new();
     for b in &blocks {
-        for w in &b.words {
-            if w.letter == 'G'
-                && !matches!(
-                    w.number.integer(),
-                    Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99)
-                )
-            {
-                return Err(format!(
-                    "line {}: `{}`: a trace holds plain G00/G01/G02/G03/G32 blocks, not canned cycles",
-                    b.line,
-                    w.text()
-                ));
-            }
-            let g32_here = b.all('G').any(|g| g.number.integer() == Some(32));
-            if (w.letter == 'J' || w.letter == 'K') && (t.motion == Kind::Thread || g32_here) {
-                return Err(format!(
-                    "line {}: `{}`: a trace holds plain moves; write the run-out as its own block",
-                    b.line,
-                    w.text()
-                ));
-            }
-        }
-        if let Some(s) = t.block(b).map_err(|e| e.to_string())? {
+        if let Some(s) = t.block(b)? {
             out.push(s);
         }
     }
     Ok(out)
 }
 
-/// The vendor's toolpath from a CSV with a header `motion,x,z[,lead][,q]`.
-fn theirs_csv(text: &str, units: Units) -> Result<Vec<Step>, String> {
+/// The columns a CSV trace may have.
+const CSV_COLUMNS: [&str; 9] = ["motion", "x", "z", "lead", "q", "i", "k", "cx", "cz"];
+
+/// The vendor's toolpath from a CSV with a header naming its columns
+/// (`motion`, `x`, `z`; `lead`, `q`; `i`, `k` or `cx`, `cz` for arcs).
+fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, String> {
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
-    let Some((_, header)) = lines.next() else {
-        return Err("the CSV trace is empty".into());
+    let Some((h, header)) = lines.next() else {
+        return Ok(Vec::new());
     };
     let cols: Vec<String> = header.split(',').map(|c| c.trim().to_ascii_lowercase()).collect();
+    for (n, c) in cols.iter().enumerate() {
+        if !CSV_COLUMNS.contains(&c.as_str()) {
+            return Err(format!(
+                "CSV line {}: unknown column `{c}` (the columns are {})",
+                h + 1,
+                CSV_COLUMNS.join(", ")
+            ));
+        }
+        if cols[..n].contains(c) {
+            return Err(format!("CSV line {}: the column `{c}` appears twice", h + 1));
+        }
+    }
     let col = |name: &str| cols.iter().position(|c| c == name);
     let (Some(cm), Some(cx), Some(cz)) = (col("motion"), col("x"), col("z")) else {
-        return Err("the CSV header must name the columns motion, x and z (lead and q are optional)".into());
+        return Err(format!(
+            "CSV line {}: the header must name the columns motion, x and z (lead, q, i, k, cx and cz are optional)",
+            h + 1
+        ));
     };
     let (cl, cq) = (col("lead"), col("q"));
+    let (ci, ck, ccx, ccz) = (col("i"), col("k"), col("cx"), col("cz"));
     let mut out = Vec::new();
-    let mut at: Option<Point> = None;
+    let mut here: Option<Point> = None;
     let mut in_thread = false;
     for (i, line) in lines {
         let n = i + 1;
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
-        let get = |c: usize| f.get(c).copied().unwrap_or("");
-        let kind = match get(cm).to_ascii_lowercase().as_str() {
+        if f.len() > cols.len() {
+            return Err(format!("CSV line {n}: {} fields, the header names {}", f.len(), cols.len()));
+        }
+        let get = |c: Option<usize>| c.and_then(|c| f.get(c).copied()).filter(|s| !s.is_empty());
+        let motion = get(Some(cm)).unwrap_or("");
+        let kind = match motion.to_ascii_lowercase().as_str() {
             "rapid" | "g00" | "g0" => Kind::Rapid,
             "feed" | "g01" | "g1" => Kind::Feed,
             "thread" | "g32" => Kind::Thread,
-            "arc" | "g02" | "g03" | "g2" | "g3" => Kind::Arc,
-            other => {
-                return Err(format!("CSV line {n}: unknown motion `{other}` (rapid, feed, thread, arc)"))
+            "arc-cw" | "g02" | "g2" => Kind::ArcCw,
+            "arc-ccw" | "g03" | "g3" => Kind::ArcCcw,
+            "arc" => {
+                return Err(format!(
+                    "CSV line {n}: motion `arc` needs a direction: arc-cw (G02) or arc-ccw (G03)"
+                ))
+            }
+            _ => {
+                return Err(format!(
+                    "CSV line {n}: unknown motion `{motion}` (rapid, feed, thread, arc-cw, arc-ccw; or G00, G01, \
+                     G32, G02, G03)"
+                ))
             }
         };
-        let length = |s: &str, what: &str| -> Result<i64, String> {
-            let d = rust_decimal::Decimal::from_str_exact(s)
-                .map_err(|_| format!("CSV line {n}: {what} `{s}` is not a decimal"))?;
-            let v = d
-                .checked_mul(rust_decimal::Decimal::from(units.per_unit()))
-                .ok_or_else(|| format!("CSV line {n}: {what} `{s}` is out of range"))?;
+        let decimal = |s: &str, what: &str| -> Result<Decimal, String> {
+            let ok = !s.is_empty()
+                && s.trim_start_matches(['-', '+']).chars().all(|c| c.is_ascii_digit() || c == '.')
+                && s.trim_start_matches(['-', '+']).chars().any(|c| c.is_ascii_digit());
+            let d = if ok { Decimal::from_str_exact(s).ok() } else { None };
+            d.ok_or_else(|| format!("CSV line {n}: {what} `{s}` is not a decimal"))
+        };
+        // A length in increments times `factor`, exact, within the range table.
+        let length = |s: Option<&str>, what: &str, factor: i64| -> Result<i64, String> {
+            let s = s.ok_or_else(|| format!("CSV line {n}: {what} is missing"))?;
+            let out = || format!("CSV line {n}: {what} `{s}` is outside the range table");
+            let v = decimal(s, what)?
+                .checked_mul(Decimal::from(units.per_unit()))
+                .and_then(|v| v.checked_mul(Decimal::from(factor)))
+                .ok_or_else(out)?;
             if !v.fract().is_zero() {
                 return Err(format!("CSV line {n}: {what} `{s}` is not a whole number of increments"));
             }
-            i64::try_from(v.trunc()).map_err(|_| format!("CSV line {n}: {what} `{s}` is out of range"))
+            let v = i64::try_from(v.trunc()).map_err(|_| out())?;
+            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() * factor.unsigned_abs() {
+                return Err(out());
+            }
+            Ok(v)
         };
-        let to = Point::new(length(get(cx), "x")?, length(get(cz), "z")?);
-        let lead = match cl.map(get).filter(|s| !s.is_empty()) {
-            Some(s) => Some(
-                parse_lead(s).ok_or_else(|| format!("CSV line {n}: lead `{s}` (write F6.0, I20 or 6.0)"))?,
-            ),
+        let to = Point::new(length(get(Some(cx)), "x", 1)?, length(get(Some(cz)), "z", 1)?);
+        let lead = match get(cl) {
+            Some(s) if kind == Kind::Thread => Some(parse_lead(s).ok_or_else(|| {
+                format!("CSV line {n}: lead `{s}` (write F6.0, I20 or 6.0, within the range tables)")
+            })?),
+            Some(s) => return Err(format!("CSV line {n}: lead `{s}` on a row that is not a thread move")),
+            None if kind == Kind::Thread => return Err(format!("CSV line {n}: a thread row needs its lead")),
             None => None,
         };
-        let angle = match cq.map(get).filter(|s| !s.is_empty()) {
-            Some(s) => {
-                let d = rust_decimal::Decimal::from_str_exact(s).map_err(|_| {
-                    format!("CSV line {n}: q `{s}` is not a decimal (thousandths of a degree)")
-                })?;
-                let tenths = d
-                    .checked_mul(rust_decimal::Decimal::from(10))
-                    .ok_or_else(|| format!("CSV line {n}: q `{s}` out of range"))?;
-                if !tenths.fract().is_zero() || d.is_sign_negative() {
-                    return Err(format!(
-                        "CSV line {n}: q `{s}` must be a multiple of 0.1 thousandth of a degree"
-                    ));
-                }
-                let t = u32::try_from(tenths.trunc())
-                    .map_err(|_| format!("CSV line {n}: q `{s}` out of range"))?;
-                if t % 10 == 0 {
-                    StartAngle::from_millidegrees(u64::from(t / 10))
-                } else {
-                    StartAngle { num: t, den: 10 }
-                }
-            }
+        let angle = match get(cq) {
+            Some(s) if kind == Kind::Thread => csv_angle(s, n)?,
+            Some(s) => return Err(format!("CSV line {n}: q `{s}` on a row that is not a thread move")),
             None => StartAngle::ZERO,
         };
-        if at == Some(to) {
+        let relative = get(ci).is_some() || get(ck).is_some();
+        let absolute = get(ccx).is_some() || get(ccz).is_some();
+        let centre = match (kind.is_arc(), relative, absolute) {
+            (false, false, false) => None,
+            (false, _, _) => {
+                return Err(format!(
+                    "CSV line {n}: an arc centre on a row that is not an arc (arc-cw or arc-ccw)"
+                ))
+            }
+            (true, false, false) => {
+                return Err(format!(
+                    "CSV line {n}: an arc without a centre: give i and k, or cx and cz (reading R-CHECKARC)"
+                ))
+            }
+            (true, true, true) => {
+                return Err(format!("CSV line {n}: give the centre once: i and k, or cx and cz, not both"))
+            }
+            (true, true, false) => {
+                let Some(p) = here else {
+                    return Err(format!(
+                        "CSV line {n}: i and k are from the arc's start, and no earlier row gives it (use cx, cz)"
+                    ));
+                };
+                let di = match get(ci) {
+                    Some(s) => length(Some(s), "i", machine.x_mode.factor())?,
+                    None => 0,
+                };
+                let dk = match get(ck) {
+                    Some(s) => length(Some(s), "k", 1)?,
+                    None => 0,
+                };
+                Some(Point::new(p.x + di, p.z + dk))
+            }
+            (true, false, true) => Some(Point::new(length(get(ccx), "cx", 1)?, length(get(ccz), "cz", 1)?)),
+        };
+        if here == Some(to) {
             continue;
         }
-        at = Some(to);
+        let from = here;
+        here = Some(to);
         let sync = kind == Kind::Thread && !in_thread;
         in_thread = kind == Kind::Thread;
         let angle = if sync { angle } else { StartAngle::ZERO };
-        out.push(Step { kind, to, lead, angle, sync, context: Context::Source { line: n } });
+        out.push(Step { kind, from, to, centre, lead, angle, sync, context: Context::Source { line: n } });
     }
     Ok(out)
+}
+
+/// A CSV start angle: thousandths of a degree, multiples of 0.1, below 360°.
+fn csv_angle(s: &str, n: usize) -> Result<StartAngle, String> {
+    let bad =
+        || format!("CSV line {n}: q `{s}` must be 0 to 360000 thousandths of a degree, in steps of 0.1");
+    if !s.chars().all(|c| c.is_ascii_digit() || c == '.') || !s.chars().any(|c| c.is_ascii_digit()) {
+        return Err(bad());
+    }
+    let d = Decimal::from_str_exact(s).map_err(|_| bad())?;
+    let tenths = d.checked_mul(Decimal::from(10)).ok_or_else(bad)?;
+    if !tenths.fract().is_zero() || d > Decimal::from(360_000) {
+        return Err(bad());
+    }
+    let t = u32::try_from(tenths.trunc()).map_err(|_| bad())?;
+    Ok(if t % 10 == 0 {
+        StartAngle::from_millidegrees(u64::from(t / 10))
+    } else {
+        StartAngle { num: t, den: 10 }
+    })
 }
 
 fn parse_lead(s: &str) -> Option<Lead> {
@@ -375,8 +764,11 @@ fn parse_lead(s: &str) -> Option<Lead> {
     if !int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit()) || int.is_empty() && frac.is_empty() {
         return None;
     }
-    let mantissa = format!("{int}{frac}").trim_start_matches('0').parse().unwrap_or(0);
-    Some(Lead { word, mantissa, scale: u32::try_from(frac.len()).ok()? })
+    let digits = format!("{int}{frac}");
+    let digits = digits.trim_start_matches('0');
+    let mantissa = if digits.is_empty() { 0 } else { digits.parse().ok()? };
+    let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).ok()? };
+    lead.in_range().then_some(lead)
 }
 
 /// True when two leads are the same rate (F6 and F6.000; an F and an I of
@@ -398,6 +790,21 @@ fn same_lead(a: Option<Lead>, b: Option<Lead>, units: Units) -> bool {
 struct Group {
     rapids: Vec<Step>,
     cuts: Vec<Step>,
+}
+
+impl Group {
+    fn len(&self) -> usize {
+        self.rapids.len() + self.cuts.len()
+    }
+
+    /// This group and the next as one: the next one's rapids become moves
+    /// among the cuts (a rapid written for a cutting move splits a pass).
+    fn joined(&self, next: &Group) -> Group {
+        let mut cuts = self.cuts.clone();
+        cuts.extend_from_slice(&next.rapids);
+        cuts.extend_from_slice(&next.cuts);
+        Group { rapids: self.rapids.clone(), cuts }
+    }
 }
 
 fn groups(steps: &[Step]) -> Vec<Group> {
@@ -434,38 +841,77 @@ struct Divergence {
     moves: usize,
 }
 
+/// The two corners of a rapid from `p` to `q` split into an X and a Z move.
+fn corners(p: Point, q: Point) -> [Point; 2] {
+    [Point::new(q.x, p.z), Point::new(p.x, q.z)]
+}
+
 /// Compares a group of ours with a group of theirs; the differences.
-fn compare(a: &Group, b: &Group, tol: i64, units: Units) -> Vec<Divergence> {
+fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: &[Region]) -> Vec<Divergence> {
     let mut out = Vec::new();
-    let close = |p: Point, q: Point| (p.x - q.x).abs() <= tol && (p.z - q.z).abs() <= tol;
-    // Rapids: their points must be ours, each of ours possibly reached
-    // through one corner of an X-then-Z or Z-then-X split.
-    let mut j = 0;
-    let mut prev_ours: Option<Point> = None;
-    let mut prev_theirs: Option<Point> = None;
-    for r in &a.rapids {
-        match b.rapids.get(j) {
-            Some(t) if close(t.to, r.to) => j += 1,
-            Some(t) => {
-                let corner = match (prev_ours, prev_theirs) {
-                    (Some(p), Some(_)) => {
-                        close(t.to, Point::new(r.to.x, p.z)) || close(t.to, Point::new(p.x, r.to.z))
-                    }
-                    _ => false,
-                };
-                if corner && b.rapids.get(j + 1).is_some_and(|u| close(u.to, r.to)) {
-                    j += 2;
-                } else {
-                    out.push(Divergence { what: "rapid point", ours: Some(*r), theirs: Some(*t), moves: 1 });
-                    j += 1;
-                }
-            }
-            None => out.push(Divergence { what: "rapid point", ours: Some(*r), theirs: None, moves: 1 }),
+    let tol = i128::from(tol);
+    let close = |p: Point, q: Point| {
+        (i128::from(p.x) - i128::from(q.x)).abs() <= tol && (i128::from(p.z) - i128::from(q.z)).abs() <= tol
+    };
+    let through =
+        |p: Point, c: Point, q: Point| regions.iter().any(|r| r.crossed_by(p, c) || r.crossed_by(c, q));
+    let div = |what, o: &Step, t: &Step| Divergence { what, ours: Some(*o), theirs: Some(*t), moves: 1 };
+    // Rapids: their points must be ours. A rapid of ours may be reached
+    // through either corner of an X/Z split, and an X/Z split of ours may be
+    // made in the other order, as long as the legs stay out of the regions
+    // the cycles cut (R-CHECKSPLIT).
+    let (ra, rb) = (&a.rapids, &b.rapids);
+    let (mut i, mut j) = (0, 0);
+    while i < ra.len() {
+        let r = &ra[i];
+        let Some(t) = rb.get(j) else {
+            out.push(Divergence { what: "rapid point", ours: Some(*r), theirs: None, moves: 1 });
+            i += 1;
+            continue;
+        };
+        if close(t.to, r.to) {
+            i += 1;
+            j += 1;
+            continue;
         }
-        prev_ours = Some(r.to);
-        prev_theirs = b.rapids.get(j.saturating_sub(1)).map(|t| t.to);
+        let then = |p: Point| rb.get(j + 1).is_some_and(|u| close(u.to, p));
+        // A diagonal of ours, split by theirs.
+        if let Some(p) = r.from.filter(|p| p.x != r.to.x && p.z != r.to.z) {
+            if let Some(c) = corners(p, r.to).into_iter().find(|&c| close(t.to, c) && then(r.to)) {
+                if through(p, c, r.to) {
+                    out.push(div("rapid through the work", r, t));
+                }
+                i += 1;
+                j += 2;
+                continue;
+            }
+        }
+        // A split of ours (r is the corner of `p` to the next), made in
+        // the other order by theirs.
+        if let (Some(p), Some(n)) = (r.from, ra.get(i + 1)) {
+            let [c0, c1] = corners(p, n.to);
+            let other = if r.to == c0 && c0 != p && c0 != n.to {
+                Some(c1)
+            } else if r.to == c1 && c1 != p && c1 != n.to {
+                Some(c0)
+            } else {
+                None
+            };
+            if let Some(c) = other.filter(|&c| close(t.to, c) && then(n.to)) {
+                if through(p, c, n.to) {
+                    out.push(div("rapid through the work", r, t));
+                }
+                i += 2;
+                j += 2;
+                continue;
+            }
+        }
+        let crossed = t.from.is_some_and(|p| regions.iter().any(|g| g.crossed_by(p, t.to)));
+        out.push(div(if crossed { "rapid through the work" } else { "rapid point" }, r, t));
+        i += 1;
+        j += 1;
     }
-    for t in b.rapids.iter().skip(j) {
+    for t in rb.iter().skip(j) {
         out.push(Divergence { what: "extra rapid", ours: None, theirs: Some(*t), moves: 1 });
     }
     for (i, c) in a.cuts.iter().enumerate() {
@@ -473,19 +919,29 @@ fn compare(a: &Group, b: &Group, tol: i64, units: Units) -> Vec<Divergence> {
             out.push(Divergence { what: "missing move", ours: Some(*c), theirs: None, moves: 1 });
             continue;
         };
-        if c.kind != t.kind {
-            out.push(Divergence { what: "kind of move", ours: Some(*c), theirs: Some(*t), moves: 1 });
-        } else if !close(c.to, t.to) {
-            out.push(Divergence { what: "end point", ours: Some(*c), theirs: Some(*t), moves: 1 });
+        if c.kind != t.kind && !(c.kind.is_arc() && t.kind.is_arc()) {
+            out.push(div("kind of move", c, t));
+            continue;
         }
-        if c.kind == Kind::Thread && t.kind == Kind::Thread {
+        if c.kind != t.kind {
+            out.push(div("arc direction", c, t));
+        }
+        if !close(c.to, t.to) {
+            out.push(div("end point", c, t));
+        }
+        if let (Some(oc), Some(tc)) = (c.centre, t.centre) {
+            if !close(oc, tc) {
+                out.push(div("arc centre", c, t));
+            }
+        }
+        if c.kind == Kind::Thread {
             if !same_lead(c.lead, t.lead, units) {
-                out.push(Divergence { what: "lead", ours: Some(*c), theirs: Some(*t), moves: 1 });
+                out.push(div("lead", c, t));
             }
             if c.sync != t.sync {
-                out.push(Divergence { what: "synchronisation", ours: Some(*c), theirs: Some(*t), moves: 1 });
+                out.push(div("synchronisation", c, t));
             } else if c.sync && c.angle != t.angle {
-                out.push(Divergence { what: "start angle", ours: Some(*c), theirs: Some(*t), moves: 1 });
+                out.push(div("start angle", c, t));
             }
         }
     }
@@ -495,53 +951,124 @@ fn compare(a: &Group, b: &Group, tol: i64, units: Units) -> Vec<Divergence> {
     out
 }
 
-/// The result of a comparison.
-pub struct Report {
-    units: Units,
-    tolerance: u64,
-    ours_moves: usize,
-    theirs_moves: usize,
-    divergences: Vec<Divergence>,
+/// True when the only differences are kinds of move: a rapid written for a
+/// cutting move or the reverse, every point in its place.
+fn only_kinds(d: &[Divergence]) -> bool {
+    d.iter().all(|d| d.what == "kind of move")
 }
 
 /// The trace at `trace` as points to draw over our toolpath.
 pub fn overlay(job: &Job, trace: &Path) -> Result<crate::plot::Overlay, String> {
-    let steps = read_trace(job, trace)?;
+    let steps = read_trace(job, trace, job.validate()?.units)?;
     Ok(crate::plot::Overlay {
         name: trace.display().to_string(),
         points: steps.iter().map(|s| s.to).collect(),
     })
 }
 
-fn read_trace(job: &Job, trace: &Path) -> Result<Vec<Step>, String> {
-    let text = std::fs::read_to_string(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
-    let units = job.validate()?.units;
+/// Reads a trace: an expanded program, or a CSV (`.csv`). A trace without
+/// a move is an error whatever its format (reading R-CHECKEMPTY).
+fn read_trace(job: &Job, trace: &Path, units: Units) -> Result<Vec<Step>, String> {
+    let bytes = std::fs::read(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
     let is_csv = trace.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-    if is_csv { theirs_csv(&text, units) } else { theirs_nc(&text, &job.machine, units) }
-        .map_err(|e| format!("{}: {e}", trace.display()))
+    read_trace_bytes(&bytes, is_csv, &job.machine, units).map_err(|e| format!("{}: {e}", trace.display()))
+}
+
+/// Reads a trace from its bytes.
+fn read_trace_bytes(
+    bytes: &[u8],
+    is_csv: bool,
+    machine: &Machine,
+    units: Units,
+) -> Result<Vec<Step>, String> {
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        let line = bytes[..e.valid_up_to()].iter().filter(|&&b| b == b'\n').count() + 1;
+        let col =
+            e.valid_up_to() - bytes[..e.valid_up_to()].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
+        format!("line {line}, byte {}: not UTF-8 text", col + 1)
+    })?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let steps = if is_csv { theirs_csv(text, machine, units) } else { theirs_nc(text, machine, units) }?;
+    if steps.is_empty() {
+        return Err("the trace has no moves (reading R-CHECKEMPTY)".into());
+    }
+    Ok(steps)
 }
 
 /// Runs the comparison of `job`'s program with the trace at `trace`.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
     let units = job.validate()?.units;
     let ours = ours(job, &job.machine)?;
-    let theirs = read_trace(job, trace)?;
+    let regions = regions(job)?;
+    let theirs = read_trace(job, trace, units)?;
+    Ok(compare_steps(&ours, &theirs, &regions, units, tolerance))
+}
+
+/// The comparison of `job`'s program with a trace given as bytes (`.nc`
+/// text, or CSV when `is_csv`): what `run` does after reading the file.
+/// The fuzz target `check_trace` and the property tests call it.
+///
+/// # Errors
+///
+/// Our expansion's error, or the trace's, with its line.
+pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
+    let units = job.validate()?.units;
+    let ours = ours(job, &job.machine)?;
+    let regions = regions(job)?;
+    let theirs = read_trace_bytes(bytes, is_csv, &job.machine, units)?;
+    Ok(compare_steps(&ours, &theirs, &regions, units, tolerance))
+}
+
+fn compare_steps(ours: &[Step], theirs: &[Step], regions: &[Region], units: Units, tolerance: u64) -> Report {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
-    let (ga, gb) = (groups(&ours), groups(&theirs));
-    let divergences = align(&ga, &gb, tol, units);
-    Ok(Report { units, tolerance, ours_moves: ours.len(), theirs_moves: theirs.len(), divergences })
+    let (ga, gb) = (groups(ours), groups(theirs));
+    let divergences = align(&ga, &gb, tol, units, regions);
+    Report { units, tolerance, ours_moves: ours.len(), theirs_moves: theirs.len(), divergences }
+}
+
+/// One step of the alignment.
+#[derive(Clone, Copy)]
+enum Op {
+    /// Our group i against their group j.
+    Pair(usize, usize),
+    /// Our groups i.. (p of them) joined against their groups j.. (q).
+    Join {
+        i: usize,
+        p: usize,
+        j: usize,
+        q: usize,
+    },
+    Missing(usize),
+    Extra(usize),
+}
+
+/// The joins tried: one group of ours against two of theirs, two against
+/// one, two against two (a rapid written for a cutting move splits a pass
+/// or moves a pass boundary; the reverse joins them).
+const JOINS: [(usize, usize); 3] = [(1, 2), (2, 1), (2, 2)];
+
+/// Groups joined into one: the later groups' rapids become moves among
+/// the cuts.
+fn joined(gs: &[Group]) -> Group {
+    let mut out = Group { rapids: Vec::new(), cuts: Vec::new() };
+    for (n, g) in gs.iter().enumerate() {
+        out = if n == 0 { g.clone() } else { out.joined(g) };
+    }
+    out
 }
 
 /// Aligns the groups by edit distance (a match costs 0, a substitution 1,
-/// a missing or extra group 1) and lists the differences in our order.
-fn align(a: &[Group], b: &[Group], tol: i64, units: Units) -> Vec<Divergence> {
+/// a missing or extra group 1, a join of groups that differ only in kinds
+/// of move 1) and lists the differences in our order.
+fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -> Vec<Divergence> {
     let (n, m) = (a.len(), b.len());
+    let cmp = |x: &Group, y: &Group| compare(x, y, tol, units, regions);
     // Beyond this size a quadratic table is too big: compare in order.
     if n.saturating_mul(m) > 25_000_000 {
         let mut out = Vec::new();
         for i in 0..n.max(m) {
             match (a.get(i), b.get(i)) {
-                (Some(x), Some(y)) => out.extend(compare(x, y, tol, units)),
+                (Some(x), Some(y)) => out.extend(cmp(x, y)),
                 (Some(x), None) => out.push(missing(x)),
                 (None, Some(y)) => out.push(extra(y)),
                 (None, None) => {}
@@ -549,19 +1076,36 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units) -> Vec<Divergence> {
         }
         return out;
     }
-    let equal: Vec<Vec<bool>> =
-        a.iter().map(|x| b.iter().map(|y| compare(x, y, tol, units).is_empty()).collect()).collect();
+    let equal: Vec<Vec<bool>> = a.iter().map(|x| b.iter().map(|y| cmp(x, y).is_empty()).collect()).collect();
+    // A join of our groups i..i+p with their j..j+q, only where the sizes
+    // fit (the cheap test first).
+    let join = |i: usize, p: usize, j: usize, q: usize| {
+        let (x, y) = (&a[i..i + p], &b[j..j + q]);
+        x.iter().map(Group::len).sum::<usize>() == y.iter().map(Group::len).sum::<usize>()
+            && x[0].rapids.len() == y[0].rapids.len()
+            && only_kinds(&cmp(&joined(x), &joined(y)))
+    };
+    let big = u32::MAX / 2;
     let mut cost = vec![vec![0_u32; m + 1]; n + 1];
     for (i, row) in cost.iter_mut().enumerate() {
-        row[0] = u32::try_from(i).unwrap_or(u32::MAX);
+        row[0] = u32::try_from(i).unwrap_or(big);
     }
     for (j, c) in cost[0].iter_mut().enumerate() {
-        *c = u32::try_from(j).unwrap_or(u32::MAX);
+        *c = u32::try_from(j).unwrap_or(big);
     }
+    // The join that reached a cell, if one did.
+    let mut via = vec![vec![None::<(usize, usize)>; m + 1]; n + 1];
     for i in 1..=n {
         for j in 1..=m {
             let sub = cost[i - 1][j - 1] + u32::from(!equal[i - 1][j - 1]);
-            cost[i][j] = sub.min(cost[i - 1][j] + 1).min(cost[i][j - 1] + 1);
+            let mut c = sub.min(cost[i - 1][j] + 1).min(cost[i][j - 1] + 1);
+            for (p, q) in JOINS {
+                if i >= p && j >= q && cost[i - p][j - q] + 1 < c && join(i - p, p, j - q, q) {
+                    via[i][j] = Some((p, q));
+                    c = cost[i - p][j - q] + 1;
+                }
+            }
+            cost[i][j] = c;
         }
     }
     // Walk back.
@@ -571,15 +1115,19 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units) -> Vec<Divergence> {
     // equal cost: when passes repeat (finishing passes), the one reported
     // missing is the last, where a trace that stops early stops.
     while i > 0 || j > 0 {
-        if i > 0 && cost[i][j] == cost[i - 1][j] + 1 {
-            ops.push((Some(i - 1), None));
+        if let Some((p, q)) = via[i][j] {
+            ops.push(Op::Join { i: i - p, p, j: j - q, q });
+            i -= p;
+            j -= q;
+        } else if i > 0 && cost[i][j] == cost[i - 1][j] + 1 {
+            ops.push(Op::Missing(i - 1));
             i -= 1;
         } else if i > 0 && j > 0 && cost[i][j] == cost[i - 1][j - 1] + u32::from(!equal[i - 1][j - 1]) {
-            ops.push((Some(i - 1), Some(j - 1)));
+            ops.push(Op::Pair(i - 1, j - 1));
             i -= 1;
             j -= 1;
         } else {
-            ops.push((None, Some(j - 1)));
+            ops.push(Op::Extra(j - 1));
             j -= 1;
         }
     }
@@ -587,10 +1135,10 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units) -> Vec<Divergence> {
     let mut out = Vec::new();
     for op in ops {
         match op {
-            (Some(x), Some(y)) => out.extend(compare(&a[x], &b[y], tol, units)),
-            (Some(x), None) => out.push(missing(&a[x])),
-            (None, Some(y)) => out.push(extra(&b[y])),
-            (None, None) => {}
+            Op::Pair(x, y) => out.extend(cmp(&a[x], &b[y])),
+            Op::Join { i, p, j, q } => out.extend(cmp(&joined(&a[i..i + p]), &joined(&b[j..j + q]))),
+            Op::Missing(x) => out.push(missing(&a[x])),
+            Op::Extra(y) => out.push(extra(&b[y])),
         }
     }
     out
@@ -601,16 +1149,11 @@ fn first_step(g: &Group) -> Option<Step> {
 }
 
 fn missing(g: &Group) -> Divergence {
-    Divergence {
-        what: "missing pass",
-        ours: first_step(g),
-        theirs: None,
-        moves: g.rapids.len() + g.cuts.len(),
-    }
+    Divergence { what: "missing pass", ours: first_step(g), theirs: None, moves: g.len() }
 }
 
 fn extra(g: &Group) -> Divergence {
-    Divergence { what: "extra pass", ours: None, theirs: first_step(g), moves: g.rapids.len() + g.cuts.len() }
+    Divergence { what: "extra pass", ours: None, theirs: first_step(g), moves: g.len() }
 }
 
 /// The point a move ends at, in the manual's terms.
@@ -636,6 +1179,15 @@ fn point_name(c: Context, kind: Kind) -> &'static str {
             _ => "end point",
         },
     }
+}
+
+/// The result of a comparison.
+pub struct Report {
+    units: Units,
+    tolerance: u64,
+    ours_moves: usize,
+    theirs_moves: usize,
+    divergences: Vec<Divergence>,
 }
 
 impl Report {
@@ -711,6 +1263,23 @@ impl Report {
                             Self::theirs_line(t)
                         );
                     }
+                    "arc centre" => {
+                        let c = |s: &Step| s.centre.map_or("none".into(), |c| self.point(c));
+                        let _ =
+                            writeln!(out, "  ours   {} {} centre {}", o.kind.name(), self.point(o.to), c(o));
+                        let _ = writeln!(
+                            out,
+                            "  theirs {} {} centre {} (trace line {})",
+                            t.kind.name(),
+                            self.point(t.to),
+                            c(t),
+                            Self::theirs_line(t)
+                        );
+                        if let (Some(oc), Some(tc)) = (o.centre, t.centre) {
+                            let (dx, dz) = diff(oc, tc);
+                            let _ = writeln!(out, "  difference of the centres: X {dx} Z {dz} increments");
+                        }
+                    }
                     _ => {
                         let _ = writeln!(out, "  ours   {} {}", o.kind.name(), self.point(o.to));
                         let _ = writeln!(
@@ -720,12 +1289,8 @@ impl Report {
                             self.point(t.to),
                             Self::theirs_line(t)
                         );
-                        let _ = writeln!(
-                            out,
-                            "  difference: X {} Z {} increments",
-                            t.to.x - o.to.x,
-                            t.to.z - o.to.z
-                        );
+                        let (dx, dz) = diff(o.to, t.to);
+                        let _ = writeln!(out, "  difference: X {dx} Z {dz} increments");
                     }
                 }
             }
@@ -799,6 +1364,9 @@ impl Report {
             "x": fixed(s.to.x, self.units),
             "z": fixed(s.to.z, self.units),
         });
+        if let Some(c) = s.centre {
+            v["centre"] = json!({"x": fixed(c.x, self.units), "z": fixed(c.z, self.units)});
+        }
         if let Some(l) = s.lead {
             v["lead"] = json!(crate::format::lead_word(l));
         }
@@ -848,7 +1416,12 @@ impl Report {
                     v["theirs"] = self.step_json(t);
                 }
                 if let (Some(o), Some(t)) = (&d.ours, &d.theirs) {
-                    v["difference_increments"] = json!({"x": t.to.x - o.to.x, "z": t.to.z - o.to.z});
+                    let (dx, dz) = diff(o.to, t.to);
+                    v["difference_increments"] = json!({"x": sat(dx), "z": sat(dz)});
+                    if let (Some(oc), Some(tc)) = (o.centre, t.centre) {
+                        let (dx, dz) = diff(oc, tc);
+                        v["centre_difference_increments"] = json!({"x": sat(dx), "z": sat(dz)});
+                    }
                 }
                 v
             })
@@ -865,4 +1438,13 @@ impl Report {
         s.push('\n');
         s
     }
+}
+
+/// `q - p` per axis, exactly.
+fn diff(p: Point, q: Point) -> (i128, i128) {
+    (i128::from(q.x) - i128::from(p.x), i128::from(q.z) - i128::from(p.z))
+}
+
+fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
