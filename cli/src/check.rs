@@ -28,10 +28,15 @@ use std::path::Path;
 
 use cycleref::units::MAX_LENGTH;
 use cycleref::{InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units};
-use cycleref_spec::lex::{lex, Block, Word};
+use std::collections::VecDeque;
+use std::io::BufRead;
+
+use cycleref_spec::lex::{Block, Lexer, Word};
 use cycleref_spec::pipeline::Cycle;
+use cycleref_spec::pipeline::Moves;
 use cycleref_spec::reader::{length_word, q_word, Item};
 use cycleref_spec::Machine;
+use cycleref_spec::Reader;
 use rust_decimal::Decimal;
 use serde_json::{json, Value};
 
@@ -453,13 +458,12 @@ impl Region {
     }
 }
 
-/// The regions the program's cycles cut (reading R-CHECKSPLIT).
-fn regions(job: &Job) -> Result<Vec<Region>, String> {
-    let program = job.program()?;
+/// The regions a cycle cuts (reading R-CHECKSPLIT).
+fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
     let mut out = Vec::new();
-    for item in &program.items {
-        match item {
-            Item::G76(call) => {
+    {
+        match cycle {
+            Cycle::G76(call) => {
                 let c = &call.cycle;
                 let f = i128::from(c.x_mode.factor());
                 let (dx, dz) = (i128::from(c.end.x), i128::from(c.end.z));
@@ -484,7 +488,7 @@ fn regions(job: &Job) -> Result<Vec<Region>, String> {
                 let zs = i128::from(zs.unwrap_or(c.start.z));
                 out.extend(Region::spanning(&[(dx, dz), (cx, zs), (dx + crest, dz), (cx + crest, zs)]));
             }
-            Item::G32(call) => {
+            Cycle::G32(call) => {
                 // No thread height: the box the cut itself spans (a taper's).
                 let g = &call.g32;
                 let moves: Vec<Move> = job.expand(Cycle::G32(call))?.collect();
@@ -496,7 +500,7 @@ fn regions(job: &Job) -> Result<Vec<Region>, String> {
                     ]));
                 }
             }
-            Item::G75(call) => {
+            Cycle::G75(call) => {
                 let c = &call.cycle;
                 let p = cycleref::groove_profile(c)
                     .map_err(|e| format!("{}: line {}, G75.1: {e}", job.name, call.block.line))?;
@@ -519,71 +523,183 @@ fn regions(job: &Job) -> Result<Vec<Region>, String> {
                 }
                 out.extend(Region::spanning(&pts));
             }
-            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
         }
     }
     Ok(out)
 }
 
-/// Our toolpath: the program's motion blocks and its expanded cycles.
-fn ours(job: &Job, machine: &Machine) -> Result<Vec<Step>, String> {
-    let program = job.program()?;
-    let mut t = Tracker::new(machine, program.units, false);
-    let mut out = Vec::new();
-    for item in &program.items {
-        match item {
-            Item::Source(b) => {
-                if let Some(s) = t.block(b).map_err(|e| format!("{}: {e}", job.name))? {
-                    out.push(s);
-                }
-            }
-            Item::G76Params(_) => {}
-            Item::G76(call) => {
-                let line = call.block.line;
-                for m in job.expand(Cycle::G76(call))? {
-                    let pass = m.pass.unwrap_or(Pass {
-                        kind: PassKind::Rough,
-                        number: 0,
-                        start: 0,
-                        depth: 0,
-                        cut: 0,
-                        flank: cycleref::Flank::Right,
-                    });
-                    out.push(t.inject(&m, Context::G76 { line, pass, role: m.role }));
-                }
-                // G76 is one-shot: the motion mode before it is in force again.
-                t.restore(call.restore.motion);
-            }
-            Item::G32(call) => {
-                let line = call.block.line;
-                for m in job.expand(Cycle::G32(call))? {
-                    out.push(t.inject(&m, Context::G32 { line, role: m.role }));
-                }
-            }
-            Item::G75Params(_) => {}
-            Item::G75(call) => {
-                let line = call.block.line;
-                for m in job.expand(Cycle::G75(call))? {
-                    out.push(t.inject(&m, Context::G75 { line, role: m.role }));
-                }
-                t.restore(call.restore.motion);
-            }
-        }
-    }
-    Ok(out)
+/// How many cycles' regions are kept for judging split rapids: the cycle
+/// being compared and its neighbours.
+const REGION_CYCLES: usize = 3;
+
+/// The cycle whose moves are being taken.
+struct Running {
+    moves: Moves,
+    line: usize,
+    code: &'static str,
+    restore: Option<&'static str>,
 }
 
-/// The vendor's toolpath from an expanded program.
-fn theirs_nc(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, String> {
-    let blocks = lex(text).map_err(|e| e.to_string())?;
-    let mut t = Tracker::new(machine, units, true);
-    let mut out = Vec::new();
-    for b in &blocks {
-        if let Some(s) = t.block(b)? {
-            out.push(s);
+/// Our toolpath, a step at a time: the program's motion blocks and its
+/// expanded cycles, each step with the number of the segment it belongs to
+/// (a cycle, or the blocks between two cycles).
+struct OurSteps<'j> {
+    job: &'j Job,
+    reader: Reader<'j, 'j>,
+    tracker: Tracker<'j>,
+    current: Option<Running>,
+    segment: u32,
+    /// The regions of the latest cycles.
+    regions: VecDeque<Vec<Region>>,
+}
+
+impl<'j> OurSteps<'j> {
+    fn new(job: &'j Job, units: Units) -> OurSteps<'j> {
+        OurSteps {
+            job,
+            reader: job.reader(),
+            tracker: Tracker::new(&job.machine, units, false),
+            current: None,
+            segment: 0,
+            regions: VecDeque::new(),
         }
     }
-    Ok(out)
+
+    fn step(&mut self) -> Option<Result<(Step, u32), String>> {
+        loop {
+            if let Some(run) = &mut self.current {
+                if let Some(m) = run.moves.next() {
+                    let (line, role) = (run.line, m.role);
+                    let context = match run.code {
+                        "G76" => {
+                            let pass = m.pass.unwrap_or(Pass {
+                                kind: PassKind::Rough,
+                                number: 0,
+                                start: 0,
+                                depth: 0,
+                                cut: 0,
+                                flank: cycleref::Flank::Right,
+                            });
+                            Context::G76 { line, pass, role }
+                        }
+                        "G32" => Context::G32 { line, role },
+                        _ => Context::G75 { line, role },
+                    };
+                    return Some(Ok((self.tracker.inject(&m, context), self.segment)));
+                }
+                // G76 and G75.1 are one-shot: the motion mode before them is
+                // in force again.
+                if run.code != "G32" {
+                    self.tracker.restore(run.restore);
+                }
+                self.current = None;
+                self.segment += 1;
+                continue;
+            }
+            let item = match self.reader.next()? {
+                Ok(item) => item,
+                Err(e) => return Some(Err(format!("{}: {e}", self.job.name))),
+            };
+            let Some(cycle) = Cycle::of(&item) else {
+                let Item::Source(b) = &item else { continue };
+                match self.tracker.block(b) {
+                    Ok(Some(s)) => return Some(Ok((s, self.segment))),
+                    Ok(None) => continue,
+                    Err(e) => return Some(Err(format!("{}: {e}", self.job.name))),
+                }
+            };
+            let started = regions_of(self.job, cycle).and_then(|r| Ok((r, self.job.expand(cycle)?)));
+            let (regions, moves) = match started {
+                Ok(v) => v,
+                Err(e) => return Some(Err(e)),
+            };
+            if self.regions.len() == REGION_CYCLES {
+                self.regions.pop_front();
+            }
+            self.regions.push_back(regions);
+            self.segment += 1;
+            self.current = Some(Running {
+                moves,
+                line: cycle.line(),
+                code: cycle.code(),
+                restore: cycle.restore().motion,
+            });
+        }
+    }
+}
+
+impl Iterator for OurSteps<'_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.step()
+    }
+}
+
+/// One line of a trace read from a stream, checked to be UTF-8 (the
+/// line end removed); `None` at the end.
+fn trace_line<'b>(
+    source: &mut dyn BufRead,
+    buf: &'b mut Vec<u8>,
+    line: usize,
+) -> Option<Result<&'b str, String>> {
+    buf.clear();
+    match source.read_until(b'\n', buf) {
+        Ok(0) => return None,
+        Ok(_) => {}
+        Err(e) => return Some(Err(format!("line {line}: {e}"))),
+    }
+    if buf.last() == Some(&b'\n') {
+        buf.pop();
+    }
+    let text = match std::str::from_utf8(buf) {
+        Ok(t) => t,
+        Err(e) => return Some(Err(format!("line {line}, byte {}: not UTF-8 text", e.valid_up_to() + 1))),
+    };
+    // A byte-order mark may start the first line.
+    Some(Ok(if line == 1 { text.strip_prefix('\u{feff}').unwrap_or(text) } else { text }))
+}
+
+/// The vendor's toolpath from an expanded program, read a line at a time.
+struct NcTrace<'t, 'm> {
+    source: Box<dyn BufRead + 't>,
+    buf: Vec<u8>,
+    line: usize,
+    tracker: Tracker<'m>,
+    /// The steps of the current line (a line may hold several blocks).
+    ready: VecDeque<Step>,
+}
+
+impl NcTrace<'_, '_> {
+    /// Reads lines until one moves; false at the end.
+    fn fill(&mut self) -> Result<bool, String> {
+        while self.ready.is_empty() {
+            self.line += 1;
+            let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
+                None => return Ok(false),
+                Some(t) => t?,
+            };
+            for b in Lexer::at_line(text.as_bytes(), self.line) {
+                let b = b.map_err(|e| e.to_string())?;
+                if let Some(s) = self.tracker.block(&b)? {
+                    self.ready.push_back(s);
+                }
+            }
+        }
+        Ok(true)
+    }
+}
+
+impl Iterator for NcTrace<'_, '_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        match self.fill() {
+            Ok(true) => self.ready.pop_front().map(|s| Ok((s, 0))),
+            Ok(false) => None,
+            Err(e) => Some(Err(e)),
+        }
+    }
 }
 
 /// The columns a CSV trace may have.
@@ -591,44 +707,99 @@ const CSV_COLUMNS: [&str; 9] = ["motion", "x", "z", "lead", "q", "i", "k", "cx",
 
 /// The vendor's toolpath from a CSV with a header naming its columns
 /// (`motion`, `x`, `z`; `lead`, `q`; `i`, `k` or `cx`, `cz` for arcs).
-fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, String> {
-    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
-    let Some((h, header)) = lines.next() else {
-        return Ok(Vec::new());
-    };
-    let cols: Vec<String> = header.split(',').map(|c| c.trim().to_ascii_lowercase()).collect();
-    for (n, c) in cols.iter().enumerate() {
-        if !CSV_COLUMNS.contains(&c.as_str()) {
+struct CsvTrace<'t, 'm> {
+    source: Box<dyn BufRead + 't>,
+    buf: Vec<u8>,
+    line: usize,
+    machine: &'m Machine,
+    units: Units,
+    cols: Vec<String>,
+    cm: usize,
+    cx: usize,
+    cz: usize,
+    cl: Option<usize>,
+    cq: Option<usize>,
+    ci: Option<usize>,
+    ck: Option<usize>,
+    ccx: Option<usize>,
+    ccz: Option<usize>,
+    here: Option<Point>,
+    in_thread: bool,
+}
+
+impl<'t, 'm> CsvTrace<'t, 'm> {
+    /// The trace after its header (an empty text has no header and no rows).
+    fn new(
+        mut source: Box<dyn BufRead + 't>,
+        machine: &'m Machine,
+        units: Units,
+    ) -> Result<CsvTrace<'t, 'm>, String> {
+        let mut buf = Vec::new();
+        let mut cols = vec!["motion".to_string(), "x".into(), "z".into()];
+        let mut h = 0;
+        while let Some(l) = trace_line(&mut *source, &mut buf, h + 1) {
+            let l = l?;
+            if !l.trim().is_empty() {
+                cols = Self::columns(h, l)?;
+                break;
+            }
+            h += 1;
+        }
+        let col = |name: &str| cols.iter().position(|c| c == name);
+        let (Some(cm), Some(cx), Some(cz)) = (col("motion"), col("x"), col("z")) else {
             return Err(format!(
-                "CSV line {}: unknown column `{c}` (the columns are {})",
-                h + 1,
-                CSV_COLUMNS.join(", ")
+                "CSV line {}: the header must name the columns motion, x and z (lead, q, i, k, cx and cz are optional)",
+                h + 1
             ));
-        }
-        if cols[..n].contains(c) {
-            return Err(format!("CSV line {}: the column `{c}` appears twice", h + 1));
-        }
+        };
+        let (cl, cq, ci, ck, ccx, ccz) = (col("lead"), col("q"), col("i"), col("k"), col("cx"), col("cz"));
+        Ok(CsvTrace {
+            source,
+            buf,
+            line: h + 1,
+            machine,
+            units,
+            cols,
+            cm,
+            cx,
+            cz,
+            cl,
+            cq,
+            ci,
+            ck,
+            ccx,
+            ccz,
+            here: None,
+            in_thread: false,
+        })
     }
-    let col = |name: &str| cols.iter().position(|c| c == name);
-    let (Some(cm), Some(cx), Some(cz)) = (col("motion"), col("x"), col("z")) else {
-        return Err(format!(
-            "CSV line {}: the header must name the columns motion, x and z (lead, q, i, k, cx and cz are optional)",
-            h + 1
-        ));
-    };
-    let (cl, cq) = (col("lead"), col("q"));
-    let (ci, ck, ccx, ccz) = (col("i"), col("k"), col("cx"), col("cz"));
-    let mut out = Vec::new();
-    let mut here: Option<Point> = None;
-    let mut in_thread = false;
-    for (i, line) in lines {
-        let n = i + 1;
+
+    /// The columns the header at line `h` (0-based) names.
+    fn columns(h: usize, header: &str) -> Result<Vec<String>, String> {
+        let cols: Vec<String> = header.split(',').map(|c| c.trim().to_ascii_lowercase()).collect();
+        for (n, c) in cols.iter().enumerate() {
+            if !CSV_COLUMNS.contains(&c.as_str()) {
+                return Err(format!(
+                    "CSV line {}: unknown column `{c}` (the columns are {})",
+                    h + 1,
+                    CSV_COLUMNS.join(", ")
+                ));
+            }
+            if cols[..n].contains(c) {
+                return Err(format!("CSV line {}: the column `{c}` appears twice", h + 1));
+            }
+        }
+        Ok(cols)
+    }
+
+    /// The step of CSV line `n` (1-based), if it moves.
+    fn row(&mut self, n: usize, line: &str) -> Result<Option<Step>, String> {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
-        if f.len() > cols.len() {
-            return Err(format!("CSV line {n}: {} fields, the header names {}", f.len(), cols.len()));
+        if f.len() > self.cols.len() {
+            return Err(format!("CSV line {n}: {} fields, the header names {}", f.len(), self.cols.len()));
         }
         let get = |c: Option<usize>| c.and_then(|c| f.get(c).copied()).filter(|s| !s.is_empty());
-        let motion = get(Some(cm)).unwrap_or("");
+        let motion = get(Some(self.cm)).unwrap_or("");
         let kind = match motion.to_ascii_lowercase().as_str() {
             "rapid" | "g00" | "g0" => Kind::Rapid,
             "feed" | "g01" | "g1" => Kind::Feed,
@@ -642,9 +813,9 @@ fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, 
             }
             _ => {
                 return Err(format!(
-                    "CSV line {n}: unknown motion `{motion}` (rapid, feed, thread, arc-cw, arc-ccw; or G00, G01, \
-                     G32, G02, G03)"
-                ))
+                "CSV line {n}: unknown motion `{motion}` (rapid, feed, thread, arc-cw, arc-ccw; or G00, G01, \
+                 G32, G02, G03)"
+            ))
             }
         };
         let decimal = |s: &str, what: &str| -> Result<Decimal, String> {
@@ -659,7 +830,7 @@ fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, 
             let s = s.ok_or_else(|| format!("CSV line {n}: {what} is missing"))?;
             let out = || format!("CSV line {n}: {what} `{s}` is outside the range table");
             let v = decimal(s, what)?
-                .checked_mul(Decimal::from(units.per_unit()))
+                .checked_mul(Decimal::from(self.units.per_unit()))
                 .and_then(|v| v.checked_mul(Decimal::from(factor)))
                 .ok_or_else(out)?;
             if !v.fract().is_zero() {
@@ -671,8 +842,8 @@ fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, 
             }
             Ok(v)
         };
-        let to = Point::new(length(get(Some(cx)), "x", 1)?, length(get(Some(cz)), "z", 1)?);
-        let lead = match get(cl) {
+        let to = Point::new(length(get(Some(self.cx)), "x", 1)?, length(get(Some(self.cz)), "z", 1)?);
+        let lead = match get(self.cl) {
             Some(s) if kind == Kind::Thread => Some(parse_lead(s).ok_or_else(|| {
                 format!("CSV line {n}: lead `{s}` (write F6.0, I20 or 6.0, within the range tables)")
             })?),
@@ -680,13 +851,13 @@ fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, 
             None if kind == Kind::Thread => return Err(format!("CSV line {n}: a thread row needs its lead")),
             None => None,
         };
-        let angle = match get(cq) {
+        let angle = match get(self.cq) {
             Some(s) if kind == Kind::Thread => csv_angle(s, n)?,
             Some(s) => return Err(format!("CSV line {n}: q `{s}` on a row that is not a thread move")),
             None => StartAngle::ZERO,
         };
-        let relative = get(ci).is_some() || get(ck).is_some();
-        let absolute = get(ccx).is_some() || get(ccz).is_some();
+        let relative = get(self.ci).is_some() || get(self.ck).is_some();
+        let absolute = get(self.ccx).is_some() || get(self.ccz).is_some();
         let centre = match (kind.is_arc(), relative, absolute) {
             (false, false, false) => None,
             (false, _, _) => {
@@ -703,34 +874,57 @@ fn theirs_csv(text: &str, machine: &Machine, units: Units) -> Result<Vec<Step>, 
                 return Err(format!("CSV line {n}: give the centre once: i and k, or cx and cz, not both"))
             }
             (true, true, false) => {
-                let Some(p) = here else {
+                let Some(p) = self.here else {
                     return Err(format!(
-                        "CSV line {n}: i and k are from the arc's start, and no earlier row gives it (use cx, cz)"
-                    ));
+                    "CSV line {n}: i and k are from the arc's start, and no earlier row gives it (use cx, cz)"
+                ));
                 };
-                let di = match get(ci) {
-                    Some(s) => length(Some(s), "i", machine.x_mode.factor())?,
+                let di = match get(self.ci) {
+                    Some(s) => length(Some(s), "i", self.machine.x_mode.factor())?,
                     None => 0,
                 };
-                let dk = match get(ck) {
+                let dk = match get(self.ck) {
                     Some(s) => length(Some(s), "k", 1)?,
                     None => 0,
                 };
                 Some(Point::new(p.x + di, p.z + dk))
             }
-            (true, false, true) => Some(Point::new(length(get(ccx), "cx", 1)?, length(get(ccz), "cz", 1)?)),
+            (true, false, true) => {
+                Some(Point::new(length(get(self.ccx), "cx", 1)?, length(get(self.ccz), "cz", 1)?))
+            }
         };
-        if here == Some(to) {
-            continue;
+        if self.here == Some(to) {
+            return Ok(None);
         }
-        let from = here;
-        here = Some(to);
-        let sync = kind == Kind::Thread && !in_thread;
-        in_thread = kind == Kind::Thread;
+        let from = self.here;
+        self.here = Some(to);
+        let sync = kind == Kind::Thread && !self.in_thread;
+        self.in_thread = kind == Kind::Thread;
         let angle = if sync { angle } else { StartAngle::ZERO };
-        out.push(Step { kind, from, to, centre, lead, angle, sync, context: Context::Source { line: n } });
+        Ok(Some(Step { kind, from, to, centre, lead, angle, sync, context: Context::Source { line: n } }))
     }
-    Ok(out)
+}
+
+impl Iterator for CsvTrace<'_, '_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            self.line += 1;
+            let mut buf = std::mem::take(&mut self.buf);
+            let row = match trace_line(&mut *self.source, &mut buf, self.line)? {
+                Err(e) => Err(e),
+                Ok(line) if line.trim().is_empty() => Ok(None),
+                Ok(line) => self.row(self.line, line),
+            };
+            self.buf = buf;
+            match row {
+                Ok(Some(s)) => return Some(Ok((s, 0))),
+                Ok(None) => {}
+                Err(e) => return Some(Err(e)),
+            }
+        }
+    }
 }
 
 /// A CSV start angle: thousandths of a degree, multiples of 0.1, below 360°.
@@ -805,27 +999,6 @@ impl Group {
         cuts.extend_from_slice(&next.cuts);
         Group { rapids: self.rapids.clone(), cuts }
     }
-}
-
-fn groups(steps: &[Step]) -> Vec<Group> {
-    let mut out: Vec<Group> = Vec::new();
-    for s in steps {
-        let new = match out.last() {
-            None => true,
-            Some(g) => s.kind == Kind::Rapid && !g.cuts.is_empty(),
-        };
-        if new {
-            out.push(Group { rapids: Vec::new(), cuts: Vec::new() });
-        }
-        if let Some(g) = out.last_mut() {
-            if s.kind == Kind::Rapid {
-                g.rapids.push(*s);
-            } else {
-                g.cuts.push(*s);
-            }
-        }
-    }
-    out
 }
 
 /// One difference between the toolpaths.
@@ -959,53 +1132,74 @@ fn only_kinds(d: &[Divergence]) -> bool {
 
 /// The trace at `trace` as points to draw over our toolpath.
 pub fn overlay(job: &Job, trace: &Path) -> Result<crate::plot::Overlay, String> {
-    let steps = read_trace(job, trace, job.validate()?.units)?;
-    Ok(crate::plot::Overlay {
-        name: trace.display().to_string(),
-        points: steps.iter().map(|s| s.to).collect(),
+    let units = job.validate()?.units;
+    let (name, source) = open_trace(trace)?;
+    let mut points = Vec::new();
+    for step in trace_steps(source, is_csv(trace), &job.machine, units).map_err(|e| format!("{name}: {e}"))? {
+        points.push(step.map_err(|e| format!("{name}: {e}"))?.0.to);
+    }
+    Ok(crate::plot::Overlay { name, points })
+}
+
+/// True when the trace at `trace` is a CSV (by its extension).
+fn is_csv(trace: &Path) -> bool {
+    trace.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"))
+}
+
+/// The trace's name and a buffered reader of it (`-`: standard input).
+fn open_trace(trace: &Path) -> Result<(String, Box<dyn BufRead>), String> {
+    if trace == Path::new("-") {
+        return Ok((crate::job::STDIN_NAME.to_string(), Box::new(std::io::stdin().lock())));
+    }
+    let file = std::fs::File::open(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
+    Ok((trace.display().to_string(), Box::new(std::io::BufReader::with_capacity(1 << 16, file))))
+}
+
+/// Steps with their segments, read as they are taken.
+type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), String>> + 't>;
+
+/// The vendor's steps, read as they are taken from `source`: an expanded
+/// program, or a CSV. The text must be UTF-8 (a byte-order mark is
+/// skipped).
+fn trace_steps<'t, 'm: 't>(
+    source: Box<dyn BufRead + 't>,
+    is_csv: bool,
+    machine: &'m Machine,
+    units: Units,
+) -> Result<TraceSteps<'t>, String> {
+    Ok(if is_csv {
+        Box::new(CsvTrace::new(source, machine, units)?)
+    } else {
+        Box::new(NcTrace {
+            source,
+            buf: Vec::new(),
+            line: 0,
+            tracker: Tracker::new(machine, units, true),
+            ready: VecDeque::new(),
+        })
     })
 }
 
-/// Reads a trace: an expanded program, or a CSV (`.csv`). A trace without
-/// a move is an error whatever its format (reading R-CHECKEMPTY).
-fn read_trace(job: &Job, trace: &Path, units: Units) -> Result<Vec<Step>, String> {
-    let bytes = std::fs::read(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
-    let is_csv = trace.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-    read_trace_bytes(&bytes, is_csv, &job.machine, units).map_err(|e| format!("{}: {e}", trace.display()))
-}
-
-/// Reads a trace from its bytes.
-fn read_trace_bytes(
-    bytes: &[u8],
-    is_csv: bool,
-    machine: &Machine,
-    units: Units,
-) -> Result<Vec<Step>, String> {
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        let line = bytes[..e.valid_up_to()].iter().filter(|&&b| b == b'\n').count() + 1;
-        let col =
-            e.valid_up_to() - bytes[..e.valid_up_to()].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
-        format!("line {line}, byte {}: not UTF-8 text", col + 1)
-    })?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let steps = if is_csv { theirs_csv(text, machine, units) } else { theirs_nc(text, machine, units) }?;
-    if steps.is_empty() {
-        return Err("the trace has no moves (reading R-CHECKEMPTY)".into());
-    }
-    Ok(steps)
-}
-
-/// Runs the comparison of `job`'s program with the trace at `trace`.
+/// Runs the comparison of `job`'s program with the trace at `trace` (`-`:
+/// standard input; `.csv`: a CSV).
+///
+/// # Errors
+///
+/// The program's first error, or the trace's, with its line.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
     let units = job.validate()?.units;
-    let ours = ours(job, &job.machine)?;
-    let regions = regions(job)?;
-    let theirs = read_trace(job, trace, units)?;
-    Ok(compare_steps(&ours, &theirs, &regions, units, tolerance))
+    if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
+        return Err("the program and the trace cannot both come from standard input".into());
+    }
+    let (name, source) = open_trace(trace)?;
+    compare_streams(job, source, is_csv(trace), units, tolerance).map_err(|e| match e {
+        StreamError::Ours(e) => e,
+        StreamError::Theirs(e) => format!("{name}: {e}"),
+    })
 }
 
 /// The comparison of `job`'s program with a trace given as bytes (`.nc`
-/// text, or CSV when `is_csv`): what `run` does after reading the file.
+/// text, or CSV when `is_csv`): what `run` does after opening the file.
 /// The fuzz target `check_trace` and the property tests call it.
 ///
 /// # Errors
@@ -1013,17 +1207,149 @@ pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
 /// Our expansion's error, or the trace's, with its line.
 pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
     let units = job.validate()?.units;
-    let ours = ours(job, &job.machine)?;
-    let regions = regions(job)?;
-    let theirs = read_trace_bytes(bytes, is_csv, &job.machine, units)?;
-    Ok(compare_steps(&ours, &theirs, &regions, units, tolerance))
+    compare_streams(job, Box::new(bytes), is_csv, units, tolerance).map_err(|e| match e {
+        StreamError::Ours(e) | StreamError::Theirs(e) => e,
+    })
 }
 
-fn compare_steps(ours: &[Step], theirs: &[Step], regions: &[Region], units: Units, tolerance: u64) -> Report {
+/// Whose toolpath an error comes from.
+enum StreamError {
+    Ours(String),
+    Theirs(String),
+}
+
+/// The most moves in one group: a pass longer than this (a program of a
+/// million G01 blocks is one "pass") is compared in pieces of this size.
+const GROUP_MOVES: usize = 4096;
+
+/// The most groups of ours aligned at once: a cycle with more passes is
+/// aligned in windows of this many.
+const WINDOW_GROUPS: usize = 512;
+
+/// The most cells of an alignment table (beyond, groups are compared in
+/// order): 512 groups of ours against 1024 of theirs.
+const MAX_CELLS: usize = 1 << 19;
+
+/// The most divergences a report lists; the count is always exact.
+pub const MAX_LISTED: usize = 10_000;
+
+/// Steps made into groups (a run of rapids and the cutting moves after
+/// it), each with its owner: the segment of its first cutting move, or of
+/// its first rapid.
+struct Grouper<I> {
+    steps: I,
+    next: Option<(Step, u32)>,
+    /// Steps taken so far.
+    count: usize,
+}
+
+impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
+    fn new(steps: I) -> Grouper<I> {
+        Grouper { steps, next: None, count: 0 }
+    }
+
+    fn pull(&mut self) -> Option<Result<(Step, u32), String>> {
+        let s = self.next.take().map(Ok).or_else(|| self.steps.next());
+        if matches!(s, Some(Ok(_))) {
+            self.count += 1;
+        }
+        s
+    }
+
+    fn group(&mut self) -> Option<Result<(Group, u32), String>> {
+        let mut g = Group { rapids: Vec::new(), cuts: Vec::new() };
+        let (mut rapid_owner, mut cut_owner) = (None, None);
+        loop {
+            let (s, seg) = match self.pull() {
+                None if g.len() == 0 => return None,
+                None => break,
+                Some(Err(e)) => return Some(Err(e)),
+                Some(Ok(v)) => v,
+            };
+            let full = g.cuts.len() >= GROUP_MOVES || g.rapids.len() >= GROUP_MOVES;
+            if g.len() > 0 && ((s.kind == Kind::Rapid && !g.cuts.is_empty()) || full) {
+                self.next = Some((s, seg));
+                self.count -= 1;
+                break;
+            }
+            if s.kind == Kind::Rapid {
+                rapid_owner.get_or_insert(seg);
+                g.rapids.push(s);
+            } else {
+                cut_owner.get_or_insert(seg);
+                g.cuts.push(s);
+            }
+        }
+        Some(Ok((g, cut_owner.or(rapid_owner).unwrap_or(0))))
+    }
+}
+
+/// Compares our toolpath with the trace's, both read as they are taken:
+/// our groups are aligned a cycle (at most [`WINDOW_GROUPS`] groups) at a
+/// time with the trace's next groups, of which the alignment takes what it
+/// matches and leaves the rest for the next window (reading R-CHECKSTREAM).
+fn compare_streams(
+    job: &Job,
+    trace: Box<dyn BufRead + '_>,
+    is_csv: bool,
+    units: Units,
+    tolerance: u64,
+) -> Result<Report, StreamError> {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
-    let (ga, gb) = (groups(ours), groups(theirs));
-    let divergences = align(&ga, &gb, tol, units, regions);
-    Report { units, tolerance, ours_moves: ours.len(), theirs_moves: theirs.len(), divergences }
+    let mut ours = Grouper::new(OurSteps::new(job, units));
+    let steps = trace_steps(trace, is_csv, &job.machine, units).map_err(StreamError::Theirs)?;
+    let mut theirs = Grouper::new(steps);
+    let mut report = Report::new(units, tolerance);
+    let mut pending: VecDeque<Group> = VecDeque::new();
+    let mut lookahead: Option<(Group, u32)> = None;
+    loop {
+        // Our next window: the groups of one owner.
+        let mut window = Vec::new();
+        let mut owner = None;
+        loop {
+            let next = match lookahead.take() {
+                Some(g) => g,
+                None => match ours.group() {
+                    None => break,
+                    Some(r) => r.map_err(StreamError::Ours)?,
+                },
+            };
+            if owner.is_some_and(|o| o != next.1) || window.len() == WINDOW_GROUPS {
+                lookahead = Some(next);
+                break;
+            }
+            owner = Some(next.1);
+            window.push(next.0);
+        }
+        if window.is_empty() {
+            break;
+        }
+        let want = window.len() + window.len().max(16);
+        while pending.len() < want {
+            match theirs.group() {
+                None => break,
+                Some(r) => pending.push_back(r.map_err(StreamError::Theirs)?.0),
+            }
+        }
+        let regions: Vec<Region> = ours.steps.regions.iter().flatten().copied().collect();
+        let next = lookahead.as_ref().map(|(g, _)| g);
+        let (divergences, taken) = align(&window, pending.make_contiguous(), tol, units, &regions, next);
+        pending.drain(..taken);
+        report.add(divergences);
+    }
+    // What the trace has beyond our last move.
+    for g in pending.drain(..) {
+        report.add(vec![extra(&g)]);
+    }
+    while let Some(g) = theirs.group() {
+        report.add(vec![extra(&g.map_err(StreamError::Theirs)?.0)]);
+    }
+    if theirs.count == 0 {
+        return Err(StreamError::Theirs("the trace has no moves (reading R-CHECKEMPTY)".into()));
+    }
+    report.ours_moves = ours.count;
+    report.theirs_moves = theirs.count;
+    Ok(report)
 }
 
 /// One step of the alignment.
@@ -1059,24 +1385,52 @@ fn joined(gs: &[Group]) -> Group {
 
 /// Aligns the groups by edit distance (a match costs 0, a substitution 1,
 /// a missing or extra group 1, a join of groups that differ only in kinds
-/// of move 1) and lists the differences in our order.
-fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -> Vec<Divergence> {
+/// of move 1) and lists the differences in our order, with the number of
+/// their groups taken. When our toolpath goes on with `next`, the
+/// alignment may stop before the end of theirs, and the rest belongs to
+/// what follows: it stops where the cost plus 1 when their next group is
+/// not `next` is least (the fewest groups at equal cost). Without `next`
+/// it takes all of `b`.
+fn align(
+    a: &[Group],
+    b: &[Group],
+    tol: i64,
+    units: Units,
+    regions: &[Region],
+    next: Option<&Group>,
+) -> (Vec<Divergence>, usize) {
+    let free_end = next.is_some();
     let (n, m) = (a.len(), b.len());
     let cmp = |x: &Group, y: &Group| compare(x, y, tol, units, regions);
-    // Beyond this size a quadratic table is too big: compare in order.
-    if n.saturating_mul(m) > 25_000_000 {
+    // Beyond this size the table is too big: compare in order.
+    if (n + 1).saturating_mul(m + 1) > MAX_CELLS {
         let mut out = Vec::new();
-        for i in 0..n.max(m) {
-            match (a.get(i), b.get(i)) {
+        let end = if free_end { n.min(m) } else { m };
+        for i in 0..n.max(end) {
+            match (a.get(i), b.get(i).filter(|_| i < end)) {
                 (Some(x), Some(y)) => out.extend(cmp(x, y)),
                 (Some(x), None) => out.push(missing(x)),
                 (None, Some(y)) => out.push(extra(y)),
                 (None, None) => {}
             }
         }
-        return out;
+        return (out, end);
     }
-    let equal: Vec<Vec<bool>> = a.iter().map(|x| b.iter().map(|y| cmp(x, y).is_empty()).collect()).collect();
+    // The usual case first: every group of ours met in order, and theirs
+    // resumes with our next group (or ends with ours).
+    let in_order = n <= m
+        && a.iter().zip(b).all(|(x, y)| cmp(x, y).is_empty())
+        && match next {
+            Some(o) => b.get(n).is_none_or(|t| cmp(o, t).is_empty()),
+            None => n == m,
+        };
+    if in_order {
+        return (Vec::new(), n);
+    }
+    let w = m + 1;
+    let equal: Vec<bool> =
+        a.iter().flat_map(|x| b.iter().map(move |y| (x, y))).map(|(x, y)| cmp(x, y).is_empty()).collect();
+    let eq = |i: usize, j: usize| equal[i * m + j];
     // A join of our groups i..i+p with their j..j+q, only where the sizes
     // fit (the cheap test first).
     let join = |i: usize, p: usize, j: usize, q: usize| {
@@ -1085,44 +1439,56 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
             && x[0].rapids.len() == y[0].rapids.len()
             && only_kinds(&cmp(&joined(x), &joined(y)))
     };
-    let big = u32::MAX / 2;
-    let mut cost = vec![vec![0_u32; m + 1]; n + 1];
-    for (i, row) in cost.iter_mut().enumerate() {
-        row[0] = u32::try_from(i).unwrap_or(big);
-    }
-    for (j, c) in cost[0].iter_mut().enumerate() {
-        *c = u32::try_from(j).unwrap_or(big);
-    }
-    // The join that reached a cell, if one did.
-    let mut via = vec![vec![None::<(usize, usize)>; m + 1]; n + 1];
-    for i in 1..=n {
-        for j in 1..=m {
-            let sub = cost[i - 1][j - 1] + u32::from(!equal[i - 1][j - 1]);
-            let mut c = sub.min(cost[i - 1][j] + 1).min(cost[i][j - 1] + 1);
-            for (p, q) in JOINS {
-                if i >= p && j >= q && cost[i - p][j - q] + 1 < c && join(i - p, p, j - q, q) {
-                    via[i][j] = Some((p, q));
-                    c = cost[i - p][j - q] + 1;
+    let mut cost = vec![0_u32; (n + 1) * w];
+    // The join that reached a cell: 0 none, k + 1 for JOINS[k].
+    let mut via = vec![0_u8; (n + 1) * w];
+    for i in 0..=n {
+        for j in 0..=m {
+            let c = if i == 0 || j == 0 {
+                u32::try_from(i + j).unwrap_or(u32::MAX / 2)
+            } else {
+                let sub = cost[(i - 1) * w + j - 1] + u32::from(!eq(i - 1, j - 1));
+                let mut c = sub.min(cost[(i - 1) * w + j] + 1).min(cost[i * w + j - 1] + 1);
+                for (k, (p, q)) in JOINS.into_iter().enumerate() {
+                    if i >= p && j >= q && cost[(i - p) * w + j - q] + 1 < c && join(i - p, p, j - q, q) {
+                        via[i * w + j] = u8::try_from(k + 1).unwrap_or(0);
+                        c = cost[(i - p) * w + j - q] + 1;
+                    }
                 }
-            }
-            cost[i][j] = c;
+                c
+            };
+            cost[i * w + j] = c;
         }
     }
+    // Where it ends in theirs: all of it, or (free end) the fewest groups
+    // at the least cost.
+    let resumes = |j: usize| match (b.get(j), next) {
+        (Some(t), Some(o)) => cmp(o, t).is_empty(),
+        _ => true,
+    };
+    let end = if free_end {
+        (0..=m).min_by_key(|&j| (cost[n * w + j] + u32::from(!resumes(j)), j)).unwrap_or(m)
+    } else {
+        m
+    };
     // Walk back.
-    let (mut i, mut j) = (n, m);
+    let (mut i, mut j) = (n, end);
     let mut ops = Vec::new();
     // Walking back, a missing or extra group is preferred over a match of
     // equal cost: when passes repeat (finishing passes), the one reported
     // missing is the last, where a trace that stops early stops.
     while i > 0 || j > 0 {
-        if let Some((p, q)) = via[i][j] {
+        if let Some(&(p, q)) = via[i * w + j].checked_sub(1).and_then(|k| JOINS.get(usize::from(k))) {
             ops.push(Op::Join { i: i - p, p, j: j - q, q });
             i -= p;
             j -= q;
-        } else if i > 0 && cost[i][j] == cost[i - 1][j] + 1 {
+        } else if i > 0 && cost[i * w + j] == cost[(i - 1) * w + j] + 1 {
             ops.push(Op::Missing(i - 1));
             i -= 1;
-        } else if i > 0 && j > 0 && cost[i][j] == cost[i - 1][j - 1] + u32::from(!equal[i - 1][j - 1]) {
+        } else if i > 0
+            && j > 0
+            && cost[i * w + j] == cost[(i - 1) * w + j - 1] + u32::from(!eq(i - 1, j - 1))
+        {
             ops.push(Op::Pair(i - 1, j - 1));
             i -= 1;
             j -= 1;
@@ -1141,7 +1507,7 @@ fn align(a: &[Group], b: &[Group], tol: i64, units: Units, regions: &[Region]) -
             Op::Extra(y) => out.push(extra(&b[y])),
         }
     }
-    out
+    (out, end)
 }
 
 fn first_step(g: &Group) -> Option<Step> {
@@ -1187,13 +1553,32 @@ pub struct Report {
     tolerance: u64,
     ours_moves: usize,
     theirs_moves: usize,
+    /// The first [`MAX_LISTED`] divergences.
     divergences: Vec<Divergence>,
+    /// How many there are.
+    total: usize,
 }
 
 impl Report {
+    fn new(units: Units, tolerance: u64) -> Report {
+        Report { units, tolerance, ours_moves: 0, theirs_moves: 0, divergences: Vec::new(), total: 0 }
+    }
+
+    /// Counts `found` and keeps those within the first [`MAX_LISTED`].
+    fn add(&mut self, found: Vec<Divergence>) {
+        self.total += found.len();
+        let room = MAX_LISTED.saturating_sub(self.divergences.len());
+        self.divergences.extend(found.into_iter().take(room));
+    }
+
     /// True when the toolpaths agree within the tolerance.
     pub fn agree(&self) -> bool {
-        self.divergences.is_empty()
+        self.total == 0
+    }
+
+    /// The number of divergences (all of them, listed or not).
+    pub fn divergences(&self) -> usize {
+        self.total
     }
 
     fn point(&self, p: Point) -> String {
@@ -1339,8 +1724,8 @@ impl Report {
         let _ = writeln!(
             out,
             "DIFFER: {} divergence{} (tolerance {} increments; {} moves of ours, {} of the trace)",
-            self.divergences.len(),
-            if self.divergences.len() == 1 { "" } else { "s" },
+            self.total,
+            if self.total == 1 { "" } else { "s" },
             self.tolerance,
             self.ours_moves,
             self.theirs_moves
@@ -1349,11 +1734,18 @@ impl Report {
         if let Some(d) = self.divergences.first() {
             self.describe(d, &mut out);
         }
-        if self.divergences.len() > 1 {
+        if self.total > 1 {
             let _ = writeln!(out, "\nall divergences:");
             for d in &self.divergences {
                 self.describe(d, &mut out);
             }
+        }
+        if self.total > self.divergences.len() {
+            let _ = writeln!(
+                out,
+                "\n... and {} more divergences, not listed (a report lists the first {MAX_LISTED})",
+                self.total - self.divergences.len()
+            );
         }
         out
     }
@@ -1434,6 +1826,10 @@ impl Report {
             "moves": {"ours": self.ours_moves, "theirs": self.theirs_moves},
             "divergences": divs,
         });
+        let mut doc = doc;
+        if self.total > self.divergences.len() {
+            doc["unlisted_divergences"] = json!(self.total - self.divergences.len());
+        }
         let mut s = serde_json::to_string_pretty(&doc).unwrap_or_default();
         s.push('\n');
         s

@@ -368,6 +368,21 @@ impl<'a> Lexer<'a> {
         Lexer { src, pos, line: 0, current: None, done: false }
     }
 
+    /// A lexer over one piece of a program (a line read from a stream,
+    /// say) whose first line is line `first_line` of the whole: blocks and
+    /// errors carry the whole program's line numbers. A byte-order mark is
+    /// skipped only when `first_line` is 1.
+    #[must_use]
+    pub fn at_line(src: &'a [u8], first_line: usize) -> Lexer<'a> {
+        let mut lexer = if first_line <= 1 {
+            Lexer::new(src)
+        } else {
+            Lexer { src, pos: 0, line: 0, current: None, done: false }
+        };
+        lexer.line = first_line.saturating_sub(1);
+        lexer
+    }
+
     /// The next line, without its line end (`\n` or `\r\n`).
     fn next_line(&mut self) -> Option<Line<'a>> {
         if self.pos >= self.src.len() {
