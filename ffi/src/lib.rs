@@ -104,15 +104,18 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 #![deny(missing_docs)]
 
+mod cursor;
 mod types;
 
 use core::ffi::c_char;
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use cycleref::{expand_g32, expand_g76, G76Moves, InputUnit, XMode};
-use cycleref_spec::{Item, Machine, ProfileName};
+use cycleref::{expand_g76, G76Moves, InputUnit, XMode};
+use cycleref_spec::pipeline::{self, Engine};
+use cycleref_spec::{Cycle, Machine, Moves, ProfileName, ProgramError, Reader, RunError};
 
+pub use cursor::CyclerefCursor;
 pub use types::{
     CyclerefCycle, CyclerefError, CyclerefFlank, CyclerefG76Params, CyclerefIncrement, CyclerefInfeed,
     CyclerefLeadWord, CyclerefMotion, CyclerefMove, CyclerefOptions, CyclerefPassKind, CyclerefProfile,
@@ -242,56 +245,108 @@ fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Fail
     Ok(m)
 }
 
+/// The moves of one cycle in their C form: the pipeline's [`Moves`] with
+/// what every move of the cycle carries (its kind, line and decimals).
+#[derive(Debug)]
+pub(crate) struct CycleMoves {
+    moves: Moves,
+    cycle: CyclerefCycle,
+    line: usize,
+    decimals: u32,
+}
+
+impl CycleMoves {
+    /// The moves of `cycle` by the engine: the one dispatch
+    /// ([`pipeline::expand_at`]) of `cycleref_expand` and the cursor.
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm, `CYCLE_ERROR` with the cycle's line.
+    pub(crate) fn new(cycle: Cycle<'_, '_>) -> Result<CycleMoves, Failure> {
+        let moves = pipeline::expand_at(cycle, Engine::Impl).map_err(run_failure)?;
+        // The C names of the pipeline's cycles.
+        let kind = match cycle {
+            Cycle::G76(_) => CyclerefCycle::G76,
+            Cycle::G32(_) => CyclerefCycle::G32,
+            Cycle::G75(_) => CyclerefCycle::G75,
+        };
+        Ok(CycleMoves { moves, cycle: kind, line: cycle.line(), decimals: cycle.units().decimals() })
+    }
+}
+
+impl Iterator for CycleMoves {
+    type Item = CyclerefMove;
+
+    #[inline]
+    fn next(&mut self) -> Option<CyclerefMove> {
+        let m = self.moves.next()?;
+        Some(CyclerefMove::from_move(&m, self.decimals, self.cycle, self.line))
+    }
+}
+
+/// The reader's error as a `PROGRAM_ERROR` (the message the command
+/// prints).
+pub(crate) fn program_failure(e: &ProgramError) -> Failure {
+    Failure::new(CyclerefStatus::ProgramError, e.line, e.to_string())
+}
+
+/// The pipeline's error: `PROGRAM_ERROR` or `CYCLE_ERROR`, with its line
+/// and the command's message (`line 6, G76: ...` for an alarm).
+pub(crate) fn run_failure(e: RunError) -> Failure {
+    match e {
+        RunError::Program(p) => program_failure(&p),
+        RunError::Cycle { line, .. } => Failure::new(CyclerefStatus::CycleError, line, e.to_string()),
+    }
+}
+
 /// Reads `program` and hands every move of every cycle to `sink`, with
 /// its 0-based index, in program order; returns the number of moves.
+///
+/// One pass in constant memory: the first error in program order stops
+/// it, after the moves of the cycles before it were handed out.
 fn expand(
-    program: &str,
+    program: &[u8],
     machine: &Machine,
     mut sink: impl FnMut(usize, CyclerefMove),
 ) -> Result<usize, Failure> {
-    let program = cycleref_spec::read(program, machine)
-        .map_err(|e| Failure::new(CyclerefStatus::ProgramError, e.line, e.to_string()))?;
     let mut n = 0_usize;
-    let mut emit = |m: CyclerefMove| {
-        sink(n, m);
-        n = n.saturating_add(1);
-    };
-    for item in &program.items {
-        match item {
-            Item::G76(call) => {
-                let line = call.block.line;
-                let moves = expand_g76(&call.cycle).map_err(|e| {
-                    Failure::new(CyclerefStatus::CycleError, line, format!("line {line}, G76: {e}"))
-                })?;
-                let decimals = call.cycle.units.decimals();
-                for m in moves {
-                    emit(CyclerefMove::from_move(&m, decimals, CyclerefCycle::G76, line));
-                }
+    for item in Reader::new(program, machine) {
+        let item = item.map_err(|e| program_failure(&e))?;
+        if let Some(cycle) = Cycle::of(&item) {
+            for m in CycleMoves::new(cycle)? {
+                sink(n, m);
+                n = n.saturating_add(1);
             }
-            Item::G32(call) => {
-                let line = call.block.line;
-                let moves = expand_g32(&call.g32).map_err(|e| {
-                    Failure::new(CyclerefStatus::CycleError, line, format!("line {line}, G32: {e}"))
-                })?;
-                let decimals = call.g32.units.decimals();
-                for m in moves {
-                    emit(CyclerefMove::from_move(&m, decimals, CyclerefCycle::G32, line));
-                }
-            }
-            Item::G75(call) => {
-                let line = call.block.line;
-                let moves = cycleref::expand_g75(&call.cycle).map_err(|e| {
-                    Failure::new(CyclerefStatus::CycleError, line, format!("line {line}, G75.1: {e}"))
-                })?;
-                let decimals = call.cycle.units.decimals();
-                for m in moves {
-                    emit(CyclerefMove::from_move(&m, decimals, CyclerefCycle::G75, line));
-                }
-            }
-            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
         }
     }
     Ok(n)
+}
+
+/// The machine of the options at `opts`, with their parameter file.
+///
+/// # Safety
+///
+/// A non-null `opts` must point to a readable `CyclerefOptions` whose
+/// `params_toml`, when not NULL, is valid for reads of `params_toml_len`
+/// bytes, unchanged during the call.
+#[allow(unsafe_code)]
+unsafe fn options(opts: *const CyclerefOptions) -> Result<Machine, Failure> {
+    required(opts, "opts")?;
+    // SAFETY: `opts` is non-null and aligned (checked) and points to a
+    // `CyclerefOptions` (the caller's contract); every bit pattern of its
+    // integer and pointer fields is valid, and it is copied out.
+    let o = unsafe { opts.read() };
+    let params = if o.params_toml.is_null() {
+        if o.params_toml_len != 0 {
+            return Err(Failure::invalid("params_toml is NULL but params_toml_len is not 0"));
+        }
+        None
+    } else {
+        // SAFETY: the caller guarantees `params_toml_len` readable bytes
+        // at a non-null `params_toml`, unchanged during the call.
+        Some(unsafe { text(o.params_toml, o.params_toml_len, "params_toml") }?)
+    };
+    machine(&o, params)
 }
 
 /// The options of the `cycleref` command's defaults: GSK 988TA, IS-B,
@@ -380,22 +435,10 @@ pub unsafe extern "C" fn cycleref_expand(
         // SAFETY: the caller guarantees `program_len` readable bytes,
         // unchanged during the call.
         let source = unsafe { text(program, program_len, "program") }?;
-        // SAFETY: `opts` is non-null and aligned (checked) and points to a
-        // `CyclerefOptions` (the caller's contract); every bit pattern of its
-        // integer and pointer fields is valid, and it is copied out.
-        let o = unsafe { opts.read() };
-        let params = if o.params_toml.is_null() {
-            if o.params_toml_len != 0 {
-                return Err(Failure::invalid("params_toml is NULL but params_toml_len is not 0"));
-            }
-            None
-        } else {
-            // SAFETY: the caller guarantees `params_toml_len` readable
-            // bytes at a non-null `params_toml`, unchanged during the call.
-            Some(unsafe { text(o.params_toml, o.params_toml_len, "params_toml") }?)
-        };
-        let m = machine(&o, params)?;
-        let n = expand(source, &m, |i, mv| {
+        // SAFETY: the caller guarantees a readable `CyclerefOptions` and
+        // parameter text, unchanged during the call.
+        let m = unsafe { options(opts) }?;
+        let n = expand(source.as_bytes(), &m, |i, mv| {
             if i < capacity {
                 // SAFETY: `i < capacity`, `moves` is non-null and aligned
                 // when `capacity > 0` (checked) and valid for `capacity`
@@ -416,6 +459,122 @@ pub unsafe extern "C" fn cycleref_expand(
         Ok(())
     });
     finish(&result, err)
+}
+
+/// Opens a cursor on `program`: reads it with the machine of `opts` and
+/// checks every cycle (the first phase), then returns a handle that yields
+/// every move of every cycle (G76, G32 and G75.1), in program order, one
+/// per `cycleref_cursor_next`, the same moves as `cycleref_expand`.
+///
+/// Returns NULL on error, with `*err` filled: `CYCLEREF_STATUS_PROGRAM_ERROR`
+/// or `CYCLEREF_STATUS_CYCLE_ERROR` with the line of the first error in
+/// program order (nothing is delivered from a program that has one),
+/// `CYCLEREF_STATUS_INVALID_ARGUMENT`, `CYCLEREF_STATUS_PANIC`. On success
+/// `*err` is cleared.
+///
+/// The cursor keeps a copy of the program text (the caller may free its own
+/// as soon as this returns) and otherwise constant memory: the reader's
+/// modal state and one cycle's iterator, whatever the program's length.
+/// Opening reads the whole program once; the moves come from a second
+/// reading. Free the cursor with `cycleref_cursor_close`.
+///
+/// # Safety
+///
+/// As for `cycleref_expand`: `program` must be valid for reads of
+/// `program_len` bytes, `opts` must point to a `CyclerefOptions` whose
+/// `params_toml`, when not NULL, is valid for reads of `params_toml_len`
+/// bytes, `err` must be NULL or valid for a write; none of the memory read
+/// may be written by another thread during the call.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_cursor_open(
+    program: *const c_char,
+    program_len: usize,
+    opts: *const CyclerefOptions,
+    err: *mut CyclerefError,
+) -> *mut CyclerefCursor {
+    let result = guard(|| {
+        // SAFETY: the caller guarantees `program_len` readable bytes,
+        // unchanged during the call.
+        let source = unsafe { text(program, program_len, "program") }?;
+        // SAFETY: the caller guarantees a readable `CyclerefOptions` and
+        // parameter text, unchanged during the call.
+        let m = unsafe { options(opts) }?;
+        Ok(Box::into_raw(CyclerefCursor::open(source.as_bytes(), m)?))
+    });
+    finish(&result, err);
+    result.unwrap_or(core::ptr::null_mut())
+}
+
+/// Writes the next move of the program to `*out` and returns 1, or
+/// returns 0 at the end of the program (then and after, `*out` is not
+/// written), or a negative `CyclerefStatus`.
+///
+/// A cursor that opened cannot meet a program or cycle error: the errors
+/// here are `CYCLEREF_STATUS_INVALID_ARGUMENT` for a NULL or misaligned
+/// `cursor` or `out`, and `CYCLEREF_STATUS_PANIC` after a caught panic (the
+/// cursor then stays unusable; close it). `*err` (which may be NULL) gets
+/// the error, or is cleared when the call returns 1 or 0.
+///
+/// The move's `cycle` and `line` name the cycle it belongs to (its kind
+/// and the line of the block that runs it, G76 and G75.1: block 2).
+///
+/// # Safety
+///
+/// `cursor` must be a live cursor of `cycleref_cursor_open` (not closed),
+/// not used by another thread during the call; `out` must be valid for a
+/// write; `err` must be NULL or valid for a write.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_cursor_next(
+    cursor: *mut CyclerefCursor,
+    out: *mut CyclerefMove,
+    err: *mut CyclerefError,
+) -> i32 {
+    let result = guard(|| {
+        required(cursor, "cursor")?;
+        required(out, "out")?;
+        // SAFETY: `cursor` is non-null and came from `Box::into_raw` in
+        // `cycleref_cursor_open`, is not closed and not used elsewhere
+        // during the call (the caller's contract), so a unique reference is
+        // sound.
+        let c = unsafe { &mut *cursor };
+        let Some(m) = c.next_move()? else {
+            return Ok(0);
+        };
+        // SAFETY: `out` is non-null and aligned (checked) and valid for a
+        // write (the caller's contract); `write` does not read the old
+        // value.
+        unsafe { out.write(m) };
+        Ok(1)
+    });
+    finish(&result, err);
+    match result {
+        Ok(r) => r,
+        Err(f) => f.status as i32,
+    }
+}
+
+/// Closes a cursor of `cycleref_cursor_open` and frees everything it
+/// holds, at its end or not. NULL is accepted and ignored.
+///
+/// # Safety
+///
+/// `cursor` must be NULL or a cursor of `cycleref_cursor_open` that has not
+/// been closed yet, not in use by another thread; it must not be used
+/// after this call.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_cursor_close(cursor: *mut CyclerefCursor) {
+    let _ = guard(|| {
+        if !cursor.is_null() {
+            // SAFETY: a non-null `cursor` came from `Box::into_raw` in
+            // `cycleref_cursor_open` and is freed only once (the caller's
+            // contract).
+            drop(unsafe { Box::from_raw(cursor) });
+        }
+        Ok(())
+    });
 }
 
 /// A G76 cycle being stepped move by move: an opaque handle made by
