@@ -68,7 +68,8 @@ typedef int32_t CyclerefStatus;
 #endif // __cplusplus
 
 /**
- * Which cycle a move of `cycleref_expand` belongs to.
+ * Which cycle a move of `cycleref_expand` or `cycleref_cursor_next`
+ * belongs to.
  */
 enum CyclerefCycle
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
@@ -414,7 +415,8 @@ typedef struct CyclerefCursor CyclerefCursor;
 typedef struct CyclerefG76 CyclerefG76;
 
 /**
- * Options of `cycleref_expand`: the machine a program is read with.
+ * Options of `cycleref_expand` and `cycleref_cursor_open`: the machine a
+ * program is read with.
  *
  * `cycleref_options_default()` gives the defaults of the `cycleref`
  * command: GSK 988TA, IS-B, metric, X as diameter, no parameter file.
@@ -484,8 +486,9 @@ typedef struct CyclerefMove {
      */
     int64_t pass_cut;
     /**
-     * The 1-based source line of the block the move came from (G76 block
-     * 2 or the G32 block); 0 for moves of `cycleref_g76_next`.
+     * The 1-based source line of the block the move came from (G76 and
+     * G75.1 block 2, or the G32 block); 0 for moves of
+     * `cycleref_g76_next`.
      */
     size_t line;
     /**

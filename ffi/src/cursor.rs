@@ -63,16 +63,6 @@ self_cell!(
     }
 );
 
-/// What the reader's next item gives the cursor.
-enum Step {
-    /// The end of the program.
-    End,
-    /// A block that runs no cycle.
-    Block,
-    /// A cycle, with its moves.
-    Cycle(CycleMoves),
-}
-
 /// A program being read move by move: an opaque handle made by
 /// `cycleref_cursor_open` and freed by `cycleref_cursor_close`.
 pub struct CyclerefCursor {
@@ -139,18 +129,21 @@ impl CyclerefCursor {
                 return Ok(Some(m));
             }
             self.cycle = None;
-            let step = self.reading.with_dependent_mut(|_, reader| match reader.next() {
-                None => Ok(Step::End),
+            // The next item, turned into what the cursor keeps (the cycle's
+            // moves, which borrow nothing) before the item goes.
+            let cycle = &mut self.cycle;
+            let more = self.reading.with_dependent_mut(|_, reader| match reader.next() {
+                None => Ok(false),
                 Some(Err(e)) => Err(program_failure(&e)),
-                Some(Ok(item)) => match Cycle::of(&item) {
-                    Some(cycle) => CycleMoves::new(cycle).map(Step::Cycle),
-                    None => Ok(Step::Block),
-                },
+                Some(Ok(item)) => {
+                    if let Some(c) = Cycle::of(&item) {
+                        *cycle = Some(CycleMoves::new(c)?);
+                    }
+                    Ok(true)
+                }
             })?;
-            match step {
-                Step::End => return Ok(None),
-                Step::Block => {}
-                Step::Cycle(moves) => self.cycle = Some(moves),
+            if !more {
+                return Ok(None);
             }
         }
     }

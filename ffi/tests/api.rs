@@ -578,13 +578,13 @@ fn screaming(camel: &str) -> String {
 
 /// Opens a cursor on `program`: the cursor, or the error of the open.
 #[allow(unsafe_code)]
-fn open(program: &[u8], opts: &CyclerefOptions) -> Result<*mut CyclerefCursor, CyclerefError> {
+fn open(program: &[u8], opts: &CyclerefOptions) -> Result<*mut CyclerefCursor, Box<CyclerefError>> {
     let mut err = CyclerefError::new(CyclerefStatus::Panic, 99, "not written");
     // SAFETY: the program slice, the options and `err` are valid for the call.
     let c = unsafe { cycleref_cursor_open(program.as_ptr().cast(), program.len(), opts, &mut err) };
     if c.is_null() {
         assert_ne!(err.status, CyclerefStatus::Ok);
-        return Err(err);
+        return Err(Box::new(err));
     }
     // Success clears the error.
     assert_eq!((err.status, err.line, err.message()), (CyclerefStatus::Ok, 0, String::new()));
@@ -593,7 +593,7 @@ fn open(program: &[u8], opts: &CyclerefOptions) -> Result<*mut CyclerefCursor, C
 
 /// Every move of `program` through a cursor, closed at the end.
 #[allow(unsafe_code)]
-fn cursor_moves(program: &[u8], opts: &CyclerefOptions) -> Result<Vec<CyclerefMove>, CyclerefError> {
+fn cursor_moves(program: &[u8], opts: &CyclerefOptions) -> Result<Vec<CyclerefMove>, Box<CyclerefError>> {
     let c = open(program, opts)?;
     let mut moves = Vec::new();
     let mut err = CyclerefError::default();
