@@ -73,6 +73,9 @@ pub struct CyclerefCursor {
     /// Set when a call panicked: the reader may be half-updated, so every
     /// later call reports the panic again.
     poisoned: bool,
+    /// The error of an earlier call, should one ever come after the open,
+    /// which every later call reports again.
+    failed: Option<Failure>,
 }
 
 impl fmt::Debug for CyclerefCursor {
@@ -81,6 +84,7 @@ impl fmt::Debug for CyclerefCursor {
             .field("program_len", &self.reading.borrow_owner().text.len())
             .field("cycle", &self.cycle)
             .field("poisoned", &self.poisoned)
+            .field("failed", &self.failed)
             .finish_non_exhaustive()
     }
 }
@@ -97,17 +101,18 @@ impl CyclerefCursor {
         pipeline::validate(text, &machine, Engine::Impl, false).map_err(run_failure)?;
         let source = Source { text: text.into(), machine };
         let reading = Reading::new(source, |s| Reader::new(&s.text, &s.machine));
-        Ok(Box::new(CyclerefCursor { reading, cycle: None, poisoned: false }))
+        Ok(Box::new(CyclerefCursor { reading, cycle: None, poisoned: false, failed: None }))
     }
 
     /// The next move of the program, or `None` at its end (and after).
     ///
     /// # Errors
     ///
-    /// `PANIC` when an earlier call panicked. A program or cycle error
-    /// cannot happen after [`CyclerefCursor::open`] succeeded; should one
-    /// come all the same, it is returned as it is, and the cursor is at its
-    /// end afterwards (the reader yields nothing after an error).
+    /// `PANIC` when this or an earlier call panicked. A program or cycle
+    /// error cannot happen after [`CyclerefCursor::open`] succeeded (the
+    /// same reader on the same bytes with the same machine); should one
+    /// come all the same, it is returned with its status and line, and
+    /// again by every later call.
     pub(crate) fn next_move(&mut self) -> Result<Option<CyclerefMove>, Failure> {
         if self.poisoned {
             return Err(Failure::new(
@@ -116,10 +121,16 @@ impl CyclerefCursor {
                 "the cursor is unusable after a panic",
             ));
         }
+        if let Some(f) = &self.failed {
+            return Err(f.clone());
+        }
         // Poisoned unless the step returns: a panic inside leaves it set.
         self.poisoned = true;
         let next = self.step();
         self.poisoned = false;
+        if let Err(f) = &next {
+            self.failed = Some(f.clone());
+        }
         next
     }
 
@@ -146,5 +157,48 @@ impl CyclerefCursor {
                 return Ok(None);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::CyclerefStatus;
+    use cycleref_spec::ProfileName;
+
+    /// A cursor on `text` without the first phase, as if validation had
+    /// missed an error.
+    fn unchecked(text: &str) -> CyclerefCursor {
+        let source = Source { text: text.as_bytes().into(), machine: Machine::new(ProfileName::Gsk988) };
+        let reading = Reading::new(source, |s| Reader::new(&s.text, &s.machine));
+        CyclerefCursor { reading, cycle: None, poisoned: false, failed: None }
+    }
+
+    #[test]
+    fn an_error_after_the_open_is_reported_and_repeated() {
+        let cycle = "G76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\n";
+        // The second cycle (block 2 on line 7) starts inside the thread
+        // (A = X62): an alarm.
+        let mut c = unchecked(&format!("G50 X100 Z50 M3 S300;\nG00 X80 Z10;\n{cycle}G00 X62;\n{cycle}"));
+        for _ in 0..30 {
+            assert!(c.next_move().unwrap().is_some());
+        }
+        for _ in 0..2 {
+            let f = c.next_move().unwrap_err();
+            assert_eq!((f.status, f.line), (CyclerefStatus::CycleError, 7), "{}", f.message);
+        }
+        // A reader's error likewise.
+        let mut c = unchecked("G00 X80 Z10;\nG76 X60.64 Z-62 Q1.800 F6;\n");
+        for _ in 0..2 {
+            let f = c.next_move().unwrap_err();
+            assert_eq!((f.status, f.line), (CyclerefStatus::ProgramError, 2), "{}", f.message);
+        }
+        // The open refuses both.
+        let f = CyclerefCursor::open(
+            b"G00 X80 Z10;\nG76 X60.64 Z-62 Q1.800 F6;\n",
+            Machine::new(ProfileName::Gsk988),
+        )
+        .unwrap_err();
+        assert_eq!(f.line, 2);
     }
 }

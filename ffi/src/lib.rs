@@ -155,7 +155,7 @@ pub use types::{
 };
 
 /// Why a call failed, before it is written to a `CyclerefError`.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 struct Failure {
     status: CyclerefStatus,
     line: usize,

@@ -181,8 +181,11 @@ fn cursor_memory_does_not_grow_with_the_program() {
     let (small_extra, large_extra) = (small.cursor_peak - small.text, large.cursor_peak - large.text);
     assert_eq!(large_extra, small_extra, "the cursor's memory beyond the text grows with the program");
     assert!(large_extra < 16 * 1024, "{large_extra} B beyond the text");
-    // Taking the moves needs no more memory for a longer program.
+    // Taking the moves needs no more memory for a longer program, and
+    // allocates nothing per move (a G75.1's iterator is boxed: at most one
+    // allocation per cycle).
     assert_eq!(large.next_peak, small.next_peak);
+    assert!(large.next_allocations <= 10_002, "{} allocations", large.next_allocations);
     // cycleref_expand keeps no copy at all.
     assert_eq!(large.expand_peak, small.expand_peak);
     assert!(large.expand_peak < 16 * 1024, "{} B", large.expand_peak);
