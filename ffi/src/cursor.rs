@@ -18,7 +18,7 @@
 //! re-creating a reader from a saved position, which the reader cannot do:
 //! its modal state is the whole program before the position.)
 //!
-//! The current cycle's moves are a [`Moves`] (inside [`CycleMoves`]), which
+//! The current cycle's moves are a [`pipeline::Moves`] (inside [`CycleMoves`]), which
 //! owns its state (the cycle's resolved parameters and the engine's
 //! iterator): it borrows nothing and sits beside the reader, taken from the
 //! item inside the closure. So a cursor holds: the copy of the text, the
