@@ -68,7 +68,8 @@ typedef int32_t CyclerefStatus;
 #endif // __cplusplus
 
 /**
- * Which cycle a move of `cycleref_expand` belongs to.
+ * Which cycle a move of `cycleref_expand` or `cycleref_cursor_next`
+ * belongs to.
  */
 enum CyclerefCycle
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
@@ -402,13 +403,20 @@ typedef uint32_t CyclerefRunOutKind;
 #endif // __cplusplus
 
 /**
+ * A program being read move by move: an opaque handle made by
+ * `cycleref_cursor_open` and freed by `cycleref_cursor_close`.
+ */
+typedef struct CyclerefCursor CyclerefCursor;
+
+/**
  * A G76 cycle being stepped move by move: an opaque handle made by
  * `cycleref_g76_new` and freed by `cycleref_g76_free`.
  */
 typedef struct CyclerefG76 CyclerefG76;
 
 /**
- * Options of `cycleref_expand`: the machine a program is read with.
+ * Options of `cycleref_expand` and `cycleref_cursor_open`: the machine a
+ * program is read with.
  *
  * `cycleref_options_default()` gives the defaults of the `cycleref`
  * command: GSK 988TA, IS-B, metric, X as diameter, no parameter file.
@@ -478,8 +486,9 @@ typedef struct CyclerefMove {
      */
     int64_t pass_cut;
     /**
-     * The 1-based source line of the block the move came from (G76 block
-     * 2 or the G32 block); 0 for moves of `cycleref_g76_next`.
+     * The 1-based source line of the block the move came from (G76 and
+     * G75.1 block 2, or the G32 block); 0 for moves of
+     * `cycleref_g76_next`.
      */
     size_t line;
     /**
@@ -766,6 +775,73 @@ CyclerefStatus cycleref_expand(const char *program,
                                size_t capacity,
                                size_t *count,
                                struct CyclerefError *err);
+
+/**
+ * Opens a cursor on `program`: reads it with the machine of `opts` and
+ * checks every cycle (the first phase), then returns a handle that yields
+ * every move of every cycle (G76, G32 and G75.1), in program order, one
+ * per `cycleref_cursor_next`, the same moves as `cycleref_expand`.
+ *
+ * Returns NULL on error, with `*err` filled: `CYCLEREF_STATUS_PROGRAM_ERROR`
+ * or `CYCLEREF_STATUS_CYCLE_ERROR` with the line of the first error in
+ * program order (nothing is delivered from a program that has one),
+ * `CYCLEREF_STATUS_INVALID_ARGUMENT`, `CYCLEREF_STATUS_PANIC`. On success
+ * `*err` is cleared.
+ *
+ * The cursor keeps a copy of the program text (the caller may free its own
+ * as soon as this returns) and otherwise constant memory: the reader's
+ * modal state and one cycle's iterator, whatever the program's length.
+ * Opening reads the whole program once; the moves come from a second
+ * reading. Free the cursor with `cycleref_cursor_close`.
+ *
+ * # Safety
+ *
+ * As for `cycleref_expand`: `program` must be valid for reads of
+ * `program_len` bytes, `opts` must point to a `CyclerefOptions` whose
+ * `params_toml`, when not NULL, is valid for reads of `params_toml_len`
+ * bytes, `err` must be NULL or valid for a write; none of the memory read
+ * may be written by another thread during the call.
+ */
+struct CyclerefCursor *cycleref_cursor_open(const char *program,
+                                            size_t program_len,
+                                            const struct CyclerefOptions *opts,
+                                            struct CyclerefError *err);
+
+/**
+ * Writes the next move of the program to `*out` and returns 1, or
+ * returns 0 at the end of the program (then and after, `*out` is not
+ * written), or a negative `CyclerefStatus`.
+ *
+ * A cursor that opened cannot meet a program or cycle error: the errors
+ * here are `CYCLEREF_STATUS_INVALID_ARGUMENT` for a NULL or misaligned
+ * `cursor` or `out`, and `CYCLEREF_STATUS_PANIC` after a caught panic (the
+ * cursor then stays unusable; close it). `*err` (which may be NULL) gets
+ * the error, or is cleared when the call returns 1 or 0.
+ *
+ * The move's `cycle` and `line` name the cycle it belongs to (its kind
+ * and the line of the block that runs it, G76 and G75.1: block 2).
+ *
+ * # Safety
+ *
+ * `cursor` must be a live cursor of `cycleref_cursor_open` (not closed),
+ * not used by another thread during the call; `out` must be valid for a
+ * write; `err` must be NULL or valid for a write.
+ */
+int32_t cycleref_cursor_next(struct CyclerefCursor *cursor,
+                             struct CyclerefMove *out,
+                             struct CyclerefError *err);
+
+/**
+ * Closes a cursor of `cycleref_cursor_open` and frees everything it
+ * holds, at its end or not. NULL is accepted and ignored.
+ *
+ * # Safety
+ *
+ * `cursor` must be NULL or a cursor of `cycleref_cursor_open` that has not
+ * been closed yet, not in use by another thread; it must not be used
+ * after this call.
+ */
+void cycleref_cursor_close(struct CyclerefCursor *cursor);
 
 /**
  * Checks the cycle `params` completely and returns a handle that yields

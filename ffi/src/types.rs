@@ -68,7 +68,8 @@ pub enum CyclerefIncrement {
     IsC = 2,
 }
 
-/// Which cycle a move of `cycleref_expand` belongs to.
+/// Which cycle a move of `cycleref_expand` or `cycleref_cursor_next`
+/// belongs to.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CyclerefCycle {
@@ -188,7 +189,8 @@ pub enum CyclerefRunOutKind {
     Chamfer = 2,
 }
 
-/// Options of `cycleref_expand`: the machine a program is read with.
+/// Options of `cycleref_expand` and `cycleref_cursor_open`: the machine a
+/// program is read with.
 ///
 /// `cycleref_options_default()` gives the defaults of the `cycleref`
 /// command: GSK 988TA, IS-B, metric, X as diameter, no parameter file.
@@ -249,8 +251,9 @@ pub struct CyclerefMove {
     /// Cut of the pass: its depth minus the previous level's (radius
     /// increments).
     pub pass_cut: i64,
-    /// The 1-based source line of the block the move came from (G76 block
-    /// 2 or the G32 block); 0 for moves of `cycleref_g76_next`.
+    /// The 1-based source line of the block the move came from (G76 and
+    /// G75.1 block 2, or the G32 block); 0 for moves of
+    /// `cycleref_g76_next`.
     pub line: usize,
     /// Decimals of one increment (IS-B mm 3, IS-B inch 4, IS-C mm 4, IS-C
     /// inch 5).

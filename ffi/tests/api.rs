@@ -572,3 +572,320 @@ fn screaming(camel: &str) -> String {
     }
     out
 }
+
+// ---------------------------------------------------------------------------
+// The cursor: cycleref_cursor_open / _next / _close.
+
+/// Opens a cursor on `program`: the cursor, or the error of the open.
+#[allow(unsafe_code)]
+fn open(program: &[u8], opts: &CyclerefOptions) -> Result<*mut CyclerefCursor, Box<CyclerefError>> {
+    let mut err = CyclerefError::new(CyclerefStatus::Panic, 99, "not written");
+    // SAFETY: the program slice, the options and `err` are valid for the call.
+    let c = unsafe { cycleref_cursor_open(program.as_ptr().cast(), program.len(), opts, &mut err) };
+    if c.is_null() {
+        assert_ne!(err.status, CyclerefStatus::Ok);
+        return Err(Box::new(err));
+    }
+    // Success clears the error.
+    assert_eq!((err.status, err.line, err.message()), (CyclerefStatus::Ok, 0, String::new()));
+    Ok(c)
+}
+
+/// Every move of `program` through a cursor, closed at the end.
+#[allow(unsafe_code)]
+fn cursor_moves(program: &[u8], opts: &CyclerefOptions) -> Result<Vec<CyclerefMove>, Box<CyclerefError>> {
+    let c = open(program, opts)?;
+    let mut moves = Vec::new();
+    let mut err = CyclerefError::default();
+    // SAFETY: `c` is a live cursor, used here only, closed once.
+    unsafe {
+        let mut m = CyclerefMove::default();
+        loop {
+            match cycleref_cursor_next(c, &mut m, &mut err) {
+                1 => moves.push(m),
+                0 => break,
+                s => panic!("cycleref_cursor_next: {s}: {}", err.message()),
+            }
+            assert_eq!(err.status, CyclerefStatus::Ok);
+        }
+        // At the end it stays at the end and writes nothing.
+        let sentinel = CyclerefMove { x: 12_345, ..CyclerefMove::default() };
+        m = sentinel;
+        assert_eq!(cycleref_cursor_next(c, &mut m, ptr::null_mut()), 0);
+        assert_eq!(cycleref_cursor_next(c, &mut m, &mut err), 0);
+        assert_eq!((m, err.status), (sentinel, CyclerefStatus::Ok));
+        cycleref_cursor_close(c);
+    }
+    Ok(moves)
+}
+
+/// Every move of every cycle of `program` by the Rust pipeline (the
+/// streaming reader, one dispatch), in the C form.
+fn pipeline_moves(program: &[u8], machine: &Machine) -> Vec<CyclerefMove> {
+    use cycleref_spec::pipeline::{expand, Cycle, Engine};
+    let mut out = Vec::new();
+    for item in cycleref_spec::Reader::new(program, machine) {
+        let item = item.expect("reads");
+        if let Some(cycle) = Cycle::of(&item) {
+            let kind = match cycle {
+                Cycle::G76(_) => CyclerefCycle::G76,
+                Cycle::G32(_) => CyclerefCycle::G32,
+                Cycle::G75(_) => CyclerefCycle::G75,
+            };
+            let (decimals, line) = (cycle.units().decimals(), cycle.line());
+            let ours: Vec<_> = expand(cycle, Engine::Impl).expect("expands").collect();
+            // The reference model gives the same moves.
+            assert_eq!(ours, expand(cycle, Engine::Spec).expect("expands").collect::<Vec<_>>());
+            out.extend(ours.iter().map(|m| CyclerefMove::from_move(m, decimals, kind, line)));
+        }
+    }
+    out
+}
+
+#[test]
+fn cursor_m68x6_equals_expand_and_the_pipeline() {
+    let text = example("gsk988-m68x6.nc");
+    let o = options(CyclerefProfile::Gsk988);
+    let moves = cursor_moves(text.as_bytes(), &o).unwrap();
+    assert_eq!(moves.len(), 30);
+    assert_eq!(moves, expand(&text, &o).unwrap());
+    assert_eq!(moves, pipeline_moves(text.as_bytes(), &Machine::new(ProfileName::Gsk988)));
+    assert_eq!(moves, engine_moves(&text, &Machine::new(ProfileName::Gsk988)));
+
+    // The first pass, worked by hand (IS-B mm: 1 = 0.001 mm). A = X80 Z10,
+    // D = X60.64 Z-62, k = 3.68, Δd = 1.8, a = 60°, right flank infeed,
+    // chamfer r = 0.5 lead = 3 mm at 45° (the 988TA's 5131 = 0).
+    // Depth 1.8: X = 60.64 + 2·(3.68 - 1.8) = 64.40; the flank shifts Z by
+    // 1.8·tan 30° = 1.03923 → 1.039: Z = 10 - 1.039 = 8.961.
+    let first: Vec<_> = moves[..5]
+        .iter()
+        .map(|m| (m.motion, m.role, m.x, m.z, m.sync, m.pass_number, m.pass_depth, m.pass_cut))
+        .collect();
+    use CyclerefMotion::{Rapid, Thread};
+    use CyclerefRole::*;
+    assert_eq!(
+        first,
+        [
+            (Rapid, Approach, 64_400, 8_961, 0, 1, 1_800, 1_800),
+            // The cut to where the 3 mm run-out starts: Z-62 + 3.
+            (Thread, Cut, 64_400, -59_000, 1, 1, 1_800, 1_800),
+            // 45°: 3 mm along Z, 3 mm radius (6 mm diameter) along X.
+            (Thread, RunOut, 70_400, -62_000, 0, 1, 1_800, 1_800),
+            (Rapid, Retract, 80_000, -62_000, 0, 1, 1_800, 1_800),
+            (Rapid, Return, 80_000, 10_000, 0, 1, 1_800, 1_800),
+        ]
+    );
+    for m in &moves[..5] {
+        assert_eq!(
+            (m.cycle, m.line, m.decimals, m.has_pass, m.pass_kind, m.pass_start, m.pass_flank),
+            (CyclerefCycle::G76, 6, 3, 1, CyclerefPassKind::Rough, 1, CyclerefFlank::Right)
+        );
+    }
+    for m in &moves[1..3] {
+        assert_eq!((m.lead_word, m.lead_mantissa, m.lead_scale), (CyclerefLeadWord::F, 6, 0));
+        assert_eq!((m.start_angle_num, m.start_angle_den), (0, 1));
+    }
+    // Pass 2: depth 1.8·√2 = 2.5456 → 2.546, cut 0.746; X = 60.64 +
+    // 2·(3.68 - 2.546) = 62.908, Z = 10 - 2.546·tan 30° = 10 - 1.470.
+    let m = moves[5];
+    assert_eq!(
+        (m.role, m.x, m.z, m.pass_number, m.pass_depth, m.pass_cut),
+        (Approach, 62_908, 8_530, 2, 2_546, 746)
+    );
+}
+
+#[test]
+fn cursor_every_example_equals_expand() {
+    use cycleref::IncrementSystem::{IsB, IsC};
+    for (name, profile, p, system) in [
+        ("fanuc-external.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
+        ("fanuc-internal.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
+        ("gsk980-m68x6.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
+        ("gsk980-g32-runout.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk980-g32-taper.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
+        ("seed000-extended.nc", CyclerefProfile::Gsk988, ProfileName::Gsk988, IsB),
+        ("gsk980-g75-seed.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
+        ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+    ] {
+        let text = example(name);
+        let mut o = options(profile);
+        o.increment = if system == IsC { CyclerefIncrement::IsC } else { CyclerefIncrement::IsB } as u32;
+        let got = cursor_moves(text.as_bytes(), &o).unwrap_or_else(|e| panic!("{name}: {}", e.message()));
+        assert!(!got.is_empty(), "{name}");
+        assert_eq!(got, expand(&text, &o).unwrap(), "{name}");
+        let mut m = Machine::new(p);
+        m.increment = system;
+        assert_eq!(got, pipeline_moves(text.as_bytes(), &m), "{name}");
+    }
+    // A program of three kinds of cycle: each move names its own.
+    let text = format!("{}G00 X80 Z10\nG76 P020560 Q150 R0.1\nG76 X60.64 Z-62 P3680 Q1800 F6\n", GROOVE);
+    let got = cursor_moves(text.as_bytes(), &options(CyclerefProfile::Gsk980)).unwrap();
+    assert_eq!(got, expand(&text, &options(CyclerefProfile::Gsk980)).unwrap());
+    let mut kinds: Vec<_> = got.iter().map(|m| (m.cycle, m.line)).collect();
+    kinds.dedup();
+    assert_eq!(kinds, [(CyclerefCycle::G75, 4), (CyclerefCycle::G76, 8)]);
+}
+
+/// A program of `n` M68x6 cycles on the 988TA whose last cycle is `last`.
+fn cycles_then(n: usize, last: &str) -> String {
+    let mut p = String::from("G50 X100 Z50 M3 S300;\nG00 X80 Z10;\n");
+    for _ in 0..n {
+        p.push_str("G76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\nG00 X80 Z10;\n");
+    }
+    p.push_str(last);
+    p
+}
+
+#[test]
+fn cursor_refuses_a_program_whose_last_cycle_is_invalid() {
+    let o = options(CyclerefProfile::Gsk988);
+    let good = cycles_then(1_000, "M30;\n");
+    assert_eq!(cursor_moves(good.as_bytes(), &o).unwrap().len(), 30_000);
+    // Lines: 2 + 3 per cycle, so the last cycle's block 2 is line 3004.
+    // The reader's error: block 2 without P(k).
+    let missing_p = cycles_then(1_000, "G76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 Q1.800 F6;\n");
+    let err = open(missing_p.as_bytes(), &o).unwrap_err();
+    assert_eq!((err.status, err.line), (CyclerefStatus::ProgramError, 3_004));
+    assert!(err.message().starts_with("line 3004"), "{}", err.message());
+    assert!(err.message().contains("P(k)"), "{}", err.message());
+    // The engine's alarm: A = X62 between the crest and the root.
+    let inside =
+        cycles_then(1_000, "G00 X62;\nG76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\n");
+    let err = open(inside.as_bytes(), &o).unwrap_err();
+    assert_eq!((err.status, err.line), (CyclerefStatus::CycleError, 3_005));
+    assert!(err.message().starts_with("line 3005, G76: the start point A"), "{}", err.message());
+    // cycleref_expand reports the same error, count 0.
+    let (status, count, _, e) = expand_with(inside.as_bytes(), &o, 0);
+    assert_eq!((status, count, e.line, e.message()), (CyclerefStatus::CycleError, 0, 3_005, err.message()));
+    // A G75.1 alarm on the 980TDi.
+    let wide = GROOVE.replace("I2", "I6");
+    let err = open(wide.as_bytes(), &options(CyclerefProfile::Gsk980)).unwrap_err();
+    assert_eq!((err.status, err.line), (CyclerefStatus::CycleError, 4));
+    assert!(err.message().starts_with("line 4, G75.1: the groove"), "{}", err.message());
+    // A NULL `err` is fine on failure too.
+    // SAFETY: valid program and options, NULL `err`.
+    #[allow(unsafe_code)]
+    let c = unsafe {
+        cycleref_cursor_open(
+            wide.as_ptr().cast(),
+            wide.len(),
+            &options(CyclerefProfile::Gsk980),
+            ptr::null_mut(),
+        )
+    };
+    assert!(c.is_null());
+}
+
+/// Errors come in program order: an alarm before a later reader error is
+/// the one reported, by the cursor and by `cycleref_expand` alike.
+#[test]
+fn the_first_error_in_program_order() {
+    let o = options(CyclerefProfile::Gsk988);
+    let text = "G50 X100 Z50 M3 S300;\nG00 X62 Z10;\nG76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\nG76 X60.64 Z-62 Q1.800 F6;\n";
+    let err = open(text.as_bytes(), &o).unwrap_err();
+    assert_eq!((err.status, err.line), (CyclerefStatus::CycleError, 4));
+    let (status, _, _, e) = expand_with(text.as_bytes(), &o, 0);
+    assert_eq!((status, e.line), (CyclerefStatus::CycleError, 4));
+}
+
+#[test]
+#[allow(unsafe_code)]
+fn cursor_arguments() {
+    let text = example("gsk988-m68x6.nc");
+    let o = options(CyclerefProfile::Gsk988);
+    let err = open(b"G00 X\xff;", &o).unwrap_err();
+    assert_eq!(err.status, CyclerefStatus::InvalidArgument);
+    assert!(err.message().contains("not UTF-8"), "{}", err.message());
+    let err = open(text.as_bytes(), &CyclerefOptions { profile: 3, ..o }).unwrap_err();
+    assert_eq!(err.status, CyclerefStatus::InvalidArgument);
+    assert!(err.message().contains("profile"), "{}", err.message());
+    let err = open(text.as_bytes(), &CyclerefOptions { params_toml_len: 3, ..o }).unwrap_err();
+    assert_eq!(err.status, CyclerefStatus::InvalidArgument);
+    let mut err = CyclerefError::default();
+    let mut m = CyclerefMove::default();
+    // SAFETY: NULL where the functions must refuse it; every other pointer
+    // is valid; the one cursor is closed once.
+    unsafe {
+        let p = text.as_ptr().cast::<c_char>();
+        assert!(cycleref_cursor_open(ptr::null(), 0, &o, &mut err).is_null());
+        assert_eq!((err.status, err.line), (CyclerefStatus::InvalidArgument, 0));
+        assert!(err.message().contains("program is NULL"), "{}", err.message());
+        assert!(cycleref_cursor_open(p, text.len(), ptr::null(), &mut err).is_null());
+        assert!(err.message().contains("opts is NULL"), "{}", err.message());
+        assert!(cycleref_cursor_open(p, text.len(), ptr::null(), ptr::null_mut()).is_null());
+
+        assert_eq!(
+            cycleref_cursor_next(ptr::null_mut(), &mut m, &mut err),
+            CyclerefStatus::InvalidArgument as i32
+        );
+        assert!(err.message().contains("cursor is NULL"), "{}", err.message());
+        assert_eq!(cycleref_cursor_next(ptr::null_mut(), &mut m, ptr::null_mut()), -4);
+        let c = cycleref_cursor_open(p, text.len(), &o, &mut err);
+        assert!(!c.is_null());
+        assert_eq!(
+            cycleref_cursor_next(c, ptr::null_mut(), &mut err),
+            CyclerefStatus::InvalidArgument as i32
+        );
+        assert!(err.message().contains("out is NULL"), "{}", err.message());
+        // The refused call took no move.
+        assert_eq!(cycleref_cursor_next(c, &mut m, &mut err), 1);
+        assert_eq!((m.x, m.z, err.status), (64_400, 8_961, CyclerefStatus::Ok));
+        // Closing before the end frees everything.
+        cycleref_cursor_close(c);
+        cycleref_cursor_close(ptr::null_mut());
+    }
+}
+
+/// The cursor keeps its own copy of the program: the caller's text may be
+/// overwritten and freed right after the open.
+#[test]
+#[allow(unsafe_code)]
+fn cursor_keeps_no_pointer() {
+    let o = options(CyclerefProfile::Gsk988);
+    let mut text = example("gsk988-m68x6.nc").into_bytes();
+    let expected = cursor_moves(&text, &o).unwrap();
+    let c = open(&text, &o).unwrap();
+    text.fill(b' ');
+    drop(text);
+    let mut got = Vec::new();
+    let mut m = CyclerefMove::default();
+    // SAFETY: `c` is live, used here only, closed once.
+    unsafe {
+        while cycleref_cursor_next(c, &mut m, ptr::null_mut()) == 1 {
+            got.push(m);
+        }
+        cycleref_cursor_close(c);
+    }
+    assert_eq!(got, expected);
+}
+
+/// A cursor may move to another thread; two cursors on one program are
+/// independent.
+#[test]
+#[allow(unsafe_code)]
+fn cursors_are_independent() {
+    struct Send(*mut CyclerefCursor);
+    // SAFETY: a cursor has no thread affinity (documented), and each one
+    // is used by one thread at a time here.
+    unsafe impl std::marker::Send for Send {}
+    let o = options(CyclerefProfile::Gsk988);
+    let text = example("gsk988-m68x6.nc");
+    let expected = expand(&text, &o).unwrap();
+    let (a, b) = (Send(open(text.as_bytes(), &o).unwrap()), Send(open(text.as_bytes(), &o).unwrap()));
+    let take = |c: Send| {
+        let mut v = Vec::new();
+        let mut m = CyclerefMove::default();
+        // SAFETY: the cursor is live, used by this thread only, closed once.
+        unsafe {
+            while cycleref_cursor_next(c.0, &mut m, ptr::null_mut()) == 1 {
+                v.push(m);
+            }
+            cycleref_cursor_close(c.0);
+        }
+        v
+    };
+    let t = std::thread::spawn(move || take(a));
+    assert_eq!(take(b), expected);
+    assert_eq!(t.join().unwrap(), expected);
+}

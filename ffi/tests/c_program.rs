@@ -1,7 +1,7 @@
 //! Builds `tests/c/expand_example.c` against the static library with the
 //! system C compiler, runs it on `examples/gsk988-m68x6.nc` and checks that
-//! every check in it passes; does the same with the example of README.md,
-//! and checks that the header is valid C++.
+//! every check in it passes; does the same with the examples of README.md
+//! (the buffer and the cursor), and checks that the header is valid C++.
 //!
 //! Finding the library: cargo compiles this package's library with all its
 //! crate types (`cdylib`, `staticlib`, `rlib`) before it builds the tests,
@@ -113,32 +113,37 @@ fn c_program_expands_the_m68x6_example() {
     assert!(stdout.contains("all checks passed"), "{stdout}");
 }
 
-/// The example of README.md compiles, runs and prints what it says.
+/// The examples of README.md (the buffer and the cursor) compile, run and
+/// print what they say.
 #[test]
-fn readme_example_runs() {
+fn readme_examples_run() {
     let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
     let readme = std::fs::read_to_string(manifest.join("README.md")).expect("read README.md");
-    let code = readme
+    let programs: Vec<_> = readme
         .split("```c\n")
         .skip(1)
         .filter_map(|block| block.split("```").next())
-        .find(|block| block.contains("int main"))
-        .expect("README.md has a C example with main()");
-    let source = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cycleref_ffi_readme.c");
-    std::fs::write(&source, code).expect("write the README example");
-    let stdout = run(&build_c(&source, "cycleref_ffi_readme"), &[]);
-    let lines: Vec<_> = stdout.lines().collect();
-    assert_eq!(lines.len(), 30, "{stdout}");
-    assert_eq!(
-        lines[..5],
-        [
-            "G00 X64400 Z8961",
-            "G32 X64400 Z-59000 (sync)",
-            "G32 X70400 Z-62000",
-            "G00 X80000 Z-62000",
-            "G00 X80000 Z10000"
-        ]
-    );
+        .filter(|block| block.contains("int main"))
+        .collect();
+    assert_eq!(programs.len(), 2, "README.md has a C example with main() for the buffer and the cursor");
+    assert!(programs[1].contains("cycleref_cursor_next"));
+    for (i, code) in programs.into_iter().enumerate() {
+        let source = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cycleref_ffi_readme{i}.c"));
+        std::fs::write(&source, code).expect("write the README example");
+        let stdout = run(&build_c(&source, &format!("cycleref_ffi_readme{i}")), &[]);
+        let lines: Vec<_> = stdout.lines().collect();
+        assert_eq!(lines.len(), 30, "{stdout}");
+        assert_eq!(
+            lines[..5],
+            [
+                "G00 X64400 Z8961",
+                "G32 X64400 Z-59000 (sync)",
+                "G32 X70400 Z-62000",
+                "G00 X80000 Z-62000",
+                "G00 X80000 Z10000"
+            ]
+        );
+    }
 }
 
 /// The header is also valid C++ (it has `extern "C"` guards and typed

@@ -5,8 +5,9 @@
  *
  * Expands the M68x6 example of the GSK 988TA manual (O0013) and checks the
  * moves against the golden test (spec/tests/golden.rs, gsk988_m68x6): four
- * rough and two finishing passes of five moves each. Then steps the same
- * cycle through the handle API, and checks the error paths.
+ * rough and two finishing passes of five moves each. Then reads the same
+ * program through the streaming cursor, steps the same cycle through the
+ * G76 handle API, and checks the error paths.
  *
  * Prints one line per failed check and exits with the number of failures
  * (capped at 100), 0 when every check passes.
@@ -206,6 +207,46 @@ int main(int argc, char **argv) {
         CHECK_EQ(small[i].line, moves[i].line);
     }
 
+    /* The streaming cursor: the same moves, one at a time. It keeps its own
+       copy of the text, so the caller's may go right after the open. */
+    char *copy = malloc(len ? len : 1);
+    if (copy) memcpy(copy, program, len);
+    CyclerefCursor *cur = copy ? cycleref_cursor_open(copy, len, &opts, &err) : NULL;
+    free(copy);
+    CHECK(cur != NULL);
+    CHECK_EQ(err.status, CYCLEREF_STATUS_OK);
+    if (cur) {
+        CyclerefMove streamed[40];
+        size_t n = 0;
+        int r = -100;
+        while (n < 40 && (r = cycleref_cursor_next(cur, &streamed[n], &err)) == 1) n++;
+        CHECK_EQ(r, 0);
+        CHECK_EQ(err.status, CYCLEREF_STATUS_OK);
+        CHECK_EQ(cycleref_cursor_next(cur, &streamed[39], NULL), 0); /* stays at the end */
+        CHECK_EQ(n, 30);
+        check_m68x6(streamed, n);
+        for (size_t i = 0; i < n && i < count; i++) {
+            CHECK(same_move(&streamed[i], &moves[i]));
+            CHECK_EQ(streamed[i].line, 6); /* the cycle's G76 block 2 */
+        }
+        CHECK_EQ(cycleref_cursor_next(cur, NULL, &err), CYCLEREF_STATUS_INVALID_ARGUMENT);
+        CHECK(strstr(err.message, "out") != NULL);
+        cycleref_cursor_close(cur);
+    }
+    /* Closing before the end is fine, and so is NULL. */
+    cur = cycleref_cursor_open(program, len, &opts, NULL);
+    CHECK(cur != NULL);
+    CyclerefMove first;
+    CHECK_EQ(cycleref_cursor_next(cur, &first, NULL), 1);
+    CHECK_EQ(first.x, 64400);
+    CHECK_EQ(first.z, 8961);
+    cycleref_cursor_close(cur);
+    cycleref_cursor_close(NULL);
+    CHECK_EQ(cycleref_cursor_next(NULL, &first, &err), CYCLEREF_STATUS_INVALID_ARGUMENT);
+    CHECK(cycleref_cursor_open(NULL, 0, &opts, &err) == NULL);
+    CHECK_EQ(err.status, CYCLEREF_STATUS_INVALID_ARGUMENT);
+    CHECK(cycleref_cursor_open(program, len, NULL, NULL) == NULL);
+
     /* The step API on the same cycle, its parameters worked out by hand:
        A = (80, 10), D = (60.64, -62), k 3.68, delta-d 1.8, delta-d min
        0.15, d 0.1, P020560: m 2, r 05 (chamfer 0.5 lead), a 60; the
@@ -286,6 +327,26 @@ int main(int argc, char **argv) {
     CHECK_EQ(err.line, 4);
     CHECK(strstr(err.message, "P(k)") != NULL);
     CHECK_EQ(count, 0);
+    printf("expected error: %s\n", err.message);
+
+    /* The cursor refuses the same program at the open: nothing is
+       delivered from a program with an error, even in its last cycle. */
+    CHECK(cycleref_cursor_open(missing_p, strlen(missing_p), &opts, &err) == NULL);
+    CHECK_EQ(err.status, CYCLEREF_STATUS_PROGRAM_ERROR);
+    CHECK_EQ(err.line, 4);
+    CHECK(strstr(err.message, "P(k)") != NULL);
+    /* A cycle's alarm: the second cycle starts at X62, inside the thread. */
+    static const char alarm[] =
+        "G50 X100 Z50 M3 S300;\n"
+        "G00 X80 Z10;\n"
+        "G76 P020560 Q0.150 R0.1;\n"
+        "G76 X60.64 Z-62 P3.680 Q1.800 F6;\n"
+        "G00 X62;\n"
+        "G76 X60.64 Z-62 P3.680 Q1.800 F6;\n";
+    CHECK(cycleref_cursor_open(alarm, strlen(alarm), &opts, &err) == NULL);
+    CHECK_EQ(err.status, CYCLEREF_STATUS_CYCLE_ERROR);
+    CHECK_EQ(err.line, 6);
+    CHECK(strstr(err.message, "start point A") != NULL);
     printf("expected error: %s\n", err.message);
 
     /* Invalid arguments. */
