@@ -249,7 +249,7 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         units: UnitsJson::new(units),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)))),
     };
-    let mut ser = serde_json::Serializer::pretty(&mut *out);
+    let mut ser = serde_json::Serializer::with_formatter(&mut *out, crate::json::Pretty::default());
     serde::Serialize::serialize(&doc, &mut ser).map_err(io::Error::from)?;
     out.write_all(b"\n")
 }
