@@ -185,14 +185,16 @@ fn expand_nc_streams_in_constant_memory() {
 #[test]
 fn expand_json_streams_in_constant_memory() {
     let write: fn(&Job) = |job| output::expand(job, Format::Json, std::io::sink()).expect("expands");
-    let (small, large) = (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
+    let (small, large) =
+        (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
     assert_flat("expand json", N_JSON, small, large);
 }
 
 #[test]
 fn expand_jsonl_streams_in_constant_memory() {
     let write: fn(&Job) = |job| output::expand(job, Format::Jsonl, std::io::sink()).expect("expands");
-    let (small, large) = (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
+    let (small, large) =
+        (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
     assert_flat("expand jsonl", N_JSON, small, large);
 }
 
