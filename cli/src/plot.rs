@@ -952,8 +952,8 @@ pub const MAX_CYCLES: usize = 24;
 /// Draws `job`'s cycles: those whose line (block 2 of G76 and G75.1,
 /// either block of G75.1, the G32 block) is in `lines`, or without
 /// `lines`, the first [`MAX_CYCLES`]. Returns the SVG document and, when
-/// cycles were left out, a note for the user saying how many and how to
-/// pick others.
+/// that limit left cycles out (never with `lines`), a note for the user
+/// saying how many and how to pick others.
 ///
 /// # Errors
 ///
@@ -1041,7 +1041,9 @@ pub fn run(
         })
         .collect();
     let svg = svg(&job.name, &cycles, &threads, &panels, overlay).map_err(crate::Failure::Message)?;
-    let note = (drawn < total).then(|| {
+    // Only when cycles were left out by the limit: cycles picked with
+    // `--line` are what was asked for.
+    let note = (lines.is_empty() && drawn < total).then(|| {
         format!(
             "{}: drew {drawn} of {total} cycles (at most {MAX_CYCLES} without --line); pick others with \
              --line N, N the line of a G76 or G75.1 block or of a G32 block (repeatable)",

@@ -57,7 +57,14 @@ const ATTEMPTS: u32 = 400;
 /// disagree on it, when no draft of its template fits, or when a file
 /// cannot be written.
 pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    if out.exists() && !out.is_dir() {
+        return Err(format!(
+            "--out {}: exists and is not a directory (vectors writes a directory of JSON files)",
+            out.display()
+        ));
+    }
+    std::fs::create_dir_all(out)
+        .map_err(|e| format!("--out {}: cannot create the directory: {e}", out.display()))?;
     let mut entries = Vec::new();
     let mut tag_counts: BTreeMap<String, u32> = BTreeMap::new();
     let mut files = BTreeSet::new();

@@ -1,0 +1,235 @@
+//! Streaming in bounded memory (issue 11): the reader's and the writers'
+//! peak live heap bytes do not grow with the number of blocks and cycles.
+//!
+//! A counting global allocator records, for the thread that asks, the bytes
+//! allocated minus the bytes freed and the highest value that difference
+//! reaches. Each measurement runs once on a program of `N` G76 cycles and
+//! once on the same program with `10 N` cycles; the program's text is built
+//! (and, for the writers, put in its [`Job`]) before counting starts, so the
+//! text itself, which the design holds once, is not counted.
+//!
+//! A global allocator needs `unsafe impl GlobalAlloc`: like
+//! `proofs/tests/no_alloc.rs`, this test file allows `unsafe` for that alone
+//! (the workspace lint is `deny`, every library crate has
+//! `#![forbid(unsafe_code)]`).
+#![allow(unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use cycleref_cli::{output, Format, Job};
+use cycleref_spec::pipeline::{Cycle, Engine};
+use cycleref_spec::{Machine, ProfileName, Reader};
+
+/// Live bytes and their peak, for the threads that asked for counting.
+#[derive(Clone, Copy)]
+struct Live {
+    now: i64,
+    peak: i64,
+}
+
+thread_local! {
+    static LIVE: Cell<Option<Live>> = const { Cell::new(None) };
+}
+
+fn track(delta: i64) {
+    // `try_with`: the thread-local may be gone while a thread exits.
+    let _ = LIVE.try_with(|c| {
+        if let Some(mut l) = c.get() {
+            l.now += delta;
+            l.peak = l.peak.max(l.now);
+            c.set(Some(l));
+        }
+    });
+}
+
+fn size(n: usize) -> i64 {
+    i64::try_from(n).unwrap_or(i64::MAX)
+}
+
+/// The system allocator, counting live bytes for the threads that asked.
+struct Counting;
+
+// SAFETY: every method forwards to `System` with the caller's arguments
+// unchanged, so `System`'s guarantees hold; the bookkeeping is a
+// thread-local `Cell` of a `Copy` value, which neither allocates nor
+// re-enters the allocator. A failed allocation (null) is not counted.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        // SAFETY: forwarded unchanged (see the impl).
+        let p = unsafe { System.alloc(layout) };
+        if !p.is_null() {
+            track(size(layout.size()));
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        // SAFETY: forwarded unchanged (see the impl).
+        let p = unsafe { System.alloc_zeroed(layout) };
+        if !p.is_null() {
+            track(size(layout.size()));
+        }
+        p
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        // SAFETY: forwarded unchanged (see the impl).
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if !p.is_null() {
+            track(size(new_size) - size(layout.size()));
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        track(-size(layout.size()));
+        // SAFETY: forwarded unchanged (see the impl).
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// The peak live bytes `f` allocates on this thread above what was live
+/// when it started.
+fn peak(f: impl FnOnce()) -> i64 {
+    LIVE.with(|c| c.set(Some(Live { now: 0, peak: 0 })));
+    f();
+    LIVE.with(|c| c.replace(None)).map_or(0, |l| l.peak)
+}
+
+/// A program of `n` G76 cycles (M68x6 of the 988TA manual, O0013), each
+/// followed by a G00 return to the start point.
+fn program(n: usize) -> Vec<u8> {
+    let mut s = String::from("O0013\nG50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\n");
+    for i in 0..n {
+        // Two ends alternate, so that not every cycle is the same.
+        let z = if i % 2 == 0 { "-62" } else { "-40.5" };
+        s.push_str(&format!("N{} G76 X60.64 Z{z} P3.680 Q1.800 F6 (cycle {i})\nG00 X80 Z10\n", i + 1));
+    }
+    s.push_str("M30\n");
+    s.into_bytes()
+}
+
+const N: usize = 2_000;
+/// The JSON writers are slower in a debug build (serde_json unoptimised):
+/// fewer cycles, still enough to see a byte per cycle.
+const N_JSON: usize = 500;
+
+fn job(n: usize, engine: Engine) -> Job {
+    Job::new("bounded.nc", program(n), Machine::new(ProfileName::Gsk988), engine)
+}
+
+/// Asserts that the peak measured on `10 n` cycles is within 10 % and
+/// 4 KiB of the one on `n` cycles (a cost of even a few bytes per cycle
+/// would break it), and that it is small in absolute terms.
+fn assert_flat(what: &str, n: usize, small: i64, large: i64) {
+    eprintln!("{what}: peak live bytes {small} for {n} cycles, {large} for {} cycles", 10 * n);
+    assert!(
+        large * 10 <= small * 11 + 4096 * 10,
+        "{what}: peak live bytes grow with the program: {small} for {n} cycles, {large} for {} cycles",
+        10 * n
+    );
+    // The output buffer is 64 KiB; one cycle's moves in the reference model
+    // a few KiB more.
+    assert!(large < 256 * 1024, "{what}: {large} live bytes");
+}
+
+#[test]
+fn the_counter_sees_live_bytes() {
+    let p = peak(|| {
+        let a = std::hint::black_box(vec![0_u8; 1000]);
+        drop(a);
+        let b = std::hint::black_box(vec![0_u8; 300]);
+        drop(b);
+    });
+    assert_eq!(p, 1000);
+}
+
+#[test]
+fn the_reader_reads_in_constant_memory() {
+    let measure = |n: usize| {
+        let text = program(n);
+        let machine = Machine::new(ProfileName::Gsk988);
+        let (mut items, mut cycles) = (0_usize, 0_usize);
+        let p = peak(|| {
+            for item in Reader::new(&text, &machine) {
+                let item = item.unwrap_or_else(|e| panic!("{e}"));
+                items += 1;
+                cycles += usize::from(Cycle::of(&item).is_some());
+            }
+        });
+        // O, G50, G00, G76 block 1, then a cycle and a G00 per cycle, M30.
+        assert_eq!((items, cycles), (4 + 2 * n + 1, n));
+        p
+    };
+    assert_flat("reader", N, measure(N), measure(10 * N));
+}
+
+fn writer_peak(n: usize, engine: Engine, write: fn(&Job)) -> i64 {
+    let job = job(n, engine);
+    peak(|| write(&job))
+}
+
+#[test]
+fn expand_nc_streams_in_constant_memory() {
+    let write: fn(&Job) = |job| output::expand(job, Format::Nc, std::io::sink()).expect("expands");
+    for engine in [Engine::Impl, Engine::Spec] {
+        let what = format!("expand nc ({engine:?})");
+        assert_flat(&what, N, writer_peak(N, engine, write), writer_peak(10 * N, engine, write));
+    }
+}
+
+#[test]
+fn expand_json_streams_in_constant_memory() {
+    let write: fn(&Job) = |job| output::expand(job, Format::Json, std::io::sink()).expect("expands");
+    let (small, large) =
+        (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
+    assert_flat("expand json", N_JSON, small, large);
+}
+
+#[test]
+fn expand_jsonl_streams_in_constant_memory() {
+    let write: fn(&Job) = |job| output::expand(job, Format::Jsonl, std::io::sink()).expect("expands");
+    let (small, large) =
+        (writer_peak(N_JSON, Engine::Impl, write), writer_peak(10 * N_JSON, Engine::Impl, write));
+    assert_flat("expand jsonl", N_JSON, small, large);
+}
+
+#[test]
+fn passes_streams_in_constant_memory() {
+    let write: fn(&Job) = |job| output::passes(job, std::io::sink()).expect("tabulates");
+    assert_flat("passes", N, writer_peak(N, Engine::Impl, write), writer_peak(10 * N, Engine::Impl, write));
+}
+
+#[test]
+fn the_writers_really_write() {
+    // The sink measurements above are only worth something if the writers
+    // do write the whole program: count what they write for a few cycles.
+    let job = job(3, Engine::Impl);
+    let mut nc = Vec::new();
+    output::expand(&job, Format::Nc, &mut nc).expect("expands");
+    let text = String::from_utf8(nc).expect("utf-8");
+    // M68x6 to Z-62: 30 moves (manual O0013); to Z-40.5 the same passes.
+    assert_eq!(text.matches("(G76 line ").count(), 3, "{text}");
+    assert_eq!(text.lines().filter(|l| l.starts_with("G32 ")).count(), 3 * 12, "{text}");
+    assert!(text.ends_with("G00 X80 Z10\nM30\n"), "{text}");
+}
+
+#[test]
+fn the_measure_sees_a_program_held_whole() {
+    // The control: collecting every item (`read`, which keeps a Vec of the
+    // whole program) does grow with the program, and the measure shows it.
+    let measure = |n: usize| {
+        let text = String::from_utf8(program(n)).expect("utf-8");
+        let machine = Machine::new(ProfileName::Gsk988);
+        peak(|| {
+            let p = cycleref_spec::read(&text, &machine).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(p.cycles().count(), n);
+        })
+    };
+    let (small, large) = (measure(N), measure(10 * N));
+    assert!(large > 5 * small, "{small} -> {large}");
+}
