@@ -411,7 +411,7 @@ impl<'a> Lexer<'a> {
         let mut pos = start;
         // N and O only first; nothing after O.
         let mut seen = false;
-        let mut program_number = false;
+        let mut program_number: Option<Word<'a>> = None;
         while pos < line.len() {
             let b = line[pos];
             match b {
@@ -433,7 +433,7 @@ impl<'a> Lexer<'a> {
                                 "a sequence number N may only start a block (after an optional `/`)",
                             ))
                         }
-                        'O' if !seen => program_number = true,
+                        'O' if !seen => program_number = Some(word),
                         'O' => {
                             return Err(misplaced(
                                 line_no,
@@ -441,12 +441,13 @@ impl<'a> Lexer<'a> {
                                 "a program number O must stand at the start of a block of its own",
                             ))
                         }
-                        _ if program_number => {
+                        _ if program_number.is_some() => {
+                            // The O word is the one out of place.
                             return Err(misplaced(
                                 line_no,
-                                &word,
+                                program_number.as_ref().unwrap_or(&word),
                                 "a program number O must stand in a block of its own; nothing may follow it",
-                            ))
+                            ));
                         }
                         _ => words.push(word),
                     }

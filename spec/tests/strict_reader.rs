@@ -104,7 +104,7 @@ fn o_only_alone_at_the_start_of_its_block() {
     assert!(read_bytes(b"%\nO0013;\nG00 X80 Z10;\n%\n", &m).is_ok());
     // Anything after the program number in its block is an error.
     let e = error(b"O12 G00 X10\n", &m);
-    assert_eq!((e.line, e.kind.name()), (1, "misplaced"), "{e}");
+    assert_eq!((e.line, e.word.as_deref(), e.kind.name()), (1, Some("O12"), "misplaced"), "{e}");
     assert!(e.to_string().contains("a program number O must stand in a block of its own"), "{e}");
     let e = error(b"M03 S500\nN5 O12\n", &m);
     assert_eq!((e.line, e.word.as_deref(), e.kind.name()), (2, Some("O12"), "misplaced"), "{e}");
