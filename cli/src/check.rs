@@ -34,7 +34,7 @@ use std::io::BufRead;
 use cycleref_spec::lex::{Block, Lexer, Word};
 use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::pipeline::Moves;
-use cycleref_spec::reader::{length_word, q_word, Item};
+use cycleref_spec::reader::{length_word, q_word, Item, MotionMode};
 use cycleref_spec::Machine;
 use cycleref_spec::Reader;
 use rust_decimal::Decimal;
@@ -409,13 +409,13 @@ impl<'m> Tracker<'m> {
     }
 
     /// The motion mode in force again after a one-shot cycle.
-    fn restore(&mut self, motion: Option<&str>) {
+    fn restore(&mut self, motion: Option<MotionMode>) {
         self.motion = match motion {
-            Some("G01") => Kind::Feed,
-            Some("G02") => Kind::ArcCw,
-            Some("G03") => Kind::ArcCcw,
-            Some("G32") => Kind::Thread,
-            _ => Kind::Rapid,
+            Some(MotionMode::G01) => Kind::Feed,
+            Some(MotionMode::G02) => Kind::ArcCw,
+            Some(MotionMode::G03) => Kind::ArcCcw,
+            Some(MotionMode::G32) => Kind::Thread,
+            Some(MotionMode::G00) | None => Kind::Rapid,
         };
     }
 }
@@ -537,7 +537,7 @@ struct Running {
     moves: Moves,
     line: usize,
     code: &'static str,
-    restore: Option<&'static str>,
+    restore: Option<MotionMode>,
 }
 
 /// Our toolpath, a step at a time: the program's motion blocks and its

@@ -284,7 +284,7 @@ fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()
 
 fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
     match r.motion {
-        Some(g) => writeln!(out, "{g}"),
+        Some(g) => writeln!(out, "{}", g.code()),
         None => Ok(()),
     }
 }

@@ -81,7 +81,7 @@ pub struct Restore {
     /// (G76 is a one-shot code; the expansion ends with G00). The F register
     /// needs no restoring: the expansion writes the lead exactly as the
     /// cycle programmed or inherited it (reading R-NCOUT).
-    pub motion: Option<&'static str>,
+    pub motion: Option<MotionMode>,
 }
 
 /// A program read with a machine.
@@ -119,17 +119,25 @@ impl<'a> Program<'a> {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum MotionMode {
+/// A motion G code of group 01, as the reader keeps it modal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MotionMode {
+    /// G00, rapid.
     G00,
+    /// G01, linear feed.
     G01,
+    /// G02, clockwise arc.
     G02,
+    /// G03, counter-clockwise arc.
     G03,
+    /// G32, thread cutting.
     G32,
 }
 
 impl MotionMode {
-    fn code(self) -> &'static str {
+    /// The G code as written (`G01`).
+    #[must_use]
+    pub fn code(self) -> &'static str {
         match self {
             MotionMode::G00 => "G00",
             MotionMode::G01 => "G01",
@@ -1072,7 +1080,7 @@ impl State<'_> {
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
         let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
-        let restore = Restore { motion: (self.motion != MotionMode::G00).then(|| self.motion.code()) };
+        let restore = Restore { motion: (self.motion != MotionMode::G00).then_some(self.motion) };
         let cycle = G76Cycle {
             units: self.units,
             x_mode: self.machine.x_mode,
@@ -1265,7 +1273,7 @@ impl State<'_> {
             corners,
         };
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
-        let restore = Restore { motion: (self.motion != MotionMode::G00).then(|| self.motion.code()) };
+        let restore = Restore { motion: (self.motion != MotionMode::G00).then_some(self.motion) };
         // Step 10: the tool ends where it was before the cycle.
         self.moved = true;
         Ok(G75Call { block, params_line: first.line, cycle, restore })
