@@ -23,9 +23,10 @@ fn cycleref(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-/// The program's file and its expansion, as lines.
-fn expanded() -> (String, Vec<String>) {
-    let program = dir().join("three.nc");
+/// The program's file (named for the test: the tests run at once) and its
+/// expansion, as lines.
+fn expanded(name: &str) -> (String, Vec<String>) {
+    let program = dir().join(name);
     std::fs::write(&program, PROGRAM).expect("write");
     let p = program.to_str().expect("utf-8").to_string();
     let (code, out, err) = cycleref(&["expand", "--profile", "gsk988", &p]);
@@ -43,7 +44,7 @@ fn check(program: &str, trace: &[String], name: &str) -> (i32, String) {
 
 #[test]
 fn a_cycle_missing_from_the_trace_is_seven_missing_passes_of_that_cycle_only() {
-    let (program, lines) = expanded();
+    let (program, lines) = expanded("missing-cycle-program.nc");
     // The second cycle (block 2 at line 7): its heading comment to the
     // block before the next program block, `G00 X80 Z10` of line 8.
     let start = lines.iter().position(|l| l.starts_with("(G76 line 7:")).expect("cycle 2");
@@ -66,7 +67,7 @@ fn a_cycle_missing_from_the_trace_is_seven_missing_passes_of_that_cycle_only() {
 
 #[test]
 fn a_pass_too_many_in_the_first_cycle_is_one_extra_pass() {
-    let (program, lines) = expanded();
+    let (program, lines) = expanded("extra-pass-program.nc");
     // Rough pass 2 of the first cycle, written twice.
     let start = lines.iter().position(|l| l.starts_with("(rough 2 start 1")).expect("pass 2");
     let pass: Vec<String> = lines[start + 1..start + 6].to_vec();
@@ -84,7 +85,7 @@ fn a_pass_too_many_in_the_first_cycle_is_one_extra_pass() {
 #[test]
 fn the_trace_may_come_from_standard_input() {
     use std::io::Write as _;
-    let (program, lines) = expanded();
+    let (program, lines) = expanded("stdin-program.nc");
     let mut child = Command::new(env!("CARGO_BIN_EXE_cycleref"))
         .args(["check", "--profile", "gsk988", "--trace", "-", &program])
         .stdin(std::process::Stdio::piped())
