@@ -355,6 +355,8 @@ pub struct Lexer<'a> {
 }
 
 const BOM: &[u8] = b"\xEF\xBB\xBF";
+/// Where `%` may stand (reading R-SEQNUM).
+const MARK_RULE: &str = "`%` marks the start or the end of a program, on a line of its own";
 const FULL_SEMI: &[u8] = "；".as_bytes();
 const FULL_OPEN: &[u8] = "（".as_bytes();
 const FULL_CLOSE: &[u8] = "）".as_bytes();
@@ -409,9 +411,15 @@ impl<'a> Lexer<'a> {
         let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
         let mut words = Words::new();
         let mut pos = start;
-        // N and O only first; nothing after O.
+        // N and O only first; nothing after O; `/` only first; `%` alone.
         let mut seen = false;
         let mut program_number: Option<Word<'a>> = None;
+        let mut mark = false;
+        let out_of_place = |what: &str, rule: &'static str| ProgramError {
+            line: line_no,
+            word: Some(what.to_string()),
+            kind: ErrorKind::Misplaced { rule },
+        };
         while pos < line.len() {
             let b = line[pos];
             match b {
@@ -420,10 +428,19 @@ impl<'a> Lexer<'a> {
                     pos =
                         comment_end(line, pos + 1).ok_or_else(|| syntax("an unclosed comment `(`".into()))?
                 }
-                b'%' | b'/' => pos += 1,
+                b'%' if !seen && start == 0 => {
+                    mark = true;
+                    pos += 1;
+                }
+                b'%' => return Err(out_of_place("%", MARK_RULE)),
+                b'/' if !seen && !mark => pos += 1,
+                b'/' => return Err(out_of_place("/", "block delete `/` may only start a block")),
                 b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
                 b if b.is_ascii_alphabetic() => {
                     let (word, end) = read_word(whole, pos, line_no)?;
+                    if mark {
+                        return Err(misplaced(line_no, &word, MARK_RULE));
+                    }
                     match word.letter {
                         'N' if !seen => {}
                         'N' => {

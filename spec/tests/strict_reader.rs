@@ -332,3 +332,28 @@ fn the_property_reaches_cycles() {
         run_all(src.as_bytes()).expect("agree");
     }
 }
+
+#[test]
+fn percent_alone_on_its_line_and_slash_only_first() {
+    let m = Machine::new(ProfileName::Gsk988);
+    // Accepted: `%` lines (with a comment), `/` before the first word.
+    for ok in ["%\nG00 X80 Z10\n%\n", "% (start)\nG00 X80 Z10\n", "/G00 X80 Z10\n", " / N10 G00 X80\n"] {
+        assert!(read_bytes(ok.as_bytes(), &m).is_ok(), "{ok:?}");
+    }
+    // Refused, naming the mark and the rule (R-SEQNUM).
+    for (bad, line, word) in [
+        ("G00 X10 % Z5\n", 1, "%"),
+        ("G00 X80 Z10\n% G00 X10\n", 2, "G00"),
+        ("G00 X10 / Z5\n", 1, "/"),
+        ("G00 X80 Z10; %\n", 1, "%"),
+    ] {
+        let e = error(bad.as_bytes(), &m);
+        assert_eq!(
+            (e.line, e.word.as_deref(), e.kind.name()),
+            (line, Some(word), "misplaced"),
+            "{bad:?}: {e}"
+        );
+    }
+    assert!(error(b"G00 X10 % Z5\n", &m).to_string().contains("on a line of its own"));
+    assert!(error(b"G00 X10 / Z5\n", &m).to_string().contains("block delete `/` may only start a block"));
+}
