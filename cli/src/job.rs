@@ -157,8 +157,39 @@ impl Job {
     ///
     /// The first error in program order, named with the file.
     pub fn validate(&self) -> Result<Summary, Failure> {
-        cycleref_spec::pipeline::validate(&self.source, &self.machine, self.engine, false)
-            .map_err(|e| self.fail(&e))
+        cycleref_spec::pipeline::validate(&self.source, &self.machine, self.engine, false).map_err(|e| {
+            match self.other_increment_hint(&e) {
+                Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
+                None => self.fail(&e),
+            }
+        })
+    }
+
+    /// When a G76 start lies inside the thread (the usual sign of lengths
+    /// read in the wrong increment system: P(k) in increments at IS-B
+    /// where the program was written for IS-C) and the whole program is
+    /// valid with the other increment system, a hint saying so.
+    fn other_increment_hint(&self, e: &RunError) -> Option<String> {
+        let inside = match e {
+            RunError::Cycle { error, .. } => *error == cycleref::CycleError::StartInsideThread,
+            RunError::Program(p) => {
+                p.kind == cycleref_spec::ErrorKind::Cycle(cycleref::CycleError::StartInsideThread)
+            }
+        };
+        if !inside {
+            return None;
+        }
+        let mut other = self.machine.clone();
+        let (flag, system) = match other.increment {
+            IncrementSystem::IsB => ("is-c", IncrementSystem::IsC),
+            IncrementSystem::IsC => ("is-b", IncrementSystem::IsB),
+        };
+        other.increment = system;
+        cycleref_spec::pipeline::validate(&self.source, &other, self.engine, false).ok().map(|_| {
+            format!(
+                "the program is valid with the other increment system: was it written for --increment {flag}?"
+            )
+        })
     }
 
     /// The whole program in memory (for the commands that need it all:

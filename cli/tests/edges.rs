@@ -274,3 +274,40 @@ fn plot_line_picks_cycles() {
         assert!(!svg.exists(), "no file on error");
     }
 }
+
+#[test]
+fn a_start_inside_the_thread_only_at_this_increment_names_the_other() {
+    // The 980TDi manual's M68x6 program gives P(k) and Q(Δd) in least
+    // increments for IS-C (P36800 = 3.68 mm); read at IS-B they are 36.8
+    // and 18 mm, and A (X80) lies inside a thread 73.6 mm deep.
+    let gsk980 = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk980-m68x6.nc");
+    let out = run(&["expand", "--profile", "gsk980", gsk980], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the start point A lies inside the thread"), "{err}");
+    assert!(err.contains("was it written for --increment is-c?"), "{err}");
+    // A start inside the thread at every increment system gets no hint.
+    let inside = b"M03 S500\nG00 X62 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+    let out = run(&["expand", "--profile", "gsk988", "-"], Some(inside));
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the start point A lies inside the thread"), "{err}");
+    assert!(!err.contains("--increment"), "{err}");
+}
+
+#[test]
+fn no_program_and_standard_input_a_terminal_is_a_usage_error() {
+    // `script` gives the command a terminal for standard input.
+    if Command::new("script").arg("--version").output().is_err() {
+        eprintln!("no `script` here: skipped");
+        return;
+    }
+    let out = Command::new("script")
+        .args(["-qec", &format!("{BIN} expand"), "/dev/null"])
+        .stdin(Stdio::null())
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("no program: give a FILE"));
+}
