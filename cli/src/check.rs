@@ -1130,15 +1130,50 @@ fn only_kinds(d: &[Divergence]) -> bool {
     d.iter().all(|d| d.what == "kind of move")
 }
 
-/// The trace at `trace` as points to draw over our toolpath.
-pub fn overlay(job: &Job, trace: &Path) -> Result<crate::plot::Overlay, String> {
+/// The trace at `trace` as points to draw over the cycles drawn: for each
+/// range of `ranges` (the indices of a drawn cycle's moves in our whole
+/// toolpath, the first move being 0), the trace's moves whose index lies in
+/// it, widened by a tenth (at least 16) each way so that a trace with a few
+/// moves more or less still shows whole; at most
+/// [`crate::plot::MAX_OVERLAY_POINTS`] a cycle. The trace is read as it is
+/// taken.
+///
+/// # Errors
+///
+/// The program's or the trace's first error.
+pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<crate::plot::Overlay, String> {
     let units = job.validate()?.units;
     let (name, source) = open_trace(trace)?;
-    let mut points = Vec::new();
-    for step in trace_steps(source, is_csv(trace), &job.machine, units).map_err(|e| format!("{name}: {e}"))? {
-        points.push(step.map_err(|e| format!("{name}: {e}"))?.0.to);
+    let widened: Vec<(usize, usize)> = ranges
+        .iter()
+        .map(|&(from, to)| {
+            let slack = ((to - from) / 10).max(16);
+            (from.saturating_sub(slack), to + slack)
+        })
+        .collect();
+    let last = widened.iter().map(|r| r.1).max().unwrap_or(0);
+    let mut per_cycle = vec![Vec::new(); ranges.len()];
+    let mut dropped = 0_usize;
+    for (i, step) in trace_steps(source, is_csv(trace), &job.machine, units)
+        .map_err(|e| format!("{name}: {e}"))?
+        .enumerate()
+    {
+        let p = step.map_err(|e| format!("{name}: {e}"))?.0.to;
+        if i > last {
+            // The rest is read only for its errors.
+            continue;
+        }
+        for (k, (from, to)) in widened.iter().enumerate() {
+            if (*from..*to).contains(&i) {
+                if per_cycle[k].len() < crate::plot::MAX_OVERLAY_POINTS {
+                    per_cycle[k].push(p);
+                } else {
+                    dropped += 1;
+                }
+            }
+        }
     }
-    Ok(crate::plot::Overlay { name, points })
+    Ok(crate::plot::Overlay { name, per_cycle, dropped })
 }
 
 /// True when the trace at `trace` is a CSV (by its extension).

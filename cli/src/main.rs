@@ -224,11 +224,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         }
         Command::Plot { common, output, trace, lines } => {
             let job = Job::load(&common.options())?;
-            let overlay = match trace {
-                Some(t) => Some(check::overlay(&job, &t)?),
-                None => None,
-            };
-            let (svg, note) = plot::run(&job, &lines, overlay.as_ref())?;
+            let (svg, note) = plot::run(&job, &lines, trace.as_deref())?;
             std::fs::write(&output, svg)
                 .map_err(|e| Failure::msg(format!("{}: cannot write: {e}", output.display())))?;
             if let Some(note) = note {

@@ -328,9 +328,15 @@ fn distance(p: Point, q: Point) -> u64 {
 pub struct Overlay {
     /// The trace's name, for the label.
     pub name: String,
-    /// Its points in order, in increments.
-    pub points: Vec<Point>,
+    /// For each G76 cycle drawn, in order, the trace's points in order (in
+    /// increments) that correspond to its moves (`check::overlay`).
+    pub per_cycle: Vec<Vec<Point>>,
+    /// Points left out beyond [`MAX_OVERLAY_POINTS`] a cycle.
+    pub dropped: usize,
 }
+
+/// The most trace points drawn over one cycle.
+pub const MAX_OVERLAY_POINTS: usize = 50_000;
 
 /// Scales from increments to pixels.
 pub(crate) struct Mapping {
@@ -596,7 +602,7 @@ impl<'a> Panel<'a> {
     /// plot area, with a label: where it leaves our path, it shows.
     fn draw_overlay(&self, g: Group, o: &Overlay, index: usize) -> Group {
         let mut d = String::new();
-        for (i, p) in o.points.iter().enumerate() {
+        for (i, p) in o.per_cycle.get(index).into_iter().flatten().enumerate() {
             let (x, y) = self.map.px(*p);
             let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(x), num(y));
         }
@@ -962,7 +968,7 @@ pub const MAX_CYCLES: usize = 24;
 pub fn run(
     job: &crate::Job,
     lines: &[usize],
-    overlay: Option<&Overlay>,
+    trace: Option<&std::path::Path>,
 ) -> Result<(String, Option<String>), crate::Failure> {
     use cycleref_spec::pipeline::Cycle;
     use cycleref_spec::reader::Item;
@@ -971,10 +977,20 @@ pub fn run(
     let mut threads = Vec::new();
     let mut grooves = Vec::new();
     let (mut total, mut drawn) = (0_usize, 0_usize);
+    // Where each G76 cycle drawn lies in the whole toolpath, by move index.
+    let (mut position, mut ranges) = (0_usize, Vec::new());
     let mut found = BTreeSet::new();
     for item in job.reader() {
         let item = item.map_err(|e| job.fail(&e.into()))?;
-        let Some(cycle) = Cycle::of(&item) else { continue };
+        let Some(cycle) = Cycle::of(&item) else {
+            // A block that moves is one move of the toolpath (as `check`
+            // counts them; approximately: a block to where the tool is
+            // counts too, which the overlay's slack absorbs).
+            if let Item::Source(b) = &item {
+                position += usize::from(['X', 'Z', 'U', 'W'].iter().any(|&c| b.has(c)));
+            }
+            continue;
+        };
         total += 1;
         let wanted = if lines.is_empty() {
             drawn < MAX_CYCLES
@@ -993,12 +1009,18 @@ pub fn run(
             hit
         };
         if !wanted {
+            position += job.expand(cycle)?.count();
             continue;
         }
         drawn += 1;
         let moves: Vec<Move> = job.expand(cycle)?.collect();
+        let from = position;
+        position += moves.len();
         match item {
-            Item::G76(call) => cycles.push((call, moves)),
+            Item::G76(call) => {
+                ranges.push((from, position));
+                cycles.push((call, moves));
+            }
             Item::G32(call) => threads.push((call, moves)),
             Item::G75(call) => {
                 // The profile is the finishing path of the same groove for a
@@ -1040,7 +1062,14 @@ pub fn run(
             rough: rough.clone(),
         })
         .collect();
-    let svg = svg(&job.name, &cycles, &threads, &panels, overlay).map_err(crate::Failure::Message)?;
+    // The trace, read now: for each G76 cycle drawn, its moves at the same
+    // places in the toolpath.
+    let overlay = match trace {
+        Some(t) => Some(crate::check::overlay(job, t, &ranges)?),
+        None => None,
+    };
+    let svg =
+        svg(&job.name, &cycles, &threads, &panels, overlay.as_ref()).map_err(crate::Failure::Message)?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {
@@ -1050,6 +1079,15 @@ pub fn run(
             job.name
         )
     });
+    let dropped = overlay.as_ref().map_or(0, |o| o.dropped);
+    let note = match (note, dropped) {
+        (note, 0) => note,
+        (note, n) => Some(format!(
+            "{}{}: the trace's first {MAX_OVERLAY_POINTS} points over each cycle are drawn, {n} more are not",
+            note.map_or(String::new(), |s| s + "\n"),
+            job.name
+        )),
+    };
     Ok((svg, note))
 }
 
