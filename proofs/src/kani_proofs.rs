@@ -27,6 +27,7 @@ const WINDOW: Domain = Domain {
     chamfer_angle: (1, 89),
     units: (0, 7),
     pass_limit: 64,
+    wild_x: 2,
 };
 
 #[kani::proof]

@@ -4,7 +4,7 @@
 //! summarises them. A longer exhaustive run over larger domains:
 //!
 //! ```sh
-//! cargo test -p cycleref-proofs --release --test harnesses -- --ignored
+//! cargo test -p cycleref-proofs --profile proofs --test harnesses -- --ignored
 //! ```
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
@@ -83,7 +83,17 @@ const WIDE: Domain = Domain {
     chamfer_angle: (1, 89),
     units: (0, 7),
     pass_limit: 2_000,
+    wild_x: 2_000_000_000,
 };
+
+/// The harnesses check "no overflow" by the panic an overflow raises: the
+/// profile must keep overflow checks on (dev does; `--profile proofs` is
+/// release with them on; plain `--release` turns them off and fails here).
+#[test]
+fn overflow_checks_are_on() {
+    let sum = std::panic::catch_unwind(|| std::hint::black_box(i64::MAX) + std::hint::black_box(1));
+    assert!(sum.is_err(), "overflow checks are off: run the long proofs with --profile proofs");
+}
 
 #[test]
 fn p1_depth_monotonicity() {
@@ -147,7 +157,7 @@ fn p8_isqrt_rounds() {
 }
 
 #[test]
-#[ignore = "long run: several minutes in release; see README"]
+#[ignore = "long run: several minutes with --profile proofs; see README"]
 fn long_exhaustive() {
     let started = std::time::Instant::now();
     check("depth monotonicity (wide)", exhaustive(200_000_000), || {
