@@ -38,6 +38,14 @@ pub enum Mode {
         /// Largest number of runs allowed.
         max_runs: u64,
     },
+    /// Every sequence of choices like [`Mode::Exhaustive`], for a
+    /// measurement rather than a proof: the covers are reported, not
+    /// required (the unwind measurements of `proofs/tests/unwind.rs` run the
+    /// worst cases of a window, where some covers cannot hold).
+    Enumerate {
+        /// Largest number of runs allowed.
+        max_runs: u64,
+    },
     /// This many runs with random choices from a fixed seed.
     Sample {
         /// Number of runs.
@@ -200,10 +208,10 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
     STATE.with(|s| {
         *s.borrow_mut() = State {
             active: true,
-            exhaustive: matches!(mode, Mode::Exhaustive { .. }),
+            exhaustive: matches!(mode, Mode::Exhaustive { .. } | Mode::Enumerate { .. }),
             rng: match mode {
                 Mode::Sample { seed, .. } => seed,
-                Mode::Exhaustive { .. } => 0,
+                Mode::Exhaustive { .. } | Mode::Enumerate { .. } => 0,
             },
             ..State::default()
         }
@@ -230,7 +238,7 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
         }
         let more = match mode {
             Mode::Sample { runs, .. } => report.runs < runs,
-            Mode::Exhaustive { max_runs } => {
+            Mode::Exhaustive { max_runs } | Mode::Enumerate { max_runs } => {
                 let advanced = STATE.with(|s| {
                     let mut s = s.borrow_mut();
                     // The choices beyond the ones this run made are stale.
