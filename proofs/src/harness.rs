@@ -59,6 +59,12 @@ pub struct Domain {
     pub units: (i64, i64),
     /// Rough pass limit of the generated cycles.
     pub pass_limit: u32,
+    /// Lead-in E (radius increments); 0 is none.
+    pub lead_in: (i64, i64),
+    /// Lead: 0 = F2, 1 = F0.01, 2 = I8 (threads per inch), 3 = I2540 (the
+    /// smallest lead, 0.0004 in); F is mm or inch per revolution as the
+    /// units say.
+    pub lead: (i64, i64),
     /// [`no_panic`] only: the start X it may set, as an invalid word, to
     /// any value in `-wild_x..=wild_x` (beyond the coordinate range in
     /// [`Domain::FULL`]).
@@ -87,6 +93,8 @@ impl Domain {
         chamfer_angle: (1, 89),
         units: (0, 7),
         pass_limit: 2_000,
+        lead_in: (0, 999_999_999),
+        lead: (0, 3),
         wild_x: 2_000_000_000,
     };
 
@@ -123,6 +131,8 @@ impl Domain {
         chamfer_angle: (45, 45),
         units: (0, 0),
         pass_limit: 10_000,
+        lead_in: (0, 0),
+        lead: (0, 0),
         wild_x: 2,
     };
 }
@@ -199,6 +209,13 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
             long: Some(pick(d.run_out)),
         },
     };
+    let lead_in = pick(d.lead_in);
+    let lead = match pick(d.lead) {
+        0 => Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        1 => Lead { word: LeadWord::F, mantissa: 1, scale: 2 },
+        2 => Lead { word: LeadWord::I, mantissa: 8, scale: 0 },
+        _ => Lead { word: LeadWord::I, mantissa: 2540, scale: 0 },
+    };
     let code = pick(d.units);
     let units = Units {
         system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
@@ -227,16 +244,17 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
         finishing_passes: finishing,
         tool_angle,
         infeed,
-        lead_in: 0,
+        lead_in,
         starts,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        lead,
         run_out,
         pass_limit: d.pass_limit,
     }
 }
 
 /// The passes of a move stream: each pass's first move (the approach) with
-/// the pass annotation, and the cut's end before any run-out.
+/// the pass annotation, and the pass start Bn: where the approach ends, or
+/// with a lead-in, where the screw-in from An ends.
 struct PassView {
     kind: PassKind,
     flank: Flank,
@@ -249,17 +267,21 @@ struct PassView {
 fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
     let mut out = Vec::new();
     for m in moves {
-        if m.role == Role::Approach {
-            if let Some(p) = m.pass {
-                out.push(PassView {
-                    kind: p.kind,
-                    flank: p.flank,
-                    depth: p.depth,
-                    cut: p.cut,
-                    start: u32::from(p.start),
-                    bn: m.to,
-                });
+        match (m.role, m.pass) {
+            (Role::Approach, Some(p)) => out.push(PassView {
+                kind: p.kind,
+                flank: p.flank,
+                depth: p.depth,
+                cut: p.cut,
+                start: u32::from(p.start),
+                bn: m.to,
+            }),
+            (Role::LeadIn, Some(_)) => {
+                if let Some(last) = out.last_mut() {
+                    last.bn = m.to;
+                }
             }
+            _ => {}
         }
     }
     out
@@ -292,7 +314,7 @@ pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
     let mut previous = 0;
     let mut previous_cut = i64::MAX;
     let mut previous_flank = None;
-    let mut levels = 0;
+    let mut levels = 0_u64;
     for p in passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1) {
         if c.infeed == Infeed::LeftRight && p.flank == Flank::Left {
             let repeats = previous_flank == Some(Flank::Right) && levels > 0 && p.depth == previous;
@@ -307,10 +329,12 @@ pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
         assert_eq!(p.cut, p.depth - previous, "cut annotation");
         assert!(p.cut >= min.min(last - previous), "cut below min(Δdmin, remainder)");
         assert!(p.cut >= 1);
-        let law = cycleref::engine::round_sqrt(
-            (c.first_depth as u128) * (c.first_depth as u128) * (levels as u128),
-        ) as i64;
-        if p.depth == law && p.depth < last {
+        // p.depth = round(Δd √levels), from its definition (2s - 1)² ≤ 4x <
+        // (2s + 1)² (no square root: an independent restatement of the law).
+        let x4 = 4 * u128::from(c.first_depth.unsigned_abs()).pow(2) * u128::from(levels);
+        let s2 = 2 * u128::from(p.depth.unsigned_abs());
+        let by_law = (s2 - 1).pow(2) <= x4 && x4 < (s2 + 1).pow(2);
+        if by_law && p.depth < last {
             assert!(p.cut <= previous_cut.saturating_add(1), "a law cut grew by more than rounding");
         }
         previous_cut = p.cut;
@@ -395,6 +419,8 @@ pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
         "internal run-out, Z long",
         "run-out with X long",
         "run-out on a taper",
+        "a chamfered run-out",
+        "an I lead",
     ]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
@@ -427,27 +453,33 @@ pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
     cover!(seen > 0 && z_long && s < 0, "internal run-out, Z long");
     cover!(seen > 0 && !z_long, "run-out with X long");
     cover!(seen > 0 && c.taper != 0, "run-out on a taper");
+    cover!(seen > 0 && matches!(c.run_out, RunOut::Chamfer { .. }), "a chamfered run-out");
+    cover!(seen > 0 && c.lead.word == LeadWord::I, "an I lead");
 }
 
 /// Property 5, no overcut: no pass's tool tip lies outside the final thread
 /// form (the tool's V at depth k centred on the finishing Z) by more than
 /// one increment: |shift - zc| <= round((k - Dn) tan(a/2)) + 1.
 pub fn no_overcut<E: Engine>(d: &Domain, engine: &E) {
-    declare(&["D2 with a flank angle", "D1 with a flank angle"]);
+    declare(&["D2 with a flank angle", "D1 with a flank angle", "with a lead-in"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let t = (c.end.z - c.start.z).signum();
-    let zc = cycleref::tan::mul_tan_round(c.thread_height - c.finishing_allowance, c.tool_angle).unwrap_or(0);
+    // The reference's exact rounded product (its own tangent table, integer
+    // arithmetic), not the engine's.
+    let room_at = |depth: i64| cycleref_spec::tan::mul_tan_round(depth, c.tool_angle).unwrap_or(0);
+    let zc = room_at(c.thread_height - c.finishing_allowance);
     let mut worst = 0;
     for p in passes(moves) {
         let shift = t * (p.bn.z - c.start.z);
-        let room = cycleref::tan::mul_tan_round(c.thread_height - p.depth, c.tool_angle).unwrap_or(0);
+        let room = room_at(c.thread_height - p.depth);
         assert!((shift - zc).abs() <= room + 1, "a pass lies outside the final form");
         assert!(shift >= 0, "a pass starts behind A");
         worst = worst.max((shift - zc).abs() - room);
     }
     cover!(c.infeed == Infeed::LeftRight && c.tool_angle > 0, "D2 with a flank angle");
     cover!(c.infeed == Infeed::RightCentre && c.tool_angle > 0, "D1 with a flank angle");
+    cover!(c.lead_in > 0, "with a lead-in");
 }
 
 /// Property 6, equivalence: the engine's moves (or alarm) equal the

@@ -19,41 +19,42 @@ use crate::windows::{
     NO_PANIC_MOVES, NO_PANIC_WINDOW,
 };
 
-/// P1 over [`G76_WINDOW`] (k ≤ 6, one start). Unwind 66; measured: 65
-/// moves in a cycle (the harness's loops), 4 levels counted, 3 Newton
-/// steps, 9 gcd steps, 2 path steps skipped per move. Contracts: none.
+/// P1 over [`G76_WINDOW`] (k ≤ 6, one start, lead-in ≤ 3). Unwind 79;
+/// measured: 78 moves in a cycle (the harness's loops), 4 levels counted,
+/// 3 Newton steps, 9 gcd steps, 3 path steps tried per move. Contracts:
+/// none.
 #[kani::proof]
-#[kani::unwind(66)]
+#[kani::unwind(79)]
 fn depth_monotonicity() {
     harness::depth_monotonicity(&G76_WINDOW, &FixedPoint);
 }
 
-/// P2 over [`G76_WINDOW`]. Unwind 66; measured as P1 (65 moves). Contracts: none.
+/// P2 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
 #[kani::proof]
-#[kani::unwind(66)]
+#[kani::unwind(79)]
 fn termination() {
     harness::termination(&G76_WINDOW, &FixedPoint);
 }
 
-/// P3 over [`FINISHING_WINDOW`] (k ≤ 4, two starts). Unwind 91; measured:
-/// 90 moves (9 passes × 2 starts × 5), 3 levels counted, 9 gcd steps.
-/// Contracts: none.
+/// P3 over [`FINISHING_WINDOW`] (k ≤ 4, two starts). Unwind 109;
+/// measured: 108 moves (9 passes × 2 starts × 6), 3 levels counted, 9 gcd
+/// steps. Contracts: none.
 #[kani::proof]
-#[kani::unwind(91)]
+#[kani::unwind(109)]
 fn finishing() {
     harness::finishing(&FINISHING_WINDOW, &FixedPoint);
 }
 
-/// P4 over [`G76_WINDOW`]. Unwind 66; measured as P1 (65 moves). Contracts: none.
+/// P4 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
 #[kani::proof]
-#[kani::unwind(66)]
+#[kani::unwind(79)]
 fn run_out_direction() {
     harness::run_out_direction(&G76_WINDOW, &FixedPoint);
 }
 
-/// P5 over [`G76_WINDOW`]. Unwind 66; measured as P1 (65 moves). Contracts: none.
+/// P5 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
 #[kani::proof]
-#[kani::unwind(66)]
+#[kani::unwind(79)]
 fn no_overcut() {
     harness::no_overcut(&G76_WINDOW, &FixedPoint);
 }

@@ -10,9 +10,10 @@ use crate::harness::Domain;
 
 /// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
 /// one start, every infeed mode, side, direction, unit code, run-out kind,
-/// tool and chamfer angle. The most moves a cycle has here is 5 per pass
-/// (approach, cut, run-out, retract, return) times 13 passes (D2 with
-/// k = 6, Δd = 1: 6 levels, 11 rough passes, then m = 2).
+/// tool and chamfer angle, lead (F and I) and lead-in E ≤ 3. The most
+/// moves a cycle has here is 6 per pass (approach, lead-in, cut, run-out,
+/// retract, return) times 13 passes (D2 with k = 6, Δd = 1: 6 levels, 11
+/// rough passes, then m = 2): 78.
 pub const G76_WINDOW: Domain = Domain {
     height: (1, 6),
     first_depth: (1, 6),
@@ -32,6 +33,8 @@ pub const G76_WINDOW: Domain = Domain {
     chamfer_angle: (1, 89),
     units: (0, 7),
     pass_limit: 16,
+    lead_in: (0, 3),
+    lead: (0, 3),
     wild_x: 2,
 };
 
@@ -90,11 +93,11 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
 
 /// Each Kani harness and its `#[kani::unwind(N)]`.
 pub const UNWIND: [(&str, u32); 15] = [
-    ("depth_monotonicity", 66),
-    ("termination", 66),
-    ("finishing", 91),
-    ("run_out_direction", 66),
-    ("no_overcut", 66),
+    ("depth_monotonicity", 79),
+    ("termination", 79),
+    ("finishing", 109),
+    ("run_out_direction", 79),
+    ("no_overcut", 79),
     ("equivalence", 81),
     ("no_panic", 34),
     ("isqrt_rounds", 7),

@@ -39,9 +39,10 @@ const SCHEDULE_WIDE: Domain = Domain {
     ..Domain::POINT
 };
 
-/// Geometry: every side, direction, infeed, tool angle in steps, tapers
-/// including X as the long axis (|i| >= |W| = 40), every run-out kind, all
-/// unit codes, over a small schedule.
+/// Geometry: every side, direction, infeed, tapers including X as the long
+/// axis (|i| >= |W| = 40), every run-out kind (chamfers from r accepted
+/// with the lead F0.01), F and I leads, IS-B/IS-C, mm/inch, over a small
+/// schedule.
 const GEOMETRY: Domain = Domain {
     height: (6, 8),
     first_depth: (3, 4),
@@ -59,6 +60,7 @@ const GEOMETRY: Domain = Domain {
     chamfer: (3, 3),
     chamfer_angle: (30, 30),
     units: (0, 3),
+    lead: (1, 2),
     ..Domain::POINT
 };
 
@@ -83,6 +85,8 @@ const WIDE: Domain = Domain {
     chamfer_angle: (1, 89),
     units: (0, 7),
     pass_limit: 2_000,
+    lead_in: (0, 1_000_000),
+    lead: (0, 3),
     wild_x: 2_000_000_000,
 };
 
@@ -123,7 +127,15 @@ fn p4_run_out_direction() {
 
 #[test]
 fn p5_no_overcut() {
-    let d = Domain { run_out_kind: (0, 0), units: (0, 0), taper: (-3, 3), tool_angle: (0, 99), ..GEOMETRY };
+    let d = Domain {
+        run_out_kind: (0, 0),
+        units: (0, 0),
+        taper: (-3, 3),
+        tool_angle: (0, 99),
+        lead: (0, 0),
+        lead_in: (0, 1),
+        ..GEOMETRY
+    };
     check("no overcut", exhaustive(2_000_000), || harness::no_overcut(&d, &FixedPoint));
     check("no overcut (sampled)", SAMPLE, || harness::no_overcut(&WIDE, &FixedPoint));
 }

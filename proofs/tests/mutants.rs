@@ -65,8 +65,9 @@ const GEOMETRY: Domain = Domain {
     positive_z: (0, 1),
     taper: (-45, 45),
     length: (40, 40),
-    run_out_kind: (1, 1),
+    run_out_kind: (1, 3),
     run_out: (1, 3),
+    lead: (1, 2),
     ..Domain::POINT
 };
 
@@ -182,7 +183,8 @@ fn flipped_run_out_is_caught_by_p4() {
             out.into_iter()
         })
     };
-    // The run-out kinds (J/K amounts) of GEOMETRY: X long needs |i| > |W| = 40.
+    // Every run-out kind (chamfers accepted with F0.01), F and I leads; X
+    // long needs |i| > |W| = 40.
     caught(
         4_000_000,
         |e| harness::run_out_direction(&GEOMETRY, &e),
@@ -200,7 +202,7 @@ fn shift_past_the_flank_is_caught_by_p5() {
         }
         m
     });
-    let d = Domain { run_out_kind: (0, 0), taper: (0, 0), ..GEOMETRY };
+    let d = Domain { run_out_kind: (0, 0), taper: (0, 0), lead: (0, 0), lead_in: (0, 1), ..GEOMETRY };
     caught(2_000_000, |e| harness::no_overcut(&d, &e), e, "a pass lies outside the final form");
 }
 

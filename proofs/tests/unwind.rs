@@ -8,8 +8,8 @@
 //! moves each expansion yields. Each harness runs over its Kani window
 //! (`cycleref_proofs::windows`): sampled over the whole window, and
 //! exhaustively over the window's worst cases, chosen by this argument: a
-//! G76 cycle has at most 5 moves per pass and start (approach, cut,
-//! run-out, retract, return: no lead-in in the harnesses' cycles), and the
+//! G76 cycle has at most 6 moves per pass and start (approach, lead-in,
+//! cut, run-out, retract, return), and the
 //! most rough passes are made with the largest k - d and the smallest cuts
 //! (Δd ≤ 2, Δdmin ≤ 1) in D2; the other words change coordinates and which
 //! moves are left out as empty (R-ZERO), never the number of passes. The
@@ -121,6 +121,9 @@ fn worst(w: &Domain) -> Domain {
         chamfer: (w.chamfer.1, w.chamfer.1),
         chamfer_angle: (45, 45),
         tool_angle: (60, 60),
+        // A lead-in adds one move per pass; the lead changes coordinates only.
+        lead_in: (w.lead_in.1, w.lead_in.1),
+        lead: (w.lead.0, w.lead.0),
         ..*w
     }
 }
@@ -147,14 +150,14 @@ fn g76(name: &str, window: &Domain, body: impl Fn(&Domain, &Counted)) -> u32 {
 }
 
 /// The check fails when a loop reaches the bound: P1's window has a cycle
-/// of 65 moves (5 moves × 13 passes, counted by hand in `windows.rs`), so
-/// a bound of 65 is one short.
+/// of 78 moves (6 moves × 13 passes, counted by hand in `windows.rs`), so
+/// a bound of 78 is one short.
 #[test]
-#[should_panic(expected = "depth_monotonicity: harness: moves of one cycle runs 65 times, unwind bound 65")]
+#[should_panic(expected = "depth_monotonicity: harness: moves of one cycle runs 78 times, unwind bound 78")]
 fn a_loop_reaching_its_bound_fails() {
     let _one = lock();
     let m = g76_maxima("depth_monotonicity", &windows::G76_WINDOW, harness::depth_monotonicity);
-    m.check_against("depth_monotonicity", 65);
+    m.check_against("depth_monotonicity", 78);
 }
 
 #[test]
@@ -219,9 +222,9 @@ fn groove_moves_stay_below_the_unwind_bounds() {
 }
 
 /// P7 over the documented ranges: sampled, and enumerated at the extremes
-/// that drive each loop (the smallest cuts against the largest k for the
-/// pass count, which stops at the limit; the largest Δd for Newton on
-/// `u128`; every start count 1..=999 for Stein's gcd).
+/// that drive each loop (the smallest cuts and Δd = k / 10 against the
+/// largest k for the pass count, which stops past the limit; the largest
+/// Δd for Newton; every start count 1..=999 for Stein's gcd).
 #[test]
 fn no_panic_stays_below_its_unwind_bound() {
     let _one = lock();
@@ -241,6 +244,10 @@ fn no_panic_stays_below_its_unwind_bound() {
         units: (0, 7),
         // An invalid start X is refused before any loop: two values suffice.
         wild_x: 2,
+        // A lead-in adds a move (and some are refused before the count);
+        // the lead changes coordinates only.
+        lead_in: (0, 1),
+        lead: (0, 0),
         ..w
     };
     let small_cuts = Domain {
@@ -257,11 +264,17 @@ fn no_panic_stays_below_its_unwind_bound() {
         allowance: (0, 1),
         ..fixed
     };
+    // Δd = k / 10: the law alone makes about 100 levels, so the count runs
+    // past the limit.
+    let by_law = Domain { first_depth: (100_000_000, 100_000_001), ..large_first };
     let starts = Domain { starts: (1, 999), units: (0, 0), run_out_kind: (0, 0), ..Domain::POINT };
     let starts = Domain { pass_limit: w.pass_limit, ..starts };
-    for (name, d) in
-        [("small cuts", small_cuts), ("large first depth", large_first), ("every start count", starts)]
-    {
+    for (name, d) in [
+        ("small cuts", small_cuts),
+        ("large first depth", large_first),
+        ("levels by the law past the limit", by_law),
+        ("every start count", starts),
+    ] {
         measure(&mut m, &format!("no_panic ({name})"), Mode::Enumerate { max_runs: 2_000_000 }, |e| {
             harness::no_panic(&d, e, n);
         });
