@@ -18,7 +18,8 @@ fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
 /// Small right-angle grooves: depth 1..=8, width 0..=6, pecks 1..=3, steps
 /// 1..=3, with or without layers of 3, allowances 0..=1, pointed tool or
 /// widths 1..=2, corner sizes 0..=1 of every kind pattern, every J, both
-/// signs of H and D, IS-B metric diameter and IS-C inch radius.
+/// signs of H and D, in two unit codes that between them have every unit
+/// choice: IS-C inch diameter (3) and IS-B metric radius (4).
 const SMALL: GrooveDomain = GrooveDomain {
     depth: (1, 8),
     width: (0, 6),
@@ -35,7 +36,7 @@ const SMALL: GrooveDomain = GrooveDomain {
     slope: (0, 0),
     path: (0, 2),
     signs: (0, 3),
-    units: (0, 0),
+    units: (3, 4),
 };
 
 /// Wider, for sampling: right-angle grooves up to 400 increments.
@@ -110,7 +111,7 @@ const REGION: GrooveDomain = GrooveDomain {
 
 #[test]
 fn inside_the_roughing_region() {
-    check("inside (exhaustive)", small(400_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
+    check("inside (exhaustive)", small(700_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
     check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
 }
 

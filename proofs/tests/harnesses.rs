@@ -211,6 +211,8 @@ fn long_exhaustive() {
         run_out_kind: (0, 0),
         units: (0, 0),
         taper: (0, 0),
+        lead: (0, 0),
+        lead_in: (0, 1),
         ..GEOMETRY
     };
     check("no overcut (wide)", exhaustive(200_000_000), || harness::no_overcut(&o, &FixedPoint));
