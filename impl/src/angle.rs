@@ -74,6 +74,23 @@ impl StartSpacing {
         StartSpacing { step: (FULL_TURN_MILLIDEGREES / g) as u32, den: (l / g) as u32 }
     }
 
+    /// Records the iterations of the `gcd` in [`StartSpacing::new`]
+    /// (`loop-counters`; a `const fn` cannot record itself).
+    #[cfg(feature = "loop-counters")]
+    pub fn record_new_gcd(starts: u32) {
+        let l = if starts == 0 { 1 } else { starts as u64 };
+        crate::loop_counters::GCD.record(gcd_counted(FULL_TURN_MILLIDEGREES, l).1);
+    }
+
+    /// Records the iterations of the `gcd` in [`StartSpacing::angle`]
+    /// (`loop-counters`).
+    #[cfg(feature = "loop-counters")]
+    pub fn record_angle_gcd(self, index: u32) {
+        if self.den != 1 {
+            crate::loop_counters::GCD.record(gcd_counted(index as u64, self.den as u64).1);
+        }
+    }
+
     /// The angle of start `index` (0-based, below L): `index × step / den`,
     /// reduced by `gcd(index, den)` (`step` and `den` are coprime).
     #[must_use]
@@ -98,16 +115,24 @@ impl StartSpacing {
 /// Greatest common divisor by Stein's binary algorithm (no division: it runs
 /// once per pass and start, on the engine's hot path); `gcd(0, 0)` is 1 so
 /// that it can always divide.
-const fn gcd(mut a: u64, mut b: u64) -> u64 {
+const fn gcd(a: u64, b: u64) -> u64 {
+    gcd_counted(a, b).0
+}
+
+/// [`gcd`] and the iterations of its loop (for `loop-counters`).
+const fn gcd_counted(mut a: u64, mut b: u64) -> (u64, u32) {
     if a == 0 {
-        return if b == 0 { 1 } else { b };
+        return (if b == 0 { 1 } else { b }, 0);
     }
     if b == 0 {
-        return a;
+        return (a, 0);
     }
     let shift = (a | b).trailing_zeros();
     a >>= a.trailing_zeros();
+    // At most 128 iterations: each halves b at least once or ends.
+    let mut n = 0_u32;
     loop {
+        n += 1;
         b >>= b.trailing_zeros();
         if a > b {
             let t = a;
@@ -116,7 +141,7 @@ const fn gcd(mut a: u64, mut b: u64) -> u64 {
         }
         b -= a;
         if b == 0 {
-            return a << shift;
+            return (a << shift, n);
         }
     }
 }

@@ -64,12 +64,14 @@ impl G32Block {
     /// The first violated rule.
     pub fn validate(&self) -> Result<(), CycleError> {
         let len = |v: i64| Length::new(v, self.units);
+        let mut count = crate::loop_counters::count!(G32_VALIDATE);
         for (field, v) in [
             (Field::StartX, self.start.x),
             (Field::StartZ, self.start.z),
             (Field::EndX, self.end.x),
             (Field::EndZ, self.end.z),
         ] {
+            count.tick();
             if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
                 return Err(CycleError::OutOfRange { field, value: len(v) });
             }

@@ -17,6 +17,7 @@ pub mod g32;
 pub mod g75;
 pub mod g76;
 pub mod lead;
+pub mod loop_counters;
 pub mod moves;
 pub mod tan;
 pub mod units;

@@ -12,7 +12,7 @@ use cycleref::g75::{corner, Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE}
 use cycleref::{CycleError, IncrementSystem, InputUnit, Motion, Move, Point, Role, Units, XMode};
 
 use crate::cover;
-use crate::verify::{any_in, assume};
+use crate::verify::{any_in, assume, declare};
 
 /// The inputs a G75.1 harness may choose: inclusive ranges in least
 /// increments and 0.0001°, and codes for the discrete choices.
@@ -178,7 +178,7 @@ fn local(c: &G75Cycle, p: Point) -> (i64, i64) {
 }
 
 /// Expands a chosen cycle, or prunes the run when it is refused.
-fn expanded(c: &G75Cycle, engine: &impl GrooveEngine) -> Moves {
+fn expanded(c: &G75Cycle, engine: &(impl GrooveEngine + ?Sized)) -> Moves {
     match engine.expand(c) {
         Ok(moves) => moves,
         Err(_) => {
@@ -192,7 +192,8 @@ fn expanded(c: &G75Cycle, engine: &impl GrooveEngine) -> Moves {
 /// peck moves along X only and away from the opening, every axial step is
 /// at most Δk and along Z only, no move is empty, and the path ends where
 /// it began.
-pub fn groove_pecks_and_steps(d: &GrooveDomain, engine: &impl GrooveEngine) {
+pub fn groove_pecks_and_steps(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    declare(&["a full peck", "a short last step"]);
     let c = any_groove(d);
     let moves = expanded(&c, engine);
     let mut at = c.from;
@@ -233,7 +234,8 @@ pub fn groove_pecks_and_steps(d: &GrooveDomain, engine: &impl GrooveEngine) {
 /// Property: layers. Every plunge of a layer reaches the same depth, the
 /// layers get deeper by at most Δv each, and the last one reaches the
 /// roughing bottom |H| - Δu.
-pub fn groove_layers(d: &GrooveDomain, engine: &impl GrooveEngine) {
+pub fn groove_layers(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    declare(&["several layers"]);
     let c = any_groove(d);
     assume(c.path.roughs());
     // At most 64 layers (the window's bound; R-G75LAYER: ceil((|H| - U) / V)).
@@ -345,7 +347,8 @@ impl SquareRegion {
 /// the end of every roughing move (pecks, retracts, steps, layer changes and
 /// the rough contour); the region is convex, so the moves between them stay
 /// inside too.
-pub fn groove_inside(d: &GrooveDomain, engine: &impl GrooveEngine) {
+pub fn groove_inside(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    declare(&["touches the left boundary", "touches the right boundary", "with a bottom corner"]);
     let c = any_groove(d);
     assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0);
     let moves = expanded(&c, engine);
@@ -416,7 +419,13 @@ fn sweeps(from: (i64, i64), to: (i64, i64), w2: i64, p: (i64, i64)) -> bool {
 ///   less than `1 + 1/f` beside K1 and K4, which sit at the integer depth
 ///   above the exact corner of flank and chord. The check allows 2, the
 ///   bound at f = 1.
-pub fn groove_material(d: &GrooveDomain, engine: &impl GrooveEngine) {
+pub fn groove_material(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    declare(&[
+        "a ridge between plunges",
+        "a sliver along the boundary",
+        "several layers",
+        "with a bottom corner",
+    ]);
     let c = any_groove(d);
     assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0 && c.path.roughs());
     let w = c.width_of_tool();
@@ -534,7 +543,8 @@ type LocalMove = (i64, i64, Option<(i64, i64)>);
 /// programmed profile (right-angle grooves, where every point is exact):
 /// T1s, T1a, T3a, T3b, T4b, T4c, P3/T2b, T2s, with the far side shifted by
 /// the tool width, rounds as arcs about their centres.
-pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &impl GrooveEngine) {
+pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    declare(&["with an arc"]);
     let c = any_groove(d);
     assume(c.flank_a == RIGHT_ANGLE && c.flank_b == RIGHT_ANGLE && c.slope == 0 && c.path.finishes());
     let moves = expanded(&c, engine);
@@ -600,6 +610,7 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &impl GrooveEngine) {
 /// overflows; every move lies within the coordinate range; a cycle either
 /// expands or is refused with an alarm. Bounded to the first `limit` moves.
 pub fn groove_no_panic(d: &GrooveDomain, limit: usize) {
+    declare(&["a valid groove"]);
     let c = any_groove(d);
     if let Ok(moves) = cycleref::expand_g75(&c) {
         for m in moves.take(limit) {

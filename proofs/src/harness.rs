@@ -11,12 +11,12 @@
 
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::{
-    CycleError, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role, RunOut,
-    Units, XMode,
+    CycleError, Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role,
+    RunOut, Units, XMode,
 };
 
 use crate::cover;
-use crate::verify::{any_in, assume};
+use crate::verify::{any_in, assume, declare};
 
 /// The inputs a harness may choose: inclusive ranges in least increments
 /// (radius), counts, degrees, and small codes for the discrete choices.
@@ -59,6 +59,16 @@ pub struct Domain {
     pub units: (i64, i64),
     /// Rough pass limit of the generated cycles.
     pub pass_limit: u32,
+    /// Lead-in E (radius increments); 0 is none.
+    pub lead_in: (i64, i64),
+    /// Lead: 0 = F2, 1 = F0.01, 2 = I8 (threads per inch), 3 = I2540 (the
+    /// smallest lead, 0.0004 in); F is mm or inch per revolution as the
+    /// units say.
+    pub lead: (i64, i64),
+    /// [`no_panic`] only: the start X it may set, as an invalid word, to
+    /// any value in `-wild_x..=wild_x` (beyond the coordinate range in
+    /// [`Domain::FULL`]).
+    pub wild_x: i64,
 }
 
 impl Domain {
@@ -83,6 +93,9 @@ impl Domain {
         chamfer_angle: (1, 89),
         units: (0, 7),
         pass_limit: 2_000,
+        lead_in: (0, 999_999_999),
+        lead: (0, 3),
+        wild_x: 2_000_000_000,
     };
 
     /// The schedule's inputs, small enough to enumerate: k 1..=20, Δd 1..=20,
@@ -118,6 +131,9 @@ impl Domain {
         chamfer_angle: (45, 45),
         units: (0, 0),
         pass_limit: 10_000,
+        lead_in: (0, 0),
+        lead: (0, 0),
+        wild_x: 2,
     };
 }
 
@@ -193,6 +209,13 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
             long: Some(pick(d.run_out)),
         },
     };
+    let lead_in = pick(d.lead_in);
+    let lead = match pick(d.lead) {
+        0 => Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        1 => Lead { word: LeadWord::F, mantissa: 1, scale: 2 },
+        2 => Lead { word: LeadWord::I, mantissa: 8, scale: 0 },
+        _ => Lead { word: LeadWord::I, mantissa: 2540, scale: 0 },
+    };
     let code = pick(d.units);
     let units = Units {
         system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
@@ -221,18 +244,20 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
         finishing_passes: finishing,
         tool_angle,
         infeed,
-        lead_in: 0,
+        lead_in,
         starts,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        lead,
         run_out,
         pass_limit: d.pass_limit,
     }
 }
 
 /// The passes of a move stream: each pass's first move (the approach) with
-/// the pass annotation, and the cut's end before any run-out.
+/// the pass annotation, and the pass start Bn: where the approach ends, or
+/// with a lead-in, where the screw-in from An ends.
 struct PassView {
     kind: PassKind,
+    flank: Flank,
     depth: i64,
     cut: i64,
     start: u32,
@@ -242,16 +267,21 @@ struct PassView {
 fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
     let mut out = Vec::new();
     for m in moves {
-        if m.role == Role::Approach {
-            if let Some(p) = m.pass {
-                out.push(PassView {
-                    kind: p.kind,
-                    depth: p.depth,
-                    cut: p.cut,
-                    start: u32::from(p.start),
-                    bn: m.to,
-                });
+        match (m.role, m.pass) {
+            (Role::Approach, Some(p)) => out.push(PassView {
+                kind: p.kind,
+                flank: p.flank,
+                depth: p.depth,
+                cut: p.cut,
+                start: u32::from(p.start),
+                bn: m.to,
+            }),
+            (Role::LeadIn, Some(_)) => {
+                if let Some(last) = out.last_mut() {
+                    last.bn = m.to;
+                }
             }
+            _ => {}
         }
     }
     out
@@ -267,36 +297,49 @@ fn expand_ok<E: Engine>(engine: &E, c: &G76Cycle) -> Option<E::Moves> {
     }
 }
 
-/// Property 1, depth monotonicity: rough depths strictly increase; every
-/// rough cut is at least min(Δdmin, what remains to k - d) and at least one
-/// increment; cuts by the √n law never grow by more than the one increment
-/// that rounding can add (the exact law cuts Δd(√n - √(n-1)) strictly
-/// decrease; rounding moves each depth by at most ½).
+/// Property 1, depth monotonicity: rough depths strictly increase from
+/// level to level in every infeed mode (the only pass that repeats a depth
+/// is the left pass of a D2 level, right after that level's right pass and
+/// with its cut); every rough cut is at least min(Δdmin, what remains to
+/// k - d) and at least one increment; cuts by the √n law never grow by more
+/// than the one increment that rounding can add (the exact law cuts
+/// Δd(√n - √(n-1)) strictly decrease; rounding moves each depth by at most
+/// ½).
 pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
+    declare(&["three or more rough levels", "minimum cut in force", "a D2 left pass"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let min = c.min_cut.max(1);
     let last = c.thread_height - c.finishing_allowance;
     let mut previous = 0;
     let mut previous_cut = i64::MAX;
-    let mut levels = 0;
+    let mut previous_flank = None;
+    let mut levels = 0_u64;
     for p in passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1) {
-        if p.depth == previous && levels > 0 {
-            continue; // the second (left) pass of a D2 level
+        if c.infeed == Infeed::LeftRight && p.flank == Flank::Left {
+            let repeats = previous_flank == Some(Flank::Right) && levels > 0 && p.depth == previous;
+            assert!(repeats, "a D2 left pass repeats its level's right pass");
+            assert_eq!(p.cut, previous_cut, "a D2 left pass cuts what its right pass cut");
+            previous_flank = Some(Flank::Left);
+            cover!(true, "a D2 left pass");
+            continue;
         }
         levels += 1;
         assert!(p.depth > previous, "rough depths must strictly increase");
         assert_eq!(p.cut, p.depth - previous, "cut annotation");
         assert!(p.cut >= min.min(last - previous), "cut below min(Δdmin, remainder)");
         assert!(p.cut >= 1);
-        let law = cycleref::engine::round_sqrt(
-            (c.first_depth as u128) * (c.first_depth as u128) * (levels as u128),
-        ) as i64;
-        if p.depth == law && p.depth < last {
+        // p.depth = round(Δd √levels), from its definition (2s - 1)² ≤ 4x <
+        // (2s + 1)² (no square root: an independent restatement of the law).
+        let x4 = 4 * u128::from(c.first_depth.unsigned_abs()).pow(2) * u128::from(levels);
+        let s2 = 2 * u128::from(p.depth.unsigned_abs());
+        let by_law = (s2 - 1).pow(2) <= x4 && x4 < (s2 + 1).pow(2);
+        if by_law && p.depth < last {
             assert!(p.cut <= previous_cut.saturating_add(1), "a law cut grew by more than rounding");
         }
         previous_cut = p.cut;
         previous = p.depth;
+        previous_flank = Some(p.flank);
     }
     cover!(levels >= 3, "three or more rough levels");
     cover!(c.min_cut > 1 && levels >= 2, "minimum cut in force");
@@ -307,17 +350,29 @@ pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
 /// the bound derived in docs/INTERPRETATIONS.md: (f - 1)·max(Δdmin, 1) <
 /// k - d and 4(f - 1)Δd² < (2(k - d) + 1)².
 pub fn termination<E: Engine>(d: &Domain, engine: &E) {
+    declare(&["a single rough pass", "no rough pass (d = k)", "four or more levels"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let last = c.thread_height - c.finishing_allowance;
-    let mut depths: Vec<i64> =
-        passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1).map(|p| p.depth).collect();
-    depths.dedup();
-    let f = i64::try_from(depths.len()).unwrap_or(i64::MAX);
+    // One depth per level: every rough pass of start 1 but the left passes
+    // of D2 (no dedup, so that a repeated level counts).
+    let mut f = 0_i64;
+    let mut deepest = None;
+    for p in passes(moves) {
+        if p.kind != PassKind::Rough
+            || p.start != 1
+            || c.infeed == Infeed::LeftRight && p.flank == Flank::Left
+        {
+            continue;
+        }
+        assert!(deepest.is_none_or(|v| p.depth > v), "a rough level repeats or goes back");
+        deepest = Some(p.depth);
+        f += 1;
+    }
     if last == 0 {
         assert_eq!(f, 0, "d = k: nothing to rough");
     } else {
-        assert_eq!(depths.last().copied(), Some(last), "the last rough depth is k - d");
+        assert_eq!(deepest, Some(last), "the last rough depth is k - d");
         let m = c.min_cut.max(1);
         assert!((f - 1) * m < last, "more levels than the minimum cut allows");
         let dd = i128::from(c.first_depth);
@@ -332,16 +387,21 @@ pub fn termination<E: Engine>(d: &Domain, engine: &E) {
 /// Property 3, finishing: exactly m passes (per start) at depth k, the first
 /// cutting d and the rest nothing, all from the last rough pass's Z.
 pub fn finishing<E: Engine>(d: &Domain, engine: &E) {
+    declare(&["several finishing passes with d > 0"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let all = passes(moves);
     let last_rough_z = all.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.bn.z).next_back();
     let finish: Vec<_> = all.iter().filter(|p| p.kind == PassKind::Finish).collect();
-    assert_eq!(finish.len() as u64, u64::from(c.finishing_passes) * u64::from(c.starts));
+    assert_eq!(
+        finish.len() as u64,
+        u64::from(c.finishing_passes) * u64::from(c.starts),
+        "m finishing passes per start"
+    );
     for (i, p) in finish.iter().enumerate() {
         let number = i as u32 / c.starts + 1;
-        assert_eq!(p.depth, c.thread_height);
-        assert_eq!(p.cut, if number == 1 { c.finishing_allowance } else { 0 });
+        assert_eq!(p.depth, c.thread_height, "finishing at depth k");
+        assert_eq!(p.cut, if number == 1 { c.finishing_allowance } else { 0 }, "finishing cut: d, then 0");
         assert_eq!(p.bn.z, last_rough_z.unwrap_or(c.start.z), "finishing Z = last rough Z");
         let xf = c.x_mode.factor();
         assert_eq!(p.bn.x, c.end.x + xf * c.taper, "finishing at the thread start C");
@@ -354,6 +414,14 @@ pub fn finishing<E: Engine>(d: &Domain, engine: &E) {
 /// end line Z(D) displaced along X, with X long on X of the cut's end
 /// displaced along Z.
 pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
+    declare(&[
+        "external run-out, Z long",
+        "internal run-out, Z long",
+        "run-out with X long",
+        "run-out on a taper",
+        "a chamfered run-out",
+        "an I lead",
+    ]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let xf = c.x_mode.factor();
@@ -369,11 +437,11 @@ pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
             let cut_end_x = c.end.x + s * xf * (c.thread_height - p.depth);
             assert!(matches!(m.motion, Motion::Thread { .. }), "the run-out is cut under synchronisation");
             if z_long {
-                assert_eq!(m.to.z, c.end.z);
+                assert_eq!(m.to.z, c.end.z, "a Z-long run-out ends on the end line");
                 assert!(s * (m.to.x - cut_end_x) > 0, "run-out towards the work");
                 assert!(s * (c.start.x - m.to.x) >= 0, "run-out beyond E");
             } else {
-                assert_eq!(m.to.x, cut_end_x);
+                assert_eq!(m.to.x, cut_end_x, "an X-long run-out ends at X of the cut's end");
                 assert!(t * (c.end.z - m.to.z) > 0, "run-out away from A's side");
                 assert!(t * (m.to.z - c.start.z) >= 0, "run-out beyond A");
             }
@@ -385,31 +453,39 @@ pub fn run_out_direction<E: Engine>(d: &Domain, engine: &E) {
     cover!(seen > 0 && z_long && s < 0, "internal run-out, Z long");
     cover!(seen > 0 && !z_long, "run-out with X long");
     cover!(seen > 0 && c.taper != 0, "run-out on a taper");
+    cover!(seen > 0 && matches!(c.run_out, RunOut::Chamfer { .. }), "a chamfered run-out");
+    cover!(seen > 0 && c.lead.word == LeadWord::I, "an I lead");
 }
 
 /// Property 5, no overcut: no pass's tool tip lies outside the final thread
 /// form (the tool's V at depth k centred on the finishing Z) by more than
 /// one increment: |shift - zc| <= round((k - Dn) tan(a/2)) + 1.
 pub fn no_overcut<E: Engine>(d: &Domain, engine: &E) {
+    declare(&["D2 with a flank angle", "D1 with a flank angle", "with a lead-in"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let t = (c.end.z - c.start.z).signum();
-    let zc = cycleref::tan::mul_tan_round(c.thread_height - c.finishing_allowance, c.tool_angle).unwrap_or(0);
+    // The reference's exact rounded product (its own tangent table, integer
+    // arithmetic), not the engine's.
+    let room_at = |depth: i64| cycleref_spec::tan::mul_tan_round(depth, c.tool_angle).unwrap_or(0);
+    let zc = room_at(c.thread_height - c.finishing_allowance);
     let mut worst = 0;
     for p in passes(moves) {
         let shift = t * (p.bn.z - c.start.z);
-        let room = cycleref::tan::mul_tan_round(c.thread_height - p.depth, c.tool_angle).unwrap_or(0);
+        let room = room_at(c.thread_height - p.depth);
         assert!((shift - zc).abs() <= room + 1, "a pass lies outside the final form");
         assert!(shift >= 0, "a pass starts behind A");
         worst = worst.max((shift - zc).abs() - room);
     }
     cover!(c.infeed == Infeed::LeftRight && c.tool_angle > 0, "D2 with a flank angle");
     cover!(c.infeed == Infeed::RightCentre && c.tool_angle > 0, "D1 with a flank angle");
+    cover!(c.lead_in > 0, "with a lead-in");
 }
 
 /// Property 6, equivalence: the engine's moves (or alarm) equal the
 /// reference model's.
 pub fn equivalence<E: Engine>(d: &Domain, engine: &E) {
+    declare(&["a cycle that expands"]);
     let c = any_cycle(d);
     let ours = engine.expand(&c).map(Iterator::collect::<Vec<_>>);
     let reference = cycleref_spec::g76::expand(&c);
@@ -422,13 +498,14 @@ pub fn equivalence<E: Engine>(d: &Domain, engine: &E) {
 /// inside the documented coordinate range. (Kani checks overflow and panics
 /// on every path; here a panic fails the run.)
 pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
+    declare(&["a cycle that expands", "a cycle that is refused"]);
     let mut c = any_cycle(d);
     // Also invalid words: a negative or zero where the range tables forbid.
     match any_in(0, 5) {
         0 => c.thread_height = any_in(-5, 0),
         1 => c.min_cut = any_in(-5, -1),
         2 => c.starts = 0,
-        3 => c.start.x = any_in(-2_000_000_000, 2_000_000_000),
+        3 => c.start.x = any_in(-d.wild_x, d.wild_x),
         _ => {}
     }
     match engine.expand(&c) {
@@ -448,6 +525,7 @@ pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
 /// round(√x) satisfies (2s - 1)² <= 4x < (2s + 1)², on the domain
 /// `x in lo..=hi`.
 pub fn isqrt_rounds(lo: i64, hi: i64, sqrt: fn(u128) -> u128) {
+    declare(&["rounded up", "rounded down"]);
     let x = any_in(lo, hi) as u128;
     let s = sqrt(x);
     // (2s - 1)^2 <= 4x < (2s + 1)^2, in u128 for x < 2^63 (s < 2^32).
@@ -499,6 +577,7 @@ where
     F: Fn(&cycleref::G32Block) -> Result<I, CycleError>,
     I: Iterator<Item = Move>,
 {
+    declare(&["Z long, J outwards", "Z long, J inwards", "face thread with run-out", "pull-out only"]);
     use cycleref::G32RunOut;
     let b = any_g32(reach, run_out);
     // The reader never makes a run-out with J = 0 (all profiles: none).

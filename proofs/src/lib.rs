@@ -12,20 +12,30 @@ pub mod harness;
 #[cfg(kani)]
 mod kani_proofs;
 pub mod shim;
+pub mod windows;
 
-/// `any_in`, `any_bool`, `assume` and `cover`: Kani's under `cfg(kani)`,
-/// the shim's otherwise.
+/// `any_in`, `any_bool`, `assume`, `declare` and `cover`: Kani's under
+/// `cfg(kani)`, the shim's otherwise.
 pub mod verify {
     #[cfg(not(kani))]
-    pub use crate::shim::{any_bool, any_in, assume};
+    pub use crate::shim::{any_bool, any_in, assume, declare};
 
-    /// A value in `lo..=hi`.
+    /// A value in `lo..=hi`; `lo` itself, not a symbolic value, when the
+    /// range holds one value (a fixed input stays a constant for the solver).
     #[cfg(kani)]
     pub fn any_in(lo: i64, hi: i64) -> i64 {
+        if lo == hi {
+            return lo;
+        }
         let v: i64 = kani::any();
         kani::assume(lo <= v && v <= hi);
         v
     }
+
+    /// The covers a harness declares ([`crate::shim::declare`]): nothing to
+    /// do under Kani, where every `kani::cover` is a property.
+    #[cfg(kani)]
+    pub fn declare(_covers: &[&'static str]) {}
 
     /// A `bool`.
     #[cfg(kani)]

@@ -14,9 +14,16 @@
 //!   ranges that the solver would cover.
 //!
 //! [`assume`] with a false condition abandons the current run (as Kani
-//! prunes the path); [`cover`] records that a condition was reachable, and
-//! the driver fails if a cover was never satisfied, so no harness passes
-//! vacuously. Bodies must be deterministic given their choices.
+//! prunes the path). Every harness body starts with [`declare`], which
+//! names all the covers the body may reach, also those inside branches;
+//! [`cover`] records that a condition was satisfied, and refuses a message
+//! that was not declared. An exhaustive run fails when a declared cover was
+//! never satisfied (what `cargo kani` with uncoverable covers failing does:
+//! see `.ci/kani-covers`), so no harness passes vacuously, not even through
+//! a branch that is never taken; a sampled run reports every declared cover
+//! with its count, zero included. A failing run's panic carries the
+//! assertion's own message. Bodies must be deterministic given their
+//! choices.
 
 use std::cell::RefCell;
 use std::collections::BTreeMap;
@@ -28,6 +35,14 @@ pub enum Mode {
     /// Every sequence of choices, up to this many runs (the driver fails if
     /// the domain is larger, so a domain never silently shrinks).
     Exhaustive {
+        /// Largest number of runs allowed.
+        max_runs: u64,
+    },
+    /// Every sequence of choices like [`Mode::Exhaustive`], for a
+    /// measurement rather than a proof: the covers are reported, not
+    /// required (the unwind measurements of `proofs/tests/unwind.rs` run the
+    /// worst cases of a window, where some covers cannot hold).
+    Enumerate {
         /// Largest number of runs allowed.
         max_runs: u64,
     },
@@ -128,16 +143,56 @@ pub fn assume(cond: bool) {
     }
 }
 
-/// Records that `cond` was reachable (`kani::cover`): [`check`] fails when a
-/// cover message was never satisfied.
-pub fn cover(cond: bool, msg: &'static str) {
+/// Declares the covers a harness body may reach (every `cover!` of the
+/// body and of the functions it calls, also those in branches that a
+/// domain may never take). Call it first in the body; Kani ignores it
+/// (every `kani::cover` is a property there whether it is reached or not).
+pub fn declare(covers: &[&'static str]) {
     STATE.with(|s| {
         let mut s = s.borrow_mut();
-        let n = s.covers.entry(msg).or_insert(0);
-        if cond {
-            *n += 1;
+        if s.active {
+            for &c in covers {
+                s.covers.entry(c).or_insert(0);
+            }
         }
     });
+}
+
+/// Records that `cond` was reachable (`kani::cover`): [`check`] fails when a
+/// declared cover was never satisfied in an exhaustive run.
+///
+/// # Panics
+///
+/// When `msg` was not [`declare`]d by the body (the declaration must list
+/// every cover, so that a cover that is never reached still counts).
+pub fn cover(cond: bool, msg: &'static str) {
+    let declared = STATE.with(|s| {
+        let mut s = s.borrow_mut();
+        if !s.active {
+            return true;
+        }
+        match s.covers.get_mut(msg) {
+            Some(n) => {
+                if cond {
+                    *n += 1;
+                }
+                true
+            }
+            None => false,
+        }
+    });
+    assert!(declared, "cover {msg:?} is not declared by the harness (shim::declare)");
+}
+
+/// The message of a panic payload (`panic!`/`assert!` with a message).
+fn message(payload: &(dyn std::any::Any + Send)) -> &str {
+    if let Some(s) = payload.downcast_ref::<String>() {
+        s
+    } else if let Some(s) = payload.downcast_ref::<&'static str>() {
+        s
+    } else {
+        "a panic without a message"
+    }
 }
 
 /// Runs `body` in `mode` and returns what it saw.
@@ -145,17 +200,18 @@ pub fn cover(cond: bool, msg: &'static str) {
 /// # Panics
 ///
 /// When the body fails an assertion (with the choices of the failing run
-/// in the message), when an exhaustive domain exceeds its run budget, or
-/// when a [`cover`] was never satisfied.
+/// and the assertion's own message), when an exhaustive domain exceeds its
+/// run budget, or when a declared [`cover`] was never satisfied in an
+/// exhaustive run.
 pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
     let mut report = Report::default();
     STATE.with(|s| {
         *s.borrow_mut() = State {
             active: true,
-            exhaustive: matches!(mode, Mode::Exhaustive { .. }),
+            exhaustive: matches!(mode, Mode::Exhaustive { .. } | Mode::Enumerate { .. }),
             rng: match mode {
                 Mode::Sample { seed, .. } => seed,
-                Mode::Exhaustive { .. } => 0,
+                Mode::Exhaustive { .. } | Mode::Enumerate { .. } => 0,
             },
             ..State::default()
         }
@@ -176,12 +232,13 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
                 report.pruned += 1;
             } else {
                 let trail: Vec<u64> = STATE.with(|s| s.borrow().trail.iter().map(|c| c.value).collect());
-                panic!("{name}: the harness failed at run {} with choices {trail:?}", report.runs);
+                let why = message(payload.as_ref());
+                panic!("{name}: the harness failed at run {} with choices {trail:?}: {why}", report.runs);
             }
         }
         let more = match mode {
             Mode::Sample { runs, .. } => report.runs < runs,
-            Mode::Exhaustive { max_runs } => {
+            Mode::Exhaustive { max_runs } | Mode::Enumerate { max_runs } => {
                 let advanced = STATE.with(|s| {
                     let mut s = s.borrow_mut();
                     // The choices beyond the ones this run made are stale.
@@ -216,9 +273,10 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
     }
     report.covers = covers;
     assert!(report.pruned < report.runs, "{name}: every run was pruned by assume: the check is vacuous");
-    // Exhaustive: every cover must be reachable in the domain (Kani reports
-    // an unsatisfiable cover). Sampled: rare covers may be missed by chance,
-    // so only the non-vacuity above is required; the counts are reported.
+    // Exhaustive: every declared cover must be satisfied in the domain (as
+    // `cargo kani` is run: an unsatisfiable or unreachable cover fails).
+    // Sampled: rare covers may be missed by chance, so only the non-vacuity
+    // above is required; every declared cover is reported with its count.
     if matches!(mode, Mode::Exhaustive { .. }) {
         let missed: Vec<_> = report.covers.iter().filter(|(_, n)| **n == 0).map(|(m, _)| *m).collect();
         assert!(missed.is_empty(), "{name}: cover conditions never satisfied: {missed:?}");
@@ -263,6 +321,7 @@ mod tests {
     #[test]
     fn assume_prunes_and_cover_counts() {
         let r = check("prune", Mode::Exhaustive { max_runs: 100 }, || {
+            declare(&["eight"]);
             let a = any_in(0, 9);
             assume(a % 2 == 0);
             cover(a == 8, "eight");
@@ -271,21 +330,63 @@ mod tests {
     }
 
     #[test]
-    #[should_panic(expected = "never satisfied")]
+    #[should_panic(expected = "never satisfied: [\"impossible\"]")]
     fn unreachable_cover_fails() {
         check("vacuous", Mode::Exhaustive { max_runs: 50 }, || {
+            declare(&["impossible"]);
             let a = any_in(0, 9);
             cover(a > 9, "impossible");
         });
     }
 
     #[test]
-    #[should_panic(expected = "the harness failed")]
-    fn failures_are_reported() {
-        check("fails", Mode::Exhaustive { max_runs: 100 }, || {
+    #[should_panic(expected = "never satisfied: [\"in a branch never taken\"]")]
+    fn a_cover_in_a_branch_never_taken_fails() {
+        check("untaken", Mode::Exhaustive { max_runs: 50 }, || {
+            declare(&["in a branch never taken", "reached"]);
             let a = any_in(0, 9);
-            assert!(a != 7);
+            cover(true, "reached");
+            if a > 9 {
+                cover(true, "in a branch never taken");
+            }
         });
+    }
+
+    #[test]
+    #[should_panic(expected = "cover \"stray\" is not declared")]
+    fn an_undeclared_cover_fails() {
+        check("undeclared", Mode::Exhaustive { max_runs: 50 }, || {
+            let a = any_in(0, 3);
+            cover(a == 1, "stray");
+        });
+    }
+
+    #[test]
+    fn a_sample_reports_every_declared_cover() {
+        let r = check("sampled", Mode::Sample { runs: 20, seed: 1 }, || {
+            declare(&["never", "always"]);
+            let a = any_in(0, 9);
+            cover(a > 9, "never");
+            cover(a <= 9, "always");
+        });
+        assert_eq!((r.covers["never"], r.covers["always"]), (0, 20));
+    }
+
+    #[test]
+    fn a_failure_carries_the_assertion_text_and_the_choices() {
+        let failure = catch_unwind(|| {
+            check("fails", Mode::Exhaustive { max_runs: 100 }, || {
+                let a = any_in(0, 9);
+                let b = any_in(0, 1);
+                assert!(a != 7 || b != 1, "seven and one together");
+            })
+        })
+        .expect_err("the harness must fail");
+        // Runs in order (a, b): (0,0) (0,1) (1,0) ... (7,1) is the 16th.
+        assert_eq!(
+            message(failure.as_ref()),
+            "fails: the harness failed at run 16 with choices [7, 1]: seven and one together"
+        );
     }
 
     #[test]

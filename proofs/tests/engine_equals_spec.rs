@@ -9,7 +9,7 @@
 //! ignored by default; run it in release with
 //!
 //! ```text
-//! cargo test -p cycleref-proofs --release --test engine_equals_spec -- --ignored
+//! cargo test -p cycleref-proofs --profile proofs --test engine_equals_spec -- --ignored
 //! ```
 //!
 //! There are no known differences. (An earlier reference panicked on leads

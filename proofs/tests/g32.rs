@@ -67,7 +67,7 @@ fn run_out_harness_sampled() {
 }
 
 #[test]
-#[should_panic(expected = "G32 run-out")]
+#[should_panic(expected = "run-out end: J along")]
 fn flipped_j_is_caught() {
     let mutant = |b: &G32Block| {
         let flipped = match b.run_out {

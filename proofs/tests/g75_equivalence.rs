@@ -7,7 +7,7 @@
 //! release) is ignored by default:
 //!
 //! ```text
-//! cargo test -p cycleref-proofs --release --test g75_equivalence -- --ignored
+//! cargo test -p cycleref-proofs --profile proofs --test g75_equivalence -- --ignored
 //! ```
 
 use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType};
@@ -152,7 +152,7 @@ fn engine_equals_reference_realistic() {
 }
 
 #[test]
-#[ignore = "long: run with --release -- --ignored"]
+#[ignore = "long: run with --profile proofs -- --ignored"]
 fn engine_equals_reference_long() {
     let (v1, r1) = run(25_000, 300);
     let (v2, r2) = run(25_000, 30_000);

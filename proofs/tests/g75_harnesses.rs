@@ -3,7 +3,7 @@
 //! sampling over the documented ranges. The longer run:
 //!
 //! ```sh
-//! cargo test -p cycleref-proofs --release --test g75_harnesses -- --ignored
+//! cargo test -p cycleref-proofs --profile proofs --test g75_harnesses -- --ignored
 //! ```
 
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
@@ -18,7 +18,8 @@ fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
 /// Small right-angle grooves: depth 1..=8, width 0..=6, pecks 1..=3, steps
 /// 1..=3, with or without layers of 3, allowances 0..=1, pointed tool or
 /// widths 1..=2, corner sizes 0..=1 of every kind pattern, every J, both
-/// signs of H and D, IS-B metric diameter and IS-C inch radius.
+/// signs of H and D, in two unit codes that between them have every unit
+/// choice: IS-C inch diameter (3) and IS-B metric radius (4).
 const SMALL: GrooveDomain = GrooveDomain {
     depth: (1, 8),
     width: (0, 6),
@@ -35,7 +36,7 @@ const SMALL: GrooveDomain = GrooveDomain {
     slope: (0, 0),
     path: (0, 2),
     signs: (0, 3),
-    units: (0, 0),
+    units: (3, 4),
 };
 
 /// Wider, for sampling: right-angle grooves up to 400 increments.
@@ -110,21 +111,28 @@ const REGION: GrooveDomain = GrooveDomain {
 
 #[test]
 fn inside_the_roughing_region() {
-    check("inside (exhaustive)", small(400_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
+    check("inside (exhaustive)", small(700_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
     check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
 }
 
-/// Grooving tools (w ≥ 1), layers, corners and allowances: the material
-/// left by the plunges and the rough contour (J0 and J1).
+/// Grooving tools (w ≥ 1), layers, every corner size 0..=3, allowances:
+/// the material left by the plunges and the rough contour (J0 and J1), deep
+/// enough for ridges and slivers, IS-C inch diameter and IS-B metric radius
+/// (442 368 grooves).
 const MATERIAL: GrooveDomain = GrooveDomain {
-    depth: (1, 7),
-    width: (1, 6),
-    peck: (2, 3),
+    depth: (6, 7),
+    width: (4, 6),
+    peck: (3, 3),
     step: (1, 3),
+    layer: (0, 2),
+    allowance_x: (1, 2),
+    allowance_z: (0, 1),
     tool_width: (1, 2),
-    path: (0, 0),
-    signs: (0, 1),
+    corner: (0, 3),
     corner_kinds: (0, 0),
+    path: (0, 1),
+    signs: (0, 0),
+    units: (3, 4),
     ..SMALL
 };
 
@@ -144,7 +152,7 @@ const MATERIAL_WIDE: GrooveDomain = GrooveDomain {
 
 #[test]
 fn material_left_by_roughing() {
-    check("material (exhaustive)", small(400_000), || groove::groove_material(&MATERIAL, &GrooveFixedPoint));
+    check("material (exhaustive)", small(500_000), || groove::groove_material(&MATERIAL, &GrooveFixedPoint));
     check("material (sampled)", Mode::Sample { runs: 6_000, seed: 0x6d61_7431 }, || {
         groove::groove_material(&MATERIAL_WIDE, &GrooveFixedPoint);
     });
@@ -182,7 +190,7 @@ fn no_panic_over_the_documented_ranges() {
 /// The long run: wider exhaustive slices, each over the choices its
 /// property depends on (each slice below 20 000 000 runs).
 #[test]
-#[ignore = "long: run with --release -- --ignored"]
+#[ignore = "long: run with --profile proofs -- --ignored"]
 fn long_run() {
     let wide = GrooveDomain { depth: (1, 14), width: (0, 10), peck: (1, 5), step: (1, 4), ..SMALL };
     let pecks = GrooveDomain { corner: (0, 0), corner_kinds: (0, 0), path: (0, 0), ..wide };
@@ -196,7 +204,8 @@ fn long_run() {
         ..wide
     };
     check("inside (long)", small(20_000_000), || groove::groove_inside(&inside, &GrooveFixedPoint));
-    let material = GrooveDomain { tool_width: (1, 3), ..inside };
+    // Corners up to 3 and depths from 5 (the slivers need both), every unit code.
+    let material = GrooveDomain { depth: (5, 9), width: (3, 8), units: (0, 7), ..MATERIAL };
     check("material (long)", small(20_000_000), || groove::groove_material(&material, &GrooveFixedPoint));
     let profile =
         GrooveDomain { peck: (8, 8), step: (3, 3), layer: (0, 0), path: (1, 2), allowance_x: (0, 0), ..wide };

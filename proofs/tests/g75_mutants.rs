@@ -3,9 +3,27 @@
 //! wrap the real engine and change its output, standing for the bugs a
 //! vendor's groove cycle could have.
 
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
 use cycleref::{CycleError, G75Cycle, Motion, Move, Role};
-use cycleref_proofs::groove::{self, local_of, GrooveDomain, GrooveEngine, Moves};
+use cycleref_proofs::groove::{self, local_of, GrooveDomain, GrooveEngine, GrooveFixedPoint, Moves};
 use cycleref_proofs::shim::{check, Mode};
+
+/// Runs `body` exhaustively within `max_runs` on the real engine (the
+/// control: it must pass, every declared cover satisfied) and on the
+/// mutant, whose run must fail with `expected` in the failing assertion's
+/// own message (not the check's name, which every shim panic carries).
+fn caught<M: GrooveEngine>(max_runs: u64, body: impl Fn(&dyn GrooveEngine), mutant: M, expected: &str) {
+    let mode = Mode::Exhaustive { max_runs };
+    let r = check("control", mode, || body(&GrooveFixedPoint));
+    eprintln!("control: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
+    let failure = catch_unwind(AssertUnwindSafe(|| check("mutant", mode, || body(&mutant))))
+        .expect_err("the harness must catch the mutant");
+    let text = failure.downcast_ref::<String>().map(String::as_str).unwrap_or_default();
+    let (head, why) = text.split_once("]: ").unwrap_or((text, ""));
+    assert!(head.starts_with("mutant: the harness failed at run"), "not a failing run: {text}");
+    assert!(why.contains(expected), "caught by another check than {expected:?}: {text}");
+}
 
 struct Mutant<F>(F);
 
@@ -15,26 +33,31 @@ impl<F: Fn(&G75Cycle, Vec<Move>) -> Vec<Move>> GrooveEngine for Mutant<F> {
     }
 }
 
+/// Small right-angle grooves in every unit code (IS-B/IS-C, mm/inch,
+/// diameter/radius), both signs of H and D, pointed tool or widths 1..=2,
+/// with and without layers: 5 × 5 × 2 × 3 × 3 × 2 × 4 × 4 × 8 = 57 600.
 const SMALL: GrooveDomain = GrooveDomain {
-    depth: (1, 8),
-    width: (0, 6),
-    peck: (1, 3),
+    depth: (1, 5),
+    width: (0, 4),
+    peck: (1, 2),
     step: (1, 3),
     retract: (1, 1),
-    layer: (0, 3),
+    layer: (0, 2),
     allowance_x: (0, 1),
     allowance_z: (0, 0),
     tool_width: (-1, 2),
     corner: (0, 0),
     corner_kinds: (0, 0),
     path: (0, 0),
+    signs: (0, 3),
+    units: (0, 7),
     ..GrooveDomain::SQUARE
 };
 
-const EXHAUSTIVE: Mode = Mode::Exhaustive { max_runs: 400_000 };
+/// The run budget of every case.
+const BUDGET: u64 = 300_000;
 
 #[test]
-#[should_panic(expected = "pecks")]
 fn a_peck_too_deep_is_caught() {
     // The first peck of every plunge goes one increment further (Δi + 1).
     let e = Mutant(|c: &G75Cycle, mut v: Vec<Move>| {
@@ -49,11 +72,10 @@ fn a_peck_too_deep_is_caught() {
         }
         v
     });
-    check("pecks", EXHAUSTIVE, || groove::groove_pecks_and_steps(&SMALL, &e));
+    caught(BUDGET, |e| groove::groove_pecks_and_steps(&SMALL, e), e, "a peck takes at most Δi of new depth");
 }
 
 #[test]
-#[should_panic(expected = "steps")]
 fn a_step_too_long_is_caught() {
     // The last plunge of a layer is placed one increment beyond Δk.
     let e = Mutant(|c: &G75Cycle, mut v: Vec<Move>| {
@@ -74,11 +96,10 @@ fn a_step_too_long_is_caught() {
         }
         v
     });
-    check("steps", EXHAUSTIVE, || groove::groove_pecks_and_steps(&SMALL, &e));
+    caught(BUDGET, |e| groove::groove_pecks_and_steps(&SMALL, e), e, "a step goes on by at most Δk");
 }
 
 #[test]
-#[should_panic(expected = "layers")]
 fn a_plunge_short_of_its_layer_is_caught() {
     // The last plunge of the last layer stops one increment short.
     let e = Mutant(|c: &G75Cycle, mut v: Vec<Move>| {
@@ -90,11 +111,10 @@ fn a_plunge_short_of_its_layer_is_caught() {
         }
         v
     });
-    check("layers", EXHAUSTIVE, || groove::groove_layers(&SMALL, &e));
+    caught(BUDGET, |e| groove::groove_layers(&SMALL, e), e, "the last layer reaches |H| - U");
 }
 
 #[test]
-#[should_panic(expected = "inside")]
 fn a_plunge_into_the_allowance_is_caught() {
     // Plunges placed one increment towards flank A (rounding outwards).
     let e = Mutant(|c: &G75Cycle, mut v: Vec<Move>| {
@@ -105,11 +125,30 @@ fn a_plunge_into_the_allowance_is_caught() {
         }
         v
     });
-    check("inside", EXHAUSTIVE, || groove::groove_inside(&SMALL, &e));
+    // Corners of size 0..=1 (the cover "with a bottom corner"), IS-C inch
+    // diameter and IS-B metric radius: 4 × 5 × 2 × 3 × 2 × 4 × 16 × 4 × 2 = 122 880.
+    let d =
+        GrooveDomain { depth: (1, 4), peck: (3, 3), step: (1, 2), corner: (0, 1), units: (3, 4), ..SMALL };
+    caught(BUDGET, |e| groove::groove_inside(&d, e), e, "leaves the roughing region");
 }
 
+/// The finishing contour's slice: corners of size 0..=1, rounds, J1 and J2;
+/// pecking fixed (the contour does not depend on it): 16 × 2 × 2 × 3 × 4 ×
+/// 4 × 8 = 24 576 grooves.
+const PROFILE: GrooveDomain = GrooveDomain {
+    corner: (0, 1),
+    corner_kinds: (15, 15),
+    path: (1, 2),
+    depth: (6, 7),
+    width: (3, 5),
+    peck: (1, 1),
+    step: (3, 3),
+    layer: (0, 0),
+    allowance_x: (0, 0),
+    ..SMALL
+};
+
 #[test]
-#[should_panic(expected = "profile")]
 fn a_round_without_its_centre_is_caught() {
     // Rounds cut as straight chamfers.
     let e = Mutant(|_: &G75Cycle, mut v: Vec<Move>| {
@@ -120,19 +159,16 @@ fn a_round_without_its_centre_is_caught() {
         }
         v
     });
-    let d = GrooveDomain {
-        corner: (0, 1),
-        corner_kinds: (15, 15),
-        path: (1, 2),
-        depth: (6, 7),
-        width: (3, 5),
-        ..SMALL
-    };
-    check("profile", EXHAUSTIVE, || groove::groove_finish_is_profile(&d, &e));
+    let d = GrooveDomain { corner: (0, 1), corner_kinds: (15, 15), ..PROFILE };
+    caught(
+        BUDGET,
+        |e| groove::groove_finish_is_profile(&d, e),
+        e,
+        "the finishing contour is the programmed profile",
+    );
 }
 
 #[test]
-#[should_panic(expected = "profile")]
 fn a_finish_without_the_width_compensation_is_caught() {
     // The far side cut with the reference corner (no -w shift).
     let e = Mutant(|c: &G75Cycle, mut v: Vec<Move>| {
@@ -151,15 +187,36 @@ fn a_finish_without_the_width_compensation_is_caught() {
         }
         v
     });
-    let d = GrooveDomain { tool_width: (1, 2), path: (1, 2), depth: (6, 7), width: (3, 6), ..SMALL };
-    check("profile", EXHAUSTIVE, || groove::groove_finish_is_profile(&d, &e));
+    let d = GrooveDomain { tool_width: (1, 2), width: (3, 6), ..PROFILE };
+    caught(
+        BUDGET,
+        |e| groove::groove_finish_is_profile(&d, e),
+        e,
+        "the finishing contour is the programmed profile",
+    );
 }
 
-/// Grooving tools, layers, J0: the material harness's slice.
-const MATERIAL: GrooveDomain = GrooveDomain { tool_width: (1, 2), corner: (0, 1), signs: (0, 1), ..SMALL };
+/// The material harness's slice: grooving tools, with and without layers,
+/// every corner size 0..=3 (chamfers), J0 and J1, deep enough for ridges
+/// and slivers (each a declared cover): 221 184 grooves.
+const MATERIAL: GrooveDomain = GrooveDomain {
+    depth: (6, 7),
+    width: (4, 6),
+    peck: (3, 3),
+    step: (1, 3),
+    layer: (0, 2),
+    allowance_x: (1, 2),
+    allowance_z: (0, 1),
+    tool_width: (1, 2),
+    corner: (0, 3),
+    corner_kinds: (0, 0),
+    path: (0, 1),
+    signs: (0, 0),
+    units: (0, 0),
+    ..SMALL
+};
 
 #[test]
-#[should_panic(expected = "material")]
 fn a_step_at_the_plunge_bottom_is_caught() {
     // The tool steps along Z before it retracts: the rapid runs at the
     // bottom of the plunge, through the material beside it.
@@ -172,15 +229,14 @@ fn a_step_at_the_plunge_bottom_is_caught() {
         }
         v
     });
-    check("material", EXHAUSTIVE, || groove::groove_material(&MATERIAL, &e));
+    caught(BUDGET, |e| groove::groove_material(&MATERIAL, e), e, "runs through material");
 }
 
 #[test]
-#[should_panic(expected = "material")]
 fn a_rough_contour_left_out_is_caught() {
     // J0 without step 9: the band beside the plunges stays.
     let e = Mutant(|_: &G75Cycle, v: Vec<Move>| {
         v.into_iter().filter(|m| m.role != Role::RoughContour || m.motion == Motion::Rapid).collect()
     });
-    check("material", EXHAUSTIVE, || groove::groove_material(&MATERIAL, &e));
+    caught(BUDGET, |e| groove::groove_material(&MATERIAL, e), e, "inside the region");
 }

@@ -4,7 +4,7 @@
 //! summarises them. A longer exhaustive run over larger domains:
 //!
 //! ```sh
-//! cargo test -p cycleref-proofs --release --test harnesses -- --ignored
+//! cargo test -p cycleref-proofs --profile proofs --test harnesses -- --ignored
 //! ```
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
@@ -39,9 +39,10 @@ const SCHEDULE_WIDE: Domain = Domain {
     ..Domain::POINT
 };
 
-/// Geometry: every side, direction, infeed, tool angle in steps, tapers
-/// including X as the long axis (|i| >= |W| = 40), every run-out kind, all
-/// unit codes, over a small schedule.
+/// Geometry: every side, direction, infeed, tapers including X as the long
+/// axis (|i| >= |W| = 40), every run-out kind (chamfers from r accepted
+/// with the lead F0.01), F and I leads, IS-B/IS-C, mm/inch, over a small
+/// schedule.
 const GEOMETRY: Domain = Domain {
     height: (6, 8),
     first_depth: (3, 4),
@@ -59,6 +60,7 @@ const GEOMETRY: Domain = Domain {
     chamfer: (3, 3),
     chamfer_angle: (30, 30),
     units: (0, 3),
+    lead: (1, 2),
     ..Domain::POINT
 };
 
@@ -83,7 +85,19 @@ const WIDE: Domain = Domain {
     chamfer_angle: (1, 89),
     units: (0, 7),
     pass_limit: 2_000,
+    lead_in: (0, 1_000_000),
+    lead: (0, 3),
+    wild_x: 2_000_000_000,
 };
+
+/// The harnesses check "no overflow" by the panic an overflow raises: the
+/// profile must keep overflow checks on (dev does; `--profile proofs` is
+/// release with them on; plain `--release` turns them off and fails here).
+#[test]
+fn overflow_checks_are_on() {
+    let sum = std::panic::catch_unwind(|| std::hint::black_box(i64::MAX) + std::hint::black_box(1));
+    assert!(sum.is_err(), "overflow checks are off: run the long proofs with --profile proofs");
+}
 
 #[test]
 fn p1_depth_monotonicity() {
@@ -113,7 +127,15 @@ fn p4_run_out_direction() {
 
 #[test]
 fn p5_no_overcut() {
-    let d = Domain { run_out_kind: (0, 0), units: (0, 0), taper: (-3, 3), tool_angle: (0, 99), ..GEOMETRY };
+    let d = Domain {
+        run_out_kind: (0, 0),
+        units: (0, 0),
+        taper: (-3, 3),
+        tool_angle: (0, 99),
+        lead: (0, 0),
+        lead_in: (0, 1),
+        ..GEOMETRY
+    };
     check("no overcut", exhaustive(2_000_000), || harness::no_overcut(&d, &FixedPoint));
     check("no overcut (sampled)", SAMPLE, || harness::no_overcut(&WIDE, &FixedPoint));
 }
@@ -147,7 +169,7 @@ fn p8_isqrt_rounds() {
 }
 
 #[test]
-#[ignore = "long run: several minutes in release; see README"]
+#[ignore = "long run: several minutes with --profile proofs; see README"]
 fn long_exhaustive() {
     let started = std::time::Instant::now();
     check("depth monotonicity (wide)", exhaustive(200_000_000), || {
@@ -189,6 +211,8 @@ fn long_exhaustive() {
         run_out_kind: (0, 0),
         units: (0, 0),
         taper: (0, 0),
+        lead: (0, 0),
+        lead_in: (0, 1),
         ..GEOMETRY
     };
     check("no overcut (wide)", exhaustive(200_000_000), || harness::no_overcut(&o, &FixedPoint));

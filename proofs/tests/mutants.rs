@@ -2,8 +2,16 @@
 //! on purpose in the way the property forbids, finds the break. The mutants
 //! wrap the real engine and change its output (or its arithmetic), so they
 //! stand for the bugs a vendor's engine could have.
+//!
+//! Every case runs the same harness twice over the same exhaustive domain,
+//! within the same run budget: on the real engine (the control, which must
+//! pass with every declared cover satisfied) and on the mutant, whose run
+//! must fail on the assertion named in the case (its own text, not the
+//! check's name, which every shim panic carries).
 
-use cycleref::{CycleError, G76Cycle, Move, PassKind, Role};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use cycleref::{CycleError, G76Cycle, Infeed, Move, PassKind, Role};
 use cycleref_proofs::harness::{self, Domain};
 use cycleref_proofs::shim::{check, Mode};
 
@@ -11,6 +19,37 @@ type Moves = std::vec::IntoIter<Move>;
 
 fn real(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     cycleref::engine::expand_g76(c).map(Iterator::collect)
+}
+
+/// The real engine through the same adapter as the mutants.
+fn control(c: &G76Cycle) -> Result<Moves, CycleError> {
+    real(c).map(Vec::into_iter)
+}
+
+/// Runs `body(control)` and `body(mutant)` exhaustively within `max_runs`:
+/// the first must pass, the second must fail with `expected` in the failing
+/// assertion's message. Returns the two run counts.
+fn caught<M>(
+    max_runs: u64,
+    body: impl Fn(&dyn Fn(&G76Cycle) -> Result<Moves, CycleError>),
+    mutant: M,
+    expected: &str,
+) where
+    M: Fn(&G76Cycle) -> Result<Moves, CycleError>,
+{
+    let mode = Mode::Exhaustive { max_runs };
+    let r = check("control", mode, || body(&control));
+    eprintln!("control: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
+    let failure = catch_unwind(AssertUnwindSafe(|| check("mutant", mode, || body(&mutant))))
+        .expect_err("the harness must catch the mutant");
+    let text = failure
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| failure.downcast_ref::<&str>().copied())
+        .unwrap_or_default();
+    let (head, why) = text.split_once("]: ").unwrap_or((text, ""));
+    assert!(head.starts_with("mutant: the harness failed at run"), "not a failing run: {text}");
+    assert!(why.contains(expected), "caught by another check than {expected:?}: {text}");
 }
 
 /// The small schedule domain of `harnesses.rs`.
@@ -26,8 +65,9 @@ const GEOMETRY: Domain = Domain {
     positive_z: (0, 1),
     taper: (-45, 45),
     length: (40, 40),
-    run_out_kind: (1, 1),
+    run_out_kind: (1, 3),
     run_out: (1, 3),
+    lead: (1, 2),
     ..Domain::POINT
 };
 
@@ -36,52 +76,82 @@ fn mutant(f: impl Fn(&G76Cycle, Move) -> Move) -> impl Fn(&G76Cycle) -> Result<M
     move |c| real(c).map(|v| v.into_iter().map(|m| f(c, m)).collect::<Vec<_>>().into_iter())
 }
 
-#[test]
-#[should_panic(expected = "depth monotonicity")]
-fn mutated_schedule_is_caught_by_p1() {
-    // The third rough level repeats the second's depth (a schedule that stalls).
-    let e = move |c: &G76Cycle| {
-        real(c).map(|v| {
-            let second = v.iter().filter_map(|m| m.pass).find(|p| p.kind == PassKind::Rough && p.number == 2);
-            v.into_iter()
-                .map(|mut m| {
-                    if let (Some(p), Some(s)) = (m.pass.as_mut(), second) {
-                        if p.kind == PassKind::Rough
-                            && p.number == 3
-                            && c.infeed != cycleref::Infeed::LeftRight
-                        {
-                            p.depth = s.depth;
-                        }
-                    }
-                    m
-                })
-                .collect::<Vec<_>>()
-                .into_iter()
-        })
-    };
-    check("depth monotonicity", Mode::Exhaustive { max_runs: 200_000 }, || {
-        harness::depth_monotonicity(&SCHEDULE, &e)
-    });
+/// An engine that cuts the first pass of the second level twice (the whole
+/// pass, with its annotation: a repeated level with a consistent cut), in
+/// every infeed mode (that pass is rough pass 3 in D2, 2 otherwise).
+fn repeated_level(c: &G76Cycle) -> Result<Moves, CycleError> {
+    real(c).map(|v| {
+        let number = if c.infeed == Infeed::LeftRight { 3 } else { 2 };
+        let of_pass = |m: &Move| m.pass.is_some_and(|p| p.kind == PassKind::Rough && p.number == number);
+        let pass: Vec<Move> = v.iter().filter(|m| of_pass(m)).copied().collect();
+        let mut out = Vec::with_capacity(v.len() + pass.len());
+        let mut done = false;
+        for m in v {
+            if !done && !of_pass(&m) && !pass.is_empty() && out.last().is_some_and(of_pass) {
+                out.extend_from_slice(&pass);
+                done = true;
+            }
+            out.push(m);
+        }
+        out.into_iter()
+    })
 }
 
 #[test]
-#[should_panic(expected = "termination")]
+fn a_repeated_level_is_caught_by_p1_in_every_mode() {
+    caught(
+        200_000,
+        |e| harness::depth_monotonicity(&SCHEDULE, &e),
+        repeated_level,
+        "rough depths must strictly increase",
+    );
+}
+
+#[test]
+fn a_d2_left_pass_off_its_level_is_caught_by_p1() {
+    // The left pass of each D2 level one increment deeper than its right pass.
+    let e = mutant(|_, mut m| {
+        if let Some(p) = m.pass.as_mut() {
+            if p.kind == PassKind::Rough && p.flank == cycleref::Flank::Left {
+                p.depth += 1;
+            }
+        }
+        m
+    });
+    caught(
+        200_000,
+        |e| harness::depth_monotonicity(&SCHEDULE, &e),
+        e,
+        "a D2 left pass repeats its level's right pass",
+    );
+}
+
+#[test]
+fn a_repeated_level_is_caught_by_p2_in_every_mode() {
+    caught(
+        200_000,
+        |e| harness::termination(&SCHEDULE, &e),
+        repeated_level,
+        "a rough level repeats or goes back",
+    );
+}
+
+#[test]
 fn schedule_stopping_short_is_caught_by_p2() {
-    // The last rough level stops one increment short of k - d.
+    // The last rough level stops one increment short of k - d (where its
+    // cut is 2 or more, so that it still goes deeper than the level before).
     let e = mutant(|c, mut m| {
         if let Some(p) = m.pass.as_mut() {
-            if p.kind == PassKind::Rough && p.depth == c.thread_height - c.finishing_allowance && p.depth > 1
-            {
+            if p.kind == PassKind::Rough && p.depth == c.thread_height - c.finishing_allowance && p.cut > 1 {
                 p.depth -= 1;
             }
         }
         m
     });
-    check("termination", Mode::Exhaustive { max_runs: 200_000 }, || harness::termination(&SCHEDULE, &e));
+    caught(200_000, |e| harness::termination(&SCHEDULE, &e), e, "the last rough depth is k - d");
 }
 
 #[test]
-#[should_panic(expected = "finishing")]
 fn finishing_cut_repeated_is_caught_by_p3() {
     // Every finishing pass claims to remove d.
     let e = mutant(|c, mut m| {
@@ -93,11 +163,10 @@ fn finishing_cut_repeated_is_caught_by_p3() {
         m
     });
     let d = Domain { finishing: (0, 3), ..SCHEDULE };
-    check("finishing", Mode::Exhaustive { max_runs: 400_000 }, || harness::finishing(&d, &e));
+    caught(400_000, |e| harness::finishing(&d, &e), e, "finishing cut: d, then 0");
 }
 
 #[test]
-#[should_panic(expected = "run-out direction")]
 fn flipped_run_out_is_caught_by_p4() {
     // The run-out's short-axis travel goes the wrong way (into the work).
     let e = move |c: &G76Cycle| {
@@ -114,13 +183,17 @@ fn flipped_run_out_is_caught_by_p4() {
             out.into_iter()
         })
     };
-    check("run-out direction", Mode::Exhaustive { max_runs: 4_000_000 }, || {
-        harness::run_out_direction(&GEOMETRY, &e)
-    });
+    // Every run-out kind (chamfers accepted with F0.01), F and I leads; X
+    // long needs |i| > |W| = 40.
+    caught(
+        4_000_000,
+        |e| harness::run_out_direction(&GEOMETRY, &e),
+        e,
+        "an X-long run-out ends at X of the cut's end",
+    );
 }
 
 #[test]
-#[should_panic(expected = "no overcut")]
 fn shift_past_the_flank_is_caught_by_p5() {
     // Rough passes shifted two increments too far towards D.
     let e = mutant(|c, mut m| {
@@ -129,26 +202,30 @@ fn shift_past_the_flank_is_caught_by_p5() {
         }
         m
     });
-    let d = Domain { run_out_kind: (0, 0), taper: (0, 0), ..GEOMETRY };
-    check("no overcut", Mode::Exhaustive { max_runs: 2_000_000 }, || harness::no_overcut(&d, &e));
+    let d = Domain { run_out_kind: (0, 0), taper: (0, 0), lead: (0, 0), lead_in: (0, 1), ..GEOMETRY };
+    caught(2_000_000, |e| harness::no_overcut(&d, &e), e, "a pass lies outside the final form");
 }
 
 #[test]
-#[should_panic(expected = "equivalence")]
 fn any_difference_is_caught_by_p6() {
-    // Rounding the Z shift down instead of to nearest.
+    // Rounding the Z shift down instead of to nearest, at a = 45° only.
     let e = mutant(|c, mut m| {
         if m.role == Role::Approach && c.tool_angle == 45 {
             m.to.z -= (c.end.z - c.start.z).signum();
         }
         m
     });
-    let d = Domain { tool_angle: (0, 60), ..SCHEDULE };
-    check("equivalence", Mode::Exhaustive { max_runs: 2_000_000 }, || harness::equivalence(&d, &e));
+    let d = Domain {
+        height: (1, 10),
+        first_depth: (1, 10),
+        allowance: (0, 10),
+        tool_angle: (44, 46),
+        ..SCHEDULE
+    };
+    caught(400_000, |e| harness::equivalence(&d, &e), e, "engine and reference differ");
 }
 
 #[test]
-#[should_panic(expected = "no panic")]
 fn a_panicking_engine_is_caught_by_p7() {
     // An engine that overflows on a 7-start thread.
     let e = |c: &G76Cycle| {
@@ -157,19 +234,30 @@ fn a_panicking_engine_is_caught_by_p7() {
         real(c).map(Vec::into_iter)
     };
     let d = Domain { starts: (1, 9), ..Domain::POINT };
-    check("no panic", Mode::Exhaustive { max_runs: 1_000 }, || harness::no_panic(&d, &e, 100));
+    caught(1_000, |e| harness::no_panic(&d, &e, 100), e, "attempt to add with overflow");
 }
 
 #[test]
-#[should_panic(expected = "isqrt")]
-fn floor_sqrt_is_caught_by_p8() {
-    check("isqrt", Mode::Exhaustive { max_runs: 1 << 12 }, || {
-        harness::isqrt_rounds(0, 1 << 10, cycleref::engine::isqrt_floor)
+fn a_move_out_of_range_is_caught_by_p7() {
+    // An engine whose rough approach lands one increment beyond the range.
+    let e = mutant(|_, mut m| {
+        if m.role == Role::Approach {
+            m.to.x = cycleref::units::MAX_LENGTH + 1;
+        }
+        m
     });
+    let d = Domain { starts: (1, 2), ..Domain::POINT };
+    caught(1_000, |e| harness::no_panic(&d, &e, 100), e, "a move outside the coordinate range");
 }
 
 #[test]
-fn the_real_engine_passes_the_same_checks() {
-    let e = |c: &G76Cycle| real(c).map(Vec::into_iter);
-    check("control", Mode::Exhaustive { max_runs: 4_000_000 }, || harness::run_out_direction(&GEOMETRY, &e));
+fn floor_sqrt_is_caught_by_p8() {
+    let mode = Mode::Exhaustive { max_runs: 1 << 12 };
+    check("control", mode, || harness::isqrt_rounds(0, 1 << 10, cycleref::engine::round_sqrt));
+    let failure = catch_unwind(|| {
+        check("mutant", mode, || harness::isqrt_rounds(0, 1 << 10, cycleref::engine::isqrt_floor))
+    })
+    .expect_err("a floor square root must be caught");
+    let text = failure.downcast_ref::<String>().cloned().unwrap_or_default();
+    assert!(text.ends_with("round(√x) too small"), "{text}");
 }

@@ -109,41 +109,64 @@ use crate::units::{Length, Point, Units, MAX_LENGTH};
 /// exactly there, after about `log2(bits)` + 1 steps (7 for `u128`).
 #[must_use]
 pub const fn isqrt_floor(x: u128) -> u128 {
+    isqrt_floor_counted(x).0
+}
+
+/// [`isqrt_floor`], with the iterations of Newton's loop and whether it ran
+/// on `u128` (`x ≥ 2^64`) rather than `u64` (for `loop-counters`).
+const fn isqrt_floor_counted(x: u128) -> (u128, u32, bool) {
     if x < 2 {
-        return x;
+        return (x, 0, false);
     }
     if x <= u64::MAX as u128 {
         // Lossless: x fits u64 (checked above); the root fits u64 as well.
         #[allow(clippy::cast_possible_truncation)]
-        let r = isqrt_floor_u64(x as u64);
-        return r as u128;
+        let (r, n) = isqrt_floor_u64(x as u64);
+        return (r as u128, n, false);
     }
     // x ≥ 2^64: bits in 65..=128, g = 2^ceil(bits/2) ≤ 2^64 and g > √x.
     let bits = 128 - x.leading_zeros();
     let mut g: u128 = 1 << bits.div_ceil(2);
+    let mut n = 0_u32;
     loop {
+        n += 1;
         // g ≥ ⌊√x⌋ ≥ 2^32 > 0; g ≤ 2^64 and x / g < 2^64 + 3, so the sum
         // stays below 2^66.
         let y = (g + x / g) >> 1;
         if y >= g {
-            return g;
+            return (g, n, true);
         }
         g = y;
     }
 }
 
-/// [`isqrt_floor`] on `u64`, `x ≥ 2`.
-const fn isqrt_floor_u64(x: u64) -> u64 {
+/// [`isqrt_floor`] on `u64`, `x ≥ 2`, with the iterations of its loop.
+const fn isqrt_floor_u64(x: u64) -> (u64, u32) {
     // bits in 2..=64, g = 2^ceil(bits/2) ≤ 2^32 and g > √x.
     let bits = 64 - x.leading_zeros();
     let mut g: u64 = 1 << bits.div_ceil(2);
+    // At most 64 iterations (g decreases strictly from below 2^33).
+    let mut n = 0_u32;
     loop {
+        n += 1;
         // 1 ≤ ⌊√x⌋ ≤ g ≤ 2^32 and x / g ≤ 2^32 + 2: no overflow.
         let y = (g + x / g) >> 1;
         if y >= g {
-            return g;
+            return (g, n);
         }
         g = y;
+    }
+}
+
+/// Records the iterations [`isqrt_floor`] makes on `x` (`loop-counters`):
+/// its callers call it, since a `const fn` cannot record.
+#[cfg(feature = "loop-counters")]
+pub fn record_isqrt(x: u128) {
+    let (_, n, wide) = isqrt_floor_counted(x);
+    if wide {
+        crate::loop_counters::ISQRT_U128.record(n);
+    } else {
+        crate::loop_counters::ISQRT_U64.record(n);
     }
 }
 
@@ -193,6 +216,8 @@ fn saturate_i64(v: i128) -> i64 {
 /// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
 /// is below `2^93` and the root below `2^47`.
 fn law(q2: u64, n: u64) -> i64 {
+    #[cfg(feature = "loop-counters")]
+    record_isqrt(u128::from(q2) * u128::from(n));
     let root = round_sqrt(u128::from(q2) * u128::from(n));
     i64::try_from(root).unwrap_or(i64::MAX)
 }
@@ -215,7 +240,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
     let limit = u64::from(c.pass_limit);
     let mut depth = 0_i64;
     let mut n = 0_u64;
+    let mut count = crate::loop_counters::count!(PASS_COUNT);
     let levels = loop {
+        count.tick();
         if depth >= last {
             break n;
         }
@@ -677,7 +704,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         run_out,
         lead_in,
         starts: c.starts,
-        spacing: StartSpacing::new(c.starts),
+        spacing: {
+            #[cfg(feature = "loop-counters")]
+            StartSpacing::record_new_gcd(c.starts);
+            StartSpacing::new(c.starts)
+        },
     };
     // Δd < 2^30: Δd² < 2^60.
     let q = c.first_depth.unsigned_abs();
@@ -724,6 +755,8 @@ impl G76Moves {
         self.start = start;
         // start < L ≤ 999.
         self.pass.start = u16::try_from(start + 1).unwrap_or(u16::MAX);
+        #[cfg(feature = "loop-counters")]
+        self.frame.spacing.record_angle_gcd(start);
         self.angle = self.frame.spacing.angle(start);
         self.step = 0;
         self.at = self.frame.a;
@@ -733,7 +766,9 @@ impl G76Moves {
     /// The next planned pass and its Z shift, as the reference's
     /// `planned_passes` (readings R-INFEED, R-FINISH), with `start` 1.
     fn plan_next(&mut self) -> Option<(Pass, i64)> {
+        let mut count = crate::loop_counters::count!(PLAN_NEXT);
         loop {
+            count.tick();
             match self.stage {
                 Stage::Rough { left_pending: true } => {
                     self.stage = Stage::Rough { left_pending: false };
@@ -808,7 +843,9 @@ impl Iterator for G76Moves {
     // Inlined across crates: a call per move costs more than the move.
     #[inline]
     fn next(&mut self) -> Option<Move> {
+        let mut count = crate::loop_counters::count!(G76_NEXT);
         loop {
+            count.tick();
             if self.stage == Stage::Done {
                 return None;
             }

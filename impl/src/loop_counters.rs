@@ -1,0 +1,125 @@
+//! Iteration counts of the engine's loops, for the proofs crate (feature
+//! `loop-counters`, test-only; without it the crate-private counter is an
+//! empty type whose methods do nothing, and this module exports nothing).
+//!
+//! Kani unrolls every loop up to a harness's `#[kani::unwind(N)]` and fails
+//! when a loop can run N or more times. `cycleref-proofs` runs each harness
+//! over its Kani window with this feature on and checks that the largest
+//! count of each loop stays below the harness's bound. Each `Site` keeps
+//! the largest number of iterations one execution of its loop made since
+//! the last `reset`: counts are process-wide, so a measurement runs on
+//! one thread.
+
+#[cfg(feature = "loop-counters")]
+use core::sync::atomic::{AtomicU32, Ordering};
+
+/// A loop of the engine, with the largest iteration count seen.
+#[cfg(feature = "loop-counters")]
+#[derive(Debug)]
+pub struct Site {
+    /// `function: loop`.
+    pub name: &'static str,
+    max: AtomicU32,
+}
+
+#[cfg(feature = "loop-counters")]
+impl Site {
+    const fn new(name: &'static str) -> Site {
+        Site { name, max: AtomicU32::new(0) }
+    }
+
+    /// The largest iteration count recorded since the last [`reset`].
+    pub fn max(&self) -> u32 {
+        self.max.load(Ordering::Relaxed)
+    }
+
+    /// Records one execution of the loop that made `iterations` iterations.
+    pub fn record(&self, iterations: u32) {
+        if iterations > self.max.load(Ordering::Relaxed) {
+            self.max.fetch_max(iterations, Ordering::Relaxed);
+        }
+    }
+}
+
+/// `engine::isqrt_floor`: Newton's loop on `u128` (x ≥ 2^64).
+#[cfg(feature = "loop-counters")]
+pub static ISQRT_U128: Site = Site::new("isqrt_floor: Newton on u128");
+/// `engine::isqrt_floor_u64`: Newton's loop on `u64`.
+#[cfg(feature = "loop-counters")]
+pub static ISQRT_U64: Site = Site::new("isqrt_floor_u64: Newton on u64");
+/// `engine::check_pass_count`: the levels counted before any move.
+#[cfg(feature = "loop-counters")]
+pub static PASS_COUNT: Site = Site::new("check_pass_count: levels");
+/// `G76Moves::plan_next`: stages skipped to the next planned pass.
+#[cfg(feature = "loop-counters")]
+pub static PLAN_NEXT: Site = Site::new("G76Moves::plan_next: stages");
+/// `G76Moves::next`: path steps skipped to the next move.
+#[cfg(feature = "loop-counters")]
+pub static G76_NEXT: Site = Site::new("G76Moves::next: steps");
+/// `angle::gcd`: Stein's loop.
+#[cfg(feature = "loop-counters")]
+pub static GCD: Site = Site::new("angle::gcd: Stein");
+/// `G32Block::validate`: the four coordinates.
+#[cfg(feature = "loop-counters")]
+pub static G32_VALIDATE: Site = Site::new("G32Block::validate: coordinates");
+
+/// Every site.
+#[cfg(feature = "loop-counters")]
+pub static SITES: [&Site; 7] =
+    [&ISQRT_U128, &ISQRT_U64, &PASS_COUNT, &PLAN_NEXT, &G76_NEXT, &GCD, &G32_VALIDATE];
+
+/// Clears every site's largest count.
+#[cfg(feature = "loop-counters")]
+pub fn reset() {
+    for s in SITES {
+        s.max.store(0, Ordering::Relaxed);
+    }
+}
+
+/// Counts the iterations of one execution of a loop (not `const`: the
+/// `const fn` kernels count in a local and their callers record).
+#[derive(Debug)]
+pub(crate) struct Count {
+    #[cfg(feature = "loop-counters")]
+    site: &'static Site,
+    #[cfg(feature = "loop-counters")]
+    n: u32,
+}
+
+impl Count {
+    /// Starts counting for the loop `site`.
+    #[cfg(feature = "loop-counters")]
+    #[inline]
+    pub(crate) fn new(site: &'static Site) -> Count {
+        Count { site, n: 0 }
+    }
+
+    /// One more iteration.
+    #[inline]
+    pub(crate) fn tick(&mut self) {
+        #[cfg(feature = "loop-counters")]
+        {
+            self.n = self.n.saturating_add(1);
+        }
+    }
+}
+
+#[cfg(feature = "loop-counters")]
+impl Drop for Count {
+    fn drop(&mut self) {
+        self.site.record(self.n);
+    }
+}
+
+/// A `Count` for `site` (the name of a `Site` static); without the
+/// feature the site is not named, so it needs not exist.
+macro_rules! count {
+    ($site:ident) => {{
+        #[cfg(feature = "loop-counters")]
+        let c = $crate::loop_counters::Count::new(&$crate::loop_counters::$site);
+        #[cfg(not(feature = "loop-counters"))]
+        let c = $crate::loop_counters::Count {};
+        c
+    }};
+}
+pub(crate) use count;

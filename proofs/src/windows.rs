@@ -1,0 +1,120 @@
+//! The Kani windows and unwind bounds of `proofs/src/kani_proofs.rs`, outside
+//! `cfg(kani)` so that `proofs/tests/unwind.rs` can measure, under `cargo
+//! test`, the loop counts each harness reaches in its window and check them
+//! against its bound (Kani needs `#[kani::unwind(N)]` with N above the
+//! largest iteration count of every loop it unrolls). That test also reads
+//! the attributes in `kani_proofs.rs` and checks they equal the bounds here.
+
+use crate::groove::GrooveDomain;
+use crate::harness::Domain;
+
+/// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
+/// one start, every infeed mode, side, direction, unit code, run-out kind,
+/// tool and chamfer angle, lead (F and I) and lead-in E ≤ 3. The most
+/// moves a cycle has here is 6 per pass (approach, lead-in, cut, run-out,
+/// retract, return) times 13 passes (D2 with k = 6, Δd = 1: 6 levels, 11
+/// rough passes, then m = 2): 78.
+pub const G76_WINDOW: Domain = Domain {
+    height: (1, 6),
+    first_depth: (1, 6),
+    min_cut: (0, 2),
+    allowance: (0, 6),
+    tool_angle: (0, 99),
+    finishing: (0, 2),
+    infeed: (0, 2),
+    starts: (1, 1),
+    internal: (0, 1),
+    positive_z: (0, 1),
+    taper: (-6, 6),
+    length: (20, 40),
+    run_out_kind: (0, 3),
+    run_out: (0, 4),
+    chamfer: (0, 99),
+    chamfer_angle: (1, 89),
+    units: (0, 7),
+    pass_limit: 16,
+    lead_in: (0, 3),
+    lead: (0, 3),
+    wild_x: 2,
+};
+
+/// P3's window: [`G76_WINDOW`] with two starts (the finishing passes per
+/// start), k ≤ 4.
+pub const FINISHING_WINDOW: Domain =
+    Domain { height: (1, 4), first_depth: (1, 4), allowance: (0, 4), starts: (1, 2), ..G76_WINDOW };
+
+/// P6's window: k, Δd ≤ 8, straight and small tapers, one start, m = 1.
+pub const EQUIVALENCE_WINDOW: Domain = Domain {
+    height: (1, 8),
+    first_depth: (1, 8),
+    min_cut: (0, 2),
+    allowance: (0, 8),
+    tool_angle: (0, 60),
+    infeed: (0, 2),
+    taper: (-4, 4),
+    run_out_kind: (0, 1),
+    run_out: (0, 2),
+    pass_limit: 16,
+    ..Domain::POINT
+};
+
+/// P7's window: every documented input, pass limit 32, the first
+/// [`NO_PANIC_MOVES`] moves.
+pub const NO_PANIC_WINDOW: Domain = Domain { pass_limit: 32, ..Domain::FULL };
+
+/// Moves of each cycle that P7 looks at under Kani.
+pub const NO_PANIC_MOVES: usize = 12;
+
+/// P8's window: `x` in `0..=i64::MAX`.
+pub const ISQRT_WINDOW: (i64, i64) = (0, i64::MAX);
+
+/// The G32 run-out window: start and end within 1 000 increments, |J|, K ≤ 100.
+pub const G32_WINDOW: (i64, i64) = (1_000, 100);
+
+/// G75.1: right-angle grooves up to 4 increments deep and wide.
+pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
+    depth: (1, 4),
+    width: (0, 4),
+    peck: (1, 4),
+    step: (1, 4),
+    retract: (0, 1),
+    layer: (0, 3),
+    allowance_x: (0, 1),
+    allowance_z: (0, 1),
+    tool_width: (-1, 2),
+    corner: (0, 1),
+    corner_kinds: (0, 15),
+    flank: (900_000, 900_000),
+    slope: (0, 0),
+    path: (0, 2),
+    signs: (0, 3),
+    units: (0, 7),
+};
+
+/// Each Kani harness and its `#[kani::unwind(N)]`.
+pub const UNWIND: [(&str, u32); 15] = [
+    ("depth_monotonicity", 79),
+    ("termination", 79),
+    ("finishing", 109),
+    ("run_out_direction", 79),
+    ("no_overcut", 79),
+    ("equivalence", 81),
+    ("no_panic", 34),
+    ("isqrt_rounds", 7),
+    ("g32_run_out", 5),
+    ("groove_pecks_and_steps", 66),
+    ("groove_layers", 66),
+    ("groove_inside", 66),
+    ("groove_finish_is_profile", 66),
+    ("groove_material", 66),
+    ("groove_no_panic", 64),
+];
+
+/// The bound of harness `name` in [`UNWIND`].
+///
+/// # Panics
+///
+/// When `name` is not a Kani harness.
+pub fn unwind(name: &str) -> u32 {
+    UNWIND.iter().find(|(n, _)| *n == name).map(|(_, u)| *u).expect("a Kani harness")
+}

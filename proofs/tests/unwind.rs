@@ -1,0 +1,363 @@
+//! The unwind bounds of the Kani harnesses, checked here: every loop a
+//! harness reaches must run fewer times than its `#[kani::unwind(N)]`
+//! (Kani unrolls N times and fails its unwinding assertion otherwise).
+//!
+//! The engine's loops count their iterations (`cycleref::loop_counters`,
+//! feature `loop-counters`, on for this crate's tests); the harness's own
+//! loops run over the moves of one cycle, so an engine wrapper counts the
+//! moves each expansion yields. Each harness runs over its Kani window
+//! (`cycleref_proofs::windows`): sampled over the whole window, and
+//! exhaustively over the window's worst cases, chosen by this argument: a
+//! G76 cycle has at most 6 moves per pass and start (approach, lead-in,
+//! cut, run-out, retract, return), and the
+//! most rough passes are made with the largest k - d and the smallest cuts
+//! (Δd ≤ 2, Δdmin ≤ 1) in D2; the other words change coordinates and which
+//! moves are left out as empty (R-ZERO), never the number of passes. The
+//! engine's own loops are bounded by the passes (the level count), by the
+//! path steps of one pass, or by the input's magnitude (Newton, Stein),
+//! which the worst cases and samples span.
+//!
+//! The counts are process-wide: the measuring tests take one lock, so one
+//! measures at a time.
+
+use std::cell::Cell;
+use std::collections::BTreeMap;
+use std::rc::Rc;
+use std::sync::Mutex;
+
+use cycleref::loop_counters::{self, SITES};
+use cycleref::{CycleError, G76Cycle, Move};
+use cycleref_proofs::harness::{self, Domain, Engine};
+use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::windows::{self, unwind};
+
+/// The real engine, counting the moves of each expansion.
+struct Counted {
+    moves: Rc<Cell<u32>>,
+}
+
+struct CountedMoves {
+    inner: cycleref::G76Moves,
+    n: u32,
+    max: Rc<Cell<u32>>,
+}
+
+impl Iterator for CountedMoves {
+    type Item = Move;
+    fn next(&mut self) -> Option<Move> {
+        let m = self.inner.next();
+        if m.is_some() {
+            self.n += 1;
+        }
+        m
+    }
+}
+
+impl Drop for CountedMoves {
+    fn drop(&mut self) {
+        self.max.set(self.max.get().max(self.n));
+    }
+}
+
+impl Engine for Counted {
+    type Moves = CountedMoves;
+    fn expand(&self, c: &G76Cycle) -> Result<CountedMoves, CycleError> {
+        cycleref::expand_g76(c).map(|inner| CountedMoves { inner, n: 0, max: Rc::clone(&self.moves) })
+    }
+}
+
+/// The largest loop counts of one harness: each engine site and the moves.
+#[derive(Default)]
+struct Maxima(BTreeMap<&'static str, u32>);
+
+impl Maxima {
+    fn take(&mut self, moves: u32) {
+        for s in SITES {
+            let e = self.0.entry(s.name).or_insert(0);
+            *e = (*e).max(s.max());
+        }
+        let e = self.0.entry("harness: moves of one cycle").or_insert(0);
+        *e = (*e).max(moves);
+    }
+
+    /// Fails when a loop reaches the harness's bound; returns the largest count.
+    fn check(&self, harness: &str) -> u32 {
+        self.check_against(harness, unwind(harness))
+    }
+
+    fn check_against(&self, harness: &str, bound: u32) -> u32 {
+        eprintln!("{harness}: unwind {bound}, loop maxima {:?}", self.0);
+        for (site, &n) in &self.0 {
+            assert!(n < bound, "{harness}: {site} runs {n} times, unwind bound {bound}");
+        }
+        self.0.values().copied().max().unwrap_or(0)
+    }
+}
+
+/// Runs `body` with the counting engine in `mode` and adds the counts.
+fn measure(maxima: &mut Maxima, name: &str, mode: Mode, body: impl Fn(&Counted)) {
+    loop_counters::reset();
+    let e = Counted { moves: Rc::new(Cell::new(0)) };
+    let r = shim::check(name, mode, || body(&e));
+    eprintln!("  {name}: {} runs, {} pruned", r.runs, r.pruned);
+    maxima.take(e.moves.get());
+}
+
+const SAMPLE: Mode = Mode::Sample { runs: 20_000, seed: 0x756e_7769_6e64 };
+
+/// The worst cases of a G76 window (see the module docs): the largest k,
+/// d ≤ 1, the smallest cuts, the most finishing passes and starts, every
+/// infeed mode, side, direction, taper, run-out kind and unit code.
+fn worst(w: &Domain) -> Domain {
+    Domain {
+        height: (w.height.1, w.height.1),
+        first_depth: (w.first_depth.0, w.first_depth.0 + 1),
+        min_cut: (w.min_cut.0, w.min_cut.0 + 1),
+        allowance: (w.allowance.0, w.allowance.0 + 1),
+        finishing: (w.finishing.1, w.finishing.1),
+        starts: (w.starts.1, w.starts.1),
+        length: (w.length.1, w.length.1),
+        run_out: (w.run_out.1, w.run_out.1),
+        chamfer: (w.chamfer.1, w.chamfer.1),
+        chamfer_angle: (45, 45),
+        tool_angle: (60, 60),
+        // A lead-in adds one move per pass; the lead changes coordinates only.
+        lead_in: (w.lead_in.1, w.lead_in.1),
+        lead: (w.lead.0, w.lead.0),
+        ..*w
+    }
+}
+
+/// The counts are process-wide: one measurement at a time.
+static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
+fn lock() -> std::sync::MutexGuard<'static, ()> {
+    ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+fn g76_maxima(name: &str, window: &Domain, body: impl Fn(&Domain, &Counted)) -> Maxima {
+    let mut m = Maxima::default();
+    measure(&mut m, &format!("{name} (sampled window)"), SAMPLE, |e| body(window, e));
+    let w = worst(window);
+    measure(&mut m, &format!("{name} (worst cases)"), Mode::Enumerate { max_runs: 2_000_000 }, |e| {
+        body(&w, e)
+    });
+    m
+}
+
+fn g76(name: &str, window: &Domain, body: impl Fn(&Domain, &Counted)) -> u32 {
+    g76_maxima(name, window, body).check(name)
+}
+
+/// The check fails when a loop reaches the bound: P1's window has a cycle
+/// of 78 moves (6 moves × 13 passes, counted by hand in `windows.rs`), so
+/// a bound of 78 is one short.
+#[test]
+#[should_panic(expected = "depth_monotonicity: harness: moves of one cycle runs 78 times, unwind bound 78")]
+fn a_loop_reaching_its_bound_fails() {
+    let _one = lock();
+    let m = g76_maxima("depth_monotonicity", &windows::G76_WINDOW, harness::depth_monotonicity);
+    m.check_against("depth_monotonicity", 78);
+}
+
+#[test]
+fn every_loop_stays_below_its_harness_unwind_bound() {
+    let _one = lock();
+    let w = windows::G76_WINDOW;
+    g76("depth_monotonicity", &w, harness::depth_monotonicity);
+    g76("termination", &w, harness::termination);
+    g76("run_out_direction", &w, harness::run_out_direction);
+    g76("no_overcut", &w, harness::no_overcut);
+    g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
+    // The engine's side only: the reference's loops (rust_decimal) are not
+    // counted here.
+    g76("equivalence", &windows::EQUIVALENCE_WINDOW, harness::equivalence);
+}
+
+/// The G75.1 harnesses: the moves of one groove (what their loops run
+/// over), sampled over the window and enumerated at its deepest, widest
+/// grooves with the smallest pecks and steps. The G75.1 engine's own loops
+/// are not counted yet.
+#[test]
+fn groove_moves_stay_below_the_unwind_bounds() {
+    let _one = lock();
+    use cycleref_proofs::groove::{self, GrooveDomain, GrooveEngine, Moves};
+    struct CountedGroove(Cell<usize>);
+    impl GrooveEngine for CountedGroove {
+        fn expand(&self, c: &cycleref::G75Cycle) -> Result<Moves, CycleError> {
+            let v: Moves = cycleref::expand_g75(c)?.collect();
+            self.0.set(self.0.get().max(v.len()));
+            Ok(v)
+        }
+    }
+    let w = windows::GROOVE_WINDOW;
+    let worst = GrooveDomain {
+        depth: (w.depth.1, w.depth.1),
+        width: (w.width.1, w.width.1),
+        peck: (1, 1),
+        step: (1, 1),
+        corner_kinds: (0, 0),
+        signs: (0, 0),
+        units: (0, 0),
+        ..w
+    };
+    let material = GrooveDomain { tool_width: (1, 2), path: (0, 1), ..w };
+    type Body = fn(&GrooveDomain, &CountedGroove);
+    let harnesses: [(&str, GrooveDomain, Body); 5] = [
+        ("groove_pecks_and_steps", w, groove::groove_pecks_and_steps),
+        ("groove_layers", w, groove::groove_layers),
+        ("groove_inside", w, groove::groove_inside),
+        ("groove_finish_is_profile", w, groove::groove_finish_is_profile),
+        ("groove_material", material, groove::groove_material),
+    ];
+    for (name, window, body) in harnesses {
+        let e = CountedGroove(Cell::new(0));
+        shim::check(name, SAMPLE, || body(&window, &e));
+        let worst = GrooveDomain { tool_width: window.tool_width, path: window.path, ..worst };
+        shim::check(name, Mode::Enumerate { max_runs: 1_000_000 }, || body(&worst, &e));
+        let n = u32::try_from(e.0.get()).unwrap_or(u32::MAX);
+        eprintln!("{name}: unwind {}, moves of one groove {n}", unwind(name));
+        assert!(n < unwind(name), "{name}: a loop over {n} moves, unwind bound {}", unwind(name));
+    }
+}
+
+/// P7 over the documented ranges: sampled, and enumerated at the extremes
+/// that drive each loop (the smallest cuts and Δd = k / 10 against the
+/// largest k for the pass count, which stops past the limit; the largest
+/// Δd for Newton; every start count 1..=999 for Stein's gcd).
+#[test]
+fn no_panic_stays_below_its_unwind_bound() {
+    let _one = lock();
+    let w = windows::NO_PANIC_WINDOW;
+    let n = windows::NO_PANIC_MOVES;
+    let mut m = Maxima::default();
+    measure(&mut m, "no_panic (sampled window)", SAMPLE, |e| harness::no_panic(&w, e, n));
+    let fixed = Domain {
+        tool_angle: (60, 60),
+        finishing: (99, 99),
+        starts: (999, 999),
+        taper: (0, 0),
+        length: (999_999_999, 999_999_999),
+        run_out: (999_999_999, 999_999_999),
+        chamfer: (99, 99),
+        chamfer_angle: (45, 45),
+        units: (0, 7),
+        // An invalid start X is refused before any loop: two values suffice.
+        wild_x: 2,
+        // A lead-in adds a move (and some are refused before the count);
+        // the lead changes coordinates only.
+        lead_in: (0, 1),
+        lead: (0, 0),
+        ..w
+    };
+    let small_cuts = Domain {
+        height: (999_999_998, 999_999_999),
+        first_depth: (1, 2),
+        min_cut: (0, 1),
+        allowance: (0, 1),
+        ..fixed
+    };
+    let large_first = Domain {
+        height: (999_999_998, 999_999_999),
+        first_depth: (999_999_998, 999_999_999),
+        min_cut: (0, 1),
+        allowance: (0, 1),
+        ..fixed
+    };
+    // Δd = k / 10: the law alone makes about 100 levels, so the count runs
+    // past the limit.
+    let by_law = Domain { first_depth: (100_000_000, 100_000_001), ..large_first };
+    let starts = Domain { starts: (1, 999), units: (0, 0), run_out_kind: (0, 0), ..Domain::POINT };
+    let starts = Domain { pass_limit: w.pass_limit, ..starts };
+    for (name, d) in [
+        ("small cuts", small_cuts),
+        ("large first depth", large_first),
+        ("levels by the law past the limit", by_law),
+        ("every start count", starts),
+    ] {
+        measure(&mut m, &format!("no_panic ({name})"), Mode::Enumerate { max_runs: 2_000_000 }, |e| {
+            harness::no_panic(&d, e, n);
+        });
+    }
+    m.check("no_panic");
+}
+
+/// `round_sqrt` counting its Newton iterations.
+fn counting_sqrt(x: u128) -> u128 {
+    cycleref::engine::record_isqrt(x);
+    cycleref::engine::round_sqrt(x)
+}
+
+/// P8 over `0..=i64::MAX`: sampled; every `x < 2^16`; and every `x` within
+/// 2 of a power of two or of an odd square's neighbours at each bit length,
+/// where Newton's start `2^ceil(bits/2)` is farthest from the root.
+#[test]
+fn isqrt_stays_below_its_unwind_bound() {
+    let _one = lock();
+    let (lo, hi) = windows::ISQRT_WINDOW;
+    let mut m = Maxima::default();
+    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
+        harness::isqrt_rounds(lo, hi, counting_sqrt);
+    });
+    measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| {
+        harness::isqrt_rounds(0, (1 << 16) - 1, counting_sqrt);
+    });
+    for bits in 17..63 {
+        let p = 1_i64 << bits;
+        measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| {
+            harness::isqrt_rounds(p - 2, p + 2, counting_sqrt);
+        });
+    }
+    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
+        harness::isqrt_rounds(hi - 4, hi, counting_sqrt);
+    });
+    m.check("isqrt_rounds");
+}
+
+/// The G32 run-out harness: every block within 3 increments exhaustively
+/// (all units, run-outs), and sampled over its window.
+#[test]
+fn g32_stays_below_its_unwind_bound() {
+    let _one = lock();
+    let (reach, run_out) = windows::G32_WINDOW;
+    let moves = Rc::new(Cell::new(0_u32));
+    let counting = |b: &cycleref::G32Block| {
+        cycleref::expand_g32(b).map(|it| {
+            let v: Vec<Move> = it.collect();
+            let n = u32::try_from(v.len()).unwrap_or(u32::MAX);
+            moves.set(moves.get().max(n));
+            v.into_iter()
+        })
+    };
+    let mut m = Maxima::default();
+    measure(&mut m, "g32 (sampled window)", SAMPLE, |_| harness::g32_run_out(reach, run_out, &counting));
+    measure(&mut m, "g32 (within 3)", Mode::Enumerate { max_runs: 5_000_000 }, |_| {
+        harness::g32_run_out(3, 2, &counting);
+    });
+    m.take(moves.get());
+    m.check("g32_run_out");
+}
+
+#[test]
+fn the_kani_attributes_are_the_bounds_checked_here() {
+    let src = include_str!("../src/kani_proofs.rs");
+    let mut found = BTreeMap::new();
+    let mut pending = None;
+    for line in src.lines().map(str::trim) {
+        if let Some(n) = line.strip_prefix("#[kani::unwind(").and_then(|r| r.strip_suffix(")]")) {
+            pending = Some(n.parse::<u32>().expect("a number"));
+        }
+        if let Some(rest) = line.strip_prefix("fn ") {
+            let name = rest.split('(').next().unwrap_or_default();
+            found.insert(name.to_owned(), pending.take());
+        }
+    }
+    for (name, bound) in windows::UNWIND {
+        assert_eq!(found.get(name), Some(&Some(bound)), "{name}: #[kani::unwind] in kani_proofs.rs");
+    }
+    assert_eq!(
+        found.len(),
+        windows::UNWIND.len(),
+        "every Kani harness has its bound in windows::UNWIND: {found:?}"
+    );
+}
