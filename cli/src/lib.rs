@@ -10,7 +10,7 @@
 //!   `passes`;
 //! * [`json`]: the typed `cycleref-moves/1` documents, serialized straight
 //!   into the writer;
-//! * [`format`]: the text forms of lengths, leads, angles and names;
+//! * [`format`](mod@format): the text forms of lengths, leads, angles and names;
 //! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
 //! * [`plot`] and `plot_g75`: `plot`, the SVG drawing;
 //! * [`vectors`]: the generator of conformance vectors.
