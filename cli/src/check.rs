@@ -1879,3 +1879,92 @@ fn diff(p: Point, q: Point) -> (i128, i128) {
 fn sat(v: i128) -> i64 {
     i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MM: Units = Units { system: cycleref::IncrementSystem::IsB, unit: InputUnit::Metric };
+
+    fn step(kind: Kind, x: i64, z: i64, line: usize) -> Step {
+        let lead = (kind == Kind::Thread).then_some(Lead { word: LeadWord::F, mantissa: 2, scale: 0 });
+        Step {
+            kind,
+            from: None,
+            to: Point::new(x, z),
+            centre: None,
+            lead,
+            angle: StartAngle::ZERO,
+            sync: kind == Kind::Thread,
+            context: Context::Source { line },
+        }
+    }
+
+    /// A pass at depth `x`: a rapid to its start and one thread move.
+    fn pass(x: i64) -> Group {
+        Group { rapids: vec![step(Kind::Rapid, x, 10, 1)], cuts: vec![step(Kind::Thread, x, -30, 2)] }
+    }
+
+    fn whats(d: &[Divergence]) -> Vec<&'static str> {
+        d.iter().map(|d| d.what).collect()
+    }
+
+    #[test]
+    fn equal_groups_agree_and_take_as_many() {
+        let ours = [pass(100), pass(90), pass(80)];
+        let theirs = [pass(100), pass(90), pass(80), pass(70)];
+        // Our next group is theirs after the three: they agree, three taken.
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&pass(70)));
+        assert_eq!((whats(&d), taken), (vec![], 3));
+        // Without a next group, all of theirs is taken: one extra pass.
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        assert_eq!((whats(&d), taken), (vec!["extra pass"], 4));
+    }
+
+    #[test]
+    fn a_missing_pass_is_one_divergence_not_a_shift() {
+        let ours = [pass(100), pass(90), pass(80), pass(70)];
+        let theirs = [pass(100), pass(80), pass(70)];
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        assert_eq!((whats(&d), taken), (vec!["missing pass"], 3));
+        assert_eq!(d[0].ours.map(|s| s.to), Some(Point::new(90, -30)));
+    }
+
+    #[test]
+    fn a_window_stops_where_the_trace_resumes_with_our_next_group() {
+        // Our window's last pass is missing from the trace, which goes on
+        // with our next window's first pass: the window takes two groups and
+        // reports the missing pass, instead of pairing it with the next
+        // window's pass (a substitution, then an extra pass later).
+        let ours = [pass(100), pass(90), pass(80)];
+        let next = pass(500);
+        let theirs = [pass(100), pass(90), pass(500), pass(490)];
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&next));
+        assert_eq!((whats(&d), taken), (vec!["missing pass"], 2));
+    }
+
+    #[test]
+    fn a_changed_end_point_is_named_within_the_tolerance() {
+        let ours = [pass(100)];
+        let mut moved = pass(100);
+        moved.cuts[0].to = Point::new(100, -31);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 0, MM, &[], None);
+        assert_eq!(whats(&d), vec!["end point"]);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 1, MM, &[], None);
+        assert!(d.is_empty());
+    }
+
+    #[test]
+    fn long_runs_are_grouped_in_pieces() {
+        // One rapid and GROUP_MOVES + 5 feeds: two groups, the second of 5.
+        let steps = std::iter::once(Ok((step(Kind::Rapid, 0, 0, 1), 0))).chain(
+            (1..=GROUP_MOVES + 5).map(|i| Ok((step(Kind::Feed, 0, -i64::try_from(i).unwrap_or(0), 2), 0))),
+        );
+        let mut g = Grouper::new(steps);
+        let first = g.group().and_then(Result::ok).map(|(g, _)| (g.rapids.len(), g.cuts.len()));
+        let second = g.group().and_then(Result::ok).map(|(g, _)| (g.rapids.len(), g.cuts.len()));
+        assert_eq!((first, second), (Some((1, GROUP_MOVES)), Some((0, 5))));
+        assert!(g.group().is_none());
+        assert_eq!(g.count, GROUP_MOVES + 6);
+    }
+}
