@@ -15,10 +15,12 @@
 //! into `--dir`, then runs every command `--reps` times, new build then
 //! baseline, each in a fresh child reaped with `wait4`, whose rusage gives
 //! that child's own peak RSS. Output goes to `/dev/null` (plot: a file).
-//! The baseline runs under a time limit (`--timeout`, SIGKILL) and an
+//! Every run is under a time limit (`--timeout`, SIGKILL) and an
 //! address-space limit (`--mem-limit-mb`, `RLIMIT_AS`): a run that exceeds
 //! either, or fails, is recorded as "did not finish" and that command is
-//! not run on the baseline again at this or larger sizes. A command the
+//! not run on that build again at this or larger sizes (the build of
+//! aa225a9 needs more than 24 GB for `expand --format json` of the 50 MB
+//! program). A command the
 //! baseline does not have (`--format jsonl`, `plot --line`) is recorded as
 //! unsupported.
 //!
@@ -111,9 +113,71 @@ enum Outcome {
     Failed(i32, f64),
 }
 
-/// Runs `bin args` with stdout to `stdout` and stderr to `stderr_file`,
-/// under the limits when given; waits with `wait4` for its rusage.
+/// Runs `bin args` through a fresh copy of this program (`--wrap`), which
+/// runs it with [`measure_here`] and prints the outcome.
+///
+/// Why a wrapper: a child's `ru_maxrss` starts from the high-water RSS of
+/// the address space it was spawned from (`posix_spawn` shares the
+/// parent's until `exec`, `fork` copies its high-water mark), so a child
+/// of this process, which holds the generated programs, would report at
+/// least this process's peak. The wrapper is a few MB (the `--version`
+/// row of the table shows that floor).
 fn measure(
+    bin: &Path,
+    args: &[String],
+    stderr_file: &Path,
+    limits: Option<(Duration, u64)>,
+) -> Result<Outcome, String> {
+    let me = std::env::current_exe().map_err(|e| e.to_string())?;
+    let (t, m) = limits.map_or((0, 0), |(t, m)| (t.as_secs(), m));
+    let out = Command::new(me)
+        .arg("--wrap")
+        .arg(t.to_string())
+        .arg(m.to_string())
+        .arg(stderr_file)
+        .arg(bin)
+        .args(args)
+        .stdin(Stdio::null())
+        .output()
+        .map_err(|e| format!("--wrap: {e}"))?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let w: Vec<&str> = text.split_whitespace().collect();
+    let num = |i: usize| {
+        w.get(i).and_then(|v| v.parse::<f64>().ok()).ok_or_else(|| format!("--wrap said `{text}`"))
+    };
+    match w.first().copied() {
+        Some("done") => Ok(Outcome::Done(num(1)?, num(2)?, num(3)?)),
+        Some("timeout") => Ok(Outcome::Timeout),
+        #[allow(clippy::cast_possible_truncation)]
+        Some("failed") => Ok(Outcome::Failed(num(1)? as i32, num(2)?)),
+        _ => Err(format!("--wrap failed: {text} {}", String::from_utf8_lossy(&out.stderr))),
+    }
+}
+
+/// `--wrap SECS MB STDERR BIN ARGS...`: [`measure_here`], the outcome on
+/// stdout (SECS or MB 0: no limit).
+fn wrap(mut a: impl Iterator<Item = String>) -> Result<(), String> {
+    let mut next = |what: &str| a.next().ok_or_else(|| format!("--wrap: no {what}"));
+    let secs: u64 = next("time limit")?.parse().map_err(|e| format!("--wrap: {e}"))?;
+    let mb: u64 = next("memory limit")?.parse().map_err(|e| format!("--wrap: {e}"))?;
+    let stderr = PathBuf::from(next("stderr file")?);
+    let bin = PathBuf::from(next("binary")?);
+    let args: Vec<String> = a.collect();
+    let limits = (secs > 0 || mb > 0).then_some((
+        if secs > 0 { Duration::from_secs(secs) } else { Duration::MAX },
+        if mb > 0 { mb } else { u64::MAX >> 20 },
+    ));
+    match measure_here(&bin, &args, &stderr, limits)? {
+        Outcome::Done(w, c, r) => println!("done {w} {c} {r}"),
+        Outcome::Timeout => println!("timeout"),
+        Outcome::Failed(code, r) => println!("failed {code} {r}"),
+    }
+    Ok(())
+}
+
+/// Runs `bin args` with stdout to `/dev/null` and stderr to `stderr_file`,
+/// under the limits when given; waits with `wait4` for its rusage.
+fn measure_here(
     bin: &Path,
     args: &[String],
     stderr_file: &Path,
@@ -308,6 +372,16 @@ fn run_one(
 }
 
 fn main() -> ExitCode {
+    let mut raw = std::env::args().skip(1);
+    if raw.next().as_deref() == Some("--wrap") {
+        return match wrap(raw) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("pipeline: {e}");
+                ExitCode::from(2)
+            }
+        };
+    }
     let args = match parse() {
         Ok(a) => a,
         Err(e) => {
@@ -379,8 +453,8 @@ fn run(args: &Args) -> Result<(), String> {
     let commit = git_commit();
     let mut table = String::new();
     let mut csv = String::new();
-    // Commands the baseline did not finish at a smaller size.
-    let mut gave_up = vec![false; COMMANDS.len()];
+    // Commands a build did not finish at a smaller size.
+    let mut gave_up = vec![vec![false; COMMANDS.len()]; builds.len()];
     let mut results: Vec<(usize, Vec<Vec<Cell>>)> = Vec::new();
     for &mb in &args.sizes {
         let g = corpus::program(mb << 20, true);
@@ -415,18 +489,18 @@ fn run(args: &Args) -> Result<(), String> {
                         cell.status = Some("unsupported".into());
                         continue;
                     }
-                    if b > 0 && gave_up[c] && cell.status.is_none() {
+                    if gave_up[b][c] && cell.status.is_none() {
                         cell.status = Some("skipped (DNF on a smaller program)".into());
                     }
                     if cell.status.is_some() {
                         continue;
                     }
-                    let limits = (b > 0).then_some((args.timeout, args.mem_limit_mb));
+                    let limits = Some((args.timeout, args.mem_limit_mb));
                     let err = args.dir.join(format!("{build}.err"));
                     eprintln!("  {mb} MB {build} {name} #{}", rep + 1);
                     run_one(bin, &a, &err, limits, cell)?;
-                    if b > 0 && cell.status.is_some() {
-                        gave_up[c] = true;
+                    if cell.status.is_some() {
+                        gave_up[b][c] = true;
                     }
                 }
             }
