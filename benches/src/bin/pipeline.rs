@@ -250,7 +250,8 @@ fn measure_here(
 
 /// The commands measured on one program, by name; `{prog}`, `{plain}`,
 /// `{trace}`, `{line}`, `{svg}` are replaced.
-const COMMANDS: [(&str, &str); 8] = [
+const COMMANDS: [(&str, &str); 9] = [
+    ("read (passes, no cycles)", "passes {plain}"),
     ("read (expand, no cycles)", "expand {plain}"),
     ("expand nc", "expand {prog}"),
     ("expand json", "expand --format json {prog}"),
@@ -363,9 +364,15 @@ fn run_one(
         }
         Outcome::Failed(code, m) => {
             let msg = fs::read_to_string(stderr).unwrap_or_default();
-            let first = msg.lines().last().unwrap_or("").chars().take(80).collect::<String>();
-            cell.status = Some(format!("DNF (status {code}, {m:.0} MB: {first})"));
-            eprintln!("  {} {}: status {code}: {first}", bin.display(), args.join(" "));
+            let first = msg.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
+            let how = match code {
+                134 => "SIGABRT".to_string(),
+                137 => "SIGKILL".to_string(),
+                c if c > 128 => format!("signal {}", c - 128),
+                c => format!("exit {c}"),
+            };
+            cell.status = Some(format!("DNF ({how} at {m:.0} MB)"));
+            eprintln!("  {} {}: {how}: {first}", bin.display(), args.join(" "));
         }
     }
     Ok(())
@@ -613,6 +620,7 @@ fn targets(results: &[(usize, Vec<Vec<Cell>>)], base: bool) -> String {
                 ("expand nc", 5.0),
                 ("expand json", 20.0),
                 ("check", 5.0),
+                ("read (passes, no cycles)", 10.0),
                 ("read (expand, no cycles)", 10.0),
             ] {
                 let (a, b) = (&n[idx(name)], &cells[1][idx(name)]);
@@ -634,7 +642,7 @@ fn targets(results: &[(usize, Vec<Vec<Cell>>)], base: bool) -> String {
     // 5 MB to the 50 MB one.
     if let Some((mb, cells)) = results.iter().max_by_key(|(mb, _)| *mb) {
         let five = results.iter().find(|(m, _)| *m == 5);
-        for (c, (name, _)) in COMMANDS.iter().enumerate().take(7) {
+        for (c, (name, _)) in COMMANDS.iter().enumerate().take(COMMANDS.len() - 1) {
             let cell = &cells[0][c];
             if !cell.done() {
                 continue;
