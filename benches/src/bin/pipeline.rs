@@ -251,8 +251,8 @@ fn measure_here(
 /// The commands measured on one program, by name; `{prog}`, `{plain}`,
 /// `{trace}`, `{line}`, `{svg}` are replaced.
 const COMMANDS: [(&str, &str); 9] = [
-    ("read (passes, no cycles)", "passes {plain}"),
-    ("read (expand, no cycles)", "expand {plain}"),
+    ("passes plain (reader)", "passes {plain}"),
+    ("expand plain (reader)", "expand {plain}"),
     ("expand nc", "expand {prog}"),
     ("expand json", "expand --format json {prog}"),
     ("expand jsonl", "expand --format jsonl {prog}"),
@@ -529,7 +529,8 @@ fn run(args: &Args) -> Result<(), String> {
                 let status = cell.status.clone().unwrap_or_else(|| "ok".into()).replace(',', ";");
                 let _ = writeln!(
                     csv,
-                    "{date},{commit},{build},{mb},{name},{},{med},{min},{cpu},{mrss},{xrss},{status}",
+                    "{date},{commit},{build},{mb},{},{},{med},{min},{cpu},{mrss},{xrss},{status}",
+                    name.replace(',', ";"),
                     cell.times.len()
                 );
             }
@@ -620,8 +621,8 @@ fn targets(results: &[(usize, Vec<Vec<Cell>>)], base: bool) -> String {
                 ("expand nc", 5.0),
                 ("expand json", 20.0),
                 ("check", 5.0),
-                ("read (passes, no cycles)", 10.0),
-                ("read (expand, no cycles)", 10.0),
+                ("passes plain (reader)", 10.0),
+                ("expand plain (reader)", 10.0),
             ] {
                 let (a, b) = (&n[idx(name)], &cells[1][idx(name)]);
                 if a.done() && b.done() {
