@@ -7,5 +7,6 @@
 #![forbid(unsafe_code)]
 
 pub mod cases;
+pub mod corpus;
 pub mod float;
 pub mod track;

@@ -1,0 +1,183 @@
+//! Generated part programs for the `pipeline` benchmarks: the criterion
+//! group `pipeline` and the `pipeline` binary, which runs the `cycleref`
+//! command on programs of 1, 5 and 50 MB.
+//!
+//! The programs are for the **GSK 980TDi** profile at IS-B (`cycleref
+//! --profile gsk980`, the default increment), the profile that reads all
+//! three cycles. A program is a header (`O`, `G50`, spindle), then parts
+//! of about a dozen lines repeated until the requested size, then `M30`.
+//! Part `i` is, in order:
+//!
+//! * a comment naming the part;
+//! * a `G00` to the cycle's start point;
+//! * the cycle: for `i % 16 == 15` a G75.1 groove (its two blocks, seed
+//!   001's groove at IS-B with `I4 J1`), for `i % 8 == 7` a continuous
+//!   G32 thread (three blocks: taper, straight, taper with run-out),
+//!   otherwise a G76 M68x6-like thread (block 1 `P020560 Q150 R0.1`, block
+//!   2 `X60.64 Z-… P3680 Q…`: the length varies with `i` over 40–70 mm and
+//!   the first depth over 1.8, 1.2 and 0.9 mm, 6, 11 or 17 passes);
+//! * a `G00 X100 Z50` return;
+//! * five to seven `G01`/`G00` blocks (turning moves with varying
+//!   coordinates and feeds, some with trailing comments) and, every
+//!   third part, a comment-only line.
+//!
+//! With `cycles: false` the same parts are written without their cycle
+//! blocks: a program the reader alone handles (`expand` copies it), used
+//! to measure the reader.
+//!
+//! The text is a pure function of its arguments (no randomness), so every
+//! run and every binary reads the same bytes.
+
+use std::fmt::Write as _;
+
+use cycleref_spec::{Machine, ProfileName};
+
+/// The command-line options that select the machine of the programs.
+pub const PROFILE_ARGS: [&str; 2] = ["--profile", "gsk980"];
+
+/// The machine of the programs: GSK 980TDi, IS-B, metric, diameters.
+#[must_use]
+pub fn machine() -> Machine {
+    Machine::new(ProfileName::Gsk980)
+}
+
+/// A generated program and what it holds.
+#[derive(Clone, Debug)]
+pub struct Generated {
+    /// The program's text.
+    pub text: String,
+    /// Number of lines (blocks, comments included).
+    pub lines: usize,
+    /// Number of G76 cycles.
+    pub g76: usize,
+    /// Number of G32 blocks.
+    pub g32: usize,
+    /// Number of G75.1 cycles.
+    pub g75: usize,
+    /// The 1-based line of the last G76 block 2 (for `plot --line`), 0 when
+    /// there is none.
+    pub last_g76_line: usize,
+}
+
+impl Generated {
+    /// The number of cycles (G76, G32 blocks, G75.1).
+    #[must_use]
+    pub fn cycles(&self) -> usize {
+        self.g76 + self.g32 + self.g75
+    }
+}
+
+/// A program of about `bytes` bytes (at most one part more), with the
+/// cycles or without them; see the module's documentation.
+#[must_use]
+pub fn program(bytes: usize, cycles: bool) -> Generated {
+    let mut g = Generated {
+        text: String::with_capacity(bytes + 1024),
+        lines: 0,
+        g76: 0,
+        g32: 0,
+        g75: 0,
+        last_g76_line: 0,
+    };
+    let line = |g: &mut Generated, s: &str| {
+        g.text.push_str(s);
+        g.text.push('\n');
+        g.lines += 1;
+    };
+    line(&mut g, "O0100;");
+    line(&mut g, "G50 X100 Z50;");
+    line(&mut g, "M03 S500;");
+    let mut s = String::new();
+    let mut i = 0_usize;
+    while g.text.len() < bytes {
+        line(&mut g, &format!("(part {i})"));
+        if i % 16 == 15 {
+            line(&mut g, "G00 X60 Z30;");
+            if cycles {
+                line(&mut g, "G75.1 X50 Z30 P3000 Q5000 H-20 D-10 A45 B30;");
+                line(&mut g, "G75.1 R0.5 I4 J1;     (groove)");
+                g.g75 += 1;
+            }
+        } else if i % 8 == 7 {
+            line(&mut g, "G00 X30 Z2;");
+            if cycles {
+                line(&mut g, "G32 X34 Z-10 F2;");
+                line(&mut g, "G32 Z-30;");
+                line(&mut g, "G32 X38 Z-40 J1;      (thread, run-out)");
+                g.g32 += 3;
+            }
+        } else {
+            line(&mut g, "G00 X80 Z10;");
+            if cycles {
+                let z = 40 + i % 31;
+                let q = [1800, 1200, 900][i % 3];
+                line(&mut g, "G76 P020560 Q150 R0.1;");
+                s.clear();
+                let _ = write!(s, "G76 X60.64 Z-{z} P3680 Q{q} F6;");
+                line(&mut g, &s);
+                g.g76 += 1;
+                g.last_g76_line = g.lines;
+            }
+        }
+        line(&mut g, "G00 X100 Z50;");
+        for k in 0..5 + i % 3 {
+            let x = 20 + (i + k) % 50;
+            let z = (i * 7 + k * 3) % 97;
+            let frac = (i * 13 + k) % 1000;
+            s.clear();
+            let _ = match (i + k) % 5 {
+                0 => write!(s, "G01 X{x}.{frac:03} Z-{z}.5 F0.2;"),
+                1 => write!(s, "G01 X{x}.{frac:03} Z-{z}.25 F0.15; (finish {k})"),
+                2 => write!(s, "G00 X{x}.5 Z-{z}.{frac:03};"),
+                3 => write!(s, "G01 Z-{z}.{frac:03};"),
+                _ => write!(s, "X{x}.{frac:03};"),
+            };
+            line(&mut g, &s);
+        }
+        if i % 3 == 0 {
+            line(&mut g, "(check the insert)");
+        }
+        line(&mut g, "G00 X100 Z50;");
+        i += 1;
+    }
+    line(&mut g, "M30;");
+    g
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cycleref_spec::reader::{Item, Reader};
+
+    #[test]
+    fn reads_with_every_cycle() {
+        let g = program(20_000, true);
+        assert!(g.text.len() >= 20_000 && g.text.len() < 21_000);
+        assert!(g.g76 > 0 && g.g32 > 0 && g.g75 > 0);
+        let m = machine();
+        let (mut g76, mut g32, mut g75) = (0, 0, 0);
+        for item in Reader::new(g.text.as_bytes(), &m) {
+            match item.expect("the generated program reads") {
+                Item::G76(c) => {
+                    cycleref::engine::expand_g76(&c.cycle).expect("valid G76");
+                    g76 += 1;
+                }
+                Item::G32(_) => g32 += 1,
+                Item::G75(_) => g75 += 1,
+                _ => {}
+            }
+        }
+        assert_eq!((g76, g32, g75), (g.g76, g.g32, g.g75));
+        assert_eq!(g.text.lines().count(), g.lines);
+        assert!(g.text.lines().nth(g.last_g76_line - 1).is_some_and(|l| l.starts_with("G76 X")));
+    }
+
+    #[test]
+    fn without_cycles_reads_and_is_deterministic() {
+        let g = program(10_000, false);
+        assert_eq!(g.cycles(), 0);
+        let m = machine();
+        assert!(Reader::new(g.text.as_bytes(), &m).all(|i| matches!(i, Ok(Item::Source(_)))));
+        assert_eq!(program(10_000, false).text, g.text);
+    }
+}
