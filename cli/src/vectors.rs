@@ -423,32 +423,6 @@ fn decimal(v: i64, decimals: u32, point: bool) -> String {
     s
 }
 
-/// `round(sqrt(x))` for `x >= 0` (never a tie for whole `x`).
-fn round_sqrt(x: u128) -> u128 {
-    if x == 0 {
-        return 0;
-    }
-    let mut r = 1_u128 << (x.ilog2() / 2 + 1);
-    loop {
-        let next = (r + x / r) / 2;
-        if next >= r {
-            break;
-        }
-        r = next;
-    }
-    while r * r > x {
-        r -= 1;
-    }
-    while (r + 1) * (r + 1) <= x {
-        r += 1;
-    }
-    if x - r * r > r {
-        r + 1
-    } else {
-        r
-    }
-}
-
 // ---- drafts ----
 
 /// What a draft must turn out to be.
@@ -525,7 +499,8 @@ fn thread(rng: &mut Rng, ctx: &Ctx, taper: Taper, rough: (i64, i64)) -> Thread {
     let k = (lead_inc * rng.range(55, 64) / 100).max(1);
     let allowance = if rng.chance(35) { 0 } else { k * rng.range(2, 8) / 100 };
     let n = rng.range(rough.0, rough.1).max(1);
-    let root = i64::try_from(round_sqrt(u128::try_from(n * 10_000).unwrap_or(1))).unwrap_or(100);
+    let root =
+        i64::try_from(cycleref::engine::round_sqrt(u128::try_from(n * 10_000).unwrap_or(1))).unwrap_or(100);
     let dd = ((k - allowance) * 100 / root).max(1);
     let dmin = if rng.chance(40) { 0 } else { (dd * rng.range(5, 20) / 100).min(k) };
     let taper = match taper {
@@ -992,7 +967,8 @@ fn v_exact(rng: &mut Rng) -> Draft {
     // k - d = round(Δd √n) exactly.
     let n = rng.range(2, 5);
     let q = t.dd;
-    let level = i64::try_from(round_sqrt(u128::try_from(q * q * n).unwrap_or(0))).unwrap_or(q);
+    let level =
+        i64::try_from(cycleref::engine::round_sqrt(u128::try_from(q * q * n).unwrap_or(0))).unwrap_or(q);
     t.k = level + t.allowance;
     t.dmin = 0;
     let mut g = G76::usual(rng, &ctx);
@@ -2867,8 +2843,10 @@ fn g76_tags(call: &G76Call, moves: &[Move], tags: &mut BTreeSet<String>) {
         tag(tags, "schedule:one-pass");
     }
     let q = u128::try_from(c.first_depth).unwrap_or(0);
-    let law =
-        |n: usize| i64::try_from(round_sqrt(q * q * u128::try_from(n).unwrap_or(0))).unwrap_or(i64::MAX);
+    let law = |n: usize| {
+        i64::try_from(cycleref::engine::round_sqrt(q * q * u128::try_from(n).unwrap_or(0)))
+            .unwrap_or(i64::MAX)
+    };
     let step = c.min_cut.max(1);
     for n in 2..=levels.len() {
         let clamp = levels[n - 2] + step;

@@ -11,6 +11,7 @@
 
 use core::iter::FusedIterator;
 
+use super::round_div;
 use crate::error::CycleError;
 use crate::g32::{G32Block, G32RunOut};
 use crate::moves::{Motion, Move, Role};
@@ -37,18 +38,6 @@ impl Iterator for G32Moves {
 }
 
 impl FusedIterator for G32Moves {}
-
-/// `num / den` to nearest, ties away from zero; `den != 0`.
-fn round_div(num: i128, den: i128) -> i128 {
-    let (n, d) = if den < 0 { (-num, -den) } else { (num, den) };
-    let q = n / d;
-    let r = n % d;
-    if 2 * r.abs() >= d {
-        q + n.signum()
-    } else {
-        q
-    }
-}
 
 /// Expands one G32 block: the same error or the same moves as the
 /// reference model.

@@ -121,6 +121,7 @@
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
 
+use super::saturate_i64;
 use crate::engine::real::{cot_of, sin_cos, tan_cot, tan_of, Iv, Rounding, FAST, SLOW};
 use crate::error::{CycleError, Field, GrooveEdge};
 use crate::g75::{corner, CornerKind, G75Cycle, MAX_PECKS};
@@ -1005,12 +1006,6 @@ pub struct G75Moves {
     tail_next: usize,
 }
 
-/// Narrows a range-checked local value to `i64` (every local coordinate of
-/// a checked move is within `2·MAX_LENGTH`; the fallback is unreachable).
-fn narrow(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
-}
-
 /// Expands a G75.1 cycle (`docs/G75.md`): the same error or the same moves
 /// as the reference model.
 ///
@@ -1036,7 +1031,7 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     let layers = if dv > 0 { ceil_div(i128::from(rough_bottom), i128::from(dv)) } else { 1 };
     let y_of = |m: i128| -> i64 {
         if dv > 0 {
-            narrow((m * i128::from(dv)).min(i128::from(rough_bottom)))
+            saturate_i64((m * i128::from(dv)).min(i128::from(rough_bottom)))
         } else {
             rough_bottom
         }
@@ -1181,15 +1176,15 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
         di: c.peck,
         dk: c.step,
         ex: g.f * c.retract,
-        prev_top: narrow(y_top),
-        top: narrow(y_top),
+        prev_top: saturate_i64(y_top),
+        top: saturate_i64(y_top),
         bottom: y1,
-        first: narrow(a11),
-        last: narrow(a1f),
-        u: narrow(a11),
+        first: saturate_i64(a11),
+        last: saturate_i64(a1f),
+        u: saturate_i64(a11),
         n: 1,
-        target: narrow(y_top).saturating_add(c.peck),
-        depth: narrow(y_top),
+        target: saturate_i64(y_top).saturating_add(c.peck),
+        depth: saturate_i64(y_top),
         sub: Sub::Peck,
     };
     Ok(G75Moves {
@@ -1200,7 +1195,7 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
         approach,
         roughs,
         rough,
-        at: (narrow(a11), narrow(y_top)),
+        at: (saturate_i64(a11), saturate_i64(y_top)),
         tail: b.legs,
         tail_len: b.len,
         tail_next: 0,
@@ -1351,7 +1346,7 @@ impl G75Moves {
         // Decided in expand_g75 for every layer (the peck count), so the
         // fallback to the previous range is unreachable.
         let (first, last) = plunges_at(&self.geo, &self.region, bottom)
-            .map_or((r.first, r.last), |(a, b)| (narrow(a), narrow(b)));
+            .map_or((r.first, r.last), |(a, b)| (saturate_i64(a), saturate_i64(b)));
         self.rough = Rough {
             m,
             prev_top: r.top,

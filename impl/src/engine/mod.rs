@@ -190,7 +190,7 @@ pub const fn round_sqrt(x: u128) -> u128 {
 /// `num / den` rounded to the nearest integer, ties away from zero (the
 /// reference's `exact::round_div` and `Decimal` quantisation); `0` for a
 /// zero divisor, which no caller passes.
-fn round_div(num: i128, den: i128) -> i128 {
+pub(crate) fn round_div(num: i128, den: i128) -> i128 {
     let (n, d) = if den < 0 { (num.checked_neg(), den.checked_neg()) } else { (Some(num), Some(den)) };
     let (Some(n), Some(d)) = (n, d) else {
         return 0;
@@ -206,10 +206,10 @@ fn round_div(num: i128, den: i128) -> i128 {
     }
 }
 
-/// `v` as an `i64`, saturating (only the out-of-range error values of the
-/// lead-in can lie outside, where the reference itself cannot represent
-/// them).
-fn saturate_i64(v: i128) -> i64 {
+/// `v` as an `i64`, saturating: the one narrowing of every engine (only
+/// values that a range check then refuses can lie outside, such as the
+/// out-of-range error values of a G76 lead-in or a G75.1 coordinate).
+pub(crate) fn saturate_i64(v: i128) -> i64 {
     i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
