@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use cycleref::{IncrementSystem, InputUnit, XMode};
 use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::{Machine, ProfileName, Program, Reader};
+use cycleref_spec::{Machine, ProfileName, Reader};
 
 /// How a command ends when it does not succeed.
 #[derive(Debug)]
@@ -157,7 +157,7 @@ impl Job {
     ///
     /// The first error in program order, named with the file.
     pub fn validate(&self) -> Result<Summary, Failure> {
-        cycleref_spec::pipeline::validate(&self.source, &self.machine, self.engine, false).map_err(|e| {
+        cycleref_spec::pipeline::validate(&self.source, &self.machine, self.engine).map_err(|e| {
             match self.other_increment_hint(&e) {
                 Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
                 None => self.fail(&e),
@@ -185,23 +185,11 @@ impl Job {
             IncrementSystem::IsC => ("is-b", IncrementSystem::IsB),
         };
         other.increment = system;
-        cycleref_spec::pipeline::validate(&self.source, &other, self.engine, false).ok().map(|_| {
+        cycleref_spec::pipeline::validate(&self.source, &other, self.engine).ok().map(|_| {
             format!(
                 "the program is valid with the other increment system: was it written for --increment {flag}?"
             )
         })
-    }
-
-    /// The whole program in memory (for the commands that need it all:
-    /// `plot` of the cycles it draws, `check`).
-    ///
-    /// # Errors
-    ///
-    /// The reader's first error.
-    pub fn program(&self) -> Result<Program<'_>, Failure> {
-        let mut reader = self.reader();
-        let items = reader.by_ref().collect::<Result<Vec<_>, _>>().map_err(|e| self.fail(&e.into()))?;
-        Ok(Program { items, units: reader.units() })
     }
 
     /// The moves of `cycle` by the job's engine.

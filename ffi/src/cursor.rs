@@ -98,7 +98,7 @@ impl CyclerefCursor {
     /// The first error of the program, in program order: the reader's
     /// (`PROGRAM_ERROR`) or a cycle's alarm (`CYCLE_ERROR`), with its line.
     pub(crate) fn open(text: &[u8], machine: Machine) -> Result<Box<CyclerefCursor>, Failure> {
-        pipeline::validate(text, &machine, Engine::Impl, false).map_err(run_failure)?;
+        pipeline::validate(text, &machine, Engine::Impl).map_err(run_failure)?;
         let source = Source { text: text.into(), machine };
         let reading = Reading::new(source, |s| Reader::new(&s.text, &s.machine));
         Ok(Box::new(CyclerefCursor { reading, cycle: None, poisoned: false, failed: None }))

@@ -227,8 +227,6 @@ pub struct Summary {
     pub items: usize,
     /// The number of cycles.
     pub cycles: usize,
-    /// The number of moves of all cycles.
-    pub moves: u64,
 }
 
 /// The first phase of a run (reading R-STREAM): reads every item of
@@ -236,30 +234,21 @@ pub struct Summary {
 /// counts, so that the second phase can stream its output knowing that no
 /// error will interrupt it.
 ///
-/// `count_moves` also takes every move (the engine's cost per move); without
-/// it `moves` is 0 and only the alarms are checked.
-///
 /// # Errors
 ///
 /// The first error in program order.
-pub fn validate(
-    source: &[u8],
-    machine: &Machine,
-    engine: Engine,
-    count_moves: bool,
-) -> Result<Summary, RunError> {
+pub fn validate(source: &[u8], machine: &Machine, engine: Engine) -> Result<Summary, RunError> {
     let mut reader = Reader::new(source, machine);
-    let (mut items, mut cycles, mut moves) = (0, 0, 0_u64);
+    let (mut items, mut cycles) = (0, 0);
     for item in reader.by_ref() {
         let item = item?;
         items += 1;
         if let Some(cycle) = Cycle::of(&item) {
             cycles += 1;
-            let m = expand_at(cycle, engine)?;
-            if count_moves {
-                moves += m.count() as u64;
-            }
+            // Every alarm is raised before the first move: the moves are
+            // not taken.
+            expand_at(cycle, engine)?;
         }
     }
-    Ok(Summary { units: reader.units(), items, cycles, moves })
+    Ok(Summary { units: reader.units(), items, cycles })
 }
