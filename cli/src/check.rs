@@ -536,8 +536,18 @@ const REGION_CYCLES: usize = 3;
 struct Running {
     moves: Moves,
     line: usize,
-    code: &'static str,
-    restore: Option<MotionMode>,
+    /// G76 (annotated with its passes), G32, or G75.1.
+    kind: RunningKind,
+    /// For a one-shot cycle (G76, G75.1), the motion mode in force again
+    /// after it; `None` for G32, which leaves its own mode.
+    restore: Option<Option<MotionMode>>,
+}
+
+#[derive(Clone, Copy)]
+enum RunningKind {
+    G76,
+    G32,
+    G75,
 }
 
 /// Our toolpath, a step at a time: the program's motion blocks and its
@@ -570,8 +580,8 @@ impl<'j> OurSteps<'j> {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
                     let (line, role) = (run.line, m.role);
-                    let context = match run.code {
-                        "G76" => {
+                    let context = match run.kind {
+                        RunningKind::G76 => {
                             let pass = m.pass.unwrap_or(Pass {
                                 kind: PassKind::Rough,
                                 number: 0,
@@ -582,15 +592,15 @@ impl<'j> OurSteps<'j> {
                             });
                             Context::G76 { line, pass, role }
                         }
-                        "G32" => Context::G32 { line, role },
-                        _ => Context::G75 { line, role },
+                        RunningKind::G32 => Context::G32 { line, role },
+                        RunningKind::G75 => Context::G75 { line, role },
                     };
                     return Some(Ok((self.tracker.inject(&m, context), self.segment)));
                 }
                 // G76 and G75.1 are one-shot: the motion mode before them is
                 // in force again.
-                if run.code != "G32" {
-                    self.tracker.restore(run.restore);
+                if let Some(motion) = run.restore {
+                    self.tracker.restore(motion);
                 }
                 self.current = None;
                 self.segment += 1;
@@ -621,8 +631,12 @@ impl<'j> OurSteps<'j> {
             self.current = Some(Running {
                 moves,
                 line: cycle.line(),
-                code: cycle.code(),
-                restore: cycle.restore().motion,
+                kind: match cycle {
+                    Cycle::G76(_) => RunningKind::G76,
+                    Cycle::G32(_) => RunningKind::G32,
+                    Cycle::G75(_) => RunningKind::G75,
+                },
+                restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
             });
         }
     }

@@ -93,13 +93,14 @@ fn m68x6_equals_the_engine() {
     assert!(moves.iter().all(|m| m.line == 6 && m.has_pass == 1 && m.decimals == 3));
 }
 
-#[test]
-fn every_example_equals_the_engine() {
+/// Every shipped example with its profile and increment system (the
+/// gsk980 M68x6, G32 taper and G75.1 seed programs are written for IS-C, as
+/// their comments say).
+const EXAMPLES: &[(&str, CyclerefProfile, ProfileName, cycleref::IncrementSystem)] = {
     use cycleref::IncrementSystem::{IsB, IsC};
-    for (name, profile, p, system) in [
+    &[
         ("fanuc-external.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
         ("fanuc-internal.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
-        // Written for IS-C, as their comments say.
         ("gsk980-m68x6.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
         ("gsk980-g32-runout.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g32-taper.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
@@ -107,7 +108,13 @@ fn every_example_equals_the_engine() {
         ("gsk980-g75-seed.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
         ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
-    ] {
+    ]
+};
+
+#[test]
+fn every_example_equals_the_engine() {
+    use cycleref::IncrementSystem::IsC;
+    for &(name, profile, p, system) in EXAMPLES {
         let text = example(name);
         let mut o = options(profile);
         o.increment = if system == IsC { CyclerefIncrement::IsC } else { CyclerefIncrement::IsB } as u32;
@@ -696,18 +703,8 @@ fn cursor_m68x6_equals_expand_and_the_pipeline() {
 
 #[test]
 fn cursor_every_example_equals_expand() {
-    use cycleref::IncrementSystem::{IsB, IsC};
-    for (name, profile, p, system) in [
-        ("fanuc-external.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
-        ("fanuc-internal.nc", CyclerefProfile::Fanuc, ProfileName::Fanuc, IsB),
-        ("gsk980-m68x6.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
-        ("gsk980-g32-runout.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
-        ("gsk980-g32-taper.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
-        ("seed000-extended.nc", CyclerefProfile::Gsk988, ProfileName::Gsk988, IsB),
-        ("gsk980-g75-seed.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
-        ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
-        ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
-    ] {
+    use cycleref::IncrementSystem::IsC;
+    for &(name, profile, p, system) in EXAMPLES {
         let text = example(name);
         let mut o = options(profile);
         o.increment = if system == IsC { CyclerefIncrement::IsC } else { CyclerefIncrement::IsB } as u32;
