@@ -36,12 +36,11 @@ use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::pipeline::Moves;
 use cycleref_spec::reader::{length_word, q_word, Item, MotionMode};
 use cycleref_spec::Machine;
-use cycleref_spec::Reader;
 use rust_decimal::Decimal;
 use serde_json::{json, Value};
 
 use crate::format::{fixed, kind_name};
-use crate::Job;
+use crate::job::{Items, Job};
 
 /// How a move moves.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -555,7 +554,7 @@ enum RunningKind {
 /// (a cycle, or the blocks between two cycles).
 struct OurSteps<'j> {
     job: &'j Job,
-    reader: Reader<'j, 'j>,
+    items: Items<'j>,
     tracker: Tracker<'j>,
     current: Option<Running>,
     segment: u32,
@@ -564,15 +563,15 @@ struct OurSteps<'j> {
 }
 
 impl<'j> OurSteps<'j> {
-    fn new(job: &'j Job, units: Units) -> OurSteps<'j> {
-        OurSteps {
+    fn new(job: &'j Job, units: Units) -> Result<OurSteps<'j>, String> {
+        Ok(OurSteps {
             job,
-            reader: job.reader(),
+            items: job.items()?,
             tracker: Tracker::new(&job.machine, units, false),
             current: None,
             segment: 0,
             regions: VecDeque::new(),
-        }
+        })
     }
 
     fn step(&mut self) -> Option<Result<(Step, u32), String>> {
@@ -606,38 +605,44 @@ impl<'j> OurSteps<'j> {
                 self.segment += 1;
                 continue;
             }
-            let item = match self.reader.next()? {
-                Ok(item) => item,
-                Err(e) => return Some(Err(format!("{}: {e}", self.job.name))),
-            };
-            let Some(cycle) = Cycle::of(&item) else {
-                let Item::Source(b) = &item else { continue };
-                match self.tracker.block(b) {
-                    Ok(Some(s)) => return Some(Ok((s, self.segment))),
-                    Ok(None) => continue,
-                    Err(e) => return Some(Err(format!("{}: {e}", self.job.name))),
+            let (job, tracker, segment) = (self.job, &mut self.tracker, self.segment);
+            let (regions, current) = (&mut self.regions, &mut self.current);
+            let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, String> {
+                let Some(cycle) = Cycle::of(&item) else {
+                    let Item::Source(b) = &item else { return Ok(None) };
+                    return match tracker.block(b) {
+                        Ok(step) => Ok(step.map(|s| (s, segment))),
+                        Err(e) => Err(format!("{}: {e}", job.name)),
+                    };
+                };
+                let started = regions_of(job, cycle)?;
+                let moves = job.expand(cycle)?;
+                if regions.len() == REGION_CYCLES {
+                    regions.pop_front();
                 }
-            };
-            let started = regions_of(self.job, cycle).and_then(|r| Ok((r, self.job.expand(cycle)?)));
-            let (regions, moves) = match started {
-                Ok(v) => v,
-                Err(e) => return Some(Err(e)),
-            };
-            if self.regions.len() == REGION_CYCLES {
-                self.regions.pop_front();
-            }
-            self.regions.push_back(regions);
-            self.segment += 1;
-            self.current = Some(Running {
-                moves,
-                line: cycle.line(),
-                kind: match cycle {
-                    Cycle::G76(_) => RunningKind::G76,
-                    Cycle::G32(_) => RunningKind::G32,
-                    Cycle::G75(_) => RunningKind::G75,
-                },
-                restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
+                regions.push_back(started);
+                *current = Some(Running {
+                    moves,
+                    line: cycle.line(),
+                    kind: match cycle {
+                        Cycle::G76(_) => RunningKind::G76,
+                        Cycle::G32(_) => RunningKind::G32,
+                        Cycle::G75(_) => RunningKind::G75,
+                    },
+                    restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
+                });
+                Ok(None)
             });
+            match next? {
+                Ok(Ok(Some(step))) => return Some(Ok(step)),
+                Ok(Ok(None)) => {
+                    if self.current.is_some() {
+                        self.segment += 1;
+                    }
+                }
+                Ok(Err(e)) => return Some(Err(e)),
+                Err(e) => return Some(Err(String::from(self.job.read_failure(&e)))),
+            }
         }
     }
 }
@@ -1345,7 +1350,7 @@ fn compare_streams(
     tolerance: u64,
 ) -> Result<Report, StreamError> {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
-    let mut ours = Grouper::new(OurSteps::new(job, units));
+    let mut ours = Grouper::new(OurSteps::new(job, units).map_err(StreamError::Ours)?);
     let steps = trace_steps(trace, is_csv, &job.machine, units).map_err(StreamError::Theirs)?;
     let mut theirs = Grouper::new(steps);
     let mut report = Report::new(units, tolerance);

@@ -1,18 +1,26 @@
 //! A program to run: its text, the machine it is read with, the engine, and
 //! the failures a run can end in.
 //!
-//! The program's bytes are held once, as read; everything else is read
-//! from them as it is needed (reading R-STREAM): [`Job::validate`] is the
+//! A program in a regular file is read from the file a line at a time,
+//! once per phase; a program from standard input or a pipe (which cannot
+//! be read twice) is held in memory once, as read. Everything is read from
+//! the text as it is needed (reading R-STREAM): [`Job::validate`] is the
 //! first phase, which reads every block and checks every cycle, and the
-//! writers read the program again to stream their output.
+//! writers read the program again ([`Job::items`]) to stream their output.
+//! Memory is the longest line and the reader's modal state, whatever the
+//! length of a program in a file.
 
-use std::io::{IsTerminal as _, Read as _};
+use std::fmt;
+use std::fs::File;
+use std::io::{BufRead, BufReader, IsTerminal as _, Read as _};
 use std::path::{Path, PathBuf};
+use std::time::SystemTime;
 
 use cycleref::{IncrementSystem, InputUnit, XMode};
-use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary};
+use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary, Validation};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::{Machine, ProfileName, Reader};
+use cycleref_spec::reader::Item;
+use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 
 /// How a command ends when it does not succeed.
 #[derive(Debug)]
@@ -91,13 +99,13 @@ pub struct Options {
 /// The name standard input goes by in messages, titles and documents.
 pub const STDIN_NAME: &str = "<stdin>";
 
-/// A program read into memory with its machine, ready to run.
+/// A program with its machine, ready to run.
 #[derive(Debug)]
 pub struct Job {
     /// The file's name as given (standard input: [`STDIN_NAME`]).
     pub name: String,
-    /// The program's bytes.
-    pub source: Vec<u8>,
+    /// Where the program's text is.
+    text: Text,
     /// The engine that expands the cycles.
     pub engine: Engine,
     /// The unit of Q in the nc output (the profile's G32 Q unit).
@@ -115,7 +123,7 @@ impl Job {
     /// program was given), or a parameter file that is not valid.
     pub fn load(opts: &Options) -> Result<Job, Failure> {
         let stdin = opts.file.as_deref().is_none_or(|f| f == Path::new("-"));
-        let (name, source) = if stdin {
+        let (name, text) = if stdin {
             let mut input = std::io::stdin();
             if input.is_terminal() {
                 return Err(Failure::msg(
@@ -124,31 +132,87 @@ impl Job {
             }
             let mut s = Vec::new();
             input.read_to_end(&mut s).map_err(|e| Failure::msg(format!("{STDIN_NAME}: {e}")))?;
-            (STDIN_NAME.to_string(), s)
+            (STDIN_NAME.to_string(), Text::Held(s))
         } else {
             let file = opts.file.as_deref().unwrap_or(Path::new("-"));
             let name = file.display().to_string();
-            let s = std::fs::read(file).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
-            (name, s)
+            let text = Text::open(file).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
+            (name, text)
         };
         let machine = machine(opts)?;
-        let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
-        let q_unit = machine.profile.q_unit(bit);
-        Ok(Job { name, source, engine: opts.engine, q_unit, machine })
+        Ok(Job::with_text(name, text, machine, opts.engine))
     }
 
-    /// A job over `source` (for tests and library users).
+    /// A job over `source`, held in memory (for tests and library users).
     #[must_use]
     pub fn new(name: &str, source: Vec<u8>, machine: Machine, engine: Engine) -> Job {
-        let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
-        let q_unit = machine.profile.q_unit(bit);
-        Job { name: name.to_string(), source, engine, q_unit, machine }
+        Job::with_text(name.to_string(), Text::Held(source), machine, engine)
     }
 
-    /// A reader of the program, from its first block.
+    /// A job over the program in the regular file at `path`, read from the
+    /// file a line at a time in each phase (for library users; the
+    /// command's [`Job::load`] does this for a FILE argument).
+    ///
+    /// # Errors
+    ///
+    /// The file cannot be opened.
+    pub fn from_file(path: &Path, machine: Machine, engine: Engine) -> Result<Job, Failure> {
+        let name = path.display().to_string();
+        let text = Text::open(path).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
+        Ok(Job::with_text(name, text, machine, engine))
+    }
+
+    fn with_text(name: String, text: Text, machine: Machine, engine: Engine) -> Job {
+        let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
+        let q_unit = machine.profile.q_unit(bit);
+        Job { name, text, engine, q_unit, machine }
+    }
+
+    /// The program's items, from its first block.
+    ///
+    /// # Errors
+    ///
+    /// The program's file cannot be opened again, or has changed since
+    /// the command started.
+    pub fn items(&self) -> Result<Items<'_>, Failure> {
+        Items::new(&self.text, &self.machine).map_err(|e| self.read_failure(&e))
+    }
+
+    /// Calls `f` with each item of the program, in order, until it fails.
+    ///
+    /// # Errors
+    ///
+    /// The first error of reading (made into `E` by `read`) or of `f`.
+    pub fn for_each_item<E>(
+        &self,
+        read: impl Fn(Failure) -> E,
+        mut f: impl FnMut(Item<'_>) -> Result<(), E>,
+    ) -> Result<(), E> {
+        let mut items = self.items().map_err(&read)?;
+        while let Some(r) = items.next_with(&mut f) {
+            r.map_err(|e| read(self.read_failure(&e)))??;
+        }
+        Ok(())
+    }
+
+    /// The whole text of the program, in memory (a copy of a file's).
+    ///
+    /// # Errors
+    ///
+    /// The file cannot be read.
+    pub fn text(&self) -> Result<std::borrow::Cow<'_, [u8]>, Failure> {
+        match &self.text {
+            Text::Held(bytes) => Ok(bytes.into()),
+            Text::File { path, .. } => {
+                std::fs::read(path).map(Into::into).map_err(|e| Failure::msg(format!("{}: {e}", self.name)))
+            }
+        }
+    }
+
+    /// `e` as a failure naming the file.
     #[must_use]
-    pub fn reader(&self) -> Reader<'_, '_> {
-        Reader::new(&self.source, &self.machine)
+    pub fn read_failure(&self, e: &ReadError) -> Failure {
+        Failure::Message(format!("{}: {e}", self.name))
     }
 
     /// The first phase: reads every block and checks every cycle.
@@ -157,12 +221,14 @@ impl Job {
     ///
     /// The first error in program order, named with the file.
     pub fn validate(&self) -> Result<Summary, Failure> {
-        cycleref_spec::pipeline::validate(&self.source, &self.machine, self.engine).map_err(|e| {
-            match self.other_increment_hint(&e) {
+        match validate(&self.text, &self.machine, self.engine) {
+            Ok(summary) => Ok(summary),
+            Err(ReadError::Run(e)) => Err(match self.other_increment_hint(&e) {
                 Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
                 None => self.fail(&e),
-            }
-        })
+            }),
+            Err(e) => Err(self.read_failure(&e)),
+        }
     }
 
     /// When a G76 start lies inside the thread (the usual sign of lengths
@@ -185,7 +251,7 @@ impl Job {
             IncrementSystem::IsC => ("is-b", IncrementSystem::IsB),
         };
         other.increment = system;
-        cycleref_spec::pipeline::validate(&self.source, &other, self.engine).ok().map(|_| {
+        validate(&self.text, &other, self.engine).ok().map(|_| {
             format!(
                 "the program is valid with the other increment system: was it written for --increment {flag}?"
             )
@@ -205,6 +271,171 @@ impl Job {
     #[must_use]
     pub fn fail(&self, e: &RunError) -> Failure {
         Failure::Message(format!("{}: {e}", self.name))
+    }
+}
+
+/// The first phase over `text` with `machine` and `engine`.
+fn validate(text: &Text, machine: &Machine, engine: Engine) -> Result<Summary, ReadError> {
+    let mut items = Items::new(text, machine)?;
+    let mut validation = Validation::new(engine);
+    while let Some(r) = items.next_with(|item| validation.item(&item)) {
+        r?.map_err(ReadError::Run)?;
+    }
+    Ok(validation.summary(items.reader.units()))
+}
+
+/// Where a program's text is.
+#[derive(Debug)]
+enum Text {
+    /// In memory: standard input, a pipe, or a library caller's bytes.
+    Held(Vec<u8>),
+    /// In a regular file, read again in each phase. Its length and time of
+    /// modification when the command started: a file changed between the
+    /// phases is an error, never an output that the first phase did not
+    /// check.
+    File { path: PathBuf, len: u64, modified: Option<SystemTime> },
+}
+
+impl Text {
+    /// The text of the program at `path`: the file itself when it is a
+    /// regular file, else (a pipe, a terminal, a device) its bytes, read
+    /// once into memory.
+    fn open(path: &Path) -> std::io::Result<Text> {
+        let file = File::open(path)?;
+        let meta = file.metadata()?;
+        if meta.is_file() {
+            return Ok(Text::File {
+                path: path.to_path_buf(),
+                len: meta.len(),
+                modified: meta.modified().ok(),
+            });
+        }
+        let mut s = Vec::new();
+        BufReader::new(file).read_to_end(&mut s)?;
+        Ok(Text::Held(s))
+    }
+}
+
+/// Why the program could not be read (in either phase).
+#[derive(Debug)]
+pub enum ReadError {
+    /// The reader refused a block, or (first phase) a cycle raised its
+    /// alarm.
+    Run(RunError),
+    /// The file could not be read.
+    Io(std::io::Error),
+    /// The file changed between the two phases.
+    Changed,
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReadError::Run(e) => write!(f, "{e}"),
+            ReadError::Io(e) => write!(f, "{e}"),
+            ReadError::Changed => {
+                f.write_str("the file changed while it was read (its two readings would differ); run again")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ReadError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ReadError::Run(e) => Some(e),
+            ReadError::Io(e) => Some(e),
+            ReadError::Changed => None,
+        }
+    }
+}
+
+impl From<ProgramError> for ReadError {
+    fn from(e: ProgramError) -> ReadError {
+        ReadError::Run(RunError::Program(e))
+    }
+}
+
+/// The items of a program, read from its text one at a time: from the
+/// held bytes, or from its file a line at a time (one line in memory).
+///
+/// An item borrows the line it was read from, which the next one
+/// overwrites; [`Items::next_with`] lends each item to a function that
+/// makes of it what the caller keeps.
+pub struct Items<'j> {
+    reader: LineReader<'j>,
+    input: Input<'j>,
+    ended: bool,
+}
+
+enum Input<'j> {
+    Held(&'j [u8]),
+    Lines {
+        file: BufReader<File>,
+        line: Vec<u8>,
+        /// The line is finished: the next item needs the next line.
+        next: bool,
+    },
+}
+
+impl<'j> Items<'j> {
+    fn new(text: &'j Text, machine: &'j Machine) -> Result<Items<'j>, ReadError> {
+        let input = match text {
+            Text::Held(bytes) => Input::Held(bytes),
+            Text::File { path, len, modified } => {
+                let file = File::open(path).map_err(ReadError::Io)?;
+                let meta = file.metadata().map_err(ReadError::Io)?;
+                if meta.len() != *len || meta.modified().ok() != *modified {
+                    return Err(ReadError::Changed);
+                }
+                Input::Lines { file: BufReader::with_capacity(1 << 16, file), line: Vec::new(), next: true }
+            }
+        };
+        Ok(Items { reader: LineReader::new(machine), input, ended: false })
+    }
+
+    /// The next item, made into what the caller keeps by `f`; `None` after
+    /// the last item or after an error.
+    pub fn next_with<T>(&mut self, f: impl FnOnce(Item<'_>) -> T) -> Option<Result<T, ReadError>> {
+        if self.ended {
+            return None;
+        }
+        loop {
+            if let Input::Lines { file, line, next: next @ true } = &mut self.input {
+                line.clear();
+                match file.read_until(b'\n', line) {
+                    Ok(0) => return self.end(),
+                    Ok(_) => *next = false,
+                    Err(e) => {
+                        self.ended = true;
+                        return Some(Err(ReadError::Io(e)));
+                    }
+                }
+            }
+            let piece: &[u8] = match &self.input {
+                Input::Held(bytes) => bytes,
+                Input::Lines { line, .. } => line,
+            };
+            match self.reader.next_in(piece) {
+                Some(Ok(item)) => return Some(Ok(f(item))),
+                Some(Err(e)) => {
+                    self.ended = true;
+                    return Some(Err(e.into()));
+                }
+                None => {}
+            }
+            // The piece is finished.
+            match &mut self.input {
+                Input::Held(_) => return self.end(),
+                Input::Lines { next, .. } => *next = true,
+            }
+        }
+    }
+
+    /// The end of the text.
+    fn end<T>(&mut self) -> Option<Result<T, ReadError>> {
+        self.ended = true;
+        self.reader.finish().err().map(|e| Err(e.into()))
     }
 }
 

@@ -49,10 +49,21 @@ pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure
 }
 
 /// A reader error in the second phase: the first phase read the same
-/// program without one, so this cannot happen; it is reported, never
-/// ignored.
+/// program without one, so this cannot happen short of a failing disk; it
+/// is reported, never ignored.
 fn phase_two(e: impl std::fmt::Display) -> io::Error {
     io::Error::other(format!("the program read differently the second time: {e}"))
+}
+
+/// Calls `f` with each item of `job`'s program (the second phase).
+fn each_item(job: &Job, f: impl FnMut(Item<'_>) -> io::Result<()>) -> io::Result<()> {
+    job.for_each_item(
+        |failure| match failure {
+            Failure::Message(m) => phase_two(m),
+            Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
+        },
+        f,
+    )
 }
 
 /// The moves of `cycle`, which the first phase expanded without alarm.
@@ -64,8 +75,7 @@ fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
 }
 
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    for item in job.reader() {
-        let item = item.map_err(phase_two)?;
+    each_item(job, |item| {
         match &item {
             Item::Source(b) => {
                 out.write_all(&b.text)?;
@@ -80,8 +90,8 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             }
             Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
         }
-    }
-    Ok(())
+        Ok(())
+    })
 }
 
 /// The NC blocks of one G76 cycle: a heading, a comment before each pass
@@ -290,11 +300,17 @@ fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
 }
 
 /// The cycles of `job`, each with its moves, as they are read.
-fn cycle_documents(job: &Job) -> impl Iterator<Item = io::Result<CycleJson>> + '_ {
-    job.reader().filter_map(move |item| match item {
-        Err(e) => Some(Err(phase_two(e))),
-        Ok(item) => Cycle::of(&item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))),
-    })
+fn cycle_documents(job: &Job) -> io::Result<impl Iterator<Item = io::Result<CycleJson>> + '_> {
+    let mut items = job.items().map_err(|f| phase_two(String::from(f)))?;
+    Ok(std::iter::from_fn(move || loop {
+        let document =
+            items.next_with(|item| Cycle::of(&item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))));
+        match document? {
+            Ok(Some(document)) => return Some(document),
+            Ok(None) => {}
+            Err(e) => return Some(Err(phase_two(e))),
+        }
+    }))
 }
 
 fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
@@ -302,7 +318,7 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         format: "cycleref-moves/1",
         file: &job.name,
         units: UnitsJson::new(units),
-        cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)))),
+        cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)?))),
     };
     let mut ser = serde_json::Serializer::with_formatter(&mut *out, crate::json::Pretty::default());
     serde::Serialize::serialize(&doc, &mut ser).map_err(io::Error::from)?;
@@ -321,16 +337,15 @@ struct JsonlSummary<'n> {
 
 fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     let (mut cycles, mut moves_total) = (0, 0_u64);
-    for item in job.reader() {
-        let item = item.map_err(phase_two)?;
-        let Some(c) = Cycle::of(&item) else { continue };
+    each_item(job, |item| {
+        let Some(c) = Cycle::of(&item) else { return Ok(()) };
         let m = moves(job, c)?;
         // Counted on a copy of the iterator: the summary line is exact.
         moves_total += m.clone().count() as u64;
         cycles += 1;
         serde_json::to_writer(&mut *out, &CycleJson::new(c, m)).map_err(io::Error::from)?;
-        out.write_all(b"\n")?;
-    }
+        out.write_all(b"\n")
+    })?;
     let summary = JsonlSummary {
         format: "cycleref-moves-jsonl/1",
         file: &job.name,
@@ -361,9 +376,8 @@ pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
 const PASS_ROW: [&str; 8] = ["pass", "kind", "start", "flank", "depth", "cut", "X", "Z"];
 
 fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    for item in job.reader() {
-        let item = item.map_err(phase_two)?;
-        let Item::G76(call) = &item else { continue };
+    each_item(job, |item| {
+        let Item::G76(call) = &item else { return Ok(()) };
         let u = call.cycle.units;
         writeln!(out, "G76 at line {} ({}):", call.block.line, job.name)?;
         let [a, b, c, d, e, f, g, h] = PASS_ROW;
@@ -391,17 +405,15 @@ fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                 Fixed::new(bn.z, u)
             )?;
         }
-        out.write_all(b"\n")?;
-    }
-    Ok(())
+        out.write_all(b"\n")
+    })
 }
 
 /// The layers and plunges of each G75.1 cycle: one row per plunge with its
 /// Z, the X it starts from (Amn), the X it reaches (Bmn) and its pecks.
 fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    for item in job.reader() {
-        let item = item.map_err(phase_two)?;
-        let Item::G75(call) = &item else { continue };
+    each_item(job, |item| {
+        let Item::G75(call) = &item else { return Ok(()) };
         let u = call.cycle.units;
         writeln!(out, "G75.1 at lines {}-{} ({}):", call.params_line, call.block.line, job.name)?;
         writeln!(
@@ -453,18 +465,16 @@ fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
         if finish > 0 {
             writeln!(out, "finishing contour (step 10): {finish} cutting moves")?;
         }
-        out.write_all(b"\n")?;
-    }
-    Ok(())
+        out.write_all(b"\n")
+    })
 }
 
 /// One table of the program's G32 blocks: synchronisation, where the cut
 /// ends and where the run-out ends.
 fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let mut any = false;
-    for item in job.reader() {
-        let item = item.map_err(phase_two)?;
-        let Item::G32(call) = &item else { continue };
+    each_item(job, |item| {
+        let Item::G32(call) = &item else { return Ok(()) };
         if !any {
             any = true;
             writeln!(out, "G32 blocks ({}):", job.name)?;
@@ -498,8 +508,8 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             Fixed::new(cut.z, u),
             rx,
             rz
-        )?;
-    }
+        )
+    })?;
     if any {
         out.write_all(b"\n")?;
     }

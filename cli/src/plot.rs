@@ -973,6 +973,7 @@ pub fn run(
     use cycleref_spec::pipeline::Cycle;
     use cycleref_spec::reader::Item;
     job.validate()?;
+    let text = job.text()?;
     let mut cycles = Vec::new();
     let mut threads = Vec::new();
     let mut grooves = Vec::new();
@@ -980,7 +981,7 @@ pub fn run(
     // Where each G76 cycle drawn lies in the whole toolpath, by move index.
     let (mut position, mut ranges) = (0_usize, Vec::new());
     let mut found = BTreeSet::new();
-    for item in job.reader() {
+    for item in cycleref_spec::Reader::new(&text, &job.machine) {
         let item = item.map_err(|e| job.fail(&e.into()))?;
         let Some(cycle) = Cycle::of(&item) else {
             // A block that moves is one move of the toolpath (as `check`

@@ -233,3 +233,57 @@ fn the_measure_sees_a_program_held_whole() {
     let (small, large) = (measure(N), measure(10 * N));
     assert!(large > 5 * small, "{small} -> {large}");
 }
+
+/// `program(n)` in a file of its own in the temporary directory.
+fn program_file(n: usize, tag: &str) -> std::path::PathBuf {
+    let path = std::env::temp_dir().join(format!("cycleref-bounded-{}-{tag}-{n}.nc", std::process::id()));
+    std::fs::write(&path, program(n)).expect("writes the program");
+    path
+}
+
+#[test]
+fn a_program_in_a_file_is_never_held_whole() {
+    // Counting starts before the job exists: a job that held the file's
+    // text (about 60 bytes a cycle) would grow by 1 MB from N to 10 N.
+    let measure = |n: usize, write: fn(&Job)| {
+        let path = program_file(n, "file");
+        let p = peak(|| {
+            let job = Job::from_file(&path, Machine::new(ProfileName::Gsk988), Engine::Impl)
+                .unwrap_or_else(|e| panic!("{}", String::from(e)));
+            write(&job);
+        });
+        std::fs::remove_file(&path).expect("removes the program");
+        p
+    };
+    let nc: fn(&Job) = |job| output::expand(job, Format::Nc, std::io::sink()).expect("expands");
+    assert_flat("expand nc from a file", N, measure(N, nc), measure(10 * N, nc));
+    let passes: fn(&Job) = |job| output::passes(job, std::io::sink()).expect("tabulates");
+    assert_flat("passes from a file", N, measure(N, passes), measure(10 * N, passes));
+}
+
+#[test]
+fn a_file_read_line_by_line_gives_what_the_held_text_gives() {
+    let path = program_file(5, "same");
+    let from_file = Job::from_file(&path, Machine::new(ProfileName::Gsk988), Engine::Impl)
+        .unwrap_or_else(|e| panic!("{}", String::from(e)));
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    output::expand(&from_file, Format::Nc, &mut a).expect("expands");
+    output::expand(&job(5, Engine::Impl), Format::Nc, &mut b).expect("expands");
+    std::fs::remove_file(&path).expect("removes the program");
+    assert_eq!(String::from_utf8(a).expect("utf-8"), String::from_utf8(b).expect("utf-8"));
+}
+
+#[test]
+fn a_file_changed_after_the_start_is_an_error_and_writes_nothing() {
+    let path = program_file(3, "changed");
+    let job = Job::from_file(&path, Machine::new(ProfileName::Gsk988), Engine::Impl)
+        .unwrap_or_else(|e| panic!("{}", String::from(e)));
+    // Another length: the change is seen whatever the clock's resolution.
+    std::fs::write(&path, program(4)).expect("rewrites the program");
+    let mut out = Vec::new();
+    let e = output::expand(&job, Format::Nc, &mut out).expect_err("the file changed");
+    std::fs::remove_file(&path).expect("removes the program");
+    let message = String::from(e);
+    assert!(message.contains("the file changed while it was read"), "{message}");
+    assert!(out.is_empty());
+}

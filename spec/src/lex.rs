@@ -354,6 +354,22 @@ pub struct Lexer<'a> {
     done: bool,
 }
 
+/// Where a [`Lexer`] stands in its source, kept while the lexer itself is
+/// not (the source is borrowed again to go on): the line-fed reader
+/// ([`crate::reader::LineReader`]) resumes a lexer over the same bytes with
+/// it, one block at a time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Position {
+    /// Byte offset of the next line.
+    pos: usize,
+    /// Number of the current line (1-based; 0 before the first).
+    line: usize,
+    /// The current line's start and end offsets (without its line end),
+    /// and where in it the next block starts, when the line goes on.
+    current: Option<(usize, usize, usize)>,
+    done: bool,
+}
+
 const BOM: &[u8] = b"\xEF\xBB\xBF";
 /// Where `%` may stand (reading R-SEQNUM).
 const MARK_RULE: &str = "`%` marks the start or the end of a program, on a line of its own";
@@ -385,11 +401,37 @@ impl<'a> Lexer<'a> {
         lexer
     }
 
+    /// Where the lexer stands, to [`resume`](Lexer::resume) it later.
+    pub(crate) fn position(&self) -> Position {
+        Position {
+            pos: self.pos,
+            line: self.line,
+            current: self.current.map(|(l, next)| (l.start, l.start + l.bytes.len(), next)),
+            done: self.done,
+        }
+    }
+
+    /// The lexer over `src` at `at`, which [`position`](Lexer::position)
+    /// gave for the same bytes.
+    pub(crate) fn resume(src: &'a [u8], at: Position) -> Lexer<'a> {
+        let current = at.current.and_then(|(start, end, next)| {
+            let bytes = src.get(start..end)?;
+            Some((Line { start, bytes, text: std::str::from_utf8(bytes).ok() }, next))
+        });
+        Lexer { src, pos: at.pos, line: at.line, current, done: at.done }
+    }
+
+    /// The number of the line read last (0 before the first).
+    pub(crate) fn line(&self) -> usize {
+        self.line
+    }
+
     /// The next line, without its line end (`\n` or `\r\n`).
     fn next_line(&mut self) -> Option<Line<'a>> {
         if self.pos >= self.src.len() {
             return None;
         }
+        let start = self.pos;
         let rest = &self.src[self.pos..];
         let (line, advance) = match rest.iter().position(|&b| b == b'\n') {
             Some(i) => (&rest[..i], i + 1),
@@ -399,7 +441,7 @@ impl<'a> Lexer<'a> {
         self.line += 1;
         let bytes = line.strip_suffix(b"\r").unwrap_or(line);
         // One check per line: then every word is a slice of it for free.
-        Some(Line { bytes, text: std::str::from_utf8(bytes).ok() })
+        Some(Line { start, bytes, text: std::str::from_utf8(bytes).ok() })
     }
 
     /// Reads one segment of `line` from `start` (up to a block end or the
@@ -506,6 +548,8 @@ impl<'a> Lexer<'a> {
 /// a GBK comment is not).
 #[derive(Clone, Copy, Debug)]
 struct Line<'a> {
+    /// Offset of the line's first byte in the source.
+    start: usize,
     bytes: &'a [u8],
     text: Option<&'a str>,
 }

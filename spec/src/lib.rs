@@ -34,4 +34,4 @@ pub mod tan;
 pub use error::{ErrorKind, ProgramError};
 pub use pipeline::{expand, Cycle, Engine, Moves, RunError};
 pub use profile::{Machine, ProfileName};
-pub use reader::{read, G76Call, Item, Program, Reader};
+pub use reader::{read, G76Call, Item, LineReader, Program, Reader};

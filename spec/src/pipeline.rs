@@ -239,16 +239,49 @@ pub struct Summary {
 /// The first error in program order.
 pub fn validate(source: &[u8], machine: &Machine, engine: Engine) -> Result<Summary, RunError> {
     let mut reader = Reader::new(source, machine);
-    let (mut items, mut cycles) = (0, 0);
+    let mut validation = Validation::new(engine);
     for item in reader.by_ref() {
-        let item = item?;
-        items += 1;
-        if let Some(cycle) = Cycle::of(&item) {
-            cycles += 1;
+        validation.item(&item?)?;
+    }
+    Ok(validation.summary(reader.units()))
+}
+
+/// The first phase of a run fed one item at a time, for a program read in
+/// pieces ([`LineReader`](crate::reader::LineReader)); [`validate`] for a
+/// program in memory.
+#[derive(Clone, Copy, Debug)]
+pub struct Validation {
+    engine: Engine,
+    items: usize,
+    cycles: usize,
+}
+
+impl Validation {
+    /// Nothing checked yet; cycles will be expanded with `engine`.
+    #[must_use]
+    pub fn new(engine: Engine) -> Validation {
+        Validation { engine, items: 0, cycles: 0 }
+    }
+
+    /// Checks the next item of the program.
+    ///
+    /// # Errors
+    ///
+    /// The alarm of the cycle the item calls, with its line.
+    pub fn item(&mut self, item: &Item<'_>) -> Result<(), RunError> {
+        self.items += 1;
+        if let Some(cycle) = Cycle::of(item) {
+            self.cycles += 1;
             // Every alarm is raised before the first move: the moves are
             // not taken.
-            expand_at(cycle, engine)?;
+            expand_at(cycle, self.engine)?;
         }
+        Ok(())
     }
-    Ok(Summary { units: reader.units(), items, cycles })
+
+    /// What was learnt, with the `units` the reader ended with.
+    #[must_use]
+    pub fn summary(&self, units: Units) -> Summary {
+        Summary { units, items: self.items, cycles: self.cycles }
+    }
 }

@@ -17,7 +17,7 @@ use rust_decimal::Decimal;
 
 use crate::error::ErrorKind::NotInIncrements;
 use crate::error::{ErrorKind, ProgramError};
-use crate::lex::{Block, Lexer, Word};
+use crate::lex::{Block, Lexer, Position, Word};
 use crate::profile::{G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
 /// What the reader found in a program, in order.
@@ -175,6 +175,7 @@ struct G76OneShot {
     line: Option<usize>,
 }
 
+#[derive(Debug)]
 struct State<'m> {
     machine: &'m Machine,
     units: Units,
@@ -261,18 +262,89 @@ pub fn read<'a>(source: &'a str, machine: &Machine) -> Result<Program<'a>, Progr
 /// # Ok::<(), cycleref_spec::ProgramError>(())
 /// ```
 pub struct Reader<'a, 'm> {
-    lexer: Lexer<'a>,
-    state: State<'m>,
-    started: bool,
-    done: bool,
+    source: &'a [u8],
+    reader: LineReader<'m>,
+    finished: bool,
 }
 
 impl<'a, 'm> Reader<'a, 'm> {
     /// A reader of `source` (the program's bytes) with `machine`.
     #[must_use]
     pub fn new(source: &'a [u8], machine: &'m Machine) -> Reader<'a, 'm> {
-        Reader {
-            lexer: Lexer::new(source),
+        Reader { source, reader: LineReader::new(machine), finished: false }
+    }
+
+    /// The units in force (fixed before the first motion, reading R-UNITS).
+    #[must_use]
+    pub fn units(&self) -> Units {
+        self.reader.units()
+    }
+}
+
+impl<'a> Iterator for Reader<'a, '_> {
+    type Item = Result<Item<'a>, ProgramError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if let Some(item) = self.reader.next_in(self.source) {
+            return Some(item);
+        }
+        if self.finished {
+            return None;
+        }
+        self.finished = true;
+        self.reader.finish().err().map(Err)
+    }
+}
+
+/// A reader fed a program a piece at a time: the same reader as [`Reader`]
+/// (one state, one set of rules) for a program that is not in memory as a
+/// whole, read from a file or a pipe line by line. Its memory is the modal
+/// state, whatever the program's length; the caller holds one piece.
+///
+/// A piece is one or more whole lines (with or without their line ends).
+/// Call [`next_in`](LineReader::next_in) with the same piece until it
+/// returns `None`, then with the next piece; after the last piece,
+/// [`finish`](LineReader::finish) reports what the end of the program
+/// leaves unfinished. Line numbers count from the first piece: items and
+/// errors carry the whole program's line numbers.
+///
+/// ```
+/// use cycleref_spec::reader::{Item, LineReader};
+/// use cycleref_spec::{Machine, ProfileName};
+///
+/// let machine = Machine::new(ProfileName::Gsk988);
+/// let mut reader = LineReader::new(&machine);
+/// let mut line = Vec::new();
+/// let mut cycle_lines = Vec::new();
+/// for text in ["M03 S500", "G00 X80 Z10", "G76 P020560 Q0.1 R0.05", "G76 X60.64 Z-62 P3.68 Q1.8 F6"] {
+///     line.clear();
+///     line.extend_from_slice(text.as_bytes()); // a buffer reused for every line
+///     while let Some(item) = reader.next_in(&line) {
+///         if let Item::G76(call) = item? {
+///             cycle_lines.push(call.block.line);
+///         }
+///     }
+/// }
+/// reader.finish()?;
+/// assert_eq!(cycle_lines, [4]);
+/// # Ok::<(), cycleref_spec::ProgramError>(())
+/// ```
+#[derive(Debug)]
+pub struct LineReader<'m> {
+    state: State<'m>,
+    /// Where the lexer stands in the current piece; `None` between pieces.
+    at: Option<Position>,
+    /// The number of the last line of the pieces finished so far.
+    line: usize,
+    started: bool,
+    done: bool,
+}
+
+impl<'m> LineReader<'m> {
+    /// A reader, before the first piece of a program read with `machine`.
+    #[must_use]
+    pub fn new(machine: &'m Machine) -> LineReader<'m> {
+        LineReader {
             state: State {
                 machine,
                 units: machine.units(),
@@ -290,6 +362,8 @@ impl<'a, 'm> Reader<'a, 'm> {
                 thread_run: None,
                 g75_pending: None,
             },
+            at: None,
+            line: 0,
             started: false,
             done: false,
         }
@@ -301,40 +375,62 @@ impl<'a, 'm> Reader<'a, 'm> {
         self.state.units
     }
 
-    fn step(&mut self) -> Option<Result<Item<'a>, ProgramError>> {
-        if !self.started {
-            self.started = true;
-            if let Err(e) = self.state.check_machine() {
-                return Some(Err(e));
-            }
-        }
-        let block = match self.lexer.next() {
-            Some(Ok(b)) => b,
-            Some(Err(e)) => return Some(Err(e)),
-            None => return self.state.g75_pending.take().map(|first| Err(lone_g75(first.line))),
-        };
-        if let Some(first) = &self.state.g75_pending {
-            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
-            if !block.words.is_empty() && !is_g75_1(&block) {
-                return Some(Err(lone_g75(first.line)));
-            }
-        }
-        Some(self.state.block(block))
-    }
-}
-
-impl<'a> Iterator for Reader<'a, '_> {
-    type Item = Result<Item<'a>, ProgramError>;
-
-    fn next(&mut self) -> Option<Self::Item> {
+    /// The next item of `piece`, or `None` when the piece has no more (the
+    /// next call starts the next piece). After an error the reader yields
+    /// nothing more.
+    pub fn next_in<'a>(&mut self, piece: &'a [u8]) -> Option<Result<Item<'a>, ProgramError>> {
         if self.done {
             return None;
         }
-        let r = self.step();
-        if !matches!(r, Some(Ok(_))) {
-            self.done = true;
+        if !self.started {
+            self.started = true;
+            if let Err(e) = self.state.check_machine() {
+                self.done = true;
+                return Some(Err(e));
+            }
         }
-        r
+        let mut lexer = match self.at.take() {
+            Some(at) => Lexer::resume(piece, at),
+            None => Lexer::at_line(piece, self.line + 1),
+        };
+        let block = match lexer.next() {
+            Some(Ok(b)) => b,
+            Some(Err(e)) => {
+                self.done = true;
+                return Some(Err(e));
+            }
+            None => {
+                self.line = lexer.line();
+                return None;
+            }
+        };
+        self.at = Some(lexer.position());
+        if let Some(first) = &self.state.g75_pending {
+            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
+            if !block.words.is_empty() && !is_g75_1(&block) {
+                self.done = true;
+                return Some(Err(lone_g75(first.line)));
+            }
+        }
+        let item = self.state.block(block);
+        self.done = item.is_err();
+        Some(item)
+    }
+
+    /// The end of the program, after its last piece.
+    ///
+    /// # Errors
+    ///
+    /// A G75.1 block 1 without its block 2.
+    pub fn finish(&mut self) -> Result<(), ProgramError> {
+        if self.done {
+            return Ok(());
+        }
+        self.done = true;
+        match self.state.g75_pending.take() {
+            Some(first) => Err(lone_g75(first.line)),
+            None => Ok(()),
+        }
     }
 }
 

@@ -6,7 +6,7 @@ use std::borrow::Cow;
 
 use cycleref_spec::pipeline::{expand, Cycle, Engine};
 use cycleref_spec::reader::Item;
-use cycleref_spec::{ErrorKind, Machine, ProfileName, ProgramError, Reader};
+use cycleref_spec::{ErrorKind, LineReader, Machine, ProfileName, ProgramError, Reader};
 use proptest::prelude::*;
 
 const PROFILES: [ProfileName; 3] = [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988];
@@ -270,6 +270,26 @@ fn program() -> impl Strategy<Value = Vec<u8>> {
     proptest::collection::vec(piece(), 0..48).prop_map(|v| v.concat())
 }
 
+/// The items (or the error that ends them) of `data` fed to a
+/// [`LineReader`] a line at a time through one reused buffer, as `Debug`
+/// text: a file read line by line must read as the same text in memory.
+fn line_by_line(data: &[u8], machine: &Machine) -> Vec<String> {
+    let mut reader = LineReader::new(machine);
+    let mut shown = Vec::new();
+    let mut buf = Vec::new();
+    for line in data.split_inclusive(|&b| b == b'\n') {
+        buf.clear();
+        buf.extend_from_slice(line);
+        while let Some(item) = reader.next_in(&buf) {
+            shown.push(format!("{item:?}"));
+        }
+    }
+    if let Err(e) = reader.finish() {
+        shown.push(format!("{:?}", Err::<Item<'_>, _>(e)));
+    }
+    shown
+}
+
 /// Reads `data` with every profile and expands every cycle with both
 /// engines: no panic, errors on a line of the text, the engines agree.
 fn run_all(data: &[u8]) -> Result<(), TestCaseError> {
@@ -277,6 +297,8 @@ fn run_all(data: &[u8]) -> Result<(), TestCaseError> {
     for profile in PROFILES {
         let mut machine = Machine::new(profile);
         machine.pass_limit = 2_000;
+        let whole: Vec<String> = Reader::new(data, &machine).map(|i| format!("{i:?}")).collect();
+        prop_assert_eq!(&whole, &line_by_line(data, &machine), "{:?}", String::from_utf8_lossy(data));
         for item in Reader::new(data, &machine) {
             let item = match item {
                 Ok(item) => item,
