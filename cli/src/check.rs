@@ -114,12 +114,12 @@ fn at(b: &Block, w: Option<&Word>, msg: &str) -> String {
 fn lead_of(b: &Block, w: &Word, word: LeadWord) -> Result<Lead, String> {
     let bad =
         || at(b, Some(w), "the lead is outside every range table (F up to 9999, I from 0.0001 to 2540)");
-    if w.number.negative {
+    if w.number().negative {
         return Err(bad());
     }
-    let frac = w.number.frac_digits().unwrap_or_default();
+    let frac = w.number().frac_digits().unwrap_or_default();
     let frac = frac.trim_end_matches('0');
-    let digits = format!("{}{frac}", w.number.int_digits());
+    let digits = format!("{}{frac}", w.number().int_digits());
     let digits = digits.trim_start_matches('0');
     let mantissa = if digits.is_empty() { 0 } else { digits.parse().map_err(|_| bad())? };
     let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).map_err(|_| bad())? };
@@ -135,7 +135,7 @@ fn lead_of(b: &Block, w: &Word, word: LeadWord) -> Result<Lead, String> {
 /// `nc` contract, `format::arc_ik`).
 fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, String> {
     let f = machine.x_mode.factor();
-    let n = &w.number;
+    let n = &w.number();
     let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
     let out = || at(b, Some(w), "the arc centre distance is outside the range table");
     let radius_increments = if !n.has_point() && bare {
@@ -191,11 +191,11 @@ impl<'m> Tracker<'m> {
     /// A trace's words that the check does not read are refused: they might
     /// shape the part (reading R-CHECKWORDS).
     fn strict_words(&self, b: &Block, motion: Kind) -> Result<(), String> {
-        let dwell = b.all('G').any(|g| g.number.integer() == Some(4));
+        let dwell = b.all('G').any(|g| g.number().integer() == Some(4));
         for w in &b.words {
             let ok = match w.letter {
                 'G' => {
-                    let g = w.number.integer();
+                    let g = w.number().integer();
                     if !matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99)) {
                         return Err(at(
                             b,
@@ -213,7 +213,7 @@ impl<'m> Tracker<'m> {
                     true
                 }
                 'M' => {
-                    if matches!(w.number.integer(), Some(98 | 99)) {
+                    if matches!(w.number().integer(), Some(98 | 99)) {
                         return Err(at(b, Some(w), "a trace holds plain moves, not subprogram calls"));
                     }
                     true
@@ -257,7 +257,7 @@ impl<'m> Tracker<'m> {
         let mut g50 = false;
         let mut dwell = false;
         for w in b.all('G') {
-            match w.number.integer() {
+            match w.number().integer() {
                 Some(0) => self.motion = Kind::Rapid,
                 Some(1) => self.motion = Kind::Feed,
                 Some(2) => self.motion = Kind::ArcCw,
@@ -346,7 +346,7 @@ impl<'m> Tracker<'m> {
     /// (reading R-CHECKARC), and an arc without I, K or R is an error.
     fn centre(&self, b: &Block, from: Option<Point>) -> Result<Point, String> {
         let pe = |e: cycleref_spec::ProgramError| e.to_string();
-        let g = b.all('G').find(|g| matches!(g.number.integer(), Some(2 | 3)));
+        let g = b.all('G').find(|g| matches!(g.number().integer(), Some(2 | 3)));
         if let Some(r) = b.get('R').map_err(pe)? {
             return Err(at(
                 b,

@@ -155,22 +155,36 @@ impl<'a> Number<'a> {
 }
 
 /// An address letter and its number.
+///
+/// A word is its text and its letter (24 bytes, so that a block's words sit
+/// inline and move cheaply); its [`Number`] is read from the text when it is
+/// asked for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
-    /// The value.
-    pub number: Number<'a>,
     /// The word as written, from its letter to its last digit (spaces
     /// between the letter and the number kept).
     raw: &'a str,
 }
 
 impl<'a> Word<'a> {
-    /// A word from its parts; `raw` is the text it was read from.
+    /// A word from `raw`, the text it was read from: an address letter,
+    /// perhaps spaces or tabs, a sign, digits with at most one `.`.
     #[must_use]
-    pub fn new(letter: char, number: Number<'a>, raw: &'a str) -> Word<'a> {
-        Word { letter, number, raw }
+    pub fn new(letter: char, raw: &'a str) -> Word<'a> {
+        Word { letter, raw }
+    }
+
+    /// The value.
+    #[must_use]
+    pub fn number(&self) -> Number<'a> {
+        let rest = self.raw.get(1..).unwrap_or_default().trim_start_matches([' ', '\t']);
+        match rest.as_bytes().first() {
+            Some(b'-') => Number::new(true, rest.get(1..).unwrap_or_default()),
+            Some(b'+') => Number::new(false, rest.get(1..).unwrap_or_default()),
+            _ => Number::new(false, rest),
+        }
     }
 
     /// The word as written, without the spaces inside it (for messages).
@@ -681,9 +695,7 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         pos += 1;
     }
     let num_start = pos;
-    let mut negative = false;
     if pos < line.len() && (line[pos] == b'-' || line[pos] == b'+') {
-        negative = line[pos] == b'-';
         pos += 1;
     }
     let digits = |from: usize| from + line[from..].iter().take_while(|b| b.is_ascii_digit()).count();
@@ -702,8 +714,7 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         None => std::str::from_utf8(&line[start..pos]).ok(),
     }
     .unwrap_or_default();
-    let number = Number::new(negative, raw.get(digits_start - start..).unwrap_or_default());
-    let word = Word { letter, number, raw };
+    let word = Word { letter, raw };
     if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
         return Err(ProgramError {
             line: line_no,

@@ -457,7 +457,7 @@ impl State<'_> {
 
 /// True when `block` programs G75.1.
 fn is_g75_1(block: &Block<'_>) -> bool {
-    block.all('G').any(|w| w.number.decimal() == Decimal::from_str_exact("75.1").ok())
+    block.all('G').any(|w| w.number().decimal() == Decimal::from_str_exact("75.1").ok())
 }
 
 fn lone_g75(line: usize) -> ProgramError {
@@ -518,7 +518,7 @@ fn to_increments(
     w: &Word<'_>,
     bare_increments: bool,
 ) -> Result<i64, ProgramError> {
-    let n = &w.number;
+    let n = &w.number();
     let not_in_increments = || NotInIncrements { increment: increment_text(units) };
     // A value too large for any range table gets the range message, even
     // where it is too large for the arithmetic too; a value finer than the
@@ -584,7 +584,7 @@ impl State<'_> {
         let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
         let v = match self.machine.profile.pq_unit(bit) {
             PqUnit::IncrementsNoPoint => {
-                if w.number.has_point() {
+                if w.number().has_point() {
                     return Err(err(
                         block,
                         Some(w),
@@ -596,7 +596,7 @@ impl State<'_> {
                 self.to_increments(block, w, true)?
             }
             PqUnit::Increments => {
-                let v = w.number.integer().ok_or_else(|| {
+                let v = w.number().integer().ok_or_else(|| {
                     err(
                         block,
                         Some(w),
@@ -619,8 +619,8 @@ impl State<'_> {
     }
 
     fn count(block: &Block<'_>, w: &Word<'_>, lo: i64, hi: i64) -> Result<u32, ProgramError> {
-        match w.number.integer() {
-            Some(v) if (lo..=hi).contains(&v) && !w.number.has_point() => {
+        match w.number().integer() {
+            Some(v) if (lo..=hi).contains(&v) && !w.number().has_point() => {
                 Ok(u32::try_from(v).unwrap_or(u32::MAX))
             }
             _ => {
@@ -630,7 +630,7 @@ impl State<'_> {
     }
 
     fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
-        let n = &w.number;
+        let n = &w.number();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
         let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
@@ -663,8 +663,8 @@ impl State<'_> {
         let mut g04 = false;
         let mut motion = None;
         for w in block.all('G') {
-            let code = w.number.decimal().unwrap_or(Decimal::NEGATIVE_ONE);
-            let whole = w.number.integer();
+            let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
+            let whole = w.number().integer();
             match whole {
                 Some(0) => motion = Some(MotionMode::G00),
                 Some(1) => motion = Some(MotionMode::G01),
@@ -685,7 +685,7 @@ impl State<'_> {
                     }
                 }
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
-                None if Decimal::from_str_exact("75.1").ok() == w.number.decimal() => {
+                None if Decimal::from_str_exact("75.1").ok() == w.number().decimal() => {
                     if !self.machine.profile.g75_1 {
                         return Err(err(
                             &block,
@@ -713,7 +713,7 @@ impl State<'_> {
         }
         // M codes and S.
         for w in block.all('M') {
-            match w.number.integer() {
+            match w.number().integer() {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
                 _ => {}
@@ -723,7 +723,7 @@ impl State<'_> {
             // Reading R-SPINDLE: `G50 S` alone clamps the spindle speed; with X/Z
             // (the manuals' "G50 X100 Z50 M3 S300") S is the speed.
             let clamp = g50 && !block.has('X') && !block.has('Z');
-            if !clamp && s.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
+            if !clamp && s.number().decimal().is_some_and(|d| d > Decimal::ZERO) {
                 self.speed = true;
             }
         }
@@ -775,7 +775,7 @@ impl State<'_> {
             };
         }
         if let Some(f) = block.get('F')? {
-            if f.number.decimal().is_some_and(|d| d > Decimal::ZERO) {
+            if f.number().decimal().is_some_and(|d| d > Decimal::ZERO) {
                 self.lead =
                     Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
             }
@@ -1027,14 +1027,14 @@ impl State<'_> {
 
     /// Reading R-PSPLIT: last two digits a, next two r, the rest m.
     fn split_p(&mut self, block: &Block<'_>, p: &Word<'_>) -> Result<(), ProgramError> {
-        if p.number.has_point() || p.number.negative {
+        if p.number().has_point() || p.number().negative {
             return Err(err(
                 block,
                 Some(p),
                 ErrorKind::DecimalPointNotAllowed { rule: "P(m)(r)(a) is a string of digits" },
             ));
         }
-        let digits = p.number.int_digits();
+        let digits = p.number().int_digits();
         let n = digits.len();
         let part = |from: usize, to: usize| -> u32 { digits[from..to].parse().unwrap_or(0) };
         let whole = self.machine.profile.p_split == PSplit::WholeOnly;
@@ -1215,7 +1215,7 @@ impl State<'_> {
                 ErrorKind::OutOfRange { range: "0..90 degrees (A, B: 0 < a <= 90; L: 0 <= L < 90)".into() },
             )
         };
-        let d = w.number.decimal().ok_or_else(out)?;
+        let d = w.number().decimal().ok_or_else(out)?;
         if d.is_sign_negative() && !d.is_zero() {
             return Err(out());
         }
@@ -1390,10 +1390,10 @@ impl State<'_> {
                 ErrorKind::OutOfRange { range: "P(a)(b)(d)(e): up to four digits, each 0 or 1".into() },
             )
         };
-        if p.number.has_point() || p.number.negative {
+        if p.number().has_point() || p.number().negative {
             return Err(bad());
         }
-        let digits = p.number.int_digits().as_bytes();
+        let digits = p.number().int_digits().as_bytes();
         if digits.len() > 4 || digits.iter().any(|&c| c != b'0' && c != b'1') {
             return Err(bad());
         }
@@ -1419,19 +1419,19 @@ pub fn q_word(
 ) -> Result<StartAngle, ProgramError> {
     let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
     let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
-    if w.number.negative {
+    if w.number().negative {
         return Err(out("0..360 degrees"));
     }
     match machine.profile.q_unit(bit) {
         QUnit::Millidegrees { no_point } => {
-            if no_point && w.number.has_point() {
+            if no_point && w.number().has_point() {
                 return Err(err(
                     block,
                     Some(w),
                     ErrorKind::DecimalPointNotAllowed { rule: "Q of G32 is given in 0.001 degree" },
                 ));
             }
-            match w.number.integer() {
+            match w.number().integer() {
                 Some(v) if (0..=360_000).contains(&v) => {
                     Ok(StartAngle::from_millidegrees(u64::try_from(v).unwrap_or(0)))
                 }
@@ -1439,7 +1439,7 @@ pub fn q_word(
             }
         }
         QUnit::Degrees { wrap } => {
-            let d = w.number.decimal().ok_or_else(|| out("0..360 degrees"))?;
+            let d = w.number().decimal().ok_or_else(|| out("0..360 degrees"))?;
             let decimals = match units.system {
                 cycleref::IncrementSystem::IsB => 3,
                 cycleref::IncrementSystem::IsC => 4,

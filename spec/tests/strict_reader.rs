@@ -88,7 +88,7 @@ fn n_only_at_the_start_of_a_block() {
         let Some(Item::Source(b)) = items.last() else { panic!("{src:?}: {items:?}") };
         // The N word is not one of the block's words; its text is echoed.
         assert!(!b.has('N'), "{src:?}");
-        assert_eq!(b.get('X').expect("one X").map(|w| w.number.integer()), Some(Some(80)), "{src:?}");
+        assert_eq!(b.get('X').expect("one X").map(|w| w.number().integer()), Some(Some(80)), "{src:?}");
     }
 }
 
