@@ -379,3 +379,54 @@ fn percent_alone_on_its_line_and_slash_only_first() {
     assert!(error(b"G00 X10 % Z5\n", &m).to_string().contains("on a line of its own"));
     assert!(error(b"G00 X10 / Z5\n", &m).to_string().contains("block delete `/` may only start a block"));
 }
+
+/// R-ADDRESS: a word a cycle block does not define is refused, naming the
+/// word, the block and the profile; the block's own words, the profile's
+/// extras and M, S, T are accepted. The table is the one of
+/// docs/INTERPRETATIONS.md (from the cycle formats of the seeds).
+#[test]
+fn each_cycle_block_accepts_exactly_its_addresses() {
+    let fanuc = Machine::new(ProfileName::Fanuc);
+    let gsk980 = Machine::new(ProfileName::Gsk980);
+    let m988 = gsk988();
+    let g76 = |block1: &str, block2: &str| format!("M03 S500\nG00 X80 Z10\n{block1}\n{block2}\n");
+    let g75 = |block1: &str, block2: &str| format!("M03 S500\nG00 X40 Z5\n{block1}\n{block2}\n");
+    let g32 = |block: &str| format!("M03 S500\nG00 X40 Z2\n{block}\n");
+    let b1 = "G76 P020560 Q0.1 R0.05";
+    let b2 = "G76 X60.64 Z-62 P3.68 Q1.8 F6";
+    let b1_fanuc = "G76 P020560 Q100 R50";
+    // GSK 980TDi: P(k) and Q in least increments (its state parameter).
+    let (b1_980, b2_980) = ("G76 P020560 Q100 R0.05", "G76 X60.64 Z-62 P3680 Q1800 F6");
+    let b2_fanuc = "G76 X60640 Z-62000 P3680 Q1800 F6";
+    let g75_1 = "G75.1 X30 Z0 P2000 Q3000 H-6 D-8";
+    let g75_2 = "G75.1 R0.5 V4 U0.4 W0.2 I3 J1 A0.5 D0.4 E0.3 P0011";
+    let refused: [(String, &Machine, &str, &str); 8] = [
+        (g76(&format!("{b1} Y1"), b2), &m988, "Y1", "G76 block 1"),
+        (g76(b1, &format!("{b2} H1")), &m988, "H1", "G76 block 2"),
+        (g76(&format!("{b1_fanuc} L2"), b2_fanuc), &fanuc, "L2", "G76 block 1"),
+        (g76(b1_fanuc, &format!("{b2_fanuc} J1")), &fanuc, "J1", "G76 block 2"),
+        (g76(&format!("{b1_980} D1"), b2_980), &gsk980, "D1", "G76 block 1"),
+        (g32("G32 Z-30 F2 J1"), &fanuc, "J1", "G32"),
+        (g75(&format!("{g75_1} K1"), g75_2), &gsk980, "K1", "G75.1 block 1"),
+        (g75(g75_1, &format!("{g75_2} Q1")), &gsk980, "Q1", "G75.1 block 2"),
+    ];
+    for (src, m, word, block) in &refused {
+        let e = error(src.as_bytes(), m);
+        assert_eq!(e.word.as_deref(), Some(*word), "{src}");
+        match &e.kind {
+            ErrorKind::AddressNotInProfile { cycle, .. } => assert_eq!(cycle, block, "{src}"),
+            other => panic!("{src}: {other:?}"),
+        }
+    }
+    let accepted: [(String, &Machine); 6] = [
+        (g76(&format!("{b1} L2 E1 D1 M08"), &format!("{b2} J1 K1 S500 T0101")), &m988),
+        (g76(&format!("{b1_980} J1 K1"), b2_980), &gsk980),
+        (g76(&format!("{b1_fanuc} T0202"), &format!("{b2_fanuc} M08")), &fanuc),
+        (g32("G32 Z-30 F2 J1 K1 Q90 S400"), &gsk980),
+        (g32("G32 Z-30 F2 Q90 M08"), &fanuc),
+        (g75(&format!("{g75_1} M08"), &format!("{g75_2} S300 T0303")), &gsk980),
+    ];
+    for (src, m) in &accepted {
+        read_bytes(src.as_bytes(), m).unwrap_or_else(|e| panic!("{src}: {e}"));
+    }
+}
