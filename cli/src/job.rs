@@ -195,20 +195,6 @@ impl Job {
         Ok(())
     }
 
-    /// The whole text of the program, in memory (a copy of a file's).
-    ///
-    /// # Errors
-    ///
-    /// The file cannot be read.
-    pub fn text(&self) -> Result<std::borrow::Cow<'_, [u8]>, Failure> {
-        match &self.text {
-            Text::Held(bytes) => Ok(bytes.into()),
-            Text::File { path, .. } => {
-                std::fs::read(path).map(Into::into).map_err(|e| Failure::msg(format!("{}: {e}", self.name)))
-            }
-        }
-    }
-
     /// `e` as a failure naming the file.
     #[must_use]
     pub fn read_failure(&self, e: &ReadError) -> Failure {

@@ -12,7 +12,8 @@
 //!   into the writer;
 //! * [`format`](mod@format): the text forms of lengths, leads, angles and names;
 //! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
-//! * [`plot`] and `plot_g75`: `plot`, the SVG drawing;
+//! * [`plot`]: `plot`, the SVG drawing (one module per cycle over a shared
+//!   canvas);
 //! * [`vectors`]: the generator of conformance vectors.
 //!
 //! Every command is a function of this library; the binary parses the
@@ -28,7 +29,6 @@ pub mod job;
 pub mod json;
 pub mod output;
 pub mod plot;
-mod plot_g75;
 pub mod vectors;
 
 pub use job::{Failure, Job, Options, Profile};

@@ -336,6 +336,14 @@ impl<'a> Block<'a> {
         self.words.has(letter)
     }
 
+    /// A copy of the block that outlives the text it was read from: its
+    /// line and text, without its words (which borrow the text). For a
+    /// consumer that keeps a few blocks of a program read a line at a time.
+    #[must_use]
+    pub fn detached(&self) -> Block<'static> {
+        Block { line: self.line, text: Cow::Owned(self.text.to_vec()), words: Words::new() }
+    }
+
     /// The text for a person: UTF-8 as it is, other bytes (a GBK comment)
     /// replaced by U+FFFD.
     #[must_use]

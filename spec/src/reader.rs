@@ -50,6 +50,19 @@ pub struct G75Call<'a> {
     pub restore: Restore,
 }
 
+impl G75Call<'_> {
+    /// The call with its block [detached](Block::detached) from the text.
+    #[must_use]
+    pub fn detached(&self) -> G75Call<'static> {
+        G75Call {
+            block: self.block.detached(),
+            params_line: self.params_line,
+            cycle: self.cycle.clone(),
+            restore: self.restore,
+        }
+    }
+}
+
 /// One G32 block of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct G32Call<'a> {
@@ -57,6 +70,14 @@ pub struct G32Call<'a> {
     pub block: Block<'a>,
     /// The resolved block.
     pub g32: G32Block,
+}
+
+impl G32Call<'_> {
+    /// The call with its block [detached](Block::detached) from the text.
+    #[must_use]
+    pub fn detached(&self) -> G32Call<'static> {
+        G32Call { block: self.block.detached(), g32: self.g32.clone() }
+    }
 }
 
 /// One G76 cycle of a program.
@@ -71,6 +92,19 @@ pub struct G76Call<'a> {
     /// What to program after the expansion to give the following blocks
     /// the modal state they had before the cycle.
     pub restore: Restore,
+}
+
+impl G76Call<'_> {
+    /// The call with its block [detached](Block::detached) from the text.
+    #[must_use]
+    pub fn detached(&self) -> G76Call<'static> {
+        G76Call {
+            block: self.block.detached(),
+            params_line: self.params_line,
+            cycle: self.cycle.clone(),
+            restore: self.restore,
+        }
+    }
 }
 
 /// Modal state to restore after an expanded cycle, whose last block leaves

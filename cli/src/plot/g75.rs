@@ -9,20 +9,22 @@
 //! every plunge as a translucent bar of the tool's width, so the width and
 //! the ridges it leaves are visible.
 //!
-//! The profile and the roughing region are not computed here: the profile
-//! is the finishing path (J2) of the same cycle run by the same engine for a
-//! pointed tool, and the roughing region's outline is the engine's
-//! `groove_profile` (the vertices the rough contour visits, without the
-//! tool width), so the drawing cannot disagree with the expansion.
+//! The profile and the roughing region are not a geometry of the drawing's
+//! own ([`Groove::new`] asks the engine): the profile is the finishing path
+//! (J2) of the same cycle run by the same engine for a pointed tool, and the
+//! roughing region's outline is the engine's `groove_profile` (the vertices
+//! the rough contour visits, without the tool width), so the drawing cannot
+//! disagree with the expansion.
 
 use std::fmt::Write as _;
 
-use cycleref::{InputUnit, Motion, Move, Point, Role, XMode};
+use cycleref::{Motion, Move, Point, Role};
+use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::reader::G75Call;
-use svg::node::element::{Group, Path, Rectangle, Text, Title};
+use svg::node::element::{Group, Path, Rectangle, Title};
 
+use super::canvas::{draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, FINISH, RAPID, RAPID_DASH};
 use crate::format::fixed;
-use crate::plot::{draw_axes, num, ramp, Mapping, FINISH, PLOT_LEFT, RAPID, RAPID_DASH};
 
 /// Orange: the rough contour (step 9).
 const ROUGH: &str = "#ff7f0e";
@@ -32,23 +34,44 @@ const GROOVE_FILL: &str = "#eeeeee";
 const PROFILE: &str = "#222222";
 
 /// What a G75.1 panel draws.
-pub struct Groove<'a> {
+pub(super) struct Groove<'a> {
     /// The cycle.
-    pub call: &'a G75Call<'a>,
+    call: G75Call<'a>,
     /// Its moves.
-    pub moves: &'a [Move],
+    moves: Vec<Move>,
     /// The finishing contour of the same groove for a pointed tool (the
     /// programmed profile), from its start on the surface to its end.
-    pub profile: Vec<Move>,
+    profile: Vec<Move>,
     /// The roughing region's outline (`cycleref::groove_profile`): R0, K1
     /// and K2 (or Q1), K3 and K4 (or Q2), R3, absolute, without the tool
     /// width.
-    pub rough: Vec<Point>,
+    rough: Vec<Point>,
 }
 
-impl Groove<'_> {
-    /// The panel.
-    pub fn draw(&self, name: &str) -> Group {
+impl<'a> Groove<'a> {
+    /// The panel of `call` with its `moves`: the profile and the roughing
+    /// region are computed here by `job`'s engine (the module
+    /// documentation says how).
+    ///
+    /// # Errors
+    ///
+    /// The engine's error for the pointed-tool run or the roughing region.
+    pub(super) fn new(job: &crate::Job, call: G75Call<'a>, moves: Vec<Move>) -> Result<Self, crate::Failure> {
+        let pointed = G75Call {
+            cycle: cycleref::G75Cycle { tool_width: None, path: cycleref::PathType::Finish, ..call.cycle },
+            ..call.clone()
+        };
+        let contour: Vec<Move> =
+            job.expand(Cycle::G75(&pointed))?.filter(|m| m.role == Role::FinishContour).collect();
+        let rough = cycleref::groove_profile(&call.cycle)
+            .map_err(|e| crate::Failure::msg(format!("{}: line {}, G75.1: {e}", job.name, call.block.line)))?
+            .roughing()
+            .to_vec();
+        Ok(Groove { call, moves, profile: profile_from_contour(&contour), rough })
+    }
+
+    /// The panel's drawing.
+    pub(super) fn draw(&self, name: &str) -> Group {
         let c = &self.call.cycle;
         let u = c.units;
         let per_unit = u.per_unit();
@@ -57,43 +80,21 @@ impl Groove<'_> {
             .chain(self.moves.iter().map(|m| m.to))
             .chain(self.profile.iter().map(|m| m.to));
         let map = Mapping::around(points, per_unit);
-        let unit = match u.unit {
-            InputUnit::Metric => "mm",
-            InputUnit::Inch => "inch",
-        };
-        let x_kind = match c.x_mode {
-            XMode::Diameter => "diameter",
-            XMode::Radius => "radius",
-        };
         let tool = match c.tool_width {
             Some(w) => {
                 format!("grooving tool I{} (bars: its cutting edge at each plunge bottom)", fixed(w, u))
             }
             None => "pointed tool (no I)".to_string(),
         };
-        let mut g = Group::new()
-            .add(
-                Text::new(format!(
-                    "{name} \u{2014} G75.1 at lines {}-{}",
-                    self.call.params_line, self.call.block.line
-                ))
-                .set("x", PLOT_LEFT)
-                .set("y", 28)
-                .set("font-size", 17)
-                .set("font-weight", "bold")
-                .set("fill", "#000000"),
-            )
-            .add(
-                Text::new(format!(
-                    "grey: groove profile, dotted: less the allowances; blue: pecks, orange: rough \
-                     contour, red: finishing; {tool}"
-                ))
-                .set("x", PLOT_LEFT)
-                .set("y", 50)
-                .set("font-size", 12)
-                .set("fill", "#444444"),
-            );
-        g = draw_axes(g, &map, unit, x_kind);
+        let mut g = heading(
+            Group::new(),
+            format!("{name} \u{2014} G75.1 at lines {}-{}", self.call.params_line, self.call.block.line),
+            format!(
+                "grey: groove profile, dotted: less the allowances; blue: pecks, orange: rough contour, red: \
+                 finishing; {tool}"
+            ),
+        );
+        g = draw_axes(g, &map, unit_name(u.unit), x_kind(c.x_mode));
         let x_factor = c.x_mode.factor();
         // The groove: the profile closed along the surface.
         if let Some(first) = self.profile.first() {
@@ -227,4 +228,12 @@ fn segment(d: &mut String, map: &Mapping, at: Point, m: &Move, x_factor: i64) {
             let _ = write!(d, "L{} {}", num(x), num(y));
         }
     }
+}
+
+/// The finishing contour's moves without its first move (the rapid to the
+/// contour's start, which becomes the profile's first point).
+fn profile_from_contour(contour: &[Move]) -> Vec<Move> {
+    let start = contour.iter().position(|m| m.motion != Motion::Rapid).unwrap_or(0);
+    let first = start.saturating_sub(1);
+    contour[first..].to_vec()
 }

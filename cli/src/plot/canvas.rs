@@ -1,0 +1,317 @@
+//! The canvas every panel of `cycleref plot` is drawn on: the plot area,
+//! the palette, the mapping from increments to pixels, the axes with their
+//! grid and ticks, the heading, and the number format of the SVG.
+//!
+//! A panel is 1200 × 560 px. The plot area (Z to the right, X upwards)
+//! lies between [`PLOT_LEFT`], [`PLOT_RIGHT`], [`PLOT_TOP`] and
+//! [`PLOT_BOTTOM`], the legend (where a cycle has one) right of
+//! [`LEGEND_LEFT`]. A [`Mapping`] fits a panel's points into the plot area
+//! with a margin, each axis to its own scale. Every coordinate is written
+//! by [`num`], to 0.1 px, so the same program gives the same bytes.
+
+use cycleref::{InputUnit, Point, XMode};
+use svg::node::element::{Group, Line, Rectangle, Text};
+
+/// Left edge of the plot area within a panel (px).
+pub(super) const PLOT_LEFT: f64 = 90.0;
+/// Right edge of the plot area (px).
+pub(super) const PLOT_RIGHT: f64 = 880.0;
+/// Top edge of the plot area (px).
+pub(super) const PLOT_TOP: f64 = 72.0;
+/// Bottom edge of the plot area (px).
+pub(super) const PLOT_BOTTOM: f64 = 480.0;
+/// Left edge of the legend.
+pub(super) const LEGEND_LEFT: f64 = 905.0;
+
+/// Rapids (G00), dashed with [`RAPID_DASH`].
+pub(super) const RAPID: &str = "#8c8c8c";
+/// The dash pattern of rapids.
+pub(super) const RAPID_DASH: &str = "6 4";
+/// Finishing passes and contours.
+pub(super) const FINISH: &str = "#d62728";
+/// Run-outs.
+pub(super) const RUN_OUT: &str = "#2ca02c";
+/// Marked points and their outlines.
+pub(super) const POINT: &str = "#000000";
+/// The grid of the plot area.
+const GRID: &str = "#e4e4e4";
+/// Rough-pass ramp ends: first pass (light) and last pass (dark).
+const RAMP_FIRST: (f64, f64, f64) = (107.0, 174.0, 214.0);
+const RAMP_LAST: (f64, f64, f64) = (8.0, 48.0, 107.0);
+
+/// A pixel coordinate, to 0.1 px, without a trailing `.0` or a `-0`.
+pub(super) fn num(v: f64) -> String {
+    let r = (v * 10.0).round() / 10.0 + 0.0;
+    format!("{r}")
+}
+
+/// Increments as a float in mm (inch).
+#[allow(clippy::cast_precision_loss)]
+fn units_of(v: i64, per_unit: i64) -> f64 {
+    v as f64 / per_unit as f64
+}
+
+/// The name of the unit on the axes.
+pub(super) fn unit_name(unit: InputUnit) -> &'static str {
+    match unit {
+        InputUnit::Metric => "mm",
+        InputUnit::Inch => "inch",
+    }
+}
+
+/// What the X axis shows: the diameter or the radius, as the X words.
+pub(super) fn x_kind(x_mode: XMode) -> &'static str {
+    match x_mode {
+        XMode::Diameter => "diameter",
+        XMode::Radius => "radius",
+    }
+}
+
+/// The panel's title and, below it, its subtitle.
+pub(super) fn heading(g: Group, title: String, sub: String) -> Group {
+    g.add(
+        Text::new(title)
+            .set("x", PLOT_LEFT)
+            .set("y", 28)
+            .set("font-size", 17)
+            .set("font-weight", "bold")
+            .set("fill", "#000000"),
+    )
+    .add(Text::new(sub).set("x", PLOT_LEFT).set("y", 50).set("font-size", 12).set("fill", "#444444"))
+}
+
+/// A "nice" tick step (1, 2 or 5 times a power of ten) giving about
+/// `target` ticks over `span`.
+fn tick_step(span: f64, target: f64) -> f64 {
+    let raw = span / target;
+    let mag = 10_f64.powf(raw.log10().floor());
+    let norm = raw / mag;
+    let nice = if norm < 1.5 {
+        1.0
+    } else if norm < 3.0 {
+        2.0
+    } else if norm < 7.0 {
+        5.0
+    } else {
+        10.0
+    };
+    nice * mag
+}
+
+/// Decimals needed to print multiples of `step`.
+#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+fn step_decimals(step: f64) -> usize {
+    let d = -step.log10().floor();
+    if d > 0.0 {
+        d as usize
+    } else {
+        0
+    }
+}
+
+/// The ticks of `[lo, hi]` with the step for about `target` ticks.
+#[allow(clippy::cast_possible_truncation)]
+fn ticks(lo: f64, hi: f64, target: f64) -> (Vec<f64>, usize) {
+    let step = tick_step(hi - lo, target);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    #[allow(clippy::cast_precision_loss)]
+    let values = (first..=last).map(|i| i as f64 * step).collect();
+    (values, step_decimals(step))
+}
+
+/// Colour of rough pass `number` of `total` on the ramp.
+pub(super) fn ramp(number: u32, total: u32) -> String {
+    let t = if total <= 1 { 1.0 } else { f64::from(number.saturating_sub(1)) / f64::from(total - 1) };
+    let mix = |a: f64, b: f64| -> u8 {
+        let v = (a + (b - a) * t).round().clamp(0.0, 255.0);
+        // The clamp keeps the value in u8 range.
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let byte = v as u8;
+        byte
+    };
+    format!(
+        "#{:02x}{:02x}{:02x}",
+        mix(RAMP_FIRST.0, RAMP_LAST.0),
+        mix(RAMP_FIRST.1, RAMP_LAST.1),
+        mix(RAMP_FIRST.2, RAMP_LAST.2)
+    )
+}
+
+/// Scales from increments to pixels.
+pub(super) struct Mapping {
+    per_unit: i64,
+    z_lo: f64,
+    z_hi: f64,
+    x_lo: f64,
+    x_hi: f64,
+}
+
+impl Mapping {
+    /// The mapping that shows every one of `points`, with a margin.
+    pub(super) fn around(points: impl Iterator<Item = Point>, per_unit: i64) -> Mapping {
+        let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
+        for p in points {
+            x_min = x_min.min(p.x);
+            x_max = x_max.max(p.x);
+            z_min = z_min.min(p.z);
+            z_max = z_max.max(p.z);
+        }
+        let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
+        let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
+        Mapping { per_unit, z_lo, z_hi, x_lo, x_hi }
+    }
+
+    fn px_z(&self, z: f64) -> f64 {
+        PLOT_LEFT + (z - self.z_lo) / (self.z_hi - self.z_lo) * (PLOT_RIGHT - PLOT_LEFT)
+    }
+
+    fn px_x(&self, x: f64) -> f64 {
+        PLOT_BOTTOM - (x - self.x_lo) / (self.x_hi - self.x_lo) * (PLOT_BOTTOM - PLOT_TOP)
+    }
+
+    /// The pixel of `p`.
+    pub(super) fn px(&self, p: Point) -> (f64, f64) {
+        (self.px_z(units_of(p.z, self.per_unit)), self.px_x(units_of(p.x, self.per_unit)))
+    }
+
+    /// Increments per unit (mm or inch).
+    pub(super) fn per_unit(&self) -> i64 {
+        self.per_unit
+    }
+
+    /// Pixels per unit along Z and along X.
+    pub(super) fn scales(&self) -> (f64, f64) {
+        (
+            (PLOT_RIGHT - PLOT_LEFT) / (self.z_hi - self.z_lo),
+            (PLOT_BOTTOM - PLOT_TOP) / (self.x_hi - self.x_lo),
+        )
+    }
+}
+
+/// The plot frame, grid, ticks and axis labels.
+pub(super) fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> Group {
+    g = g.add(
+        Rectangle::new()
+            .set("x", PLOT_LEFT)
+            .set("y", PLOT_TOP)
+            .set("width", PLOT_RIGHT - PLOT_LEFT)
+            .set("height", PLOT_BOTTOM - PLOT_TOP)
+            .set("fill", "none")
+            .set("stroke", "#333333"),
+    );
+    let (zs, zdec) = ticks(m.z_lo, m.z_hi, 10.0);
+    for z in zs {
+        let x = num(m.px_z(z));
+        g = g
+            .add(
+                Line::new()
+                    .set("x1", x.as_str())
+                    .set("x2", x.as_str())
+                    .set("y1", PLOT_TOP)
+                    .set("y2", PLOT_BOTTOM)
+                    .set("stroke", GRID),
+            )
+            .add(
+                Line::new()
+                    .set("x1", x.as_str())
+                    .set("x2", x.as_str())
+                    .set("y1", PLOT_BOTTOM)
+                    .set("y2", PLOT_BOTTOM + 5.0)
+                    .set("stroke", "#333333"),
+            )
+            .add(
+                Text::new(format!("{:.*}", zdec, z + 0.0))
+                    .set("x", x.as_str())
+                    .set("y", PLOT_BOTTOM + 19.0)
+                    .set("font-size", 12)
+                    .set("text-anchor", "middle"),
+            );
+    }
+    let (xs, xdec) = ticks(m.x_lo, m.x_hi, 8.0);
+    for v in xs {
+        let y = num(m.px_x(v));
+        g = g
+            .add(
+                Line::new()
+                    .set("x1", PLOT_LEFT)
+                    .set("x2", PLOT_RIGHT)
+                    .set("y1", y.as_str())
+                    .set("y2", y.as_str())
+                    .set("stroke", GRID),
+            )
+            .add(
+                Line::new()
+                    .set("x1", PLOT_LEFT - 5.0)
+                    .set("x2", PLOT_LEFT)
+                    .set("y1", y.as_str())
+                    .set("y2", y.as_str())
+                    .set("stroke", "#333333"),
+            )
+            .add(
+                Text::new(format!("{:.*}", xdec, v + 0.0))
+                    .set("x", PLOT_LEFT - 8.0)
+                    .set("y", y.as_str())
+                    .set("dy", "0.35em")
+                    .set("font-size", 12)
+                    .set("text-anchor", "end"),
+            );
+    }
+    let mid_y = num((PLOT_TOP + PLOT_BOTTOM) / 2.0);
+    g.add(
+        Text::new(format!("Z ({})", unit))
+            .set("x", num((PLOT_LEFT + PLOT_RIGHT) / 2.0))
+            .set("y", PLOT_BOTTOM + 42.0)
+            .set("font-size", 13)
+            .set("text-anchor", "middle"),
+    )
+    .add(
+        Text::new(format!("X ({x_kind}, {})", unit))
+            .set("x", 24)
+            .set("y", mid_y.as_str())
+            .set("font-size", 13)
+            .set("text-anchor", "middle")
+            .set("transform", format!("rotate(-90 24 {mid_y})")),
+    )
+}
+
+/// `[lo, hi]` widened by `fraction` of its span on each side (by half a
+/// unit when the span is empty).
+fn padded(lo: f64, hi: f64, fraction: f64) -> (f64, f64) {
+    let span = hi - lo;
+    if span > 0.0 {
+        (lo - span * fraction, hi + span * fraction)
+    } else {
+        (lo - 0.5, hi + 0.5)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nice_ticks() {
+        let (v, d) = ticks(-67.0, 15.0, 10.0);
+        assert_eq!(d, 0);
+        assert_eq!(v.first().copied(), Some(-60.0));
+        assert_eq!(v.last().copied(), Some(10.0));
+        let (v, d) = ticks(0.12, 0.93, 8.0);
+        assert_eq!(d, 1);
+        assert_eq!(v.len(), 8);
+    }
+
+    #[test]
+    fn ramp_ends() {
+        assert_eq!(ramp(1, 5), "#6baed6");
+        assert_eq!(ramp(5, 5), "#08306b");
+        assert_eq!(ramp(1, 1), "#08306b");
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(num(-0.01), "0");
+        assert_eq!(num(12.345), "12.3");
+        assert_eq!(num(7.0), "7");
+    }
+}

@@ -1,0 +1,72 @@
+//! The panel of a program's G32 blocks in `cycleref plot`.
+//!
+//! G32 blocks are plain thread moves, usually many short ones cut pass by
+//! pass, so all of a program's blocks share one panel: each block's thread
+//! moves in a blue ramp by block order, its run-out green, and a circle
+//! where the spindle synchronises (the start of a block that is not a
+//! continuation of the one before). The moves between the blocks are the
+//! program's own and are not drawn.
+
+use cycleref::{Move, Role};
+use cycleref_spec::reader::G32Call;
+use svg::node::element::{Circle, Group, Line, Title};
+
+use super::canvas::{draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, POINT, RUN_OUT};
+
+/// One panel with every G32 block of the program (`threads`, at least one).
+pub(super) fn panel(name: &str, threads: &[(G32Call<'_>, Vec<Move>)]) -> Group {
+    let first = &threads[0].0;
+    let per_unit = first.g32.units.per_unit();
+    let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
+    let map = Mapping::around(points, per_unit);
+    let lines = format!("lines {}-{}", first.block.line, threads[threads.len() - 1].0.block.line);
+    let mut g = heading(
+        Group::new(),
+        format!("{name} \u{2014} G32 blocks ({lines})"),
+        format!(
+            "{} block{}; blue: thread, green: run-out, circles: where the spindle synchronises",
+            threads.len(),
+            if threads.len() == 1 { "" } else { "s" }
+        ),
+    );
+    g = draw_axes(g, &map, unit_name(first.g32.units.unit), x_kind(first.g32.x_mode));
+    let total = u32::try_from(threads.len()).unwrap_or(u32::MAX);
+    for (i, (call, moves)) in threads.iter().enumerate() {
+        let mut at = call.g32.start;
+        if call.g32.sync {
+            let (x, y) = map.px(at);
+            g = g.add(
+                Circle::new()
+                    .set("cx", num(x))
+                    .set("cy", num(y))
+                    .set("r", 4)
+                    .set("fill", "none")
+                    .set("stroke", POINT)
+                    .add(Title::new(format!("line {}: synchronisation starts", call.block.line))),
+            );
+        }
+        for m in moves {
+            let (x1, y1) = map.px(at);
+            let (x2, y2) = map.px(m.to);
+            let run_out = m.role == Role::RunOut;
+            let colour =
+                if run_out { RUN_OUT.to_string() } else { ramp(u32::try_from(i + 1).unwrap_or(1), total) };
+            g = g.add(
+                Line::new()
+                    .set("x1", num(x1))
+                    .set("y1", num(y1))
+                    .set("x2", num(x2))
+                    .set("y2", num(y2))
+                    .set("stroke", colour)
+                    .set("stroke-width", if run_out { 3.0 } else { 1.8 })
+                    .add(Title::new(format!(
+                        "line {}: {}",
+                        call.block.line,
+                        crate::format::role_name(m.role)
+                    ))),
+            );
+            at = m.to;
+        }
+    }
+    g
+}

@@ -1,0 +1,251 @@
+//! SVG drawing of toolpaths (`cycleref plot`).
+//!
+//! Each cycle gets one panel, stacked vertically: every G76 cycle in
+//! order, then one panel with all the G32 blocks, then every G75.1 cycle.
+//! A panel draws the toolpath in the XZ plane as on a lathe drawing: Z
+//! horizontal (increasing to the right), X vertical (increasing upwards).
+//! X is drawn as programmed: the diameter when X words are diameters, the
+//! radius otherwise, so the tick labels read like the X words of the
+//! program; the axis label says which. The two axes have their own scales
+//! (threads are long and shallow), and the G76 panel's subtitle says so
+//! when they differ.
+//!
+//! What is drawn:
+//!
+//! * rapids (G00) as dashed grey lines;
+//! * the thread cut of every pass in its own colour: rough passes on a ramp
+//!   from light blue (first, shallowest) to dark blue (last, deepest),
+//!   finishing passes in red;
+//! * run-outs (退尾) as thick green lines and lead-ins (旋进) as thick purple
+//!   lines;
+//! * the points A (start), B (depth reference), C (thread start) and D
+//!   (thread end) of the manual, with their coordinates in the legend;
+//! * for G75.1, the groove's profile and roughing region under the pecks
+//!   and contours.
+//!
+//! The modules: `canvas` holds what every panel shares (the plot
+//! area, the palette, the mapping from increments to pixels, the axes, the
+//! heading, the number format); `g76`, `g32` and `g75` draw their cycle's
+//! panel on it; this module reads the program ([`run`]) and stacks the
+//! panels into the page. The output depends only on the input: no clock,
+//! no hash order, so the same program gives the same bytes.
+
+use std::collections::BTreeSet;
+
+use cycleref::{Move, Point};
+use cycleref_spec::reader::{G32Call, G76Call};
+use svg::node::element::{Group, Line, Rectangle};
+use svg::Document;
+
+use canvas::num;
+
+mod canvas;
+mod g32;
+mod g75;
+mod g76;
+
+/// Width of the picture (px).
+const WIDTH: f64 = 1200.0;
+/// Height of one panel (px).
+const PANEL_HEIGHT: f64 = 560.0;
+
+/// Draws the cycles as an SVG document, one panel per cycle.
+///
+/// # Errors
+///
+/// A message when there is no cycle to draw or a cycle has no geometry.
+fn svg(
+    name: &str,
+    cycles: &[(G76Call<'_>, Vec<Move>)],
+    threads: &[(G32Call<'_>, Vec<Move>)],
+    grooves: &[g75::Groove<'_>],
+    overlay: Option<&Overlay>,
+) -> Result<String, String> {
+    if cycles.is_empty() && threads.is_empty() && grooves.is_empty() {
+        return Err(format!("{name}: no G76 cycle, G32 block or G75.1 cycle to plot"));
+    }
+    let panels = cycles.len() + usize::from(!threads.is_empty()) + grooves.len();
+    let height = PANEL_HEIGHT * count(panels);
+    let mut doc = Document::new()
+        .set("width", WIDTH)
+        .set("height", height)
+        .set("viewBox", (0, 0, WIDTH, height))
+        .set("font-family", "DejaVu Sans, Helvetica, Arial, sans-serif")
+        .add(Rectangle::new().set("width", "100%").set("height", "100%").set("fill", "#ffffff"));
+    for (index, (call, moves)) in cycles.iter().enumerate() {
+        let panel = g76::Panel::new(name, call, moves)?;
+        let mut group = panel.draw();
+        if let Some(o) = overlay {
+            let points = o.per_cycle.get(index).map_or(&[][..], Vec::as_slice);
+            group = panel.draw_overlay(group, &o.name, points, index);
+        }
+        doc = place(doc, group, index, true);
+    }
+    if !threads.is_empty() {
+        // The G32 panel has no rule above it (as it always had).
+        doc = place(doc, g32::panel(name, threads), cycles.len(), false);
+    }
+    let before = cycles.len() + usize::from(!threads.is_empty());
+    for (i, groove) in grooves.iter().enumerate() {
+        doc = place(doc, groove.draw(name), before + i, true);
+    }
+    Ok(format!("{doc}\n"))
+}
+
+/// Adds the panel `group` to `doc` in panel slot `slot` (0 at the top):
+/// below the first, moved down to its slot, with a grey rule above it when
+/// `rule` is set.
+fn place(mut doc: Document, group: Group, slot: usize, rule: bool) -> Document {
+    if slot == 0 {
+        return doc.add(group);
+    }
+    let top = num(PANEL_HEIGHT * count(slot));
+    let group = group.set("transform", format!("translate(0 {top})"));
+    if rule {
+        doc = doc.add(
+            Line::new()
+                .set("x1", 0)
+                .set("x2", WIDTH)
+                .set("y1", top.as_str())
+                .set("y2", top.as_str())
+                .set("stroke", "#bbbbbb"),
+        );
+    }
+    doc.add(group)
+}
+
+/// `n` as a float (counts here are far below 2^52).
+#[allow(clippy::cast_precision_loss)]
+fn count(n: usize) -> f64 {
+    n as f64
+}
+
+/// A vendor's toolpath to draw over ours (`cycleref plot --trace`).
+pub struct Overlay {
+    /// The trace's name, for the label.
+    pub name: String,
+    /// For each G76 cycle drawn, in order, the trace's points in order (in
+    /// increments) that correspond to its moves (`check::overlay`).
+    pub per_cycle: Vec<Vec<Point>>,
+    /// Points left out beyond [`MAX_OVERLAY_POINTS`] a cycle.
+    pub dropped: usize,
+}
+
+/// The most trace points drawn over one cycle.
+pub const MAX_OVERLAY_POINTS: usize = 50_000;
+
+/// The most cycles `plot` draws when no `--line` picks them: beyond this
+/// a drawing is no longer a picture a person can read (and its file grows
+/// with every panel). Counted: each G76 and G75.1 cycle and each G32 block.
+pub const MAX_CYCLES: usize = 24;
+
+/// Draws `job`'s cycles: those whose line (block 2 of G76 and G75.1,
+/// either block of G75.1, the G32 block) is in `lines`, or without
+/// `lines`, the first [`MAX_CYCLES`]. Returns the SVG document and, when
+/// that limit left cycles out (never with `lines`), a note for the user
+/// saying how many and how to pick others.
+///
+/// # Errors
+///
+/// The program's first error, a line of `lines` with no cycle, or nothing
+/// to draw.
+pub fn run(
+    job: &crate::Job,
+    lines: &[usize],
+    trace: Option<&std::path::Path>,
+) -> Result<(String, Option<String>), crate::Failure> {
+    use cycleref_spec::pipeline::Cycle;
+    use cycleref_spec::reader::Item;
+    job.validate()?;
+    let mut cycles = Vec::new();
+    let mut threads = Vec::new();
+    let mut grooves = Vec::new();
+    let (mut total, mut drawn) = (0_usize, 0_usize);
+    // Where each G76 cycle drawn lies in the whole toolpath, by move index.
+    let (mut position, mut ranges) = (0_usize, Vec::new());
+    let mut found = BTreeSet::new();
+    // The program is read as everywhere (a file a line at a time); the
+    // cycles drawn are kept, detached from the line they were read from.
+    job.for_each_item(
+        |f| f,
+        |item| {
+            let Some(cycle) = Cycle::of(&item) else {
+                // A block that moves is one move of the toolpath (as `check`
+                // counts them; approximately: a block to where the tool is
+                // counts too, which the overlay's slack absorbs).
+                if let Item::Source(b) = &item {
+                    position += usize::from(['X', 'Z', 'U', 'W'].iter().any(|&c| b.has(c)));
+                }
+                return Ok(());
+            };
+            total += 1;
+            let wanted = if lines.is_empty() {
+                drawn < MAX_CYCLES
+            } else {
+                let block1 = match cycle {
+                    Cycle::G75(c) => Some(c.params_line),
+                    _ => None,
+                };
+                let mut hit = false;
+                for l in [Some(cycle.line()), block1].into_iter().flatten() {
+                    if lines.contains(&l) {
+                        found.insert(l);
+                        hit = true;
+                    }
+                }
+                hit
+            };
+            if !wanted {
+                position += job.expand(cycle)?.count();
+                return Ok(());
+            }
+            drawn += 1;
+            let moves: Vec<Move> = job.expand(cycle)?.collect();
+            let from = position;
+            position += moves.len();
+            match &item {
+                Item::G76(call) => {
+                    ranges.push((from, position));
+                    cycles.push((call.detached(), moves));
+                }
+                Item::G32(call) => threads.push((call.detached(), moves)),
+                Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
+                Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
+            }
+            Ok(())
+        },
+    )?;
+    if let Some(missing) = lines.iter().find(|l| !found.contains(*l)) {
+        return Err(crate::Failure::msg(format!(
+            "{}: --line {missing}: no G76, G32 or G75.1 block at that line",
+            job.name
+        )));
+    }
+    // The trace, read now: for each G76 cycle drawn, its moves at the same
+    // places in the toolpath.
+    let overlay = match trace {
+        Some(t) => Some(crate::check::overlay(job, t, &ranges)?),
+        None => None,
+    };
+    let svg =
+        svg(&job.name, &cycles, &threads, &grooves, overlay.as_ref()).map_err(crate::Failure::Message)?;
+    // Only when cycles were left out by the limit: cycles picked with
+    // `--line` are what was asked for.
+    let note = (lines.is_empty() && drawn < total).then(|| {
+        format!(
+            "{}: drew {drawn} of {total} cycles (at most {MAX_CYCLES} without --line); pick others with \
+             --line N, N the line of a G76 or G75.1 block or of a G32 block (repeatable)",
+            job.name
+        )
+    });
+    let dropped = overlay.as_ref().map_or(0, |o| o.dropped);
+    let note = match (note, dropped) {
+        (note, 0) => note,
+        (note, n) => Some(format!(
+            "{}{}: the trace's first {MAX_OVERLAY_POINTS} points over each cycle are drawn, {n} more are not",
+            note.map_or(String::new(), |s| s + "\n"),
+            job.name
+        )),
+    };
+    Ok((svg, note))
+}

@@ -1,0 +1,647 @@
+//! `cycleref vectors`: a corpus of conformance vectors.
+//!
+//! Each case is a program, the machine it runs on (profile, increment
+//! system, unit, X mode, calculator-type input, pass limit and every
+//! parameter) and what the manual says must happen: the moves of every
+//! cycle, exactly as `cycleref expand --format json` prints them, or the
+//! alarm (line, stable kind name, message). The schema, the tags and the
+//! way a vendor uses the files are documented in `vectors/README.md`.
+//!
+//! # How a case is made
+//!
+//! 1. **Seed.** Case `i` draws from a pseudo-random stream that depends
+//!    only on `(seed, i)` (`Rng`: splitmix64, no floating point, no hash
+//!    maps), so the same count and seed give the same bytes and a larger
+//!    count extends a smaller one.
+//! 2. **Template.** The template of case `i` depends on `i` alone
+//!    (`template`): 3 slots in 5 take the valid templates of `TEMPLATES`
+//!    in turn, 2 in 5 the refused ones, and the first 90 cases (the
+//!    checked-in corpus) use every template at least once. A template is
+//!    one `Template` entry, declared beside its generator in the module of
+//!    its cycle (`g76`, `g32`, `g75`) or in `refused`: its id, what it must
+//!    turn out to be (`Expected`: valid with some features, or refused with
+//!    an error kind the compiler checks), its tags and description, and the
+//!    generator.
+//! 3. **Draft.** The generator writes a `Draft`: the machine
+//!    (`machine::Ctx`, also the style the words are written in) and the
+//!    program's lines, with what the variant it drew adds to the entry.
+//! 4. **Evaluation.** The program is read and every cycle expanded by both
+//!    the fixed-point engine and the exact reference model (`evaluate`);
+//!    a cycle where the two differ is not written: the run fails naming
+//!    the case, so the generator is a differential check as well as a
+//!    corpus writer. The features a valid program shows are read from its
+//!    cycles and moves (each cycle module's `tags`).
+//! 5. **Fit.** A draft that is not what its entry expects (a refusal of
+//!    another kind, too many moves, a feature missing) is dropped and the
+//!    generator drafts again from where the stream is, up to `ATTEMPTS`
+//!    times.
+//! 6. **Writing.** The case's JSON (`make_case`) is written in the
+//!    corpus's text form (`to_text`), and `index.json` lists them all.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+use cycleref::{CycleError, IncrementSystem, InputUnit, Move, Units, XMode};
+use cycleref_spec::{read, ErrorKind, Machine, ProgramError};
+use serde_json::{json, Value};
+
+use crate::json::{CycleJson, UnitsJson};
+use cycleref_spec::pipeline::{expand, Cycle, Engine};
+
+mod g32;
+mod g75;
+mod g76;
+mod machine;
+mod refused;
+
+use machine::Ctx;
+
+/// Schema of a case file.
+const CASE_SCHEMA: &str = "cycleref-vector/1";
+/// Schema of `index.json`.
+const INDEX_SCHEMA: &str = "cycleref-vectors-index/1";
+/// Largest number of moves a valid case may expect (keeps the corpus small).
+const MAX_MOVES: usize = 60;
+/// Drafts tried per case before the generator gives up.
+const ATTEMPTS: u32 = 400;
+
+/// Writes `count` cases generated from `seed` into `out`, with `index.json`.
+/// Case files of an earlier run that are not part of this corpus
+/// (`case-NNNN.json` beyond `count`) are removed.
+///
+/// # Errors
+///
+/// A message naming the case when the engine and the reference model
+/// disagree on it, when no draft of its template fits, or when a file
+/// cannot be written.
+pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
+    if out.exists() && !out.is_dir() {
+        return Err(format!(
+            "--out {}: exists and is not a directory (vectors writes a directory of JSON files)",
+            out.display()
+        ));
+    }
+    std::fs::create_dir_all(out)
+        .map_err(|e| format!("--out {}: cannot create the directory: {e}", out.display()))?;
+    let mut entries = Vec::new();
+    let mut tag_counts: BTreeMap<String, u32> = BTreeMap::new();
+    let mut files = BTreeSet::new();
+    let (mut valid, mut refused) = (0_u32, 0_u32);
+    for index in 1..=count {
+        let case = make_case(seed, index)?;
+        let file = format!("{}.json", case.id);
+        std::fs::write(out.join(&file), to_text(&case.json))
+            .map_err(|e| format!("{}: cannot write: {e}", out.join(&file).display()))?;
+        for t in &case.tags {
+            *tag_counts.entry(t.clone()).or_default() += 1;
+        }
+        if case.kind.is_some() {
+            refused += 1;
+        } else {
+            valid += 1;
+        }
+        entries.push(json!({
+            "id": case.id,
+            "file": file,
+            "description": case.description,
+            "expect": if case.kind.is_some() { "error" } else { "moves" },
+            "kind": case.kind,
+            "tags": case.tags,
+        }));
+        files.insert(file);
+    }
+    remove_stale(out, &files)?;
+    let index = json!({
+        "schema": INDEX_SCHEMA,
+        "seed": seed,
+        "count": count,
+        "tags": tag_counts,
+        "cases": entries,
+    });
+    std::fs::write(out.join("index.json"), to_text(&index))
+        .map_err(|e| format!("{}: cannot write: {e}", out.join("index.json").display()))?;
+    Ok(format!(
+        "wrote {count} cases ({valid} with moves, {refused} refused) and index.json to {}\n",
+        out.display()
+    ))
+}
+
+/// Removes `case-NNNN.json` files of an earlier, larger run.
+fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
+    let dir = std::fs::read_dir(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    for entry in dir.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let is_case = name
+            .strip_prefix("case-")
+            .and_then(|n| n.strip_suffix(".json"))
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+        if is_case && !keep.contains(&name) {
+            std::fs::remove_file(entry.path()).map_err(|e| format!("{}: {e}", entry.path().display()))?;
+        }
+    }
+    Ok(())
+}
+
+// ---- stable names of the error kinds ----
+
+/// The stable name of what is wrong with a program, as written in the
+/// `expect.error.kind` field: [`ErrorKind::name`], and for a cycle alarm
+/// `cycle:` and [`CycleError::name`].
+pub fn kind_name(kind: &ErrorKind) -> String {
+    match kind {
+        ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
+        k => k.name().to_string(),
+    }
+}
+
+// ---- the pseudo-random stream ----
+
+/// splitmix64's output function.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// splitmix64: tiny, deterministic on every platform.
+struct Rng(u64);
+
+impl Rng {
+    /// The stream of case `index` under `seed`: it depends on nothing else.
+    fn for_case(seed: u64, index: u32) -> Rng {
+        Rng(mix(seed ^ 0x6379_636c_6572_6566) ^ mix(u64::from(index).wrapping_mul(0xd1b5_4a32_d192_ed03)))
+    }
+
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        mix(self.0)
+    }
+
+    /// A value in `lo..=hi`.
+    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        let span = (hi - lo).unsigned_abs() + 1;
+        lo + i64::try_from(self.next() % span).unwrap_or(0)
+    }
+
+    /// True with probability `percent` / 100.
+    fn chance(&mut self, percent: u64) -> bool {
+        self.next() % 100 < percent
+    }
+
+    /// An index below `n` (`n` > 0).
+    fn index(&mut self, n: usize) -> usize {
+        let n = u64::try_from(n).unwrap_or(1).max(1);
+        usize::try_from(self.next() % n).unwrap_or(0)
+    }
+
+    /// One of `items`.
+    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.index(items.len())]
+    }
+
+    fn sign(&mut self) -> i64 {
+        if self.chance(50) {
+            1
+        } else {
+            -1
+        }
+    }
+}
+
+// ---- templates and drafts ----
+
+/// Whether an error is of the kind a template expects: a `matches!` over
+/// the reader's [`ErrorKind`], a cycle's alarm being
+/// `ErrorKind::Cycle(CycleError::…)`, so that the compiler checks every
+/// kind a template names. A kind's stable name ([`kind_name`], the one the
+/// corpus writes) is one per variant, so matching the variant is matching
+/// the name.
+type Refusal = fn(&ErrorKind) -> bool;
+
+/// What every case of a template must turn out to be.
+enum Expected {
+    /// A valid program of 1 to [`MAX_MOVES`] moves whose computed tags
+    /// include these.
+    Valid(&'static [&'static str]),
+    /// A program refused with an error of this kind.
+    Refused(Refusal),
+}
+
+/// One template: an entry of [`TEMPLATES`], declared beside its generator.
+struct Template {
+    /// Names the template in messages (unique).
+    id: &'static str,
+    /// What its cases must be; a draft that is not is drafted again.
+    outcome: Expected,
+    /// Tags every case of the template carries: its `template:` or
+    /// `refuse:` tag first, then the rules it shows.
+    tags: &'static [&'static str],
+    /// The description of its cases, unless the draft writes its own
+    /// naming the variant it drew.
+    description: &'static str,
+    /// The generator: one draft from the case's stream.
+    generate: fn(&mut Rng) -> Draft,
+}
+
+/// One case as a generator drafts it, before it is checked: the machine,
+/// the program, and what the variant drawn adds to its template's entry.
+struct Draft {
+    ctx: Ctx,
+    lines: Vec<String>,
+    /// The case's description, when the variant drawn has its own.
+    description: Option<String>,
+    /// Tags of the variant drawn, beside the template's.
+    tags: Vec<&'static str>,
+    /// Features the variant drawn must show, beside the template's.
+    requires: &'static [&'static str],
+    /// The kind the variant drawn must be refused with, where the
+    /// template's allows several.
+    refusal: Option<Refusal>,
+}
+
+impl Draft {
+    fn new(ctx: Ctx, lines: Vec<String>) -> Draft {
+        Draft { ctx, lines, description: None, tags: Vec::new(), requires: &[], refusal: None }
+    }
+
+    fn described(mut self, description: String) -> Draft {
+        self.description = Some(description);
+        self
+    }
+
+    /// Adds `tag` when `on`.
+    fn tag_if(mut self, on: bool, tag: &'static str) -> Draft {
+        if on {
+            self.tags.push(tag);
+        }
+        self
+    }
+
+    fn requiring(mut self, tags: &'static [&'static str]) -> Draft {
+        self.requires = tags;
+        self
+    }
+
+    fn refused_as(mut self, kind: Refusal) -> Draft {
+        self.refusal = Some(kind);
+        self
+    }
+}
+
+// ---- the template schedule ----
+
+/// Every template. The valid ones take the valid slots in this order, the
+/// refused ones the refused slots. Case `i`'s template depends on this
+/// list: reordering it or adding a template changes the corpus, and the
+/// checked-in one is then written again (`vectors/README.md`).
+const TEMPLATES: &[&Template] = &[
+    &g76::BASIC,
+    &g76::D1,
+    &g76::D2,
+    &g76::LEAD_IN,
+    &g76::MULTI_START,
+    &g76::RUNOUT_980,
+    &g76::RUNOUT_988,
+    &g76::CHAMFER,
+    &g76::X_LONG,
+    &g32::PASSES,
+    &g76::ONE_PASS,
+    &g76::MIN_CUT,
+    &g76::EXACT,
+    &g76::D_EQUALS_K,
+    &g32::FACE,
+    &g76::I_LEAD,
+    &g76::PARAMS_MODAL,
+    &g32::RUNOUT_980,
+    &g76::FANUC_BARE,
+    &g76::PARTIAL_P,
+    &g32::CONTINUOUS,
+    &g76::TAPER,
+    &g76::RUNOUT_988_K_ONLY,
+    &g32::RUNOUT_988,
+    &g76::FANUC_CALC,
+    &g75::SEED,
+    &g75::SQUARE,
+    &g75::CORNERS,
+    &g75::SLOPE,
+    &g75::INTERNAL,
+    &refused::MISSING_P,
+    &refused::MISSING_Q,
+    &refused::MIN_CUT,
+    &refused::ALLOWANCE,
+    &refused::RUN_OUT_LONG,
+    &refused::NO_SPINDLE,
+    &refused::FACE_THREAD,
+    &refused::OUT_OF_RANGE,
+    &refused::FANUC_POINT,
+    &refused::PARTIAL_P,
+    &refused::ADDRESS,
+    &refused::G32_NO_END,
+    &refused::G32_ZERO_LEAD,
+    &refused::TOO_MANY,
+    &refused::START_INSIDE,
+    &refused::TOO_SHORT,
+    &refused::LEAD_IN_X,
+    &refused::G32_NO_MOTION,
+    &refused::G32_RUN_OUT_LONG,
+    &refused::NOT_IN_INCREMENTS,
+    &refused::POSITION_UNKNOWN,
+    &refused::PASS_OUT_OF_RANGE,
+    &refused::UNIT_CHANGE,
+    &refused::MISC,
+    &refused::G75_MISSING,
+    &refused::G75_LONE,
+    &refused::G75_ANGLE,
+    &refused::G75_SLOPE,
+    &refused::G75_ALLOWANCE,
+    &refused::G75_CORNER,
+    &refused::G75_NARROW,
+    &refused::G75_RIDGES,
+    &refused::G75_WORD,
+    &refused::G75_NO_DEPTH,
+    &refused::G75_TOO_MANY_PECKS,
+];
+
+/// The templates of one kind (refused or valid), in schedule order.
+fn templates(refused: bool) -> Vec<&'static Template> {
+    TEMPLATES.iter().copied().filter(|t| matches!(t.outcome, Expected::Refused(_)) == refused).collect()
+}
+
+/// The template of case `index` (1-based): slots 2 and 4 of every 5 are
+/// refused programs, the others valid ones; each kind cycles through its
+/// templates.
+fn template(index: u32) -> &'static Template {
+    let s = usize::try_from(index - 1).unwrap_or(0);
+    let (group, pos) = (s / 5, s % 5);
+    let (pool, n) = match pos {
+        1 | 3 => (templates(true), group * 2 + usize::from(pos == 3)),
+        _ => (templates(false), group * 3 + pos / 2),
+    };
+    pool[n % pool.len()]
+}
+
+// ---- checking a draft ----
+
+/// What a program does: the cycles' JSON, or the first error.
+struct Evaluated {
+    outcome: Result<(Units, Vec<Value>), ProgramError>,
+    tags: BTreeSet<String>,
+    moves: usize,
+}
+
+/// Reads and expands a program with both engines.
+///
+/// # Errors
+///
+/// A message naming the case when the engine and the reference differ.
+fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String> {
+    let mut tags = BTreeSet::new();
+    let program = match read(text, machine) {
+        Ok(p) => p,
+        Err(e) => return Ok(Evaluated { outcome: Err(e), tags, moves: 0 }),
+    };
+    let mut cycles = Vec::new();
+    let mut count = 0;
+    for item in &program.items {
+        let Some(cycle) = Cycle::of(item) else { continue };
+        let engine = expand(cycle, Engine::Impl).map(Iterator::collect::<Vec<_>>);
+        let reference = expand(cycle, Engine::Spec).map(Iterator::collect::<Vec<_>>);
+        same(id, cycle.code(), cycle.line(), &engine, &reference)?;
+        match engine {
+            Ok(moves) => {
+                match cycle {
+                    Cycle::G76(call) => g76::tags(call, &moves, &mut tags),
+                    Cycle::G32(call) => g32::tags(call, &moves, &mut tags),
+                    Cycle::G75(call) => g75::tags(call, &moves, &mut tags),
+                }
+                count += moves.len();
+                let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
+                cycles.push(serde_json::to_value(CycleJson::new(cycle, typed)).map_err(|e| e.to_string())?);
+            }
+            Err(e) => {
+                let error = ProgramError { line: cycle.line(), word: None, kind: ErrorKind::Cycle(e) };
+                return Ok(Evaluated { outcome: Err(error), tags, moves: count });
+            }
+        }
+    }
+    Ok(Evaluated { outcome: Ok((program.units, cycles)), tags, moves: count })
+}
+
+/// The differential check: the engine must equal the reference.
+fn same(
+    id: &str,
+    cycle: &str,
+    line: usize,
+    engine: &Result<Vec<Move>, CycleError>,
+    reference: &Result<Vec<Move>, CycleError>,
+) -> Result<(), String> {
+    if engine == reference {
+        return Ok(());
+    }
+    let detail = match (engine, reference) {
+        (Ok(a), Ok(b)) => {
+            let i = a.iter().zip(b).position(|(x, y)| x != y).unwrap_or(a.len().min(b.len()));
+            format!(
+                "{} moves against {}; first difference at move {}: engine {:?}, reference {:?}",
+                a.len(),
+                b.len(),
+                i + 1,
+                a.get(i),
+                b.get(i)
+            )
+        }
+        (a, b) => format!(
+            "engine {:?}, reference {:?}",
+            a.as_ref().map(Vec::len).map_err(|e| e.to_string()),
+            b.as_ref().map(Vec::len).map_err(|e| e.to_string())
+        ),
+    };
+    Err(format!("{id}: {cycle} at line {line}: the engine and the reference model differ: {detail}"))
+}
+
+fn units_json(u: Units) -> Value {
+    serde_json::to_value(UnitsJson::new(u)).unwrap_or(Value::Null)
+}
+
+fn tag(tags: &mut BTreeSet<String>, t: &str) {
+    tags.insert(t.to_string());
+}
+
+// ---- a case ----
+
+/// A case ready to write.
+struct Case {
+    id: String,
+    description: String,
+    tags: Vec<String>,
+    /// The expected error kind, for a refused program.
+    kind: Option<String>,
+    json: Value,
+}
+
+/// Case `index`: drafts of its template until one is what the template's
+/// entry expects.
+fn make_case(seed: u64, index: u32) -> Result<Case, String> {
+    let id = format!("case-{index:04}");
+    let mut rng = Rng::for_case(seed, index);
+    let template = template(index);
+    for _ in 0..ATTEMPTS {
+        let draft = (template.generate)(&mut rng);
+        let (toml, machine_json) = draft.ctx.settings();
+        let mut machine = Machine::new(draft.ctx.profile);
+        machine
+            .apply_toml(&toml)
+            .map_err(|e| format!("{id}: the generated parameter file is refused: {e}"))?;
+        let mut program = draft.lines.join("\n");
+        program.push('\n');
+        let ev = evaluate(&id, &machine, &program)?;
+        let fits = match (&template.outcome, &ev.outcome) {
+            (Expected::Valid(required), Ok(_)) => {
+                ev.moves > 0
+                    && ev.moves <= MAX_MOVES
+                    && required.iter().chain(draft.requires).all(|t| ev.tags.contains(*t))
+            }
+            (Expected::Refused(kind), Err(e)) => kind(&e.kind) && draft.refusal.is_none_or(|k| k(&e.kind)),
+            _ => false,
+        };
+        if !fits {
+            continue;
+        }
+        let ctx = &draft.ctx;
+        let description = draft.description.unwrap_or_else(|| template.description.to_string());
+        let mut tags: BTreeSet<String> =
+            template.tags.iter().chain(&draft.tags).map(|t| (*t).to_string()).collect();
+        tags.insert(format!("profile:{}", ctx.profile));
+        tags.insert(
+            match ctx.increment {
+                IncrementSystem::IsB => "increment:is-b",
+                IncrementSystem::IsC => "increment:is-c",
+            }
+            .into(),
+        );
+        tags.insert(if ctx.unit == InputUnit::Metric { "unit:mm" } else { "unit:inch" }.into());
+        if ctx.g20 {
+            tags.insert("unit:g20".into());
+        }
+        tags.insert(if ctx.x == XMode::Diameter { "x:diameter" } else { "x:radius" }.into());
+        tags.insert(if ctx.pq_in_increments() { "pq:increments" } else { "pq:mm" }.into());
+        if ctx.calculator_input {
+            tags.insert("fanuc:calculator-input".into());
+        }
+        if ctx.bare {
+            tags.insert("fanuc:bare-increments".into());
+        }
+        let (expect, kind) = match ev.outcome {
+            Ok((units, cycles)) => {
+                tags.insert("valid".into());
+                tags.extend(ev.tags);
+                (json!({"units": units_json(units), "moves": cycles}), None)
+            }
+            Err(e) => {
+                let kind = kind_name(&e.kind);
+                tags.insert("refused".into());
+                tags.insert(format!("error:{kind}"));
+                let error = json!({"line": e.line, "word": e.word, "kind": kind, "message": e.to_string()});
+                (json!({ "error": error }), Some(kind))
+            }
+        };
+        let tags: Vec<String> = tags.into_iter().collect();
+        let json = json!({
+            "schema": CASE_SCHEMA,
+            "id": id,
+            "seed": seed,
+            "index": index,
+            "description": description,
+            "tags": tags,
+            "profile": ctx.profile.to_string(),
+            "machine": machine_json,
+            "machine_toml": toml,
+            "program": program,
+            "expect": expect,
+        });
+        return Ok(Case { id, description, tags, kind, json });
+    }
+    Err(format!("{id}: no draft of its template ({}) fitted in {ATTEMPTS} attempts", template.id))
+}
+
+// ---- JSON text ----
+
+/// Pretty JSON with one move (and one list of scalars, one flat object) per
+/// line: readable, diffable, and a third of the size of full pretty printing.
+fn to_text(v: &Value) -> String {
+    let mut s = String::new();
+    write_value(v, 0, &mut s);
+    s.push('\n');
+    s
+}
+
+fn scalar(v: &Value) -> bool {
+    !v.is_object() && !v.is_array()
+}
+
+fn write_value(v: &Value, indent: usize, out: &mut String) {
+    let compact = match v {
+        Value::Object(m) => m.contains_key("motion") || m.values().all(scalar),
+        Value::Array(a) => a.iter().all(scalar),
+        _ => true,
+    };
+    if compact {
+        out.push_str(&serde_json::to_string(v).unwrap_or_default());
+        return;
+    }
+    let pad = " ".repeat(indent + 2);
+    match v {
+        Value::Object(m) => {
+            out.push_str("{\n");
+            for (n, (key, val)) in m.iter().enumerate() {
+                out.push_str(&pad);
+                out.push_str(&serde_json::to_string(key).unwrap_or_default());
+                out.push_str(": ");
+                write_value(val, indent + 2, out);
+                out.push_str(if n + 1 < m.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&" ".repeat(indent));
+            out.push('}');
+        }
+        Value::Array(a) => {
+            out.push_str("[\n");
+            for (n, val) in a.iter().enumerate() {
+                out.push_str(&pad);
+                write_value(val, indent + 2, out);
+                out.push_str(if n + 1 < a.len() { ",\n" } else { "\n" });
+            }
+            out.push_str(&" ".repeat(indent));
+            out.push(']');
+        }
+        _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn template_ids_are_unique() {
+        let ids: BTreeSet<&str> = TEMPLATES.iter().map(|t| t.id).collect();
+        assert_eq!(ids.len(), TEMPLATES.len());
+    }
+
+    #[test]
+    fn the_first_90_cases_use_every_template() {
+        let used: BTreeSet<&str> = (1..=90).map(|i| template(i).id).collect();
+        let all: BTreeSet<&str> = TEMPLATES.iter().map(|t| t.id).collect();
+        assert_eq!(used, all);
+    }
+
+    #[test]
+    fn every_template_carries_its_tag_first() {
+        for t in TEMPLATES {
+            let prefix = match t.outcome {
+                Expected::Valid(_) => "template:",
+                Expected::Refused(_) => "refuse:",
+            };
+            assert!(t.tags.first().is_some_and(|tag| tag.starts_with(prefix)), "{}", t.id);
+        }
+    }
+}
