@@ -57,7 +57,7 @@ impl G75Call<'_> {
         G75Call {
             block: self.block.detached(),
             params_line: self.params_line,
-            cycle: self.cycle.clone(),
+            cycle: self.cycle,
             restore: self.restore,
         }
     }
@@ -76,7 +76,7 @@ impl G32Call<'_> {
     /// The call with its block [detached](Block::detached) from the text.
     #[must_use]
     pub fn detached(&self) -> G32Call<'static> {
-        G32Call { block: self.block.detached(), g32: self.g32.clone() }
+        G32Call { block: self.block.detached(), g32: self.g32 }
     }
 }
 
@@ -101,7 +101,7 @@ impl G76Call<'_> {
         G76Call {
             block: self.block.detached(),
             params_line: self.params_line,
-            cycle: self.cycle.clone(),
+            cycle: self.cycle,
             restore: self.restore,
         }
     }
