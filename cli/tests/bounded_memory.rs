@@ -17,7 +17,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
-use cycleref_cli::{output, Format, Job};
+use cycleref_cli::{output, plot, Format, Job};
 use cycleref_spec::pipeline::{Cycle, Engine};
 use cycleref_spec::{Machine, ProfileName, Reader};
 
@@ -259,6 +259,12 @@ fn a_program_in_a_file_is_never_held_whole() {
     assert_flat("expand nc from a file", N, measure(N, nc), measure(10 * N, nc));
     let passes: fn(&Job) = |job| output::passes(job, std::io::sink()).expect("tabulates");
     assert_flat("passes from a file", N, measure(N, passes), measure(10 * N, passes));
+    // Line 5 is the first cycle (O, G50, G00, G76 block 1 before it).
+    let plot: fn(&Job) = |job| {
+        let (svg, note) = plot::run(job, &[5], None).unwrap_or_else(|e| panic!("{}", String::from(e)));
+        assert!(svg.contains("G76 at line 5") && note.is_none());
+    };
+    assert_flat("plot --line 5 from a file", N, measure(N, plot), measure(10 * N, plot));
 }
 
 #[test]
