@@ -364,11 +364,21 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
 ///
 /// The program's first error (nothing written), or a failure to write.
 pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
-    job.validate()?;
+    let summary = job.validate()?;
     let mut out = io::BufWriter::with_capacity(1 << 16, out);
-    let written = g76_tables(job, &mut out)
-        .and_then(|()| groove_tables(job, &mut out))
-        .and_then(|()| thread_table(job, &mut out))
+    // One reading of the program per kind of table, and none for a kind
+    // the program does not have.
+    let table =
+        |n: usize, f: fn(&Job, &mut io::BufWriter<W>) -> io::Result<()>, out: &mut io::BufWriter<W>| {
+            if n > 0 {
+                f(job, out)
+            } else {
+                Ok(())
+            }
+        };
+    let written = table(summary.g76, g76_tables, &mut out)
+        .and_then(|()| table(summary.g75, groove_tables, &mut out))
+        .and_then(|()| table(summary.g32, thread_table, &mut out))
         .and_then(|()| out.flush());
     written.map_err(|e| Failure::output(&e))
 }

@@ -227,6 +227,12 @@ pub struct Summary {
     pub items: usize,
     /// The number of cycles.
     pub cycles: usize,
+    /// The number of G76 cycles.
+    pub g76: usize,
+    /// The number of G32 blocks.
+    pub g32: usize,
+    /// The number of G75.1 cycles.
+    pub g75: usize,
 }
 
 /// The first phase of a run (reading R-STREAM): reads every item of
@@ -253,14 +259,15 @@ pub fn validate(source: &[u8], machine: &Machine, engine: Engine) -> Result<Summ
 pub struct Validation {
     engine: Engine,
     items: usize,
-    cycles: usize,
+    /// Cycles by kind: G76, G32, G75.1.
+    cycles: [usize; 3],
 }
 
 impl Validation {
     /// Nothing checked yet; cycles will be expanded with `engine`.
     #[must_use]
     pub fn new(engine: Engine) -> Validation {
-        Validation { engine, items: 0, cycles: 0 }
+        Validation { engine, items: 0, cycles: [0; 3] }
     }
 
     /// Checks the next item of the program.
@@ -271,7 +278,11 @@ impl Validation {
     pub fn item(&mut self, item: &Item<'_>) -> Result<(), RunError> {
         self.items += 1;
         if let Some(cycle) = Cycle::of(item) {
-            self.cycles += 1;
+            self.cycles[match cycle {
+                Cycle::G76(_) => 0,
+                Cycle::G32(_) => 1,
+                Cycle::G75(_) => 2,
+            }] += 1;
             // Every alarm is raised before the first move: the moves are
             // not taken.
             expand_at(cycle, self.engine)?;
@@ -282,6 +293,7 @@ impl Validation {
     /// What was learnt, with the `units` the reader ended with.
     #[must_use]
     pub fn summary(&self, units: Units) -> Summary {
-        Summary { units, items: self.items, cycles: self.cycles }
+        let [g76, g32, g75] = self.cycles;
+        Summary { units, items: self.items, cycles: g76 + g32 + g75, g76, g32, g75 }
     }
 }
