@@ -461,6 +461,15 @@ impl Evaluator {
         self.slow().eval(&g, q).sign_tie().ok_or(CycleError::UndecidedRounding)
     }
 
+    /// The evaluator of a cycle after the checks that every use of its
+    /// geometry starts with: `validate()`, then the corners (§3).
+    pub(super) fn checked(c: &G75Cycle) -> Result<Evaluator, CycleError> {
+        c.validate()?;
+        let mut ev = Evaluator::new(Geometry::new(c));
+        ev.check_corners()?;
+        Ok(ev)
+    }
+
     /// §3: the corners must fit their edges (flank A, bottom, flank B).
     ///
     /// Twin: `spec/src/g75/geometry.rs`, `check_corners`.

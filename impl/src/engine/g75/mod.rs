@@ -183,16 +183,27 @@ enum Stage {
 /// every check was made before it was returned.
 #[derive(Clone, Debug)]
 pub struct G75Moves {
+    /// Local to absolute coordinates.
     frame: Frame,
-    geo: Geometry,
+    /// The words in the local frame (a layer's plunge range needs them).
+    geometry: Geometry,
+    /// The roughing region's boundaries at 128 bits.
     region: Region<FAST>,
+    /// Which part of the path comes next.
     stage: Stage,
+    /// Step 1, the rapid to A11, unless the tool is there already.
     approach: Option<Leg>,
+    /// J0 or J1: the cycle roughs.
     roughs: bool,
+    /// The roughing state.
     rough: Roughing,
+    /// The tool's local position `(u, y)` during the roughing.
     at: (i64, i64),
+    /// The precomputed moves after the roughing.
     tail: [Leg; TAIL],
+    /// How many of `tail` are moves.
     tail_len: usize,
+    /// The next move of `tail`.
     tail_next: usize,
 }
 
@@ -210,11 +221,9 @@ pub struct G75Moves {
 ///
 /// Twin: `spec/src/g75/mod.rs`, `expand`.
 pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
-    c.validate()?;
-    let g = Geometry::new(c);
+    let mut ev = Evaluator::checked(c)?;
+    let g = ev.g;
     let frame = Frame::new(c);
-    let mut ev = Evaluator::new(g);
-    ev.check_corners()?;
 
     let layers = Layers::new(c, &g);
     let rough_bottom = layers.rough_bottom;
@@ -338,7 +347,7 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     };
     Ok(G75Moves {
         frame,
-        geo: g,
+        geometry: g,
         region: ev.fast.r,
         stage: Stage::Approach,
         approach,

@@ -6,7 +6,7 @@
 //! beside the rounded ones.
 
 use super::contour::{finish_profile, rough_vertices, LocalSegment};
-use super::exact::{Evaluator, Geometry, Quantity};
+use super::exact::{Evaluator, Quantity};
 use super::frame::Frame;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
@@ -87,11 +87,8 @@ impl GrooveProfile {
 ///
 /// Twin: `spec/src/g75/profile.rs`, `profile`.
 pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
-    c.validate()?;
-    let g = Geometry::new(c);
+    let mut ev = Evaluator::checked(c)?;
     let frame = Frame::new(c);
-    let mut ev = Evaluator::new(g);
-    ev.check_corners()?;
     let (pts, n) = finish_profile(&mut ev)?;
     let y_top = ev.floor(Quantity::Y3)?;
     let (vs, m) = rough_vertices(&mut ev, y_top)?;
