@@ -41,13 +41,13 @@ impl Site {
     }
 }
 
-/// `engine::isqrt_floor`: Newton's loop on `u128` (x ≥ 2^64).
+/// `engine::arith::isqrt_floor`: Newton's loop on `u128` (x ≥ 2^64).
 #[cfg(feature = "loop-counters")]
 pub static ISQRT_U128: Site = Site::new("isqrt_floor: Newton on u128");
-/// `engine::isqrt_floor_u64`: Newton's loop on `u64`.
+/// `engine::arith::isqrt_floor_u64`: Newton's loop on `u64`.
 #[cfg(feature = "loop-counters")]
 pub static ISQRT_U64: Site = Site::new("isqrt_floor_u64: Newton on u64");
-/// `engine::check_pass_count`: the levels counted before any move.
+/// `engine::g76::check_pass_count`: the levels counted before any move.
 #[cfg(feature = "loop-counters")]
 pub static PASS_COUNT: Site = Site::new("check_pass_count: levels");
 /// `G76Moves::plan_next`: stages skipped to the next planned pass.

@@ -5,6 +5,7 @@
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::units::MAX_LENGTH;
 use cycleref::{CycleError, Field, G76Cycle, Infeed, Point, RunOut, Units, XMode};
+use cycleref_spec::differ::assert_same_moves;
 
 /// An internal thread (radius X) whose thread start C lies at X = end + i.
 fn at_the_edge(taper: i64) -> G76Cycle {
@@ -34,7 +35,7 @@ fn thread_start_exactly_at_the_range_limit_expands() {
     // C = 999 999 000 + 999 = MAX_LENGTH: every point is inside the range.
     let c = at_the_edge(999);
     let ours: Vec<_> = cycleref::expand_g76(&c).expect("inside the range").collect();
-    assert_eq!(Ok(ours.clone()), cycleref_spec::g76::expand(&c));
+    assert_same_moves(&Ok(ours.clone()), &cycleref_spec::g76::expand(&c), "the cycle at the range limit");
     assert_eq!(ours.iter().map(|m| m.to.x).max(), Some(MAX_LENGTH));
 }
 
@@ -63,7 +64,7 @@ fn g32(start: Point, end: Point, short: i64, long: i64) -> cycleref::G32Block {
 
 fn both(b: &cycleref::G32Block) -> Result<Vec<cycleref::Move>, CycleError> {
     let ours = cycleref::expand_g32(b).map(Iterator::collect::<Vec<_>>);
-    assert_eq!(ours, cycleref_spec::g32::expand(b));
+    assert_same_moves(&ours, &cycleref_spec::g32::expand(b), format_args!("{b:?}"));
     ours
 }
 

@@ -24,6 +24,7 @@ use cycleref::lead::{Lead, LeadWord};
 use cycleref::moves::{Flank, Motion, Move, PassKind, Role};
 use cycleref::units::{IncrementSystem, InputUnit, Point, Units, XMode, MAX_LENGTH};
 use cycleref::{CycleError, Length};
+use cycleref_spec::differ::assert_same_moves;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, TestRunner};
@@ -39,22 +40,7 @@ fn engine(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
 /// Both engines agree on `c`; returns the common result.
 fn same(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     let s = spec(c);
-    let e = engine(c);
-    if s != e {
-        // Report the first differing move, not two long vectors.
-        if let (Ok(s), Ok(e)) = (&s, &e) {
-            let at = s.iter().zip(e.iter()).position(|(a, b)| a != b);
-            panic!(
-                "moves differ for {c:?}: {} spec moves, {} engine moves, first difference at {at:?}: \
-                 spec {:?}, engine {:?}",
-                s.len(),
-                e.len(),
-                at.and_then(|i| s.get(i)),
-                at.and_then(|i| e.get(i)),
-            );
-        }
-        panic!("results differ for {c:?}:\n spec   {s:?}\n engine {e:?}");
-    }
+    assert_same_moves(&engine(c), &s, format_args!("{c:?}"));
     s
 }
 
@@ -756,7 +742,7 @@ fn huge_lead_is_refused_by_both() {
 fn constant_size_and_fused() {
     let size = std::mem::size_of::<G76Moves>();
     eprintln!("size_of::<G76Moves>() = {size}");
-    assert_eq!(size, 400, "G76Moves is now {size} bytes: update the module docs of cycleref::engine");
+    assert_eq!(size, 400, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
     let mut it = expand_g76(&m68x6()).unwrap();
     assert_eq!(it.by_ref().count(), 30);
     assert_eq!(it.next(), None);

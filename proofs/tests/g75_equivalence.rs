@@ -12,27 +12,14 @@
 
 use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType};
 use cycleref::{CycleError, IncrementSystem, InputUnit, Move, Point, Units, XMode};
+use cycleref_spec::differ::assert_same_moves;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
+/// Both engines agree on `c`; returns the common result.
 fn same(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
     let s = cycleref_spec::g75::expand(c);
-    let e: Result<Vec<Move>, CycleError> = cycleref::expand_g75(c).map(Iterator::collect);
-    if s != e {
-        if let (Ok(s), Ok(e)) = (&s, &e) {
-            let at = s.iter().zip(e.iter()).position(|(a, b)| a != b);
-            let show = |v: &Vec<Move>| at.and_then(|i| v.get(i).copied());
-            panic!(
-                "moves differ for {c:?}: {} reference moves, {} engine moves, first difference at {at:?}: \
-                 reference {:?}, engine {:?}",
-                s.len(),
-                e.len(),
-                show(s),
-                show(e)
-            );
-        }
-        panic!("results differ for {c:?}: reference {s:?}, engine {e:?}");
-    }
+    assert_same_moves(&cycleref::expand_g75(c).map(Iterator::collect), &s, format_args!("{c:?}"));
     s
 }
 

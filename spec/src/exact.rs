@@ -11,6 +11,9 @@ use rust_decimal::{Decimal, RoundingStrategy};
 
 /// `num / den` rounded to the nearest integer, ties away from zero.
 /// `den` must not be zero.
+///
+/// Twin: `impl/src/engine/arith.rs`, `round_div` (checked, for the
+/// engine).
 #[must_use]
 pub fn round_div(num: i128, den: i128) -> i128 {
     let (n, d) = if den < 0 { (-num, -den) } else { (num, den) };
@@ -24,6 +27,8 @@ pub fn round_div(num: i128, den: i128) -> i128 {
 }
 
 /// `ceil(num / den)` for `num >= 0`, `den > 0`.
+///
+/// Twin: `impl/src/engine/arith.rs`, `ceil_div` (any sign of `num`).
 #[must_use]
 pub fn ceil_div(num: i128, den: i128) -> i128 {
     (num + den - 1) / den
@@ -32,6 +37,9 @@ pub fn ceil_div(num: i128, den: i128) -> i128 {
 /// The integer nearest to `sqrt(x)`, found by bisection on its definition:
 /// the `s` with `(2s - 1)^2 <= 4x < (2s + 1)^2`. A tie is impossible: it
 /// would need `4x = (2s + 1)^2`, an odd square equal to a multiple of 4.
+///
+/// Twin: `impl/src/engine/arith.rs`, `round_sqrt` (Newton's method on
+/// the floor root).
 #[must_use]
 pub fn round_sqrt(x: u128) -> u128 {
     // s <= 2^64, so (2s + 1)^2 may exceed u128 for the largest inputs:

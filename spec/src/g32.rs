@@ -42,6 +42,8 @@ pub fn long_axis(b: &G32Block) -> LongAxis {
 /// outside the range tables, or a run-out longer than the move along the
 /// long axis (988TA G32 note 4: "当螺纹长轴方向退尾长度大于长轴的螺纹加工长度时，
 /// 系统产生报警").
+///
+/// Twin: `impl/src/engine/g32.rs`, `expand_g32`.
 pub fn expand(b: &G32Block) -> Result<Vec<Move>, CycleError> {
     b.validate()?;
     let u = b.units;

@@ -91,6 +91,9 @@ fn len(v: Decimal, u: Units) -> Length {
 ///
 /// [`CycleError::StartInsideThread`] when A is not clear of the thread
 /// (reading R-SIDE).
+///
+/// Twin: `impl/src/engine/g76.rs`, `expand_g76` (the same checks in
+/// integers).
 pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     let u = c.units;
     let xf = Decimal::from(c.x_mode.factor());
@@ -119,6 +122,8 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
 /// `round(Δd × √n)` to the least increment (seed 000 "切深计算": "X 轴切深:
 /// √n × Q(Δd)"), exactly: with `q` = Δd in increments it is the integer
 /// nearest to `√(q² n)`.
+///
+/// Twin: `impl/src/engine/g76.rs`, `law`.
 #[must_use]
 pub fn depth_by_law(first_depth: Decimal, n: u64, u: Units) -> Decimal {
     let q = u128::try_from(to_increments(first_depth, u)).unwrap_or(0);
@@ -142,6 +147,8 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// Seed 000: "如果 X 轴切削量小于最小切削量 … X 轴切削量 = 最小切削量 …
 /// 下一刀的 X 轴切深 = 最小切削量 + 前一刀的切深 … 如果 X 轴切深 ≥ 牙高 P(k) −
 /// 精车切削量 R(d) 则 X 轴切深 = 牙高 P(k) − 精车切削量 R(d)".
+///
+/// Twin: `impl/src/engine/g76.rs`, `Schedule::next_level`.
 #[must_use]
 pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
     let u = c.units;
@@ -183,6 +190,8 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
 /// the proof harnesses), so the count is `n - 1 + ceil((k - d - D(n-1)) /
 /// Δdmin)`. If the law alone runs past the limit, the count is only known
 /// to exceed it.
+///
+/// Twin: `impl/src/engine/g76.rs`, `check_pass_count`.
 fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let u = c.units;
     let last = from_increments(c.thread_height - c.finishing_allowance, u);
@@ -227,6 +236,8 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
 /// `round(depth × tan(a ÷ 2))`: the Z shift of a pass at `depth` (seed 000
 /// "Z 轴起切点 = X 轴切深 × tan(P(a) ÷ 2)"; "Bn 点相对于 B 点 X 轴和 Z 轴的位移
 /// 符合公式 tg(a/2) = Z 轴位移 / X 轴位移").
+///
+/// Twin: `impl/src/engine/g76.rs`, `flank_shift`.
 #[must_use]
 pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
     let inc = to_increments(depth, u);
@@ -253,6 +264,8 @@ pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
 /// # Errors
 ///
 /// As [`rough_levels`].
+///
+/// Twin: `impl/src/engine/g76.rs`, `G76Moves::plan_next`.
 pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
     let u = c.units;
     let levels = rough_levels(c)?;
@@ -313,6 +326,8 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
 }
 
 /// `round(num × ratio)` in increments, exactly.
+///
+/// Twin: `impl/src/engine/g76.rs`, `round_ratio`.
 fn round_ratio(num: i128, r: Ratio) -> i128 {
     let n = i128::try_from(r.num).unwrap_or(i128::MAX);
     let d = i128::try_from(r.den).unwrap_or(1);
@@ -326,6 +341,8 @@ fn round_ratio(num: i128, r: Ratio) -> i128 {
 /// 0~99 (单位: 0.1×L, L 为螺纹螺距)") and J = `round(K × tan(θ))` with the
 /// chamfer angle θ from the long axis (988TA G92: "当参数 5131 设置为零时,
 /// 长轴和短轴以 45° 角退尾"). J = 0 means no run-out.
+///
+/// Twin: `impl/src/engine/g76.rs`, `run_out_amounts`.
 #[must_use]
 pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
     let u = c.units;
@@ -352,6 +369,8 @@ pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
 /// number of leads not shorter than E, rounded to the increment, so that the
 /// screw-in lands on the same helix as a pass without lead-in and Z stays the
 /// long axis of the screw-in move.
+///
+/// Twin: `impl/src/engine/g76.rs`, `lead_in_length`.
 #[must_use]
 pub fn lead_in_length(c: &G76Cycle) -> Decimal {
     let u = c.units;
@@ -368,6 +387,8 @@ fn point(x: Decimal, z: Decimal, u: Units) -> Point {
     Point::new(to_increments(x, u), to_increments(z, u))
 }
 
+///
+/// Twin: `impl/src/engine/g76.rs`, `check_coordinate`.
 fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
     if to_increments(v, u).abs() > MAX_LENGTH {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(v, u) });
@@ -395,6 +416,8 @@ fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
 /// # Errors
 ///
 /// The manual's alarms, as [`CycleError`].
+///
+/// Twin: `impl/src/engine/g76.rs`, `expand_g76` and `Frame::path`.
 pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     c.validate()?;
     let u = c.units;

@@ -11,6 +11,8 @@
 //!   expanded by the chosen [`Engine`], as an iterator of moves.
 //! * [`g76`] expands a cycle exactly as the manuals define it, one function
 //!   per formula, each quoting the manual.
+//! * [`differ`] compares an engine's expansion with the reference's: the
+//!   one same-moves assertion of the differential tests.
 //! * [`exact`] and [`tan`] hold the only arithmetic beyond `+ - ×`: rounding
 //!   to the least increment, square roots and tangents, all exact.
 //!
@@ -19,6 +21,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod differ;
 pub mod error;
 pub mod exact;
 pub mod g32;

@@ -382,6 +382,9 @@ impl Interval {
     }
 
     /// `floor` of every number in the interval, if it is the same for all.
+    ///
+    /// Twin (with `ceil`, `nearest`): `impl/src/engine/real.rs`,
+    /// `Interval::round`.
     fn floor(&self) -> Option<BigInt> {
         let d = pow2(self.bits);
         let (a, b) = (self.lo.div_floor(&d), self.hi.div_floor(&d));
@@ -405,6 +408,8 @@ impl Interval {
     }
 
     /// The sign of every number in the interval, if it is the same for all.
+    ///
+    /// Twin: `impl/src/engine/real.rs`, `Interval::sign`.
     fn sign(&self) -> Option<Ordering> {
         if self.lo.is_positive() {
             Some(Ordering::Greater)
@@ -428,6 +433,9 @@ impl Interval {
     /// R-G75TIE for `floor` and `ceil`: a value whose enclosure holds
     /// exactly one integer `k` is taken to be `k`, and `floor(k) = ceil(k)
     /// = k`; `None` for two integers or more.
+    ///
+    /// Twin (with `tie_nearest`): `impl/src/engine/real.rs`,
+    /// `Interval::round_tie`.
     fn tie_integer(&self) -> Option<BigInt> {
         self.only_integer()
     }
@@ -445,6 +453,8 @@ impl Interval {
     /// R-G75TIE for a sign: an enclosure that holds 0 (the only boundary
     /// of a sign) is taken to be 0; `None` when it does not hold 0 (then
     /// [`Interval::sign`] decides).
+    ///
+    /// Twin: `impl/src/engine/real.rs`, `Interval::sign_tie`.
     fn tie_sign(&self) -> Option<Ordering> {
         (!self.lo.is_positive() && !self.hi.is_negative()).then_some(Ordering::Equal)
     }

@@ -5,13 +5,15 @@
 //! out. Widths: coordinates and J, K are below 2^31 in magnitude after
 //! `validate()`; the only products (a coordinate difference times another,
 //! for the run-out start on a taper) are below 2^64 and are formed in
-//! `i128`, with the rounded quotient checked back into `i64`.
+//! `i128`, and the rounded quotient, which lies between the block's two
+//! coordinates, is narrowed back to `i64` by the engines' one saturating
+//! narrowing (it never saturates).
 //!
 //! [`cycleref_spec::g32::expand`]: https://docs.rs/cycleref-spec
 
 use core::iter::FusedIterator;
 
-use super::round_div;
+use super::arith::{round_div, saturate_i64};
 use crate::error::CycleError;
 use crate::g32::{G32Block, G32RunOut};
 use crate::moves::{Motion, Move, Role};
@@ -40,7 +42,8 @@ impl Iterator for G32Moves {
 impl FusedIterator for G32Moves {}
 
 /// Expands one G32 block: the same error or the same moves as the
-/// reference model.
+/// reference model. Twin: `spec/src/g32.rs`, `expand` (the long axis of
+/// `long_axis` and the run-out start on the cut line restated in integers).
 ///
 /// # Errors
 ///
@@ -81,7 +84,7 @@ pub fn expand_g32(b: &G32Block) -> Result<G32Moves, CycleError> {
                 let zr = e.z - dz.signum() * long;
                 let num =
                     i128::from(s.x) * i128::from(dz) + i128::from(dx) * (i128::from(zr) - i128::from(s.z));
-                let xr = i64::try_from(round_div(num, i128::from(dz))).unwrap_or(i64::MAX);
+                let xr = saturate_i64(round_div(num, i128::from(dz)));
                 go(Point::new(xr, zr), Role::Cut, &mut out);
                 go(Point::new(e.x + xf * short, e.z), Role::RunOut, &mut out);
             } else {
@@ -92,7 +95,7 @@ pub fn expand_g32(b: &G32Block) -> Result<G32Moves, CycleError> {
                 let xr = e.x - dx.signum() * xf * long;
                 let num =
                     i128::from(s.z) * i128::from(dx) + i128::from(dz) * (i128::from(xr) - i128::from(s.x));
-                let zr = i64::try_from(round_div(num, i128::from(dx))).unwrap_or(i64::MAX);
+                let zr = saturate_i64(round_div(num, i128::from(dx)));
                 go(Point::new(xr, zr), Role::Cut, &mut out);
                 go(Point::new(e.x, e.z + short), Role::RunOut, &mut out);
             }

@@ -5,7 +5,7 @@
 //!
 //! # Numbers
 //!
-//! An [`Fx<N>`] is a signed integer of `N` 64-bit limbs (two's complement,
+//! An [`Fixed<N>`] is a signed integer of `N` 64-bit limbs (two's complement,
 //! little-endian) read as `int · 2^-P` with `P = 64·(N − 2)` fraction bits:
 //! the two top limbs hold the integer part, so every value lies in
 //! `(−2^127, 2^127)`. The engine uses two precisions:
@@ -13,9 +13,9 @@
 //! * [`FAST`] = 4 limbs, `P = 128` (the fast path);
 //! * [`SLOW`] = 10 limbs, `P = 512` (the highest precision of
 //!   `docs/G75.md` §6, at which reading R-G75TIE applies:
-//!   [`Iv::round_tie`], [`Iv::sign_tie`]).
+//!   [`Interval::round_tie`], [`Interval::sign_tie`]).
 //!
-//! An [`Iv<N>`] is a closed interval `[lo, hi]` of such numbers that contains
+//! An [`Interval<N>`] is a closed interval `[lo, hi]` of such numbers that contains
 //! the exact real value it stands for. Every operation rounds its lower end
 //! down and its upper end up, so the containment is kept. Additions and
 //! subtractions are exact; a product or quotient is exact whenever the exact
@@ -33,7 +33,7 @@
 //! on a poisoned interval is undecided, so the engine refuses
 //! ([`crate::CycleError::UndecidedRounding`]) instead of guessing. None of
 //! these can happen for a validated cycle: the largest magnitude the G75.1
-//! formulas reach is below `2^96` (see `engine/g75.rs`).
+//! formulas reach is below `2^96` (see `engine/g75/mod.rs`).
 //!
 //! # Trigonometry
 //!
@@ -59,7 +59,7 @@ pub const FAST: usize = 4;
 /// Limbs of the slow precision: 512 fraction bits (`docs/G75.md` §6).
 pub const SLOW: usize = 10;
 
-/// Most limbs an [`Fx`] may have (the scratch buffers are sized for it).
+/// Most limbs an [`Fixed`] may have (the scratch buffers are sized for it).
 pub const MAX_LIMBS: usize = 14;
 
 /// Scratch size: a full product of two numbers of [`MAX_LIMBS`] limbs.
@@ -293,22 +293,26 @@ const fn high64(v: u128) -> u64 {
 /// complement, little-endian; the top two limbs are the integer part (see
 /// the [module documentation](self)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Fx<const N: usize> {
+pub struct Fixed<const N: usize> {
     l: [u64; N],
 }
 
+/// The former name of [`Fixed`], kept so that old paths still compile.
+#[deprecated(note = "renamed `Fixed`")]
+pub type Fx<const N: usize> = Fixed<N>;
+
 /// How a result that is not representable is rounded.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Dir {
+enum RoundDirection {
     /// Towards −∞ (lower ends).
     Down,
     /// Towards +∞ (upper ends).
     Up,
 }
 
-impl<const N: usize> Fx<N> {
+impl<const N: usize> Fixed<N> {
     /// Compile-time check of the limb count (evaluated by every constructor).
-    const LIMBS_OK: () = assert!(N >= 3 && N <= MAX_LIMBS, "Fx needs 3..=MAX_LIMBS limbs");
+    const LIMBS_OK: () = assert!(N >= 3 && N <= MAX_LIMBS, "Fixed needs 3..=MAX_LIMBS limbs");
 
     /// Number of fraction limbs, `N − 2`.
     const FRAC: usize = N - 2;
@@ -318,15 +322,15 @@ impl<const N: usize> Fx<N> {
 
     /// Zero.
     #[must_use]
-    pub const fn zero() -> Fx<N> {
+    pub const fn zero() -> Fixed<N> {
         let () = Self::LIMBS_OK;
-        Fx { l: [0; N] }
+        Fixed { l: [0; N] }
     }
 
     /// The integer `v`, exactly.
     #[must_use]
-    pub fn from_int(v: i128) -> Fx<N> {
-        let mut x = Fx::zero();
+    pub fn from_int(v: i128) -> Fixed<N> {
+        let mut x = Fixed::zero();
         let bits = v.to_le_bytes();
         let mut lo = [0_u8; 8];
         let mut hi = [0_u8; 8];
@@ -343,8 +347,8 @@ impl<const N: usize> Fx<N> {
 
     /// `ulps · 2^-P`.
     #[must_use]
-    pub fn from_ulps(ulps: u64) -> Fx<N> {
-        let mut x = Fx::zero();
+    pub fn from_ulps(ulps: u64) -> Fixed<N> {
+        let mut x = Fixed::zero();
         if let Some(s) = x.l.first_mut() {
             *s = ulps;
         }
@@ -352,8 +356,8 @@ impl<const N: usize> Fx<N> {
     }
 
     /// `2^-1`.
-    fn half() -> Fx<N> {
-        let mut x = Fx::zero();
+    fn half() -> Fixed<N> {
+        let mut x = Fixed::zero();
         if let Some(s) = x.l.get_mut(Self::FRAC - 1) {
             *s = 1 << 63;
         }
@@ -384,11 +388,11 @@ impl<const N: usize> Fx<N> {
 
     /// The number `±m` from a magnitude of any length; `None` unless
     /// `m < 2^(64N − 1)`.
-    fn from_magnitude(neg: bool, m: &[u64]) -> Option<Fx<N>> {
+    fn from_magnitude(neg: bool, m: &[u64]) -> Option<Fixed<N>> {
         if m.iter().skip(N).any(|&x| x != 0) {
             return None;
         }
-        let mut x = Fx::zero();
+        let mut x = Fixed::zero();
         for (d, s) in x.l.iter_mut().zip(m) {
             *d = *s;
         }
@@ -403,7 +407,7 @@ impl<const N: usize> Fx<N> {
 
     /// `self + o`; `None` on overflow.
     #[must_use]
-    pub fn checked_add(&self, o: &Fx<N>) -> Option<Fx<N>> {
+    pub fn checked_add(&self, o: &Fixed<N>) -> Option<Fixed<N>> {
         let mut r = *self;
         limbs_add(&mut r.l, &o.l);
         // Signed overflow: both operands of one sign, the result of the other.
@@ -413,7 +417,7 @@ impl<const N: usize> Fx<N> {
 
     /// `self − o`; `None` on overflow.
     #[must_use]
-    pub fn checked_sub(&self, o: &Fx<N>) -> Option<Fx<N>> {
+    pub fn checked_sub(&self, o: &Fixed<N>) -> Option<Fixed<N>> {
         let mut r = *self;
         limbs_sub(&mut r.l, &o.l);
         let (a, b, s) = (self.is_negative(), o.is_negative(), r.is_negative());
@@ -422,7 +426,7 @@ impl<const N: usize> Fx<N> {
 
     /// `−self`; `None` for the most negative number.
     #[must_use]
-    pub fn checked_neg(&self) -> Option<Fx<N>> {
+    pub fn checked_neg(&self) -> Option<Fixed<N>> {
         let mut r = *self;
         limbs_neg(&mut r.l);
         (self.is_zero() || r.is_negative() != self.is_negative()).then_some(r)
@@ -430,7 +434,7 @@ impl<const N: usize> Fx<N> {
 
     /// Signed comparison.
     #[must_use]
-    pub fn cmp_signed(&self, o: &Fx<N>) -> Ordering {
+    pub fn cmp_signed(&self, o: &Fixed<N>) -> Ordering {
         match (self.is_negative(), o.is_negative()) {
             (true, false) => Ordering::Less,
             (false, true) => Ordering::Greater,
@@ -440,7 +444,7 @@ impl<const N: usize> Fx<N> {
     }
 
     /// The smaller of two numbers.
-    fn min(self, o: Fx<N>) -> Fx<N> {
+    fn min(self, o: Fixed<N>) -> Fixed<N> {
         if self.cmp_signed(&o) == Ordering::Greater {
             o
         } else {
@@ -449,7 +453,7 @@ impl<const N: usize> Fx<N> {
     }
 
     /// The larger of two numbers.
-    fn max(self, o: Fx<N>) -> Fx<N> {
+    fn max(self, o: Fixed<N>) -> Fixed<N> {
         if self.cmp_signed(&o) == Ordering::Less {
             o
         } else {
@@ -459,30 +463,36 @@ impl<const N: usize> Fx<N> {
 
     /// The magnitude `m` rounded by `dir` after dropping its `drop` low limbs
     /// (`m / 2^(64·drop)`), with the sign `neg`.
-    fn round_shifted(neg: bool, m: &mut [u64], drop: usize, inexact_below: bool, dir: Dir) -> Option<Fx<N>> {
+    fn round_shifted(
+        neg: bool,
+        m: &mut [u64],
+        drop: usize,
+        inexact_below: bool,
+        dir: RoundDirection,
+    ) -> Option<Fixed<N>> {
         let inexact = inexact_below || !limbs_zero(m.get(..drop).unwrap_or(&[]));
         let kept = m.get_mut(drop..)?;
         // Away from zero for Down on a negative and Up on a positive value.
-        if inexact && ((dir == Dir::Up) != neg) && limbs_inc(kept) {
+        if inexact && ((dir == RoundDirection::Up) != neg) && limbs_inc(kept) {
             return None;
         }
         let neg = neg && !limbs_zero(kept);
-        Fx::from_magnitude(neg, kept)
+        Fixed::from_magnitude(neg, kept)
     }
 
     /// `self · o` rounded by `dir`; `None` on overflow.
-    fn mul_round(&self, o: &Fx<N>, dir: Dir) -> Option<Fx<N>> {
+    fn mul_round(&self, o: &Fixed<N>, dir: RoundDirection) -> Option<Fixed<N>> {
         let (na, ma) = self.magnitude();
         let (nb, mb) = o.magnitude();
         let mut p = [0_u64; SCRATCH];
         let prod = p.get_mut(..2 * N)?;
         limbs_mul(&ma, &mb, prod);
         // (A·2^-P)(B·2^-P) = (A·B·2^-P)·2^-P: drop P bits = N − 2 limbs.
-        Fx::round_shifted(na != nb, prod, Self::FRAC, false, dir)
+        Fixed::round_shifted(na != nb, prod, Self::FRAC, false, dir)
     }
 
     /// `self / o` rounded by `dir`; `None` on overflow or division by zero.
-    fn div_round(&self, o: &Fx<N>, dir: Dir) -> Option<Fx<N>> {
+    fn div_round(&self, o: &Fixed<N>, dir: RoundDirection) -> Option<Fixed<N>> {
         if o.is_zero() {
             return None;
         }
@@ -501,29 +511,29 @@ impl<const N: usize> Fx<N> {
         let rem = rem.get_mut(..=N)?;
         limbs_divmod(num, &mb, q, rem);
         let inexact = !limbs_zero(rem);
-        Fx::round_shifted(na != nb, q, 0, inexact, dir)
+        Fixed::round_shifted(na != nb, q, 0, inexact, dir)
     }
 
     /// `self · k`, exact; `None` on overflow.
     #[must_use]
-    pub fn mul_int(&self, k: i64) -> Option<Fx<N>> {
+    pub fn mul_int(&self, k: i64) -> Option<Fixed<N>> {
         let (neg, mut m) = self.magnitude();
         let carry = limbs_mul_small(&mut m, k.unsigned_abs());
         if carry != 0 {
             return None;
         }
         let neg = neg != (k < 0);
-        Fx::from_magnitude(neg && !limbs_zero(&m), &m)
+        Fixed::from_magnitude(neg && !limbs_zero(&m), &m)
     }
 
     /// `self / k` rounded by `dir`, `k > 0`.
-    fn div_small(&self, k: u64, dir: Dir) -> Option<Fx<N>> {
+    fn div_small(&self, k: u64, dir: RoundDirection) -> Option<Fixed<N>> {
         if k == 0 {
             return None;
         }
         let (neg, mut m) = self.magnitude();
         let rem = limbs_div_small(&mut m, k);
-        Fx::round_shifted(neg, &mut m, 0, rem != 0, dir)
+        Fixed::round_shifted(neg, &mut m, 0, rem != 0, dir)
     }
 
     /// `floor(self)`: the top two limbs read as a signed integer (the
@@ -558,16 +568,20 @@ impl<const N: usize> Fx<N> {
 // Intervals.
 // ---------------------------------------------------------------------------
 
-/// A closed interval `[lo, hi]` of [`Fx<N>`] that contains an exact real
+/// A closed interval `[lo, hi]` of [`Fixed<N>`] that contains an exact real
 /// value, or a poisoned interval (an overflow, a division by an interval
 /// containing 0, a series that did not converge) on which every decision is
 /// undecided.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Iv<const N: usize> {
-    lo: Fx<N>,
-    hi: Fx<N>,
+pub struct Interval<const N: usize> {
+    lo: Fixed<N>,
+    hi: Fixed<N>,
     ok: bool,
 }
+
+/// The former name of [`Interval`], kept so that old paths still compile.
+#[deprecated(note = "renamed `Interval`")]
+pub type Iv<const N: usize> = Interval<N>;
 
 /// A rounding to an integer (`docs/G75.md` §6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -580,54 +594,54 @@ pub enum Rounding {
     Nearest,
 }
 
-impl<const N: usize> Iv<N> {
+impl<const N: usize> Interval<N> {
     /// The poisoned interval.
     #[must_use]
-    pub fn poison() -> Iv<N> {
-        Iv { lo: Fx::zero(), hi: Fx::zero(), ok: false }
+    pub fn poison() -> Interval<N> {
+        Interval { lo: Fixed::zero(), hi: Fixed::zero(), ok: false }
     }
 
     /// The exact value `x`.
     #[must_use]
-    pub fn point(x: Fx<N>) -> Iv<N> {
-        Iv { lo: x, hi: x, ok: true }
+    pub fn point(x: Fixed<N>) -> Interval<N> {
+        Interval { lo: x, hi: x, ok: true }
     }
 
     /// The exact integer `v`.
     #[must_use]
-    pub fn int(v: i128) -> Iv<N> {
-        Iv::point(Fx::from_int(v))
+    pub fn int(v: i128) -> Interval<N> {
+        Interval::point(Fixed::from_int(v))
     }
 
     /// The exact value `1/2`.
     #[must_use]
-    pub fn half() -> Iv<N> {
-        Iv::point(Fx::half())
+    pub fn half() -> Interval<N> {
+        Interval::point(Fixed::half())
     }
 
     /// `[lo, hi]`; poisoned when `lo > hi`.
     #[must_use]
-    pub fn new(lo: Fx<N>, hi: Fx<N>) -> Iv<N> {
-        Iv { lo, hi, ok: lo.cmp_signed(&hi) != Ordering::Greater }
+    pub fn new(lo: Fixed<N>, hi: Fixed<N>) -> Interval<N> {
+        Interval { lo, hi, ok: lo.cmp_signed(&hi) != Ordering::Greater }
     }
 
     /// From optional ends: poisoned if either is missing.
-    fn of(lo: Option<Fx<N>>, hi: Option<Fx<N>>, ok: bool) -> Iv<N> {
+    fn of(lo: Option<Fixed<N>>, hi: Option<Fixed<N>>, ok: bool) -> Interval<N> {
         match (lo, hi) {
-            (Some(lo), Some(hi)) if ok => Iv { lo, hi, ok: true },
-            _ => Iv::poison(),
+            (Some(lo), Some(hi)) if ok => Interval { lo, hi, ok: true },
+            _ => Interval::poison(),
         }
     }
 
     /// The lower end.
     #[must_use]
-    pub const fn lower(&self) -> &Fx<N> {
+    pub const fn lower(&self) -> &Fixed<N> {
         &self.lo
     }
 
     /// The upper end.
     #[must_use]
-    pub const fn upper(&self) -> &Fx<N> {
+    pub const fn upper(&self) -> &Fixed<N> {
         &self.hi
     }
 
@@ -645,111 +659,124 @@ impl<const N: usize> Iv<N> {
 
     /// `self + o`, exact.
     #[must_use]
-    pub fn add(&self, o: &Iv<N>) -> Iv<N> {
-        Iv::of(self.lo.checked_add(&o.lo), self.hi.checked_add(&o.hi), self.ok && o.ok)
+    pub fn add(&self, o: &Interval<N>) -> Interval<N> {
+        Interval::of(self.lo.checked_add(&o.lo), self.hi.checked_add(&o.hi), self.ok && o.ok)
     }
 
     /// `self − o`, exact.
     #[must_use]
-    pub fn sub(&self, o: &Iv<N>) -> Iv<N> {
-        Iv::of(self.lo.checked_sub(&o.hi), self.hi.checked_sub(&o.lo), self.ok && o.ok)
+    pub fn sub(&self, o: &Interval<N>) -> Interval<N> {
+        Interval::of(self.lo.checked_sub(&o.hi), self.hi.checked_sub(&o.lo), self.ok && o.ok)
     }
 
     /// `−self`, exact.
     #[must_use]
-    pub fn neg(&self) -> Iv<N> {
-        Iv::of(self.hi.checked_neg(), self.lo.checked_neg(), self.ok)
+    pub fn neg(&self) -> Interval<N> {
+        Interval::of(self.hi.checked_neg(), self.lo.checked_neg(), self.ok)
     }
 
     /// `self · o`, rounded outwards (exact when the product is representable).
     #[must_use]
-    pub fn mul(&self, o: &Iv<N>) -> Iv<N> {
+    pub fn mul(&self, o: &Interval<N>) -> Interval<N> {
         if !(self.ok && o.ok) {
-            return Iv::poison();
+            return Interval::poison();
         }
         // Exact shortcuts (the general rule gives the same intervals).
-        let one = Fx::from_int(1);
+        let one = Fixed::from_int(1);
         if self.is_point() && (self.lo.is_zero() || self.lo == one) {
             return if self.lo.is_zero() { *self } else { *o };
         }
         if o.is_point() && (o.lo.is_zero() || o.lo == one) {
             return if o.lo.is_zero() { *o } else { *self };
         }
-        let nonneg = |v: &Iv<N>| !v.lo.is_negative();
+        let nonneg = |v: &Interval<N>| !v.lo.is_negative();
         if nonneg(self) && nonneg(o) {
             // Both non-negative: the product is monotone in each end.
-            return Iv::of(self.lo.mul_round(&o.lo, Dir::Down), self.hi.mul_round(&o.hi, Dir::Up), true);
+            return Interval::of(
+                self.lo.mul_round(&o.lo, RoundDirection::Down),
+                self.hi.mul_round(&o.hi, RoundDirection::Up),
+                true,
+            );
         }
         let pairs = [(&self.lo, &o.lo), (&self.lo, &o.hi), (&self.hi, &o.lo), (&self.hi, &o.hi)];
-        let mut lo: Option<Fx<N>> = None;
-        let mut hi: Option<Fx<N>> = None;
+        let mut lo: Option<Fixed<N>> = None;
+        let mut hi: Option<Fixed<N>> = None;
         for (x, y) in pairs {
-            let (Some(d), Some(u)) = (x.mul_round(y, Dir::Down), x.mul_round(y, Dir::Up)) else {
-                return Iv::poison();
+            let (Some(d), Some(u)) =
+                (x.mul_round(y, RoundDirection::Down), x.mul_round(y, RoundDirection::Up))
+            else {
+                return Interval::poison();
             };
             lo = Some(lo.map_or(d, |l| l.min(d)));
             hi = Some(hi.map_or(u, |h| h.max(u)));
         }
-        Iv::of(lo, hi, true)
+        Interval::of(lo, hi, true)
     }
 
     /// `self / o` for a divisor interval of positive numbers, rounded
     /// outwards; poisoned when `o` contains 0 or a negative number.
     #[must_use]
-    pub fn div(&self, o: &Iv<N>) -> Iv<N> {
+    pub fn div(&self, o: &Interval<N>) -> Interval<N> {
         if !(self.ok && o.ok) || o.lo.is_negative() || o.lo.is_zero() {
-            return Iv::poison();
+            return Interval::poison();
         }
-        if o.is_point() && o.lo == Fx::from_int(1) {
+        if o.is_point() && o.lo == Fixed::from_int(1) {
             // x / 1 = x exactly.
             return *self;
         }
         // For a positive divisor, x/y is increasing in x and, for x ≥ 0,
         // decreasing in y (increasing for x < 0).
         let lo = if self.lo.is_negative() {
-            self.lo.div_round(&o.lo, Dir::Down)
+            self.lo.div_round(&o.lo, RoundDirection::Down)
         } else {
-            self.lo.div_round(&o.hi, Dir::Down)
+            self.lo.div_round(&o.hi, RoundDirection::Down)
         };
         let hi = if self.hi.is_negative() {
-            self.hi.div_round(&o.hi, Dir::Up)
+            self.hi.div_round(&o.hi, RoundDirection::Up)
         } else {
-            self.hi.div_round(&o.lo, Dir::Up)
+            self.hi.div_round(&o.lo, RoundDirection::Up)
         };
-        Iv::of(lo, hi, true)
+        Interval::of(lo, hi, true)
     }
 
     /// `self · k` for an integer `k`, exact.
     #[must_use]
-    pub fn mul_int(&self, k: i64) -> Iv<N> {
+    pub fn mul_int(&self, k: i64) -> Interval<N> {
         let (a, b) = (self.lo.mul_int(k), self.hi.mul_int(k));
         if k < 0 {
-            Iv::of(b, a, self.ok)
+            Interval::of(b, a, self.ok)
         } else {
-            Iv::of(a, b, self.ok)
+            Interval::of(a, b, self.ok)
         }
     }
 
     /// `self / k` for an integer `k > 0`, rounded outwards.
     #[must_use]
-    pub fn div_int(&self, k: u64) -> Iv<N> {
-        Iv::of(self.lo.div_small(k, Dir::Down), self.hi.div_small(k, Dir::Up), self.ok)
+    pub fn div_int(&self, k: u64) -> Interval<N> {
+        Interval::of(
+            self.lo.div_small(k, RoundDirection::Down),
+            self.hi.div_small(k, RoundDirection::Up),
+            self.ok,
+        )
     }
 
     /// `max(self, o)`: `[max(lo₁, lo₂), max(hi₁, hi₂)]`.
     #[must_use]
-    pub fn max(&self, o: &Iv<N>) -> Iv<N> {
-        Iv::of(Some(self.lo.max(o.lo)), Some(self.hi.max(o.hi)), self.ok && o.ok)
+    pub fn max(&self, o: &Interval<N>) -> Interval<N> {
+        Interval::of(Some(self.lo.max(o.lo)), Some(self.hi.max(o.hi)), self.ok && o.ok)
     }
 
     /// `min(self, o)`: `[min(lo₁, lo₂), min(hi₁, hi₂)]`.
     #[must_use]
-    pub fn min(&self, o: &Iv<N>) -> Iv<N> {
-        Iv::of(Some(self.lo.min(o.lo)), Some(self.hi.min(o.hi)), self.ok && o.ok)
+    pub fn min(&self, o: &Interval<N>) -> Interval<N> {
+        Interval::of(Some(self.lo.min(o.lo)), Some(self.hi.min(o.hi)), self.ok && o.ok)
     }
 
     /// The rounding of every number of the interval, when it is the same
     /// for all (always for a point interval); `None` when undecided.
+    ///
+    /// Twin: `spec/src/real.rs`, `Interval::floor`, `Interval::ceil`,
+    /// `Interval::nearest` (over big integers).
     #[must_use]
     pub fn round(&self, r: Rounding) -> Option<i128> {
         if !self.ok {
@@ -759,7 +786,7 @@ impl<const N: usize> Iv<N> {
             Rounding::Floor => (Some(self.lo.floor()), Some(self.hi.floor())),
             Rounding::Ceil => (self.lo.ceil(), self.hi.ceil()),
             Rounding::Nearest => {
-                let half = Fx::half();
+                let half = Fixed::half();
                 (self.lo.checked_add(&half).map(|x| x.floor()), self.hi.checked_add(&half).map(|x| x.floor()))
             }
         };
@@ -771,6 +798,8 @@ impl<const N: usize> Iv<N> {
 
     /// The sign of every number of the interval (its ordering against 0),
     /// when it is the same for all; `None` when undecided.
+    ///
+    /// Twin: `spec/src/real.rs`, `Interval::sign`.
     #[must_use]
     pub fn sign(&self) -> Option<Ordering> {
         if !self.ok {
@@ -788,12 +817,15 @@ impl<const N: usize> Iv<N> {
 
     /// The rounding of the exact value enclosed, for an enclosure at the
     /// highest precision (reading R-G75TIE, `docs/G75.md` §6): as
-    /// [`Iv::round`] when that decides; otherwise, when the interval holds
+    /// [`Interval::round`] when that decides; otherwise, when the interval holds
     /// exactly one rounding boundary (an integer for floor and ceil, a
     /// half-integer for nearest; inside or on an end), the value is taken
     /// to lie on it: `floor(k) = ceil(k) = k`, and the nearest of `k + 1/2`
     /// is `k + 1` (ties up). `None` for a poisoned interval or one that
     /// holds two or more boundaries.
+    ///
+    /// Twin: `spec/src/real.rs`, `Interval::tie_integer` and
+    /// `Interval::tie_nearest`.
     #[must_use]
     pub fn round_tie(&self, r: Rounding) -> Option<i128> {
         if let Some(v) = self.round(r) {
@@ -808,7 +840,7 @@ impl<const N: usize> Iv<N> {
         let (lo, hi) = match r {
             Rounding::Floor | Rounding::Ceil => (self.lo, self.hi),
             Rounding::Nearest => {
-                let half = Fx::half();
+                let half = Fixed::half();
                 (self.lo.checked_add(&half)?, self.hi.checked_add(&half)?)
             }
         };
@@ -819,9 +851,11 @@ impl<const N: usize> Iv<N> {
     }
 
     /// The sign of the exact value enclosed, for an enclosure at the highest
-    /// precision (reading R-G75TIE): as [`Iv::sign`] when that decides;
+    /// precision (reading R-G75TIE): as [`Interval::sign`] when that decides;
     /// otherwise the interval contains 0 (its only boundary) and the value is
     /// taken to be 0. `None` only for a poisoned interval.
+    ///
+    /// Twin: `spec/src/real.rs`, `Interval::tie_sign`.
     #[must_use]
     pub fn sign_tie(&self) -> Option<Ordering> {
         match self.sign() {
@@ -841,19 +875,19 @@ impl<const N: usize> Iv<N> {
 /// (exactly the truncation of the digits of [`PI_FRACTION`], which the
 /// constant holds to 640 bits); poisoned beyond 640 fraction bits.
 #[must_use]
-pub fn pi<const N: usize>() -> Iv<N> {
-    let frac = Fx::<N>::FRAC;
+pub fn pi<const N: usize>() -> Interval<N> {
+    let frac = Fixed::<N>::FRAC;
     if frac > PI_FRACTION.len() {
-        return Iv::poison();
+        return Interval::poison();
     }
-    let mut lo = Fx::<N>::from_int(3);
+    let mut lo = Fixed::<N>::from_int(3);
     // Fraction limb i (most significant first) goes to limb FRAC − 1 − i.
     for (i, w) in PI_FRACTION.iter().take(frac).enumerate() {
         if let Some(s) = lo.l.get_mut(frac - 1 - i) {
             *s = *w;
         }
     }
-    Iv::of(Some(lo), lo.checked_add(&Fx::from_ulps(1)), true)
+    Interval::of(Some(lo), lo.checked_add(&Fixed::from_ulps(1)), true)
 }
 
 /// The bound on the number of terms of a series (far more than needed: at
@@ -865,13 +899,13 @@ const MAX_TERMS: u64 = 400;
 /// (no exact cases: see [`sin_cos`]). `k ≤ 1 800 000`, so `0 ≤ x ≤ π/2 < 2`:
 /// the terms `x^j/j!` decrease from `j = 1` on and the series alternate, so
 /// the remainder after the last term summed is at most the next term.
-fn sin_cos_series<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+fn sin_cos_series<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
     let x = pi::<N>().mul_int(i64::from(k)).div_int(u64::from(HALF_TURN));
     let x2 = x.mul(&x);
     // A term whose upper bound is at most 4 units of the last place ends
     // the series: its bound is then added to both ends as the remainder.
-    let small = Fx::<N>::from_ulps(4);
-    let series = |first: Iv<N>, first_index: u64| -> Iv<N> {
+    let small = Fixed::<N>::from_ulps(4);
+    let series = |first: Interval<N>, first_index: u64| -> Interval<N> {
         let mut sum = first;
         let mut term = first;
         let mut j: u64 = 1;
@@ -881,40 +915,40 @@ fn sin_cos_series<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
             let a = first_index + 2 * j - 1;
             term = term.mul(&x2).div_int(a * (a + 1));
             if !term.ok {
-                return Iv::poison();
+                return Interval::poison();
             }
             if term.hi.cmp_signed(&small) != Ordering::Greater {
-                let bound = Iv::new(term.hi.checked_neg().unwrap_or(term.hi), term.hi);
+                let bound = Interval::new(term.hi.checked_neg().unwrap_or(term.hi), term.hi);
                 return sum.add(&bound);
             }
             sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
             j += 1;
         }
-        Iv::poison()
+        Interval::poison()
     };
-    (series(x, 1), series(Iv::int(1), 0))
+    (series(x, 1), series(Interval::int(1), 0))
 }
 
 /// `sin(k·0.00005°)`, exact for 0, 30° and 90° (`docs/G75.md` §6).
 #[must_use]
-pub fn sin<const N: usize>(k: u32) -> Iv<N> {
+pub fn sin<const N: usize>(k: u32) -> Interval<N> {
     match k {
-        0 => Iv::int(0),
-        600_000 => Iv::half(),
-        RIGHT => Iv::int(1),
-        k if k > RIGHT => Iv::poison(),
+        0 => Interval::int(0),
+        600_000 => Interval::half(),
+        RIGHT => Interval::int(1),
+        k if k > RIGHT => Interval::poison(),
         k => sin_cos_series(k).0,
     }
 }
 
 /// `cos(k·0.00005°)`, exact for 0, 60° and 90° (`docs/G75.md` §6).
 #[must_use]
-pub fn cos<const N: usize>(k: u32) -> Iv<N> {
+pub fn cos<const N: usize>(k: u32) -> Interval<N> {
     match k {
-        0 => Iv::int(1),
-        1_200_000 => Iv::half(),
-        RIGHT => Iv::int(0),
-        k if k > RIGHT => Iv::poison(),
+        0 => Interval::int(1),
+        1_200_000 => Interval::half(),
+        RIGHT => Interval::int(0),
+        k if k > RIGHT => Interval::poison(),
         k => sin_cos_series(k).1,
     }
 }
@@ -922,10 +956,10 @@ pub fn cos<const N: usize>(k: u32) -> Iv<N> {
 /// The sine and cosine of `k·0.00005°` together (one series evaluation for
 /// both when neither is an exact case).
 #[must_use]
-pub fn sin_cos<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+pub fn sin_cos<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
     match k {
         0 | 600_000 | 1_200_000 | RIGHT => (sin(k), cos(k)),
-        k if k > RIGHT => (Iv::poison(), Iv::poison()),
+        k if k > RIGHT => (Interval::poison(), Interval::poison()),
         k => sin_cos_series(k),
     }
 }
@@ -933,11 +967,11 @@ pub fn sin_cos<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
 /// `tan(k·0.00005°)` from that angle's sine and cosine: exact for 0 and
 /// 45°, `s/c` otherwise; poisoned for 90° and beyond.
 #[must_use]
-pub fn tan_of<const N: usize>(k: u32, s: &Iv<N>, c: &Iv<N>) -> Iv<N> {
+pub fn tan_of<const N: usize>(k: u32, s: &Interval<N>, c: &Interval<N>) -> Interval<N> {
     match k {
-        0 => Iv::int(0),
-        900_000 => Iv::int(1),
-        k if k >= RIGHT => Iv::poison(),
+        0 => Interval::int(0),
+        900_000 => Interval::int(1),
+        k if k >= RIGHT => Interval::poison(),
         _ => s.div(c),
     }
 }
@@ -945,20 +979,20 @@ pub fn tan_of<const N: usize>(k: u32, s: &Iv<N>, c: &Iv<N>) -> Iv<N> {
 /// `cot(k·0.00005°)` from that angle's sine and cosine: exact for 45° and
 /// 90°, `c/s` otherwise; poisoned for 0 and beyond 90°.
 #[must_use]
-pub fn cot_of<const N: usize>(k: u32, s: &Iv<N>, c: &Iv<N>) -> Iv<N> {
+pub fn cot_of<const N: usize>(k: u32, s: &Interval<N>, c: &Interval<N>) -> Interval<N> {
     match k {
-        900_000 => Iv::int(1),
-        RIGHT => Iv::int(0),
-        k if k == 0 || k > RIGHT => Iv::poison(),
+        900_000 => Interval::int(1),
+        RIGHT => Interval::int(0),
+        k if k == 0 || k > RIGHT => Interval::poison(),
         _ => c.div(s),
     }
 }
 
 /// `tan(k·0.00005°)`, exact for 0 and 45° (`docs/G75.md` §6).
 #[must_use]
-pub fn tan<const N: usize>(k: u32) -> Iv<N> {
+pub fn tan<const N: usize>(k: u32) -> Interval<N> {
     match k {
-        0 | 900_000 => tan_of(k, &Iv::poison(), &Iv::poison()),
+        0 | 900_000 => tan_of(k, &Interval::poison(), &Interval::poison()),
         k => {
             let (s, c) = sin_cos::<N>(k);
             tan_of(k, &s, &c)
@@ -968,9 +1002,9 @@ pub fn tan<const N: usize>(k: u32) -> Iv<N> {
 
 /// `cot(k·0.00005°)`, exact for 45° and 90° (`docs/G75.md` §6).
 #[must_use]
-pub fn cot<const N: usize>(k: u32) -> Iv<N> {
+pub fn cot<const N: usize>(k: u32) -> Interval<N> {
     match k {
-        900_000 | RIGHT => cot_of(k, &Iv::poison(), &Iv::poison()),
+        900_000 | RIGHT => cot_of(k, &Interval::poison(), &Interval::poison()),
         k => {
             let (s, c) = sin_cos::<N>(k);
             cot_of(k, &s, &c)
@@ -981,7 +1015,7 @@ pub fn cot<const N: usize>(k: u32) -> Iv<N> {
 /// `tan` and `cot` of one angle together (one series evaluation), with the
 /// exact cases of [`tan`] and [`cot`].
 #[must_use]
-pub fn tan_cot<const N: usize>(k: u32) -> (Iv<N>, Iv<N>) {
+pub fn tan_cot<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
     let (s, c) = sin_cos::<N>(k);
     (tan_of(k, &s, &c), cot_of(k, &s, &c))
 }
@@ -994,17 +1028,17 @@ mod tests {
     use std::string::String;
     use std::vec::Vec;
 
-    type F = Fx<FAST>;
-    type S = Fx<SLOW>;
+    type F = Fixed<FAST>;
+    type S = Fixed<SLOW>;
 
     /// The interval contains `num / 10^digits` within one unit of the last
     /// decimal, and is narrower than `10^-digits`: `lo·10^d ≤ num + 1`,
     /// `hi·10^d ≥ num`, `(hi − lo)·10^d < 1`.
-    fn encloses_decimal<const N: usize>(iv: &Iv<N>, digits: &str) {
+    fn encloses_decimal<const N: usize>(iv: &Interval<N>, digits: &str) {
         let (int, frac) = digits.split_once('.').unwrap();
         let text: String = [int, frac].concat();
         let num: i128 = text.parse().unwrap();
-        let scale = |x: &Fx<N>| {
+        let scale = |x: &Fixed<N>| {
             let mut v = *x;
             for _ in 0..frac.len() {
                 v = v.mul_int(10).unwrap();
@@ -1030,29 +1064,32 @@ mod tests {
         assert!(m.is_negative());
         assert_eq!(m.checked_neg().unwrap(), F::from_int(7));
         // 7 / 2 = 3.5: floor 3, ceil 4, exact.
-        let q = F::from_int(7).div_round(&two, Dir::Down).unwrap();
-        assert_eq!(q, F::from_int(7).div_round(&two, Dir::Up).unwrap());
+        let q = F::from_int(7).div_round(&two, RoundDirection::Down).unwrap();
+        assert_eq!(q, F::from_int(7).div_round(&two, RoundDirection::Up).unwrap());
         assert_eq!((q.floor(), q.ceil()), (3, Some(4)));
         // −7 / 2 = −3.5.
-        let q = m.div_round(&two, Dir::Down).unwrap();
+        let q = m.div_round(&two, RoundDirection::Down).unwrap();
         assert_eq!((q.floor(), q.ceil()), (-4, Some(-3)));
         // 1/3 is inexact: the two roundings differ by one unit.
-        let d = F::from_int(1).div_round(&three, Dir::Down).unwrap();
-        let u = F::from_int(1).div_round(&three, Dir::Up).unwrap();
+        let d = F::from_int(1).div_round(&three, RoundDirection::Down).unwrap();
+        let u = F::from_int(1).div_round(&three, RoundDirection::Up).unwrap();
         assert_eq!(u.checked_sub(&d).unwrap(), F::from_ulps(1));
-        let d = F::from_int(-1).div_round(&three, Dir::Down).unwrap();
-        let u = F::from_int(-1).div_round(&three, Dir::Up).unwrap();
+        let d = F::from_int(-1).div_round(&three, RoundDirection::Down).unwrap();
+        let u = F::from_int(-1).div_round(&three, RoundDirection::Up).unwrap();
         assert_eq!(u.checked_sub(&d).unwrap(), F::from_ulps(1));
         // Products: exact for dyadic results, one unit apart otherwise.
         let h = F::half();
-        assert_eq!(h.mul_round(&h, Dir::Down), h.mul_round(&h, Dir::Up));
-        assert_eq!(h.mul_round(&m, Dir::Down).unwrap(), F::from_int(-7).div_small(2, Dir::Down).unwrap());
+        assert_eq!(h.mul_round(&h, RoundDirection::Down), h.mul_round(&h, RoundDirection::Up));
+        assert_eq!(
+            h.mul_round(&m, RoundDirection::Down).unwrap(),
+            F::from_int(-7).div_small(2, RoundDirection::Down).unwrap()
+        );
         let tiny = F::from_ulps(1);
-        assert_eq!(tiny.mul_round(&tiny, Dir::Down).unwrap(), F::zero());
-        assert_eq!(tiny.mul_round(&tiny, Dir::Up).unwrap(), tiny);
+        assert_eq!(tiny.mul_round(&tiny, RoundDirection::Down).unwrap(), F::zero());
+        assert_eq!(tiny.mul_round(&tiny, RoundDirection::Up).unwrap(), tiny);
         let ntiny = tiny.checked_neg().unwrap();
-        assert_eq!(ntiny.mul_round(&tiny, Dir::Down).unwrap(), ntiny);
-        assert_eq!(ntiny.mul_round(&tiny, Dir::Up).unwrap(), F::zero());
+        assert_eq!(ntiny.mul_round(&tiny, RoundDirection::Down).unwrap(), ntiny);
+        assert_eq!(ntiny.mul_round(&tiny, RoundDirection::Up).unwrap(), F::zero());
         // Overflow is reported, not wrapped.
         let big = F::from_int(i128::MAX >> 1);
         assert!(big.checked_add(&big).is_some());
@@ -1066,10 +1103,10 @@ mod tests {
             .unwrap()
             .checked_sub(&F::from_ulps(1))
             .is_none());
-        assert!(big.mul_round(&two, Dir::Down).is_some());
-        assert!(big.mul_round(&three, Dir::Down).is_none());
+        assert!(big.mul_round(&two, RoundDirection::Down).is_some());
+        assert!(big.mul_round(&three, RoundDirection::Down).is_none());
         assert!(big.mul_int(4).is_none());
-        assert!(F::from_int(1).div_round(&F::zero(), Dir::Up).is_none());
+        assert!(F::from_int(1).div_round(&F::zero(), RoundDirection::Up).is_none());
     }
 
     /// Division against multiplication on pseudo-random operands: the
@@ -1098,14 +1135,16 @@ mod tests {
             if b.is_zero() {
                 continue;
             }
-            let (Some(d), Some(u)) = (a.div_round(&b, Dir::Down), a.div_round(&b, Dir::Up)) else {
+            let (Some(d), Some(u)) =
+                (a.div_round(&b, RoundDirection::Down), a.div_round(&b, RoundDirection::Up))
+            else {
                 continue;
             };
             let gap = u.checked_sub(&d).unwrap();
             assert!(gap == F::zero() || gap == F::from_ulps(1));
             // d·b ≤ a ≤ u·b (b > 0), checked with exact products.
-            let lo = d.mul_round(&b, Dir::Down).unwrap();
-            let hi = u.mul_round(&b, Dir::Up).unwrap();
+            let lo = d.mul_round(&b, RoundDirection::Down).unwrap();
+            let hi = u.mul_round(&b, RoundDirection::Up).unwrap();
             assert_ne!(lo.cmp_signed(&a), Ordering::Greater);
             assert_ne!(hi.cmp_signed(&a), Ordering::Less);
         }
@@ -1113,7 +1152,7 @@ mod tests {
 
     #[test]
     fn interval_decisions() {
-        let p = Iv::<FAST>::int(5).div_int(2);
+        let p = Interval::<FAST>::int(5).div_int(2);
         assert!(p.is_point());
         assert_eq!(p.round(Rounding::Floor), Some(2));
         assert_eq!(p.round(Rounding::Ceil), Some(3));
@@ -1124,23 +1163,24 @@ mod tests {
         assert_eq!(n.round(Rounding::Floor), Some(-3));
         assert_eq!(n.round(Rounding::Ceil), Some(-2));
         // An interval straddling an integer decides nearest but not floor.
-        let s = Iv::new(F::from_int(2).checked_sub(&F::from_ulps(1)).unwrap(), F::from_int(2));
+        let s = Interval::new(F::from_int(2).checked_sub(&F::from_ulps(1)).unwrap(), F::from_int(2));
         assert_eq!(s.round(Rounding::Floor), None);
         assert_eq!(s.round(Rounding::Ceil), Some(2));
         assert_eq!(s.round(Rounding::Nearest), Some(2));
         assert_eq!(s.sign(), Some(Ordering::Greater));
-        let z = Iv::new(F::from_ulps(1).checked_neg().unwrap(), F::from_ulps(1));
+        let z = Interval::new(F::from_ulps(1).checked_neg().unwrap(), F::from_ulps(1));
         assert_eq!(z.sign(), None);
-        assert_eq!(Iv::<FAST>::int(0).sign(), Some(Ordering::Equal));
-        assert_eq!(Iv::<FAST>::int(-3).sign(), Some(Ordering::Less));
-        assert_eq!(Iv::<FAST>::poison().round(Rounding::Floor), None);
+        assert_eq!(Interval::<FAST>::int(0).sign(), Some(Ordering::Equal));
+        assert_eq!(Interval::<FAST>::int(-3).sign(), Some(Ordering::Less));
+        assert_eq!(Interval::<FAST>::poison().round(Rounding::Floor), None);
         // Exact zero times anything is an exact zero.
-        let third = Iv::<FAST>::int(1).div_int(3);
+        let third = Interval::<FAST>::int(1).div_int(3);
         assert!(!third.is_point());
-        assert!(Iv::<FAST>::int(0).mul(&third).is_point());
-        assert!(third.neg().mul(&Iv::int(0)).is_point());
+        assert!(Interval::<FAST>::int(0).mul(&third).is_point());
+        assert!(third.neg().mul(&Interval::int(0)).is_point());
         // Mixed signs.
-        let m = Iv::new(F::from_int(-2), F::from_int(3)).mul(&Iv::new(F::from_int(-5), F::from_int(4)));
+        let m = Interval::new(F::from_int(-2), F::from_int(3))
+            .mul(&Interval::new(F::from_int(-5), F::from_int(4)));
         assert_eq!((m.lower().floor(), m.upper().floor()), (-15, 12));
         // Division by an interval containing 0 is poisoned.
         assert!(!third.div(&z).is_valid());
@@ -1150,7 +1190,7 @@ mod tests {
     #[test]
     fn tie_decisions() {
         let ulp = F::from_ulps(1);
-        let around = |v: F| Iv::new(v.checked_sub(&ulp).unwrap(), v.checked_add(&ulp).unwrap());
+        let around = |v: F| Interval::new(v.checked_sub(&ulp).unwrap(), v.checked_add(&ulp).unwrap());
         let two = F::from_int(2);
         // An integer inside: floor and ceil give it.
         let i = around(two);
@@ -1159,37 +1199,37 @@ mod tests {
         assert_eq!(i.round_tie(Rounding::Ceil), Some(2));
         assert_eq!(i.round_tie(Rounding::Nearest), Some(2));
         // On an end: [2 − ulp, 2] and [2, 2 + ulp].
-        let below = Iv::new(two.checked_sub(&ulp).unwrap(), two);
+        let below = Interval::new(two.checked_sub(&ulp).unwrap(), two);
         assert_eq!(below.round(Rounding::Floor), None);
         assert_eq!(below.round_tie(Rounding::Floor), Some(2));
-        let above = Iv::new(two, two.checked_add(&ulp).unwrap());
+        let above = Interval::new(two, two.checked_add(&ulp).unwrap());
         assert_eq!(above.round(Rounding::Ceil), None);
         assert_eq!(above.round_tie(Rounding::Ceil), Some(2));
         // A half-integer: nearest goes up, on both sides of 0.
-        let h = around(*Iv::<FAST>::int(3).div_int(2).lower());
+        let h = around(*Interval::<FAST>::int(3).div_int(2).lower());
         assert_eq!(h.round(Rounding::Nearest), None);
         assert_eq!(h.round_tie(Rounding::Nearest), Some(2));
         assert_eq!(h.round_tie(Rounding::Floor), Some(1));
-        let nh = around(*Iv::<FAST>::int(-5).div_int(2).lower());
+        let nh = around(*Interval::<FAST>::int(-5).div_int(2).lower());
         assert_eq!(nh.round_tie(Rounding::Nearest), Some(-2));
         assert_eq!(nh.round_tie(Rounding::Ceil), Some(-2));
         // Two boundaries: refused.
-        let wide = Iv::new(F::from_int(1), F::from_int(2));
+        let wide = Interval::new(F::from_int(1), F::from_int(2));
         assert_eq!(wide.round_tie(Rounding::Floor), None);
         assert_eq!(wide.round_tie(Rounding::Ceil), None);
-        let halves = Iv::new(
+        let halves = Interval::new(
             F::from_int(1).checked_sub(&F::half()).unwrap(),
             F::from_int(1).checked_add(&F::half()).unwrap(),
         );
         assert_eq!(halves.round_tie(Rounding::Nearest), None);
         assert_eq!(halves.round_tie(Rounding::Floor), Some(1));
-        assert_eq!(Iv::<FAST>::poison().round_tie(Rounding::Floor), None);
+        assert_eq!(Interval::<FAST>::poison().round_tie(Rounding::Floor), None);
         // Signs: 0 inside or on an end is 0; decided signs stay.
         assert_eq!(around(F::zero()).sign_tie(), Some(Ordering::Equal));
-        assert_eq!(Iv::new(F::zero(), ulp).sign_tie(), Some(Ordering::Equal));
-        assert_eq!(Iv::new(ulp, two).sign_tie(), Some(Ordering::Greater));
-        assert_eq!(Iv::<FAST>::int(-1).sign_tie(), Some(Ordering::Less));
-        assert_eq!(Iv::<FAST>::poison().sign_tie(), None);
+        assert_eq!(Interval::new(F::zero(), ulp).sign_tie(), Some(Ordering::Equal));
+        assert_eq!(Interval::new(ulp, two).sign_tie(), Some(Ordering::Greater));
+        assert_eq!(Interval::<FAST>::int(-1).sign_tie(), Some(Ordering::Less));
+        assert_eq!(Interval::<FAST>::poison().sign_tie(), None);
         // The identity tan 30°·sin 60° = 1/2 at 512 bits.
         let t = tan::<SLOW>(600_000).mul(&sin::<SLOW>(1_200_000));
         assert_eq!(t.round(Rounding::Nearest), None);
@@ -1201,18 +1241,18 @@ mod tests {
     #[test]
     fn exact_trigonometric_cases() {
         assert!(sin::<FAST>(0).is_point() && sin::<FAST>(0).round(Rounding::Floor) == Some(0));
-        assert_eq!(sin::<FAST>(600_000), Iv::half());
-        assert_eq!(sin::<FAST>(RIGHT), Iv::int(1));
-        assert_eq!(cos::<FAST>(0), Iv::int(1));
-        assert_eq!(cos::<FAST>(1_200_000), Iv::half());
-        assert_eq!(cos::<FAST>(RIGHT), Iv::int(0));
-        assert_eq!(tan::<FAST>(0), Iv::int(0));
-        assert_eq!(tan::<FAST>(900_000), Iv::int(1));
-        assert_eq!(cot::<FAST>(900_000), Iv::int(1));
-        assert_eq!(cot::<FAST>(RIGHT), Iv::int(0));
+        assert_eq!(sin::<FAST>(600_000), Interval::half());
+        assert_eq!(sin::<FAST>(RIGHT), Interval::int(1));
+        assert_eq!(cos::<FAST>(0), Interval::int(1));
+        assert_eq!(cos::<FAST>(1_200_000), Interval::half());
+        assert_eq!(cos::<FAST>(RIGHT), Interval::int(0));
+        assert_eq!(tan::<FAST>(0), Interval::int(0));
+        assert_eq!(tan::<FAST>(900_000), Interval::int(1));
+        assert_eq!(cot::<FAST>(900_000), Interval::int(1));
+        assert_eq!(cot::<FAST>(RIGHT), Interval::int(0));
         assert!(!tan::<FAST>(RIGHT).is_valid());
         assert!(!cot::<FAST>(0).is_valid());
-        assert_eq!(tan_cot::<SLOW>(900_000), (Iv::int(1), Iv::int(1)));
+        assert_eq!(tan_cot::<SLOW>(900_000), (Interval::int(1), Interval::int(1)));
         // Non-exact values are proper intervals.
         assert!(!sin::<FAST>(1_200_000).is_point());
         assert!(!cos::<FAST>(600_000).is_point());
@@ -1242,11 +1282,11 @@ mod tests {
         assert_eq!(s.round(Rounding::Nearest), None);
         assert!(s.lower().floor() == 0 && s.upper().ceil() == Some(1));
         // Widths: the fast path keeps more than 118 bits, the slow more than 500.
-        let w = |iv: &Iv<FAST>| iv.upper().checked_sub(iv.lower()).unwrap();
-        assert!(w(&sin::<FAST>(123_457)).cmp_signed(&Fx::from_ulps(1 << 10)) == Ordering::Less);
+        let w = |iv: &Interval<FAST>| iv.upper().checked_sub(iv.lower()).unwrap();
+        assert!(w(&sin::<FAST>(123_457)).cmp_signed(&Fixed::from_ulps(1 << 10)) == Ordering::Less);
         let ws = sin::<SLOW>(123_457);
         let ws = ws.upper().checked_sub(ws.lower()).unwrap();
-        assert!(ws.cmp_signed(&Fx::from_ulps(1 << 10)) == Ordering::Less);
+        assert!(ws.cmp_signed(&Fixed::from_ulps(1 << 10)) == Ordering::Less);
         // sin² + cos² = 1 within the widths.
         for k in [1, 7, 20_000, 333_333, 900_001, 1_799_999] {
             let (s, c) = sin_cos::<FAST>(k);
@@ -1257,17 +1297,17 @@ mod tests {
     }
 
     /// `atan(1/m)` enclosed by its alternating series at the precision `N`.
-    fn atan_inv<const N: usize>(m: u64) -> Iv<N> {
+    fn atan_inv<const N: usize>(m: u64) -> Interval<N> {
         let m2 = m * m;
-        let mut power = Iv::<N>::int(1).div_int(m); // 1/m^(2j+1)
+        let mut power = Interval::<N>::int(1).div_int(m); // 1/m^(2j+1)
         let mut sum = power;
         let mut j: u64 = 1;
         loop {
             power = power.div_int(m2);
             let term = power.div_int(2 * j + 1);
-            if term.upper().cmp_signed(&Fx::from_ulps(4)) != Ordering::Greater {
+            if term.upper().cmp_signed(&Fixed::from_ulps(4)) != Ordering::Greater {
                 let hi = *term.upper();
-                return sum.add(&Iv::new(hi.checked_neg().unwrap(), hi));
+                return sum.add(&Interval::new(hi.checked_neg().unwrap(), hi));
             }
             sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
             j += 1;
@@ -1281,9 +1321,9 @@ mod tests {
         const N: usize = 13; // 704 fraction bits
         let machin = atan_inv::<N>(5).mul_int(16).sub(&atan_inv::<N>(239).mul_int(4));
         assert!(machin.is_valid());
-        let words = |x: &Fx<N>| -> Vec<u64> {
+        let words = |x: &Fixed<N>| -> Vec<u64> {
             // Fraction limbs 10..=1 (most significant first) hold bits 1..640.
-            (0..10).map(|i| x.limbs()[Fx::<N>::FRAC - 1 - i]).collect()
+            (0..10).map(|i| x.limbs()[Fixed::<N>::FRAC - 1 - i]).collect()
         };
         assert_eq!(machin.lower().floor(), 3);
         assert_eq!(machin.upper().floor(), 3);
@@ -1291,7 +1331,7 @@ mod tests {
         assert_eq!(words(machin.upper()), PI_FRACTION.to_vec());
         // And pi() at both engine precisions encloses it.
         let p = pi::<SLOW>();
-        assert_eq!(p.upper().checked_sub(p.lower()).unwrap(), Fx::from_ulps(1));
+        assert_eq!(p.upper().checked_sub(p.lower()).unwrap(), Fixed::from_ulps(1));
         assert_eq!(
             p.lower().limbs()[..8],
             [

@@ -1,0 +1,523 @@
+//! The exact geometry of a G75.1 groove and the decisions on it
+//! (`docs/G75.md` §2–§6, reading R-G75ROUND).
+//!
+//! [`Geometry`] holds the words of a validated cycle as the local frame
+//! sees them. [`Enclosures`] encloses every trigonometric value and derived
+//! length at one precision (128 or 512 fraction bits) in [`Interval`]s, and
+//! its [`Region`] the roughing region's boundaries (§5). A [`Quantity`]
+//! names each real value of the groove (a point's coordinate, a corner
+//! check, a boundary at a depth) so that it can be evaluated from its
+//! formula at either precision; the [`Evaluator`] decides its floor,
+//! ceiling, nearest integer or sign at 128 bits and, only when that is
+//! undecided, at 512 bits with reading R-G75TIE.
+//!
+//! Twins: each formula is the one of the reference model's
+//! `spec/src/g75/geometry.rs` (points, tangent lengths, corner checks) and
+//! `spec/src/g75/region.rs` (`flank_a_rough`, `flank_b_rough`,
+//! `chord3_rough`, `chord4_rough`, `left`, `right`), there over exact reals.
+
+use core::cmp::Ordering;
+
+use crate::engine::real::{cot_of, sin_cos, tan_cot, tan_of, Interval, Rounding, FAST, SLOW};
+use crate::error::{CycleError, GrooveEdge};
+use crate::g75::{corner, CornerKind, G75Cycle};
+
+/// The words of a validated cycle as the local frame sees them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Geometry {
+    /// X-word increments per radius increment (2 diameter, 1 radius).
+    pub(super) f: i64,
+    /// `Y = |H|`.
+    pub(super) depth: i64,
+    /// `d = |D|`.
+    pub(super) width: i64,
+    /// `Δu`.
+    pub(super) du: i64,
+    /// `Δw`.
+    pub(super) dw: i64,
+    /// Tool width `w` (0: pointed tool).
+    pub(super) w: i64,
+    /// A in 0.0001°.
+    pub(super) a: u32,
+    /// B in 0.0001°.
+    pub(super) b: u32,
+    /// L in 0.0001°.
+    pub(super) l: u32,
+    /// Corner sizes r1..r4 (radius increments).
+    pub(super) size: [i64; 4],
+    /// True for a round, false for a chamfer.
+    pub(super) round: [bool; 4],
+}
+
+impl Geometry {
+    pub(super) fn new(c: &G75Cycle) -> Geometry {
+        Geometry {
+            f: c.x_mode.factor(),
+            depth: c.depth.abs(),
+            width: c.width.abs(),
+            du: c.allowance_x,
+            dw: c.allowance_z,
+            w: c.width_of_tool(),
+            a: c.flank_a,
+            b: c.flank_b,
+            l: c.slope,
+            size: c.corners.map(|k| k.size),
+            round: c.corners.map(|k| k.kind == CornerKind::Round),
+        }
+    }
+
+    /// Size of corner `i`.
+    pub(super) fn size(&self, i: usize) -> i64 {
+        self.size.get(i).copied().unwrap_or(0)
+    }
+
+    /// True when corner `i` is a round of non-zero radius.
+    pub(super) fn is_round(&self, i: usize) -> bool {
+        self.size(i) > 0 && self.round.get(i).copied().unwrap_or(false)
+    }
+
+    /// `f` as an unsigned divisor (1 or 2).
+    pub(super) fn fu(&self) -> u64 {
+        self.f.unsigned_abs()
+    }
+}
+
+/// What the roughing region's boundaries (`docs/G75.md` §5) need, at the
+/// precision `N`: enough to compute a layer's plunge range.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Region<const N: usize> {
+    /// `(Y/f)·cot a`, the u of P1.
+    pub(super) p1u: Interval<N>,
+    /// `cot a`.
+    pub(super) cot_a: Interval<N>,
+    /// `cot b`.
+    pub(super) cot_b: Interval<N>,
+    /// `cot(a/2)` (only when r3 > 0).
+    pub(super) cot_ha: Interval<N>,
+    /// `cot(b/2)` (only when r4 > 0).
+    pub(super) cot_hb: Interval<N>,
+    /// Tangent length t3.
+    pub(super) t3: Interval<N>,
+    /// Tangent length t4.
+    pub(super) t4: Interval<N>,
+}
+
+/// The exact integer `v` as an interval.
+pub(super) fn int<const N: usize>(v: i64) -> Interval<N> {
+    Interval::int(i128::from(v))
+}
+
+impl<const N: usize> Region<N> {
+    /// `flankA_r(y) = (y/f)·cot a + Δw`.
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `flank_a_rough`.
+    pub(super) fn flank_a(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        y.div_int(g.fu()).mul(&self.cot_a).add(&int(g.dw))
+    }
+
+    /// `flankB_r(y) = (Y/f)·cot a + d + ((Y − y)/f)·cot b − Δw`.
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `flank_b_rough`.
+    pub(super) fn flank_b(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        let rise = int::<N>(g.depth).sub(y).div_int(g.fu()).mul(&self.cot_b);
+        self.p1u.add(&int(g.width)).add(&rise).sub(&int(g.dw))
+    }
+
+    /// `chord3_r(y) = (Y/f)·cot a + t3 + Δw − ((Y − Δu − y)/f)·cot(a/2)`.
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `chord3_rough`.
+    pub(super) fn chord3(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        let rise = int::<N>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_ha);
+        self.p1u.add(&self.t3).add(&int(g.dw)).sub(&rise)
+    }
+
+    /// `chord4_r(y) = (Y/f)·cot a + d − t4 − Δw + ((Y − Δu − y)/f)·cot(b/2)`.
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `chord4_rough`.
+    pub(super) fn chord4(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        let rise = int::<N>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_hb);
+        self.p1u.add(&int(g.width)).sub(&self.t4).sub(&int(g.dw)).add(&rise)
+    }
+
+    /// `left(y) = max(flankA_r(y), chord3_r(y))` (chord3 only when t3 > 0).
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `left`.
+    pub(super) fn left(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        let flank = self.flank_a(g, y);
+        if g.size(corner::R3) > 0 {
+            flank.max(&self.chord3(g, y))
+        } else {
+            flank
+        }
+    }
+
+    /// `right(y) = min(flankB_r(y), chord4_r(y))` (chord4 only when t4 > 0).
+    ///
+    /// Twin: `spec/src/g75/region.rs`, `right`.
+    pub(super) fn right(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+        let flank = self.flank_b(g, y);
+        if g.size(corner::R4) > 0 {
+            flank.min(&self.chord4(g, y))
+        } else {
+            flank
+        }
+    }
+}
+
+/// Every trigonometric value and derived length of the cycle at the
+/// precision `N`. Values a cycle does not need (the half angles of absent
+/// corners) are poisoned intervals: using one by mistake could only give
+/// `UndecidedRounding`, never a wrong value.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Enclosures<const N: usize> {
+    /// The region's values.
+    pub(super) r: Region<N>,
+    /// `sin a`.
+    pub(super) sin_a: Interval<N>,
+    /// `cos a`.
+    pub(super) cos_a: Interval<N>,
+    /// `sin b`.
+    pub(super) sin_b: Interval<N>,
+    /// `cos b`.
+    pub(super) cos_b: Interval<N>,
+    /// `sin L`.
+    pub(super) sin_l: Interval<N>,
+    /// `cos L`.
+    pub(super) cos_l: Interval<N>,
+    /// Tangent length t1.
+    pub(super) t1: Interval<N>,
+    /// Tangent length t2.
+    pub(super) t2: Interval<N>,
+    /// `u3`.
+    pub(super) u3: Interval<N>,
+    /// `y3`.
+    pub(super) y3: Interval<N>,
+}
+
+impl<const N: usize> Enclosures<N> {
+    /// The enclosures of a cycle's values (`docs/G75.md` §3, angles in
+    /// units of 0.00005°: `a` is `2A`, `a/2` is `A`, `(a + L)/2` is `A + L`).
+    ///
+    /// Twin: `spec/src/g75/geometry.rs`, `groove` (the angles and tangent
+    /// lengths), `tangent_length`, `u3`, `y3`.
+    pub(super) fn new(g: &Geometry) -> Enclosures<N> {
+        let (ka, kb, kl) = (2 * g.a, 2 * g.b, 2 * g.l);
+        let (sin_a, cos_a) = sin_cos::<N>(ka);
+        let (sin_b, cos_b) = sin_cos::<N>(kb);
+        let (sin_l, cos_l) = sin_cos::<N>(kl);
+        let cot_a = cot_of(ka, &sin_a, &cos_a);
+        let cot_b = cot_of(kb, &sin_b, &cos_b);
+        let tan_l = tan_of(kl, &sin_l, &cos_l);
+        // Tangent lengths (§3): a chamfer's is its size, a round's ρ·tan(…).
+        let t = |i: usize, half: u32| -> Interval<N> {
+            let c = g.size(i);
+            if c == 0 {
+                int(0)
+            } else if g.is_round(i) {
+                tan_cot::<N>(half).0.mul_int(c)
+            } else {
+                int(c)
+            }
+        };
+        let t1 = t(corner::R1, g.a + g.l);
+        // validate(): L < B.
+        let t2 = t(corner::R2, g.b.saturating_sub(g.l));
+        // t3 and cot(a/2) (and t4, cot(b/2)) share one series.
+        let half = |i: usize, k: u32| -> (Interval<N>, Interval<N>) {
+            let c = g.size(i);
+            if c == 0 {
+                return (int(0), Interval::poison());
+            }
+            let (tan_h, cot_h) = tan_cot::<N>(k);
+            let t = if g.is_round(i) { tan_h.mul_int(c) } else { int(c) };
+            (t, cot_h)
+        };
+        let (t3, cot_ha) = half(corner::R3, g.a);
+        let (t4, cot_hb) = half(corner::R4, g.b);
+        // P1.u = (Y/f)·cot a.
+        let hr = int::<N>(g.depth).div_int(g.fu());
+        let p1u = hr.mul(&cot_a);
+        // u3 = ((Y/f)·cot a + d + (Y/f)·cot b) / (1 − tan L·cot b).
+        let num = p1u.add(&int(g.width)).add(&hr.mul(&cot_b));
+        let den = int::<N>(1).sub(&tan_l.mul(&cot_b));
+        let u3 = num.div(&den);
+        // y3 = −f·u3·tan L.
+        let y3 = u3.mul(&tan_l).mul_int(g.f).neg();
+        Enclosures {
+            r: Region { p1u, cot_a, cot_b, cot_ha, cot_hb, t3, t4 },
+            sin_a,
+            cos_a,
+            sin_b,
+            cos_b,
+            sin_l,
+            cos_l,
+            t1,
+            t2,
+            u3,
+            y3,
+        }
+    }
+
+    /// `Y − Δu − f·t·sin θ − Δu·cos θ`: the exact depth of K1 (t3, a) or K4
+    /// (t4, b).
+    pub(super) fn y_k(g: &Geometry, t: &Interval<N>, sin: &Interval<N>, cos: &Interval<N>) -> Interval<N> {
+        int::<N>(g.depth - g.du).sub(&t.mul(sin).mul_int(g.f)).sub(&cos.mul_int(g.du))
+    }
+
+    /// The enclosure of the quantity `q`.
+    ///
+    /// Twin: the function of the same name in `spec/src/g75/` for each
+    /// quantity: `geometry.rs` (`t1s` … `c2`, `p1`, `p2`, `u3`, `y3`,
+    /// `check_corners`), `region.rs` (`left`, `right`, `flank_a_rough`,
+    /// `flank_b_rough`), `contour.rs` (`y_k1`, `k2`, `k3`, `y_k4`).
+    pub(super) fn eval(&self, g: &Geometry, q: Quantity) -> Interval<N> {
+        let r = &self.r;
+        let f = g.f;
+        let rho = |i: usize| g.size(i);
+        match q {
+            // §3 alarms: (sum of tangent lengths) − (edge length).
+            Quantity::CheckFlankA => {
+                let edge = int::<N>(g.depth).div_int(g.fu()).div(&self.sin_a);
+                self.t1.add(&r.t3).sub(&edge)
+            }
+            Quantity::CheckBottom => r.t3.add(&r.t4).sub(&int(g.width)),
+            Quantity::CheckFlankB => {
+                let edge = int::<N>(g.depth).sub(&self.y3).div_int(g.fu()).div(&self.sin_b);
+                r.t4.add(&self.t2).sub(&edge)
+            }
+            Quantity::Left(y) => r.left(g, &Interval::int(y)),
+            Quantity::Right(y) => r.right(g, &Interval::int(y)),
+            Quantity::FlankA(y) => r.flank_a(g, &Interval::int(y)),
+            Quantity::FlankB(y) => r.flank_b(g, &Interval::int(y)),
+            Quantity::Y3 => self.y3,
+            Quantity::U3 => self.u3,
+            Quantity::YK1 => Enclosures::y_k(g, &r.t3, &self.sin_a, &self.cos_a),
+            Quantity::K2 => r.p1u.add(&r.t3).add(&int(g.dw)),
+            Quantity::K3 => r.p1u.add(&int(g.width)).sub(&r.t4).sub(&int(g.dw)),
+            Quantity::YK4 => Enclosures::y_k(g, &r.t4, &self.sin_b, &self.cos_b),
+            Quantity::P1U => r.p1u,
+            Quantity::P2U => r.p1u.add(&int(g.width)),
+            Quantity::T1sU => self.t1.mul(&self.cos_l).neg(),
+            Quantity::T1sY => self.t1.mul(&self.sin_l).mul_int(f),
+            Quantity::T1aU => self.t1.mul(&self.cos_a),
+            Quantity::T1aY => self.t1.mul(&self.sin_a).mul_int(f),
+            // C1 = T1a + ρ1·(−sin a, f·cos a).
+            Quantity::C1U => self.t1.mul(&self.cos_a).sub(&self.sin_a.mul_int(rho(corner::R1))),
+            Quantity::C1Y => {
+                self.t1.mul(&self.sin_a).mul_int(f).add(&self.cos_a.mul_int(rho(corner::R1)).mul_int(f))
+            }
+            Quantity::T3aU => r.p1u.sub(&r.t3.mul(&self.cos_a)),
+            Quantity::T3aY => int::<N>(g.depth).sub(&r.t3.mul(&self.sin_a).mul_int(f)),
+            // T3b.u = C3.u.
+            Quantity::T3bU => r.p1u.add(&r.t3),
+            Quantity::C3Y => int(g.depth - f * rho(corner::R3)),
+            // T4b.u = C4.u.
+            Quantity::T4bU => r.p1u.add(&int(g.width)).sub(&r.t4),
+            Quantity::T4cU => r.p1u.add(&int(g.width)).add(&r.t4.mul(&self.cos_b)),
+            Quantity::T4cY => int::<N>(g.depth).sub(&r.t4.mul(&self.sin_b).mul_int(f)),
+            Quantity::C4Y => int(g.depth - f * rho(corner::R4)),
+            Quantity::T2bU => self.u3.sub(&self.t2.mul(&self.cos_b)),
+            Quantity::T2bY => self.y3.add(&self.t2.mul(&self.sin_b).mul_int(f)),
+            Quantity::T2sU => self.u3.add(&self.t2.mul(&self.cos_l)),
+            Quantity::T2sY => self.y3.sub(&self.t2.mul(&self.sin_l).mul_int(f)),
+            // C2 = T2b + ρ2·(sin b, f·cos b).
+            Quantity::C2U => self.u3.sub(&self.t2.mul(&self.cos_b)).add(&self.sin_b.mul_int(rho(corner::R2))),
+            Quantity::C2Y => self
+                .y3
+                .add(&self.t2.mul(&self.sin_b).mul_int(f))
+                .add(&self.cos_b.mul_int(rho(corner::R2)).mul_int(f)),
+        }
+    }
+}
+
+/// A real quantity of the cycle (`docs/G75.md` §3–§8), named so that it can
+/// be evaluated at either precision from its formula.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Quantity {
+    /// `t1 + t3 − (Y/f)/sin a`.
+    CheckFlankA,
+    /// `t3 + t4 − d`.
+    CheckBottom,
+    /// `t4 + t2 − ((Y − y3)/f)/sin b`.
+    CheckFlankB,
+    /// `left(y)`.
+    Left(i128),
+    /// `right(y)` (before subtracting w).
+    Right(i128),
+    /// `flankA_r(y)`.
+    FlankA(i128),
+    /// `flankB_r(y)`.
+    FlankB(i128),
+    /// `y3`.
+    Y3,
+    /// `u3`.
+    U3,
+    /// `Y − Δu − f·t3·sin a − Δu·cos a`.
+    YK1,
+    /// `(Y/f)·cot a + t3 + Δw`.
+    K2,
+    /// `(Y/f)·cot a + d − t4 − Δw`.
+    K3,
+    /// `Y − Δu − f·t4·sin b − Δu·cos b`.
+    YK4,
+    /// P1.u.
+    P1U,
+    /// P2.u.
+    P2U,
+    /// T1s.u.
+    T1sU,
+    /// T1s.y.
+    T1sY,
+    /// T1a.u.
+    T1aU,
+    /// T1a.y.
+    T1aY,
+    /// C1.u.
+    C1U,
+    /// C1.y.
+    C1Y,
+    /// T3a.u.
+    T3aU,
+    /// T3a.y.
+    T3aY,
+    /// T3b.u (= C3.u).
+    T3bU,
+    /// C3.y.
+    C3Y,
+    /// T4b.u (= C4.u).
+    T4bU,
+    /// T4c.u.
+    T4cU,
+    /// T4c.y.
+    T4cY,
+    /// C4.y.
+    C4Y,
+    /// T2b.u.
+    T2bU,
+    /// T2b.y.
+    T2bY,
+    /// T2s.u.
+    T2sU,
+    /// T2s.y.
+    T2sY,
+    /// C2.u.
+    C2U,
+    /// C2.y.
+    C2Y,
+}
+
+/// Decides roundings and signs of the cycle's quantities (R-G75ROUND): at
+/// 128 fraction bits, then, if undecided, at 512 with R-G75TIE (the 512-bit
+/// context is built at most once per expansion).
+pub(super) struct Evaluator {
+    pub(super) g: Geometry,
+    pub(super) fast: Enclosures<FAST>,
+    pub(super) slow: Option<Enclosures<SLOW>>,
+}
+
+impl Evaluator {
+    pub(super) fn new(g: Geometry) -> Evaluator {
+        Evaluator { g, fast: Enclosures::new(&g), slow: None }
+    }
+
+    pub(super) fn slow(&mut self) -> &Enclosures<SLOW> {
+        let g = &self.g;
+        self.slow.get_or_insert_with(|| Enclosures::new(g))
+    }
+
+    /// `q` rounded by `r`: decided at 128 bits, else at 512 bits with
+    /// reading R-G75TIE (a value whose 512-bit enclosure holds exactly one
+    /// rounding boundary lies on it).
+    pub(super) fn round(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
+        if let Some(v) = self.fast.eval(&self.g, q).round(r) {
+            return Ok(v);
+        }
+        let g = self.g;
+        self.slow().eval(&g, q).round_tie(r).ok_or(CycleError::UndecidedRounding)
+    }
+
+    /// `floor(q)`.
+    pub(super) fn floor(&mut self, q: Quantity) -> Result<i128, CycleError> {
+        self.round(q, Rounding::Floor)
+    }
+
+    /// `ceil(q)`.
+    pub(super) fn ceil(&mut self, q: Quantity) -> Result<i128, CycleError> {
+        self.round(q, Rounding::Ceil)
+    }
+
+    /// `floor(q + 1/2)`.
+    pub(super) fn nearest(&mut self, q: Quantity) -> Result<i128, CycleError> {
+        self.round(q, Rounding::Nearest)
+    }
+
+    /// The sign of `q`: decided at 128 bits, else at 512 bits with reading
+    /// R-G75TIE (a 512-bit enclosure that holds 0 is taken to be 0).
+    pub(super) fn sign(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
+        if let Some(v) = self.fast.eval(&self.g, q).sign() {
+            return Ok(v);
+        }
+        let g = self.g;
+        self.slow().eval(&g, q).sign_tie().ok_or(CycleError::UndecidedRounding)
+    }
+
+    /// The evaluator of a cycle after the checks that every use of its
+    /// geometry starts with: `validate()`, then the corners (§3).
+    pub(super) fn checked(c: &G75Cycle) -> Result<Evaluator, CycleError> {
+        c.validate()?;
+        let mut ev = Evaluator::new(Geometry::new(c));
+        ev.check_corners()?;
+        Ok(ev)
+    }
+
+    /// §3: the corners must fit their edges (flank A, bottom, flank B).
+    ///
+    /// Twin: `spec/src/g75/geometry.rs`, `check_corners`.
+    pub(super) fn check_corners(&mut self) -> Result<(), CycleError> {
+        for (q, edge) in [
+            (Quantity::CheckFlankA, GrooveEdge::FlankA),
+            (Quantity::CheckBottom, GrooveEdge::Bottom),
+            (Quantity::CheckFlankB, GrooveEdge::FlankB),
+        ] {
+            if self.sign(q)? == Ordering::Greater {
+                return Err(CycleError::CornerTooLarge { edge });
+            }
+        }
+        Ok(())
+    }
+
+    /// The plunge range of the layer ending at `y` (R-G75PLUNGE):
+    /// `(ceil(left(y)), floor(right(y)) − w)`.
+    ///
+    /// Twin: `spec/src/g75/roughing.rs`, `plunge_range`.
+    pub(super) fn plunges(&mut self, y: i64) -> Result<(i128, i128), CycleError> {
+        let first = self.ceil(Quantity::Left(i128::from(y)))?;
+        let last = self.floor(Quantity::Right(i128::from(y)))? - i128::from(self.g.w);
+        Ok((first, last))
+    }
+}
+
+/// The plunge range of the layer ending at `y`, for the iterator: the same
+/// decisions as [`Evaluator::plunges`], each end on its own (the fast context's
+/// region, then, if undecided, a 512-bit context rebuilt from the words,
+/// at most once, with reading R-G75TIE). `None` only if undecided at 512
+/// bits, which [`expand_g75`] has excluded for every layer.
+pub(super) fn plunges_at(g: &Geometry, fast: &Region<FAST>, y: i64) -> Option<(i128, i128)> {
+    let yv = Interval::int(i128::from(y));
+    let mut slow: Option<Region<SLOW>> = None;
+    let first = match fast.left(g, &yv).round(Rounding::Ceil) {
+        Some(v) => v,
+        None => slow
+            .get_or_insert_with(|| Enclosures::<SLOW>::new(g).r)
+            .left(g, &Interval::int(i128::from(y)))
+            .round_tie(Rounding::Ceil)?,
+    };
+    let last = match fast.right(g, &yv).round(Rounding::Floor) {
+        Some(v) => v,
+        None => slow
+            .get_or_insert_with(|| Enclosures::<SLOW>::new(g).r)
+            .right(g, &Interval::int(i128::from(y)))
+            .round_tie(Rounding::Floor)?,
+    };
+    Some((first, last - i128::from(g.w)))
+}

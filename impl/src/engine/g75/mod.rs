@@ -1,0 +1,399 @@
+//! The fixed-point G75.1 engine: the radial trapezoidal groove cycle of
+//! `docs/G75.md` (the definition the reference model `cycleref_spec::g75`
+//! follows too) without heap, floating point, `unsafe` or panics, streamed
+//! move by move.
+//!
+//! # Layout
+//!
+//! This module is the driver: [`expand_g75`] (every check, in order, then
+//! the iterator) and [`G75Moves`] (approach, roughing, tail). The rest is
+//! split by concern:
+//!
+//! * `exact`: the cycle's words in the local frame (`Geometry`), the
+//!   interval enclosures of its values at 128 and 512 bits (`Enclosures`,
+//!   `Region`), the named real quantities (`Quantity`) and their decisions
+//!   (`Evaluator`: floor, ceil, nearest, sign; R-G75ROUND, R-G75TIE);
+//! * `contour`: the rounded finishing profile and rough-contour vertices in
+//!   local coordinates;
+//! * `frame`: local to absolute coordinates, the range check, arc senses;
+//! * `roughing`: layers, the peck count, the roughing range check and the
+//!   roughing state machine;
+//! * `tail`: the precomputed moves after the roughing;
+//! * `profile`: the public [`GrooveProfile`] ([`groove_profile`]);
+//! * `tests`: worked examples, sweeps and formulas against floats.
+//!
+//! The reference model is split the same way (`spec/src/g75/`).
+//!
+//! [`expand_g75`] computes the whole geometry and makes every check before
+//! the first move; the [`G75Moves`] it returns then cannot fail. Errors come
+//! in this order (reading R-G75ORDER):
+//!
+//! 1. [`G75Cycle::validate`];
+//! 2. [`CycleError::CornerTooLarge`]: flank A, then the bottom, then flank B
+//!    (§3);
+//! 3. [`CycleError::GrooveNarrowerThanTool`] at the last layer (§7), for
+//!    every J: the approach point A11 of step 1 needs layer 1's plunge
+//!    range whatever J is (reading R-G75NARROW);
+//! 4. [`CycleError::RidgesInLayers`] (§7, reading R-G75RIDGE): roughing
+//!    (J0, J1) in more than one layer with Δk > w where layer 1's plunge
+//!    range is wider than w;
+//! 5. [`CycleError::TooManyPecks`] (§9), counted before any move, only when
+//!    the cycle roughs (J0, J1): J2 makes no pecks (reading R-G75PECKS);
+//! 6. [`CycleError::OutOfRange`] with [`Field::PassCoordinate`](crate::error::Field::PassCoordinate): the first
+//!    coordinate of the emitted moves, in move order (each move's end X,
+//!    end Z, then an arc's centre X, centre Z), beyond
+//!    [`MAX_LENGTH`](crate::units::MAX_LENGTH); the value is the absolute coordinate, saturated to
+//!    `i64` (reading R-G75RANGE).
+//!
+//! [`CycleError::UndecidedRounding`] comes from the first value that cannot
+//! be decided even with reading R-G75TIE (below): only an enclosure that
+//! still holds two rounding boundaries at 512 bits (a poisoned one, which
+//! the magnitudes below rule out). Values are computed in the order: the
+//! corner comparisons, the last layer's plunge range, layer 1's, `y_top`,
+//! the other layers' (while counting pecks), the rough contour (J0, J1),
+//! the finishing contour (J1, J2). Values that the chosen J does not use are not computed
+//! (reading R-G75NEED): J0 never computes the finishing points, J2 never
+//! the rough contour.
+//!
+//! # Exact rounding
+//!
+//! Every coordinate is rounded from the exact real value of its formula in
+//! `docs/G75.md` §3–§8, evaluated with the rigorous interval arithmetic of
+//! [`crate::engine::real`]: at 128 fraction bits first, and, only if that
+//! interval does not decide the rounding, again from the same formula at
+//! 512 fraction bits (reading R-G75ROUND). Exact inputs (right angles, 45°,
+//! the other exact cases of §6) give exact point intervals, decided
+//! exactly.
+//!
+//! R-G75TIE: a value still undecided at 512 bits whose enclosure holds
+//! exactly one rounding boundary (an integer for floor and ceil, a
+//! half-integer for nearest, 0 for a sign; inside or on an end) is taken
+//! to lie on it: `floor(k) = ceil(k) = k`, the nearest of `k + 1/2` is
+//! `k + 1`, the sign is 0 ([`Interval::round_tie`](crate::engine::real::Interval::round_tie), [`Interval::sign_tie`](crate::engine::real::Interval::sign_tie)). This is
+//! how identities among irrational values are decided (a round on a 60°
+//! flank, `tan 30°·sin 60° = 1/2`; a round whose `f·ρ` equals Δu,
+//! `y_K1 = Y − 2Δu`). The rule is applied only to the 512-bit enclosure,
+//! never to the 128-bit one, in `Evaluator::round`, `Evaluator::sign` and
+//! `plunges_at` alike.
+//!
+//! The formulas are evaluated as written — in particular `((Y − Δu −
+//! y)/f)·cot(a/2)` is 0 exactly at `y = Y − Δu` — so an expression is exact
+//! in this engine exactly when it is exact in the reference model.
+//!
+//! # Magnitudes
+//!
+//! After `validate()`: `Y, d, Δu, Δw, w, Δi, Δk, Δv < 2^27`, corner sizes
+//! `< 2^20`, `f ≤ 2`; every tangent or cotangent used is at most
+//! `cot(0.00005°) < 2^21`; `1 − tan L·cot b = sin(b − L)/(sin b·cos L) ≥
+//! sin(0.0001°) > 2^-20`. So `(Y/f)·cot a < 2^47`, `u3 < 2^69`, `y3 =
+//! −f·u3·tan L` has `|y3| = f·(…)·sin L·sin b / sin(b − L) < 2^70`, and no
+//! formula exceeds `2^96`: far inside the `2^127` of an [`Interval`](crate::engine::real::Interval), so no
+//! interval operation overflows (an overflow would poison the interval and
+//! give `UndecidedRounding`, never a wrong value). Rounded values are kept
+//! in `i128` until the range check has bounded every coordinate of a move
+//! by `MAX_LENGTH < 2^30`; only then are they narrowed to `i64`. The peck
+//! count is formed in `i128` (at most `2^71` pecks per plunge times `2^48`
+//! plunges per layer before the limit stops the count).
+//!
+//! # Work and memory
+//!
+//! Up front: a fixed number of interval evaluations (about forty) plus two
+//! per layer while counting pecks (at most `MAX_PECKS` layers, since every
+//! layer has at least one peck). Per move: O(1); a layer change evaluates
+//! the layer's plunge range again (a handful of 256-bit interval products;
+//! when 128 bits do not decide it, in practice only for a boundary exactly
+//! on an integer (R-G75TIE), the 512-bit context is rebuilt once for that
+//! layer, a bounded amount of work). A [`G75Moves`] is a fixed-size value
+//! (2 088 bytes on 64-bit targets: the precomputed tail
+//! of at most 22 moves and the 128-bit enclosures of the region's
+//! boundaries; the test `size_of_the_iterator` bounds it).
+//!
+//! # Readings added by this engine
+//!
+//! Where `docs/G75.md` leaves a detail open, the simplest reading is taken;
+//! the reference model must match them (each is also cited in the code):
+//!
+//! * R-G75ORDER, R-G75NARROW, R-G75PECKS, R-G75RANGE, R-G75NEED: above.
+//!   R-G75RANGE checks only emitted moves: a move left out as empty
+//!   (R-G75ZERO) has no coordinate to check, not even an arc centre.
+//! * R-G75ROLES: the step-8 rapids back to `y_top` and A11 are
+//!   [`Role::Approach`]; the rapids of step 9 (to R0, back to A11) are
+//!   [`Role::RoughContour`]; the two rapids of step 10 to F0 are
+//!   [`Role::FinishContour`]; the three rapids back to S and the one to
+//!   `from` are [`Role::Return`]. J0 goes from A11 (after step 9) straight
+//!   to `from`.
+//! * R-G75ARCDIR: the turning sense of a round is fixed by the geometry
+//!   (see `Frame::clockwise`): convex corners r1, r2 are G02 exactly when
+//!   `sx·sz < 0`, concave corners r3, r4 exactly when `sx·sz > 0`.
+//! * R-G75KCHECK: no alarm beyond §7's. The check `K2.u ≤ K3.u` (or Q1, Q2)
+//!   is the last layer's `A_Mf ≥ A_M1` itself (at `y = Y − Δu`, `left` is
+//!   K2's formula and `right` K3's); `K1.u ≤ K2.u`, `K4.u ≥ K3.u` and
+//!   `y_K1, y_K4 ≤ Y − Δu` hold for every cycle (the chords meet the
+//!   flanks above the bottom). `y_K1` (`y_K4`) may lie at or above
+//!   `y_top` when the corner covers most of its flank and Δu > 0; then
+//!   (§8) K1 (K4) is not a vertex and R0 (R3) lies on the chord.
+//! * R-G75ARCZERO: an arc whose rounded end is its start is left out like
+//!   any empty move (`TailBuilder::go`), centre and all.
+//! * R-G75PROFILE: [`groove_profile`] checks `validate()` and the corners
+//!   only, keeps every point (none is left out as empty; K1 and K4 are
+//!   vertices only below `y_top`, as in the rough contour), and range-checks
+//!   its own points in its order.
+
+use core::iter::FusedIterator;
+
+mod contour;
+mod exact;
+mod frame;
+mod profile;
+mod roughing;
+mod tail;
+#[cfg(test)]
+mod tests;
+
+pub use profile::{groove_profile, GrooveProfile, ProfilePoint, ProfileSegment};
+
+use contour::{finish_profile, rough_vertices, Local, LocalSegment};
+use exact::{Evaluator, Geometry, Quantity, Region};
+use frame::Frame;
+use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
+use tail::{Leg, LegKind, TailBuilder, TAIL};
+
+use crate::engine::arith::saturate_i64;
+use crate::engine::real::FAST;
+use crate::error::CycleError;
+use crate::g75::G75Cycle;
+use crate::moves::{Motion, Move, Role};
+use crate::units::Length;
+
+/// Which part of the path comes next.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Stage {
+    /// Step 1: the rapid to A11.
+    Approach,
+    /// Steps 2–8.
+    Rough,
+    /// The precomputed tail.
+    Tail,
+    /// Nothing more.
+    Done,
+}
+
+/// The moves of a G75.1 cycle, in order (`docs/G75.md` §8): an
+/// [`Iterator`] of constant size made by [`expand_g75`]. It cannot fail:
+/// every check was made before it was returned.
+#[derive(Clone, Debug)]
+pub struct G75Moves {
+    /// Local to absolute coordinates.
+    frame: Frame,
+    /// The words in the local frame (a layer's plunge range needs them).
+    geometry: Geometry,
+    /// The roughing region's boundaries at 128 bits.
+    region: Region<FAST>,
+    /// Which part of the path comes next.
+    stage: Stage,
+    /// Step 1, the rapid to A11, unless the tool is there already.
+    approach: Option<Leg>,
+    /// J0 or J1: the cycle roughs.
+    roughs: bool,
+    /// The roughing state.
+    rough: Roughing,
+    /// The tool's local position `(u, y)` during the roughing.
+    at: (i64, i64),
+    /// The precomputed moves after the roughing.
+    tail: [Leg; TAIL],
+    /// How many of `tail` are moves.
+    tail_len: usize,
+    /// The next move of `tail`.
+    tail_next: usize,
+}
+
+/// Expands a G75.1 cycle (`docs/G75.md`): the same error or the same moves
+/// as the reference model.
+///
+/// # Errors
+///
+/// In this order (R-G75ORDER): [`G75Cycle::validate`]'s errors,
+/// [`CycleError::CornerTooLarge`], [`CycleError::GrooveNarrowerThanTool`],
+/// [`CycleError::RidgesInLayers`], [`CycleError::TooManyPecks`], [`CycleError::OutOfRange`] for a move
+/// coordinate; [`CycleError::UndecidedRounding`] where a needed value cannot
+/// be decided at 512 fraction bits even by R-G75TIE (an enclosure holding
+/// two rounding boundaries).
+///
+/// Twin: `spec/src/g75/mod.rs`, `expand`.
+pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
+    let mut ev = Evaluator::checked(c)?;
+    let g = ev.g;
+    let frame = Frame::new(c);
+
+    let layers = Layers::new(c, &g);
+    let rough_bottom = layers.rough_bottom;
+    // R-G75PLUNGE: the last layer is the narrowest (left grows, right
+    // shrinks with depth); R-G75NARROW: checked for every J. This is also
+    // the check K2.u ≤ K3.u (or Q1/Q2): at y = Y − Δu, left is K2's formula
+    // and right K3's plus w.
+    let (last_first, last_last) = ev.plunges(rough_bottom)?;
+    if last_last < last_first {
+        return Err(CycleError::GrooveNarrowerThanTool { tool_width: Length::new(g.w, c.units) });
+    }
+    let y1 = layers.bottom(1);
+    let (a11, a1f) = if layers.count == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
+    // R-G75RIDGE: layered roughing with a step wider than the tool leaves
+    // ridges in layer 1 that the next layer's rapids would cross.
+    if c.path.roughs() && layers.count >= 2 && c.step > g.w && a1f - a11 > i128::from(g.w) {
+        return Err(CycleError::RidgesInLayers {
+            step: Length::new(c.step, c.units),
+            tool_width: Length::new(g.w, c.units),
+        });
+    }
+    // Layer tops: y_top = floor(y3) (R-G75LAYER).
+    let y_top = ev.floor(Quantity::Y3)?;
+
+    // §9, only when roughing (R-G75PECKS).
+    let roughs = c.path.roughs();
+    if roughs {
+        check_peck_count(&mut ev, c, &layers, y_top, (a11, a1f), (last_first, last_last))?;
+    }
+    // R-G75NEED: the rough contour only for J0/J1, the finishing profile
+    // only for J1/J2.
+    let rough_pts = if roughs { Some(rough_vertices(&mut ev, y_top)?) } else { None };
+    let finish_pts = if c.path.finishes() { Some(finish_profile(&mut ev)?) } else { None };
+
+    // R-G75RANGE, in move order. Step 1: the approach to A11.
+    let a11_local = (a11, y_top);
+    let a11_abs = frame.point(a11_local)?;
+    if roughs {
+        check_roughing(c, &frame, y_top, (a11, a1f), layers.count)?;
+    }
+    let w = i128::from(g.w);
+    let top_last = if layers.count >= 2 { i128::from(layers.bottom(layers.count - 1)) } else { y_top };
+    let mut b = TailBuilder {
+        frame,
+        at: if roughs { (last_last, top_last) } else { a11_local },
+        legs: [Leg { kind: LegKind::Rapid, to: c.from, role: Role::Return }; TAIL],
+        len: 0,
+    };
+    if let Some((v, n)) = rough_pts {
+        // Step 8: back along X to y_top and along Z to A11.
+        b.rapid((b.at.0, y_top), Role::Approach)?;
+        b.rapid(a11_local, Role::Approach)?;
+        // Step 9: rapid to R0, feeds along the contour, rapid back to A11.
+        for (i, p) in v.iter().take(n).enumerate() {
+            let to = if p.far { (p.at.0 - w, p.at.1) } else { p.at };
+            if i == 0 {
+                b.rapid(to, Role::RoughContour)?;
+            } else {
+                b.feed(to, Role::RoughContour)?;
+            }
+        }
+        b.rapid(a11_local, Role::RoughContour)?;
+    }
+    if let Some((pts, n)) = finish_pts {
+        // Step 10: along Z to F0's u at y_top, along X to F0, the contour.
+        let shift = |p: Local, far: bool| if far { (p.0 - w, p.1) } else { p };
+        for (i, p) in pts.iter().take(n).enumerate() {
+            let to = shift(p.at, p.far);
+            match p.seg {
+                LocalSegment::Start => {
+                    if i == 0 {
+                        b.rapid((to.0, y_top), Role::FinishContour)?;
+                        b.rapid(to, Role::FinishContour)?;
+                    }
+                }
+                LocalSegment::Line => b.feed(to, Role::FinishContour)?,
+                LocalSegment::Arc { centre, convex } => {
+                    let cw = frame.clockwise(convex);
+                    b.go(to, Some((shift(centre, p.far), cw)), true, Role::FinishContour)?;
+                }
+            }
+        }
+        // Back: along X to min(y_top, y_end), along Z to u = 0, along X to S.
+        let end = b.at;
+        let y_back = y_top.min(end.1);
+        b.rapid((end.0, y_back), Role::Return)?;
+        b.rapid((0, y_back), Role::Return)?;
+        b.rapid((0, 0), Role::Return)?;
+    }
+    // Step 10's end: back to the point before the cycle, in one move. The
+    // builder's position is local; `from` may lie anywhere in range.
+    let end_abs = frame.point(b.at)?;
+    if end_abs != c.from {
+        if let Some(slot) = b.legs.get_mut(b.len) {
+            *slot = Leg { kind: LegKind::Rapid, to: c.from, role: Role::Return };
+            b.len += 1;
+        }
+    }
+
+    let approach =
+        (a11_abs != c.from).then_some(Leg { kind: LegKind::Rapid, to: a11_abs, role: Role::Approach });
+    let rough = Roughing {
+        // layers ≤ MAX_PECKS when roughing; 1 otherwise is never read.
+        layers: u32::try_from(layers.count).unwrap_or(u32::MAX),
+        m: 1,
+        rough_bottom,
+        dv: layers.dv,
+        di: c.peck,
+        dk: c.step,
+        ex: g.f * c.retract,
+        prev_top: saturate_i64(y_top),
+        top: saturate_i64(y_top),
+        bottom: y1,
+        first: saturate_i64(a11),
+        last: saturate_i64(a1f),
+        u: saturate_i64(a11),
+        n: 1,
+        target: saturate_i64(y_top).saturating_add(c.peck),
+        depth: saturate_i64(y_top),
+        sub: RoughStep::Peck,
+    };
+    Ok(G75Moves {
+        frame,
+        geometry: g,
+        region: ev.fast.r,
+        stage: Stage::Approach,
+        approach,
+        roughs,
+        rough,
+        at: (saturate_i64(a11), saturate_i64(y_top)),
+        tail: b.legs,
+        tail_len: b.len,
+        tail_next: 0,
+    })
+}
+
+impl Iterator for G75Moves {
+    type Item = Move;
+
+    fn next(&mut self) -> Option<Move> {
+        loop {
+            match self.stage {
+                Stage::Approach => {
+                    self.stage = if self.roughs { Stage::Rough } else { Stage::Tail };
+                    if let Some(l) = self.approach {
+                        return Some(Move { motion: Motion::Rapid, to: l.to, role: l.role, pass: None });
+                    }
+                }
+                Stage::Rough => match self.next_rough() {
+                    Some(m) => return Some(m),
+                    None => self.stage = Stage::Tail,
+                },
+                Stage::Tail => {
+                    let Some(leg) = self.tail.get(self.tail_next).filter(|_| self.tail_next < self.tail_len)
+                    else {
+                        self.stage = Stage::Done;
+                        return None;
+                    };
+                    self.tail_next += 1;
+                    let motion = match leg.kind {
+                        LegKind::Rapid => Motion::Rapid,
+                        LegKind::Feed => Motion::Feed,
+                        LegKind::Arc { centre, clockwise } => Motion::Arc { centre, clockwise },
+                    };
+                    return Some(Move { motion, to: leg.to, role: leg.role, pass: None });
+                }
+                Stage::Done => return None,
+            }
+        }
+    }
+}
+
+impl FusedIterator for G75Moves {}

@@ -1,0 +1,324 @@
+//! The roughing of a G75.1 groove (`docs/G75.md` §7, §8 steps 2–8): the
+//! layers, the peck count checked before any move (§9), the range check of
+//! the roughing moves in closed form (R-G75RANGE), and the state machine
+//! that streams the layer changes, pecks, retracts and steps.
+//!
+//! Twins: `spec/src/g75/roughing.rs` (`layer_count`, `layer_bottom`,
+//! `plunge_range`, `peck_count`, `pecks`, `rough_layers`) and
+//! `spec/src/g75/path.rs`, `rough_moves`, which build the same moves as
+//! whole lists.
+
+use super::exact::{plunges_at, Evaluator, Geometry};
+use super::frame::Frame;
+use super::G75Moves;
+use crate::engine::arith::{ceil_div, floor_div, saturate_i64};
+use crate::error::CycleError;
+use crate::g75::{G75Cycle, MAX_PECKS};
+use crate::moves::{Motion, Move, Plunge, Role};
+use crate::units::{Point, MAX_LENGTH};
+
+/// The layers of §7: `y_m = min(m·Δv, Y − Δu)`, `M = ceil((Y − Δu)/Δv)`,
+/// one layer without V.
+///
+/// Twin: `spec/src/g75/roughing.rs`, `layer_count` and `layer_bottom`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Layers {
+    /// `Y − Δu`, the bottom of the last layer.
+    pub(super) rough_bottom: i64,
+    /// Δv (0: one layer).
+    pub(super) dv: i64,
+    /// M.
+    pub(super) count: i128,
+}
+
+impl Layers {
+    /// The layers of a validated cycle: `0 < Y − Δu < 2^27`, `1 ≤ Δv <
+    /// 2^27`, so `M < 2^27`.
+    pub(super) fn new(c: &G75Cycle, g: &Geometry) -> Layers {
+        let rough_bottom = g.depth - g.du;
+        let dv = c.layer.unwrap_or(0);
+        let count = if dv > 0 { ceil_div(i128::from(rough_bottom), i128::from(dv)) } else { 1 };
+        Layers { rough_bottom, dv, count }
+    }
+
+    /// The bottom `y_m` of layer `m` (1-based).
+    pub(super) fn bottom(&self, m: i128) -> i64 {
+        if self.dv > 0 {
+            saturate_i64((m * i128::from(self.dv)).min(i128::from(self.rough_bottom)))
+        } else {
+            self.rough_bottom
+        }
+    }
+}
+
+/// §9: the pecks of a roughing cycle, counted before any move, in closed
+/// form per layer (R-G75PECK: a plunge from `t` to `b` has `ceil((b −
+/// t)/Δi)` pecks). `layer1` and `last_layer` are the plunge ranges already
+/// found for layers 1 and M; the others are evaluated here, in order.
+///
+/// Twin: `spec/src/g75/roughing.rs`, `rough_layers` (with `peck_count`).
+pub(super) fn check_peck_count(
+    ev: &mut Evaluator,
+    c: &G75Cycle,
+    layers: &Layers,
+    y_top: i128,
+    (a11, a1f): (i128, i128),
+    (last_first, last_last): (i128, i128),
+) -> Result<(), CycleError> {
+    let (di, dk) = (i128::from(c.peck), i128::from(c.step));
+    let limit = i128::from(MAX_PECKS);
+    let (count, dv, rough_bottom) = (layers.count, layers.dv, layers.rough_bottom);
+    let pecks = |top: i128, bottom: i128| ceil_div(bottom - top, di);
+    // Every layer has at least one plunge: the pecks of one plunge per
+    // layer are a lower bound, in closed form (layers 2..M−1 are Δv deep).
+    let mut lower = pecks(y_top, i128::from(layers.bottom(1)));
+    if count >= 2 {
+        let dvi = i128::from(dv);
+        lower += (count - 2) * pecks(0, dvi) + pecks((count - 1) * dvi, i128::from(rough_bottom));
+    }
+    if lower > limit {
+        return Err(CycleError::TooManyPecks { limit: MAX_PECKS });
+    }
+    // Now M ≤ lower ≤ MAX_PECKS: count exactly, layer by layer.
+    let mut total: i128 = 0;
+    let mut top = y_top;
+    for m in 1..=count {
+        let bottom = i128::from(layers.bottom(m));
+        let (first, last) = if m == 1 {
+            (a11, a1f)
+        } else if m == count {
+            (last_first, last_last)
+        } else {
+            ev.plunges(layers.bottom(m))?
+        };
+        // first ≤ last (the last layer's check and monotony), Δk ≥ 1.
+        let plunges = ceil_div(last - first, dk) + 1;
+        total = total.saturating_add(plunges.saturating_mul(pecks(top, bottom)));
+        if total > limit {
+            return Err(CycleError::TooManyPecks { limit: MAX_PECKS });
+        }
+        top = bottom;
+    }
+    Ok(())
+}
+
+/// Where the roughing state machine is within a plunge or a layer change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum RoughStep {
+    /// LayerChange along Z at the previous layer's top.
+    LayerZ,
+    /// LayerChange along X down to this layer's top.
+    LayerX,
+    /// The next peck.
+    Peck,
+    /// The retract e after a peck that did not reach the bottom.
+    Retract,
+    /// The retract to the layer's top after the last peck.
+    PlungeRetract,
+    /// The step to the next plunge, or on to the next layer.
+    After,
+}
+
+/// The roughing state (layers, plunges, pecks: §7, §8 step 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Roughing {
+    /// Number of layers M.
+    pub(super) layers: u32,
+    /// Current layer m (1-based).
+    pub(super) m: u32,
+    /// `Y − Δu`.
+    pub(super) rough_bottom: i64,
+    /// Δv (0: one layer).
+    pub(super) dv: i64,
+    /// Δi.
+    pub(super) di: i64,
+    /// Δk.
+    pub(super) dk: i64,
+    /// `e_x = f·e`.
+    pub(super) ex: i64,
+    /// Top of the previous layer (for the LayerChange along Z).
+    pub(super) prev_top: i64,
+    /// Top of this layer.
+    pub(super) top: i64,
+    /// Bottom of this layer `y_m`.
+    pub(super) bottom: i64,
+    /// `A_m1`.
+    pub(super) first: i64,
+    /// `A_mf`.
+    pub(super) last: i64,
+    /// Current plunge position `A_mn`.
+    pub(super) u: i64,
+    /// Current plunge number n.
+    pub(super) n: u32,
+    /// End of the next peck before clamping: `top + j·Δi`.
+    pub(super) target: i64,
+    /// End of the last peck.
+    pub(super) depth: i64,
+    /// Next candidate move.
+    pub(super) sub: RoughStep,
+}
+
+/// R-G75RANGE for the roughing moves, in move order, in closed form. Every
+/// roughing position has `u ∈ [A11, A1f]` (layer 1 is the widest) and `y ∈
+/// [y_top, Y − Δu]`, X and Z are monotone in y and u, and A11's X and Z
+/// (the approach) are already checked; so the first coordinate out of range
+/// is, in this order: X of the first peck of layer 1's first plunge beyond
+/// the range (every plunge of layer 1 comes after it); Z of the first step
+/// of layer 1 beyond it; X of the first peck beyond it in the first plunge
+/// of the first deeper layer whose bottom is beyond it (its layer change
+/// stays at the previous layer's depths, its Z within layer 1's).
+pub(super) fn check_roughing(
+    c: &G75Cycle,
+    frame: &Frame,
+    y_top: i128,
+    (a11, a1f): (i128, i128),
+    layers: i128,
+) -> Result<(), CycleError> {
+    let max = i128::from(MAX_LENGTH);
+    // The deepest y whose X is in range, and the furthest u whose Z is.
+    let y_lim = max - i128::from(frame.sx) * i128::from(frame.start.x);
+    let u_lim = max - i128::from(frame.sz) * i128::from(frame.start.z);
+    let (di, dk) = (i128::from(c.peck), i128::from(c.step));
+    let rough_bottom = i128::from(c.depth.abs() - c.allowance_x);
+    let dv = i128::from(c.layer.unwrap_or(0));
+    let y1 = if dv > 0 { dv.min(rough_bottom) } else { rough_bottom };
+    // The first peck end beyond y_lim in a plunge from `top` to `bottom`
+    // (top ≤ y_lim < bottom).
+    let peck_beyond = |top: i128, bottom: i128| -> Result<(), CycleError> {
+        let j = floor_div(y_lim - top, di) + 1;
+        frame.coordinate(frame.x((top + j * di).min(bottom))).map(|_| ())
+    };
+    if y1 > y_lim {
+        return peck_beyond(y_top, y1);
+    }
+    if a1f > u_lim {
+        let u = a11 + (floor_div(u_lim - a11, dk) + 1) * dk;
+        return frame.coordinate(frame.z(if u < a1f { u } else { a1f })).map(|_| ());
+    }
+    if rough_bottom > y_lim && layers >= 2 && dv > 0 {
+        // The first layer whose bottom m·Δv (or Y − Δu) is beyond y_lim: m ≥ 2.
+        let m = floor_div(y_lim, dv) + 1;
+        let top = (m - 1) * dv;
+        return peck_beyond(top, (m * dv).min(rough_bottom));
+    }
+    Ok(())
+}
+
+impl G75Moves {
+    /// The absolute point of a local one (range-checked up front).
+    pub(super) fn abs(&self, u: i64, y: i64) -> Point {
+        let p = self.frame;
+        Point::new(p.start.x + p.sx * y, p.start.z + p.sz * u)
+    }
+
+    /// A roughing move to local `(u, y)`, or `None` when it would not move.
+    pub(super) fn rough_move(&mut self, motion: Motion, u: i64, y: i64, role: Role) -> Option<Move> {
+        if (u, y) == self.at {
+            return None;
+        }
+        self.at = (u, y);
+        Some(Move { motion, to: self.abs(u, y), role, pass: None })
+    }
+
+    /// The plunge of the current layer and number.
+    pub(super) fn plunge(&self) -> Plunge {
+        Plunge { layer: self.rough.m, number: self.rough.n }
+    }
+
+    /// The next roughing move, or `None` at the end of the roughing.
+    ///
+    /// Twin: `spec/src/g75/path.rs`, `rough_moves` (with
+    /// `spec/src/g75/roughing.rs`, `pecks`).
+    pub(super) fn next_rough(&mut self) -> Option<Move> {
+        loop {
+            let r = self.rough;
+            match r.sub {
+                RoughStep::LayerZ => {
+                    self.rough.sub = RoughStep::LayerX;
+                    let role = Role::LayerChange(r.m);
+                    if let Some(mv) = self.rough_move(Motion::Rapid, r.first, r.prev_top, role) {
+                        return Some(mv);
+                    }
+                }
+                RoughStep::LayerX => {
+                    self.rough.sub = RoughStep::Peck;
+                    let role = Role::LayerChange(r.m);
+                    if let Some(mv) = self.rough_move(Motion::Rapid, r.first, r.top, role) {
+                        return Some(mv);
+                    }
+                }
+                RoughStep::Peck => {
+                    // R-G75PECK: peck j to min(top + j·Δi, y_m).
+                    let y = r.target.min(r.bottom);
+                    self.rough.target = r.target.saturating_add(r.di);
+                    self.rough.depth = y;
+                    self.rough.sub = if y < r.bottom { RoughStep::Retract } else { RoughStep::PlungeRetract };
+                    let role = Role::Peck(self.plunge());
+                    if let Some(mv) = self.rough_move(Motion::Feed, r.u, y, role) {
+                        return Some(mv);
+                    }
+                }
+                RoughStep::Retract => {
+                    self.rough.sub = RoughStep::Peck;
+                    let y = r.top.max(r.depth - r.ex);
+                    let role = Role::PeckRetract(self.plunge());
+                    if let Some(mv) = self.rough_move(Motion::Rapid, r.u, y, role) {
+                        return Some(mv);
+                    }
+                }
+                RoughStep::PlungeRetract => {
+                    self.rough.sub = RoughStep::After;
+                    let role = Role::PlungeRetract(self.plunge());
+                    if let Some(mv) = self.rough_move(Motion::Rapid, r.u, r.top, role) {
+                        return Some(mv);
+                    }
+                }
+                RoughStep::After => {
+                    if r.u < r.last {
+                        // Step 7: on by Δk while below A_mf, then to A_mf.
+                        let next = r.u.saturating_add(r.dk);
+                        let u = if next < r.last { next } else { r.last };
+                        self.rough.u = u;
+                        self.rough.n = r.n.saturating_add(1);
+                        self.rough.target = r.top.saturating_add(r.di);
+                        self.rough.sub = RoughStep::Peck;
+                        let role = Role::Step(self.plunge());
+                        if let Some(mv) = self.rough_move(Motion::Rapid, u, r.top, role) {
+                            return Some(mv);
+                        }
+                    } else if r.m < r.layers {
+                        self.next_layer();
+                    } else {
+                        return None;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Moves on to the next layer (steps 8 and 2).
+    pub(super) fn next_layer(&mut self) {
+        let r = self.rough;
+        let m = r.m.saturating_add(1);
+        let bottom =
+            if r.dv > 0 { (i64::from(m).saturating_mul(r.dv)).min(r.rough_bottom) } else { r.rough_bottom };
+        // Decided in expand_g75 for every layer (the peck count), so the
+        // fallback to the previous range is unreachable.
+        let (first, last) = plunges_at(&self.geometry, &self.region, bottom)
+            .map_or((r.first, r.last), |(a, b)| (saturate_i64(a), saturate_i64(b)));
+        self.rough = Roughing {
+            m,
+            prev_top: r.top,
+            top: r.bottom,
+            bottom,
+            first,
+            last,
+            u: first,
+            n: 1,
+            target: r.bottom.saturating_add(r.di),
+            depth: r.bottom,
+            sub: RoughStep::LayerZ,
+            ..r
+        };
+    }
+}

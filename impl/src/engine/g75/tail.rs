@@ -1,0 +1,77 @@
+//! The fixed tail of a G75.1 path: every move after the roughing (the
+//! return to A11, the rough contour, the finishing contour, the returns),
+//! computed and range-checked before the first move and kept in a
+//! fixed-size array of [`Leg`]s.
+
+use super::contour::Local;
+use super::frame::Frame;
+use crate::error::CycleError;
+use crate::moves::Role;
+use crate::units::Point;
+
+/// How a leg of the tail moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum LegKind {
+    Rapid,
+    Feed,
+    Arc { centre: Point, clockwise: bool },
+}
+
+/// One precomputed move of the tail (after the pecks).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Leg {
+    pub(super) kind: LegKind,
+    pub(super) to: Point,
+    pub(super) role: Role,
+}
+
+/// Longest tail: 2 approach + 5 rough contour + 1 back to A11 + 2 finishing
+/// approach + 7 contour + 3 return + 1 to `from` = 21.
+pub(super) const TAIL: usize = 22;
+
+/// Builds the tail in move order from a known position, leaving out empty
+/// moves (R-G75ZERO) and range-checking every emitted coordinate (R-G75RANGE).
+pub(super) struct TailBuilder {
+    pub(super) frame: Frame,
+    pub(super) at: Local,
+    pub(super) legs: [Leg; TAIL],
+    pub(super) len: usize,
+}
+
+impl TailBuilder {
+    /// Appends a move to `to` unless it would not move (R-G75ZERO,
+    /// R-G75ARCZERO), range-checking its end and centre (R-G75RANGE).
+    ///
+    /// Twin: `spec/src/g75/path.rs`, `Path::go` (and `absolute`).
+    pub(super) fn go(
+        &mut self,
+        to: Local,
+        motion: Option<(Local, bool)>,
+        feed: bool,
+        role: Role,
+    ) -> Result<(), CycleError> {
+        if to == self.at {
+            return Ok(());
+        }
+        let p = self.frame.point(to)?;
+        let kind = match motion {
+            Some((centre, clockwise)) => LegKind::Arc { centre: self.frame.point(centre)?, clockwise },
+            None if feed => LegKind::Feed,
+            None => LegKind::Rapid,
+        };
+        if let Some(slot) = self.legs.get_mut(self.len) {
+            *slot = Leg { kind, to: p, role };
+            self.len += 1;
+        }
+        self.at = to;
+        Ok(())
+    }
+
+    pub(super) fn rapid(&mut self, to: Local, role: Role) -> Result<(), CycleError> {
+        self.go(to, None, false, role)
+    }
+
+    pub(super) fn feed(&mut self, to: Local, role: Role) -> Result<(), CycleError> {
+        self.go(to, None, true, role)
+    }
+}

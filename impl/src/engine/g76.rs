@@ -1,0 +1,805 @@
+//! The fixed-point G76 engine: the cycle of `cycleref_spec::g76::expand`
+//! (the exact-decimal reference model, the authority) in integers, without
+//! heap, floating point, `unsafe` or panics, streamed move by move.
+//!
+//! [`expand_g76`] checks the cycle completely before the first move: the
+//! same errors, with the same values, in the same order as the reference
+//! (`validate()`, the geometry, the lead-in on an X long axis, the rough
+//! pass count, the thread and run-out lengths, the coordinates). It returns
+//! a [`G76Moves`] iterator that then cannot fail: it yields exactly the
+//! reference's moves, one by one.
+//!
+//! # The depth schedule
+//!
+//! Rough level `n` has the depth (DOMAIN decision 3)
+//!
+//! ```text
+//! D(n) = min(k - d, max(round(Δd √n), D(n-1) + m)),   m = max(Δdmin, 1)
+//! ```
+//!
+//! computed level by level in O(1): `round(Δd √n)` is the exact integer
+//! square root of `Δd² n` rounded to nearest ([`round_sqrt`], Newton's
+//! method on the floor root, then one correction), and once the minimum cut
+//! takes over (`round(Δd √n) < D(n-1) + m`) the schedule stops taking roots
+//! and adds `m` per level. That is exact:
+//!
+//! *Claim.* If `round(Δd √n0) < D(n0-1) + m` at the first such level `n0`,
+//! then `round(Δd √n) < D(n-1) + m` for every later level `n`.
+//!
+//! *Proof.* Write `a(n) = Δd √n`, concave, so `a(n+1) - a(n)` decreases.
+//! Before `n0` every level follows the law: `D(n0-1) = round(a(n0-1))`, so
+//! `a(n0-1) ≥ D(n0-1) - ½` (for `n0 = 1`, `a(0) = D(0) = 0`). At `n0`,
+//! `round(a(n0)) ≤ D(n0-1) + m - 1`, so `a(n0) < D(n0-1) + m - ½` and the
+//! step `a(n0) - a(n0-1) < m`. Every later step is smaller, so
+//! `a(n0+j) < D(n0-1) + (j+1) m - ½`, hence `round(a(n0+j)) ≤ D(n0-1) +
+//! (j+1) m - 1 < D(n0+j-1) + m`, because `D(n0+j-1) = D(n0-1) + j m` while
+//! the schedule lasts (it stops at the first level that reaches `k - d`). ∎
+//!
+//! The rough pass count is found up front exactly as the reference finds it
+//! (`check_pass_count`, reading R-LIMIT): levels by the law until the
+//! minimum cut takes over, then `ceil((k - d - D) / m)` more at once; if the
+//! law alone runs past the limit the count is only known to exceed it.
+//!
+//! # Integer widths, and why nothing overflows
+//!
+//! `validate()` bounds every length word by [`MAX_LENGTH`] `= 999_999_999
+//! < 2^30` in magnitude, k, Δd ≥ 1, 0 ≤ Δdmin, d ≤ k, so `0 ≤ k - d < 2^30`.
+//! Lengths are `i64` (radius increments for amounts, X-word increments for
+//! X coordinates; `xf` = 1 or 2):
+//!
+//! * X of C and B: `|X(D)| + 2|i| + 2k < 5·2^30`; a pass starts between B
+//!   and C and ends between D and its crest; the lead-in adds `2E < 2^31`;
+//!   run-out X ends lie between the cut line and A. All far inside `i64`.
+//! * Z: `|W| = |Z(D) - Z(A)| < 2^31`; Z shifts are `round(D tan(a/2))` with
+//!   `tan(49.5°) < 1.18`, so `|shift| < 2^31` and a D2 left shift
+//!   `2 zc - z < 2^32`; lead-in length is checked against the range before
+//!   any point uses it.
+//! * `Δd² n` is `u128`: `Δd² < 2^60` and `n ≤ pass_limit + 1 ≤ 2^32` in the
+//!   up-front count, `n ≤ k - d < 2^30` while iterating, so `Δd² n < 2^92`.
+//! * Run-out start on the cut line: `round(b + Δ·(r - b')/(e - b'))` needs
+//!   products of two coordinates (`< 2^33` each), so the numerator is
+//!   computed in `i128` (`< 2^67`).
+//! * Chamfer length and lead-in length use the exact lead ratio of
+//!   [`Lead::increments_per_rev`] in `u128`: numerators are at most
+//!   `99 · 2^64 · 10^5 · 2 < 2^89` and `E · den + num < 2^102`, far below
+//!   `2^128`. Beyond-range values saturate exactly as the reference's
+//!   `unwrap_or(i64::MAX)` does.
+//! * Z shifts and the chamfer's short axis go through
+//!   [`crate::tan::mul_tan_round`] (`u128`, bit-identical to the reference).
+//!
+//! Every other operation is checked (`checked_*`, `saturating_*`) or bounded
+//! by the comments next to it; no index, `unwrap`, `expect` or division can
+//! panic.
+//!
+//! # Work and memory
+//!
+//! * Up front: O(1) plus one square root per rough level in the law phase,
+//!   at most `pass_limit + 1` of them, as in the reference.
+//! * Per move: a bounded number of steps. Each pass of each start is a fixed
+//!   list of at most six candidate moves (approach, lead-in, cut, run-out,
+//!   retract, return), of which the zero-length ones are skipped; at least
+//!   two remain (the pass start Bn is never A, since A is clear of B by at
+//!   least the depth of the pass, at least one increment). Moving on to the
+//!   next pass takes at most one square root; the next start, a binary gcd
+//!   of numbers below 1000 (no division unless the angle must be reduced,
+//!   [`StartSpacing`]).
+//! * Memory: a [`G76Moves`] is a fixed-size value (400 bytes on 64-bit
+//!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
+//!   whatever the number of passes and starts.
+
+use core::cmp::Ordering;
+use core::iter::FusedIterator;
+
+#[cfg(feature = "loop-counters")]
+use super::arith::record_isqrt;
+use super::arith::{round_div, round_sqrt, saturate_i64};
+use crate::angle::{StartAngle, StartSpacing};
+use crate::error::{CycleError, Field};
+use crate::g76::{G76Cycle, Infeed, RunOut};
+use crate::lead::{Lead, Ratio};
+use crate::moves::{Flank, Motion, Move, Pass, PassKind, Role};
+use crate::tan::mul_tan_round;
+use crate::units::{Length, Point, Units, MAX_LENGTH};
+
+/// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
+/// is below `2^93` and the root below `2^47`.
+///
+/// Twin: `spec/src/g76.rs`, `depth_by_law`.
+fn law(q2: u64, n: u64) -> i64 {
+    #[cfg(feature = "loop-counters")]
+    record_isqrt(u128::from(q2) * u128::from(n));
+    let root = round_sqrt(u128::from(q2) * u128::from(n));
+    i64::try_from(root).unwrap_or(i64::MAX)
+}
+
+/// Z shift of a pass at `depth`: `round(depth × tan(a ÷ 2))`, as the
+/// reference's `flank_shift` (`depth ≤ k < 2^30`, so never `None`).
+///
+/// Twin: `spec/src/g76.rs`, `flank_shift`.
+fn flank_shift(depth: i64, tool_angle: u32) -> i64 {
+    mul_tan_round(depth, tool_angle).unwrap_or(0)
+}
+
+/// The rough pass count of a validated cycle, found before any move
+/// exactly as the reference's `check_pass_count` (reading R-LIMIT).
+///
+/// Twin: `spec/src/g76.rs`, `check_pass_count`.
+fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
+    // validate(): 0 ≤ d ≤ k < 2^30, 0 ≤ Δdmin ≤ k, 1 ≤ Δd < 2^30.
+    let last = c.thread_height - c.finishing_allowance;
+    let min = c.min_cut.max(1);
+    // Δd < 2^30: Δd² < 2^60.
+    let q = c.first_depth.unsigned_abs();
+    let q2 = q * q;
+    let limit = u64::from(c.pass_limit);
+    let mut depth = 0_i64;
+    let mut n = 0_u64;
+    let mut count = crate::loop_counters::count!(PASS_COUNT);
+    let levels = loop {
+        count.tick();
+        if depth >= last {
+            break n;
+        }
+        // n ≤ limit + 1 ≤ 2^32: the loop returns once n > limit.
+        n += 1;
+        let law = law(q2, n);
+        // depth < last < 2^30 and min < 2^30: the sum is below 2^31.
+        if law < depth + min {
+            // 0 < rest < 2^30, 1 ≤ min < 2^30: ceil(rest / min) < 2^30.
+            let rest = last - depth;
+            let more = (rest + min - 1) / min;
+            break n - 1 + more.unsigned_abs();
+        }
+        if law >= last {
+            break n;
+        }
+        depth = law;
+        if n > limit {
+            return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+        }
+    };
+    // levels < 2^33: doubling cannot overflow.
+    let passes = match c.infeed {
+        Infeed::LeftRight => (2 * levels).saturating_sub(1),
+        Infeed::RightFlank | Infeed::RightCentre => levels,
+    };
+    if passes > limit {
+        return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
+    }
+    Ok(passes)
+}
+
+/// The number of rough passes of a cycle (D2 counts both flanks of a
+/// level), after `validate()` and the pass limit, as the reference finds
+/// it. It does not check the geometry: [`expand_g76`] does that first.
+///
+/// # Errors
+///
+/// Those of [`G76Cycle::validate`], then [`CycleError::TooManyPasses`].
+pub fn rough_pass_count(cycle: &G76Cycle) -> Result<u64, CycleError> {
+    cycle.validate()?;
+    check_pass_count(cycle)
+}
+
+/// `round(num × ratio)` for `num ≥ 0`, ties away from zero, or `None` if it
+/// overflows (it cannot, for any lead and factor used here: see the module
+/// docs).
+///
+/// Twin: `spec/src/g76.rs`, `round_ratio`.
+fn round_ratio(num: u128, r: Ratio) -> Option<u128> {
+    let n = num.checked_mul(r.num)?;
+    let twice = n.checked_mul(2)?.checked_add(r.den)?;
+    twice.checked_div(r.den.checked_mul(2)?)
+}
+
+/// The run-out amounts `(J, K)` in increments, or `None` for no run-out,
+/// as the reference's `run_out_amounts` (reading R-RUNOUT). `validate()`
+/// has bounded the chamfer by the range table, so the saturations below
+/// (to `i64::MAX`, as the reference's `unwrap_or`) are never reached for a
+/// validated cycle.
+///
+/// Twin: `spec/src/g76.rs`, `run_out_amounts`.
+fn run_out_amounts(c: &G76Cycle) -> Option<(i64, i64)> {
+    let (j, k) = match c.run_out {
+        RunOut::None => return None,
+        RunOut::Amounts { short, long } => (short, long),
+        RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
+            let lead = c.lead.increments_per_rev(c.units);
+            // K = round(r × lead / 10): 10 × den ≤ 10 × 10 × 2^64.
+            let chamfer = lead
+                .den
+                .checked_mul(10)
+                .and_then(|den| round_ratio(u128::from(tenths_of_lead), Ratio { num: lead.num, den }))
+                .and_then(|v| i64::try_from(v).ok())
+                .unwrap_or(i64::MAX);
+            // angle_degrees ≤ 89 (validate), so 2 × angle ≤ 178.
+            let short = mul_tan_round(chamfer, angle_degrees.saturating_mul(2)).unwrap_or(i64::MAX);
+            (short, long.unwrap_or(chamfer))
+        }
+    };
+    if j == 0 {
+        return None;
+    }
+    Some((j, k))
+}
+
+/// The long-axis length of the lead-in (reading R-LEADIN): the smallest
+/// whole number `N ≥ 1` of leads with `N × lead ≥ E`, times the lead,
+/// rounded to the increment; `i64::MAX` when that does not fit, as the
+/// reference.
+///
+/// Twin: `spec/src/g76.rs`, `lead_in_length`.
+fn lead_in_length(c: &G76Cycle) -> i64 {
+    let lead = c.lead.increments_per_rev(c.units);
+    let e = u128::from(c.lead_in.unsigned_abs());
+    // e < 2^30, den < 2^72, num < 2^81 (module docs): no overflow below.
+    let leads = e
+        .checked_mul(lead.den)
+        .and_then(|ed| ed.checked_add(lead.num.checked_sub(1)?))
+        .and_then(|v| v.checked_div(lead.num))
+        .map(|v| v.max(1));
+    leads.and_then(|n| round_ratio(n, lead)).and_then(|v| i64::try_from(v).ok()).unwrap_or(i64::MAX)
+}
+
+/// A pass coordinate beyond the range tables (reading R-RANGE).
+///
+/// Twin: `spec/src/g76.rs`, `check_coordinate`.
+fn check_coordinate(v: i128, units: Units) -> Result<(), CycleError> {
+    if v.unsigned_abs() > MAX_LENGTH.unsigned_abs().into() {
+        return Err(CycleError::OutOfRange {
+            field: Field::PassCoordinate,
+            value: Length::new(saturate_i64(v), units),
+        });
+    }
+    Ok(())
+}
+
+/// The long axis of the thread.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LongAxis {
+    /// `|W| > |i|`.
+    Z,
+    /// `|i| ≥ |W|`.
+    X,
+}
+
+/// The fixed values of a checked cycle.
+#[derive(Clone, Copy, Debug)]
+struct Frame {
+    /// The cycle's lead, for the thread motions.
+    lead: Lead,
+    /// A.
+    a: Point,
+    /// D.
+    d: Point,
+    /// X of C.
+    c_x: i64,
+    /// X-word increments per radius increment.
+    xf: i64,
+    /// +1 external, -1 internal.
+    side: i64,
+    /// Sign of W.
+    direction: i64,
+    /// |W|.
+    w_abs: i64,
+    /// k.
+    k: i64,
+    /// Long axis.
+    long_axis: LongAxis,
+    /// `(J, K)`.
+    run_out: Option<(i64, i64)>,
+    /// `(E, lead-in length)`.
+    lead_in: Option<(i64, i64)>,
+    /// L.
+    starts: u32,
+    /// The spacing of the starts, 360° / L.
+    spacing: StartSpacing,
+}
+
+/// The path of one pass: the candidate moves' end points.
+#[derive(Clone, Copy, Debug)]
+struct PassPath {
+    /// End of the approach: An with a lead-in, else Bn.
+    approach: Point,
+    /// Bn, the end of the lead-in, if there is one.
+    lead_in: Option<Point>,
+    /// End of the cut: the run-out start, or the end line D–E.
+    cut: Point,
+    /// End of the run-out, if there is one.
+    run_out: Option<Point>,
+    /// E: the X of A, on the Z of the end of the pass.
+    retract: Point,
+}
+
+impl Frame {
+    /// The path of a pass at `depth` shifted `shift` along Z, as the
+    /// reference's `expand` builds it.
+    ///
+    /// Twin: `spec/src/g76.rs`, `expand` (the points of each pass).
+    fn path(&self, depth: i64, shift: i64) -> PassPath {
+        let (s, t, xf) = (self.side, self.direction, self.xf);
+        // 0 ≤ k - depth < 2^30; X of C < 3·2^30, Z shifts < 2^32.
+        let sink = s * xf * (self.k - depth);
+        let bn = Point::new(self.c_x + sink, self.a.z + t * shift);
+        let end = Point::new(self.d.x + sink, self.d.z);
+        let approach = match self.lead_in {
+            // Only called for a planned pass, so the range check of
+            // expand_g76 has bounded both coordinates of An (|lz| < 2^33).
+            Some((e, lz)) => Point::new(bn.x + s * xf * e, bn.z - t * lz),
+            None => bn,
+        };
+        let lead_in = self.lead_in.map(|_| bn);
+        let (cut, run_out, last) = match self.run_out {
+            None => (end, None, end),
+            Some((j, kk)) => match self.long_axis {
+                LongAxis::Z => {
+                    // The run-out starts K before the end along Z, on the cut
+                    // line: xr = round(bn.x + (end.x - bn.x)(zr - bn.z) /
+                    // (end.z - bn.z)), the rounding on the whole sum. The
+                    // divisor is t(|W| - shift) ≠ 0 (ThreadTooShort).
+                    let zr = end.z - t * kk;
+                    let xr = if end.x == bn.x {
+                        // A straight cut: no division (the common case).
+                        bn.x
+                    } else {
+                        let den = i128::from(end.z) - i128::from(bn.z);
+                        let num = i128::from(bn.x) * den
+                            + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
+                        saturate_i64(round_div(num, den))
+                    };
+                    // J away from the work, at most to E; J may be i64::MAX.
+                    let jx = xf.saturating_mul(j).min(s * (self.a.x - end.x));
+                    let last = Point::new(end.x + s * jx, end.z);
+                    (Point::new(xr, zr), Some(last), last)
+                }
+                LongAxis::X => {
+                    // end.x - bn.x = -xf i ≠ 0 on an X long axis.
+                    let sigma = if end.x > bn.x { 1 } else { -1 };
+                    let xr = end.x - sigma * xf * kk;
+                    let den = i128::from(end.x) - i128::from(bn.x);
+                    let num = i128::from(bn.z) * den
+                        + (i128::from(end.z) - i128::from(bn.z)) * (i128::from(xr) - i128::from(bn.x));
+                    let zr = saturate_i64(round_div(num, den));
+                    let jz = j.min(self.w_abs);
+                    let last = Point::new(end.x, end.z - t * jz);
+                    (Point::new(xr, zr), Some(last), last)
+                }
+            },
+        };
+        PassPath { approach, lead_in, cut, run_out, retract: Point::new(self.a.x, last.z) }
+    }
+}
+
+/// The rough levels, one at a time (see the module docs).
+#[derive(Clone, Copy, Debug)]
+struct Schedule {
+    /// Δd² (< 2^60).
+    q2: u64,
+    /// max(Δdmin, 1).
+    min: i64,
+    /// k - d.
+    last: i64,
+    /// Levels produced so far.
+    n: u64,
+    /// Depth of the last level produced (0 before the first).
+    depth: i64,
+    /// True once the minimum cut has taken over.
+    min_phase: bool,
+}
+
+impl Schedule {
+    /// The depth of the next level, or `None` after the level at `k - d`.
+    ///
+    /// Twin: `spec/src/g76.rs`, `next_depth` (and `rough_levels`).
+    fn next_level(&mut self) -> Option<i64> {
+        if self.depth >= self.last {
+            return None;
+        }
+        // At most k - d < 2^30 levels: the depth grows by at least 1.
+        self.n += 1;
+        // depth < last < 2^30, min < 2^30.
+        let by_min = self.depth + self.min;
+        let next = if self.min_phase {
+            by_min
+        } else {
+            let law = law(self.q2, self.n);
+            if law < by_min {
+                self.min_phase = true;
+                by_min
+            } else {
+                law
+            }
+        };
+        self.depth = next.min(self.last);
+        Some(self.depth)
+    }
+}
+
+/// Where the pass sequence is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Stage {
+    /// Rough passes; `left_pending`: the D2 left pass of the current level
+    /// comes next.
+    Rough {
+        /// The D2 left pass of the current level is still to come.
+        left_pending: bool,
+    },
+    /// Finishing passes.
+    Finish,
+    /// No more passes.
+    Done,
+}
+
+/// The moves of a G76 cycle, in order: an [`Iterator`] of constant size
+/// (see the [module documentation](self)) made by [`expand_g76`].
+#[derive(Clone, Debug)]
+pub struct G76Moves {
+    /// Fixed values.
+    frame: Frame,
+    /// Rough levels.
+    schedule: Schedule,
+    /// Tool angle a (degrees).
+    tool_angle: u32,
+    /// Infeed mode.
+    infeed: Infeed,
+    /// Z shift of the centre line, `round((k - d) tan(a/2))`.
+    centre: i64,
+    /// d.
+    allowance: i64,
+    /// m.
+    finishing_passes: u32,
+    /// Position in the pass sequence.
+    stage: Stage,
+    /// Depth of the previous rough level.
+    previous: i64,
+    /// Number of the last rough pass (or finishing pass, in [`Stage::Finish`]).
+    number: u32,
+    /// The current pass (its `start` is the current start).
+    pass: Pass,
+    /// Its path.
+    path: PassPath,
+    /// Current start, 0-based.
+    start: u32,
+    /// Spindle angle of the current start.
+    angle: StartAngle,
+    /// Next candidate move of the path, 0..=6 (6: path finished).
+    step: u8,
+    /// Tool position.
+    at: Point,
+    /// The current path has started its synchronised run.
+    sync_done: bool,
+}
+
+/// What the up-front checks need of the planned passes: the depth of the
+/// first (shallowest) pass and the smallest and largest Z shifts, or `None`
+/// when the cycle has no pass at all.
+#[derive(Clone, Copy, Debug)]
+struct PlanExtremes {
+    /// Depth of the first planned pass: D1, or k when there is no rough level.
+    shallowest: i64,
+    /// Smallest Z shift of a pass.
+    min_shift: i64,
+    /// Largest Z shift of a pass.
+    max_shift: i64,
+}
+
+/// The [`PlanExtremes`] of a cycle whose pass count has been checked.
+fn plan_extremes(c: &G76Cycle, last: i64, centre: i64) -> Option<PlanExtremes> {
+    if last <= 0 {
+        // No rough level: the finishing passes (if any) at depth k and the
+        // shift of the last rough level, depth 0: `centre` = 0.
+        return (c.finishing_passes > 0).then_some(PlanExtremes {
+            shallowest: c.thread_height,
+            min_shift: centre,
+            max_shift: centre,
+        });
+    }
+    // D1 = min(k - d, max(round(Δd √1), 0 + m)), with round(Δd √1) = Δd.
+    let d1 = last.min(c.first_depth.max(c.min_cut.max(1)));
+    let right1 = flank_shift(d1, c.tool_angle);
+    // Shifts grow with the depth: right shifts lie in [right1, centre], D1
+    // centre passes and finishing passes at centre, D2 left passes at
+    // 2 centre - right in [centre, 2 centre - right1] (present only when
+    // there is a second level). centre < 2^31: no overflow.
+    let max_shift = match c.infeed {
+        Infeed::LeftRight if d1 < last => 2 * centre - right1,
+        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => centre,
+    };
+    Some(PlanExtremes { shallowest: d1, min_shift: right1, max_shift })
+}
+
+/// Expands a G76 cycle: checks it completely, then streams its moves.
+///
+/// The result equals `cycleref_spec::g76::expand(cycle)` exactly: the same
+/// error, or an iterator of the same moves in the same order.
+///
+/// # Errors
+///
+/// The manual's alarms, as [`CycleError`], in the reference's order:
+/// [`G76Cycle::validate`], [`CycleError::StartInsideThread`],
+/// [`CycleError::LeadInOnXLongAxis`], [`CycleError::TooManyPasses`],
+/// [`CycleError::ThreadTooShort`], [`CycleError::RunOutTooLong`],
+/// [`CycleError::OutOfRange`] for a pass coordinate.
+///
+/// Twin: `spec/src/g76.rs`, `expand` (and `geometry` for the checks).
+pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
+    let c = cycle;
+    c.validate()?;
+    let u = c.units;
+    let len = |v: i64| Length::new(v, u);
+    let xf = c.x_mode.factor();
+    let (a, d) = (c.start, c.end);
+    // Geometry (reading R-SIDE); |X(D)| + 2|i| + 2k < 5·2^30.
+    let c_x = d.x + xf * c.taper;
+    let side = match a.x.cmp(&c_x) {
+        Ordering::Greater => 1,
+        Ordering::Less => -1,
+        Ordering::Equal => return Err(CycleError::StartInsideThread),
+    };
+    let b_x = c_x + side * xf * c.thread_height;
+    let crest_at_end = d.x + side * xf * c.thread_height;
+    if side * (a.x - b_x) < 0 || side * (a.x - crest_at_end) < 0 {
+        return Err(CycleError::StartInsideThread);
+    }
+    // W ≠ 0 (validate: no face thread), |W| < 2^31.
+    let w = d.z - a.z;
+    let direction = if w > 0 { 1 } else { -1 };
+    let w_abs = w.abs();
+    let taper_abs = c.taper.abs();
+    let long_axis = if w_abs > taper_abs { LongAxis::Z } else { LongAxis::X };
+    if long_axis == LongAxis::X && c.lead_in > 0 {
+        return Err(CycleError::LeadInOnXLongAxis);
+    }
+    check_pass_count(c)?;
+    let last = c.thread_height - c.finishing_allowance;
+    let centre = flank_shift(last, c.tool_angle);
+    let extremes = plan_extremes(c, last, centre);
+    let max_shift = extremes.map_or(0, |p| p.max_shift);
+    let run_out = run_out_amounts(c);
+    let lead_in = if c.lead_in > 0 { Some((c.lead_in, lead_in_length(c))) } else { None };
+
+    // Note 7 and reading R-SHORT; on either long axis a pass whose shift
+    // reaches |W| would start at or beyond the end line.
+    if max_shift >= w_abs {
+        return Err(CycleError::ThreadTooShort { shift: len(max_shift), length: len(w_abs) });
+    }
+    match long_axis {
+        LongAxis::Z => {
+            if let Some((_, kk)) = run_out {
+                if kk > w_abs - max_shift {
+                    return Err(CycleError::RunOutTooLong {
+                        run_out: len(kk),
+                        length: len(w_abs - max_shift),
+                    });
+                }
+            }
+        }
+        LongAxis::X => {
+            if let Some((_, kk)) = run_out {
+                if kk > taper_abs {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(taper_abs) });
+                }
+            }
+        }
+    }
+    // Reading R-RANGE: A and D are words within range and B lies between A
+    // and C, so X of C and the lead-in start are the extremes. The lead-in
+    // start is furthest out on the shallowest pass, and on Z at the
+    // smallest shift. Sums of values below 2^33, in i128. Every pass's
+    // shift is below |W| (checked above), so its Z lies between A and D.
+    check_coordinate(i128::from(c_x), u)?;
+    if let (Some((e, lz)), Some(p)) = (lead_in, extremes) {
+        let out = i128::from(side * xf);
+        let x = i128::from(c_x) + out * i128::from(c.thread_height - p.shallowest) + out * i128::from(e);
+        check_coordinate(x, u)?;
+        let t = i128::from(direction);
+        // lz may be i64::MAX (the reference's saturation).
+        let z = i128::from(a.z) + t * i128::from(p.min_shift) - t * i128::from(lz);
+        check_coordinate(z, u)?;
+    }
+
+    let frame = Frame {
+        lead: c.lead,
+        a,
+        d,
+        c_x,
+        xf,
+        side,
+        direction,
+        w_abs,
+        k: c.thread_height,
+        long_axis,
+        run_out,
+        lead_in,
+        starts: c.starts,
+        spacing: {
+            #[cfg(feature = "loop-counters")]
+            StartSpacing::record_new_gcd(c.starts);
+            StartSpacing::new(c.starts)
+        },
+    };
+    // Δd < 2^30: Δd² < 2^60.
+    let q = c.first_depth.unsigned_abs();
+    let placeholder =
+        Pass { kind: PassKind::Rough, number: 0, start: 1, depth: 0, cut: 0, flank: Flank::Right };
+    let mut moves = G76Moves {
+        frame,
+        schedule: Schedule { q2: q * q, min: c.min_cut.max(1), last, n: 0, depth: 0, min_phase: false },
+        tool_angle: c.tool_angle,
+        infeed: c.infeed,
+        centre,
+        allowance: c.finishing_allowance,
+        finishing_passes: c.finishing_passes,
+        stage: Stage::Rough { left_pending: false },
+        previous: 0,
+        number: 0,
+        pass: placeholder,
+        // Replaced by next_pass below before any use.
+        path: PassPath { approach: a, lead_in: None, cut: a, run_out: None, retract: a },
+        start: 0,
+        angle: StartAngle::ZERO,
+        step: 0,
+        at: a,
+        sync_done: false,
+    };
+    moves.next_pass();
+    Ok(moves)
+}
+
+impl G76Moves {
+    /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
+    fn next_pass(&mut self) {
+        let Some((pass, shift)) = self.plan_next() else {
+            self.stage = Stage::Done;
+            return;
+        };
+        self.pass = pass;
+        self.path = self.frame.path(pass.depth, shift);
+        self.begin_start(0);
+    }
+
+    /// Starts the path of the current pass for start `start` (0-based).
+    fn begin_start(&mut self, start: u32) {
+        self.start = start;
+        // start < L ≤ 999.
+        self.pass.start = u16::try_from(start + 1).unwrap_or(u16::MAX);
+        #[cfg(feature = "loop-counters")]
+        self.frame.spacing.record_angle_gcd(start);
+        self.angle = self.frame.spacing.angle(start);
+        self.step = 0;
+        self.at = self.frame.a;
+        self.sync_done = false;
+    }
+
+    /// The next planned pass and its Z shift, as the reference's
+    /// `planned_passes` (readings R-INFEED, R-FINISH), with `start` 1.
+    ///
+    /// Twin: `spec/src/g76.rs`, `planned_passes`.
+    fn plan_next(&mut self) -> Option<(Pass, i64)> {
+        let mut count = crate::loop_counters::count!(PLAN_NEXT);
+        loop {
+            count.tick();
+            match self.stage {
+                Stage::Rough { left_pending: true } => {
+                    self.stage = Stage::Rough { left_pending: false };
+                    let depth = self.schedule.depth;
+                    let right = flank_shift(depth, self.tool_angle);
+                    // The rough count is at most pass_limit ≤ u32::MAX.
+                    self.number = self.number.saturating_add(1);
+                    let pass = self.rough(depth, Flank::Left);
+                    return Some((pass, 2 * self.centre - right));
+                }
+                Stage::Rough { left_pending: false } => {
+                    let previous = self.schedule.depth;
+                    let Some(depth) = self.schedule.next_level() else {
+                        self.stage = Stage::Finish;
+                        self.number = 0;
+                        continue;
+                    };
+                    self.previous = previous;
+                    self.number = self.number.saturating_add(1);
+                    let right = flank_shift(depth, self.tool_angle);
+                    let (flank, shift) = match self.infeed {
+                        Infeed::RightFlank => (Flank::Right, right),
+                        Infeed::RightCentre if self.schedule.n % 2 == 0 => (Flank::Centre, self.centre),
+                        Infeed::RightCentre => (Flank::Right, right),
+                        Infeed::LeftRight => {
+                            // Every level but the last (the one at k - d) twice.
+                            self.stage = Stage::Rough { left_pending: depth < self.schedule.last };
+                            (Flank::Right, right)
+                        }
+                    };
+                    return Some((self.rough(depth, flank), shift));
+                }
+                Stage::Finish => {
+                    if self.number >= self.finishing_passes {
+                        self.stage = Stage::Done;
+                        return None;
+                    }
+                    // number < m ≤ 99.
+                    self.number += 1;
+                    let cut = if self.number == 1 { self.allowance } else { 0 };
+                    let pass = Pass {
+                        kind: PassKind::Finish,
+                        number: self.number,
+                        start: 1,
+                        depth: self.frame.k,
+                        cut,
+                        flank: Flank::Centre,
+                    };
+                    return Some((pass, self.centre));
+                }
+                Stage::Done => return None,
+            }
+        }
+    }
+
+    /// A rough pass of the current level.
+    fn rough(&self, depth: i64, flank: Flank) -> Pass {
+        Pass {
+            kind: PassKind::Rough,
+            number: self.number,
+            start: 1,
+            depth,
+            cut: depth - self.previous,
+            flank,
+        }
+    }
+}
+
+impl Iterator for G76Moves {
+    type Item = Move;
+
+    // Inlined across crates: a call per move costs more than the move.
+    #[inline]
+    fn next(&mut self) -> Option<Move> {
+        let mut count = crate::loop_counters::count!(G76_NEXT);
+        loop {
+            count.tick();
+            if self.stage == Stage::Done {
+                return None;
+            }
+            let step = self.step;
+            // (thread?, end point, role); None when the path has no such move.
+            // Only the field needed is read (copying the whole path per move
+            // showed in the profile).
+            let candidate = match step {
+                0 => Some((false, self.path.approach, Role::Approach)),
+                1 => self.path.lead_in.map(|to| (true, to, Role::LeadIn)),
+                2 => Some((true, self.path.cut, Role::Cut)),
+                3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
+                4 => Some((false, self.path.retract, Role::Retract)),
+                5 => Some((false, self.frame.a, Role::Return)),
+                _ => {
+                    // The path of this start is done: next start, or next pass.
+                    let next = self.start.saturating_add(1);
+                    if next < self.frame.starts {
+                        self.begin_start(next);
+                    } else {
+                        self.next_pass();
+                    }
+                    continue;
+                }
+            };
+            self.step = step.saturating_add(1);
+            let Some((thread, to, role)) = candidate else {
+                continue;
+            };
+            // Reading R-ZERO: moves that would not move are left out.
+            if to == self.at {
+                continue;
+            }
+            self.at = to;
+            let motion = if thread {
+                let sync = !self.sync_done;
+                self.sync_done = true;
+                Motion::Thread { lead: self.frame.lead, start_angle: self.angle, sync }
+            } else {
+                Motion::Rapid
+            };
+            return Some(Move { motion, to, role, pass: Some(self.pass) });
+        }
+    }
+}
+
+impl FusedIterator for G76Moves {}
