@@ -41,7 +41,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-use cycleref::{CycleError, IncrementSystem, InputUnit, Move, Units, XMode};
+use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::{read, ErrorKind, Machine, ProgramError};
 use serde_json::{json, Value};
 
@@ -406,7 +406,13 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
         let Some(cycle) = Cycle::of(item) else { continue };
         let engine = expand(cycle, Engine::Impl).map(Iterator::collect::<Vec<_>>);
         let reference = expand(cycle, Engine::Spec).map(Iterator::collect::<Vec<_>>);
-        same(id, cycle.code(), cycle.line(), &engine, &reference)?;
+        cycleref_spec::differ::compare(&engine, &reference).map_err(|d| {
+            format!(
+                "{id}: {} at line {}: the engine and the reference model differ: {d}",
+                cycle.code(),
+                cycle.line()
+            )
+        })?;
         match engine {
             Ok(moves) => {
                 match cycle {
@@ -425,38 +431,6 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
         }
     }
     Ok(Evaluated { outcome: Ok((program.units, cycles)), tags, moves: count })
-}
-
-/// The differential check: the engine must equal the reference.
-fn same(
-    id: &str,
-    cycle: &str,
-    line: usize,
-    engine: &Result<Vec<Move>, CycleError>,
-    reference: &Result<Vec<Move>, CycleError>,
-) -> Result<(), String> {
-    if engine == reference {
-        return Ok(());
-    }
-    let detail = match (engine, reference) {
-        (Ok(a), Ok(b)) => {
-            let i = a.iter().zip(b).position(|(x, y)| x != y).unwrap_or(a.len().min(b.len()));
-            format!(
-                "{} moves against {}; first difference at move {}: engine {:?}, reference {:?}",
-                a.len(),
-                b.len(),
-                i + 1,
-                a.get(i),
-                b.get(i)
-            )
-        }
-        (a, b) => format!(
-            "engine {:?}, reference {:?}",
-            a.as_ref().map(Vec::len).map_err(|e| e.to_string()),
-            b.as_ref().map(Vec::len).map_err(|e| e.to_string())
-        ),
-    };
-    Err(format!("{id}: {cycle} at line {line}: the engine and the reference model differ: {detail}"))
 }
 
 fn units_json(u: Units) -> Value {
