@@ -13,6 +13,7 @@
 pub mod angle;
 pub mod engine;
 pub mod error;
+pub mod examples;
 pub mod g32;
 pub mod g75;
 pub mod g76;

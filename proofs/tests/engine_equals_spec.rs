@@ -422,25 +422,7 @@ fn generator_covers_the_outcomes() {
 /// -Z, k 3.68, Δd 1.8, Δdmin 0.15, d 0.1, two finishing passes, 60°, chamfer
 /// 0.5 lead at 45°.
 fn m68x6() -> G76Cycle {
-    G76Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
-        start: Point::new(80_000, 10_000),
-        end: Point::new(60_640, -62_000),
-        taper: 0,
-        thread_height: 3680,
-        first_depth: 1800,
-        min_cut: 150,
-        finishing_allowance: 100,
-        finishing_passes: 2,
-        tool_angle: 60,
-        infeed: Infeed::RightFlank,
-        lead_in: 0,
-        starts: 1,
-        lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },
-        run_out: RunOut::Chamfer { tenths_of_lead: 5, angle_degrees: 45, long: None },
-        pass_limit: DEFAULT_PASS_LIMIT,
-    }
+    cycleref::examples::M68X6
 }
 
 /// `(kind, number, depth, cut, flank)` of every pass, in order (start 1).

@@ -23,26 +23,7 @@ const IS_C: Units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metri
 /// The seed's example: `G00 X60 Z30; G75.1 X50 Z30 P30000 Q50000 H-20
 /// D-10 A45 B30; G75.1 R0.5;` at IS-C metric.
 fn seed() -> G75Cycle {
-    G75Cycle {
-        units: IS_C,
-        x_mode: XMode::Diameter,
-        from: Point::new(600_000, 300_000),
-        start: Point::new(500_000, 300_000),
-        peck: 30_000,
-        step: 50_000,
-        depth: -200_000,
-        width: -100_000,
-        flank_a: 450_000,
-        flank_b: 300_000,
-        slope: 0,
-        retract: 5_000,
-        layer: None,
-        allowance_x: 0,
-        allowance_z: 0,
-        tool_width: None,
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
-    }
+    crate::examples::G75_SEED
 }
 
 /// The golden square groove of `proofs/tests/g75_golden.rs` at IS-B:
