@@ -14,9 +14,9 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use cycleref::engine::expand_g76;
-use cycleref::g76::{G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
+use cycleref::g76::{G76Cycle, Infeed};
 use cycleref::lead::{Lead, LeadWord};
-use cycleref::units::{Point, Units, XMode};
+use cycleref::units::Point;
 
 thread_local! {
     /// Allocations made by this thread while counting.
