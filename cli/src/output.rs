@@ -98,11 +98,10 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// and start, the moves (the `nc` format contract, in the README).
 fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> io::Result<()> {
     let u = call.cycle.units;
-    // The heading counts the rough passes: a first look at the moves (the
-    // engine's iterator is a few hundred bytes; the reference's, one
-    // cycle's moves).
-    let rough = moves.clone().filter_map(|m| m.pass).filter(|p| p.kind == PassKind::Rough);
-    let rough_passes = rough.map(|p| p.number).max().unwrap_or(0);
+    // The heading counts the rough passes, found before any move (reading
+    // R-LIMIT) as both engines find it; the cycle expanded, so it has a
+    // count.
+    let rough_passes = cycleref::engine::rough_pass_count(&call.cycle).unwrap_or(0);
     let starts = call.cycle.starts;
     writeln!(
         out,
