@@ -11,7 +11,7 @@ use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{Args, CommandFactory as _, Parser, Subcommand, ValueEnum};
 use cycleref::IncrementSystem;
 use cycleref_cli::{check, output, plot, vectors, Failure, Format, Job, Options, Profile};
 use cycleref_spec::pipeline::Engine;
@@ -97,6 +97,20 @@ enum Command {
         /// cycles are drawn and stderr says how many were left out.
         #[arg(long = "line", value_name = "N")]
         lines: Vec<usize>,
+    },
+    /// Print a completion script for SHELL on standard output, e.g.
+    /// `cycleref completions bash > /etc/bash_completion.d/cycleref`.
+    Completions {
+        /// The shell.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print a manual page (roff) on standard output: the command's, or a
+    /// subcommand's (`cycleref man expand > cycleref-expand.1`). The
+    /// repository keeps them in cli/man/.
+    Man {
+        /// The subcommand whose page to print.
+        subcommand: Option<String>,
     },
 }
 
@@ -216,6 +230,33 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 FormatArg::Jsonl => Format::Jsonl,
             };
             output::expand(&job, format, std::io::stdout().lock())?;
+            Ok(0)
+        }
+        Command::Completions { shell } => {
+            let mut text = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "cycleref", &mut text);
+            print(&String::from_utf8_lossy(&text))?;
+            Ok(0)
+        }
+        Command::Man { subcommand } => {
+            let mut command = Cli::command();
+            command.build();
+            let page = match &subcommand {
+                None => command,
+                Some(name) => {
+                    let found = command.get_subcommands().find(|c| c.get_name() == name.as_str()).cloned();
+                    let sub = found.ok_or_else(|| Failure::msg(format!("man: no subcommand `{name}`")))?;
+                    // The page's title is `cycleref-<name>`, as the main
+                    // page's list of subcommands names it.
+                    let title = format!("cycleref-{name}");
+                    sub.name(title.clone()).bin_name(title).version(env!("CARGO_PKG_VERSION"))
+                }
+            };
+            let mut text = Vec::new();
+            clap_mangen::Man::new(page)
+                .render(&mut text)
+                .map_err(|e| Failure::msg(format!("cannot render the manual page: {e}")))?;
+            print(&String::from_utf8_lossy(&text))?;
             Ok(0)
         }
         Command::Passes { common } => {

@@ -11,7 +11,7 @@
 use std::cell::RefCell;
 use std::io::{self, Write};
 
-use cycleref::{Motion, Move, PassKind, PathType, Point, Role, Units};
+use cycleref::{Motion, Move, PathType, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{G75Call, G76Call, Item, Restore};
