@@ -1033,6 +1033,23 @@ struct Divergence {
     moves: usize,
 }
 
+/// A divergence as `plot --trace` draws it: where it is, and what the
+/// report says of it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Mark {
+    /// The line of our cycle it lies in (G76 block 2, G32, G75.1 block 2);
+    /// `None` for a program block's move or a move only the trace makes.
+    pub cycle_line: Option<usize>,
+    /// Where our move ends, if we make it.
+    pub ours: Option<Point>,
+    /// Where the trace's move ends, if it makes one.
+    pub theirs: Option<Point>,
+    /// Theirs minus ours in increments (X, Z), when both make the move.
+    pub difference: Option<(i128, i128)>,
+    /// The report's lines for it (what, where, ours, theirs, difference).
+    pub text: Vec<String>,
+}
+
 /// The two corners of a rapid from `p` to `q` split into an X and a Z move.
 fn corners(p: Point, q: Point) -> [Point; 2] {
     [Point::new(q.x, p.z), Point::new(p.x, q.z)]
@@ -1155,12 +1172,20 @@ fn only_kinds(d: &[Divergence]) -> bool {
 /// it, widened by a tenth (at least 16) each way so that a trace with a few
 /// moves more or less still shows whole; at most
 /// [`crate::plot::MAX_OVERLAY_POINTS`] a cycle. The trace is read as it is
-/// taken.
+/// taken, then again by [`run`] for the divergences to mark.
 ///
 /// # Errors
 ///
-/// The program's or the trace's first error.
+/// The program's or the trace's first error; a trace on standard input
+/// (`-`), which cannot be read twice.
 pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<crate::plot::Overlay, String> {
+    if trace == Path::new("-") {
+        return Err(
+            "plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
+                    give it as a file, not `-`"
+                .into(),
+        );
+    }
     let units = job.validate()?.units;
     let (name, source) = open_trace(trace)?;
     let widened: Vec<(usize, usize)> = ranges
@@ -1192,7 +1217,9 @@ pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<cra
             }
         }
     }
-    Ok(crate::plot::Overlay { name, per_cycle, dropped })
+    // Where they diverge: the comparison `check` makes, at tolerance 0.
+    let marks = run(job, trace, 0)?.marks();
+    Ok(crate::plot::Overlay { name, per_cycle, lines: Vec::new(), dropped, marks })
 }
 
 /// True when the trace at `trace` is a CSV (by its extension).
@@ -1623,6 +1650,36 @@ impl Report {
         self.total += found.len();
         let room = MAX_LISTED.saturating_sub(self.divergences.len());
         self.divergences.extend(found.into_iter().take(room));
+    }
+
+    /// The listed divergences as a picture marks them (`plot --trace`), in
+    /// order: the first is the report's first divergence.
+    #[must_use]
+    pub fn marks(&self) -> Vec<Mark> {
+        self.divergences
+            .iter()
+            .map(|d| {
+                let mut text = String::new();
+                self.describe(d, &mut text);
+                let cycle_line = d.ours.or(d.theirs).and_then(|s| match s.context {
+                    Context::G76 { line, .. } | Context::G32 { line, .. } | Context::G75 { line, .. } => {
+                        d.ours.is_some().then_some(line)
+                    }
+                    Context::Source { .. } => None,
+                });
+                let difference = match (&d.ours, &d.theirs) {
+                    (Some(o), Some(t)) => Some(diff(o.to, t.to)),
+                    _ => None,
+                };
+                Mark {
+                    cycle_line,
+                    ours: d.ours.map(|s| s.to),
+                    theirs: d.theirs.map(|s| s.to),
+                    difference,
+                    text: text.lines().map(str::to_string).collect(),
+                }
+            })
+            .collect()
     }
 
     /// True when the toolpaths agree within the tolerance.

@@ -211,3 +211,97 @@ fn g32_blocks_are_drawn() {
     assert_eq!(text.matches("synchronisation starts").count(), 2);
     let _ = std::fs::remove_file(&svg);
 }
+
+/// Our expansion of `example` (with `profile`), with `from` replaced by
+/// `to` once, written as a trace in the scratch directory.
+fn trace_with(profile: &str, example: &str, from: &str, to: &str, name: &str) -> PathBuf {
+    let out = Command::new(BIN).args(["expand", "--profile", profile, example]).output().expect("expands");
+    assert!(out.status.success());
+    let ours = String::from_utf8(out.stdout).expect("utf-8");
+    assert!(ours.contains(from), "{from} not in the expansion");
+    let path = scratch(name);
+    std::fs::write(&path, ours.replacen(from, to, 1)).expect("writes the trace");
+    path
+}
+
+fn plot_trace(profile: &str, example: &str, trace: &PathBuf, name: &str) -> (Output, String) {
+    let svg = scratch(name);
+    let run = Command::new(BIN)
+        .args(["plot", "--profile", profile, example, "--trace"])
+        .arg(trace)
+        .arg("-o")
+        .arg(&svg)
+        .output()
+        .expect("runs");
+    (run, std::fs::read_to_string(&svg).unwrap_or_default())
+}
+
+#[test]
+fn the_first_divergence_is_marked_and_zoomed() {
+    // Rough pass 3 of M68x6 ends its cut at X61.764 Z-59 (the golden test
+    // of the manual's O0013); the trace ends it 0.036 mm (36 increments)
+    // lower.
+    let trace = trace_with("gsk988", M68, "G32 X61.764 Z-59.000", "G32 X61.728 Z-59.000", "m68-36.nc");
+    let (run, svg) = plot_trace("gsk988", M68, &trace, "m68-36.svg");
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let parsed = parse(&svg);
+    let has = |s: &str| parsed.texts.iter().any(|t| t.contains(s));
+    // A second panel, zoomed six times the difference each way.
+    assert!(has("first divergence, zoomed"), "{:?}", parsed.texts);
+    assert!(has("216 increments each way around our point"), "{:?}", parsed.texts);
+    // The report's words for it, beside the zoom.
+    assert!(has("rough pass 3"), "{:?}", parsed.texts);
+    assert!(has("difference: X -36 Z 0 increments"), "{:?}", parsed.texts);
+    // The first divergence's large ring: on the cycle's panel and on the
+    // zoom; its label "1" on both.
+    assert_eq!(svg.matches("r=\"9\"").count(), 2, "{svg}");
+    assert_eq!(parsed.texts.iter().filter(|t| t.as_str() == "1").count(), 2);
+}
+
+#[test]
+fn a_groove_divergence_is_marked_on_its_panel() {
+    const SQUARE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk980-g75-square.nc");
+    // Layer 1 plunge 2 goes 0.1 mm deeper in the trace.
+    let trace = trace_with("gsk980", SQUARE, "G01 X26.000 Z-3.200", "G01 X25.900 Z-3.200", "square-deep.nc");
+    let (run, svg) = plot_trace("gsk980", SQUARE, &trace, "square-deep.svg");
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let parsed = parse(&svg);
+    let has = |s: &str| parsed.texts.iter().any(|t| t.contains(s));
+    assert!(has("G75.1 at line 9, layer 1 plunge 2"), "{:?}", parsed.texts);
+    assert!(has("difference: X -100 Z 0 increments"), "{:?}", parsed.texts);
+    assert_eq!(svg.matches("r=\"9\"").count(), 2, "the groove panel and the zoom");
+}
+
+#[test]
+fn a_trace_on_standard_input_cannot_be_drawn() {
+    let out = Command::new(BIN)
+        .args(["plot", "--profile", "gsk988", M68, "--trace", "-", "-o"])
+        .arg(scratch("stdin.svg"))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("give it as a file, not `-`"));
+}
+
+#[test]
+fn groove_and_thread_panels_have_a_legend_and_a_scale_note() {
+    let square =
+        plot_ok("gsk980", concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk980-g75-square.nc"), "sq.svg");
+    let parsed = parse(&square);
+    let has = |s: &str| parsed.texts.iter().any(|t| t.contains(s));
+    for s in ["Legend", "rough contour (step 9)", "finishing contour (step 10)", "tool edge, I3.000 wide"] {
+        assert!(has(s), "{s}: {:?}", parsed.texts);
+    }
+    assert!(has("grooving tool I3.000; X and Z to"), "{:?}", parsed.texts);
+    let g32 = plot_ok(
+        "gsk980",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk980-g32-runout.nc"),
+        "g32.svg",
+    );
+    let parsed = parse(&g32);
+    let has = |s: &str| parsed.texts.iter().any(|t| t.contains(s));
+    for s in ["Legend", "run-out (J, K)", "spindle synchronises", "4 blocks; X and Z to"] {
+        assert!(has(s), "{s}: {:?}", parsed.texts);
+    }
+}

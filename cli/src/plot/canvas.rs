@@ -10,7 +10,7 @@
 //! by [`num`], to 0.1 px, so the same program gives the same bytes.
 
 use cycleref::{InputUnit, Point, XMode};
-use svg::node::element::{Group, Line, Rectangle, Text};
+use svg::node::element::{Circle, Group, Line, Rectangle, Text, Title};
 
 /// Left edge of the plot area within a panel (px).
 pub(super) const PLOT_LEFT: f64 = 90.0;
@@ -31,6 +31,8 @@ pub(super) const RAPID_DASH: &str = "6 4";
 pub(super) const FINISH: &str = "#d62728";
 /// Run-outs.
 pub(super) const RUN_OUT: &str = "#2ca02c";
+/// A vendor's trace drawn over the toolpath, and its divergences.
+pub(super) const TRACE: &str = "#d6278a";
 /// Marked points and their outlines.
 pub(super) const POINT: &str = "#000000";
 /// The grid of the plot area.
@@ -284,6 +286,202 @@ fn padded(lo: f64, hi: f64, fraction: f64) -> (f64, f64) {
     } else {
         (lo - 0.5, hi + 0.5)
     }
+}
+
+/// The marks of the divergences `marks` on a panel mapped by `m`: at our
+/// point a ring (the first divergence, `first`, a larger one with the
+/// label "1"), at the trace's a cross, joined by a line; each with the
+/// report's text as its tooltip. Points outside the plot area are not
+/// drawn.
+pub(super) fn draw_marks(mut g: Group, m: &Mapping, marks: &[&crate::check::Mark], first: bool) -> Group {
+    let inside =
+        |(x, y): (f64, f64)| (PLOT_LEFT..=PLOT_RIGHT).contains(&x) && (PLOT_TOP..=PLOT_BOTTOM).contains(&y);
+    for (i, mark) in marks.iter().enumerate() {
+        let big = first && i == 0;
+        let tip = mark.text.join("\n");
+        let ours = mark.ours.map(|p| m.px(p)).filter(|&p| inside(p));
+        let theirs = mark.theirs.map(|p| m.px(p)).filter(|&p| inside(p));
+        if let (Some((x1, y1)), Some((x2, y2))) = (ours, theirs) {
+            g = g.add(
+                Line::new()
+                    .set("x1", num(x1))
+                    .set("y1", num(y1))
+                    .set("x2", num(x2))
+                    .set("y2", num(y2))
+                    .set("stroke", TRACE)
+                    .set("stroke-width", 1),
+            );
+        }
+        if let Some((x, y)) = ours {
+            let r = if big { 9.0 } else { 4.0 };
+            g = g.add(
+                Circle::new()
+                    .set("cx", num(x))
+                    .set("cy", num(y))
+                    .set("r", r)
+                    .set("fill", "none")
+                    .set("stroke", TRACE)
+                    .set("stroke-width", if big { 2.5 } else { 1.5 })
+                    .add(Title::new(tip.clone())),
+            );
+            if big {
+                g = g.add(
+                    Text::new("1")
+                        .set("x", num(x + 11.0))
+                        .set("y", num(y - 9.0))
+                        .set("font-size", 13)
+                        .set("font-weight", "bold")
+                        .set("fill", TRACE),
+                );
+            }
+        }
+        if let Some((x, y)) = theirs {
+            let h = if big { 6.0 } else { 3.0 };
+            let d = format!(
+                "M{} {}L{} {}M{} {}L{} {}",
+                num(x - h),
+                num(y - h),
+                num(x + h),
+                num(y + h),
+                num(x - h),
+                num(y + h),
+                num(x + h),
+                num(y - h)
+            );
+            g = g.add(
+                svg::node::element::Path::new()
+                    .set("d", d)
+                    .set("stroke", TRACE)
+                    .set("stroke-width", if big { 2.0 } else { 1.2 })
+                    .add(Title::new(tip)),
+            );
+        }
+    }
+    g
+}
+
+/// What the axes' scales are, for a panel's subtitle: the same, or X
+/// stretched (or squeezed) by a factor against Z.
+pub(super) fn scale_note(m: &Mapping) -> String {
+    let (sz, sx) = m.scales();
+    if (sz / sx - 1.0).abs() < 0.02 {
+        "X and Z to the same scale".to_string()
+    } else {
+        format!("X and Z to different scales (X stretched \u{d7}{:.1})", sx / sz)
+    }
+}
+
+/// The sample drawn before a legend entry.
+pub(super) enum Swatch<'s> {
+    /// A line of this colour and width, dashed with the pattern if given.
+    Line(&'s str, f64, Option<&'s str>),
+    /// A filled block of this colour and opacity.
+    Block(&'s str, f64),
+    /// A ring of this colour.
+    Ring(&'s str),
+    /// Nothing (a note under the previous entry).
+    None,
+}
+
+/// A legend column right of the plot area: a title, then each entry's
+/// swatch and text, and under it an optional note in small grey type.
+pub(super) fn legend(mut g: Group, entries: &[(Swatch<'_>, String, Option<String>)]) -> Group {
+    let (x0, x1, tx) = (LEGEND_LEFT, LEGEND_LEFT + 30.0, LEGEND_LEFT + 38.0);
+    let mut y = PLOT_TOP + 8.0;
+    g = g.add(
+        Text::new("Legend").set("x", x0).set("y", num(y)).set("font-size", 13).set("font-weight", "bold"),
+    );
+    y += 20.0;
+    for (swatch, text, note) in entries {
+        g = match *swatch {
+            Swatch::Line(colour, width, dash) => {
+                let mut l = Line::new()
+                    .set("x1", x0)
+                    .set("x2", x1)
+                    .set("y1", num(y))
+                    .set("y2", num(y))
+                    .set("stroke", colour)
+                    .set("stroke-width", width);
+                if let Some(dash) = dash {
+                    l = l.set("stroke-dasharray", dash);
+                }
+                g.add(l)
+            }
+            Swatch::Block(colour, opacity) => g.add(
+                Rectangle::new()
+                    .set("x", x0)
+                    .set("y", num(y - 5.0))
+                    .set("width", x1 - x0)
+                    .set("height", 10)
+                    .set("fill", colour)
+                    .set("fill-opacity", opacity),
+            ),
+            Swatch::Ring(colour) => g.add(
+                Circle::new()
+                    .set("cx", num(x0 + 8.0))
+                    .set("cy", num(y))
+                    .set("r", 4)
+                    .set("fill", "none")
+                    .set("stroke", colour),
+            ),
+            Swatch::None => g,
+        };
+        g = g.add(
+            Text::new(text.as_str()).set("x", tx).set("y", num(y)).set("dy", "0.35em").set("font-size", 12),
+        );
+        y += 16.0;
+        if let Some(note) = note {
+            g = g.add(
+                Text::new(note.as_str())
+                    .set("x", tx)
+                    .set("y", num(y))
+                    .set("dy", "0.35em")
+                    .set("font-size", 11)
+                    .set("fill", "#555555"),
+            );
+            y += 16.0;
+        }
+        y += 4.0;
+    }
+    g
+}
+
+/// The trace `name` (its `points` over a cycle) as a magenta polyline over
+/// the toolpath, clipped to the plot area (clip path `clip_id`, unique in
+/// the document), with a label: where it leaves our path, it shows.
+pub(super) fn draw_trace(g: Group, m: &Mapping, name: &str, points: &[Point], clip_id: &str) -> Group {
+    use std::fmt::Write as _;
+    let mut d = String::new();
+    for (i, p) in points.iter().enumerate() {
+        let (x, y) = m.px(*p);
+        let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(x), num(y));
+    }
+    let clip = svg::node::element::ClipPath::new().set("id", clip_id).add(
+        Rectangle::new()
+            .set("x", PLOT_LEFT)
+            .set("y", PLOT_TOP)
+            .set("width", PLOT_RIGHT - PLOT_LEFT)
+            .set("height", PLOT_BOTTOM - PLOT_TOP),
+    );
+    g.add(clip)
+        .add(
+            svg::node::element::Path::new()
+                .set("d", d)
+                .set("fill", "none")
+                .set("stroke", TRACE)
+                .set("stroke-width", 1.2)
+                .set("stroke-opacity", 0.85)
+                .set("clip-path", format!("url(#{clip_id})"))
+                .add(Title::new(format!("trace {name}"))),
+        )
+        .add(
+            Text::new(format!("\u{2014} trace: {name}"))
+                .set("x", PLOT_RIGHT)
+                .set("y", 66)
+                .set("text-anchor", "end")
+                .set("font-size", 12)
+                .set("fill", TRACE),
+        )
 }
 
 #[cfg(test)]

@@ -11,10 +11,20 @@ use cycleref::{Move, Role};
 use cycleref_spec::reader::G32Call;
 use svg::node::element::{Circle, Group, Line, Title};
 
-use super::canvas::{draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, POINT, RUN_OUT};
+use super::canvas::{
+    draw_axes, draw_marks, heading, legend, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch, POINT,
+    RAPID, RUN_OUT,
+};
 
-/// One panel with every G32 block of the program (`threads`, at least one).
-pub(super) fn panel(name: &str, threads: &[(G32Call<'_>, Vec<Move>)]) -> Group {
+/// One panel with every G32 block of the program (`threads`, at least
+/// one), with the divergences `marks` of a trace in them marked (`first_mark`:
+/// the first of them is the report's first).
+pub(super) fn panel(
+    name: &str,
+    threads: &[(G32Call<'_>, Vec<Move>)],
+    marks: &[&crate::check::Mark],
+    first_mark: bool,
+) -> Group {
     let first = &threads[0].0;
     let per_unit = first.g32.units.per_unit();
     let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
@@ -23,14 +33,32 @@ pub(super) fn panel(name: &str, threads: &[(G32Call<'_>, Vec<Move>)]) -> Group {
     let mut g = heading(
         Group::new(),
         format!("{name} \u{2014} G32 blocks ({lines})"),
-        format!(
-            "{} block{}; blue: thread, green: run-out, circles: where the spindle synchronises",
-            threads.len(),
-            if threads.len() == 1 { "" } else { "s" }
-        ),
+        format!("{} block{}; {}", threads.len(), if threads.len() == 1 { "" } else { "s" }, scale_note(&map)),
+    );
+    let total = u32::try_from(threads.len()).unwrap_or(u32::MAX);
+    let ramp_note = (total > 1).then(|| "light \u{2192} dark: first \u{2192} last block".to_string());
+    g = legend(
+        g,
+        &[
+            (
+                Swatch::Line(&ramp(1, total.max(2)), 1.8, None),
+                "thread (G32), one blue per block".into(),
+                ramp_note,
+            ),
+            (Swatch::Line(RUN_OUT, 3.0, None), "run-out (J, K)".into(), None),
+            (
+                Swatch::Ring(POINT),
+                "spindle synchronises".into(),
+                Some("not continuing the block before".into()),
+            ),
+            (
+                Swatch::Line(RAPID, 1.0, Some("2 3")),
+                "the program's own moves".into(),
+                Some("between the blocks: not drawn".into()),
+            ),
+        ],
     );
     g = draw_axes(g, &map, unit_name(first.g32.units.unit), x_kind(first.g32.x_mode));
-    let total = u32::try_from(threads.len()).unwrap_or(u32::MAX);
     for (i, (call, moves)) in threads.iter().enumerate() {
         let mut at = call.g32.start;
         if call.g32.sync {
@@ -68,5 +96,5 @@ pub(super) fn panel(name: &str, threads: &[(G32Call<'_>, Vec<Move>)]) -> Group {
             at = m.to;
         }
     }
-    g
+    draw_marks(g, &map, marks, first_mark)
 }

@@ -23,7 +23,10 @@ use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::reader::G75Call;
 use svg::node::element::{Group, Path, Rectangle, Title};
 
-use super::canvas::{draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, FINISH, RAPID, RAPID_DASH};
+use super::canvas::{
+    draw_axes, draw_marks, heading, legend, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
+    FINISH, RAPID, RAPID_DASH,
+};
 use crate::format::fixed;
 
 /// Orange: the rough contour (step 9).
@@ -70,30 +73,78 @@ impl<'a> Groove<'a> {
         Ok(Groove { call, moves, profile: profile_from_contour(&contour), rough })
     }
 
-    /// The panel's drawing.
-    pub(super) fn draw(&self, name: &str) -> Group {
+    /// The panel's mapping: every point of the moves and the profile.
+    pub(super) fn map(&self) -> Mapping {
         let c = &self.call.cycle;
-        let u = c.units;
-        let per_unit = u.per_unit();
         let points = std::iter::once(c.from)
             .chain(std::iter::once(c.start))
             .chain(self.moves.iter().map(|m| m.to))
             .chain(self.profile.iter().map(|m| m.to));
-        let map = Mapping::around(points, per_unit);
+        Mapping::around(points, c.units.per_unit())
+    }
+
+    /// The line of block 2, where the cycle runs.
+    pub(super) fn line(&self) -> usize {
+        self.call.block.line
+    }
+
+    /// Where the tool is when the cycle starts, and its moves.
+    pub(super) fn path(&self) -> (Point, &[Move], cycleref::Units, cycleref::XMode) {
+        (self.call.cycle.from, &self.moves, self.call.cycle.units, self.call.cycle.x_mode)
+    }
+
+    /// The panel's drawing, with the divergences `marks` of a trace in
+    /// this cycle marked (`first`: the first of them is the report's first).
+    pub(super) fn draw(&self, name: &str, marks: &[&crate::check::Mark], first: bool) -> Group {
+        let c = &self.call.cycle;
+        let u = c.units;
+        let map = self.map();
         let tool = match c.tool_width {
-            Some(w) => {
-                format!("grooving tool I{} (bars: its cutting edge at each plunge bottom)", fixed(w, u))
-            }
+            Some(w) => format!("grooving tool I{}", fixed(w, u)),
             None => "pointed tool (no I)".to_string(),
         };
         let mut g = heading(
             Group::new(),
             format!("{name} \u{2014} G75.1 at lines {}-{}", self.call.params_line, self.call.block.line),
-            format!(
-                "grey: groove profile, dotted: less the allowances; blue: pecks, orange: rough contour, red: \
-                 finishing; {tool}"
-            ),
+            format!("{tool}; {}", scale_note(&map)),
         );
+        let layers_total = self
+            .moves
+            .iter()
+            .filter_map(|m| crate::format::plunge_of(m.role))
+            .map(|p| p.layer)
+            .max()
+            .unwrap_or(1);
+        let peck_colour = ramp(1, layers_total.max(2));
+        let mut entries = vec![
+            (Swatch::Block(GROOVE_FILL, 1.0), "the programmed groove profile".to_string(), None),
+            (
+                Swatch::Line(PROFILE, 1.0, Some("2 3")),
+                "less the allowances U, W".to_string(),
+                Some("the roughing region".to_string()),
+            ),
+            (
+                Swatch::Line(&peck_colour, 1.6, None),
+                "pecks (steps 1-8)".to_string(),
+                (layers_total > 1).then(|| format!("light \u{2192} dark: layer 1 \u{2192} {layers_total}")),
+            ),
+            (Swatch::Line(ROUGH, 2.0, None), "rough contour (step 9)".to_string(), None),
+            (Swatch::Line(FINISH, 2.0, None), "finishing contour (step 10)".to_string(), None),
+            (Swatch::Line(RAPID, 1.0, Some(RAPID_DASH)), "rapid (G00)".to_string(), None),
+        ];
+        if let Some(w) = c.tool_width.filter(|&w| w > 0) {
+            entries.push((
+                Swatch::Block("#1f77b4", 0.25),
+                format!("tool edge, I{} wide", fixed(w, u)),
+                Some("at each plunge bottom".to_string()),
+            ));
+            entries.push((
+                Swatch::None,
+                "paths are the tool's start-side corner:".to_string(),
+                Some("far-side moves run I inside the profile".to_string()),
+            ));
+        }
+        g = legend(g, &entries);
         g = draw_axes(g, &map, unit_name(u.unit), x_kind(c.x_mode));
         let x_factor = c.x_mode.factor();
         // The groove: the profile closed along the surface.
@@ -194,14 +245,15 @@ impl<'a> Groove<'a> {
             }
             at = m.to;
         }
-        g.add(bars).add(
+        let g = g.add(bars).add(
             Path::new()
                 .set("d", rapids)
                 .set("fill", "none")
                 .set("stroke", RAPID)
                 .set("stroke-width", 1)
                 .set("stroke-dasharray", RAPID_DASH),
-        )
+        );
+        draw_marks(g, &map, marks, first)
     }
 }
 

@@ -15,16 +15,14 @@ use std::fmt::Write as _;
 
 use cycleref::{G76Cycle, Motion, Move, PassKind, Point, Role};
 use cycleref_spec::reader::G76Call;
-use svg::node::element::{Circle, Group, Line, Path, Rectangle, Text, Title};
+use svg::node::element::{Circle, Group, Line, Path, Text, Title};
 
 use super::canvas::{
-    draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, FINISH, LEGEND_LEFT, PLOT_BOTTOM, PLOT_LEFT,
-    PLOT_RIGHT, PLOT_TOP, POINT, RAPID, RAPID_DASH, RUN_OUT,
+    draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, FINISH, LEGEND_LEFT, PLOT_TOP, POINT, RAPID,
+    RAPID_DASH, RUN_OUT,
 };
 use crate::format::{fixed, lead_word};
 
-/// A vendor's trace drawn over the toolpath.
-const TRACE: &str = "#d6278a";
 /// Lead-ins.
 const LEAD_IN: &str = "#9467bd";
 /// Rough passes listed one by one in the legend up to this count.
@@ -271,43 +269,16 @@ impl<'a> Panel<'a> {
         }
     }
 
-    /// The trace `name` (its `points` over this cycle) as a magenta
-    /// polyline over the toolpath, clipped to the plot area, with a label:
-    /// where it leaves our path, it shows. `index` is the panel's, for the
-    /// id of its clip path.
+    /// The trace `name` (its `points` over this cycle) over the toolpath
+    /// ([`super::canvas::draw_trace`]); `index` is the panel's.
     pub(super) fn draw_overlay(&self, g: Group, name: &str, points: &[Point], index: usize) -> Group {
-        let mut d = String::new();
-        for (i, p) in points.iter().enumerate() {
-            let (x, y) = self.map.px(*p);
-            let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(x), num(y));
-        }
-        let id = format!("plot-area-{index}");
-        let clip = svg::node::element::ClipPath::new().set("id", id.as_str()).add(
-            Rectangle::new()
-                .set("x", PLOT_LEFT)
-                .set("y", PLOT_TOP)
-                .set("width", PLOT_RIGHT - PLOT_LEFT)
-                .set("height", PLOT_BOTTOM - PLOT_TOP),
-        );
-        g.add(clip)
-            .add(
-                Path::new()
-                    .set("d", d)
-                    .set("fill", "none")
-                    .set("stroke", TRACE)
-                    .set("stroke-width", 1.2)
-                    .set("stroke-opacity", 0.85)
-                    .set("clip-path", format!("url(#{id})"))
-                    .add(Title::new(format!("trace {}", name))),
-            )
-            .add(
-                Text::new(format!("\u{2014} trace: {}", name))
-                    .set("x", PLOT_RIGHT)
-                    .set("y", 66)
-                    .set("text-anchor", "end")
-                    .set("font-size", 12)
-                    .set("fill", TRACE),
-            )
+        super::canvas::draw_trace(g, &self.map, name, points, &format!("plot-area-{index}"))
+    }
+
+    /// The divergences `marks` of this cycle (`first`: the first of them
+    /// is the report's first divergence).
+    pub(super) fn draw_marks(&self, g: Group, marks: &[&crate::check::Mark], first: bool) -> Group {
+        super::canvas::draw_marks(g, &self.map, marks, first)
     }
 
     fn draw_heading(&self, g: Group) -> Group {

@@ -43,6 +43,7 @@ mod canvas;
 mod g32;
 mod g75;
 mod g76;
+mod zoom;
 
 /// Width of the picture (px).
 const WIDTH: f64 = 1200.0;
@@ -64,7 +65,41 @@ fn svg(
     if cycles.is_empty() && threads.is_empty() && grooves.is_empty() {
         return Err(format!("{name}: no G76 cycle, G32 block or G75.1 cycle to plot"));
     }
-    let panels = cycles.len() + usize::from(!threads.is_empty()) + grooves.len();
+    let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
+    let first_line = marks.first().and_then(|m| m.cycle_line);
+    // The zoomed panel of the first divergence, drawn last.
+    let zoomed = overlay.and_then(|o| {
+        let first = marks.first()?;
+        let g76 = cycles.iter().enumerate().find(|(_, (c, _))| Some(c.block.line) == first.cycle_line);
+        let g32 = threads.iter().find(|(c, _)| Some(c.block.line) == first.cycle_line);
+        let g75 = grooves.iter().find(|g| Some(g.line()) == first.cycle_line);
+        let (ours, theirs) = match (g76, g32, g75) {
+            (Some((i, (c, moves))), _, _) => (
+                zoom::Ours { from: c.cycle.start, moves, units: c.cycle.units, x_mode: c.cycle.x_mode },
+                o.per_cycle.get(i).map_or(&[][..], Vec::as_slice),
+            ),
+            (None, Some((c, moves)), _) => {
+                (zoom::Ours { from: c.g32.start, moves, units: c.g32.units, x_mode: c.g32.x_mode }, &[][..])
+            }
+            (None, None, Some(g)) => {
+                let (from, moves, units, x_mode) = g.path();
+                (zoom::Ours { from, moves, units, x_mode }, &[][..])
+            }
+            // A divergence outside the cycles drawn: its marks alone, in
+            // the first panel's units.
+            (None, None, None) => {
+                let (units, x_mode) = cycles
+                    .first()
+                    .map(|(c, _)| (c.cycle.units, c.cycle.x_mode))
+                    .or_else(|| threads.first().map(|(c, _)| (c.g32.units, c.g32.x_mode)))
+                    .or_else(|| grooves.first().map(|g| (g.path().2, g.path().3)))?;
+                (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], units, x_mode }, &[][..])
+            }
+        };
+        zoom::panel(name, o.short_name(), &marks, &ours, theirs, 0)
+    });
+    let panels =
+        cycles.len() + usize::from(!threads.is_empty()) + grooves.len() + usize::from(zoomed.is_some());
     let height = PANEL_HEIGHT * count(panels);
     let mut doc = Document::new()
         .set("width", WIDTH)
@@ -76,18 +111,39 @@ fn svg(
         let panel = g76::Panel::new(name, call, moves)?;
         let mut group = panel.draw();
         if let Some(o) = overlay {
-            let points = o.per_cycle.get(index).map_or(&[][..], Vec::as_slice);
-            group = panel.draw_overlay(group, &o.name, points, index);
+            group = panel.draw_overlay(group, o.short_name(), o.points_for(call.block.line), index);
+            let line = Some(call.block.line);
+            let here: Vec<&crate::check::Mark> =
+                marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
+            group = panel.draw_marks(group, &here, first_line == line);
         }
         doc = place(doc, group, index, true);
     }
     if !threads.is_empty() {
-        // The G32 panel has no rule above it (as it always had).
-        doc = place(doc, g32::panel(name, threads), cycles.len(), false);
+        let here: Vec<&crate::check::Mark> = marks
+            .iter()
+            .copied()
+            .filter(|m| threads.iter().any(|(c, _)| m.cycle_line == Some(c.block.line)))
+            .take(MAX_MARKS)
+            .collect();
+        let first = threads.iter().any(|(c, _)| first_line == Some(c.block.line));
+        doc = place(doc, g32::panel(name, threads, &here, first), cycles.len(), true);
     }
     let before = cycles.len() + usize::from(!threads.is_empty());
     for (i, groove) in grooves.iter().enumerate() {
-        doc = place(doc, groove.draw(name), before + i, true);
+        let line = Some(groove.line());
+        let here: Vec<&crate::check::Mark> =
+            marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
+        let mut group = groove.draw(name, &here, first_line == line);
+        if let Some(o) = overlay {
+            let clip = format!("groove-area-{i}");
+            group =
+                canvas::draw_trace(group, &groove.map(), o.short_name(), o.points_for(groove.line()), &clip);
+        }
+        doc = place(doc, group, before + i, true);
+    }
+    if let Some(group) = zoomed {
+        doc = place(doc, group, before + grooves.len(), true);
     }
     Ok(format!("{doc}\n"))
 }
@@ -124,12 +180,34 @@ fn count(n: usize) -> f64 {
 pub struct Overlay {
     /// The trace's name, for the label.
     pub name: String,
-    /// For each G76 cycle drawn, in order, the trace's points in order (in
+    /// For each cycle drawn, in order, the trace's points in order (in
     /// increments) that correspond to its moves (`check::overlay`).
     pub per_cycle: Vec<Vec<Point>>,
+    /// The line of each of those cycles (G76 and G75.1: block 2).
+    pub lines: Vec<usize>,
     /// Points left out beyond [`MAX_OVERLAY_POINTS`] a cycle.
     pub dropped: usize,
+    /// The divergences `check` finds between the program and the trace,
+    /// the first first: each G76 panel marks those in its cycle, and a last
+    /// panel is zoomed on the first.
+    pub marks: Vec<crate::check::Mark>,
 }
+
+impl Overlay {
+    /// The trace's points over the cycle at `line`.
+    fn points_for(&self, line: usize) -> &[Point] {
+        let i = self.lines.iter().position(|&l| l == line);
+        i.and_then(|i| self.per_cycle.get(i)).map_or(&[], Vec::as_slice)
+    }
+
+    /// The trace's name as a legend shows it: its file name.
+    fn short_name(&self) -> &str {
+        std::path::Path::new(&self.name).file_name().and_then(|n| n.to_str()).unwrap_or(&self.name)
+    }
+}
+
+/// The most divergences marked on one panel.
+pub const MAX_MARKS: usize = 500;
 
 /// The most trace points drawn over one cycle.
 pub const MAX_OVERLAY_POINTS: usize = 50_000;
@@ -162,7 +240,9 @@ pub fn run(
     let mut grooves = Vec::new();
     let (mut total, mut drawn) = (0_usize, 0_usize);
     // Where each G76 cycle drawn lies in the whole toolpath, by move index.
-    let (mut position, mut ranges) = (0_usize, Vec::new());
+    // Where each cycle drawn lies in the whole toolpath, by move index, and
+    // its line.
+    let (mut position, mut ranges, mut range_lines) = (0_usize, Vec::new(), Vec::new());
     let mut found = BTreeSet::new();
     // The program is read as everywhere (a file a line at a time); the
     // cycles drawn are kept, detached from the line they were read from.
@@ -203,11 +283,10 @@ pub fn run(
             let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
             position += moves.len();
+            ranges.push((from, position));
+            range_lines.push(cycle.line());
             match &item {
-                Item::G76(call) => {
-                    ranges.push((from, position));
-                    cycles.push((call.detached(), moves));
-                }
+                Item::G76(call) => cycles.push((call.detached(), moves)),
                 Item::G32(call) => threads.push((call.detached(), moves)),
                 Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
                 Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
@@ -221,10 +300,12 @@ pub fn run(
             job.name
         )));
     }
-    // The trace, read now: for each G76 cycle drawn, its moves at the same
+    // The trace, read now: for each cycle drawn, its moves at the same
     // places in the toolpath.
     let overlay = match trace {
-        Some(t) => Some(crate::check::overlay(job, t, &ranges)?),
+        Some(t) => {
+            Some(crate::plot::Overlay { lines: range_lines, ..crate::check::overlay(job, t, &ranges)? })
+        }
         None => None,
     };
     let svg =
