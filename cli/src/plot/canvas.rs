@@ -47,6 +47,12 @@ pub(super) fn num(v: f64) -> String {
     format!("{r}")
 }
 
+/// A line from pixel `(x1, y1)` to pixel `(x2, y2)`, its coordinates
+/// written by [`num`]; the caller sets its stroke.
+pub(super) fn line(x1: f64, y1: f64, x2: f64, y2: f64) -> Line {
+    Line::new().set("x1", num(x1)).set("y1", num(y1)).set("x2", num(x2)).set("y2", num(y2))
+}
+
 /// Increments as a float in mm (inch).
 #[allow(clippy::cast_precision_loss)]
 fn units_of(v: i64, per_unit: i64) -> f64 {
@@ -204,27 +210,13 @@ pub(super) fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> 
     );
     let (zs, zdec) = ticks(m.z_lo, m.z_hi, 10.0);
     for z in zs {
-        let x = num(m.px_z(z));
+        let x = m.px_z(z);
         g = g
-            .add(
-                Line::new()
-                    .set("x1", x.as_str())
-                    .set("x2", x.as_str())
-                    .set("y1", PLOT_TOP)
-                    .set("y2", PLOT_BOTTOM)
-                    .set("stroke", GRID),
-            )
-            .add(
-                Line::new()
-                    .set("x1", x.as_str())
-                    .set("x2", x.as_str())
-                    .set("y1", PLOT_BOTTOM)
-                    .set("y2", PLOT_BOTTOM + 5.0)
-                    .set("stroke", "#333333"),
-            )
+            .add(line(x, PLOT_TOP, x, PLOT_BOTTOM).set("stroke", GRID))
+            .add(line(x, PLOT_BOTTOM, x, PLOT_BOTTOM + 5.0).set("stroke", "#333333"))
             .add(
                 Text::new(format!("{:.*}", zdec, z + 0.0))
-                    .set("x", x.as_str())
+                    .set("x", num(x))
                     .set("y", PLOT_BOTTOM + 19.0)
                     .set("font-size", 12)
                     .set("text-anchor", "middle"),
@@ -232,28 +224,14 @@ pub(super) fn draw_axes(mut g: Group, m: &Mapping, unit: &str, x_kind: &str) -> 
     }
     let (xs, xdec) = ticks(m.x_lo, m.x_hi, 8.0);
     for v in xs {
-        let y = num(m.px_x(v));
+        let y = m.px_x(v);
         g = g
-            .add(
-                Line::new()
-                    .set("x1", PLOT_LEFT)
-                    .set("x2", PLOT_RIGHT)
-                    .set("y1", y.as_str())
-                    .set("y2", y.as_str())
-                    .set("stroke", GRID),
-            )
-            .add(
-                Line::new()
-                    .set("x1", PLOT_LEFT - 5.0)
-                    .set("x2", PLOT_LEFT)
-                    .set("y1", y.as_str())
-                    .set("y2", y.as_str())
-                    .set("stroke", "#333333"),
-            )
+            .add(line(PLOT_LEFT, y, PLOT_RIGHT, y).set("stroke", GRID))
+            .add(line(PLOT_LEFT - 5.0, y, PLOT_LEFT, y).set("stroke", "#333333"))
             .add(
                 Text::new(format!("{:.*}", xdec, v + 0.0))
                     .set("x", PLOT_LEFT - 8.0)
-                    .set("y", y.as_str())
+                    .set("y", num(y))
                     .set("dy", "0.35em")
                     .set("font-size", 12)
                     .set("text-anchor", "end"),
@@ -302,15 +280,7 @@ pub(super) fn draw_marks(mut g: Group, m: &Mapping, marks: &[&crate::check::Mark
         let ours = mark.ours.map(|p| m.px(p)).filter(|&p| inside(p));
         let theirs = mark.theirs.map(|p| m.px(p)).filter(|&p| inside(p));
         if let (Some((x1, y1)), Some((x2, y2))) = (ours, theirs) {
-            g = g.add(
-                Line::new()
-                    .set("x1", num(x1))
-                    .set("y1", num(y1))
-                    .set("x2", num(x2))
-                    .set("y2", num(y2))
-                    .set("stroke", TRACE)
-                    .set("stroke-width", 1),
-            );
+            g = g.add(line(x1, y1, x2, y2).set("stroke", TRACE).set("stroke-width", 1));
         }
         if let Some((x, y)) = ours {
             let r = if big { 9.0 } else { 4.0 };
@@ -395,13 +365,7 @@ pub(super) fn legend(mut g: Group, entries: &[(Swatch<'_>, String, Option<String
     for (swatch, text, note) in entries {
         g = match *swatch {
             Swatch::Line(colour, width, dash) => {
-                let mut l = Line::new()
-                    .set("x1", x0)
-                    .set("x2", x1)
-                    .set("y1", num(y))
-                    .set("y2", num(y))
-                    .set("stroke", colour)
-                    .set("stroke-width", width);
+                let mut l = line(x0, y, x1, y).set("stroke", colour).set("stroke-width", width);
                 if let Some(dash) = dash {
                     l = l.set("stroke-dasharray", dash);
                 }

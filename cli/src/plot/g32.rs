@@ -9,11 +9,11 @@
 
 use cycleref::{Move, Role};
 use cycleref_spec::reader::G32Call;
-use svg::node::element::{Circle, Group, Line, Title};
+use svg::node::element::{Circle, Group, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch, POINT,
-    RAPID, RUN_OUT,
+    draw_axes, draw_marks, heading, legend, line, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
+    POINT, RAPID, RUN_OUT,
 };
 
 /// One panel with every G32 block of the program (`threads`, at least
@@ -80,11 +80,7 @@ pub(super) fn panel(
             let colour =
                 if run_out { RUN_OUT.to_string() } else { ramp(u32::try_from(i + 1).unwrap_or(1), total) };
             g = g.add(
-                Line::new()
-                    .set("x1", num(x1))
-                    .set("y1", num(y1))
-                    .set("x2", num(x2))
-                    .set("y2", num(y2))
+                line(x1, y1, x2, y2)
                     .set("stroke", colour)
                     .set("stroke-width", if run_out { 3.0 } else { 1.8 })
                     .add(Title::new(format!(

@@ -184,13 +184,7 @@ impl<'a> Groove<'a> {
                     .add(Title::new("the groove less the allowances U/W (roughing region)")),
             );
         }
-        let layers = self
-            .moves
-            .iter()
-            .filter_map(|m| crate::format::plunge_of(m.role))
-            .map(|p| p.layer)
-            .max()
-            .unwrap_or(1);
+        let layers = layers_total;
         let mut at = c.from;
         let mut rapids = String::new();
         let mut bars = Group::new();
