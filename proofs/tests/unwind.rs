@@ -288,30 +288,41 @@ fn counting_sqrt(x: u128) -> u128 {
     cycleref::engine::round_sqrt(x)
 }
 
-/// P8 over `0..=i64::MAX`: sampled; every `x < 2^16`; and every `x` within
-/// 2 of a power of two or of an odd square's neighbours at each bit length,
-/// where Newton's start `2^ceil(bits/2)` is farthest from the root.
+/// `isqrt_floor` counting its Newton iterations.
+fn counting_floor(x: u128) -> u128 {
+    cycleref::engine::record_isqrt(x);
+    cycleref::engine::isqrt_floor(x)
+}
+
+/// The Newton loop of `isqrt_floor` over every `u128` (the window of the
+/// `proof_for_contract` harnesses of `isqrt_floor`, and of `round_sqrt`
+/// without its stub): sampled; every `x < 2^16`; and every `x` within 2 of
+/// each power of two, where Newton's start `2^ceil(bits/2)` is farthest
+/// from the root, up to the top of `u128`.
+fn newton_maxima(body: fn(u128, u128, fn(u128) -> u128), f: fn(u128) -> u128) -> Maxima {
+    let mut m = Maxima::default();
+    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
+        body(0, u128::MAX, f)
+    });
+    measure(&mut m, "isqrt (sampled below 2^94)", Mode::Sample { runs: 200_000, seed: 6 }, |_| {
+        body(0, 1 << 94, f);
+    });
+    measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| body(0, (1 << 16) - 1, f));
+    for bits in 17..128 {
+        let p = 1_u128 << bits;
+        measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| body(p - 2, p + 2, f));
+    }
+    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
+        body(u128::MAX - 4, u128::MAX, f)
+    });
+    m
+}
+
 #[test]
 fn isqrt_stays_below_its_unwind_bound() {
     let _one = lock();
-    let (lo, hi) = windows::ISQRT_WINDOW;
-    let mut m = Maxima::default();
-    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
-        harness::isqrt_rounds(lo, hi, counting_sqrt);
-    });
-    measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| {
-        harness::isqrt_rounds(0, (1 << 16) - 1, counting_sqrt);
-    });
-    for bits in 17..63 {
-        let p = 1_i64 << bits;
-        measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| {
-            harness::isqrt_rounds(p - 2, p + 2, counting_sqrt);
-        });
-    }
-    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
-        harness::isqrt_rounds(hi - 4, hi, counting_sqrt);
-    });
-    m.check("isqrt_rounds");
+    newton_maxima(harness::isqrt_rounds, counting_sqrt).check("isqrt_rounds");
+    newton_maxima(cycleref_proofs::contracts::isqrt_floor, counting_floor).check("isqrt_floor_contract");
 }
 
 /// The G32 run-out harness: every block within 3 increments exhaustively
