@@ -130,7 +130,7 @@ pub const UNWIND: [(&str, u32); 21] = [
     ("groove_inside", 66),
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
-    ("groove_no_panic", 64),
+    ("groove_no_panic", 1_000_001),
 ];
 
 /// The bound of harness `name` in [`UNWIND`].
