@@ -27,6 +27,7 @@
 use crate::contracts;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
+use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
     MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
@@ -202,6 +203,33 @@ fn mul_tan_round_contract() {
 #[kani::unwind(5)]
 fn g32_run_out() {
     harness::g32_run_out(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
+}
+
+/// No rapid enters the thread (G76, Z long) over [`G76_WINDOW`]: every
+/// rapid stays out of the open region between the crest and root lines
+/// from the last pass start to D (`crate::thread`), checked as the moves
+/// stream. Unwind 79; measured as P1 (78 moves, the harness's loop).
+/// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
+/// (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(79)]
+fn no_rapid_in_thread() {
+    thread::no_rapid_in_thread(&G76_WINDOW, &FixedPoint);
+}
+
+/// No rapid in a G32 block over [`G32_WINDOW`]. Unwind 5; measured as
+/// `g32_run_out` (4 coordinates checked by `validate`, 2 moves).
+/// Contracts: `round_div`, `saturate_i64` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(5)]
+fn g32_no_rapid() {
+    thread::g32_no_rapid(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
 }
 
 /// G75.1 pecks and steps over [`GROOVE_WINDOW`] (≤ 4 increments). Unwind

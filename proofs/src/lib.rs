@@ -13,6 +13,7 @@ pub mod harness;
 #[cfg(kani)]
 mod kani_proofs;
 pub mod shim;
+pub mod thread;
 pub mod windows;
 
 /// `any_in`, `any_bool`, `assume`, `declare` and `cover`: Kani's under

@@ -109,7 +109,7 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
 };
 
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 21] = [
+pub const UNWIND: [(&str, u32); 23] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -125,6 +125,8 @@ pub const UNWIND: [(&str, u32); 21] = [
     ("ceil_div_contract", 2),
     ("mul_tan_round_contract", 2),
     ("g32_run_out", 5),
+    ("no_rapid_in_thread", 79),
+    ("g32_no_rapid", 5),
     ("groove_pecks_and_steps", 66),
     ("groove_layers", 66),
     ("groove_inside", 66),

@@ -173,6 +173,7 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     g76("termination", &w, harness::termination);
     g76("run_out_direction", &w, harness::run_out_direction);
     g76("no_overcut", &w, harness::no_overcut);
+    g76("no_rapid_in_thread", &w, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
     // The engine's side only: the reference's loops (rust_decimal) are not
     // counted here.
@@ -435,6 +436,15 @@ fn g32_stays_below_its_unwind_bound() {
     });
     m.take(moves.get());
     m.check("g32_run_out");
+    let mut m = Maxima::default();
+    measure(&mut m, "g32 no rapid (sampled window)", SAMPLE, |_| {
+        cycleref_proofs::thread::g32_no_rapid(reach, run_out, &counting);
+    });
+    measure(&mut m, "g32 no rapid (within 3)", Mode::Enumerate { max_runs: 5_000_000 }, |_| {
+        cycleref_proofs::thread::g32_no_rapid(3, 2, &counting);
+    });
+    m.take(moves.get());
+    m.check("g32_no_rapid");
 }
 
 #[test]
