@@ -63,10 +63,50 @@ pub static GCD: Site = Site::new("angle::gcd: Stein");
 #[cfg(feature = "loop-counters")]
 pub static G32_VALIDATE: Site = Site::new("G32Block::validate: coordinates");
 
+/// `engine::real`: every loop over the limbs of a number or a scratch
+/// buffer (add, sub, increment, negation, comparison, products, small
+/// division, shifts, bit length, copies, π's digits) and over the four
+/// products of an interval product (the largest count of any one of them).
+#[cfg(feature = "loop-counters")]
+pub static REAL_LIMBS: Site = Site::new("real: limb loops");
+/// `engine::real::limbs_divmod`: the bit-by-bit long division.
+#[cfg(feature = "loop-counters")]
+pub static REAL_DIVMOD: Site = Site::new("real::limbs_divmod: bits");
+/// `engine::real::sin_cos_series`: the terms of a Taylor series.
+#[cfg(feature = "loop-counters")]
+pub static REAL_SERIES: Site = Site::new("real::sin_cos_series: terms");
+/// `engine::g75::roughing`: the layers whose pecks are counted.
+#[cfg(feature = "loop-counters")]
+pub static G75_LAYERS: Site = Site::new("g75 roughing: layers counted");
+/// `G75Moves::next_rough`: roughing steps skipped to the next move.
+#[cfg(feature = "loop-counters")]
+pub static G75_ROUGH_NEXT: Site = Site::new("G75Moves::next_rough: steps");
+/// `G75Moves::next`: stages skipped to the next move.
+#[cfg(feature = "loop-counters")]
+pub static G75_NEXT: Site = Site::new("G75Moves::next: stages");
+/// `engine::g75`: the points of the rough and finishing contours (the
+/// tail's legs and the public profile).
+#[cfg(feature = "loop-counters")]
+pub static G75_CONTOUR: Site = Site::new("g75: contour points");
+
 /// Every site.
 #[cfg(feature = "loop-counters")]
-pub static SITES: [&Site; 7] =
-    [&ISQRT_U128, &ISQRT_U64, &PASS_COUNT, &PLAN_NEXT, &G76_NEXT, &GCD, &G32_VALIDATE];
+pub static SITES: [&Site; 14] = [
+    &ISQRT_U128,
+    &ISQRT_U64,
+    &PASS_COUNT,
+    &PLAN_NEXT,
+    &G76_NEXT,
+    &GCD,
+    &G32_VALIDATE,
+    &REAL_LIMBS,
+    &REAL_DIVMOD,
+    &REAL_SERIES,
+    &G75_LAYERS,
+    &G75_ROUGH_NEXT,
+    &G75_NEXT,
+    &G75_CONTOUR,
+];
 
 /// Clears every site's largest count.
 #[cfg(feature = "loop-counters")]

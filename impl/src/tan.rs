@@ -253,8 +253,26 @@ pub const fn tan_q90(half_degrees: u32) -> Option<u128> {
 ///
 /// `None` if `|value| > 999_999_999` ([`MAX_LENGTH`]) or `h > 179`. Never
 /// panics and never overflows.
+///
+/// Contract: [`mul_tan_round_ensures`](crate::engine::contracts::mul_tan_round_ensures)
+/// (total; the result is the nearest integer to `value × T ÷ 2^90`).
 #[must_use]
+#[cfg_attr(
+    kani,
+    kani::ensures(|r: &Option<i64>| crate::engine::contracts::mul_tan_round_ensures(value, half_degrees, *r))
+)]
 pub const fn mul_tan_round(value: i64, half_degrees: u32) -> Option<i64> {
+    let r = mul_tan_round_unchecked(value, half_degrees);
+    #[cfg(feature = "contract-checks")]
+    assert!(
+        crate::engine::contracts::mul_tan_round_ensures(value, half_degrees, r),
+        "mul_tan_round: ensures"
+    );
+    r
+}
+
+/// [`mul_tan_round`] without the contract check.
+const fn mul_tan_round_unchecked(value: i64, half_degrees: u32) -> Option<i64> {
     let magnitude = value.unsigned_abs();
     if magnitude > MAX_LENGTH.unsigned_abs() {
         return None;

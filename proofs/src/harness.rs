@@ -16,7 +16,7 @@ use cycleref::{
 };
 
 use crate::cover;
-use crate::verify::{any_in, assume, declare};
+use crate::verify::{any_in, any_u128_in, assume, declare};
 
 /// The inputs a harness may choose: inclusive ranges in least increments
 /// (radius), counts, degrees, and small codes for the discrete choices.
@@ -521,20 +521,27 @@ pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
     }
 }
 
-/// Property 8: the integer square root rounds to nearest exactly: s =
-/// round(√x) satisfies (2s - 1)² <= 4x < (2s + 1)², on the domain
-/// `x in lo..=hi`.
-pub fn isqrt_rounds(lo: i64, hi: i64, sqrt: fn(u128) -> u128) {
+/// Property 8, the contract of `round_sqrt` (its `proof_for_contract`
+/// under Kani): the integer square root rounds to nearest exactly, s =
+/// round(√x) satisfies (2s - 1)² <= 4x < (2s + 1)², on the domain `x in
+/// lo..=hi` (under Kani every `u128`). The contract's predicate
+/// (`cycleref::engine::contracts::round_sqrt_ensures`) is asserted, and
+/// the property restated here independently where it fits `u128`.
+pub fn isqrt_rounds(lo: u128, hi: u128, sqrt: fn(u128) -> u128) {
     declare(&["rounded up", "rounded down"]);
-    let x = any_in(lo, hi) as u128;
+    let x = any_u128_in(lo, hi);
     let s = sqrt(x);
-    // (2s - 1)^2 <= 4x < (2s + 1)^2, in u128 for x < 2^63 (s < 2^32).
-    let four_x = 4 * x;
-    let lower = (2 * s).saturating_sub(1);
-    assert!(s == 0 || lower * lower <= four_x, "round(√x) too large");
-    assert!(four_x < (2 * s + 1) * (2 * s + 1), "round(√x) too small");
-    cover!(x > 1 && s * s > x, "rounded up");
-    cover!(x > 1 && s * s < x, "rounded down");
+    assert!(cycleref::engine::contracts::round_sqrt_ensures(x, s), "round(√x): the contract of round_sqrt");
+    if x < 1 << 124 {
+        // (2s - 1)^2 <= 4x < (2s + 1)^2 in u128: 4x < 2^126, and s <= 2^62
+        // once the contract holds.
+        let four_x = 4 * x;
+        let lower = (2 * s).saturating_sub(1);
+        assert!(s == 0 || lower * lower <= four_x, "round(√x) too large");
+        assert!(four_x < (2 * s + 1) * (2 * s + 1), "round(√x) too small");
+    }
+    cover!(x > 1 && s.checked_mul(s).is_none_or(|sq| sq > x), "rounded up");
+    cover!(x > 1 && s.checked_mul(s).is_some_and(|sq| sq < x), "rounded down");
 }
 
 /// A G32 block of a small domain: start and end within `reach` increments

@@ -9,28 +9,51 @@
 //! their iterations (`cycleref` feature `loop-counters`) and fails when a
 //! loop reaches N; each doc below gives the window, the bound, the largest
 //! count measured there (`cargo test -p cycleref-proofs --test unwind --
-//! --nocapture --test-threads 1`) and the contracts relied on (none yet:
-//! the kernels are unrolled, not stubbed).
+//! --nocapture --test-threads 1`) and the contracts relied on.
+//!
+//! Contracts (`-Z function-contracts`, `[workspace.metadata.kani.unstable]`):
+//! the small exact kernels (`cycleref::engine::arith`:
+//! `isqrt_floor`, `round_sqrt`, `round_div`, `saturate_i64`, `floor_div`,
+//! `ceil_div`; `cycleref::tan::mul_tan_round`) carry `requires`/`ensures`
+//! (`cycleref::engine::contracts`). Each has a `proof_for_contract`
+//! harness below; the cycle harnesses replace the kernels they reach by
+//! their contracts (`stub_verified`), so that Kani does not unroll Newton's
+//! loop or bit-blast the 128-bit products and divisions inside the cycles.
+//! Every postcondition determines its kernel's result uniquely, so a stub
+//! is exact: the cycle harnesses prove the same properties as with the
+//! kernels. The loop maxima below are measured with the real kernels (what
+//! the `stub_verified` harnesses would unroll without their stubs).
 
+use crate::contracts;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
+use crate::thread;
 use crate::windows::{
-    EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    NO_PANIC_MOVES, NO_PANIC_WINDOW,
+    DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
+    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
 };
+use cycleref::engine::arith;
 
 /// P1 over [`G76_WINDOW`] (k ≤ 6, one start, lead-in ≤ 3). Unwind 79;
 /// measured: 78 moves in a cycle (the harness's loops), 4 levels counted,
 /// 3 Newton steps, 9 gcd steps, 3 path steps tried per move. Contracts:
-/// none.
+/// `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn depth_monotonicity() {
     harness::depth_monotonicity(&G76_WINDOW, &FixedPoint);
 }
 
-/// P2 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
+/// P2 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn termination() {
     harness::termination(&G76_WINDOW, &FixedPoint);
@@ -38,22 +61,34 @@ fn termination() {
 
 /// P3 over [`FINISHING_WINDOW`] (k ≤ 4, two starts). Unwind 109;
 /// measured: 108 moves (9 passes × 2 starts × 6), 3 levels counted, 9 gcd
-/// steps. Contracts: none.
+/// steps. Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(109)]
 fn finishing() {
     harness::finishing(&FINISHING_WINDOW, &FixedPoint);
 }
 
-/// P4 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
+/// P4 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn run_out_direction() {
     harness::run_out_direction(&G76_WINDOW, &FixedPoint);
 }
 
-/// P5 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: none.
+/// P5 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn no_overcut() {
     harness::no_overcut(&G76_WINDOW, &FixedPoint);
@@ -63,8 +98,12 @@ fn no_overcut() {
 /// engine's side: 80 moves, 6 levels counted. The reference's loops
 /// (`rust_decimal`, its square-root bisection) are not counted here, and
 /// Kani would have to execute `rust_decimal` symbolically: this harness is
-/// not expected to finish (issue 13). Contracts: none.
+/// not expected to finish (issue 13). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(81)]
 #[kani::solver(cadical)]
 fn equivalence() {
@@ -75,61 +114,165 @@ fn equivalence() {
 /// first 12 moves. Unwind 34; measured: 33 levels counted (the count stops
 /// past the limit), 12 moves, 6 Newton steps on `u64` (the `u128` loop is
 /// unreachable: Δd²n < 2^61 while counting), 12 gcd steps (L ≤ 999).
-/// Contracts: none.
+/// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(34)]
 #[kani::solver(cadical)]
 fn no_panic() {
     harness::no_panic(&NO_PANIC_WINDOW, &FixedPoint, NO_PANIC_MOVES);
 }
 
-/// P8 over every `x` in `0..=i64::MAX`. Unwind 7; measured: 6 Newton
-/// steps (sampled, every x < 2^16, and x within 2 of each power of two).
-/// Contracts: none.
-#[kani::proof]
-#[kani::unwind(7)]
+/// P8, the `proof_for_contract` of `round_sqrt`, over every `x` in `u128`.
+/// Unwind 8; measured without the stub: 7 Newton steps on `u128`, 6 on
+/// `u64` (every x < 2^16, x within 2 of each power of two, sampled).
+/// Contracts: `isqrt_floor` (stubbed).
+#[kani::proof_for_contract(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::isqrt_floor)]
+#[kani::unwind(8)]
 #[kani::solver(cadical)]
 fn isqrt_rounds() {
-    harness::isqrt_rounds(ISQRT_WINDOW.0, ISQRT_WINDOW.1, cycleref::engine::round_sqrt);
+    harness::isqrt_rounds(ISQRT_WINDOW.0, ISQRT_WINDOW.1, arith::round_sqrt);
+}
+
+/// The contract of `isqrt_floor` (`s² ≤ x < (s + 1)²`) over every `x` in
+/// `u128`. Unwind 8; measured: 7 Newton steps on `u128`, 6 on `u64`.
+/// Contracts: none (the kernel itself).
+#[kani::proof_for_contract(cycleref::engine::arith::isqrt_floor)]
+#[kani::unwind(8)]
+#[kani::solver(cadical)]
+fn isqrt_floor_contract() {
+    contracts::isqrt_floor(ISQRT_WINDOW.0, ISQRT_WINDOW.1, arith::isqrt_floor);
+}
+
+/// The contract of `round_div` (nearest, ties away from zero) over
+/// magnitudes below `2^126`, divisor non-zero. No loop: unwind 2.
+/// Contracts: none.
+#[kani::proof_for_contract(cycleref::engine::arith::round_div)]
+#[kani::unwind(2)]
+#[kani::solver(cadical)]
+fn round_div_contract() {
+    contracts::round_div(ROUND_DIV_WINDOW.0, ROUND_DIV_WINDOW.1, arith::round_div);
+}
+
+/// The contract of `saturate_i64` over every `i128`. No loop: unwind 2.
+/// Contracts: none.
+#[kani::proof_for_contract(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(2)]
+fn saturate_i64_contract() {
+    contracts::saturate_i64(SATURATE_WINDOW.0, SATURATE_WINDOW.1, arith::saturate_i64);
+}
+
+/// The contract of `floor_div` over dividends below `2^120` in magnitude
+/// and every positive divisor. No loop: unwind 2. Contracts: none.
+#[kani::proof_for_contract(cycleref::engine::arith::floor_div)]
+#[kani::unwind(2)]
+#[kani::solver(cadical)]
+fn floor_div_contract() {
+    contracts::div(DIV_WINDOW.0, DIV_WINDOW.1, false, arith::floor_div);
+}
+
+/// The contract of `ceil_div`, as `floor_div`'s. No loop: unwind 2.
+/// Contracts: none (it calls floor division's unchecked body, not the
+/// kernel with the contract).
+#[kani::proof_for_contract(cycleref::engine::arith::ceil_div)]
+#[kani::unwind(2)]
+#[kani::solver(cadical)]
+fn ceil_div_contract() {
+    contracts::div(DIV_WINDOW.0, DIV_WINDOW.1, true, arith::ceil_div);
+}
+
+/// The contract of `mul_tan_round` over every `i64` value and half-degree
+/// code. No loop (a table lookup): unwind 2. Contracts: none.
+#[kani::proof_for_contract(cycleref::tan::mul_tan_round)]
+#[kani::unwind(2)]
+#[kani::solver(cadical)]
+fn mul_tan_round_contract() {
+    contracts::mul_tan_round(MUL_TAN_WINDOW.0, MUL_TAN_WINDOW.1, cycleref::tan::mul_tan_round);
 }
 
 /// G32 run-out over [`G32_WINDOW`]. Unwind 5; measured: 4 coordinates
-/// checked by `validate`, 2 moves. Contracts: none.
+/// checked by `validate`, 2 moves. Contracts: `round_div`, `saturate_i64`
+/// (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(5)]
 fn g32_run_out() {
     harness::g32_run_out(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
 }
 
-/// G75.1 pecks and steps over [`GROOVE_WINDOW`] (≤ 4 increments). Unwind
-/// 66; measured: 65 moves in a groove. The G75.1 engine's own loops are not
-/// counted yet. Contracts: none.
+/// No rapid enters the thread (G76, Z long) over [`G76_WINDOW`]: every
+/// rapid stays out of the open region between the crest and root lines
+/// from the last pass start to D (`crate::thread`), checked as the moves
+/// stream. Unwind 79; measured as P1 (78 moves, the harness's loop).
+/// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
+/// (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::tan::mul_tan_round)]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(79)]
+fn no_rapid_in_thread() {
+    thread::no_rapid_in_thread(&G76_WINDOW, &FixedPoint);
+}
+
+/// No rapid in a G32 block over [`G32_WINDOW`]. Unwind 5; measured as
+/// `g32_run_out` (4 coordinates checked by `validate`, 2 moves).
+/// Contracts: `round_div`, `saturate_i64` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(5)]
+fn g32_no_rapid() {
+    thread::g32_no_rapid(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
+}
+
+/// G75.1 pecks and steps over [`GROOVE_WINDOW`] (≤ 4 increments). Unwind
+/// 66; measured: 65 moves in a groove (the harness's loops); the engine's loops (measured by `groove_loops_stay_below_the_unwind_bounds`): 2 iterator stages, 3 roughing steps, 4 layers counted, 8 contour points, 16 Taylor terms (sin and cos of the right angle), 4 limb iterations, no bit-by-bit division (right angles are exact); the limb loops written as iterator adaptors (`all`, `any`) run over at most 28 limbs.
+/// Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(66)]
 fn groove_pecks_and_steps() {
     groove::groove_pecks_and_steps(&GROOVE_WINDOW, &GrooveFixedPoint);
 }
 
 /// G75.1 layers over [`GROOVE_WINDOW`]. Unwind 66; measured: 65 moves (the
-/// 64-slot layer table is indexed, not looped over past the layers). The
-/// engine's loops are not counted yet. Contracts: none.
+/// 64-slot layer table is indexed, not looped over past the layers);
+/// the engine's loops as [`groove_pecks_and_steps`]. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(66)]
 fn groove_layers() {
     groove::groove_layers(&GROOVE_WINDOW, &GrooveFixedPoint);
 }
 
 /// G75.1 roughing region over [`GROOVE_WINDOW`]. Unwind 66; measured: 65
-/// moves. The engine's loops are not counted yet. Contracts: none.
+/// moves; the engine's loops as [`groove_pecks_and_steps`]. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(66)]
 fn groove_inside() {
     groove::groove_inside(&GROOVE_WINDOW, &GrooveFixedPoint);
 }
 
 /// G75.1 finishing contour over [`GROOVE_WINDOW`]. Unwind 66; measured: 65
-/// moves. The engine's loops are not counted yet. Contracts: none.
+/// moves; the engine's loops as [`groove_pecks_and_steps`]. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(66)]
 fn groove_finish_is_profile() {
     groove::groove_finish_is_profile(&GROOVE_WINDOW, &GrooveFixedPoint);
@@ -137,9 +280,13 @@ fn groove_finish_is_profile() {
 
 /// The material left by roughing over [`GROOVE_WINDOW`] with grooving
 /// tools only (the body model), J0 and J1. Unwind 66; measured: 65 moves.
-/// Its loops over the material cells (up to 4 × 4) and the engine's loops
-/// are not counted yet. Contracts: none.
+/// Its loops over the material cells run over at most 4 × 4 cells (the
+/// window's depth and width); the engine's loops as
+/// [`groove_pecks_and_steps`]. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(66)]
 fn groove_material() {
     let window = GrooveDomain { tool_width: (1, 2), path: (0, 1), ..GROOVE_WINDOW };
@@ -147,10 +294,21 @@ fn groove_material() {
 }
 
 /// Every documented input, the first 8 moves: no panic, no overflow.
-/// Unwind 64, not checked here: the G75.1 engine's loops (its bit-by-bit
-/// division among them) are not counted yet. Contracts: none.
+/// Unwind 1 000 001, the measured maximum plus one: the peck count's layer
+/// loop runs once per layer before the first move, and a groove of 10^6
+/// layers of one peck each (`MAX_PECKS`) is valid, so it runs 10^6 times
+/// (enumerated); the other loops stay far below (sampled over the window
+/// and at large grooves with extreme angles: 304 bits of bit-by-bit
+/// division, at most 384 in the 256-bit context and 1 152 in the 512-bit
+/// one; 20 Taylor terms, at most 400; 8 contour points; 5 limb
+/// iterations). Kani cannot unroll that: this harness is not expected to
+/// finish until the layer loop and the division have contracts of their
+/// own (issue 13). Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
-#[kani::unwind(64)]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(1_000_001)]
 #[kani::solver(cadical)]
 fn groove_no_panic() {
     groove::groove_no_panic(&GrooveDomain::FULL, 8);

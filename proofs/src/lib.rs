@@ -7,18 +7,20 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod contracts;
 pub mod groove;
 pub mod harness;
 #[cfg(kani)]
 mod kani_proofs;
 pub mod shim;
+pub mod thread;
 pub mod windows;
 
 /// `any_in`, `any_bool`, `assume`, `declare` and `cover`: Kani's under
 /// `cfg(kani)`, the shim's otherwise.
 pub mod verify {
     #[cfg(not(kani))]
-    pub use crate::shim::{any_bool, any_in, assume, declare};
+    pub use crate::shim::{any_bool, any_i128_in, any_in, any_u128_in, assume, declare};
 
     /// A value in `lo..=hi`; `lo` itself, not a symbolic value, when the
     /// range holds one value (a fixed input stays a constant for the solver).
@@ -28,6 +30,28 @@ pub mod verify {
             return lo;
         }
         let v: i64 = kani::any();
+        kani::assume(lo <= v && v <= hi);
+        v
+    }
+
+    /// A `u128` in `lo..=hi` (`lo` itself when the range holds one value).
+    #[cfg(kani)]
+    pub fn any_u128_in(lo: u128, hi: u128) -> u128 {
+        if lo == hi {
+            return lo;
+        }
+        let v: u128 = kani::any();
+        kani::assume(lo <= v && v <= hi);
+        v
+    }
+
+    /// An `i128` in `lo..=hi` (`lo` itself when the range holds one value).
+    #[cfg(kani)]
+    pub fn any_i128_in(lo: i128, hi: i128) -> i128 {
+        if lo == hi {
+            return lo;
+        }
+        let v: i128 = kani::any();
         kani::assume(lo <= v && v <= hi);
         v
     }

@@ -131,6 +131,29 @@ pub fn any_in(lo: i64, hi: i64) -> i64 {
     lo.wrapping_add_unsigned(off)
 }
 
+/// A value of `lo..=hi` over `u128`: `kani::any()` with `kani::assume`
+/// under Kani. A span wider than `u64` is two choices (the high and the low
+/// 64 bits), the values beyond the span pruned (as by `assume`).
+pub fn any_u128_in(lo: u128, hi: u128) -> u128 {
+    assert!(lo <= hi, "empty range {lo}..={hi}");
+    let span = hi - lo;
+    let off = if let Ok(span) = u64::try_from(span) {
+        u128::from(choose(span))
+    } else {
+        let high = u128::from(choose(u64::try_from(span >> 64).unwrap_or(u64::MAX)));
+        let off = high << 64 | u128::from(choose(u64::MAX));
+        assume(off <= span);
+        off
+    };
+    lo + off
+}
+
+/// A value of `lo..=hi` over `i128` ([`any_u128_in`] on the offsets).
+pub fn any_i128_in(lo: i128, hi: i128) -> i128 {
+    assert!(lo <= hi, "empty range {lo}..={hi}");
+    lo.wrapping_add_unsigned(any_u128_in(0, hi.abs_diff(lo)))
+}
+
 /// A `bool`.
 pub fn any_bool() -> bool {
     choose(1) == 1

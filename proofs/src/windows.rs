@@ -65,8 +65,25 @@ pub const NO_PANIC_WINDOW: Domain = Domain { pass_limit: 32, ..Domain::FULL };
 /// Moves of each cycle that P7 looks at under Kani.
 pub const NO_PANIC_MOVES: usize = 12;
 
-/// P8's window: `x` in `0..=i64::MAX`.
-pub const ISQRT_WINDOW: (i64, i64) = (0, i64::MAX);
+/// P8's window (the contract of `round_sqrt`) and the window of the
+/// contract of `isqrt_floor`: every `x` in `u128`.
+pub const ISQRT_WINDOW: (u128, u128) = (0, u128::MAX);
+
+/// The contract of `round_div`: numerators and divisors below `2^126` in
+/// magnitude (its precondition; the divisor non-zero).
+pub const ROUND_DIV_WINDOW: ((i128, i128), (i128, i128)) =
+    ((-(1 << 126) + 1, (1 << 126) - 1), (-(1 << 126) + 1, (1 << 126) - 1));
+
+/// The contract of `saturate_i64`: every `i128`.
+pub const SATURATE_WINDOW: (i128, i128) = (i128::MIN, i128::MAX);
+
+/// The contracts of `floor_div` and `ceil_div`: dividends below `2^120` in
+/// magnitude, every positive divisor (their precondition).
+pub const DIV_WINDOW: ((i128, i128), (i128, i128)) = ((-(1 << 120) + 1, (1 << 120) - 1), (1, i128::MAX));
+
+/// The contract of `mul_tan_round`: every `i64` value, every half-degree
+/// code `0..=u32::MAX` (beyond 179 refused).
+pub const MUL_TAN_WINDOW: ((i64, i64), (i64, i64)) = ((i64::MIN, i64::MAX), (0, u32::MAX as i64));
 
 /// The G32 run-out window: start and end within 1 000 increments, |J|, K ≤ 100.
 pub const G32_WINDOW: (i64, i64) = (1_000, 100);
@@ -92,7 +109,7 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
 };
 
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 15] = [
+pub const UNWIND: [(&str, u32); 23] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -100,14 +117,22 @@ pub const UNWIND: [(&str, u32); 15] = [
     ("no_overcut", 79),
     ("equivalence", 81),
     ("no_panic", 34),
-    ("isqrt_rounds", 7),
+    ("isqrt_rounds", 8),
+    ("isqrt_floor_contract", 8),
+    ("round_div_contract", 2),
+    ("saturate_i64_contract", 2),
+    ("floor_div_contract", 2),
+    ("ceil_div_contract", 2),
+    ("mul_tan_round_contract", 2),
     ("g32_run_out", 5),
+    ("no_rapid_in_thread", 79),
+    ("g32_no_rapid", 5),
     ("groove_pecks_and_steps", 66),
     ("groove_layers", 66),
     ("groove_inside", 66),
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
-    ("groove_no_panic", 64),
+    ("groove_no_panic", 1_000_001),
 ];
 
 /// The bound of harness `name` in [`UNWIND`].

@@ -164,7 +164,10 @@ fn p8_isqrt_rounds() {
     let sqrt = cycleref::engine::round_sqrt;
     check("isqrt (exhaustive 0..=2^20)", exhaustive(1 << 21), || harness::isqrt_rounds(0, 1 << 20, sqrt));
     check("isqrt (sampled)", Mode::Sample { runs: 200_000, seed: 3 }, || {
-        harness::isqrt_rounds(0, i64::MAX, sqrt)
+        harness::isqrt_rounds(0, u128::MAX, sqrt)
+    });
+    check("isqrt (sampled below 2^94, the engine's range)", Mode::Sample { runs: 200_000, seed: 4 }, || {
+        harness::isqrt_rounds(0, 1 << 94, sqrt)
     });
 }
 

@@ -15,7 +15,12 @@
 //! moves are left out as empty (R-ZERO), never the number of passes. The
 //! engine's own loops are bounded by the passes (the level count), by the
 //! path steps of one pass, or by the input's magnitude (Newton, Stein),
-//! which the worst cases and samples span.
+//! which the worst cases and samples span. The G75.1 harnesses count the
+//! G75.1 engine's loops too (iterator stages, roughing steps, the layers
+//! of the peck count, contour points, and `engine::real`'s limb loops,
+//! bit-by-bit division and Taylor series): enumerated at the window's
+//! deepest, widest grooves with the smallest pecks and steps, and, for
+//! `groove_no_panic`, at the most layers and the largest grooves.
 //!
 //! The counts are process-wide: the measuring tests take one lock, so one
 //! measures at a time.
@@ -168,6 +173,7 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     g76("termination", &w, harness::termination);
     g76("run_out_direction", &w, harness::run_out_direction);
     g76("no_overcut", &w, harness::no_overcut);
+    g76("no_rapid_in_thread", &w, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
     // The engine's side only: the reference's loops (rust_decimal) are not
     // counted here.
@@ -175,11 +181,14 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
 }
 
 /// The G75.1 harnesses: the moves of one groove (what their loops run
-/// over), sampled over the window and enumerated at its deepest, widest
-/// grooves with the smallest pecks and steps. The G75.1 engine's own loops
-/// are not counted yet.
+/// over) and the G75.1 engine's own loops (`cycleref::loop_counters`: the
+/// stages and roughing steps of the iterator, the layers counted, the
+/// contour points, and `engine::real`'s limb loops, bit-by-bit division and
+/// Taylor series), sampled over the window and enumerated at its deepest,
+/// widest grooves with the smallest pecks and steps. `groove_no_panic`
+/// (every documented input) is sampled.
 #[test]
-fn groove_moves_stay_below_the_unwind_bounds() {
+fn groove_loops_stay_below_the_unwind_bounds() {
     let _one = lock();
     use cycleref_proofs::groove::{self, GrooveDomain, GrooveEngine, Moves};
     struct CountedGroove(Cell<usize>);
@@ -211,14 +220,94 @@ fn groove_moves_stay_below_the_unwind_bounds() {
         ("groove_material", material, groove::groove_material),
     ];
     for (name, window, body) in harnesses {
+        loop_counters::reset();
         let e = CountedGroove(Cell::new(0));
-        shim::check(name, SAMPLE, || body(&window, &e));
+        let r = shim::check(name, SAMPLE, || body(&window, &e));
+        eprintln!("  {name} (sampled window): {} runs, {} pruned", r.runs, r.pruned);
         let worst = GrooveDomain { tool_width: window.tool_width, path: window.path, ..worst };
-        shim::check(name, Mode::Enumerate { max_runs: 1_000_000 }, || body(&worst, &e));
-        let n = u32::try_from(e.0.get()).unwrap_or(u32::MAX);
-        eprintln!("{name}: unwind {}, moves of one groove {n}", unwind(name));
-        assert!(n < unwind(name), "{name}: a loop over {n} moves, unwind bound {}", unwind(name));
+        let r = shim::check(name, Mode::Enumerate { max_runs: 1_000_000 }, || body(&worst, &e));
+        eprintln!("  {name} (worst cases): {} runs, {} pruned", r.runs, r.pruned);
+        let mut m = Maxima::default();
+        m.take(u32::try_from(e.0.get()).unwrap_or(u32::MAX));
+        m.check(name);
     }
+    groove_no_panic_maxima().check("groove_no_panic");
+}
+
+/// The loop maxima of `groove_no_panic` (every documented input, the first
+/// 8 moves): sampled over the window, and at the worst cases of its
+/// loops: the most layers (the peck count's layer loop runs once per layer,
+/// up to `MAX_PECKS` = 10^6 layers of one peck), and the largest grooves
+/// at extreme angles (the largest dividends of the bit-by-bit division).
+fn groove_no_panic_maxima() -> Maxima {
+    use cycleref_proofs::groove::{self, GrooveDomain};
+    loop_counters::reset();
+    let mut m = Maxima::default();
+    let r = shim::check("groove_no_panic", Mode::Sample { runs: 20_000, seed: 0x0067_3735 }, || {
+        groove::groove_no_panic(&GrooveDomain::FULL, 8);
+    });
+    eprintln!("  groove_no_panic (sampled window): {} runs, {} pruned", r.runs, r.pruned);
+    // The layer loop's worst: the most layers one peck each (V = 1, P ≥
+    // the layer, one plunge), up to MAX_PECKS pecks in all.
+    let layers = GrooveDomain {
+        depth: (999_998, 1_000_001),
+        width: (0, 0),
+        peck: (1, 2),
+        step: (1, 1),
+        layer: (1, 1),
+        retract: (0, 0),
+        flank: (900_000, 900_000),
+        slope: (0, 0),
+        allowance_x: (0, 0),
+        allowance_z: (0, 0),
+        tool_width: (-1, -1),
+        corner: (0, 0),
+        corner_kinds: (0, 0),
+        path: (0, 0),
+        signs: (0, 0),
+        units: (0, 0),
+    };
+    let r = shim::check("groove_no_panic", Mode::Enumerate { max_runs: 1_000 }, || {
+        groove::groove_no_panic(&layers, 8);
+    });
+    eprintln!("  groove_no_panic (most layers): {} runs, {} pruned", r.runs, r.pruned);
+    // The division's and the series' worst: the largest grooves at the
+    // flank and slope extremes (the largest magnitudes enter the dividends).
+    let large = GrooveDomain {
+        depth: (99_999_999, 99_999_999),
+        width: (99_999_999, 99_999_999),
+        peck: (99_999_999, 99_999_999),
+        step: (99_999_999, 99_999_999),
+        layer: (0, 0),
+        allowance_x: (0, 0),
+        allowance_z: (0, 0),
+        tool_width: (-1, 99_999_999),
+        corner: (999_999, 999_999),
+        corner_kinds: (0, 15),
+        flank: (1, 3),
+        slope: (899_997, 899_999),
+        path: (0, 2),
+        signs: (0, 0),
+        units: (0, 7),
+        ..GrooveDomain::FULL
+    };
+    let r = shim::check("groove_no_panic", Mode::Sample { runs: 5_000, seed: 7 }, || {
+        groove::groove_no_panic(&large, 8);
+    });
+    eprintln!("  groove_no_panic (large, extreme angles): {} runs, {} pruned", r.runs, r.pruned);
+    m.take(0);
+    m
+}
+
+/// The G75.1 engine's loops are held to the bound too: `groove_no_panic`'s
+/// layer loop runs 10^6 times, so a bound of 10^6 is one short.
+#[test]
+#[should_panic(
+    expected = "groove_no_panic: g75 roughing: layers counted runs 1000000 times, unwind bound 1000000"
+)]
+fn a_groove_loop_reaching_its_bound_fails() {
+    let _one = lock();
+    groove_no_panic_maxima().check_against("groove_no_panic", 1_000_000);
 }
 
 /// P7 over the documented ranges: sampled, and enumerated at the extremes
@@ -288,30 +377,41 @@ fn counting_sqrt(x: u128) -> u128 {
     cycleref::engine::round_sqrt(x)
 }
 
-/// P8 over `0..=i64::MAX`: sampled; every `x < 2^16`; and every `x` within
-/// 2 of a power of two or of an odd square's neighbours at each bit length,
-/// where Newton's start `2^ceil(bits/2)` is farthest from the root.
+/// `isqrt_floor` counting its Newton iterations.
+fn counting_floor(x: u128) -> u128 {
+    cycleref::engine::record_isqrt(x);
+    cycleref::engine::isqrt_floor(x)
+}
+
+/// The Newton loop of `isqrt_floor` over every `u128` (the window of the
+/// `proof_for_contract` harnesses of `isqrt_floor`, and of `round_sqrt`
+/// without its stub): sampled; every `x < 2^16`; and every `x` within 2 of
+/// each power of two, where Newton's start `2^ceil(bits/2)` is farthest
+/// from the root, up to the top of `u128`.
+fn newton_maxima(body: fn(u128, u128, fn(u128) -> u128), f: fn(u128) -> u128) -> Maxima {
+    let mut m = Maxima::default();
+    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
+        body(0, u128::MAX, f)
+    });
+    measure(&mut m, "isqrt (sampled below 2^94)", Mode::Sample { runs: 200_000, seed: 6 }, |_| {
+        body(0, 1 << 94, f);
+    });
+    measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| body(0, (1 << 16) - 1, f));
+    for bits in 17..128 {
+        let p = 1_u128 << bits;
+        measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| body(p - 2, p + 2, f));
+    }
+    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
+        body(u128::MAX - 4, u128::MAX, f)
+    });
+    m
+}
+
 #[test]
 fn isqrt_stays_below_its_unwind_bound() {
     let _one = lock();
-    let (lo, hi) = windows::ISQRT_WINDOW;
-    let mut m = Maxima::default();
-    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
-        harness::isqrt_rounds(lo, hi, counting_sqrt);
-    });
-    measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| {
-        harness::isqrt_rounds(0, (1 << 16) - 1, counting_sqrt);
-    });
-    for bits in 17..63 {
-        let p = 1_i64 << bits;
-        measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| {
-            harness::isqrt_rounds(p - 2, p + 2, counting_sqrt);
-        });
-    }
-    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
-        harness::isqrt_rounds(hi - 4, hi, counting_sqrt);
-    });
-    m.check("isqrt_rounds");
+    newton_maxima(harness::isqrt_rounds, counting_sqrt).check("isqrt_rounds");
+    newton_maxima(cycleref_proofs::contracts::isqrt_floor, counting_floor).check("isqrt_floor_contract");
 }
 
 /// The G32 run-out harness: every block within 3 increments exhaustively
@@ -336,6 +436,15 @@ fn g32_stays_below_its_unwind_bound() {
     });
     m.take(moves.get());
     m.check("g32_run_out");
+    let mut m = Maxima::default();
+    measure(&mut m, "g32 no rapid (sampled window)", SAMPLE, |_| {
+        cycleref_proofs::thread::g32_no_rapid(reach, run_out, &counting);
+    });
+    measure(&mut m, "g32 no rapid (within 3)", Mode::Enumerate { max_runs: 5_000_000 }, |_| {
+        cycleref_proofs::thread::g32_no_rapid(3, 2, &counting);
+    });
+    m.take(moves.get());
+    m.check("g32_no_rapid");
 }
 
 #[test]
@@ -345,7 +454,7 @@ fn the_kani_attributes_are_the_bounds_checked_here() {
     let mut pending = None;
     for line in src.lines().map(str::trim) {
         if let Some(n) = line.strip_prefix("#[kani::unwind(").and_then(|r| r.strip_suffix(")]")) {
-            pending = Some(n.parse::<u32>().expect("a number"));
+            pending = Some(n.replace('_', "").parse::<u32>().expect("a number"));
         }
         if let Some(rest) = line.strip_prefix("fn ") {
             let name = rest.split('(').next().unwrap_or_default();

@@ -9,6 +9,13 @@
 //! need a divisor `b > 0` (every caller divides by a validated step or
 //! layer height of at least one increment, on values below `2^72`).
 //!
+//! Contracts: each kernel states what it guarantees as
+//! `#[cfg_attr(kani, kani::requires/ensures)]`, with the predicates of
+//! [`contracts`](super::contracts); `cargo kani` proves them
+//! (`proof_for_contract`) and the cycle harnesses use them in place of the
+//! kernels (`stub_verified`). With the test-only feature `contract-checks`
+//! each call checks its precondition and postcondition at run time.
+//!
 //! Twins: the reference model states the same roundings in
 //! `spec/src/exact.rs` (`round_div`, `round_sqrt`, `ceil_div`), written as
 //! plainly as possible; `proofs/tests/engine_equals_spec.rs` checks the
@@ -20,8 +27,12 @@
 /// strictly while `g > ⌊√x⌋` and never goes below `⌊√x⌋` (AM-GM), so it stops
 /// exactly there, after about `log2(bits)` + 1 steps (7 for `u128`).
 #[must_use]
+#[cfg_attr(kani, kani::ensures(|s: &u128| crate::engine::contracts::isqrt_floor_ensures(x, *s)))]
 pub const fn isqrt_floor(x: u128) -> u128 {
-    isqrt_floor_counted(x).0
+    let s = isqrt_floor_counted(x).0;
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::isqrt_floor_ensures(x, s), "isqrt_floor: ensures");
+    s
 }
 
 /// [`isqrt_floor`], with the iterations of Newton's loop and whether it ran
@@ -89,21 +100,38 @@ pub fn record_isqrt(x: u128) {
 /// `round(√x) = s + 1` where `s = ⌊√x⌋` exactly when `√x ≥ s + ½`, i.e.
 /// `x ≥ s² + s + ¼`, i.e. `x - s² > s` for integers.
 #[must_use]
+#[cfg_attr(kani, kani::ensures(|r: &u128| crate::engine::contracts::round_sqrt_ensures(x, *r)))]
 pub const fn round_sqrt(x: u128) -> u128 {
     let s = isqrt_floor(x);
     // s² ≤ x, so neither the product nor the difference overflows, and
     // s + 1 ≤ 2^64.
-    if x - s * s > s {
-        s + 1
-    } else {
-        s
-    }
+    let r = if x - s * s > s { s + 1 } else { s };
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::round_sqrt_ensures(x, r), "round_sqrt: ensures");
+    r
 }
 
 /// `num / den` rounded to the nearest integer, ties away from zero (the
 /// reference's `Decimal` quantisation); `0` for a zero divisor, which no
 /// caller passes. Twin: `spec/src/exact.rs`, `round_div`.
-pub(crate) fn round_div(num: i128, den: i128) -> i128 {
+///
+/// Contract: [`round_div_requires`](super::contracts::round_div_requires)
+/// (a non-zero divisor, magnitudes below `2^126`),
+/// [`round_div_ensures`](super::contracts::round_div_ensures).
+#[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::round_div_requires(num, den)))]
+#[cfg_attr(kani, kani::ensures(|r: &i128| crate::engine::contracts::round_div_ensures(num, den, *r)))]
+pub fn round_div(num: i128, den: i128) -> i128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::round_div_requires(num, den), "round_div: requires");
+    let r = round_div_unchecked(num, den);
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::round_div_ensures(num, den, r), "round_div: ensures");
+    r
+}
+
+/// [`round_div`] without the contract checks.
+fn round_div_unchecked(num: i128, den: i128) -> i128 {
     let (n, d) = if den < 0 { (num.checked_neg(), den.checked_neg()) } else { (Some(num), Some(den)) };
     let (Some(n), Some(d)) = (n, d) else {
         return 0;
@@ -122,12 +150,33 @@ pub(crate) fn round_div(num: i128, den: i128) -> i128 {
 /// `v` as an `i64`, saturating: the one narrowing of every engine (only
 /// values that a range check then refuses can lie outside, such as the
 /// out-of-range error values of a G76 lead-in or a G75.1 coordinate).
-pub(crate) fn saturate_i64(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+/// Contract: [`saturate_i64_ensures`](super::contracts::saturate_i64_ensures).
+#[must_use]
+#[cfg_attr(kani, kani::ensures(|r: &i64| crate::engine::contracts::saturate_i64_ensures(v, *r)))]
+pub fn saturate_i64(v: i128) -> i64 {
+    let r = i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX });
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::saturate_i64_ensures(v, r), "saturate_i64: ensures");
+    r
 }
 
-/// `⌊a / b⌋` for `b > 0`.
-pub(crate) fn floor_div(a: i128, b: i128) -> i128 {
+/// `⌊a / b⌋` for `b > 0`. Contract:
+/// [`div_requires`](super::contracts::div_requires),
+/// [`floor_div_ensures`](super::contracts::floor_div_ensures).
+#[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::div_requires(a, b)))]
+#[cfg_attr(kani, kani::ensures(|q: &i128| crate::engine::contracts::floor_div_ensures(a, b, *q)))]
+pub fn floor_div(a: i128, b: i128) -> i128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::div_requires(a, b), "floor_div: requires");
+    let q = floor_div_unchecked(a, b);
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::floor_div_ensures(a, b, q), "floor_div: ensures");
+    q
+}
+
+/// [`floor_div`] without the contract checks (`b > 0`).
+fn floor_div_unchecked(a: i128, b: i128) -> i128 {
     let q = a / b;
     if a % b != 0 && a < 0 {
         q - 1
@@ -136,7 +185,18 @@ pub(crate) fn floor_div(a: i128, b: i128) -> i128 {
     }
 }
 
-/// `⌈a / b⌉` for `b > 0`.
-pub(crate) fn ceil_div(a: i128, b: i128) -> i128 {
-    -floor_div(-a, b)
+/// `⌈a / b⌉` for `b > 0`. Contract:
+/// [`div_requires`](super::contracts::div_requires),
+/// [`ceil_div_ensures`](super::contracts::ceil_div_ensures).
+#[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::div_requires(a, b)))]
+#[cfg_attr(kani, kani::ensures(|q: &i128| crate::engine::contracts::ceil_div_ensures(a, b, *q)))]
+pub fn ceil_div(a: i128, b: i128) -> i128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::div_requires(a, b), "ceil_div: requires");
+    // |a| < 2^120: the negations cannot overflow.
+    let q = -floor_div_unchecked(-a, b);
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::ceil_div_ensures(a, b, q), "ceil_div: ensures");
+    q
 }

@@ -7,7 +7,8 @@
 //!
 //! | module | what it holds | its twin in `cycleref-spec` |
 //! | --- | --- | --- |
-//! | `arith` | the shared kernels: the one `round_div`, the one saturating narrowing, floor and ceiling division, [`isqrt_floor`], [`round_sqrt`] | `spec/src/exact.rs` |
+//! | [`arith`] | the shared kernels (public for their contracts' proofs): the one `round_div`, the one saturating narrowing, floor and ceiling division, [`isqrt_floor`], [`round_sqrt`] | `spec/src/exact.rs` |
+//! | [`contracts`] | the contracts of the kernels of `arith` and of [`mul_tan_round`](crate::tan::mul_tan_round), as predicates | — |
 //! | [`g76`] | the G76 multi-pass threading cycle ([`expand_g76`], [`G76Moves`], [`rough_pass_count`]) | `spec/src/g76.rs` |
 //! | [`g32`] | the G32 single thread block ([`expand_g32`](g32::expand_g32)) | `spec/src/g32.rs` |
 //! | [`g75`] | the G75.1 trapezoidal groove ([`expand_g75`](g75::expand_g75), [`groove_profile`](g75::groove_profile)), split by concern: exact geometry, local contours, the absolute frame, roughing, the tail, the public profile | `spec/src/g75/` |
@@ -41,7 +42,8 @@
 //! checked (`checked_*`, `saturating_*`) or bounded by such a comment; no
 //! index, `unwrap`, `expect` or division can panic.
 
-mod arith;
+pub mod arith;
+pub mod contracts;
 pub mod g32;
 pub mod g75;
 pub mod g76;

@@ -106,7 +106,9 @@ fn limbs_zero(a: &[u64]) -> bool {
 /// beyond its end); returns the carry out of the top limb.
 fn limbs_add(a: &mut [u64], b: &[u64]) -> bool {
     let mut carry = false;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for (i, x) in a.iter_mut().enumerate() {
+        loops.tick();
         let y = b.get(i).copied().unwrap_or(0);
         let (s1, c1) = x.overflowing_add(y);
         let (s2, c2) = s1.overflowing_add(u64::from(carry));
@@ -119,7 +121,9 @@ fn limbs_add(a: &mut [u64], b: &[u64]) -> bool {
 /// `a -= b` over `a.len()` limbs; returns the borrow out of the top limb.
 fn limbs_sub(a: &mut [u64], b: &[u64]) -> bool {
     let mut borrow = false;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for (i, x) in a.iter_mut().enumerate() {
+        loops.tick();
         let y = b.get(i).copied().unwrap_or(0);
         let (s1, b1) = x.overflowing_sub(y);
         let (s2, b2) = s1.overflowing_sub(u64::from(borrow));
@@ -131,7 +135,9 @@ fn limbs_sub(a: &mut [u64], b: &[u64]) -> bool {
 
 /// `a += 1`; returns the carry out.
 fn limbs_inc(a: &mut [u64]) -> bool {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for x in a.iter_mut() {
+        loops.tick();
         let (s, c) = x.overflowing_add(1);
         *x = s;
         if !c {
@@ -143,7 +149,9 @@ fn limbs_inc(a: &mut [u64]) -> bool {
 
 /// Two's complement negation in place.
 fn limbs_neg(a: &mut [u64]) {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for x in a.iter_mut() {
+        loops.tick();
         *x = !*x;
     }
     limbs_inc(a);
@@ -152,7 +160,9 @@ fn limbs_neg(a: &mut [u64]) {
 /// Unsigned comparison of `a` and `b` (the shorter read as zero-extended).
 fn limbs_cmp(a: &[u64], b: &[u64]) -> Ordering {
     let n = a.len().max(b.len());
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for i in (0..n).rev() {
+        loops.tick();
         let x = a.get(i).copied().unwrap_or(0);
         let y = b.get(i).copied().unwrap_or(0);
         match x.cmp(&y) {
@@ -166,12 +176,16 @@ fn limbs_cmp(a: &[u64], b: &[u64]) -> Ordering {
 /// `out = a · b`; `out` must be zero on entry and hold `a.len() + b.len()`
 /// limbs (the product of an `m`- and an `n`-limb number fits `m + n` limbs).
 fn limbs_mul(a: &[u64], b: &[u64], out: &mut [u64]) {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for (i, &x) in a.iter().enumerate() {
+        loops.tick();
         if x == 0 {
             continue;
         }
         let mut carry: u64 = 0;
+        let mut loops = crate::loop_counters::count!(REAL_LIMBS);
         for (j, &y) in b.iter().enumerate() {
+            loops.tick();
             if let Some(slot) = out.get_mut(i + j) {
                 // x·y + slot + carry ≤ (2^64 − 1)^2 + 2(2^64 − 1) = 2^128 − 1.
                 let t = u128::from(x) * u128::from(y) + u128::from(*slot) + u128::from(carry);
@@ -180,7 +194,9 @@ fn limbs_mul(a: &[u64], b: &[u64], out: &mut [u64]) {
             }
         }
         let mut k = i + b.len();
+        let mut loops = crate::loop_counters::count!(REAL_LIMBS);
         while carry != 0 {
+            loops.tick();
             if let Some(slot) = out.get_mut(k) {
                 let (s, c) = slot.overflowing_add(carry);
                 *slot = s;
@@ -196,7 +212,9 @@ fn limbs_mul(a: &[u64], b: &[u64], out: &mut [u64]) {
 /// `a / d` in place for a one-limb divisor `d > 0`; returns the remainder.
 fn limbs_div_small(a: &mut [u64], d: u64) -> u64 {
     let mut rem: u64 = 0;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for x in a.iter_mut().rev() {
+        loops.tick();
         // rem < d, so the partial dividend is below d·2^64 and the quotient
         // digit fits a limb.
         let cur = (u128::from(rem) << 64) | u128::from(*x);
@@ -210,7 +228,9 @@ fn limbs_div_small(a: &mut [u64], d: u64) -> u64 {
 /// `a · k` in place for a one-limb factor; returns the limb carried out.
 fn limbs_mul_small(a: &mut [u64], k: u64) -> u64 {
     let mut carry: u64 = 0;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for x in a.iter_mut() {
+        loops.tick();
         let t = u128::from(*x) * u128::from(k) + u128::from(carry);
         *x = low64(t);
         carry = high64(t);
@@ -221,7 +241,9 @@ fn limbs_mul_small(a: &mut [u64], k: u64) -> u64 {
 /// `a <<= 1`; returns the bit shifted out.
 fn limbs_shl1(a: &mut [u64]) -> bool {
     let mut carry = false;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for x in a.iter_mut() {
+        loops.tick();
         let out = *x >> 63 == 1;
         *x = (*x << 1) | u64::from(carry);
         carry = out;
@@ -243,7 +265,9 @@ fn limbs_set_bit(a: &mut [u64], i: usize) {
 
 /// The number of significant bits of `a` (0 for zero).
 fn limbs_bits(a: &[u64]) -> usize {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for i in (0..a.len()).rev() {
+        loops.tick();
         if let Some(&x) = a.get(i) {
             if x != 0 {
                 return 64 * i + (64 - x.leading_zeros() as usize);
@@ -257,7 +281,9 @@ fn limbs_bits(a: &[u64]) -> usize {
 /// (as long as `num`, zero on entry), the remainder is left in `rem`
 /// (zero on entry, one limb longer than `den`). `den` must not be zero.
 fn limbs_divmod(num: &[u64], den: &[u64], q: &mut [u64], rem: &mut [u64]) {
+    let mut loops = crate::loop_counters::count!(REAL_DIVMOD);
     for i in (0..limbs_bits(num)).rev() {
+        loops.tick();
         // rem < den ≤ 2^(64·den.len()) − 1, so the shift fits rem's extra limb.
         limbs_shl1(rem);
         if limbs_bit(num, i) {
@@ -393,7 +419,9 @@ impl<const N: usize> Fixed<N> {
             return None;
         }
         let mut x = Fixed::zero();
+        let mut loops = crate::loop_counters::count!(REAL_LIMBS);
         for (d, s) in x.l.iter_mut().zip(m) {
+            loops.tick();
             *d = *s;
         }
         if x.is_negative() {
@@ -501,7 +529,9 @@ impl<const N: usize> Fixed<N> {
         // (A·2^-P)/(B·2^-P) = (A·2^P / B)·2^-P: the dividend is A shifted up
         // by N − 2 limbs (2N − 2 limbs in all).
         let mut num = [0_u64; SCRATCH];
+        let mut loops = crate::loop_counters::count!(REAL_LIMBS);
         for (d, s) in num.iter_mut().skip(Self::FRAC).zip(ma.iter()) {
+            loops.tick();
             *d = *s;
         }
         let num = num.get(..2 * N - 2)?;
@@ -701,7 +731,9 @@ impl<const N: usize> Interval<N> {
         let pairs = [(&self.lo, &o.lo), (&self.lo, &o.hi), (&self.hi, &o.lo), (&self.hi, &o.hi)];
         let mut lo: Option<Fixed<N>> = None;
         let mut hi: Option<Fixed<N>> = None;
+        let mut loops = crate::loop_counters::count!(REAL_LIMBS);
         for (x, y) in pairs {
+            loops.tick();
             let (Some(d), Some(u)) =
                 (x.mul_round(y, RoundDirection::Down), x.mul_round(y, RoundDirection::Up))
             else {
@@ -882,7 +914,9 @@ pub fn pi<const N: usize>() -> Interval<N> {
     }
     let mut lo = Fixed::<N>::from_int(3);
     // Fraction limb i (most significant first) goes to limb FRAC − 1 − i.
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
     for (i, w) in PI_FRACTION.iter().take(frac).enumerate() {
+        loops.tick();
         if let Some(s) = lo.l.get_mut(frac - 1 - i) {
             *s = *w;
         }
@@ -909,7 +943,9 @@ fn sin_cos_series<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
         let mut sum = first;
         let mut term = first;
         let mut j: u64 = 1;
+        let mut loops = crate::loop_counters::count!(REAL_SERIES);
         while j <= MAX_TERMS {
+            loops.tick();
             // t_j = t_(j−1) · x² / ((f + 2j − 1)(f + 2j)), f = 1 for sin
             // (x^(2j+1)/(2j+1)!), 0 for cos (x^(2j)/(2j)!).
             let a = first_index + 2 * j - 1;

@@ -277,7 +277,9 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
         b.rapid((b.at.0, y_top), Role::Approach)?;
         b.rapid(a11_local, Role::Approach)?;
         // Step 9: rapid to R0, feeds along the contour, rapid back to A11.
+        let mut loops = crate::loop_counters::count!(G75_CONTOUR);
         for (i, p) in v.iter().take(n).enumerate() {
+            loops.tick();
             let to = if p.far { (p.at.0 - w, p.at.1) } else { p.at };
             if i == 0 {
                 b.rapid(to, Role::RoughContour)?;
@@ -290,7 +292,9 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     if let Some((pts, n)) = finish_pts {
         // Step 10: along Z to F0's u at y_top, along X to F0, the contour.
         let shift = |p: Local, far: bool| if far { (p.0 - w, p.1) } else { p };
+        let mut loops = crate::loop_counters::count!(G75_CONTOUR);
         for (i, p) in pts.iter().take(n).enumerate() {
+            loops.tick();
             let to = shift(p.at, p.far);
             match p.seg {
                 LocalSegment::Start => {
@@ -364,7 +368,9 @@ impl Iterator for G75Moves {
     type Item = Move;
 
     fn next(&mut self) -> Option<Move> {
+        let mut loops = crate::loop_counters::count!(G75_NEXT);
         loop {
+            loops.tick();
             match self.stage {
                 Stage::Approach => {
                     self.stage = if self.roughs { Stage::Rough } else { Stage::Tail };

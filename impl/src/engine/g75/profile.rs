@@ -98,7 +98,9 @@ pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
         rough: [c.start; 6],
         rough_len: 0,
     };
+    let mut loops = crate::loop_counters::count!(G75_CONTOUR);
     for (slot, p) in out.finish.iter_mut().zip(pts.iter().take(n)) {
+        loops.tick();
         let at = frame.point(p.at)?;
         let segment = match p.seg {
             LocalSegment::Start => ProfileSegment::Start,
@@ -110,7 +112,9 @@ pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
         *slot = ProfilePoint { at, segment };
         out.finish_len += 1;
     }
+    let mut loops = crate::loop_counters::count!(G75_CONTOUR);
     for (slot, v) in out.rough.iter_mut().zip(vs.iter().take(m)) {
+        loops.tick();
         *slot = frame.point(v.at)?;
         out.rough_len += 1;
     }

@@ -82,7 +82,9 @@ pub(super) fn check_peck_count(
     // Now M ≤ lower ≤ MAX_PECKS: count exactly, layer by layer.
     let mut total: i128 = 0;
     let mut top = y_top;
+    let mut loops = crate::loop_counters::count!(G75_LAYERS);
     for m in 1..=count {
+        loops.tick();
         let bottom = i128::from(layers.bottom(m));
         let (first, last) = if m == 1 {
             (a11, a1f)
@@ -230,7 +232,9 @@ impl G75Moves {
     /// Twin: `spec/src/g75/path.rs`, `rough_moves` (with
     /// `spec/src/g75/roughing.rs`, `pecks`).
     pub(super) fn next_rough(&mut self) -> Option<Move> {
+        let mut loops = crate::loop_counters::count!(G75_ROUGH_NEXT);
         loop {
+            loops.tick();
             let r = self.rough;
             match r.sub {
                 RoughStep::LayerZ => {
