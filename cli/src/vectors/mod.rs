@@ -158,7 +158,7 @@ fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
 
 /// The stable name of what is wrong with a program, as written in the
 /// `expect.error.kind` field: [`ErrorKind::name`], and for a cycle alarm
-/// `cycle:` and [`CycleError::name`].
+/// `cycle:` and [`CycleError::name`](cycleref::CycleError::name).
 pub fn kind_name(kind: &ErrorKind) -> String {
     match kind {
         ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
