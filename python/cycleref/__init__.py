@@ -376,9 +376,10 @@ def check(
 ) -> Report:
     r"""Compares a vendor's toolpath (``trace``) with ours for ``program``, as ``cycleref check``.
 
-    ``trace`` is an expanded program (plain G00/G01/G02/G03/G32 blocks) or,
-    with ``csv=True`` or a path ending in ``.csv``, a CSV (the README's
-    columns); as text or a path. ``tolerance`` is in increments and
+    ``trace`` is an expanded program (plain G00/G01/G02/G03/G32 blocks) or
+    a CSV (the README's columns): as text (``str`` or ``bytes``; a CSV when
+    ``csv=True``) or as a path (read a line at a time; a CSV when its name
+    ends in ``.csv``, as the command decides). ``tolerance`` is in increments and
     applies to coordinates only. An error of the program raises
     :class:`ProgramError` / :class:`CycleError`; an error of the trace
     raises :class:`Error` naming its line.
