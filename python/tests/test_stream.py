@@ -46,3 +46,37 @@ def test_iter_moves_is_lazy():
     first = next(it)
     assert (first.cycle, first.line, first.motion) == ("G76", 4, "rapid")
     assert sum(1 for _ in it) == 3 * 30 - 1
+
+
+def test_the_engine_runs_without_the_gil():
+    # While the whole program is checked (the first phase of iter_moves, in
+    # the engine), another Python thread keeps running.
+    import threading
+    import time
+
+    program = "M3 S300\n" + CYCLE * 20_000
+    state = {"n": 0, "stop": False}
+
+    def spin() -> None:
+        while not state["stop"]:
+            state["n"] += 1
+
+    t = threading.Thread(target=spin)
+    t.start()
+    try:
+        time.sleep(0.05)
+        n0, t0 = state["n"], time.perf_counter()
+        time.sleep(0.1)
+        rate = (state["n"] - n0) / (time.perf_counter() - t0)  # increments per second, alone
+        before = state["n"]
+        start = time.perf_counter()
+        cycleref.iter_moves(program, engine="spec")
+        elapsed = time.perf_counter() - start
+        during = state["n"] - before
+    finally:
+        state["stop"] = True
+        t.join()
+    # Holding the GIL, the spinning thread would get at most a switch
+    # interval (5 ms) or two; released, it runs through the call.
+    assert elapsed > 0.1, elapsed
+    assert during > rate * 0.05, (during, rate, elapsed)
