@@ -207,13 +207,29 @@ impl Job {
     ///
     /// The first error in program order, named with the file.
     pub fn validate(&self) -> Result<Summary, Failure> {
+        self.validate_run().map_err(|(failure, _)| failure)
+    }
+
+    /// The first phase, as [`Job::validate`], with the program's error
+    /// itself beside the command's message (for library users that report
+    /// the line, word and rule in their own terms, such as the Python
+    /// package): the error is `None` when the text could not be read.
+    ///
+    /// # Errors
+    ///
+    /// The first error in program order: the command's message, and the
+    /// reader's error or cycle's alarm it comes from.
+    pub fn validate_run(&self) -> Result<Summary, (Failure, Option<RunError>)> {
         match validate(&self.text, &self.machine, self.engine) {
             Ok(summary) => Ok(summary),
-            Err(ReadError::Run(e)) => Err(match self.other_increment_hint(&e) {
-                Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
-                None => self.fail(&e),
-            }),
-            Err(e) => Err(self.read_failure(&e)),
+            Err(ReadError::Run(e)) => Err((
+                match self.other_increment_hint(&e) {
+                    Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
+                    None => self.fail(&e),
+                },
+                Some(e),
+            )),
+            Err(e) => Err((self.read_failure(&e), None)),
         }
     }
 

@@ -5,7 +5,48 @@
 //! expands them.
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`: fit to run inside a
-//! control. The reference model it must equal is `cycleref-spec`.
+//! control. The reference model it must equal is `cycleref-spec`, which
+//! also reads NC programs into these cycles (its crate docs show a program
+//! read and expanded by either engine).
+//!
+//! # Example
+//!
+//! The M68x6 thread of the GSK 988TA manual (`G00 X80 Z10; G76 P020560
+//! Q0.150 R0.1; G76 X60.64 Z-62 P3.680 Q1.800 F6`), its parameters given
+//! directly in least increments (IS-B: 0.001 mm), expanded move by move:
+//!
+//! ```
+//! use cycleref::{expand_g76, G76Cycle, Infeed, Lead, LeadWord, Motion, Point, RunOut, Units, XMode};
+//!
+//! let cycle = G76Cycle {
+//!     units: Units::IS_B_METRIC,
+//!     x_mode: XMode::Diameter,
+//!     start: Point::new(80_000, 10_000),   // A: X80 Z10
+//!     end: Point::new(60_640, -62_000),    // D: X60.64 Z-62
+//!     taper: 0,
+//!     thread_height: 3_680,                // P(k) 3.68
+//!     first_depth: 1_800,                  // Q(Δd) 1.8
+//!     min_cut: 150,                        // Q(Δdmin) 0.15
+//!     finishing_allowance: 100,            // R(d) 0.1
+//!     finishing_passes: 2,                 // P(m) 02
+//!     tool_angle: 60,                      // P(a) 60
+//!     infeed: Infeed::RightFlank,
+//!     lead_in: 0,
+//!     starts: 1,
+//!     lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 }, // F6
+//!     run_out: RunOut::Amounts { short: 3_000, long: 3_000 }, // the 45° chamfer of r = 05
+//!     pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+//! };
+//! let moves: Vec<_> = expand_g76(&cycle)?.collect();
+//! // 4 rough and 2 finishing passes of 5 moves.
+//! assert_eq!(moves.len(), 30);
+//! // The first pass: rapid to B1 (X64.4 Z8.961), cut to Z-59, run-out to X70.4 Z-62.
+//! assert_eq!(moves[0].to, Point::new(64_400, 8_961));
+//! assert!(matches!(moves[1].motion, Motion::Thread { sync: true, .. }));
+//! assert_eq!((moves[1].to, moves[2].to), (Point::new(64_400, -59_000), Point::new(70_400, -62_000)));
+//! assert_eq!(moves[0].pass.map(|p| p.depth), Some(1_800));
+//! # Ok::<(), cycleref::CycleError>(())
+//! ```
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]

@@ -126,6 +126,18 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
     ))
 }
 
+/// Case `index` (1-based) of the corpus generated from `seed`: the text of
+/// its `case-NNNN.json` file, exactly as [`run`] writes it (for library
+/// users that take cases one at a time, such as the Python package).
+///
+/// # Errors
+///
+/// As [`run`]: the engine and the reference model disagree on the case,
+/// or no draft of its template fits.
+pub fn case_text(seed: u64, index: u32) -> Result<String, String> {
+    Ok(to_text(&make_case(seed, index)?.json))
+}
+
 /// Removes `case-NNNN.json` files of an earlier, larger run.
 fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
     let dir = std::fs::read_dir(out).map_err(|e| format!("{}: {e}", out.display()))?;
@@ -146,7 +158,7 @@ fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
 
 /// The stable name of what is wrong with a program, as written in the
 /// `expect.error.kind` field: [`ErrorKind::name`], and for a cycle alarm
-/// `cycle:` and [`CycleError::name`].
+/// `cycle:` and [`CycleError::name`](cycleref::CycleError::name).
 pub fn kind_name(kind: &ErrorKind) -> String {
     match kind {
         ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),

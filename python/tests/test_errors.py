@@ -1,0 +1,65 @@
+"""Errors: `ProgramError` for a block the reader refuses, `CycleError` for a
+cycle's alarm, with `line`, `word`, `rule` and the command's message."""
+
+from __future__ import annotations
+
+import subprocess
+
+import pytest
+
+import cycleref
+from conftest import EXAMPLES, cli_binary
+
+
+def test_a_word_not_in_increments():
+    # examples/gsk980-g32-taper.nc is written for IS-C (X27.4286).
+    with pytest.raises(cycleref.ProgramError) as e:
+        cycleref.expand(EXAMPLES / "gsk980-g32-taper.nc", profile="gsk980")
+    assert not isinstance(e.value, cycleref.CycleError)
+    assert (e.value.line, e.value.word, e.value.rule) == (7, "X27.4286", "not_in_increments")
+    assert "line 7, word `X27.4286`" in str(e.value)
+
+
+def test_a_missing_spindle_speed():
+    with pytest.raises(cycleref.ProgramError) as e:
+        cycleref.expand("G00 X80 Z10\nG76 X60.64 Z-62 Q1.800 F6\n")
+    assert (e.value.line, e.value.word, e.value.rule) == (2, None, "no_spindle_speed")
+    assert str(e.value).startswith("<string>: line 2: ")
+
+
+def test_a_cycle_alarm_is_a_cycle_error():
+    # ffi/src/cursor.rs's test: a G76 whose start A (X62) lies inside the thread.
+    program = "G50 X100 Z50 M3 S300;\nG00 X62 Z10;\nG76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\n"
+    for call in (cycleref.expand, cycleref.iter_moves):
+        with pytest.raises(cycleref.CycleError) as e:
+            call(program, name="a.nc")
+        assert isinstance(e.value, cycleref.ProgramError) and isinstance(e.value, ValueError)
+        assert (e.value.line, e.value.word, e.value.rule) == (4, None, "cycle:start_inside_thread")
+        assert str(e.value).startswith("a.nc: line 4, G76: the start point A lies inside the thread")
+
+
+def test_iter_moves_raises_before_the_first_move():
+    # An error at the end of a program is raised by the call, before any move.
+    program = "M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nG76 X60 Z-60\n"
+    with pytest.raises(cycleref.ProgramError) as e:
+        cycleref.iter_moves(program)
+    assert e.value.line == 5
+
+
+@pytest.mark.parametrize(
+    "name, args",
+    [
+        ("gsk980-g32-taper.nc", ["--profile", "gsk980"]),
+        ("gsk980-m68x6.nc", ["--profile", "gsk980"]),
+    ],
+)
+def test_the_message_is_the_commands(name, args):
+    binary = cli_binary()
+    if binary is None:
+        pytest.skip("the cycleref command is not built (cargo build -p cycleref-cli)")
+    path = str(EXAMPLES / name)
+    out = subprocess.run([str(binary), "expand", *args, path], capture_output=True, text=True)
+    assert out.returncode == 2
+    with pytest.raises(cycleref.ProgramError) as e:
+        cycleref.expand(EXAMPLES / name, profile="gsk980")
+    assert out.stderr == f"cycleref: {e.value}\n"
