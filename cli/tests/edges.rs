@@ -3,11 +3,11 @@
 //! everywhere, a BOM and GBK comments in nc output, `vectors --out` onto a
 //! file, and `plot`'s cycle limit and `--line`.
 
-use std::io::Write as _;
+mod common;
+use common::{run, BIN};
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
-const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 const M68: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/gsk988-m68x6.nc");
 
 /// A fresh path in the target's scratch directory for this test.
@@ -21,17 +21,6 @@ fn scratch(name: &str) -> PathBuf {
         let _ = std::fs::remove_file(&path);
     }
     path
-}
-
-fn run(args: &[&str], stdin: Option<&[u8]>) -> Output {
-    let mut cmd = Command::new(BIN);
-    cmd.args(args).stdout(Stdio::piped()).stderr(Stdio::piped());
-    cmd.stdin(if stdin.is_some() { Stdio::piped() } else { Stdio::null() });
-    let mut child = cmd.spawn().expect("runs");
-    if let Some(text) = stdin {
-        child.stdin.take().expect("stdin").write_all(text).expect("writes");
-    }
-    child.wait_with_output().expect("waits")
 }
 
 fn ok(out: &Output) -> String {

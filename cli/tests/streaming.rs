@@ -4,11 +4,11 @@
 //! is a message and status 2; `--format jsonl` carries the same cycles as
 //! `--format json`, then a summary line with the right counts.
 
-use std::io::{BufRead as _, BufReader, Write as _};
+mod common;
+use common::{run, BIN};
+use std::io::{BufRead as _, BufReader};
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
-
-const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 
 fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
@@ -19,22 +19,6 @@ fn scratch(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("streaming-tests");
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir.join(name)
-}
-
-fn run(args: &[&str], stdin: Option<&[u8]>) -> Output {
-    let mut cmd = Command::new(BIN);
-    cmd.args(args).stdout(Stdio::piped()).stderr(Stdio::piped());
-    cmd.stdin(if stdin.is_some() { Stdio::piped() } else { Stdio::null() });
-    let mut child = cmd.spawn().expect("runs");
-    if let Some(text) = stdin {
-        let mut pipe = child.stdin.take().expect("stdin");
-        let text = text.to_vec();
-        // A thread: the child may write before it has read everything.
-        std::thread::spawn(move || {
-            let _ = pipe.write_all(&text);
-        });
-    }
-    child.wait_with_output().expect("waits")
 }
 
 const HEAD: &str = "M03 S500\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\n";
