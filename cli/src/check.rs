@@ -1178,7 +1178,12 @@ fn only_kinds(d: &[Divergence]) -> bool {
 ///
 /// The program's or the trace's first error; a trace on standard input
 /// (`-`), which cannot be read twice.
-pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<crate::plot::Overlay, String> {
+pub fn overlay(
+    job: &Job,
+    trace: &Path,
+    units: Units,
+    cycles: &[(usize, usize, usize)],
+) -> Result<crate::plot::Overlay, String> {
     if trace == Path::new("-") {
         return Err(
             "plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
@@ -1186,17 +1191,16 @@ pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<cra
                 .into(),
         );
     }
-    let units = job.validate()?.units;
     let (name, source) = open_trace(trace)?;
-    let widened: Vec<(usize, usize)> = ranges
+    let widened: Vec<(usize, usize)> = cycles
         .iter()
-        .map(|&(from, to)| {
+        .map(|&(_, from, to)| {
             let slack = ((to - from) / 10).max(16);
             (from.saturating_sub(slack), to + slack)
         })
         .collect();
     let last = widened.iter().map(|r| r.1).max().unwrap_or(0);
-    let mut per_cycle = vec![Vec::new(); ranges.len()];
+    let mut per_cycle = vec![Vec::new(); cycles.len()];
     let mut dropped = 0_usize;
     for (i, step) in trace_steps(source, is_csv(trace), &job.machine, units)
         .map_err(|e| format!("{name}: {e}"))?
@@ -1218,8 +1222,9 @@ pub fn overlay(job: &Job, trace: &Path, ranges: &[(usize, usize)]) -> Result<cra
         }
     }
     // Where they diverge: the comparison `check` makes, at tolerance 0.
-    let marks = run(job, trace, 0)?.marks();
-    Ok(crate::plot::Overlay { name, per_cycle, lines: Vec::new(), dropped, marks })
+    let marks = compare_file(job, trace, units, 0)?.marks();
+    let lines = cycles.iter().map(|&(line, _, _)| line).collect();
+    Ok(crate::plot::Overlay { name, per_cycle, lines, dropped, marks })
 }
 
 /// True when the trace at `trace` is a CSV (by its extension).
@@ -1272,6 +1277,11 @@ pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
     if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
         return Err("the program and the trace cannot both come from standard input".into());
     }
+    compare_file(job, trace, units, tolerance)
+}
+
+/// What [`run`] does after the first phase, which gave `units`.
+fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result<Report, String> {
     let (name, source) = open_trace(trace)?;
     compare_streams(job, source, is_csv(trace), units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) => e,
@@ -1661,9 +1671,9 @@ impl Report {
             .map(|d| {
                 let mut text = String::new();
                 self.describe(d, &mut text);
-                let cycle_line = d.ours.or(d.theirs).and_then(|s| match s.context {
+                let cycle_line = d.ours.and_then(|s| match s.context {
                     Context::G76 { line, .. } | Context::G32 { line, .. } | Context::G75 { line, .. } => {
-                        d.ours.is_some().then_some(line)
+                        Some(line)
                     }
                     Context::Source { .. } => None,
                 });

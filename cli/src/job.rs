@@ -134,10 +134,7 @@ impl Job {
             input.read_to_end(&mut s).map_err(|e| Failure::msg(format!("{STDIN_NAME}: {e}")))?;
             (STDIN_NAME.to_string(), Text::Held(s))
         } else {
-            let file = opts.file.as_deref().unwrap_or(Path::new("-"));
-            let name = file.display().to_string();
-            let text = Text::open(file).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
-            (name, text)
+            open_named(opts.file.as_deref().unwrap_or(Path::new("-")))?
         };
         let machine = machine(opts)?;
         Ok(Job::with_text(name, text, machine, opts.engine))
@@ -157,8 +154,7 @@ impl Job {
     ///
     /// The file cannot be opened.
     pub fn from_file(path: &Path, machine: Machine, engine: Engine) -> Result<Job, Failure> {
-        let name = path.display().to_string();
-        let text = Text::open(path).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
+        let (name, text) = open_named(path)?;
         Ok(Job::with_text(name, text, machine, engine))
     }
 
@@ -284,6 +280,13 @@ fn validate(text: &Text, machine: &Machine, engine: Engine) -> Result<Summary, R
         r?.map_err(ReadError::Run)?;
     }
     Ok(validation.summary(items.reader.units()))
+}
+
+/// The program at `path`, with the name messages call it by.
+fn open_named(path: &Path) -> Result<(String, Text), Failure> {
+    let name = path.display().to_string();
+    let text = Text::open(path).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
+    Ok((name, text))
 }
 
 /// Where a program's text is.

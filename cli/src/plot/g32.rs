@@ -16,6 +16,12 @@ use super::canvas::{
     POINT, RAPID, RUN_OUT,
 };
 
+/// The path of the block `call` with its `moves`, for the zoomed panel.
+pub(super) fn ours<'a>(call: &G32Call<'_>, moves: &'a [Move]) -> super::zoom::Ours<'a> {
+    let b = &call.g32;
+    super::zoom::Ours { from: b.start, moves, units: b.units, x_mode: b.x_mode }
+}
+
 /// One panel with every G32 block of the program (`threads`, at least
 /// one), with the divergences `marks` of a trace in them marked (`first_mark`:
 /// the first of them is the report's first).

@@ -88,9 +88,11 @@ impl<'a> Groove<'a> {
         self.call.block.line
     }
 
-    /// Where the tool is when the cycle starts, and its moves.
-    pub(super) fn path(&self) -> (Point, &[Move], cycleref::Units, cycleref::XMode) {
-        (self.call.cycle.from, &self.moves, self.call.cycle.units, self.call.cycle.x_mode)
+    /// Our path, for the zoomed panel: where the tool is when the cycle
+    /// starts, and its moves.
+    pub(super) fn path(&self) -> super::zoom::Ours<'_> {
+        let c = &self.call.cycle;
+        super::zoom::Ours { from: c.from, moves: &self.moves, units: c.units, x_mode: c.x_mode }
     }
 
     /// The panel's drawing, with the divergences `marks` of a trace in

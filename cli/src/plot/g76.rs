@@ -28,6 +28,12 @@ const LEAD_IN: &str = "#9467bd";
 /// Rough passes listed one by one in the legend up to this count.
 const LEGEND_PASSES: u32 = 8;
 
+/// The path of the cycle `call` with its `moves`, for the zoomed panel.
+pub(super) fn ours<'a>(call: &G76Call<'_>, moves: &'a [Move]) -> super::zoom::Ours<'a> {
+    let c = &call.cycle;
+    super::zoom::Ours { from: c.start, moves, units: c.units, x_mode: c.x_mode }
+}
+
 /// Path data of line segments, drawing each distinct segment once and
 /// joining segments that continue one another.
 #[derive(Default)]

@@ -70,33 +70,30 @@ fn svg(
     // The zoomed panel of the first divergence, drawn last.
     let zoomed = overlay.and_then(|o| {
         let first = marks.first()?;
-        let g76 = cycles.iter().enumerate().find(|(_, (c, _))| Some(c.block.line) == first.cycle_line);
-        let g32 = threads.iter().find(|(c, _)| Some(c.block.line) == first.cycle_line);
-        let g75 = grooves.iter().find(|g| Some(g.line()) == first.cycle_line);
-        let (ours, theirs) = match (g76, g32, g75) {
-            (Some((i, (c, moves))), _, _) => (
-                zoom::Ours { from: c.cycle.start, moves, units: c.cycle.units, x_mode: c.cycle.x_mode },
-                o.per_cycle.get(i).map_or(&[][..], Vec::as_slice),
-            ),
-            (None, Some((c, moves)), _) => {
-                (zoom::Ours { from: c.g32.start, moves, units: c.g32.units, x_mode: c.g32.x_mode }, &[][..])
-            }
-            (None, None, Some(g)) => {
-                let (from, moves, units, x_mode) = g.path();
-                (zoom::Ours { from, moves, units, x_mode }, &[][..])
-            }
+        // Our path of the cycle it lies in, and the trace's points there.
+        let line = first.cycle_line;
+        let ours = cycles
+            .iter()
+            .find(|(c, _)| Some(c.block.line) == line)
+            .map(|(c, moves)| g76::ours(c, moves))
+            .or_else(|| {
+                threads.iter().find(|(c, _)| Some(c.block.line) == line).map(|(c, m)| g32::ours(c, m))
+            })
+            .or_else(|| grooves.iter().find(|g| Some(g.line()) == line).map(g75::Groove::path));
+        let (ours, theirs) = match ours {
+            Some(ours) => (ours, line.map_or(&[][..], |l| o.points_for(l))),
             // A divergence outside the cycles drawn: its marks alone, in
             // the first panel's units.
-            (None, None, None) => {
-                let (units, x_mode) = cycles
+            None => {
+                let any = cycles
                     .first()
-                    .map(|(c, _)| (c.cycle.units, c.cycle.x_mode))
-                    .or_else(|| threads.first().map(|(c, _)| (c.g32.units, c.g32.x_mode)))
-                    .or_else(|| grooves.first().map(|g| (g.path().2, g.path().3)))?;
-                (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], units, x_mode }, &[][..])
+                    .map(|(c, m)| g76::ours(c, m))
+                    .or_else(|| threads.first().map(|(c, m)| g32::ours(c, m)))
+                    .or_else(|| grooves.first().map(g75::Groove::path))?;
+                (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], ..any }, &[][..])
             }
         };
-        zoom::panel(name, o.short_name(), &marks, &ours, theirs, 0)
+        zoom::panel(name, o.short_name(), &marks, &ours, theirs)
     });
     let panels =
         cycles.len() + usize::from(!threads.is_empty()) + grooves.len() + usize::from(zoomed.is_some());
@@ -234,15 +231,15 @@ pub fn run(
 ) -> Result<(String, Option<String>), crate::Failure> {
     use cycleref_spec::pipeline::Cycle;
     use cycleref_spec::reader::Item;
-    job.validate()?;
+    let units = job.validate()?.units;
     let mut cycles = Vec::new();
     let mut threads = Vec::new();
     let mut grooves = Vec::new();
     let (mut total, mut drawn) = (0_usize, 0_usize);
     // Where each G76 cycle drawn lies in the whole toolpath, by move index.
-    // Where each cycle drawn lies in the whole toolpath, by move index, and
-    // its line.
-    let (mut position, mut ranges, mut range_lines) = (0_usize, Vec::new(), Vec::new());
+    // Each cycle drawn: its line, and where it lies in the whole toolpath,
+    // by move index.
+    let (mut position, mut ranges) = (0_usize, Vec::new());
     let mut found = BTreeSet::new();
     // The program is read as everywhere (a file a line at a time); the
     // cycles drawn are kept, detached from the line they were read from.
@@ -283,8 +280,7 @@ pub fn run(
             let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
             position += moves.len();
-            ranges.push((from, position));
-            range_lines.push(cycle.line());
+            ranges.push((cycle.line(), from, position));
             match &item {
                 Item::G76(call) => cycles.push((call.detached(), moves)),
                 Item::G32(call) => threads.push((call.detached(), moves)),
@@ -303,9 +299,7 @@ pub fn run(
     // The trace, read now: for each cycle drawn, its moves at the same
     // places in the toolpath.
     let overlay = match trace {
-        Some(t) => {
-            Some(crate::plot::Overlay { lines: range_lines, ..crate::check::overlay(job, t, &ranges)? })
-        }
+        Some(t) => Some(crate::check::overlay(job, t, units, &ranges)?),
         None => None,
     };
     let svg =

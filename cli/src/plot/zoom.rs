@@ -42,14 +42,13 @@ pub(super) struct Ours<'a> {
 /// The zoomed panel of `marks[0]` (the first divergence), with the other
 /// `marks` that fall in the window, our path `ours` and the trace's
 /// points `theirs` (over the same cycle, when known) of the trace
-/// `trace_name`; `index` makes its clip path's id unique.
+/// `trace_name`.
 pub(super) fn panel(
     name: &str,
     trace_name: &str,
     marks: &[&Mark],
     ours: &Ours<'_>,
     theirs: &[Point],
-    index: usize,
 ) -> Option<Group> {
     let first = marks.first()?;
     let centre = first.ours.or(first.theirs)?;
@@ -74,9 +73,10 @@ pub(super) fn panel(
         format!("{half} increments each way around our point; {scales}"),
     );
     g = draw_axes(g, &map, unit_name(ours.units.unit), x_kind(ours.x_mode));
-    let id = format!("zoom-area-{index}");
+    // One zoomed panel a page: its clip path's id is unique.
+    let id = "zoom-area";
     g = g.add(
-        ClipPath::new().set("id", id.as_str()).add(
+        ClipPath::new().set("id", id).add(
             Rectangle::new()
                 .set("x", PLOT_LEFT)
                 .set("y", PLOT_TOP)
