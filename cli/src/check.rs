@@ -81,6 +81,8 @@ enum Context {
     G32 { line: usize, role: Role },
     /// A G75.1 move (line of block 2).
     G75 { line: usize, role: Role },
+    /// A G92 move, of start `start`.
+    G92 { line: usize, start: u16, role: Role },
 }
 
 /// One move of either toolpath.
@@ -414,6 +416,9 @@ impl<'m> Tracker<'m> {
             Some(MotionMode::G02) => Kind::ArcCw,
             Some(MotionMode::G03) => Kind::ArcCcw,
             Some(MotionMode::G32) => Kind::Thread,
+            // Never restored (every G92 block is expanded); G00 is what the
+            // expansion leaves.
+            Some(MotionMode::G92) => Kind::Rapid,
             Some(MotionMode::G00) | None => Kind::Rapid,
         };
     }
@@ -499,6 +504,20 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                     ]));
                 }
             }
+            Cycle::G92(call) => {
+                // No thread height either: the work lies beyond the cut
+                // line, away from A, between the Z of B and of C. The box
+                // is the part of it beyond the cut line's deepest X (a
+                // taper's wedge above that X is left out), as deep as any
+                // coordinate can be.
+                let c = &call.cycle;
+                let f = i128::from(c.x_mode.factor());
+                let (cx, bx) = (i128::from(c.end.x), i128::from(c.end.x) + f * i128::from(c.taper));
+                let far = 4 * i128::from(cycleref::units::MAX_LENGTH);
+                let (za, zc) = (i128::from(c.start.z), i128::from(c.end.z));
+                let x_span = if i128::from(c.start.x) > cx { (-far, cx.min(bx)) } else { (cx.max(bx), far) };
+                out.push(Region { x_lo: x_span.0, x_hi: x_span.1, z_lo: za.min(zc), z_hi: za.max(zc) });
+            }
             Cycle::G75(call) => {
                 let c = &call.cycle;
                 let p = cycleref::groove_profile(c)
@@ -547,6 +566,7 @@ enum RunningKind {
     G76,
     G32,
     G75,
+    G92,
 }
 
 /// Our toolpath, a step at a time: the program's motion blocks and its
@@ -592,6 +612,7 @@ impl<'j> OurSteps<'j> {
                             Context::G76 { line, pass, role }
                         }
                         RunningKind::G32 => Context::G32 { line, role },
+                        RunningKind::G92 => Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role },
                         RunningKind::G75 => Context::G75 { line, role },
                     };
                     return Some(Ok((self.tracker.inject(&m, context), self.segment)));
@@ -628,6 +649,7 @@ impl<'j> OurSteps<'j> {
                         Cycle::G76(_) => RunningKind::G76,
                         Cycle::G32(_) => RunningKind::G32,
                         Cycle::G75(_) => RunningKind::G75,
+                        Cycle::G92(_) => RunningKind::G92,
                     },
                     restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
                 });
@@ -1616,7 +1638,10 @@ fn extra(g: &Group) -> Divergence {
 /// The point a move ends at, in the manual's terms.
 fn point_name(c: Context, kind: Kind) -> &'static str {
     match c {
-        Context::G76 { role, .. } | Context::G32 { role, .. } | Context::G75 { role, .. } => match role {
+        Context::G76 { role, .. }
+        | Context::G32 { role, .. }
+        | Context::G75 { role, .. }
+        | Context::G92 { role, .. } => match role {
             Role::Approach => "Bn (pass start, or An before a lead-in)",
             Role::LeadIn => "Bn (end of the lead-in)",
             Role::Cut => "end of cut (run-out start)",
@@ -1672,9 +1697,10 @@ impl Report {
                 let mut text = String::new();
                 self.describe(d, &mut text);
                 let cycle_line = d.ours.and_then(|s| match s.context {
-                    Context::G76 { line, .. } | Context::G32 { line, .. } | Context::G75 { line, .. } => {
-                        Some(line)
-                    }
+                    Context::G76 { line, .. }
+                    | Context::G32 { line, .. }
+                    | Context::G75 { line, .. }
+                    | Context::G92 { line, .. } => Some(line),
                     Context::Source { .. } => None,
                 });
                 let difference = match (&d.ours, &d.theirs) {
@@ -1717,6 +1743,7 @@ impl Report {
                 fixed(pass.cut, self.units)
             ),
             Context::G32 { line, .. } => format!("G32 at line {line}"),
+            Context::G92 { line, start, .. } => format!("G92 at line {line}, start {start}"),
             Context::G75 { line, role } => match crate::format::plunge_of(role) {
                 Some(p) => format!("G75.1 at line {line}, layer {} plunge {}", p.layer, p.number),
                 None => format!("G75.1 at line {line}, {}", crate::format::role_name(role)),
@@ -1728,7 +1755,10 @@ impl Report {
     fn theirs_line(s: &Step) -> usize {
         match s.context {
             Context::Source { line } => line,
-            Context::G76 { line, .. } | Context::G32 { line, .. } | Context::G75 { line, .. } => line,
+            Context::G76 { line, .. }
+            | Context::G32 { line, .. }
+            | Context::G75 { line, .. }
+            | Context::G92 { line, .. } => line,
         }
     }
 
@@ -1904,6 +1934,12 @@ impl Report {
                 if let Some(p) = crate::format::plunge_of(role) {
                     v["plunge"] = json!({"layer": p.layer, "number": p.number});
                 }
+            }
+            Context::G92 { line, start, role } => {
+                v["cycle"] = json!({"code": "G92", "line": line});
+                v["start"] = json!(start);
+                v["point"] = json!(point_name(s.context, s.kind));
+                v["role"] = json!(crate::format::role_name(role));
             }
             Context::G32 { line, role } => {
                 v["cycle"] = json!({"code": "G32", "line": line});

@@ -158,6 +158,7 @@ pub fn kind_name(k: PassKind) -> &'static str {
     match k {
         PassKind::Rough => "rough",
         PassKind::Finish => "finish",
+        PassKind::Single => "single",
     }
 }
 

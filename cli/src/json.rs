@@ -182,6 +182,7 @@ impl CycleJson {
         let (params_line, from, start) = match cycle {
             Cycle::G76(c) => (Some(c.params_line), None, c.cycle.start),
             Cycle::G32(c) => (None, None, c.g32.start),
+            Cycle::G92(c) => (None, None, c.cycle.start),
             Cycle::G75(c) => {
                 (Some(Some(c.params_line)), Some(PointJson::new(c.cycle.from, u)), c.cycle.start)
             }

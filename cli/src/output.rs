@@ -14,7 +14,7 @@ use std::io::{self, Write};
 use cycleref::{Motion, Move, PathType, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G75Call, G76Call, Item, Restore};
+use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, Restore};
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, FIXED_BUF};
 use crate::job::{Failure, Job};
@@ -89,9 +89,36 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                 }
             }
             Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
+            Item::G92(call) => nc_g92(out, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
         }
         Ok(())
     })
+}
+
+/// The NC blocks of one G92 block: a heading, a comment before each start
+/// of a multi-start thread, the moves (the `nc` format contract, in the
+/// README).
+fn nc_g92<W: Write>(out: &mut W, call: &G92Call<'_>, moves: Moves, q: QUnit) -> io::Result<()> {
+    let u = call.cycle.units;
+    let starts = call.cycle.starts;
+    writeln!(
+        out,
+        "(G92 line {}: 1 pass x {} start{})",
+        call.block.line,
+        starts,
+        if starts == 1 { "" } else { "s" }
+    )?;
+    let mut current = None;
+    for m in moves {
+        if let Some(p) = m.pass.filter(|_| starts > 1) {
+            if current != Some(p.start) {
+                current = Some(p.start);
+                writeln!(out, "(start {})", p.start)?;
+            }
+        }
+        nc_move(out, &m, u, q)?;
+    }
+    Ok(())
 }
 
 /// The NC blocks of one G76 cycle: a heading, a comment before each pass

@@ -259,7 +259,10 @@ fn plot_line_picks_cycles() {
         let (out, svg) = plot("none", &program, &["--line", line]);
         assert_eq!(out.status.code(), Some(2), "--line {line}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains(&format!("--line {line}: no G76, G32 or G75.1 block at that line")), "{err}");
+        assert!(
+            err.contains(&format!("--line {line}: no G76, G32, G92 or G75.1 block at that line")),
+            "{err}"
+        );
         assert!(!svg.exists(), "no file on error");
     }
 }

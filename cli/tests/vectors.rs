@@ -168,6 +168,8 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::MinCutExceedsHeight { .. } => "min_cut_exceeds_height",
         CycleError::AllowanceExceedsHeight { .. } => "allowance_exceeds_height",
         CycleError::FaceThread => "face_thread",
+        CycleError::NoInfeed => "no_infeed",
+        CycleError::TaperBeyondStart { .. } => "taper_beyond_start",
         CycleError::RunOutTooLong { .. } => "run_out_too_long",
         CycleError::StartInsideThread => "start_inside_thread",
         CycleError::ThreadTooShort { .. } => "thread_too_short",

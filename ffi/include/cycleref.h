@@ -88,6 +88,10 @@ enum CyclerefCycle
      * A G75.1 radial trapezoidal groove cycle.
      */
     CYCLEREF_CYCLE_G75 = 2,
+    /**
+     * A G92 thread-cutting cycle block.
+     */
+    CYCLEREF_CYCLE_G92 = 3,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -245,6 +249,10 @@ enum CyclerefPassKind
      * A finishing pass.
      */
     CYCLEREF_PASS_KIND_FINISH = 1,
+    /**
+     * The one pass of a G92 block (depth and cut 0).
+     */
+    CYCLEREF_PASS_KIND_SINGLE = 2,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

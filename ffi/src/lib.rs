@@ -301,6 +301,7 @@ impl CycleMoves {
             Cycle::G76(_) => CyclerefCycle::G76,
             Cycle::G32(_) => CyclerefCycle::G32,
             Cycle::G75(_) => CyclerefCycle::G75,
+            Cycle::G92(_) => CyclerefCycle::G92,
         };
         Ok(CycleMoves { moves, cycle: kind, line: cycle.line(), decimals: cycle.units().decimals() })
     }

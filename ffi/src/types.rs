@@ -79,6 +79,8 @@ pub enum CyclerefCycle {
     G32 = 1,
     /// A G75.1 radial trapezoidal groove cycle.
     G75 = 2,
+    /// A G92 thread-cutting cycle block.
+    G92 = 3,
 }
 
 /// How the tool moves to the end point of a move.
@@ -138,6 +140,8 @@ pub enum CyclerefPassKind {
     Rough = 0,
     /// A finishing pass.
     Finish = 1,
+    /// The one pass of a G92 block (depth and cut 0).
+    Single = 2,
 }
 
 /// Where in the thread space a pass starts (infeed pattern).
@@ -383,6 +387,7 @@ impl CyclerefMove {
             out.pass_kind = match p.kind {
                 PassKind::Rough => CyclerefPassKind::Rough,
                 PassKind::Finish => CyclerefPassKind::Finish,
+                PassKind::Single => CyclerefPassKind::Single,
             };
             out.pass_number = p.number;
             out.pass_start = u32::from(p.start);

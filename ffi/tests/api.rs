@@ -638,6 +638,7 @@ fn pipeline_moves(program: &[u8], machine: &Machine) -> Vec<CyclerefMove> {
                 Cycle::G76(_) => CyclerefCycle::G76,
                 Cycle::G32(_) => CyclerefCycle::G32,
                 Cycle::G75(_) => CyclerefCycle::G75,
+                Cycle::G92(_) => CyclerefCycle::G92,
             };
             let (decimals, line) = (cycle.units().decimals(), cycle.line());
             let ours: Vec<_> = expand(cycle, Engine::Impl).expect("expands").collect();

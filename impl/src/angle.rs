@@ -37,6 +37,22 @@ impl StartAngle {
         StartSpacing::new(den).angle(index % den)
     }
 
+    /// `self + other`, reduced to one turn and to lowest terms: the angle of
+    /// a start of a multi-start thread whose first start is at `self` (G92
+    /// Q on the 988TA). Denominators are at most 10 and 999 (a Q word and
+    /// a start spacing), so every value below fits `u64` with room to spare.
+    #[must_use]
+    pub const fn plus(self, other: StartAngle) -> StartAngle {
+        let (an, ad) = (self.num as u64, if self.den == 0 { 1 } else { self.den as u64 });
+        let (bn, bd) = (other.num as u64, if other.den == 0 { 1 } else { other.den as u64 });
+        let den = ad * bd;
+        let num = (an * bd + bn * ad) % (FULL_TURN_MILLIDEGREES * den);
+        let g = gcd(num, den);
+        // num / g < 360 000 × den / g and den / g ≤ 9 990: below 2^32.
+        #[allow(clippy::cast_possible_truncation)]
+        StartAngle { num: (num / g) as u32, den: (den / g) as u32 }
+    }
+
     /// True for 0°.
     #[must_use]
     pub const fn is_zero(self) -> bool {

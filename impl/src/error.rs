@@ -174,8 +174,21 @@ pub enum CycleError {
         /// k.
         height: Length,
     },
-    /// G76 cannot cut face threads: the end point D has the Z of A.
+    /// G76 and G92 cannot cut face threads: the end point has the Z of A.
     FaceThread,
+    /// G92: the cut end C has the X of the start point A (U = 0): the block
+    /// has no infeed, and the run-out and retract, whose direction comes
+    /// from the start point, have none.
+    NoInfeed,
+    /// G92: R and U differ in sign and |R| > |U/2|: the cut start B lies
+    /// beyond the start point A (980TDi, 988TA: "当 R 与 U 的符号不一致时，
+    /// 要求 │R│≤│U/2│").
+    TaperBeyondStart {
+        /// R (radius).
+        taper: Length,
+        /// U: X of C minus X of A (X-word units: a diameter when X is).
+        infeed: Length,
+    },
     /// Note 7: the run-out on the long axis is longer than the thread on the
     /// long axis (checked against the shortest pass).
     RunOutTooLong {
@@ -319,8 +332,19 @@ impl fmt::Display for CycleError {
                  finishing allowance larger than the thread height)"
             ),
             CycleError::FaceThread => {
-                write!(f, "the thread end Z(W) equals the Z of the start point: G76 cannot cut face threads")
+                write!(f, "the thread end Z(W) equals the Z of the start point: G76 and G92 cannot cut face threads")
             }
+            CycleError::NoInfeed => write!(
+                f,
+                "the cut end X(U) equals the X of the start point A (U = 0): G92 takes the direction of \
+                 its infeed, run-out and retract from the start point, and there is none"
+            ),
+            CycleError::TaperBeyondStart { taper, infeed } => write!(
+                f,
+                "R = {taper} and U = {infeed} differ in sign and |R| is larger than U as a radius: the cut \
+                 start B lies beyond the start point A (G92: when R and U differ in sign, |R| <= |U/2| in \
+                 diameter, |R| <= |U| in radius)"
+            ),
             CycleError::RunOutTooLong { run_out, length } => write!(
                 f,
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
@@ -415,6 +439,8 @@ impl CycleError {
             Self::MinCutExceedsHeight { .. } => "min_cut_exceeds_height",
             Self::AllowanceExceedsHeight { .. } => "allowance_exceeds_height",
             Self::FaceThread => "face_thread",
+            Self::NoInfeed => "no_infeed",
+            Self::TaperBeyondStart { .. } => "taper_beyond_start",
             Self::RunOutTooLong { .. } => "run_out_too_long",
             Self::StartInsideThread => "start_inside_thread",
             Self::ThreadTooShort { .. } => "thread_too_short",

@@ -54,6 +54,78 @@ pub enum RunOut {
     },
 }
 
+impl RunOut {
+    /// The range checks of the run-out's own words (J, K ≥ 0 within the
+    /// range table, r 0..99, chamfer angle 1..89), in the order of
+    /// [`G76Cycle::validate`]; shared by every cycle with a run-out (G76,
+    /// G92).
+    ///
+    /// # Errors
+    ///
+    /// [`CycleError::OutOfRange`] or [`CycleError::CountOutOfRange`] for
+    /// the first word outside its range.
+    pub fn validate_words(self, units: Units) -> Result<(), CycleError> {
+        let unsigned = |field: Field, v: i64| -> Result<(), CycleError> {
+            if !(0..=MAX_LENGTH).contains(&v) {
+                return Err(CycleError::OutOfRange { field, value: Length::new(v, units) });
+            }
+            Ok(())
+        };
+        match self {
+            RunOut::None => {}
+            RunOut::Amounts { short, long } => {
+                unsigned(Field::RunOutShort, short)?;
+                unsigned(Field::RunOutLong, long)?;
+            }
+            RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
+                if let Some(k) = long {
+                    unsigned(Field::RunOutLong, k)?;
+                }
+                if tenths_of_lead > MAX_CHAMFER_TENTHS {
+                    return Err(CycleError::CountOutOfRange { field: Field::Chamfer, value: tenths_of_lead });
+                }
+                if !(1..=89).contains(&angle_degrees) {
+                    return Err(CycleError::CountOutOfRange {
+                        field: Field::ChamferAngle,
+                        value: angle_degrees,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The checks of the lead and of the chamfer it makes: F0/I0, a lead
+    /// beyond the range tables, and a chamfer `round(r × 0.1 × lead)`
+    /// beyond the range table (it is a run-out length, K and J through the
+    /// angle, also when K is programmed: an I lead of 0.0001 thread per
+    /// inch is 254 m per revolution).
+    ///
+    /// # Errors
+    ///
+    /// [`CycleError::ZeroLead`], [`CycleError::LeadOutOfRange`], then
+    /// [`CycleError::OutOfRange`] on [`Field::RunOutLong`].
+    pub fn validate_lead(self, lead: Lead, units: Units) -> Result<(), CycleError> {
+        if lead.is_zero() {
+            return Err(CycleError::ZeroLead);
+        }
+        if !lead.in_range() {
+            return Err(CycleError::LeadOutOfRange);
+        }
+        if let RunOut::Chamfer { tenths_of_lead, .. } = self {
+            let chamfer = lead.chamfer_increments(tenths_of_lead, units);
+            if chamfer > MAX_LENGTH.unsigned_abs().into() {
+                let value = i64::try_from(chamfer).unwrap_or(i64::MAX);
+                return Err(CycleError::OutOfRange {
+                    field: Field::RunOutLong,
+                    value: Length::new(value, units),
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
 /// One G76 multiple thread-cutting cycle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct G76Cycle {
@@ -143,21 +215,7 @@ impl G76Cycle {
         unsigned(Field::MinCut, c.min_cut)?;
         unsigned(Field::FinishingAllowance, c.finishing_allowance)?;
         unsigned(Field::LeadIn, c.lead_in)?;
-        if let RunOut::Amounts { short, long } = c.run_out {
-            unsigned(Field::RunOutShort, short)?;
-            unsigned(Field::RunOutLong, long)?;
-        }
-        if let RunOut::Chamfer { tenths_of_lead, angle_degrees, long } = c.run_out {
-            if let Some(k) = long {
-                unsigned(Field::RunOutLong, k)?;
-            }
-            if tenths_of_lead > MAX_CHAMFER_TENTHS {
-                return Err(CycleError::CountOutOfRange { field: Field::Chamfer, value: tenths_of_lead });
-            }
-            if !(1..=89).contains(&angle_degrees) {
-                return Err(CycleError::CountOutOfRange { field: Field::ChamferAngle, value: angle_degrees });
-            }
-        }
+        c.run_out.validate_words(c.units)?;
         if c.finishing_passes > 99 {
             return Err(CycleError::CountOutOfRange {
                 field: Field::FinishingPasses,
@@ -170,23 +228,7 @@ impl G76Cycle {
         if !(1..=999).contains(&c.starts) {
             return Err(CycleError::CountOutOfRange { field: Field::Starts, value: c.starts });
         }
-        if c.lead.is_zero() {
-            return Err(CycleError::ZeroLead);
-        }
-        if !c.lead.in_range() {
-            return Err(CycleError::LeadOutOfRange);
-        }
-        // The chamfer's length round(r × 0.1 × lead) is a run-out length
-        // (K, and J through the angle, also when K is programmed): the same
-        // range table applies (an I lead of 0.0001 thread per inch is 254 m
-        // per revolution).
-        if let RunOut::Chamfer { tenths_of_lead, .. } = c.run_out {
-            let chamfer = c.lead.chamfer_increments(tenths_of_lead, c.units);
-            if chamfer > MAX_LENGTH.unsigned_abs().into() {
-                let value = i64::try_from(chamfer).unwrap_or(i64::MAX);
-                return Err(CycleError::OutOfRange { field: Field::RunOutLong, value: c.len(value) });
-            }
-        }
+        c.run_out.validate_lead(c.lead, c.units)?;
         // Note 6: minimum cut or finishing allowance larger than the thread height.
         if c.min_cut > c.thread_height {
             return Err(CycleError::MinCutExceedsHeight {

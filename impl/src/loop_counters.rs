@@ -53,9 +53,15 @@ pub static PASS_COUNT: Site = Site::new("check_pass_count: levels");
 /// `G76Moves::plan_next`: stages skipped to the next planned pass.
 #[cfg(feature = "loop-counters")]
 pub static PLAN_NEXT: Site = Site::new("G76Moves::plan_next: stages");
-/// `G76Moves::next`: path steps skipped to the next move.
+/// `G76Moves::next`: passes and starts moved on to before the next move.
 #[cfg(feature = "loop-counters")]
-pub static G76_NEXT: Site = Site::new("G76Moves::next: steps");
+pub static G76_NEXT: Site = Site::new("G76Moves::next: passes and starts");
+/// `engine::pass::Walk::next_move`: path steps skipped to the next move.
+#[cfg(feature = "loop-counters")]
+pub static PASS_WALK: Site = Site::new("pass::Walk::next_move: steps");
+/// `G92Moves::next`: starts moved on to before the next move.
+#[cfg(feature = "loop-counters")]
+pub static G92_NEXT: Site = Site::new("G92Moves::next: starts");
 /// `angle::gcd`: Stein's loop.
 #[cfg(feature = "loop-counters")]
 pub static GCD: Site = Site::new("angle::gcd: Stein");
@@ -91,12 +97,14 @@ pub static G75_CONTOUR: Site = Site::new("g75: contour points");
 
 /// Every site.
 #[cfg(feature = "loop-counters")]
-pub static SITES: [&Site; 14] = [
+pub static SITES: [&Site; 16] = [
     &ISQRT_U128,
     &ISQRT_U64,
     &PASS_COUNT,
     &PLAN_NEXT,
     &G76_NEXT,
+    &PASS_WALK,
+    &G92_NEXT,
     &GCD,
     &G32_VALIDATE,
     &REAL_LIMBS,

@@ -82,6 +82,10 @@ pub enum PassKind {
     Rough,
     /// A finishing pass (精车), depth k.
     Finish,
+    /// The one pass of a single-pass cycle block (G92), at the programmed
+    /// X: its depth and cut are 0, since the block gives no thread height
+    /// to measure them from.
+    Single,
 }
 
 /// Where in the thread space a pass starts, for the infeed modes.

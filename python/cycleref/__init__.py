@@ -1,4 +1,4 @@
-r"""cycleref: the CNC manuals' lathe thread and groove cycles (G76, G32, G75.1), exactly.
+r"""cycleref: the CNC manuals' lathe thread and groove cycles (G76, G32, G92, G75.1), exactly.
 
 Expand a program into its moves, stream the moves of a large one, check a
 vendor's toolpath against ours, and generate conformance vectors. Lengths
@@ -62,7 +62,8 @@ Point = Tuple[Decimal, Decimal]
 class Pass:
     """The G76 pass a move belongs to, in the manual's terms.
 
-    ``kind`` is ``"rough"`` or ``"finish"``; ``number`` counts the passes of
+    ``kind`` is ``"rough"``, ``"finish"`` or ``"single"`` (the one pass of a
+    G92 block, depth and cut 0); ``number`` counts the passes of
     that kind from 1; ``start`` is the thread start (multi-start L);
     ``depth`` the total depth of cut and ``cut`` this pass's increment of
     it; ``flank`` the infeed side (``"right"``, ``"centre"``, ``"left"``;
@@ -91,7 +92,7 @@ class Move:
     """One move of a cycle.
 
     ``cycle`` and ``line``: the cycle's G code (``"G76"``, ``"G32"``,
-    ``"G75.1"``) and the line of the block that runs it. ``motion`` is
+    ``"G75.1"``, ``"G92"``) and the line of the block that runs it. ``motion`` is
     ``"rapid"``, ``"feed"``, ``"thread"``, ``"arc-cw"`` or ``"arc-ccw"``;
     ``x``, ``z`` the end point (X in X-word units, diameter by default);
     ``centre`` the arc's absolute centre ``(x, z)`` (arcs only); ``role``

@@ -27,13 +27,14 @@
 use cycleref::angle::StartAngle;
 use cycleref::error::{CycleError, Field};
 use cycleref::g76::{G76Cycle, Infeed, RunOut};
-use cycleref::lead::Ratio;
-use cycleref::moves::{Flank, Motion, Move, Pass, PassKind, Role};
-use cycleref::units::{Length, Point, MAX_LENGTH};
+use cycleref::lead::{Lead, Ratio};
+use cycleref::moves::{Flank, Move, Pass, PassKind};
+use cycleref::units::{Length, MAX_LENGTH};
 use cycleref::Units;
 use rust_decimal::Decimal;
 
 use crate::exact::{ceil_div, from_increments, quantize, round_div, round_sqrt, to_increments};
+use crate::pass::{pass_path, PassFrame};
 
 /// Which axis is the long axis (长轴) of the thread.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -344,13 +345,12 @@ fn round_ratio(num: i128, r: Ratio) -> i128 {
 ///
 /// Twin: `impl/src/engine/g76.rs`, `run_out_amounts`.
 #[must_use]
-pub fn run_out_amounts(c: &G76Cycle) -> Option<(Decimal, Decimal)> {
-    let u = c.units;
-    let (j, k) = match c.run_out {
+pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal, Decimal)> {
+    let (j, k) = match run_out {
         RunOut::None => return None,
         RunOut::Amounts { short, long } => (short, long),
         RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
-            let lead = c.lead.increments_per_rev(u);
+            let lead = lead.increments_per_rev(u);
             let chamfer =
                 round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
             // validate() has refused a chamfer beyond the range table.
@@ -381,10 +381,6 @@ pub fn lead_in_length(c: &G76Cycle) -> Decimal {
     // smallest N >= 1 with N * n / d >= e
     let leads = ceil_div(e * d, n).max(1);
     from_increments(i64::try_from(round_div(leads * n, d)).unwrap_or(i64::MAX), u)
-}
-
-fn point(x: Decimal, z: Decimal, u: Units) -> Point {
-    Point::new(to_increments(x, u), to_increments(z, u))
 }
 
 ///
@@ -433,7 +429,7 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     let k = from_increments(c.thread_height, u);
     let i = from_increments(c.taper, u);
     let w = g.d.1 - g.a.1;
-    let run_out = run_out_amounts(c);
+    let run_out = run_out_amounts(c.run_out, c.lead, u);
     let lead_in = if c.lead_in > 0 { Some(lead_in_length(c)) } else { None };
 
     // Note 7 and reading R-SHORT: the shortest pass must be longer than the
@@ -475,6 +471,17 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
         check_coordinate(g.a.1 + t * min_shift - t * lz, u)?;
     }
 
+    let frame = PassFrame {
+        a: g.a,
+        side: g.side,
+        direction: g.direction,
+        length: w.abs(),
+        x_factor: xf,
+        long_axis: g.long_axis,
+        run_out,
+        lead: c.lead,
+        units: u,
+    };
     let mut moves = Vec::new();
     for planned in &plan {
         for start in 0..c.starts {
@@ -487,72 +494,9 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
             let bn = (g.d.0 + xf * i + s * xf * (k - depth), g.a.1 + t * planned.z_shift);
             // Reading R-END: the cut ends on the line D–E, X having moved i.
             let end = (g.d.0 + s * xf * (k - depth), g.d.1);
-            let mut path = PassPath { moves: &mut moves, at: g.a, pass, u, sync_done: false, lead: c, angle };
-            match lead_in {
-                Some(lz) => {
-                    path.go(Motion::Rapid, (bn.0 + s * xf * e, bn.1 - t * lz), Role::Approach);
-                    path.thread(bn, Role::LeadIn);
-                }
-                None => path.go(Motion::Rapid, bn, Role::Approach),
-            }
-            let mut last = end;
-            match run_out {
-                None => path.thread(end, Role::Cut),
-                Some((j, kk)) => match g.long_axis {
-                    LongAxis::Z => {
-                        // Run-out starts K before the end along Z, on the cut line.
-                        let zr = end.1 - t * kk;
-                        let xr = quantize(bn.0 + (end.0 - bn.0) * (zr - bn.1) / (end.1 - bn.1), u);
-                        path.thread((xr, zr), Role::Cut);
-                        // Short axis: J away from the work, at most to E (reading R-RUNOUT).
-                        let jx = (xf * j).min(s * (g.a.0 - end.0));
-                        last = (end.0 + s * jx, end.1);
-                        path.thread(last, Role::RunOut);
-                    }
-                    LongAxis::X => {
-                        let sigma = if end.0 > bn.0 { Decimal::ONE } else { Decimal::NEGATIVE_ONE };
-                        let xr = end.0 - sigma * xf * kk;
-                        let zr = quantize(bn.1 + (end.1 - bn.1) * (xr - bn.0) / (end.0 - bn.0), u);
-                        path.thread((xr, zr), Role::Cut);
-                        let jz = j.min(w.abs());
-                        last = (end.0, end.1 - t * jz);
-                        path.thread(last, Role::RunOut);
-                    }
-                },
-            }
-            path.go(Motion::Rapid, (g.a.0, last.1), Role::Retract);
-            path.go(Motion::Rapid, g.a, Role::Return);
+            let lead_in_start = lead_in.map(|lz| (bn.0 + s * xf * e, bn.1 - t * lz));
+            pass_path(&mut moves, &frame, bn, end, lead_in_start, pass, angle);
         }
     }
     Ok(moves)
-}
-
-struct PassPath<'a> {
-    moves: &'a mut Vec<Move>,
-    at: (Decimal, Decimal),
-    pass: Pass,
-    u: Units,
-    sync_done: bool,
-    lead: &'a G76Cycle,
-    angle: StartAngle,
-}
-
-impl PassPath<'_> {
-    fn go(&mut self, motion: Motion, to: (Decimal, Decimal), role: Role) {
-        if to == self.at {
-            return;
-        }
-        self.at = to;
-        self.moves.push(Move { motion, to: point(to.0, to.1, self.u), role, pass: Some(self.pass) });
-    }
-
-    fn thread(&mut self, to: (Decimal, Decimal), role: Role) {
-        if to == self.at {
-            return;
-        }
-        let sync = !self.sync_done;
-        self.sync_done = true;
-        let motion = Motion::Thread { lead: self.lead.lead, start_angle: self.angle, sync };
-        self.go(motion, to, role);
-    }
 }

@@ -13,11 +13,11 @@
 
 use std::fmt;
 
-use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, Move, Point, Units};
+use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, G92Moves, Move, Point, Units};
 
 use crate::error::ProgramError;
 use crate::profile::Machine;
-use crate::reader::{G32Call, G75Call, G76Call, Item, Reader, Restore};
+use crate::reader::{G32Call, G75Call, G76Call, G92Call, Item, Reader, Restore};
 
 /// Which model expands the cycles. Both give the same moves, move by move.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -39,6 +39,8 @@ pub enum Cycle<'r, 'a> {
     G32(&'r G32Call<'a>),
     /// A G75.1 groove cycle.
     G75(&'r G75Call<'a>),
+    /// A G92 thread-cutting cycle block.
+    G92(&'r G92Call<'a>),
 }
 
 impl<'r, 'a> Cycle<'r, 'a> {
@@ -49,17 +51,19 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Item::G76(c) => Some(Cycle::G76(c)),
             Item::G32(c) => Some(Cycle::G32(c)),
             Item::G75(c) => Some(Cycle::G75(c)),
+            Item::G92(c) => Some(Cycle::G92(c)),
             Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => None,
         }
     }
 
-    /// The G code, as the manuals write it (`G76`, `G32`, `G75.1`).
+    /// The G code, as the manuals write it (`G76`, `G32`, `G75.1`, `G92`).
     #[must_use]
     pub fn code(self) -> &'static str {
         match self {
             Cycle::G76(_) => "G76",
             Cycle::G32(_) => "G32",
             Cycle::G75(_) => "G75.1",
+            Cycle::G92(_) => "G92",
         }
     }
 
@@ -70,6 +74,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G76(c) => c.block.line,
             Cycle::G32(c) => c.block.line,
             Cycle::G75(c) => c.block.line,
+            Cycle::G92(c) => c.block.line,
         }
     }
 
@@ -80,6 +85,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G76(c) => c.cycle.units,
             Cycle::G32(c) => c.g32.units,
             Cycle::G75(c) => c.cycle.units,
+            Cycle::G92(c) => c.cycle.units,
         }
     }
 
@@ -90,6 +96,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G76(c) => c.cycle.start,
             Cycle::G32(c) => c.g32.start,
             Cycle::G75(c) => c.cycle.from,
+            Cycle::G92(c) => c.cycle.start,
         }
     }
 
@@ -100,7 +107,9 @@ impl<'r, 'a> Cycle<'r, 'a> {
         match self {
             Cycle::G76(c) => c.restore,
             Cycle::G75(c) => c.restore,
-            Cycle::G32(_) => Restore::default(),
+            // G32 and G92 are modal: the mode in force is theirs, and every
+            // G92 block is expanded (reading R-G92MODAL).
+            Cycle::G32(_) | Cycle::G92(_) => Restore::default(),
         }
     }
 }
@@ -117,6 +126,7 @@ enum Inner {
     G76(G76Moves),
     G32(G32Moves),
     G75(Box<G75Moves>),
+    G92(G92Moves),
     Reference(std::vec::IntoIter<Move>),
 }
 
@@ -129,6 +139,7 @@ impl Iterator for Moves {
             Inner::G76(m) => m.next(),
             Inner::G32(m) => m.next(),
             Inner::G75(m) => m.next(),
+            Inner::G92(m) => m.next(),
             Inner::Reference(m) => m.next(),
         }
     }
@@ -160,9 +171,11 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         (Engine::Impl, Cycle::G76(c)) => Inner::G76(cycleref::expand_g76(&c.cycle)?),
         (Engine::Impl, Cycle::G32(c)) => Inner::G32(cycleref::expand_g32(&c.g32)?),
         (Engine::Impl, Cycle::G75(c)) => Inner::G75(Box::new(cycleref::expand_g75(&c.cycle)?)),
+        (Engine::Impl, Cycle::G92(c)) => Inner::G92(cycleref::expand_g92(&c.cycle)?),
         (Engine::Spec, Cycle::G76(c)) => Inner::Reference(crate::g76::expand(&c.cycle)?.into_iter()),
         (Engine::Spec, Cycle::G32(c)) => Inner::Reference(crate::g32::expand(&c.g32)?.into_iter()),
         (Engine::Spec, Cycle::G75(c)) => Inner::Reference(crate::g75::expand(&c.cycle)?.into_iter()),
+        (Engine::Spec, Cycle::G92(c)) => Inner::Reference(crate::g92::expand(&c.cycle)?.into_iter()),
     };
     Ok(Moves(inner))
 }
@@ -233,6 +246,8 @@ pub struct Summary {
     pub g32: usize,
     /// The number of G75.1 cycles.
     pub g75: usize,
+    /// The number of G92 blocks.
+    pub g92: usize,
 }
 
 /// The first phase of a run (reading R-STREAM): reads every item of
@@ -259,15 +274,15 @@ pub fn validate(source: &[u8], machine: &Machine, engine: Engine) -> Result<Summ
 pub struct Validation {
     engine: Engine,
     items: usize,
-    /// Cycles by kind: G76, G32, G75.1.
-    cycles: [usize; 3],
+    /// Cycles by kind: G76, G32, G75.1, G92.
+    cycles: [usize; 4],
 }
 
 impl Validation {
     /// Nothing checked yet; cycles will be expanded with `engine`.
     #[must_use]
     pub fn new(engine: Engine) -> Validation {
-        Validation { engine, items: 0, cycles: [0; 3] }
+        Validation { engine, items: 0, cycles: [0; 4] }
     }
 
     /// Checks the next item of the program.
@@ -282,6 +297,7 @@ impl Validation {
                 Cycle::G76(_) => 0,
                 Cycle::G32(_) => 1,
                 Cycle::G75(_) => 2,
+                Cycle::G92(_) => 3,
             }] += 1;
             // Every alarm is raised before the first move: the moves are
             // not taken.
@@ -293,7 +309,7 @@ impl Validation {
     /// What was learnt, with the `units` the reader ended with.
     #[must_use]
     pub fn summary(&self, units: Units) -> Summary {
-        let [g76, g32, g75] = self.cycles;
-        Summary { units, items: self.items, cycles: g76 + g32 + g75, g76, g32, g75 }
+        let [g76, g32, g75, g92] = self.cycles;
+        Summary { units, items: self.items, cycles: g76 + g32 + g75 + g92, g76, g32, g75, g92 }
     }
 }

@@ -156,6 +156,11 @@ pub struct Profile {
     /// The control has G75.1, the radial trapezoidal groove cycle (the
     /// GSK 980TDi, seed 001).
     pub g75_1: bool,
+    /// Addresses a G92 block accepts besides `G X Z U W R F I M S T`
+    /// (reading R-ADDRESS): J K L on the 980TDi, J K L Q P on the 988TA.
+    pub g92_extra: &'static str,
+    /// Largest L (starts) of G92: 980TDi 1..99, 988TA 1..999.
+    pub g92_max_starts: i64,
 }
 
 /// The parameter numbers a profile uses for G76.
@@ -195,6 +200,8 @@ impl Profile {
                 jk_modal: false,
                 g32_rules: G32Rules::NoRunOut,
                 g75_1: false,
+                g92_extra: "",
+                g92_max_starts: 1,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -218,6 +225,8 @@ impl Profile {
                 jk_modal: false,
                 g32_rules: G32Rules::Gsk980,
                 g75_1: true,
+                g92_extra: "JKL",
+                g92_max_starts: 99,
                 max_depth_increments: 99_999_999,
                 params: ParamNumbers {
                     finishing_passes: "57",
@@ -241,6 +250,8 @@ impl Profile {
                 jk_modal: true,
                 g32_rules: G32Rules::Gsk988,
                 g75_1: false,
+                g92_extra: "JKLQP",
+                g92_max_starts: 999,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",

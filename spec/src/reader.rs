@@ -10,6 +10,7 @@ use cycleref::angle::StartAngle;
 use cycleref::g32::{G32Block, G32RunOut};
 use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
 use cycleref::g76::{G76Cycle, Infeed, RunOut};
+use cycleref::g92::G92Cycle;
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
 use cycleref::units::{Point, MAX_LENGTH};
 use cycleref::{InputUnit, Units};
@@ -35,6 +36,26 @@ pub enum Item<'a> {
     G75Params(Block<'a>),
     /// G75.1 block 2: a groove cycle to expand.
     G75(G75Call<'a>),
+    /// A G92 thread-cutting cycle block (the first, or a repeat in G92
+    /// mode): a cycle to expand.
+    G92(G92Call<'a>),
+}
+
+/// One G92 block of a program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct G92Call<'a> {
+    /// The block.
+    pub block: Block<'a>,
+    /// The resolved cycle.
+    pub cycle: G92Cycle,
+}
+
+impl G92Call<'_> {
+    /// The call with its block [detached](Block::detached) from the text.
+    #[must_use]
+    pub fn detached(&self) -> G92Call<'static> {
+        G92Call { block: self.block.detached(), cycle: self.cycle }
+    }
 }
 
 /// One G75.1 cycle of a program (its two blocks).
@@ -166,6 +187,9 @@ pub enum MotionMode {
     G03,
     /// G32, thread cutting.
     G32,
+    /// G92, the thread-cutting cycle (modal: a block with X(U) or Z(W)
+    /// repeats it).
+    G92,
 }
 
 impl MotionMode {
@@ -178,6 +202,7 @@ impl MotionMode {
             MotionMode::G02 => "G02",
             MotionMode::G03 => "G03",
             MotionMode::G32 => "G32",
+            MotionMode::G92 => "G92",
         }
     }
 }
@@ -230,6 +255,23 @@ struct State<'m> {
     thread_run: Option<StartAngle>,
     /// G75.1 block 1 waiting for its block 2.
     g75_pending: Option<G75Block1>,
+    /// G92's modal values (reading R-G92MODAL).
+    g92: G92Modal,
+}
+
+/// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
+/// and P, kept from block to block while G92 is the motion mode (980TDi:
+/// "F … J … K … L … 模态参数"; 988TA: "R … 模态值", "P … 模态指令"; FANUC:
+/// X(U), Z(W) and R are modal in a canned cycle) and forgotten when
+/// another motion G code is programmed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct G92Modal {
+    end_x: Option<i64>,
+    end_z: Option<i64>,
+    taper: Option<i64>,
+    j: Option<i64>,
+    k: Option<i64>,
+    starts: Option<u32>,
 }
 
 /// The values of a G75.1 block 1, kept until block 2 arrives.
@@ -395,6 +437,7 @@ impl<'m> LineReader<'m> {
                 g32_k: None,
                 thread_run: None,
                 g75_pending: None,
+                g92: G92Modal::default(),
             },
             at: None,
             line: 0,
@@ -705,6 +748,7 @@ impl State<'_> {
                 Some(2) => motion = Some(MotionMode::G02),
                 Some(3) => motion = Some(MotionMode::G03),
                 Some(32) => motion = Some(MotionMode::G32),
+                Some(92) => motion = Some(MotionMode::G92),
                 Some(4) => g04 = true,
                 Some(50) => g50 = true,
                 Some(76) => g76 = true,
@@ -739,7 +783,7 @@ impl State<'_> {
                         Some(w),
                         ErrorKind::Unsupported(format!(
                             "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
-                             G75.1, G76, G96-G99)"
+                             G75.1, G76, G92 (the thread-cutting cycle), G96-G99)"
                         )),
                     ))
                 }
@@ -815,18 +859,23 @@ impl State<'_> {
             }
         }
         if let Some(m) = motion {
+            if m != MotionMode::G92 {
+                // Reading R-G92MODAL: another motion code ends the G92 mode.
+                self.g92 = G92Modal::default();
+            }
             self.motion = m;
         }
-        if motion == Some(MotionMode::G32)
+        if matches!(motion, Some(MotionMode::G32 | MotionMode::G92))
             && !g04
             && !g50
             && !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c))
         {
-            return Err(err(
-                &block,
-                None,
-                ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule: "G32 cuts to an end point" },
-            ));
+            let rule = if motion == Some(MotionMode::G32) {
+                "G32 cuts to an end point"
+            } else {
+                "G92 cuts to its cut end point C"
+            };
+            return Err(err(&block, None, ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule }));
         }
         if g04 {
             return Ok(Item::Source(block));
@@ -847,6 +896,9 @@ impl State<'_> {
         if xw.is_some() || zw.is_some() || uw.is_some() || ww.is_some() {
             if self.motion == MotionMode::G32 {
                 return self.g32_block(block).map(Item::G32);
+            }
+            if self.motion == MotionMode::G92 {
+                return self.g92_block(block).map(Item::G92);
             }
             self.g32_j = None;
             self.g32_k = None;
@@ -1015,6 +1067,99 @@ impl State<'_> {
         let breaks = rules == G32Rules::Gsk988 && run_out != G32RunOut::None;
         self.thread_run = if breaks { None } else { Some(start_angle) };
         Ok(G32Call { block, g32 })
+    }
+
+    /// The motion to restore after a G76 or G75.1 expansion: the mode in
+    /// force, unless it is G00 (the expansion's last move) or G92 (every
+    /// G92 block is expanded too, so the output never needs the mode back).
+    fn restore(&self) -> Restore {
+        let motion = match self.motion {
+            MotionMode::G00 | MotionMode::G92 => None,
+            m => Some(m),
+        };
+        Restore { motion }
+    }
+
+    /// A G92 block: `X(U) Z(W) R F(I)` and the profile's extras (980TDi: J
+    /// K L; 988TA: J K L Q P), the first of a G92 mode or a repeat
+    /// (readings R-G92MODAL, R-G92RUNOUT).
+    fn g92_block<'a>(&mut self, block: Block<'a>) -> Result<G92Call<'a>, ProgramError> {
+        let profile = &self.machine.profile;
+        self.check_addresses(&block, "G92", "GXZUWRFIMST", profile.g92_extra)?;
+        let with_line = |mut e: ProgramError| {
+            if e.line == 0 {
+                e.line = block.line;
+            }
+            e
+        };
+        let (Some(xa), Some(za)) = (self.x, self.z) else {
+            return Err(err(&block, None, ErrorKind::PositionUnknown));
+        };
+        self.check_spindle(&block)?;
+        // The cut end: each axis as programmed (U, W from A), else the
+        // previous G92 block's (modal), else A's.
+        let (xw, zw, uw, ww) = Self::axis_words(&block)?;
+        let xc = self.axis(&block, xw, uw, Some(xa))?.filter(|_| xw.is_some() || uw.is_some());
+        let zc = self.axis(&block, zw, ww, Some(za))?.filter(|_| zw.is_some() || ww.is_some());
+        let end = Point::new(xc.or(self.g92.end_x).unwrap_or(xa), zc.or(self.g92.end_z).unwrap_or(za));
+        let taper = match block.get('R')? {
+            Some(w) => self.length(&block, w)?,
+            None => self.g92.taper.unwrap_or(0),
+        };
+        let lead = self.block_lead(&block)?;
+        if let Some(w) = block.get('J')? {
+            self.g92.j = Some(self.unsigned_length(&block, w)?);
+        }
+        if let Some(w) = block.get('K')? {
+            self.g92.k = Some(self.unsigned_length(&block, w)?);
+        }
+        if let Some(w) = block.get('L')? {
+            self.g92.starts = Some(Self::count(&block, w, 1, profile.g92_max_starts)?);
+        }
+        if let Some(w) = block.get('P')? {
+            // 988TA: "当 P=0 或省略 P 时，加工轴向螺纹；当 P=1 时，加工端面螺纹".
+            if Self::count(&block, w, 0, 1)? == 1 {
+                return Err(err(
+                    &block,
+                    Some(w),
+                    ErrorKind::Unsupported(
+                        "G92 P1 (face threads, long and short axes swapped) is not modelled yet".into(),
+                    ),
+                ));
+            }
+        }
+        let start_angle = match block.get('Q')? {
+            Some(w) => self.start_angle(&block, w)?,
+            None => StartAngle::ZERO,
+        };
+        let p = &profile.params;
+        let r = self.param_count(p.chamfer, 0, 99).map_err(with_line)?;
+        let angle = match p.chamfer_angle {
+            Some(n) => match self.param_count(n, 0, 89).map_err(with_line)? {
+                0 => 45,
+                v => v,
+            },
+            None => 45,
+        };
+        let run_out = resolve_run_out(profile.run_out, self.g92.j, self.g92.k, r, angle);
+        let cycle = G92Cycle {
+            units: self.units,
+            x_mode: self.machine.x_mode,
+            start: Point::new(xa, za),
+            end,
+            taper,
+            lead,
+            run_out,
+            starts: self.g92.starts.unwrap_or(1),
+            start_angle,
+        };
+        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        self.g92.end_x = Some(end.x);
+        self.g92.end_z = Some(end.z);
+        self.g92.taper = Some(taper);
+        // The block ends back at A (step ④).
+        self.moved = true;
+        Ok(G92Call { block, cycle })
     }
 
     /// G32's Q in the profile's unit (reading R-G32Q).
@@ -1210,7 +1355,7 @@ impl State<'_> {
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
         let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
-        let restore = Restore { motion: (self.motion != MotionMode::G00).then_some(self.motion) };
+        let restore = self.restore();
         let cycle = G76Cycle {
             units: self.units,
             x_mode: self.machine.x_mode,
@@ -1403,7 +1548,7 @@ impl State<'_> {
             corners,
         };
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
-        let restore = Restore { motion: (self.motion != MotionMode::G00).then_some(self.motion) };
+        let restore = self.restore();
         // Step 10: the tool ends where it was before the cycle.
         self.moved = true;
         Ok(G75Call { block, params_line: first.line, cycle, restore })

@@ -155,6 +155,7 @@ proptest! {
                     match p.kind {
                         PassKind::Rough => last_rough_z = Some(m.to.z),
                         PassKind::Finish => prop_assert_eq!(m.to.z, last_rough_z.unwrap_or(c.start.z)),
+                        PassKind::Single => prop_assert!(false, "a G76 pass is rough or finishing: {:?}", p),
                     }
                 }
                 Role::Cut => {

@@ -1,100 +1,137 @@
-//! The panel of a program's G32 blocks in `cycleref plot`.
+//! The panels of a program's single-block threads in `cycleref plot`: one
+//! panel with every G32 block, one with every G92 block.
 //!
 //! G32 blocks are plain thread moves, usually many short ones cut pass by
-//! pass, so all of a program's blocks share one panel: each block's thread
-//! moves in a blue ramp by block order, its run-out green, and a circle
-//! where the spindle synchronises (the start of a block that is not a
-//! continuation of the one before). The moves between the blocks are the
-//! program's own and are not drawn.
+//! pass; a G92 block is one pass of a thread whose next blocks cut it
+//! deeper (the 980TDi's example O0012 cuts one thread in four G92
+//! blocks). So all of a program's blocks of one kind share one panel: each
+//! block's thread moves in a blue ramp by block order (light: first,
+//! shallowest; dark: last), its run-out green, its rapids (G92) dashed
+//! grey, and a circle where the spindle synchronises (G32: the start of a
+//! block that is not a continuation of the one before; G92: every pass of
+//! every start). The program's own moves between the blocks are not drawn.
 
-use cycleref::{Move, Role};
-use cycleref_spec::reader::G32Call;
+use cycleref::{Motion, Move, Point, Role, Units, XMode};
+use cycleref_spec::reader::{G32Call, G92Call};
 use svg::node::element::{Circle, Group, Title};
 
 use super::canvas::{
     draw_axes, draw_marks, heading, legend, line, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
-    POINT, RAPID, RUN_OUT,
+    POINT, RAPID, RAPID_DASH, RUN_OUT,
 };
 
-/// The path of the block `call` with its `moves`, for the zoomed panel.
-pub(super) fn ours<'a>(call: &G32Call<'_>, moves: &'a [Move]) -> super::zoom::Ours<'a> {
-    let b = &call.g32;
-    super::zoom::Ours { from: b.start, moves, units: b.units, x_mode: b.x_mode }
+/// One single-block thread to draw: a G32 or a G92 block and its moves.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BlockPath<'a> {
+    /// The block's line.
+    pub(super) line: usize,
+    /// Where the tool is when the block starts.
+    pub(super) from: Point,
+    /// The block's units.
+    pub(super) units: Units,
+    /// Diameter or radius X.
+    pub(super) x_mode: XMode,
+    /// The moves.
+    pub(super) moves: &'a [Move],
 }
 
-/// One panel with every G32 block of the program (`threads`, at least
-/// one), with the divergences `marks` of a trace in them marked (`first_mark`:
-/// the first of them is the report's first).
+impl<'a> BlockPath<'a> {
+    /// A G32 block.
+    pub(super) fn g32(call: &G32Call<'_>, moves: &'a [Move]) -> BlockPath<'a> {
+        let b = &call.g32;
+        BlockPath { line: call.block.line, from: b.start, units: b.units, x_mode: b.x_mode, moves }
+    }
+
+    /// A G92 block.
+    pub(super) fn g92(call: &G92Call<'_>, moves: &'a [Move]) -> BlockPath<'a> {
+        let c = &call.cycle;
+        BlockPath { line: call.block.line, from: c.start, units: c.units, x_mode: c.x_mode, moves }
+    }
+
+    /// The path, for the zoomed panel.
+    pub(super) fn ours(self) -> super::zoom::Ours<'a> {
+        super::zoom::Ours { from: self.from, moves: self.moves, units: self.units, x_mode: self.x_mode }
+    }
+}
+
+/// One panel with every block of one kind (`code`: G32 or G92) of the
+/// program (`blocks`, at least one), with the divergences `marks` of a
+/// trace in them marked (`first_mark`: the first of them is the report's
+/// first).
 pub(super) fn panel(
     name: &str,
-    threads: &[(G32Call<'_>, Vec<Move>)],
+    code: &str,
+    blocks: &[BlockPath<'_>],
     marks: &[&crate::check::Mark],
     first_mark: bool,
 ) -> Group {
-    let first = &threads[0].0;
-    let per_unit = first.g32.units.per_unit();
-    let points = threads.iter().flat_map(|(c, m)| std::iter::once(c.g32.start).chain(m.iter().map(|m| m.to)));
-    let map = Mapping::around(points, per_unit);
-    let lines = format!("lines {}-{}", first.block.line, threads[threads.len() - 1].0.block.line);
+    let first = &blocks[0];
+    let points = blocks.iter().flat_map(|b| std::iter::once(b.from).chain(b.moves.iter().map(|m| m.to)));
+    let map = Mapping::around(points, first.units.per_unit());
+    let lines = format!("lines {}-{}", first.line, blocks[blocks.len() - 1].line);
     let mut g = heading(
         Group::new(),
-        format!("{name} \u{2014} G32 blocks ({lines})"),
-        format!("{} block{}; {}", threads.len(), if threads.len() == 1 { "" } else { "s" }, scale_note(&map)),
+        format!("{name} \u{2014} {code} blocks ({lines})"),
+        format!("{} block{}; {}", blocks.len(), if blocks.len() == 1 { "" } else { "s" }, scale_note(&map)),
     );
-    let total = u32::try_from(threads.len()).unwrap_or(u32::MAX);
+    let total = u32::try_from(blocks.len()).unwrap_or(u32::MAX);
     let ramp_note = (total > 1).then(|| "light \u{2192} dark: first \u{2192} last block".to_string());
-    g = legend(
-        g,
-        &[
-            (
-                Swatch::Line(&ramp(1, total.max(2)), 1.8, None),
-                "thread (G32), one blue per block".into(),
-                ramp_note,
-            ),
-            (Swatch::Line(RUN_OUT, 3.0, None), "run-out (J, K)".into(), None),
-            (
-                Swatch::Ring(POINT),
-                "spindle synchronises".into(),
-                Some("not continuing the block before".into()),
-            ),
-            (
-                Swatch::Line(RAPID, 1.0, Some("2 3")),
-                "the program's own moves".into(),
-                Some("between the blocks: not drawn".into()),
-            ),
-        ],
-    );
-    g = draw_axes(g, &map, unit_name(first.g32.units.unit), x_kind(first.g32.x_mode));
-    for (i, (call, moves)) in threads.iter().enumerate() {
-        let mut at = call.g32.start;
-        if call.g32.sync {
-            let (x, y) = map.px(at);
-            g = g.add(
-                Circle::new()
-                    .set("cx", num(x))
-                    .set("cy", num(y))
-                    .set("r", 4)
-                    .set("fill", "none")
-                    .set("stroke", POINT)
-                    .add(Title::new(format!("line {}: synchronisation starts", call.block.line))),
-            );
-        }
-        for m in moves {
+    let g92 = code == "G92";
+    let first_blue = ramp(1, total.max(2));
+    let mut entries = vec![
+        (Swatch::Line(&first_blue, 1.8, None), format!("thread ({code}), one blue per block"), ramp_note),
+        (Swatch::Line(RUN_OUT, 3.0, None), "run-out (J, K)".into(), None),
+    ];
+    let ring = if g92 { "each pass of each start" } else { "not continuing the block before" };
+    entries.push((Swatch::Ring(POINT), "spindle synchronises".into(), Some(ring.into())));
+    if g92 {
+        entries.push((
+            Swatch::Line(RAPID, 1.0, Some(RAPID_DASH)),
+            "rapid (G00)".into(),
+            Some("A \u{2192} B, retract, return to A".into()),
+        ));
+    }
+    entries.push((
+        Swatch::Line(RAPID, 1.0, Some("2 3")),
+        "the program's own moves".into(),
+        Some("between the blocks: not drawn".into()),
+    ));
+    g = legend(g, &entries);
+    g = draw_axes(g, &map, unit_name(first.units.unit), x_kind(first.x_mode));
+    for (i, block) in blocks.iter().enumerate() {
+        let mut at = block.from;
+        for m in block.moves {
+            if let Motion::Thread { sync: true, .. } = m.motion {
+                let (x, y) = map.px(at);
+                g = g.add(
+                    Circle::new()
+                        .set("cx", num(x))
+                        .set("cy", num(y))
+                        .set("r", 4)
+                        .set("fill", "none")
+                        .set("stroke", POINT)
+                        .add(Title::new(format!("line {}: synchronisation starts", block.line))),
+                );
+            }
             let (x1, y1) = map.px(at);
             let (x2, y2) = map.px(m.to);
-            let run_out = m.role == Role::RunOut;
-            let colour =
-                if run_out { RUN_OUT.to_string() } else { ramp(u32::try_from(i + 1).unwrap_or(1), total) };
-            g = g.add(
-                line(x1, y1, x2, y2)
-                    .set("stroke", colour)
-                    .set("stroke-width", if run_out { 3.0 } else { 1.8 })
-                    .add(Title::new(format!(
-                        "line {}: {}",
-                        call.block.line,
-                        crate::format::role_name(m.role)
-                    ))),
-            );
+            let title = Title::new(format!("line {}: {}", block.line, crate::format::role_name(m.role)));
+            let segment = line(x1, y1, x2, y2);
+            g = g.add(if m.motion == Motion::Rapid {
+                segment
+                    .set("stroke", RAPID)
+                    .set("stroke-width", 1.0)
+                    .set("stroke-dasharray", RAPID_DASH)
+                    .add(title)
+            } else {
+                let run_out = m.role == Role::RunOut;
+                let colour = if run_out {
+                    RUN_OUT.to_string()
+                } else {
+                    ramp(u32::try_from(i + 1).unwrap_or(1), total)
+                };
+                segment.set("stroke", colour).set("stroke-width", if run_out { 3.0 } else { 1.8 }).add(title)
+            });
             at = m.to;
         }
     }

@@ -157,6 +157,8 @@ impl<'a> Panel<'a> {
                         self.finish_total = self.finish_total.max(p.number);
                         self.finish_depth = Some(p.depth);
                     }
+                    // G92 blocks have their own panel (`g32`).
+                    PassKind::Single => {}
                 }
             }
             match (m.motion, m.role) {
@@ -271,7 +273,7 @@ impl<'a> Panel<'a> {
         match kind {
             Some(PassKind::Rough) => (ramp(number, self.rough_total), 1.5),
             Some(PassKind::Finish) => (FINISH.into(), 2.0),
-            None => (POINT.into(), 1.5),
+            Some(PassKind::Single) | None => (POINT.into(), 1.5),
         }
     }
 

@@ -1,7 +1,8 @@
 //! SVG drawing of toolpaths (`cycleref plot`).
 //!
 //! Each cycle gets one panel, stacked vertically: every G76 cycle in
-//! order, then one panel with all the G32 blocks, then every G75.1 cycle.
+//! order, then one panel with all the G32 blocks, one with all the G92
+//! blocks, then every G75.1 cycle.
 //! A panel draws the toolpath in the XZ plane as on a lathe drawing: Z
 //! horizontal (increasing to the right), X vertical (increasing upwards).
 //! X is drawn as programmed: the diameter when X words are diameters, the
@@ -25,15 +26,15 @@
 //!
 //! The modules: `canvas` holds what every panel shares (the plot
 //! area, the palette, the mapping from increments to pixels, the axes, the
-//! heading, the number format); `g76`, `g32` and `g75` draw their cycle's
-//! panel on it; this module reads the program ([`run`]) and stacks the
+//! heading, the number format); `g76`, `g32` (G32 and G92 blocks) and
+//! `g75` draw their cycle's panel on it; this module reads the program ([`run`]) and stacks the
 //! panels into the page. The output depends only on the input: no clock,
 //! no hash order, so the same program gives the same bytes.
 
 use std::collections::BTreeSet;
 
 use cycleref::{Move, Point};
-use cycleref_spec::reader::{G32Call, G76Call};
+use cycleref_spec::reader::{G32Call, G76Call, G92Call};
 use svg::node::element::{Group, Line, Rectangle};
 use svg::Document;
 
@@ -59,12 +60,15 @@ fn svg(
     name: &str,
     cycles: &[(G76Call<'_>, Vec<Move>)],
     threads: &[(G32Call<'_>, Vec<Move>)],
+    g92s: &[(G92Call<'_>, Vec<Move>)],
     grooves: &[g75::Groove<'_>],
     overlay: Option<&Overlay>,
 ) -> Result<String, String> {
-    if cycles.is_empty() && threads.is_empty() && grooves.is_empty() {
-        return Err(format!("{name}: no G76 cycle, G32 block or G75.1 cycle to plot"));
+    if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && grooves.is_empty() {
+        return Err(format!("{name}: no G76 cycle, G32 block, G92 block or G75.1 cycle to plot"));
     }
+    let threads: Vec<g32::BlockPath<'_>> = threads.iter().map(|(c, m)| g32::BlockPath::g32(c, m)).collect();
+    let g92s: Vec<g32::BlockPath<'_>> = g92s.iter().map(|(c, m)| g32::BlockPath::g92(c, m)).collect();
     let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
     let first_line = marks.first().and_then(|m| m.cycle_line);
     // The zoomed panel of the first divergence, drawn last.
@@ -76,9 +80,7 @@ fn svg(
             .iter()
             .find(|(c, _)| Some(c.block.line) == line)
             .map(|(c, moves)| g76::ours(c, moves))
-            .or_else(|| {
-                threads.iter().find(|(c, _)| Some(c.block.line) == line).map(|(c, m)| g32::ours(c, m))
-            })
+            .or_else(|| threads.iter().chain(&g92s).find(|b| Some(b.line) == line).map(|b| b.ours()))
             .or_else(|| grooves.iter().find(|g| Some(g.line()) == line).map(g75::Groove::path));
         let (ours, theirs) = match ours {
             Some(ours) => (ours, line.map_or(&[][..], |l| o.points_for(l))),
@@ -88,15 +90,18 @@ fn svg(
                 let any = cycles
                     .first()
                     .map(|(c, m)| g76::ours(c, m))
-                    .or_else(|| threads.first().map(|(c, m)| g32::ours(c, m)))
+                    .or_else(|| threads.first().or(g92s.first()).map(|b| b.ours()))
                     .or_else(|| grooves.first().map(g75::Groove::path))?;
                 (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], ..any }, &[][..])
             }
         };
         zoom::panel(name, o.short_name(), &marks, &ours, theirs)
     });
-    let panels =
-        cycles.len() + usize::from(!threads.is_empty()) + grooves.len() + usize::from(zoomed.is_some());
+    let panels = cycles.len()
+        + usize::from(!threads.is_empty())
+        + usize::from(!g92s.is_empty())
+        + grooves.len()
+        + usize::from(zoomed.is_some());
     let height = PANEL_HEIGHT * count(panels);
     let mut doc = Document::new()
         .set("width", WIDTH)
@@ -116,17 +121,21 @@ fn svg(
         }
         doc = place(doc, group, index, true);
     }
-    if !threads.is_empty() {
+    let mut before = cycles.len();
+    for (code, blocks) in [("G32", &threads), ("G92", &g92s)] {
+        if blocks.is_empty() {
+            continue;
+        }
         let here: Vec<&crate::check::Mark> = marks
             .iter()
             .copied()
-            .filter(|m| threads.iter().any(|(c, _)| m.cycle_line == Some(c.block.line)))
+            .filter(|m| blocks.iter().any(|b| m.cycle_line == Some(b.line)))
             .take(MAX_MARKS)
             .collect();
-        let first = threads.iter().any(|(c, _)| first_line == Some(c.block.line));
-        doc = place(doc, g32::panel(name, threads, &here, first), cycles.len(), true);
+        let first = blocks.iter().any(|b| first_line == Some(b.line));
+        doc = place(doc, g32::panel(name, code, blocks, &here, first), before, true);
+        before += 1;
     }
-    let before = cycles.len() + usize::from(!threads.is_empty());
     for (i, groove) in grooves.iter().enumerate() {
         let line = Some(groove.line());
         let here: Vec<&crate::check::Mark> =
@@ -234,6 +243,7 @@ pub fn run(
     let units = job.validate()?.units;
     let mut cycles = Vec::new();
     let mut threads = Vec::new();
+    let mut g92s = Vec::new();
     let mut grooves = Vec::new();
     let (mut total, mut drawn) = (0_usize, 0_usize);
     // Where each G76 cycle drawn lies in the whole toolpath, by move index.
@@ -284,6 +294,7 @@ pub fn run(
             match &item {
                 Item::G76(call) => cycles.push((call.detached(), moves)),
                 Item::G32(call) => threads.push((call.detached(), moves)),
+                Item::G92(call) => g92s.push((call.detached(), moves)),
                 Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
                 Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
@@ -292,7 +303,7 @@ pub fn run(
     )?;
     if let Some(missing) = lines.iter().find(|l| !found.contains(*l)) {
         return Err(crate::Failure::msg(format!(
-            "{}: --line {missing}: no G76, G32 or G75.1 block at that line",
+            "{}: --line {missing}: no G76, G32, G92 or G75.1 block at that line",
             job.name
         )));
     }
@@ -302,14 +313,14 @@ pub fn run(
         Some(t) => Some(crate::check::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg =
-        svg(&job.name, &cycles, &threads, &grooves, overlay.as_ref()).map_err(crate::Failure::Message)?;
+    let svg = svg(&job.name, &cycles, &threads, &g92s, &grooves, overlay.as_ref())
+        .map_err(crate::Failure::Message)?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {
         format!(
             "{}: drew {drawn} of {total} cycles (at most {MAX_CYCLES} without --line); pick others with \
-             --line N, N the line of a G76 or G75.1 block or of a G32 block (repeatable)",
+             --line N, N the line of a G76 or G75.1 block or of a G32 or G92 block (repeatable)",
             job.name
         )
     });

@@ -51,6 +51,7 @@ use cycleref_spec::pipeline::{expand, Cycle, Engine};
 mod g32;
 mod g75;
 mod g76;
+mod g92;
 mod machine;
 mod refused;
 
@@ -431,6 +432,7 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                     Cycle::G76(call) => g76::tags(call, &moves, &mut tags),
                     Cycle::G32(call) => g32::tags(call, &moves, &mut tags),
                     Cycle::G75(call) => g75::tags(call, &moves, &mut tags),
+                    Cycle::G92(call) => g92::tags(call, &moves, &mut tags),
                 }
                 count += moves.len();
                 let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;

@@ -83,7 +83,7 @@
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (400 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (408 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -92,14 +92,15 @@ use core::iter::FusedIterator;
 
 #[cfg(feature = "loop-counters")]
 use super::arith::record_isqrt;
-use super::arith::{round_div, round_sqrt, saturate_i64};
+use super::arith::{round_sqrt, saturate_i64};
+use super::pass::{Frame, LongAxis, Walk};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{G76Cycle, Infeed, RunOut};
 use crate::lead::{Lead, Ratio};
-use crate::moves::{Flank, Motion, Move, Pass, PassKind, Role};
+use crate::moves::{Flank, Move, Pass, PassKind};
 use crate::tan::mul_tan_round;
-use crate::units::{Length, Point, Units, MAX_LENGTH};
+use crate::units::{Length, Units, MAX_LENGTH};
 
 /// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
 /// is below `2^93` and the root below `2^47`.
@@ -199,12 +200,12 @@ fn round_ratio(num: u128, r: Ratio) -> Option<u128> {
 /// validated cycle.
 ///
 /// Twin: `spec/src/g76.rs`, `run_out_amounts`.
-fn run_out_amounts(c: &G76Cycle) -> Option<(i64, i64)> {
-    let (j, k) = match c.run_out {
+pub(crate) fn run_out_amounts(run_out: RunOut, lead: Lead, units: Units) -> Option<(i64, i64)> {
+    let (j, k) = match run_out {
         RunOut::None => return None,
         RunOut::Amounts { short, long } => (short, long),
         RunOut::Chamfer { tenths_of_lead, angle_degrees, long } => {
-            let lead = c.lead.increments_per_rev(c.units);
+            let lead = lead.increments_per_rev(units);
             // K = round(r × lead / 10): 10 × den ≤ 10 × 10 × 2^64.
             let chamfer = lead
                 .den
@@ -252,122 +253,6 @@ fn check_coordinate(v: i128, units: Units) -> Result<(), CycleError> {
         });
     }
     Ok(())
-}
-
-/// The long axis of the thread.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum LongAxis {
-    /// `|W| > |i|`.
-    Z,
-    /// `|i| ≥ |W|`.
-    X,
-}
-
-/// The fixed values of a checked cycle.
-#[derive(Clone, Copy, Debug)]
-struct Frame {
-    /// The cycle's lead, for the thread motions.
-    lead: Lead,
-    /// A.
-    a: Point,
-    /// D.
-    d: Point,
-    /// X of C.
-    c_x: i64,
-    /// X-word increments per radius increment.
-    xf: i64,
-    /// +1 external, -1 internal.
-    side: i64,
-    /// Sign of W.
-    direction: i64,
-    /// |W|.
-    w_abs: i64,
-    /// k.
-    k: i64,
-    /// Long axis.
-    long_axis: LongAxis,
-    /// `(J, K)`.
-    run_out: Option<(i64, i64)>,
-    /// `(E, lead-in length)`.
-    lead_in: Option<(i64, i64)>,
-    /// L.
-    starts: u32,
-    /// The spacing of the starts, 360° / L.
-    spacing: StartSpacing,
-}
-
-/// The path of one pass: the candidate moves' end points.
-#[derive(Clone, Copy, Debug)]
-struct PassPath {
-    /// End of the approach: An with a lead-in, else Bn.
-    approach: Point,
-    /// Bn, the end of the lead-in, if there is one.
-    lead_in: Option<Point>,
-    /// End of the cut: the run-out start, or the end line D–E.
-    cut: Point,
-    /// End of the run-out, if there is one.
-    run_out: Option<Point>,
-    /// E: the X of A, on the Z of the end of the pass.
-    retract: Point,
-}
-
-impl Frame {
-    /// The path of a pass at `depth` shifted `shift` along Z, as the
-    /// reference's `expand` builds it.
-    ///
-    /// Twin: `spec/src/g76.rs`, `expand` (the points of each pass).
-    fn path(&self, depth: i64, shift: i64) -> PassPath {
-        let (s, t, xf) = (self.side, self.direction, self.xf);
-        // 0 ≤ k - depth < 2^30; X of C < 3·2^30, Z shifts < 2^32.
-        let sink = s * xf * (self.k - depth);
-        let bn = Point::new(self.c_x + sink, self.a.z + t * shift);
-        let end = Point::new(self.d.x + sink, self.d.z);
-        let approach = match self.lead_in {
-            // Only called for a planned pass, so the range check of
-            // expand_g76 has bounded both coordinates of An (|lz| < 2^33).
-            Some((e, lz)) => Point::new(bn.x + s * xf * e, bn.z - t * lz),
-            None => bn,
-        };
-        let lead_in = self.lead_in.map(|_| bn);
-        let (cut, run_out, last) = match self.run_out {
-            None => (end, None, end),
-            Some((j, kk)) => match self.long_axis {
-                LongAxis::Z => {
-                    // The run-out starts K before the end along Z, on the cut
-                    // line: xr = round(bn.x + (end.x - bn.x)(zr - bn.z) /
-                    // (end.z - bn.z)), the rounding on the whole sum. The
-                    // divisor is t(|W| - shift) ≠ 0 (ThreadTooShort).
-                    let zr = end.z - t * kk;
-                    let xr = if end.x == bn.x {
-                        // A straight cut: no division (the common case).
-                        bn.x
-                    } else {
-                        let den = i128::from(end.z) - i128::from(bn.z);
-                        let num = i128::from(bn.x) * den
-                            + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
-                        saturate_i64(round_div(num, den))
-                    };
-                    // J away from the work, at most to E; J may be i64::MAX.
-                    let jx = xf.saturating_mul(j).min(s * (self.a.x - end.x));
-                    let last = Point::new(end.x + s * jx, end.z);
-                    (Point::new(xr, zr), Some(last), last)
-                }
-                LongAxis::X => {
-                    // end.x - bn.x = -xf i ≠ 0 on an X long axis.
-                    let sigma = if end.x > bn.x { 1 } else { -1 };
-                    let xr = end.x - sigma * xf * kk;
-                    let den = i128::from(end.x) - i128::from(bn.x);
-                    let num = i128::from(bn.z) * den
-                        + (i128::from(end.z) - i128::from(bn.z)) * (i128::from(xr) - i128::from(bn.x));
-                    let zr = saturate_i64(round_div(num, den));
-                    let jz = j.min(self.w_abs);
-                    let last = Point::new(end.x, end.z - t * jz);
-                    (Point::new(xr, zr), Some(last), last)
-                }
-            },
-        };
-        PassPath { approach, lead_in, cut, run_out, retract: Point::new(self.a.x, last.z) }
-    }
 }
 
 /// The rough levels, one at a time (see the module docs).
@@ -454,20 +339,10 @@ pub struct G76Moves {
     previous: i64,
     /// Number of the last rough pass (or finishing pass, in [`Stage::Finish`]).
     number: u32,
-    /// The current pass (its `start` is the current start).
-    pass: Pass,
-    /// Its path.
-    path: PassPath,
+    /// The current pass of the current start, streamed.
+    walk: Walk,
     /// Current start, 0-based.
     start: u32,
-    /// Spindle angle of the current start.
-    angle: StartAngle,
-    /// Next candidate move of the path, 0..=6 (6: path finished).
-    step: u8,
-    /// Tool position.
-    at: Point,
-    /// The current path has started its synchronised run.
-    sync_done: bool,
 }
 
 /// What the up-front checks need of the planned passes: the depth of the
@@ -555,7 +430,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let centre = flank_shift(last, c.tool_angle);
     let extremes = plan_extremes(c, last, centre);
     let max_shift = extremes.map_or(0, |p| p.max_shift);
-    let run_out = run_out_amounts(c);
+    let run_out = run_out_amounts(c.run_out, c.lead, c.units);
     let lead_in = if c.lead_in > 0 { Some((c.lead_in, lead_in_length(c))) } else { None };
 
     // Note 7 and reading R-SHORT; on either long axis a pass whose shift
@@ -633,14 +508,9 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         stage: Stage::Rough { left_pending: false },
         previous: 0,
         number: 0,
-        pass: placeholder,
         // Replaced by next_pass below before any use.
-        path: PassPath { approach: a, lead_in: None, cut: a, run_out: None, retract: a },
+        walk: Walk::new(frame.path(0, 0), placeholder, StartAngle::ZERO, a),
         start: 0,
-        angle: StartAngle::ZERO,
-        step: 0,
-        at: a,
-        sync_done: false,
     };
     moves.next_pass();
     Ok(moves)
@@ -653,22 +523,18 @@ impl G76Moves {
             self.stage = Stage::Done;
             return;
         };
-        self.pass = pass;
-        self.path = self.frame.path(pass.depth, shift);
+        self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.a);
         self.begin_start(0);
     }
 
     /// Starts the path of the current pass for start `start` (0-based).
     fn begin_start(&mut self, start: u32) {
         self.start = start;
-        // start < L ≤ 999.
-        self.pass.start = u16::try_from(start + 1).unwrap_or(u16::MAX);
         #[cfg(feature = "loop-counters")]
         self.frame.spacing.record_angle_gcd(start);
-        self.angle = self.frame.spacing.angle(start);
-        self.step = 0;
-        self.at = self.frame.a;
-        self.sync_done = false;
+        // start < L ≤ 999.
+        let number = u16::try_from(start + 1).unwrap_or(u16::MAX);
+        self.walk.restart(number, self.frame.spacing.angle(start), self.frame.a);
     }
 
     /// The next planned pass and its Z shift, as the reference's
@@ -759,45 +625,16 @@ impl Iterator for G76Moves {
             if self.stage == Stage::Done {
                 return None;
             }
-            let step = self.step;
-            // (thread?, end point, role); None when the path has no such move.
-            // Only the field needed is read (copying the whole path per move
-            // showed in the profile).
-            let candidate = match step {
-                0 => Some((false, self.path.approach, Role::Approach)),
-                1 => self.path.lead_in.map(|to| (true, to, Role::LeadIn)),
-                2 => Some((true, self.path.cut, Role::Cut)),
-                3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
-                4 => Some((false, self.path.retract, Role::Retract)),
-                5 => Some((false, self.frame.a, Role::Return)),
-                _ => {
-                    // The path of this start is done: next start, or next pass.
-                    let next = self.start.saturating_add(1);
-                    if next < self.frame.starts {
-                        self.begin_start(next);
-                    } else {
-                        self.next_pass();
-                    }
-                    continue;
-                }
-            };
-            self.step = step.saturating_add(1);
-            let Some((thread, to, role)) = candidate else {
-                continue;
-            };
-            // Reading R-ZERO: moves that would not move are left out.
-            if to == self.at {
-                continue;
+            if let Some(m) = self.walk.next_move(&self.frame) {
+                return Some(m);
             }
-            self.at = to;
-            let motion = if thread {
-                let sync = !self.sync_done;
-                self.sync_done = true;
-                Motion::Thread { lead: self.frame.lead, start_angle: self.angle, sync }
+            // The path of this start is done: next start, or next pass.
+            let next = self.start.saturating_add(1);
+            if next < self.frame.starts {
+                self.begin_start(next);
             } else {
-                Motion::Rapid
-            };
-            return Some(Move { motion, to, role, pass: Some(self.pass) });
+                self.next_pass();
+            }
         }
     }
 }

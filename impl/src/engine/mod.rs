@@ -47,6 +47,8 @@ pub mod contracts;
 pub mod g32;
 pub mod g75;
 pub mod g76;
+pub mod g92;
+pub(crate) mod pass;
 pub mod real;
 
 #[cfg(feature = "loop-counters")]

@@ -1,0 +1,214 @@
+//! One thread pass, shared by every threading cycle with passes (G76's
+//! rough and finishing passes, a G92 block): the path of a pass from A to
+//! its start, along the thread, through the run-out and back to A, and the
+//! walk that streams its moves.
+//!
+//! A pass, in the manuals' terms (seed 000 "执行过程", 988TA G76 steps
+//! ①-⑩, 980TDi G92 steps ①-④):
+//!
+//! 1. rapid from A to the pass start Bn (or to the lead-in start An, then a
+//!    screw-in thread move to Bn, reading R-LEADIN);
+//! 2. thread from Bn to the end line, X travelling the taper (reading
+//!    R-END), with the run-out K before the end (reading R-RUNOUT);
+//! 3. rapid along X to E (X of A), then along Z back to A.
+//!
+//! Moves that would not move are left out (reading R-ZERO).
+//!
+//! Twin: `spec/src/pass.rs`.
+
+use crate::angle::{StartAngle, StartSpacing};
+use crate::engine::arith::{round_div, saturate_i64};
+use crate::lead::Lead;
+use crate::moves::{Motion, Move, Pass, Role};
+use crate::units::Point;
+
+/// The long axis of the thread (reading R-LONG).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum LongAxis {
+    /// `|W| > |i|`.
+    Z,
+    /// `|i| ≥ |W|`.
+    X,
+}
+
+/// The fixed values of a checked threading cycle.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Frame {
+    /// The cycle's lead, for the thread motions.
+    pub(crate) lead: Lead,
+    /// A.
+    pub(crate) a: Point,
+    /// D (G92: the cut end C).
+    pub(crate) d: Point,
+    /// X of C, the thread's start at the Z of A (G92: X of B).
+    pub(crate) c_x: i64,
+    /// X-word increments per radius increment.
+    pub(crate) xf: i64,
+    /// +1 external, -1 internal.
+    pub(crate) side: i64,
+    /// Sign of W.
+    pub(crate) direction: i64,
+    /// |W|.
+    pub(crate) w_abs: i64,
+    /// k (G92: 0, every pass is at the programmed X).
+    pub(crate) k: i64,
+    /// Long axis.
+    pub(crate) long_axis: LongAxis,
+    /// `(J, K)`.
+    pub(crate) run_out: Option<(i64, i64)>,
+    /// `(E, lead-in length)`.
+    pub(crate) lead_in: Option<(i64, i64)>,
+    /// L.
+    pub(crate) starts: u32,
+    /// The spacing of the starts, 360° / L.
+    pub(crate) spacing: StartSpacing,
+}
+
+/// The path of one pass: the candidate moves' end points.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PassPath {
+    /// End of the approach: An with a lead-in, else Bn.
+    approach: Point,
+    /// Bn, the end of the lead-in, if there is one.
+    lead_in: Option<Point>,
+    /// End of the cut: the run-out start, or the end line D–E.
+    cut: Point,
+    /// End of the run-out, if there is one.
+    run_out: Option<Point>,
+    /// E: the X of A, on the Z of the end of the pass.
+    retract: Point,
+}
+
+impl Frame {
+    /// The path of a pass at `depth` shifted `shift` along Z, as the
+    /// reference's `pass_path` builds it.
+    ///
+    /// Twin: `spec/src/pass.rs`, `pass_path`.
+    pub(crate) fn path(&self, depth: i64, shift: i64) -> PassPath {
+        let (s, t, xf) = (self.side, self.direction, self.xf);
+        // 0 ≤ k - depth < 2^30; X of C < 3·2^30, Z shifts < 2^32.
+        let sink = s * xf * (self.k - depth);
+        let bn = Point::new(self.c_x + sink, self.a.z + t * shift);
+        let end = Point::new(self.d.x + sink, self.d.z);
+        let approach = match self.lead_in {
+            // Only called for a planned pass, so the range check of
+            // expand_g76 has bounded both coordinates of An (|lz| < 2^33).
+            Some((e, lz)) => Point::new(bn.x + s * xf * e, bn.z - t * lz),
+            None => bn,
+        };
+        let lead_in = self.lead_in.map(|_| bn);
+        let (cut, run_out, last) = match self.run_out {
+            None => (end, None, end),
+            Some((j, kk)) => match self.long_axis {
+                LongAxis::Z => {
+                    // The run-out starts K before the end along Z, on the cut
+                    // line: xr = round(bn.x + (end.x - bn.x)(zr - bn.z) /
+                    // (end.z - bn.z)), the rounding on the whole sum. The
+                    // divisor is t(|W| - shift) ≠ 0 (ThreadTooShort).
+                    let zr = end.z - t * kk;
+                    let xr = if end.x == bn.x {
+                        // A straight cut: no division (the common case).
+                        bn.x
+                    } else {
+                        let den = i128::from(end.z) - i128::from(bn.z);
+                        let num = i128::from(bn.x) * den
+                            + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
+                        saturate_i64(round_div(num, den))
+                    };
+                    // J away from the work, at most to E; J may be i64::MAX.
+                    let jx = xf.saturating_mul(j).min(s * (self.a.x - end.x));
+                    let last = Point::new(end.x + s * jx, end.z);
+                    (Point::new(xr, zr), Some(last), last)
+                }
+                LongAxis::X => {
+                    // end.x - bn.x = -xf i ≠ 0 on an X long axis.
+                    let sigma = if end.x > bn.x { 1 } else { -1 };
+                    let xr = end.x - sigma * xf * kk;
+                    let den = i128::from(end.x) - i128::from(bn.x);
+                    let num = i128::from(bn.z) * den
+                        + (i128::from(end.z) - i128::from(bn.z)) * (i128::from(xr) - i128::from(bn.x));
+                    let zr = saturate_i64(round_div(num, den));
+                    let jz = j.min(self.w_abs);
+                    let last = Point::new(end.x, end.z - t * jz);
+                    (Point::new(xr, zr), Some(last), last)
+                }
+            },
+        };
+        PassPath { approach, lead_in, cut, run_out, retract: Point::new(self.a.x, last.z) }
+    }
+}
+
+/// The moves of one pass of one start, streamed: at most six candidate
+/// moves (approach, lead-in, cut, run-out, retract, return), of which the
+/// zero-length ones are skipped.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Walk {
+    /// The pass every move carries (its `start` is the current start).
+    pub(crate) pass: Pass,
+    /// The path.
+    path: PassPath,
+    /// Spindle angle of the start.
+    angle: StartAngle,
+    /// Next candidate move of the path, 0..=6 (6: path finished).
+    step: u8,
+    /// Tool position.
+    at: Point,
+    /// The path has started its synchronised run.
+    sync_done: bool,
+}
+
+impl Walk {
+    /// A walk of `path` from A for `pass` at spindle angle `angle`.
+    pub(crate) fn new(path: PassPath, pass: Pass, angle: StartAngle, a: Point) -> Walk {
+        Walk { pass, path, angle, step: 0, at: a, sync_done: false }
+    }
+
+    /// The same path again from A, for another start.
+    pub(crate) fn restart(&mut self, start: u16, angle: StartAngle, a: Point) {
+        self.pass.start = start;
+        self.angle = angle;
+        self.step = 0;
+        self.at = a;
+        self.sync_done = false;
+    }
+
+    /// The next move of the path, or `None` once it is back at A.
+    // Inlined across crates: a call per move costs more than the move.
+    #[inline]
+    pub(crate) fn next_move(&mut self, frame: &Frame) -> Option<Move> {
+        let mut count = crate::loop_counters::count!(PASS_WALK);
+        loop {
+            count.tick();
+            let step = self.step;
+            // (thread?, end point, role); None when the path has no such move.
+            // Only the field needed is read (copying the whole path per move
+            // showed in the profile).
+            let candidate = match step {
+                0 => Some((false, self.path.approach, Role::Approach)),
+                1 => self.path.lead_in.map(|to| (true, to, Role::LeadIn)),
+                2 => Some((true, self.path.cut, Role::Cut)),
+                3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
+                4 => Some((false, self.path.retract, Role::Retract)),
+                5 => Some((false, frame.a, Role::Return)),
+                _ => return None,
+            };
+            self.step = step.saturating_add(1);
+            let Some((thread, to, role)) = candidate else {
+                continue;
+            };
+            // Reading R-ZERO: moves that would not move are left out.
+            if to == self.at {
+                continue;
+            }
+            self.at = to;
+            let motion = if thread {
+                let sync = !self.sync_done;
+                self.sync_done = true;
+                Motion::Thread { lead: frame.lead, start_angle: self.angle, sync }
+            } else {
+                Motion::Rapid
+            };
+            return Some(Move { motion, to, role, pass: Some(self.pass) });
+        }
+    }
+}
