@@ -1,0 +1,374 @@
+//! G92: golden tests worked by hand from the 980TDi and 988TA pages
+//! (manuals/gsk980tdi-g92.txt, manuals/gsk988ta-g92.txt), every profile's
+//! run-out rules, the modal words and every alarm. Each expected point is
+//! derived in the comment above it; both engines must give it.
+
+use cycleref::{
+    CycleError, Flank, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, RunOut, StartAngle,
+};
+use cycleref_spec::pipeline::{expand, Cycle, Engine};
+use cycleref_spec::profile::Machine;
+use cycleref_spec::{read, ErrorKind, ProfileName, ProgramError};
+
+fn example(name: &str) -> String {
+    let path = format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// Every G92 block's moves, by both engines (which must agree).
+fn blocks(src: &str, m: &Machine) -> Vec<Vec<Move>> {
+    let p = read(src, m).unwrap_or_else(|e| panic!("{e}"));
+    p.items
+        .iter()
+        .filter_map(Cycle::of)
+        .filter(|c| matches!(c, Cycle::G92(_)))
+        .map(|c| {
+            let ours: Vec<Move> = expand(c, Engine::Impl).unwrap_or_else(|e| panic!("{e}")).collect();
+            let reference: Vec<Move> = expand(c, Engine::Spec).unwrap_or_else(|e| panic!("{e}")).collect();
+            assert_eq!(ours, reference, "line {}", c.line());
+            ours
+        })
+        .collect()
+}
+
+fn error(src: &str, m: &Machine) -> ProgramError {
+    let p = match read(src, m) {
+        Err(e) => return e,
+        Ok(p) => p,
+    };
+    for c in p.items.iter().filter_map(Cycle::of) {
+        let ours = expand(c, Engine::Impl).err();
+        let reference = expand(c, Engine::Spec).err();
+        assert_eq!(ours, reference, "line {}", c.line());
+        if let Some(e) = ours {
+            return ProgramError { line: c.line(), word: None, kind: ErrorKind::Cycle(e) };
+        }
+    }
+    panic!("expected an error:\n{src}")
+}
+
+fn machine(p: ProfileName) -> Machine {
+    Machine::new(p)
+}
+
+const F3: Lead = Lead { word: LeadWord::F, mantissa: 3, scale: 0 };
+const F2: Lead = Lead { word: LeadWord::F, mantissa: 2, scale: 0 };
+
+fn pass(start: u16) -> Option<Pass> {
+    Some(Pass { kind: PassKind::Single, number: 1, start, depth: 0, cut: 0, flank: Flank::Centre })
+}
+
+fn rapid(x: i64, z: i64, role: Role) -> Move {
+    Move { motion: Motion::Rapid, to: Point::new(x, z), role, pass: pass(1) }
+}
+
+fn thread(x: i64, z: i64, sync: bool, lead: Lead, role: Role) -> Move {
+    Move {
+        motion: Motion::Thread { lead, start_angle: StartAngle::ZERO, sync },
+        to: Point::new(x, z),
+        role,
+        pass: pass(1),
+    }
+}
+
+/// One pass of O0012 at the cut-end X `x` (IS-B, diameter): A = (65, 5),
+/// C = (x, -28), J3 K1. Z is the long axis (|W| = 33 > |R| = 0). ① rapid
+/// to B = (x, 5); ② thread to K = 1 before C, Z-27, still at x (straight),
+/// then the run-out to Z-28 and J = 3 (radius) outwards, x + 6; ③ rapid to
+/// the X of A, X65; ④ rapid to A.
+fn o0012_pass(x: i64) -> Vec<Move> {
+    vec![
+        rapid(x, 5_000, Role::Approach),
+        thread(x, -27_000, true, F3, Role::Cut),
+        thread(x + 6_000, -28_000, false, F3, Role::RunOut),
+        rapid(65_000, -28_000, Role::Retract),
+        rapid(65_000, 5_000, Role::Return),
+    ]
+}
+
+/// The 980TDi's example O0012: four blocks, the last three giving only X
+/// (Z, F, J and K modal); 1.3, 1, 0.7 and 0.1 mm of infeed.
+#[test]
+fn gsk980_example_o0012() {
+    let got = blocks(&example("gsk980-g92-o0012.nc"), &machine(ProfileName::Gsk980));
+    let want: Vec<Vec<Move>> = [58_700, 57_700, 57_000, 56_900].into_iter().map(o0012_pass).collect();
+    assert_eq!(got, want);
+}
+
+/// The 988TA's version of O0012 repeats J3 K1 on every block: the same
+/// passes (normal mode, THM = 0: J and K given, both run-outs).
+#[test]
+fn gsk988_example_o0012() {
+    let src = "O0012;\nM3 S300 G0 X150 Z50 T0101;\nG0 X65 Z5;\nG92 X58.7 Z-28 F3 J3 K1;\nX57.7 J3 K1;\nX57 J3 K1;\n\
+               X56.9 J3 K1;\nM30;\n";
+    let got = blocks(src, &machine(ProfileName::Gsk988));
+    let want: Vec<Vec<Move>> = [58_700, 57_700, 57_000, 56_900].into_iter().map(o0012_pass).collect();
+    assert_eq!(got, want);
+}
+
+/// Figure 3-90 case 2 (U < 0, W < 0, R < 0), an external taper: A = (50,
+/// 2), C = (40, -30), R-5: B = (40 + 2·(-5), 2) = (30, 2). Z long (32 > 5).
+/// J1 K2: the run-out starts at Z = -30 + 2 = -28 on the cut line from B
+/// to C: X = 30 + (40 - 30)·(-28 - 2)/(-30 - 2) = 30 + 9.375 = 39.375; it
+/// ends at Z-30, J = 1 outwards: X42. Retract to X50, return to Z2.
+#[test]
+fn external_taper_with_run_out() {
+    let src = "M3 S500\nG0 X50 Z2\nG92 X40 Z-30 R-5 F2 J1 K2\nM30\n";
+    let got = blocks(src, &machine(ProfileName::Gsk980));
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(30_000, 2_000, Role::Approach),
+            thread(39_375, -28_000, true, F2, Role::Cut),
+            thread(42_000, -30_000, false, F2, Role::RunOut),
+            rapid(50_000, -30_000, Role::Retract),
+            rapid(50_000, 2_000, Role::Return),
+        ]]
+    );
+}
+
+/// R and U of different signs: U = 40 - 50 = -10, R = +4 (radius):
+/// |R| = 4 <= |U/2| = 5, B = (48, 2) lies between A and C. J0: no run-out
+/// (980TDi note 5). With R6, B would be at X52, beyond A (X50): the
+/// manual's condition |R| <= |U/2| refuses it. At R5, B = (50, 2) is A
+/// itself: the approach does not move and is left out (R-ZERO).
+#[test]
+fn opposite_signs_within_and_beyond_the_condition() {
+    let m = machine(ProfileName::Gsk980);
+    let got = blocks("M3 S500\nG0 X50 Z2\nG92 X40 Z-30 R4 F2 J0\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(48_000, 2_000, Role::Approach),
+            thread(40_000, -30_000, true, F2, Role::Cut),
+            rapid(50_000, -30_000, Role::Retract),
+            rapid(50_000, 2_000, Role::Return),
+        ]]
+    );
+    let got = blocks("M3 S500\nG0 X50 Z2\nG92 X40 Z-30 R5 F2 J0\nM30\n", &m);
+    assert_eq!(got[0][0], thread(40_000, -30_000, true, F2, Role::Cut));
+    let e = error("M3 S500\nG0 X50 Z2\nG92 X40 Z-30 R6 F2 J0\nM30\n", &m);
+    assert_eq!(e.line, 3);
+    let ErrorKind::Cycle(CycleError::TaperBeyondStart { taper, infeed }) = e.kind else { panic!("{e}") };
+    assert_eq!((taper.increments, infeed.increments), (6_000, -10_000));
+    assert!(e.to_string().contains("|R| <= |U/2|"), "{e}");
+}
+
+/// An internal thread: A = (20, 2) inside C = (30, -20). J0.5 K1: the cut
+/// runs at X30 to Z-19, the run-out to Z-20 and J = 0.5 towards A (inwards,
+/// away from the work): X29. Retract to X20.
+#[test]
+fn internal_thread() {
+    let got = blocks("M3 S500\nG0 X20 Z2\nG92 X30 Z-20 F1.5 J0.5 K1\nM30\n", &machine(ProfileName::Gsk980));
+    let f15 = Lead { word: LeadWord::F, mantissa: 15, scale: 1 };
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(30_000, 2_000, Role::Approach),
+            thread(30_000, -19_000, true, f15, Role::Cut),
+            thread(29_000, -20_000, false, f15, Role::RunOut),
+            rapid(20_000, -20_000, Role::Retract),
+            rapid(20_000, 2_000, Role::Return),
+        ]]
+    );
+}
+
+/// A steep taper, X the long axis: A = (50, 2), C = (40, -3), R-10: B =
+/// (20, 2); |W| = 5 <= |R| = 10. F1 J0.5 K2: the run-out starts K = 2
+/// (radius) before C along X, X = 40 - 2·2 = 36, on the cut line: Z = 2 +
+/// (-3 - 2)·(36 - 20)/(40 - 20) = -2; it ends at X40 with J = 0.5 along Z
+/// back towards A: Z-2.5. Retract along X to X50 at Z-2.5, return.
+#[test]
+fn x_long_axis() {
+    let got = blocks("M3 S500\nG0 X50 Z2\nG92 X40 Z-3 R-10 F1 J0.5 K2\nM30\n", &machine(ProfileName::Gsk980));
+    let f1 = Lead { word: LeadWord::F, mantissa: 1, scale: 0 };
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(20_000, 2_000, Role::Approach),
+            thread(36_000, -2_000, true, f1, Role::Cut),
+            thread(40_000, -2_500, false, f1, Role::RunOut),
+            rapid(50_000, -2_500, Role::Retract),
+            rapid(50_000, 2_000, Role::Return),
+        ]]
+    );
+}
+
+/// Reading R-G92MODAL. Block 2 gives only X: Z-28, R-1, F3, J3 K1 carry on.
+/// B of block 2 = (57.7 - 2, 5) = (55.7, 5); the run-out starts at Z-27 on
+/// the cut line from (55.7, 5) to (57.7, -28): X = 55.7 + 2·32/33 =
+/// 57.63939… → 57.639; it ends at (63.7, -28). After G00 the mode's values
+/// are forgotten: block 4 is straight, and with J and K omitted the 980TDi
+/// runs out by No.19 (0 by default: none).
+#[test]
+fn modal_words_and_their_end() {
+    let src = "M3 S500\nG0 X65 Z5\nG92 X58.7 Z-28 R-1 F3 J3 K1\nX57.7\nG0 X65\nG92 X57 Z-28\nM30\n";
+    let got = blocks(src, &machine(ProfileName::Gsk980));
+    assert_eq!(got.len(), 3);
+    assert_eq!(
+        got[1],
+        vec![
+            rapid(55_700, 5_000, Role::Approach),
+            thread(57_639, -27_000, true, F3, Role::Cut),
+            thread(63_700, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+    assert_eq!(
+        got[2],
+        vec![
+            rapid(57_000, 5_000, Role::Approach),
+            thread(57_000, -28_000, true, F3, Role::Cut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+}
+
+/// J and K omitted: the chamfer of the parameters. 980TDi No.19 = 10
+/// (tenths of the lead): K = 10 × 0.1 × 3 = 3, J = K at 45° = 3, so the
+/// run-out starts at Z-25 and ends at X58.7 + 6 = X64.7. 988TA 5130 = 10,
+/// 5131 = 30°: K = 3, J = round(3 tan 30°) = round(1.7320508) = 1.732,
+/// X58.7 + 3.464 = X62.164. FANUC 5130 = 10, 5131 = 0 (45°): as the 980TDi.
+#[test]
+fn chamfer_by_parameters() {
+    let src = "M3 S300\nG0 X65 Z5\nG92 X58.7 Z-28 F3\nM30\n";
+    let chamfered = |x_end: i64| {
+        vec![vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -25_000, true, F3, Role::Cut),
+            thread(x_end, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]]
+    };
+    let mut m = machine(ProfileName::Gsk980);
+    m.apply_toml("[parameters]\n19 = 10\n").unwrap();
+    assert_eq!(blocks(src, &m), chamfered(64_700));
+    let mut m = machine(ProfileName::Gsk988);
+    m.apply_toml("[parameters]\n5130 = 10\n5131 = 30\n").unwrap();
+    assert_eq!(blocks(src, &m), chamfered(62_164));
+    // FANUC: a bare length is in increments (3401#0 = 0): Z-28. with its point.
+    let mut m = machine(ProfileName::Fanuc);
+    m.apply_toml("[parameters]\n5130 = 10\n").unwrap();
+    assert_eq!(blocks("M3 S300\nG0 X65. Z5.\nG92 X58.7 Z-28. F3.0\nM30\n", &m), chamfered(64_700));
+}
+
+/// The 988TA's normal-mode rules (THM = 0): K omitted: no long-axis
+/// run-out, J along X at the end (a pull-out from C, X58.7 → X64.7 at
+/// Z-28); J omitted with K: none; J3 K0: none. The 980TDi's notes: K
+/// omitted: K = J; J0 K1: none.
+#[test]
+fn run_out_rules_per_profile() {
+    let one = |src: &str, p: ProfileName| blocks(src, &machine(p)).remove(0);
+    let head = "M3 S300\nG0 X65 Z5\n";
+    let g988 = one(&format!("{head}G92 X58.7 Z-28 F3 J3\n"), ProfileName::Gsk988);
+    assert_eq!(g988[1], thread(58_700, -28_000, true, F3, Role::Cut));
+    assert_eq!(g988[2], thread(64_700, -28_000, false, F3, Role::RunOut));
+    for words in ["K1", "J3 K0"] {
+        let none = one(&format!("{head}G92 X58.7 Z-28 F3 {words}\n"), ProfileName::Gsk988);
+        assert_eq!(none[1], thread(58_700, -28_000, true, F3, Role::Cut), "{words}");
+        assert_eq!(none[2].role, Role::Retract, "{words}");
+    }
+    // 980TDi note 4: K omitted, K = J = 3: the run-out starts at Z-25.
+    let g980 = one(&format!("{head}G92 X58.7 Z-28 F3 J3\n"), ProfileName::Gsk980);
+    assert_eq!(g980[1], thread(58_700, -25_000, true, F3, Role::Cut));
+    assert_eq!(g980[2], thread(64_700, -28_000, false, F3, Role::RunOut));
+    // Note 7: J = 0, K ≠ 0: none.
+    let none = one(&format!("{head}G92 X58.7 Z-28 F3 J0 K1\n"), ProfileName::Gsk980);
+    assert_eq!(none[1], thread(58_700, -28_000, true, F3, Role::Cut));
+}
+
+/// L2 on the 980TDi: the pass is cut twice from A, the second start at
+/// 180°. 988TA L3 Q30: starts at 30°, 150° and 270°.
+#[test]
+fn multi_start_and_start_angle() {
+    let got = blocks("M3 S300\nG0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1 L2\nM30\n", &machine(ProfileName::Gsk980));
+    assert_eq!(got[0].len(), 10);
+    let angles: Vec<(u16, u32, u32)> = got[0]
+        .iter()
+        .filter_map(|m| match m.motion {
+            Motion::Thread { start_angle, sync: true, .. } => {
+                Some((m.pass.unwrap().start, start_angle.num, start_angle.den))
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(angles, [(1, 0, 1), (2, 180_000, 1)]);
+    assert_eq!(
+        got[0][5..],
+        o0012_pass(58_700)[..]
+            .iter()
+            .map(|m| Move {
+                pass: pass(2),
+                motion: match m.motion {
+                    Motion::Thread { lead, sync, .. } =>
+                        Motion::Thread { lead, sync, start_angle: StartAngle::from_millidegrees(180_000) },
+                    other => other,
+                },
+                ..*m
+            })
+            .collect::<Vec<_>>()[..]
+    );
+    let got =
+        blocks("M3 S300\nG0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1 L3 Q30\nM30\n", &machine(ProfileName::Gsk988));
+    let angles: Vec<u64> = got[0]
+        .iter()
+        .filter_map(|m| match m.motion {
+            Motion::Thread { start_angle, sync: true, .. } => Some(start_angle.rounded_millidegrees()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(angles, [30_000, 150_000, 270_000]);
+}
+
+/// The alarms, each on its line and word: no infeed (U = 0), a face
+/// thread (W = 0), a run-out longer than the thread (988TA note 4), L
+/// beyond 99 on the 980TDi, P1 (face threads) not modelled, G92 without an
+/// end point, words the profile does not have.
+#[test]
+fn alarms() {
+    let m980 = machine(ProfileName::Gsk980);
+    let m988 = machine(ProfileName::Gsk988);
+    let head = "M3 S300\nG0 X65 Z5\n";
+    let e = error(&format!("{head}G92 X65 Z-28 F3\n"), &m980);
+    assert_eq!((e.line, e.kind), (3, ErrorKind::Cycle(CycleError::NoInfeed)));
+    let e = error(&format!("{head}G92 X58 W0 F3\n"), &m980);
+    assert_eq!((e.line, e.kind), (3, ErrorKind::Cycle(CycleError::FaceThread)));
+    let e = error(&format!("{head}G92 X58 Z4 F3 J1 K2\n"), &m980);
+    let ErrorKind::Cycle(CycleError::RunOutTooLong { run_out, length }) = e.kind else { panic!("{e}") };
+    assert_eq!((run_out.increments, length.increments), (2_000, 1_000));
+    let e = error(&format!("{head}G92 X58 Z-28 F3 L100\n"), &m980);
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("L100")));
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+    let e = error(&format!("{head}G92 X58 Z-28 F3 P1\n"), &m988);
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("P1")));
+    assert!(e.to_string().contains("face threads"), "{e}");
+    let e = error(&format!("{head}G92 F3\n"), &m980);
+    assert!(matches!(e.kind, ErrorKind::Missing { .. }), "{e}");
+    let e = error(&format!("{head}G92 X58 Z-28 F3 Q30\n"), &m980);
+    assert!(matches!(e.kind, ErrorKind::AddressNotInProfile { .. }), "{e}");
+    let e = error(&format!("{head}G92 X58 Z-28 F3 J1\n"), &machine(ProfileName::Fanuc));
+    assert_eq!(e.word.as_deref(), Some("J1"));
+    assert!(matches!(e.kind, ErrorKind::AddressNotInProfile { .. }), "{e}");
+}
+
+/// The model's checks, direct: the run-out words share G76's rules.
+#[test]
+fn validate_shares_the_run_out_checks() {
+    let c = cycleref::G92Cycle {
+        units: cycleref::Units::IS_B_METRIC,
+        x_mode: cycleref::XMode::Diameter,
+        start: Point::new(65_000, 5_000),
+        end: Point::new(58_700, -28_000),
+        taper: 0,
+        lead: F3,
+        run_out: RunOut::Chamfer { tenths_of_lead: 100, angle_degrees: 45, long: None },
+        starts: 1,
+        start_angle: StartAngle::ZERO,
+    };
+    assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 100, .. })));
+    let c = cycleref::G92Cycle { starts: 0, run_out: RunOut::None, ..c };
+    assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 0, .. })));
+}
