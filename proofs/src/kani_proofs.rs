@@ -25,12 +25,13 @@
 //! the `stub_verified` harnesses would unroll without their stubs).
 
 use crate::contracts;
+use crate::g92;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
 use crate::thread;
 use crate::windows::{
-    DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW, GROOVE_WINDOW,
+    ISQRT_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -230,6 +231,20 @@ fn no_rapid_in_thread() {
 #[kani::unwind(5)]
 fn g32_no_rapid() {
     thread::g32_no_rapid(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
+}
+
+/// The G92 pass over [`G92_WINDOW`]: steps ①-④ in order, B from the
+/// words, the run-out K before C and J away from the work, every point
+/// between the X of A and the cut line, the starts' angles. Unwind 12;
+/// measured: 10 moves (two starts of 5), 4 path steps to a move, 2
+/// iterations of `G92Moves::next`, 9 gcd steps.
+/// Contracts: `round_div`, `saturate_i64` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(12)]
+fn g92_pass() {
+    g92::g92_pass(G92_WINDOW.0, G92_WINDOW.1, G92_WINDOW.2, &cycleref::expand_g92);
 }
 
 /// G75.1 pecks and steps over [`GROOVE_WINDOW`] (≤ 4 increments). Unwind

@@ -88,6 +88,10 @@ pub const MUL_TAN_WINDOW: ((i64, i64), (i64, i64)) = ((i64::MIN, i64::MAX), (0, 
 /// The G32 run-out window: start and end within 1 000 increments, |J|, K ≤ 100.
 pub const G32_WINDOW: (i64, i64) = (1_000, 100);
 
+/// The G92 window: A, C and R within 1 000 increments, J and K up to
+/// 100, one or two starts.
+pub const G92_WINDOW: (i64, i64, i64) = (1_000, 100, 2);
+
 /// G75.1: right-angle grooves up to 4 increments deep and wide.
 pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     depth: (1, 4),
@@ -109,7 +113,7 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
 };
 
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 23] = [
+pub const UNWIND: [(&str, u32); 24] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -127,6 +131,7 @@ pub const UNWIND: [(&str, u32); 23] = [
     ("g32_run_out", 5),
     ("no_rapid_in_thread", 79),
     ("g32_no_rapid", 5),
+    ("g92_pass", 12),
     ("groove_pecks_and_steps", 66),
     ("groove_layers", 66),
     ("groove_inside", 66),

@@ -447,6 +447,34 @@ fn g32_stays_below_its_unwind_bound() {
     m.check("g32_no_rapid");
 }
 
+/// `g92_pass`: its window sampled and, exhaustively, every block within 3
+/// increments with two starts (the most moves: 5 a start).
+#[test]
+fn g92_stays_below_its_unwind_bound() {
+    let _one = lock();
+    let (reach, run_out, starts) = windows::G92_WINDOW;
+    let moves = Rc::new(Cell::new(0_u32));
+    let counting = |c: &cycleref::G92Cycle| {
+        cycleref::expand_g92(c).map(|it| {
+            let v: Vec<Move> = it.collect();
+            let n = u32::try_from(v.len()).unwrap_or(u32::MAX);
+            moves.set(moves.get().max(n));
+            v.into_iter()
+        })
+    };
+    let mut m = Maxima::default();
+    measure(&mut m, "g92 (sampled window)", SAMPLE, |_| {
+        cycleref_proofs::g92::g92_pass(reach, run_out, starts, &counting);
+    });
+    measure(&mut m, "g92 (within 2)", Mode::Enumerate { max_runs: 5_000_000 }, |_| {
+        cycleref_proofs::g92::g92_pass(2, 2, starts, &counting);
+    });
+    m.take(moves.get());
+    let most = m.check("g92_pass");
+    assert_eq!(moves.get(), 10, "two starts of five moves");
+    assert!(most >= 10);
+}
+
 #[test]
 fn the_kani_attributes_are_the_bounds_checked_here() {
     let src = include_str!("../src/kani_proofs.rs");
