@@ -384,7 +384,8 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
 }
 
 /// Writes the pass tables of `job`: every G76 cycle, then every G75.1
-/// cycle, then one table of the G32 blocks (each a pass over the program).
+/// cycle, then one table of the G32 blocks and one of the G92 blocks (each
+/// a pass over the program).
 ///
 /// # Errors
 ///
@@ -405,6 +406,7 @@ pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
     let written = table(summary.g76, g76_tables, &mut out)
         .and_then(|()| table(summary.g75, groove_tables, &mut out))
         .and_then(|()| table(summary.g32, thread_table, &mut out))
+        .and_then(|()| table(summary.g92, g92_table, &mut out))
         .and_then(|()| out.flush());
     written.map_err(|e| Failure::output(&e))
 }
@@ -545,6 +547,69 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             rx,
             rz
         )
+    })?;
+    if any {
+        out.write_all(b"\n")?;
+    }
+    Ok(())
+}
+
+/// One table of the program's G92 blocks, a row per block and start: the
+/// cut start B, where the cut ends and where the run-out ends.
+fn g92_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    let mut any = false;
+    each_item(job, |item| {
+        let Item::G92(call) = &item else { return Ok(()) };
+        if !any {
+            any = true;
+            writeln!(out, "G92 blocks ({}):", job.name)?;
+            writeln!(
+                out,
+                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+                "line", "start", "B X", "B Z", "cut to X", "cut to Z", "run-out X", "run-out Z"
+            )?;
+        }
+        let c = &call.cycle;
+        let u = c.units;
+        // B is the end of the approach, or A itself when B is A (R-ZERO).
+        let mut row = |start: u16, b: Point, cut: Point, run_out: Option<Point>| {
+            let (rx, rz) = run_out.map_or(("-".into(), "-".into()), |p: Point| {
+                (Fixed::new(p.x, u).to_string(), Fixed::new(p.z, u).to_string())
+            });
+            writeln!(
+                out,
+                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
+                call.block.line,
+                start,
+                Fixed::new(b.x, u),
+                Fixed::new(b.z, u),
+                Fixed::new(cut.x, u),
+                Fixed::new(cut.z, u),
+                rx,
+                rz
+            )
+        };
+        // (start, B, end of the cut, end of the run-out); a cut left out
+        // (K = |W|: the whole thread is run-out) ends at B.
+        let mut current: Option<(u16, Point, Option<Point>, Option<Point>)> = None;
+        for m in moves(job, Cycle::G92(call))? {
+            let start = m.pass.map_or(1, |p| p.start);
+            if let Some((s, b, cut, r)) = current.filter(|(s, ..)| *s != start) {
+                row(s, b, cut.unwrap_or(b), r)?;
+                current = None;
+            }
+            let entry = current.get_or_insert((start, c.start, None, None));
+            match m.role {
+                Role::Approach => entry.1 = m.to,
+                Role::Cut => entry.2 = Some(m.to),
+                Role::RunOut => entry.3 = Some(m.to),
+                _ => {}
+            }
+        }
+        if let Some((s, b, cut, r)) = current {
+            row(s, b, cut.unwrap_or(b), r)?;
+        }
+        Ok(())
     })?;
     if any {
         out.write_all(b"\n")?;
