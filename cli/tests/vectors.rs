@@ -1,5 +1,5 @@
 //! `cycleref vectors`: the checked-in corpus in `vectors/` is exactly what
-//! the generator writes for `--count 90 --seed 1`, it covers every feature
+//! the generator writes for `--count 100 --seed 1`, it covers every feature
 //! and every listed error kind, and every case replays: its program, read
 //! again with its machine settings, gives its expectation (the moves through
 //! `cycleref expand --format json` with both engines, the error through the
@@ -16,9 +16,9 @@ use serde_json::Value;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../vectors");
-const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 90 --seed 1 --out vectors";
+const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 100 --seed 1 --out vectors";
 
-/// Tags every corpus of 90 cases shows on at least one case with moves.
+/// Tags every corpus of 100 cases shows on at least one case with moves.
 const FEATURES: &[&str] = &[
     "profile:fanuc",
     "profile:gsk980",
@@ -114,9 +114,29 @@ const FEATURES: &[&str] = &[
     "g75:chamfers",
     "g75:arcs",
     "rule:g75-start-omitted",
+    "g92",
+    "g92:straight",
+    "g92:taper",
+    "g92:x-long",
+    "g92:external",
+    "g92:internal",
+    "g92:run-out",
+    "g92:pull-out",
+    "g92:chamfer",
+    "g92:multi-start",
+    "g92:q",
+    "rule:g92-modal",
+    "rule:g92-gsk980-jk",
+    "rule:g92-gsk980-k0",
+    "rule:g92-gsk980-j0",
+    "rule:g92-gsk980-no19",
+    "rule:g92-gsk988-jk",
+    "rule:g92-gsk988-j-only",
+    "rule:g92-gsk988-k-only",
+    "rule:g92-gsk988-5130",
 ];
 
-/// Error kinds every corpus of 90 cases refuses at least once, with the
+/// Error kinds every corpus of 100 cases refuses at least once, with the
 /// scenario tag of the refusal.
 const REFUSALS: &[(&str, &str)] = &[
     ("missing", "refuse:missing-p"),
@@ -153,6 +173,8 @@ const REFUSALS: &[(&str, &str)] = &[
     ("cycle:word_out_of_range", "refuse:g75-word-out-of-range"),
     ("cycle:no_groove_depth", "refuse:g75-no-depth"),
     ("cycle:too_many_pecks", "refuse:g75-too-many-pecks"),
+    ("cycle:taper_beyond_start", "refuse:g92-taper-beyond-start"),
+    ("cycle:no_infeed", "refuse:g92-no-infeed"),
 ];
 
 /// The stable kind names of `vectors/README.md`, written out again here
@@ -256,7 +278,7 @@ fn cases(dir: &Path) -> Vec<Value> {
 
 #[test]
 fn checked_in_corpus_is_what_the_generator_writes() {
-    let fresh = files(&generate(90, 1, "fresh"));
+    let fresh = files(&generate(100, 1, "fresh"));
     let stored = files(Path::new(CORPUS));
     assert_eq!(
         fresh.keys().collect::<Vec<_>>(),
@@ -333,7 +355,7 @@ fn the_corpus_covers_every_feature_and_error_kind() {
 fn other_seeds_cover_everything_too() {
     // Each template fixes what it covers; the seed only varies the rest.
     for seed in [2, 3] {
-        assert_covered(&generate(90, seed, &format!("seed-{seed}")));
+        assert_covered(&generate(100, seed, &format!("seed-{seed}")));
     }
 }
 
@@ -388,7 +410,12 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
                 cycleref::expand_g75(&c.cycle).map(Iterator::count),
                 cycleref_spec::g75::expand(&c.cycle).map(|v| v.len()),
             ),
-            _ => continue,
+            Item::G92(c) => (
+                c.block.line,
+                cycleref::expand_g92(&c.cycle).map(Iterator::count),
+                cycleref_spec::g92::expand(&c.cycle).map(|v| v.len()),
+            ),
+            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => continue,
         };
         assert_eq!(engine, reference, "line {line}: the engines differ");
         if let Err(e) = engine {
@@ -402,7 +429,7 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
 fn every_case_replays() {
     let dir = scratch("replay");
     let all = cases(Path::new(CORPUS));
-    assert_eq!(all.len(), 90);
+    assert_eq!(all.len(), 100);
     for case in &all {
         let id = case["id"].as_str().unwrap();
         assert_eq!(case["schema"], "cycleref-vector/1", "{id}");

@@ -6,11 +6,298 @@
 //! next X (the modal values repeat), each one pass of the same thread.
 
 use std::collections::BTreeSet;
+use std::fmt::Write as _;
 
-use cycleref::{LeadWord, Move, RunOut};
+use cycleref::{CycleError, LeadWord, Move, RunOut};
 use cycleref_spec::reader::G92Call;
+use cycleref_spec::{ErrorKind, ProfileName};
 
-use super::tag;
+use super::g32::{line32, Line32};
+use super::machine::{any_profile, gsk, head, Ctx, Param};
+use super::{tag, Draft, Expected, Rng, Template};
+
+/// A G92 block: `G92` (on the first block of the mode) and its words.
+fn g92(first: bool, words: &[String]) -> String {
+    let mut s = String::from(if first { "G92" } else { "" });
+    for w in words {
+        if !s.is_empty() {
+            s.push(' ');
+        }
+        let _ = write!(s, "{w}");
+    }
+    s
+}
+
+/// A start point A clear of the thread `l` (radius values, the side of
+/// `l`): `clear` beyond its crest at the start and at the end, on the Z of
+/// its start.
+fn start_point(ctx: &Ctx, l: &Line32, k: i64, clear: i64) -> (i64, i64) {
+    let reach = if l.side > 0 { l.taper.max(0) } else { l.taper.min(0) };
+    (ctx.xf() * (l.r0 + reach + l.side * (k + clear)), l.z0)
+}
+
+/// The blocks of one thread cut in passes at the depths `depths` of a
+/// thread `k` deep: the first names X, Z, R, the lead and `extra`; the
+/// others only X (the rest is modal, R-G92MODAL). The cut end X of pass
+/// n is the crest line's end less its depth.
+fn passes_lines(ctx: &Ctx, l: &Line32, k: i64, depths: &[i64], extra: &[String]) -> Vec<String> {
+    let xf = ctx.xf();
+    let mut lines = Vec::new();
+    for (n, depth) in depths.iter().enumerate() {
+        // Radius of the crest at C (the end), less the pass's depth.
+        let end_r = l.r0 + l.taper + l.side * (k - depth);
+        let x = format!("X{}", ctx.num(xf * end_r));
+        if n == 0 {
+            let mut words = vec![x, format!("Z{}", ctx.num(l.z1))];
+            if l.taper != 0 {
+                // R: X of B minus X of C, radius.
+                words.push(format!("R{}", ctx.num(-l.taper)));
+            }
+            words.push(l.lead.clone());
+            words.extend(extra.iter().cloned());
+            lines.push(g92(true, &words));
+        } else {
+            lines.push(x);
+        }
+    }
+    lines
+}
+
+// ---- the valid G92 templates ----
+
+/// A thread cut in three or four G92 blocks, the manuals' way.
+pub(super) const PASSES: Template = Template {
+    id: "g92-passes",
+    // The draft requires g92:straight or g92:taper, as it drew.
+    outcome: Expected::Valid(&["g92"]),
+    tags: &["template:g92-passes", "rule:g92-modal"],
+    description: "G92 thread cut in passes, blocks after the first giving only X",
+    generate: passes,
+};
+
+fn passes(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(any_profile(rng), rng);
+    let taper = rng.chance(40);
+    let l = line32(rng, &ctx, taper);
+    let k = l.lead_inc * 6 / 10;
+    let depths =
+        if rng.chance(50) { vec![k / 2, k * 4 / 5, k] } else { vec![k / 3, k * 2 / 3, k * 9 / 10, k] };
+    let run_out = ctx.profile != ProfileName::Fanuc && rng.chance(60);
+    let extra = if run_out {
+        vec![
+            format!("J{}", ctx.num(ctx.mm(rng.range(500, 2000)))),
+            format!("K{}", ctx.num(ctx.mm(rng.range(500, 3000)))),
+        ]
+    } else if ctx.profile == ProfileName::Gsk980 {
+        // J0: none (note 5); without it No.19 decides.
+        vec!["J0".to_string()]
+    } else {
+        vec![]
+    };
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 5000)));
+    let mut lines = head(rng, &ctx, a);
+    lines.extend(passes_lines(&ctx, &l, k, &depths, &extra));
+    lines.push("M30".into());
+    let what = if taper { "taper" } else { "straight" };
+    let side = if l.side > 0 { "external" } else { "internal" };
+    Draft::new(ctx, lines)
+        .described(format!("G92 {what} {side} thread cut in {} blocks, X only after the first", depths.len()))
+        .requiring(if taper { &["g92:taper"] } else { &["g92:straight"] })
+        .tag_if(run_out, "g92:run-out")
+}
+
+/// The 980TDi's run-out notes, block by block (J and K modal).
+pub(super) const RUNOUT_980: Template = Template {
+    id: "g92-run-out-gsk980",
+    outcome: Expected::Valid(&["g92:run-out", "g92:chamfer", "g92:multi-start"]),
+    tags: &[
+        "template:g92-run-out-gsk980",
+        "rule:g92-gsk980-jk",
+        "rule:g92-gsk980-k0",
+        "rule:g92-gsk980-j0",
+        "rule:g92-gsk980-no19",
+        "rule:g92-modal",
+    ],
+    description:
+        "GSK 980TDi G92 two-start thread, run-out notes: J and K; K0 (K = J); J0 (none); after G00, \
+                  J and K omitted (No.19)",
+    generate: runout_980,
+};
+
+fn runout_980(rng: &mut Rng) -> Draft {
+    let mut ctx = Ctx::new(ProfileName::Gsk980, rng);
+    ctx.params.insert("19", Param::Int(rng.range(1, 20)));
+    let taper = rng.chance(30);
+    let l = line32(rng, &ctx, taper);
+    let k = l.lead_inc * 6 / 10;
+    let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 4000)));
+    let mut lines = head(rng, &ctx, a);
+    let jk = [format!("J{}", ctx.num(j)), format!("K{}", ctx.num(kk))];
+    let mut first = jk.to_vec();
+    first.push("L2".into());
+    let mut blocks = passes_lines(&ctx, &l, k, &[k / 2, k * 3 / 4, k], &first);
+    // Block 2: K0 (K = J); block 3: J0 (none).
+    blocks[1].push_str(" K0");
+    blocks[2].push_str(" J0");
+    lines.extend(blocks);
+    // The mode ends; a new G92 without J, K: No.19's chamfer.
+    lines.push(format!("G00 X{} Z{}", ctx.num(a.0), ctx.num(a.1)));
+    lines.extend(passes_lines(&ctx, &l, k, &[k], &[]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// The 988TA's normal-mode rules (THM = 0).
+pub(super) const RUNOUT_988: Template = Template {
+    id: "g92-run-out-gsk988",
+    outcome: Expected::Valid(&["g92:run-out", "g92:pull-out", "g92:chamfer"]),
+    tags: &[
+        "template:g92-run-out-gsk988",
+        "rule:g92-gsk988-jk",
+        "rule:g92-gsk988-j-only",
+        "rule:g92-gsk988-k-only",
+        "rule:g92-gsk988-5130",
+    ],
+    description:
+        "GSK 988TA G92 normal mode: J and K; J only (a pull-out along X at C); K only (none); J and K \
+                  omitted (5130, 5131)",
+    generate: runout_988,
+};
+
+fn runout_988(rng: &mut Rng) -> Draft {
+    let mut ctx = Ctx::new(ProfileName::Gsk988, rng);
+    ctx.params.insert("5130", Param::Int(rng.range(1, 20)));
+    ctx.params.insert("5131", Param::Int(rng.pick(&[0, 30, 45, 60])));
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 4000)));
+    let mut lines = head(rng, &ctx, a);
+    let variants: [Vec<String>; 4] = [
+        vec![format!("J{}", ctx.num(j)), format!("K{}", ctx.num(kk))],
+        vec![format!("J{}", ctx.num(j))],
+        vec![format!("K{}", ctx.num(kk))],
+        vec![],
+    ];
+    // Each variant from G00 (which ends the mode and its J, K).
+    for (n, words) in variants.iter().enumerate() {
+        if n > 0 {
+            lines.push(format!("G00 X{} Z{}", ctx.num(a.0), ctx.num(a.1)));
+        }
+        lines.extend(passes_lines(&ctx, &l, k, &[k], words));
+    }
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// Multi-start G92 on the 988TA, the first start at Q (the 980TDi's L is
+/// in its run-out template).
+pub(super) const MULTI_START: Template = Template {
+    id: "g92-multi-start",
+    outcome: Expected::Valid(&["g92:multi-start", "g92:q", "g92:internal"]),
+    tags: &["template:g92-multi-start", "rule:starts"],
+    description: "GSK 988TA G92 internal multi-start thread: each start a full pass from A, the first at Q, \
+                  the others 360/L apart",
+    generate: multi_start,
+};
+
+fn multi_start(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let starts = rng.range(2, 4);
+    let extra = vec![format!("L{starts}"), format!("Q{}", ctx.q(rng.pick(&[15_000, 30_000, 90_000])))];
+    let mut lines = head(rng, &ctx, start_point(&ctx, &l, k, ctx.mm(3000)));
+    lines.extend(passes_lines(&ctx, &l, k, &[k / 2, k], &extra));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// A steep taper: X the long axis.
+pub(super) const X_LONG: Template = Template {
+    id: "g92-x-long",
+    outcome: Expected::Valid(&["g92:x-long", "g92:taper", "g92:external"]),
+    tags: &["template:g92-x-long", "rule:long-axis"],
+    description: "G92 steep taper, |R| >= |W|: X the long axis, the run-out K along X and J along Z",
+    generate: x_long,
+};
+
+fn x_long(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let mut l = line32(rng, &ctx, false);
+    l.len = ctx.mm(rng.range(2000, 5000));
+    l.z1 = l.z0 + l.dir * l.len;
+    // The thread's radius falls (external) or grows (internal) by more than its length.
+    l.taper = -l.side * (l.len + ctx.mm(rng.range(0, 4000)));
+    l.r0 = l.r0.max(l.taper.abs() + ctx.mm(8000));
+    let k = l.lead_inc * 6 / 10;
+    let extra = vec![
+        format!("J{}", ctx.num(ctx.mm(rng.range(300, 1000)))),
+        format!("K{}", ctx.num(ctx.mm(rng.range(300, 1500)))),
+    ];
+    let mut lines = head(rng, &ctx, start_point(&ctx, &l, k, ctx.mm(3000)));
+    lines.extend(passes_lines(&ctx, &l, k, &[k / 2, k], &extra));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+// ---- the refused G92 templates ----
+
+/// R against U beyond the manual's condition |R| <= |U/2|.
+pub(super) const TAPER_BEYOND: Template = Template {
+    id: "g92-taper-beyond-start",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::TaperBeyondStart { .. }))),
+    tags: &["refuse:g92-taper-beyond-start"],
+    description:
+        "G92 whose R and U differ in sign with |R| > |U/2|: the cut start B lies beyond the start point",
+    generate: taper_beyond,
+};
+
+fn taper_beyond(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(any_profile(rng), rng);
+    let xf = ctx.xf();
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    // C at the crest; R towards A, one increment to 2 mm beyond A (radius).
+    let c_r = l.r0 + l.side * k;
+    let gap = a.0 / xf - c_r;
+    let r = gap + l.side * ctx.mm(rng.range(1, 2000)).max(1);
+    let mut lines = head(rng, &ctx, a);
+    lines.push(g92(
+        true,
+        &[
+            format!("X{}", ctx.num(xf * c_r)),
+            format!("Z{}", ctx.num(l.z1)),
+            format!("R{}", ctx.num(r)),
+            l.lead.clone(),
+        ],
+    ));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// A cut end on the X of the start point.
+pub(super) const NO_INFEED: Template = Template {
+    id: "g92-no-infeed",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::NoInfeed))),
+    tags: &["refuse:g92-no-infeed"],
+    description: "G92 whose cut end has the X of the start point (U0): no side for the run-out and retract",
+    generate: no_infeed,
+};
+
+fn no_infeed(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(any_profile(rng), rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let mut lines = head(rng, &ctx, a);
+    let x = if rng.chance(50) { format!("X{}", ctx.num(a.0)) } else { format!("U{}", ctx.num(0)) };
+    lines.push(g92(true, &[x, format!("Z{}", ctx.num(l.z1)), l.lead.clone()]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
 
 // ---- what a G92 block shows ----
 

@@ -15,10 +15,10 @@
 //!    count extends a smaller one.
 //! 2. **Template.** The template of case `i` depends on `i` alone
 //!    (`template`): 3 slots in 5 take the valid templates of `TEMPLATES`
-//!    in turn, 2 in 5 the refused ones, and the first 90 cases (the
+//!    in turn, 2 in 5 the refused ones, and the first 100 cases (the
 //!    checked-in corpus) use every template at least once. A template is
 //!    one `Template` entry, declared beside its generator in the module of
-//!    its cycle (`g76`, `g32`, `g75`) or in `refused`: its id, what it must
+//!    its cycle (`g76`, `g32`, `g75`, `g92`) or in `refused`: its id, what it must
 //!    turn out to be (`Expected`: valid with some features, or refused with
 //!    an error kind the compiler checks), its tags and description, and the
 //!    generator.
@@ -338,6 +338,11 @@ const TEMPLATES: &[&Template] = &[
     &g75::CORNERS,
     &g75::SLOPE,
     &g75::INTERNAL,
+    &g92::PASSES,
+    &g92::RUNOUT_980,
+    &g92::RUNOUT_988,
+    &g92::MULTI_START,
+    &g92::X_LONG,
     &refused::MISSING_P,
     &refused::MISSING_Q,
     &refused::MIN_CUT,
@@ -373,6 +378,8 @@ const TEMPLATES: &[&Template] = &[
     &refused::G75_WORD,
     &refused::G75_NO_DEPTH,
     &refused::G75_TOO_MANY_PECKS,
+    &g92::TAPER_BEYOND,
+    &g92::NO_INFEED,
 ];
 
 /// The templates of one kind (refused or valid), in schedule order.
@@ -616,8 +623,8 @@ mod tests {
     }
 
     #[test]
-    fn the_first_90_cases_use_every_template() {
-        let used: BTreeSet<&str> = (1..=90).map(|i| template(i).id).collect();
+    fn the_first_100_cases_use_every_template() {
+        let used: BTreeSet<&str> = (1..=100).map(|i| template(i).id).collect();
         let all: BTreeSet<&str> = TEMPLATES.iter().map(|t| t.id).collect();
         assert_eq!(used, all);
     }
