@@ -72,7 +72,11 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
             cycleref_spec::Item::G75(c) => out.extend(cycleref::expand_g75(&c.cycle).unwrap().map(|m| {
                 CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G75, c.block.line)
             })),
-            _ => {}
+            cycleref_spec::Item::G92(c) => out.extend(cycleref::expand_g92(&c.cycle).unwrap().map(|m| {
+                CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G92, c.block.line)
+            })),
+            // Named, not `_`: a new kind of item must be added here.
+            cycleref_spec::Item::Source(_) | cycleref_spec::Item::G76Params(_) | cycleref_spec::Item::G75Params(_) => {}
         }
     }
     out
@@ -108,6 +112,7 @@ const EXAMPLES: &[(&str, CyclerefProfile, ProfileName, cycleref::IncrementSystem
         ("gsk980-g75-seed.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsC),
         ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk980-g92-o0012.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
     ]
 };
 
@@ -148,6 +153,35 @@ fn g32_moves_have_no_pass() {
         assert_eq!(
             (m.cycle, m.motion, m.has_pass, m.pass_number, m.pass_depth),
             (CyclerefCycle::G32, CyclerefMotion::Thread, 0, 0, 0)
+        );
+    }
+}
+
+/// The 980TDi's G92 example O0012 through the C interface: each block one
+/// pass of kind `Single` (depth and cut 0), the values worked out in
+/// spec/tests/g92.rs (A = X65 Z5, C at Z-28, J3 K1).
+#[test]
+fn g92_blocks_are_single_passes() {
+    let text = example("gsk980-g92-o0012.nc");
+    let moves = expand(&text, &options(CyclerefProfile::Gsk980)).unwrap();
+    assert_eq!(moves.len(), 20);
+    let first: Vec<_> = moves[..5].iter().map(|m| (m.line, m.motion, m.role, m.x, m.z, m.sync)).collect();
+    assert_eq!(
+        first,
+        vec![
+            (4, CyclerefMotion::Rapid, CyclerefRole::Approach, 58_700, 5_000, 0),
+            (4, CyclerefMotion::Thread, CyclerefRole::Cut, 58_700, -27_000, 1),
+            (4, CyclerefMotion::Thread, CyclerefRole::RunOut, 64_700, -28_000, 0),
+            (4, CyclerefMotion::Rapid, CyclerefRole::Retract, 65_000, -28_000, 0),
+            (4, CyclerefMotion::Rapid, CyclerefRole::Return, 65_000, 5_000, 0),
+        ]
+    );
+    let lines: Vec<usize> = moves.iter().step_by(5).map(|m| m.line).collect();
+    assert_eq!(lines, [4, 5, 6, 7]);
+    for m in &moves {
+        assert_eq!(
+            (m.cycle, m.has_pass, m.pass_kind, m.pass_number, m.pass_start, m.pass_depth, m.pass_cut),
+            (CyclerefCycle::G92, 1, CyclerefPassKind::Single, 1, 1, 0, 0)
         );
     }
 }
