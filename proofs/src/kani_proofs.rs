@@ -27,10 +27,11 @@
 use crate::contracts;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
+use crate::schedule;
 use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -312,4 +313,20 @@ fn groove_material() {
 #[kani::solver(cadical)]
 fn groove_no_panic() {
     groove::groove_no_panic(&GrooveDomain::FULL, 8);
+}
+
+/// The depth schedule, one step from any level `n` (an induction: see
+/// `crate::schedule`), over [`SCHEDULE_STEP_WINDOW`]: every documented Δd,
+/// Δdmin, k - d and every state that satisfies the invariant, so every
+/// level of every cycle. No loop over the levels; the only loop reached is
+/// Newton's in `round_sqrt` (stubbed). Unwind 7; measured without the
+/// stub: 5 Newton steps on `u64` (a law state has `Δd² (n + 1) < 2^61`,
+/// never `u128`; the minimum-cut phase takes no root), and 6 is Newton's
+/// most on any `u64`. Contracts: `round_sqrt` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::unwind(7)]
+#[kani::solver(cadical)]
+fn schedule_step() {
+    schedule::schedule_step(&SCHEDULE_STEP_WINDOW, &cycleref::engine::schedule::Schedule::next_level);
 }

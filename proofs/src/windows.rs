@@ -7,6 +7,7 @@
 
 use crate::groove::GrooveDomain;
 use crate::harness::Domain;
+use crate::schedule::ScheduleDomain;
 
 /// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
 /// one start, every infeed mode, side, direction, unit code, run-out kind,
@@ -108,8 +109,19 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     units: (0, 7),
 };
 
+/// The one-step schedule harness: every documented Δd, Δdmin, k - d
+/// (`< 2^30`) and every state (depth ≤ k - d, level ≤ depth) that
+/// satisfies the invariant, i.e. every level of every cycle.
+pub const SCHEDULE_STEP_WINDOW: ScheduleDomain = ScheduleDomain {
+    first_depth: (1, 999_999_999),
+    min_cut: (0, 999_999_999),
+    last: (0, 999_999_999),
+    depth: (0, 999_999_999),
+    level: (0, 999_999_999),
+};
+
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 23] = [
+pub const UNWIND: [(&str, u32); 24] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -133,6 +145,7 @@ pub const UNWIND: [(&str, u32); 23] = [
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
     ("groove_no_panic", 1_000_001),
+    ("schedule_step", 7),
 ];
 
 /// The bound of harness `name` in [`UNWIND`].
