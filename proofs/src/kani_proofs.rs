@@ -31,7 +31,8 @@ use crate::schedule;
 use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
+    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -206,10 +207,13 @@ fn g32_run_out() {
     harness::g32_run_out(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
 }
 
-/// No rapid enters the thread (G76, Z long) over [`G76_WINDOW`]: every
-/// rapid stays out of the open region between the crest and root lines
-/// from the last pass start to D (`crate::thread`), checked as the moves
-/// stream. Unwind 79; measured as P1 (78 moves, the harness's loop).
+/// No rapid enters the thread (G76, Z and X long) over
+/// [`NO_RAPID_WINDOW`] ([`G76_WINDOW`] with lengths from 1, so X long too):
+/// every rapid stays out of the open region between the crest and root
+/// lines from the last pass start to D (`crate::thread`), but the retract
+/// after an X-long run-out (the finding in `crate::thread`), checked as the
+/// moves stream. Unwind 79; measured: 78 moves (the harness's loop), the
+/// engine's loops as P1.
 /// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
 /// (stubbed).
 #[kani::proof]
@@ -219,7 +223,7 @@ fn g32_run_out() {
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn no_rapid_in_thread() {
-    thread::no_rapid_in_thread(&G76_WINDOW, &FixedPoint);
+    thread::no_rapid_in_thread(&NO_RAPID_WINDOW, &FixedPoint);
 }
 
 /// No rapid in a G32 block over [`G32_WINDOW`]. Unwind 5; measured as

@@ -39,6 +39,10 @@ pub const G76_WINDOW: Domain = Domain {
     wild_x: 2,
 };
 
+/// The window of `no_rapid_in_thread`: [`G76_WINDOW`] with threads from 1
+/// increment long, so that X is the long axis too (`|i| ≥ |W|`, taper ±6).
+pub const NO_RAPID_WINDOW: Domain = Domain { length: (1, 40), ..G76_WINDOW };
+
 /// P3's window: [`G76_WINDOW`] with two starts (the finishing passes per
 /// start), k ≤ 4.
 pub const FINISHING_WINDOW: Domain =
