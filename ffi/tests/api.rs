@@ -76,7 +76,9 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
                 CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G92, c.block.line)
             })),
             // Named, not `_`: a new kind of item must be added here.
-            cycleref_spec::Item::Source(_) | cycleref_spec::Item::G76Params(_) | cycleref_spec::Item::G75Params(_) => {}
+            cycleref_spec::Item::Source(_)
+            | cycleref_spec::Item::G76Params(_)
+            | cycleref_spec::Item::G75Params(_) => {}
         }
     }
     out

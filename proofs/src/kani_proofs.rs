@@ -28,10 +28,12 @@ use crate::contracts;
 use crate::g92;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
+use crate::schedule;
 use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW, GROOVE_WINDOW,
-    ISQRT_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    ISQRT_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW,
+    SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -206,10 +208,13 @@ fn g32_run_out() {
     harness::g32_run_out(G32_WINDOW.0, G32_WINDOW.1, &cycleref::expand_g32);
 }
 
-/// No rapid enters the thread (G76, Z long) over [`G76_WINDOW`]: every
-/// rapid stays out of the open region between the crest and root lines
-/// from the last pass start to D (`crate::thread`), checked as the moves
-/// stream. Unwind 79; measured as P1 (78 moves, the harness's loop).
+/// No rapid enters the thread (G76, Z and X long) over
+/// [`NO_RAPID_WINDOW`] ([`G76_WINDOW`] with lengths from 1, so X long too):
+/// every rapid stays out of the open region between the crest and root
+/// lines from the last pass start to D (`crate::thread`), but the retract
+/// after an X-long run-out (the finding in `crate::thread`), checked as the
+/// moves stream. Unwind 79; measured: 78 moves (the harness's loop), the
+/// engine's loops as P1.
 /// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
 /// (stubbed).
 #[kani::proof]
@@ -219,7 +224,7 @@ fn g32_run_out() {
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn no_rapid_in_thread() {
-    thread::no_rapid_in_thread(&G76_WINDOW, &FixedPoint);
+    thread::no_rapid_in_thread(&NO_RAPID_WINDOW, &FixedPoint);
 }
 
 /// No rapid in a G32 block over [`G32_WINDOW`]. Unwind 5; measured as
@@ -327,4 +332,20 @@ fn groove_material() {
 #[kani::solver(cadical)]
 fn groove_no_panic() {
     groove::groove_no_panic(&GrooveDomain::FULL, 8);
+}
+
+/// The depth schedule, one step from any level `n` (an induction: see
+/// `crate::schedule`), over [`SCHEDULE_STEP_WINDOW`]: every documented Δd,
+/// Δdmin, k - d and every state that satisfies the invariant, so every
+/// level of every cycle. No loop over the levels; the only loop reached is
+/// Newton's in `round_sqrt` (stubbed). Unwind 7; measured without the
+/// stub: 5 Newton steps on `u64` (a law state has `Δd² (n + 1) < 2^61`,
+/// never `u128`; the minimum-cut phase takes no root), and 6 is Newton's
+/// most on any `u64`. Contracts: `round_sqrt` (stubbed).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::unwind(7)]
+#[kani::solver(cadical)]
+fn schedule_step() {
+    schedule::schedule_step(&SCHEDULE_STEP_WINDOW, &cycleref::engine::schedule::Schedule::next_level);
 }

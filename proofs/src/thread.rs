@@ -2,12 +2,15 @@
 //! [`crate::groove::groove_material`] for G76 and G32.
 //!
 //! The region a rapid must stay out of is derived from the cycle's words
-//! alone (docs/INTERPRETATIONS.md R-SIDE, R-END, R-RUNOUT), not from the
-//! engine. For a G76 cycle with Z as the long axis (`|W| > |i|`, R-LONG):
+//! alone (docs/INTERPRETATIONS.md R-LONG, R-SIDE, R-END, R-RUNOUT), not from
+//! the engine. For a G76 cycle, with either long axis:
 //!
 //! * the root line runs from C = (X_D + xf·i, Z_A) to D, the crest line
-//!   `s·xf·k` beyond it, `s` = +1 external, -1 internal (R-SIDE: A is
-//!   beyond C's X on the work's outside);
+//!   `s·xf·k` beyond it along X, `s` = +1 external, -1 internal (R-SIDE: A
+//!   is beyond C's X on the work's outside). The depth is along X on both
+//!   long axes (R-END: every pass ends on Z = Z_D at X = X_D + s·xf·(k -
+//!   Dn), and starts at X_C + s·xf·(k - Dn)); R-LONG decides only which
+//!   way the run-out goes;
 //! * along Z the thread runs from the last pass start to D: every pass
 //!   starts at Z_A shifted towards D by its flank shift (R-INFEED), at most
 //!   `2·zc` in D2 (the left flank `2·zc - round(Dn·tan(a/2))`) and `zc` in
@@ -17,25 +20,43 @@
 //!
 //! and the region is the open parallelogram between the two lines, from
 //! `Z_S = Z_A + t·max_shift` to `Z_D` (t = the direction of Z_A → Z_D).
-//! Every rapid, as the straight segment from the tool's position to its
+//! With Z long it is a long band along Z; with X long (`|i| ≥ |W|`) a
+//! steep one, whose sides Z = Z_S and Z = Z_D are each `xf·k` long along
+//! X. Every rapid, as the straight segment from the tool's position to its
 //! end, must not meet it: the approach and a lead-in's start lie on A's
-//! side of `Z_S`, the retract ends the pass on the end line `Z = Z_D` or
-//! beyond the crest after the run-out (a thread move), the return runs at
-//! X of A, clear of the crest (R-SIDE). The cut, the screw-in of a lead-in
-//! and the run-out are thread moves and cut the thread by design.
+//! side of `Z_S` (X long: no lead-in, `LeadInOnXLongAxis`), the retract
+//! runs along Z = Z_D to E when there is no run-out, or from beyond the
+//! crest after a Z-long run-out (a thread move along X away from the work,
+//! ending on Z = Z_D), and the return runs at X of A, clear of the crest
+//! at both ends and so between them (R-SIDE). The cut, the screw-in of a
+//! lead-in and the run-out are thread moves and cut the thread by design.
+//!
+//! **Finding: X long with a run-out.** R-RUNOUT moves the X-long run-out
+//! along Z, by J' = min(J, |W|) towards Z_A, so it ends at Z_D - t·J',
+//! inside the band's Z span, and the retract to E = (X_A, Z_D - t·J') then
+//! runs along X, the long axis, across the band. It meets the region in
+//! every such cycle with `s·i > 0` (the run-out, going towards Z_A at X of
+//! the pass end, ends beyond the root line: the root there lies `xf·|i|·J'
+//! / |W|` further out) and whenever `|i|·J' / |W| < Dn` with `s·i < 0`
+//! (the run-out ends inside the band). Both engines do this, as the
+//! readings say; `proofs/tests/thread.rs` pins one such cycle. The harness
+//! checks every other rapid of an X-long cycle with a run-out (the
+//! approaches and the returns) and leaves that retract out, counting it
+//! under its own cover, until the reading is settled.
 //!
 //! A G32 block is a thread move and its run-out another one: its expansion
 //! has no rapid at all, which [`g32_no_rapid`] checks.
 
-use cycleref::{G76Cycle, Infeed, Motion, Move, Point, RunOut};
+use cycleref::{G76Cycle, Infeed, Motion, Move, Point, Role, RunOut};
 
 use crate::cover;
 use crate::harness::{any_cycle, any_g32, Domain, Engine};
 use crate::verify::{assume, declare};
 
-/// The open region of a Z-long G76 thread (see the module docs), in
-/// integers: a point is inside when `t·(z - z_s) > 0`, `t·(z_d - z) > 0`
-/// and `0 < s·(x·L - root(z)·L) < xf·k·L`, `L = |Z_D - Z_A|`.
+/// The open region of a G76 thread (see the module docs), in integers: a
+/// point is inside when `t·(z - z_s) > 0`, `t·(z_d - z) > 0` and `0 <
+/// s·(x·L - root(z)·L) < xf·k·L`, `L = |Z_D - Z_A|` (never 0: a face
+/// thread is refused).
 #[derive(Clone, Copy, Debug)]
 pub struct ThreadRegion {
     s: i128,
@@ -47,17 +68,18 @@ pub struct ThreadRegion {
     x_d: i128,
     len: i128,
     depth: i128,
+    x_long: bool,
 }
 
 impl ThreadRegion {
-    /// The region of `c`, or `None` when X is the long axis (left out: its
-    /// band runs along X, and its run-out along Z towards A).
+    /// The region of `c`, on either long axis; `None` for a face thread
+    /// (`W = 0`, which the engines refuse).
     #[must_use]
     pub fn of(c: &G76Cycle) -> Option<ThreadRegion> {
         let xf = i128::from(c.x_mode.factor());
         let (z_a, z_d) = (i128::from(c.start.z), i128::from(c.end.z));
         let len = (z_d - z_a).abs();
-        if len <= i128::from(c.taper).abs() {
+        if len == 0 {
             return None;
         }
         let x_d = i128::from(c.end.x);
@@ -78,7 +100,21 @@ impl ThreadRegion {
             x_d,
             len,
             depth: xf * i128::from(c.thread_height) * len,
+            // R-LONG: X is long when |i| ≥ |W|.
+            x_long: len <= i128::from(c.taper).abs(),
         })
+    }
+
+    /// True when X is the long axis (R-LONG: `|i| ≥ |W|`).
+    #[must_use]
+    pub fn x_long(&self) -> bool {
+        self.x_long
+    }
+
+    /// +1 for an external thread, -1 for an internal one (R-SIDE).
+    #[must_use]
+    pub fn side(&self) -> i128 {
+        self.s
     }
 
     /// The four constraints at a point, each `> 0` inside: `(a, b)` with the
@@ -142,16 +178,21 @@ fn cmp(a: (i128, i128), b: (i128, i128)) -> i32 {
     }
 }
 
-/// No rapid enters the thread (G76, Z long): every rapid of the expansion,
-/// as a segment from the tool's position, stays out of the open region
-/// between the crest and root lines from the last pass start to D
-/// ([`ThreadRegion`]). The moves are checked as they stream, not collected.
+/// No rapid enters the thread (G76, either long axis): every rapid of the
+/// expansion, as a segment from the tool's position, stays out of the open
+/// region between the crest and root lines from the last pass start to D
+/// ([`ThreadRegion`]), but the retract after an X-long run-out (the
+/// finding of the module docs), which is counted instead. The moves are
+/// checked as they stream, not collected.
 pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
     declare(&[
         "external thread, towards -Z",
         "external thread, towards +Z",
         "internal thread, towards -Z",
         "internal thread, towards +Z",
+        "X-long external thread",
+        "X-long internal thread",
+        "X-long thread with a run-out: the retract after it left out",
         "with a run-out",
         "without a run-out",
         "with a lead-in",
@@ -167,22 +208,33 @@ pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
         return;
     };
     let mut at = c.start;
+    let mut after_run_out = false;
     let mut touching = false;
+    let mut left_out = false;
     for m in moves {
-        let Move { motion, to, .. } = m;
+        let Move { motion, to, role, .. } = m;
         if motion == Motion::Rapid {
-            assert!(!region.meets(at, to), "a rapid enters the thread");
+            if region.x_long && after_run_out {
+                left_out = true;
+            } else {
+                assert!(!region.meets(at, to), "a rapid enters the thread");
+            }
             // Ends on the boundary: the closed region would be met.
             touching |= to.z == c.end.z || i128::from(to.z) == region.z_s;
         }
+        after_run_out = role == Role::RunOut;
         at = to;
     }
     let external = region.s > 0;
     let towards_plus = region.t > 0;
-    cover!(external && !towards_plus, "external thread, towards -Z");
-    cover!(external && towards_plus, "external thread, towards +Z");
-    cover!(!external && !towards_plus, "internal thread, towards -Z");
-    cover!(!external && towards_plus, "internal thread, towards +Z");
+    let z_long = !region.x_long;
+    cover!(z_long && external && !towards_plus, "external thread, towards -Z");
+    cover!(z_long && external && towards_plus, "external thread, towards +Z");
+    cover!(z_long && !external && !towards_plus, "internal thread, towards -Z");
+    cover!(z_long && !external && towards_plus, "internal thread, towards +Z");
+    cover!(region.x_long && external, "X-long external thread");
+    cover!(region.x_long && !external, "X-long internal thread");
+    cover!(left_out, "X-long thread with a run-out: the retract after it left out");
     cover!(!matches!(c.run_out, RunOut::None), "with a run-out");
     cover!(matches!(c.run_out, RunOut::None), "without a run-out");
     cover!(c.lead_in > 0, "with a lead-in");

@@ -7,6 +7,7 @@
 
 use crate::groove::GrooveDomain;
 use crate::harness::Domain;
+use crate::schedule::ScheduleDomain;
 
 /// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
 /// one start, every infeed mode, side, direction, unit code, run-out kind,
@@ -37,6 +38,10 @@ pub const G76_WINDOW: Domain = Domain {
     lead: (0, 3),
     wild_x: 2,
 };
+
+/// The window of `no_rapid_in_thread`: [`G76_WINDOW`] with threads from 1
+/// increment long, so that X is the long axis too (`|i| ≥ |W|`, taper ±6).
+pub const NO_RAPID_WINDOW: Domain = Domain { length: (1, 40), ..G76_WINDOW };
 
 /// P3's window: [`G76_WINDOW`] with two starts (the finishing passes per
 /// start), k ≤ 4.
@@ -112,8 +117,19 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     units: (0, 7),
 };
 
+/// The one-step schedule harness: every documented Δd, Δdmin, k - d
+/// (`< 2^30`) and every state (depth ≤ k - d, level ≤ depth) that
+/// satisfies the invariant, i.e. every level of every cycle.
+pub const SCHEDULE_STEP_WINDOW: ScheduleDomain = ScheduleDomain {
+    first_depth: (1, 999_999_999),
+    min_cut: (0, 999_999_999),
+    last: (0, 999_999_999),
+    depth: (0, 999_999_999),
+    level: (0, 999_999_999),
+};
+
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 24] = [
+pub const UNWIND: [(&str, u32); 25] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -138,6 +154,7 @@ pub const UNWIND: [(&str, u32); 24] = [
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
     ("groove_no_panic", 1_000_001),
+    ("schedule_step", 7),
 ];
 
 /// The bound of harness `name` in [`UNWIND`].

@@ -4,11 +4,13 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use cycleref::{CycleError, G76Cycle, Motion, Move, Point, Role};
+use cycleref::lead::{Lead, LeadWord};
+use cycleref::{CycleError, G76Cycle, Infeed, Motion, Move, Point, Role, RunOut, Units, XMode};
 use cycleref_proofs::harness::{Domain, FixedPoint};
 use cycleref_proofs::shim::{self, Mode};
-use cycleref_proofs::thread;
+use cycleref_proofs::thread::{self, ThreadRegion};
 use cycleref_proofs::windows::G32_WINDOW;
+use cycleref_spec::differ::assert_same_moves;
 
 fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
     let r = shim::check(name, mode, body);
@@ -17,9 +19,12 @@ fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
 }
 
 /// The exhaustive window: k ≤ 4, every infeed mode, both sides and
-/// directions, straight and tapered (|i| ≤ 2, Z long), every run-out kind,
-/// a lead-in or none, F and I leads, every unit code; run with the tool
-/// angles 60° and 29° (the flank shifts).
+/// directions, straight and tapered, both long axes (|W| = 5 or 6, |i| ≤
+/// 6: Z long where |i| < |W|, X long where |i| ≥ |W|), every run-out kind,
+/// a lead-in or none (refused on an X long axis), F and I leads, IS-C inch
+/// diameter and IS-B metric radius (unit codes 3 and 4, which between
+/// them have every unit); run with the tool angles 60° and 29° (the flank
+/// shifts).
 const THREAD: Domain = Domain {
     height: (1, 4),
     first_depth: (1, 4),
@@ -30,13 +35,13 @@ const THREAD: Domain = Domain {
     infeed: (0, 2),
     internal: (0, 1),
     positive_z: (0, 1),
-    taper: (-2, 2),
-    length: (20, 20),
+    taper: (-6, 6),
+    length: (5, 6),
     run_out_kind: (0, 3),
     run_out: (1, 2),
     chamfer: (3, 3),
     chamfer_angle: (45, 45),
-    units: (0, 7),
+    units: (3, 4),
     lead_in: (0, 1),
     lead: (1, 2),
     ..Domain::POINT
@@ -83,6 +88,69 @@ fn no_rapid_enters_the_thread() {
     });
 }
 
+/// X long at large values: lengths from 1 against tapers up to 300 000, no
+/// lead-in (refused on an X long axis).
+#[test]
+fn no_rapid_enters_an_x_long_thread() {
+    let wide = Domain { length: (1, 300_000), lead_in: (0, 0), ..WIDE };
+    check(
+        "no rapid in the thread, X long (sampled)",
+        Mode::Sample { runs: 3_000, seed: 0x0078_6c6f_6e67 },
+        || {
+            thread::no_rapid_in_thread(&wide, &FixedPoint);
+        },
+    );
+}
+
+/// The finding of `cycleref_proofs::thread` (X long with a run-out): an
+/// external thread whose X falls by i = 10 from C to D over |W| = 5, with
+/// J = 2, K = 3. The run-out ends at Z_D - t·J = 2, X_D = 100, beyond the
+/// root line (which lies at X 104 there: 110 - 10·3/5), and the retract to
+/// E = (X_A, 2) then crosses the thread between X 104 and 108. Both
+/// engines do this, as R-RUNOUT reads; this test fails when the reading
+/// changes, so that the harness can then check that retract too.
+#[test]
+fn finding_an_x_long_retract_after_the_run_out_crosses_the_thread() {
+    let c = G76Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Radius,
+        start: Point::new(115, 5),
+        end: Point::new(100, 0),
+        taper: 10,
+        thread_height: 4,
+        first_depth: 4,
+        min_cut: 1,
+        finishing_allowance: 0,
+        finishing_passes: 1,
+        tool_angle: 60,
+        infeed: Infeed::RightFlank,
+        lead_in: 0,
+        starts: 1,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::Amounts { short: 2, long: 3 },
+        pass_limit: 100,
+    };
+    let ours: Vec<Move> = cycleref::expand_g76(&c).expect("a valid cycle").collect();
+    assert_same_moves(&Ok(ours.clone()), &cycleref_spec::g76::expand(&c), "the X-long cycle");
+    let region = ThreadRegion::of(&c).expect("not a face thread");
+    assert!(region.x_long());
+    let mut at = c.start;
+    let mut crossing = Vec::new();
+    for (i, m) in ours.iter().enumerate() {
+        if m.role == Role::RunOut {
+            assert_eq!(m.to, Point::new(100, 2), "the run-out ends at (X_D, Z_D - t·J)");
+        }
+        if m.motion == Motion::Rapid && region.meets(at, m.to) {
+            crossing.push((ours[i - 1].role, m.role, at, m.to));
+        }
+        at = m.to;
+    }
+    // The one pass (k = Δd = 4, d = 0) and the finishing pass: each retract
+    // after its run-out, and nothing else.
+    let expected = (Role::RunOut, Role::Retract, Point::new(100, 2), Point::new(115, 2));
+    assert_eq!(crossing, vec![expected, expected]);
+}
+
 #[test]
 fn no_rapid_in_g32() {
     check("G32: no rapid (within 3)", Mode::Exhaustive { max_runs: 5_000_000 }, || {
@@ -98,7 +166,7 @@ type Moves = std::vec::IntoIter<Move>;
 /// `mutant` must be caught by "a rapid enters the thread" on the window
 /// where the real engine passes.
 fn caught(mutant: impl Fn(&G76Cycle) -> Result<Moves, CycleError>) {
-    let w = Domain { tool_angle: (60, 60), units: (0, 0), lead: (1, 1), ..THREAD };
+    let w = Domain { tool_angle: (60, 60), units: (3, 3), lead: (1, 1), ..THREAD };
     let mode = Mode::Exhaustive { max_runs: 3_000_000 };
     let real = |c: &G76Cycle| cycleref::expand_g76(c).map(|m| m.collect::<Vec<_>>().into_iter());
     check("control", mode, || thread::no_rapid_in_thread(&w, &real));

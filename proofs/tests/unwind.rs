@@ -173,7 +173,7 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     g76("termination", &w, harness::termination);
     g76("run_out_direction", &w, harness::run_out_direction);
     g76("no_overcut", &w, harness::no_overcut);
-    g76("no_rapid_in_thread", &w, cycleref_proofs::thread::no_rapid_in_thread);
+    g76("no_rapid_in_thread", &windows::NO_RAPID_WINDOW, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
     // The engine's side only: the reference's loops (rust_decimal) are not
     // counted here.
@@ -497,4 +497,47 @@ fn the_kani_attributes_are_the_bounds_checked_here() {
         windows::UNWIND.len(),
         "every Kani harness has its bound in windows::UNWIND: {found:?}"
     );
+}
+
+/// The one-step schedule harness: its only loop is Newton's, in the law's
+/// `round_sqrt`, on `Δd²(n + 1)`. Over the exhaustive window of
+/// `tests/schedule.rs`, and at the largest roots a law state can take
+/// (`Δd √n` up to 999 999 999, so `Δd² n < 2^60`: Newton on `u64`) for Δd
+/// from 1 to 999 999 999 and the levels that go with them.
+#[test]
+fn schedule_step_stays_below_its_unwind_bound() {
+    use cycleref_proofs::schedule::{schedule_step, ScheduleDomain};
+    let _one = lock();
+    let step = cycleref::engine::schedule::Schedule::next_level;
+    let mut m = Maxima::default();
+    let small = ScheduleDomain {
+        first_depth: (1, 20),
+        min_cut: (0, 3),
+        last: (0, 40),
+        depth: (0, 40),
+        level: (0, 40),
+    };
+    measure(&mut m, "schedule_step (small window)", Mode::Enumerate { max_runs: 2_000_000 }, |_| {
+        schedule_step(&small, &step);
+    });
+    let max = 999_999_999_i64;
+    for q in [1, 2, 3, 1_000, 31_622, 999_999, 999_999_998, max] {
+        // n ≤ min(Δd², (MAX / Δd)²): the largest level of a law state.
+        let n = (q * q).min((max / q).pow(2));
+        for level in [1, n / 2 + 1, n] {
+            #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
+            let hint = (q as f64 * (level as f64).sqrt()).round() as i64;
+            let d = ScheduleDomain {
+                first_depth: (q, q),
+                min_cut: (0, 1),
+                last: (max, max),
+                depth: (hint - 2, hint + 2),
+                level: (level, level),
+            };
+            measure(&mut m, "schedule_step (largest roots)", Mode::Enumerate { max_runs: 100 }, |_| {
+                schedule_step(&d, &step);
+            });
+        }
+    }
+    m.check("schedule_step");
 }

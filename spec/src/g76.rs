@@ -124,7 +124,7 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
 /// √n × Q(Δd)"), exactly: with `q` = Δd in increments it is the integer
 /// nearest to `√(q² n)`.
 ///
-/// Twin: `impl/src/engine/g76.rs`, `law`.
+/// Twin: `impl/src/engine/schedule.rs`, `law`.
 #[must_use]
 pub fn depth_by_law(first_depth: Decimal, n: u64, u: Units) -> Decimal {
     let q = u128::try_from(to_increments(first_depth, u)).unwrap_or(0);
@@ -149,7 +149,7 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// 下一刀的 X 轴切深 = 最小切削量 + 前一刀的切深 … 如果 X 轴切深 ≥ 牙高 P(k) −
 /// 精车切削量 R(d) 则 X 轴切深 = 牙高 P(k) − 精车切削量 R(d)".
 ///
-/// Twin: `impl/src/engine/g76.rs`, `Schedule::next_level`.
+/// Twin: `impl/src/engine/schedule.rs`, `Schedule::next_level`.
 #[must_use]
 pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
     let u = c.units;

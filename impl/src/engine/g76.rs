@@ -18,7 +18,7 @@
 //! ```
 //!
 //! computed level by level in O(1): `round(Δd √n)` is the exact integer
-//! square root of `Δd² n` rounded to nearest ([`round_sqrt`], Newton's
+//! square root of `Δd² n` rounded to nearest ([`round_sqrt`](super::arith::round_sqrt), Newton's
 //! method on the floor root, then one correction), and once the minimum cut
 //! takes over (`round(Δd √n) < D(n-1) + m`) the schedule stops taking roots
 //! and adds `m` per level. That is exact:
@@ -90,10 +90,9 @@
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
 
-#[cfg(feature = "loop-counters")]
-use super::arith::record_isqrt;
-use super::arith::{round_sqrt, saturate_i64};
+use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
+use super::schedule::{law, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{G76Cycle, Infeed, RunOut};
@@ -101,17 +100,6 @@ use crate::lead::{Lead, Ratio};
 use crate::moves::{Flank, Move, Pass, PassKind};
 use crate::tan::mul_tan_round;
 use crate::units::{Length, Units, MAX_LENGTH};
-
-/// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
-/// is below `2^93` and the root below `2^47`.
-///
-/// Twin: `spec/src/g76.rs`, `depth_by_law`.
-fn law(q2: u64, n: u64) -> i64 {
-    #[cfg(feature = "loop-counters")]
-    record_isqrt(u128::from(q2) * u128::from(n));
-    let root = round_sqrt(u128::from(q2) * u128::from(n));
-    i64::try_from(root).unwrap_or(i64::MAX)
-}
 
 /// Z shift of a pass at `depth`: `round(depth × tan(a ÷ 2))`, as the
 /// reference's `flank_shift` (`depth ≤ k < 2^30`, so never `None`).
@@ -253,51 +241,6 @@ fn check_coordinate(v: i128, units: Units) -> Result<(), CycleError> {
         });
     }
     Ok(())
-}
-
-/// The rough levels, one at a time (see the module docs).
-#[derive(Clone, Copy, Debug)]
-struct Schedule {
-    /// Δd² (< 2^60).
-    q2: u64,
-    /// max(Δdmin, 1).
-    min: i64,
-    /// k - d.
-    last: i64,
-    /// Levels produced so far.
-    n: u64,
-    /// Depth of the last level produced (0 before the first).
-    depth: i64,
-    /// True once the minimum cut has taken over.
-    min_phase: bool,
-}
-
-impl Schedule {
-    /// The depth of the next level, or `None` after the level at `k - d`.
-    ///
-    /// Twin: `spec/src/g76.rs`, `next_depth` (and `rough_levels`).
-    fn next_level(&mut self) -> Option<i64> {
-        if self.depth >= self.last {
-            return None;
-        }
-        // At most k - d < 2^30 levels: the depth grows by at least 1.
-        self.n += 1;
-        // depth < last < 2^30, min < 2^30.
-        let by_min = self.depth + self.min;
-        let next = if self.min_phase {
-            by_min
-        } else {
-            let law = law(self.q2, self.n);
-            if law < by_min {
-                self.min_phase = true;
-                by_min
-            } else {
-                law
-            }
-        };
-        self.depth = next.min(self.last);
-        Some(self.depth)
-    }
 }
 
 /// Where the pass sequence is.

@@ -12,6 +12,7 @@
 //! | [`g76`] | the G76 multi-pass threading cycle ([`expand_g76`], [`G76Moves`], [`rough_pass_count`]) | `spec/src/g76.rs` |
 //! | [`g32`] | the G32 single thread block ([`expand_g32`](g32::expand_g32)) | `spec/src/g32.rs` |
 //! | [`g75`] | the G75.1 trapezoidal groove ([`expand_g75`](g75::expand_g75), [`groove_profile`](g75::groove_profile)), split by concern: exact geometry, local contours, the absolute frame, roughing, the tail, the public profile | `spec/src/g75/` |
+//! | [`schedule`] | the G76 depth schedule, one level at a time ([`Schedule`](schedule::Schedule), public for the proofs' one-step harness) | `spec/src/g76.rs` (`next_depth`) |
 //! | [`real`] | dyadic fixed-point interval arithmetic and trigonometry for G75.1 | `spec/src/real.rs` |
 //!
 //! Where an engine restates a formula of the reference, the comment on the
@@ -50,6 +51,7 @@ pub mod g76;
 pub mod g92;
 pub(crate) mod pass;
 pub mod real;
+pub mod schedule;
 
 #[cfg(feature = "loop-counters")]
 pub use arith::record_isqrt;

@@ -1,0 +1,136 @@
+//! The G76 depth schedule, one rough level at a time (DOMAIN decision 3,
+//! readings R-DEPTH and R-LINEAR):
+//!
+//! ```text
+//! D(n) = min(k - d, max(round(Δd √n), D(n-1) + m)),   m = max(Δdmin, 1)
+//! ```
+//!
+//! [`Schedule`] is the state of the levels produced so far; the G76 engine
+//! ([`super::g76`]) steps it once per rough level and counts the levels up
+//! front with the same `law`. Why the schedule stops taking square roots
+//! once the minimum cut has taken over is proved in the module docs of
+//! [`super::g76`] (and in R-LINEAR).
+//!
+//! It is public so that the proofs can state the schedule's properties as
+//! one step from a level `n` (`cycleref-proofs`, `schedule_step`):
+//! [`Schedule::resume`] makes the state at a level, [`Schedule::next_level`]
+//! steps it, and the accessors read it back.
+
+#[cfg(feature = "loop-counters")]
+use super::arith::record_isqrt;
+use super::arith::round_sqrt;
+use crate::units::MAX_LENGTH;
+
+/// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
+/// is below `2^93` and the root below `2^47`.
+///
+/// Twin: `spec/src/g76.rs`, `depth_by_law`.
+pub(super) fn law(q2: u64, n: u64) -> i64 {
+    #[cfg(feature = "loop-counters")]
+    record_isqrt(u128::from(q2) * u128::from(n));
+    let root = round_sqrt(u128::from(q2) * u128::from(n));
+    i64::try_from(root).unwrap_or(i64::MAX)
+}
+
+/// The rough levels, one at a time (see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Schedule {
+    /// Δd² (< 2^60).
+    pub(super) q2: u64,
+    /// max(Δdmin, 1).
+    pub(super) min: i64,
+    /// k - d.
+    pub(super) last: i64,
+    /// Levels produced so far.
+    pub(super) n: u64,
+    /// Depth of the last level produced (0 before the first).
+    pub(super) depth: i64,
+    /// True once the minimum cut has taken over.
+    pub(super) min_phase: bool,
+}
+
+impl Schedule {
+    /// The state after `level` levels, the last at `depth`, the minimum cut
+    /// in force or not: Δd = `first_depth`, Δdmin = `min_cut`, k - d =
+    /// `last`. `resume(Δd, Δdmin, k - d, 0, 0, false)` is the schedule of a
+    /// cycle before its first level (what the G76 engine starts from).
+    ///
+    /// Any such state can be made, reachable or not: the proofs step every
+    /// state that satisfies their invariant. `None` outside the ranges the
+    /// engine works in (`validate()`'s: `1 ≤ Δd ≤ MAX_LENGTH`, `0 ≤ Δdmin`,
+    /// `0 ≤ depth ≤ k - d ≤ MAX_LENGTH`, and `level ≤ MAX_LENGTH`: every
+    /// level is at least one increment deeper than the one before).
+    #[must_use]
+    pub fn resume(
+        first_depth: i64,
+        min_cut: i64,
+        last: i64,
+        level: u64,
+        depth: i64,
+        min_phase: bool,
+    ) -> Option<Schedule> {
+        let length = 0..=MAX_LENGTH;
+        let ok = (1..=MAX_LENGTH).contains(&first_depth)
+            && length.contains(&min_cut)
+            && length.contains(&last)
+            && (0..=last).contains(&depth)
+            && level <= MAX_LENGTH.unsigned_abs();
+        // Δd < 2^30: Δd² < 2^60.
+        let q = first_depth.unsigned_abs();
+        ok.then_some(Schedule { q2: q * q, min: min_cut.max(1), last, n: level, depth, min_phase })
+    }
+
+    /// The same words (Δd, Δdmin, k - d) at another state: `level` levels
+    /// made, the last at `depth`; `None` outside the ranges of
+    /// [`Schedule::resume`].
+    #[must_use]
+    pub fn with_state(self, level: u64, depth: i64, min_phase: bool) -> Option<Schedule> {
+        let ok = (0..=self.last).contains(&depth) && level <= MAX_LENGTH.unsigned_abs();
+        ok.then_some(Schedule { n: level, depth, min_phase, ..self })
+    }
+
+    /// The depth of the next level, or `None` after the level at `k - d`.
+    ///
+    /// Twin: `spec/src/g76.rs`, `next_depth` (and `rough_levels`).
+    pub fn next_level(&mut self) -> Option<i64> {
+        if self.depth >= self.last {
+            return None;
+        }
+        // At most k - d < 2^30 levels: the depth grows by at least 1.
+        self.n += 1;
+        // depth < last < 2^30, min < 2^30.
+        let by_min = self.depth + self.min;
+        let next = if self.min_phase {
+            by_min
+        } else {
+            let law = law(self.q2, self.n);
+            if law < by_min {
+                self.min_phase = true;
+                by_min
+            } else {
+                law
+            }
+        };
+        self.depth = next.min(self.last);
+        Some(self.depth)
+    }
+
+    /// The number of levels produced so far.
+    #[must_use]
+    pub const fn level(&self) -> u64 {
+        self.n
+    }
+
+    /// The depth of the last level produced (0 before the first).
+    #[must_use]
+    pub const fn depth(&self) -> i64 {
+        self.depth
+    }
+
+    /// True once the minimum cut has taken over (the schedule then adds `m`
+    /// per level without taking square roots).
+    #[must_use]
+    pub const fn min_phase(&self) -> bool {
+        self.min_phase
+    }
+}
