@@ -175,6 +175,7 @@ const REFUSALS: &[(&str, &str)] = &[
     ("cycle:too_many_pecks", "refuse:g75-too-many-pecks"),
     ("cycle:taper_beyond_start", "refuse:g92-taper-beyond-start"),
     ("cycle:no_infeed", "refuse:g92-no-infeed"),
+    ("cycle:run_out_into_work", "refuse:run-out-into-work"),
 ];
 
 /// The stable kind names of `vectors/README.md`, written out again here
@@ -193,6 +194,7 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::NoInfeed => "no_infeed",
         CycleError::TaperBeyondStart { .. } => "taper_beyond_start",
         CycleError::RunOutTooLong { .. } => "run_out_too_long",
+        CycleError::RunOutIntoWork { .. } => "run_out_into_work",
         CycleError::StartInsideThread => "start_inside_thread",
         CycleError::ThreadTooShort { .. } => "thread_too_short",
         CycleError::LeadInOnXLongAxis => "lead_in_on_x_long_axis",

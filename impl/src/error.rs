@@ -197,6 +197,15 @@ pub enum CycleError {
         /// The long-axis length of the shortest pass.
         length: Length,
     },
+    /// A run-out on a thread whose long axis is X (|i| >= |W|, G76; |R| >=
+    /// |W|, G92) runs along Z towards the start point's Z (reading
+    /// R-RUNOUT); when the thread's start lies beyond its end on A's side
+    /// (`s·i > 0`: the cut line rises towards A) that is into the work, and
+    /// the retract after it would cross the thread (reading R-XRUNOUT).
+    RunOutIntoWork {
+        /// i (G76) or R (G92), radius.
+        taper: Length,
+    },
     /// The start point A is not clear of the thread: it must lie on the
     /// side of B away from the work at the start, and clear of the crest at
     /// the end, or the retract to E would cut the thread.
@@ -350,6 +359,13 @@ impl fmt::Display for CycleError {
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
                  ({length}) (alarm: G76 note 7, G32 note 4)"
             ),
+            CycleError::RunOutIntoWork { taper } => write!(
+                f,
+                "the long axis is X and the run-out J runs along Z towards the start point, which with the \
+                 taper {taper} (the thread's start lying beyond its end on the start point's side) is into \
+                 the work: the run-out and the retract after it would cut the thread (reading R-XRUNOUT; \
+                 program J0 or the taper the other way)"
+            ),
             CycleError::StartInsideThread => write!(
                 f,
                 "the start point A lies inside the thread (between the crest line through B and the \
@@ -442,6 +458,7 @@ impl CycleError {
             Self::NoInfeed => "no_infeed",
             Self::TaperBeyondStart { .. } => "taper_beyond_start",
             Self::RunOutTooLong { .. } => "run_out_too_long",
+            Self::RunOutIntoWork { .. } => "run_out_into_work",
             Self::StartInsideThread => "start_inside_thread",
             Self::ThreadTooShort { .. } => "thread_too_short",
             Self::LeadInOnXLongAxis => "lead_in_on_x_long_axis",

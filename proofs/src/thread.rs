@@ -31,18 +31,17 @@
 //! at both ends and so between them (R-SIDE). The cut, the screw-in of a
 //! lead-in and the run-out are thread moves and cut the thread by design.
 //!
-//! **Finding: X long with a run-out.** R-RUNOUT moves the X-long run-out
-//! along Z, by J' = min(J, |W|) towards Z_A, so it ends at Z_D - t·J',
-//! inside the band's Z span, and the retract to E = (X_A, Z_D - t·J') then
-//! runs along X, the long axis, across the band. It meets the region in
-//! every such cycle with `s·i > 0` (the run-out, going towards Z_A at X of
-//! the pass end, ends beyond the root line: the root there lies `xf·|i|·J'
-//! / |W|` further out) and whenever `|i|·J' / |W| < Dn` with `s·i < 0`
-//! (the run-out ends inside the band). Both engines do this, as the
-//! readings say; `proofs/tests/thread.rs` pins one such cycle. The harness
-//! checks every other rapid of an X-long cycle with a run-out (the
-//! approaches and the returns) and leaves that retract out, counting it
-//! under its own cover, until the reading is settled.
+//! **X long with a run-out (reading R-XRUNOUT).** R-RUNOUT moves the
+//! X-long run-out along Z, by J' = min(J, |W|) towards Z_A, so it ends at
+//! Z_D - t·J', inside the band's Z span, and the retract to E = (X_A,
+//! Z_D - t·J') then runs along X, the long axis, across the band. With
+//! `s·i > 0` the run-out would end beyond its pass's cut line, in the work (the
+//! line lies `xf·|i|·J' / |W|` further out there): both engines refuse
+//! such cycles (`CycleError::RunOutIntoWork`), found by this harness. With
+//! `s·i < 0` the run-out ends above its pass's cut line, in the part of the
+//! band that pass has cut, and the retract runs through air; the static
+//! region here cannot tell, so the harness leaves that retract out,
+//! asserting `s·i < 0`, and counts it under its own cover.
 //!
 //! A G32 block is a thread move and its run-out another one: its expansion
 //! has no rapid at all, which [`g32_no_rapid`] checks.
@@ -181,8 +180,9 @@ fn cmp(a: (i128, i128), b: (i128, i128)) -> i32 {
 /// No rapid enters the thread (G76, either long axis): every rapid of the
 /// expansion, as a segment from the tool's position, stays out of the open
 /// region between the crest and root lines from the last pass start to D
-/// ([`ThreadRegion`]), but the retract after an X-long run-out (the
-/// finding of the module docs), which is counted instead. The moves are
+/// ([`ThreadRegion`]), but the retract after an X-long run-out, which
+/// must follow a run-out above its pass's cut line (`s·i < 0`, module docs)
+/// and is counted instead. The moves are
 /// checked as they stream, not collected.
 pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
     declare(&[
@@ -215,6 +215,8 @@ pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
         let Move { motion, to, role, .. } = m;
         if motion == Motion::Rapid {
             if region.x_long && after_run_out {
+                // R-XRUNOUT: only a run-out above its pass's cut line.
+                assert!(region.s * i128::from(c.taper) < 0, "an X-long run-out ends in the work");
                 left_out = true;
             } else {
                 assert!(!region.meets(at, to), "a rapid enters the thread");

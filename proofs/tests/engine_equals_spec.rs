@@ -627,7 +627,7 @@ fn x_long_axis_with_run_out() {
     for (taper, run_out) in [
         (-20_000, RunOut::Amounts { short: 1000, long: 2000 }),
         (-20_000, RunOut::Amounts { short: 50_000, long: 0 }),
-        (20_000, RunOut::Chamfer { tenths_of_lead: 10, angle_degrees: 30, long: None }),
+        (-20_000, RunOut::Chamfer { tenths_of_lead: 10, angle_degrees: 30, long: None }),
         (-10_000, RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(10_000) }),
     ] {
         let c = G76Cycle {
@@ -641,6 +641,21 @@ fn x_long_axis_with_run_out() {
         let moves = same(&c).unwrap();
         assert!(moves.iter().any(|m| m.role == Role::RunOut), "{run_out:?}");
     }
+    // i > 0 with A outside (s·i > 0): the cut line rises towards A, and J
+    // along Z towards A would end in the work (R-XRUNOUT): refused, with
+    // or without K; without a run-out the same thread expands.
+    let up = G76Cycle {
+        start: Point::new(150_000, 10_000),
+        end: Point::new(60_000, 0),
+        taper: 20_000,
+        finishing_passes: 1,
+        run_out: RunOut::Chamfer { tenths_of_lead: 10, angle_degrees: 30, long: None },
+        ..m68x6()
+    };
+    assert_eq!(same(&up), Err(CycleError::RunOutIntoWork { taper: Length::new(20_000, up.units) }));
+    let pull_out = G76Cycle { run_out: RunOut::Amounts { short: 1000, long: 0 }, ..up };
+    assert_eq!(same(&pull_out), Err(CycleError::RunOutIntoWork { taper: Length::new(20_000, up.units) }));
+    assert!(same(&G76Cycle { run_out: RunOut::None, ..up }).is_ok());
     // K longer than |i|: refused.
     let c = G76Cycle {
         start: Point::new(150_000, 10_000),

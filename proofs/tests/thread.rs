@@ -102,15 +102,13 @@ fn no_rapid_enters_an_x_long_thread() {
     );
 }
 
-/// The finding of `cycleref_proofs::thread` (X long with a run-out): an
-/// external thread whose X falls by i = 10 from C to D over |W| = 5, with
-/// J = 2, K = 3. The run-out ends at Z_D - t·J = 2, X_D = 100, beyond the
-/// root line (which lies at X 104 there: 110 - 10·3/5), and the retract to
-/// E = (X_A, 2) then crosses the thread between X 104 and 108. Both
-/// engines do this, as R-RUNOUT reads; this test fails when the reading
-/// changes, so that the harness can then check that retract too.
+/// The finding of `crate::thread`'s module docs, now refused (reading
+/// R-XRUNOUT): X long, `s·i > 0` (A at X115 outside C at X110, i = +10),
+/// a run-out: J along Z towards A would end in the work, and the retract
+/// after it would cross the thread. Both engines refuse it; without the
+/// run-out it expands.
 #[test]
-fn finding_an_x_long_retract_after_the_run_out_crosses_the_thread() {
+fn an_x_long_run_out_into_the_work_is_refused() {
     let c = G76Cycle {
         units: Units::IS_B_METRIC,
         x_mode: XMode::Radius,
@@ -130,24 +128,61 @@ fn finding_an_x_long_retract_after_the_run_out_crosses_the_thread() {
         run_out: RunOut::Amounts { short: 2, long: 3 },
         pass_limit: 100,
     };
+    let refused = Err(cycleref::CycleError::RunOutIntoWork { taper: cycleref::Length::new(10, c.units) });
+    assert_eq!(cycleref::expand_g76(&c).map(Iterator::count), refused.map(|()| 0));
+    assert_eq!(cycleref_spec::g76::expand(&c).map(|v| v.len()), refused.map(|()| 0));
+    assert!(cycleref::expand_g76(&G76Cycle { run_out: RunOut::None, ..c }).is_ok());
+}
+
+/// The other slope (`s·i < 0`: A at X115 outside C at X90, i = -10): the
+/// run-out along Z towards A ends above its pass's cut line, in the air,
+/// but inside the static band between the root and crest lines (whose part
+/// above the pass is already cut): the retract after it meets the region
+/// and is the one rapid the harness leaves out, checking `s·i < 0`.
+#[test]
+fn an_x_long_run_out_away_from_the_work_expands() {
+    let c = G76Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Radius,
+        start: Point::new(115, 5),
+        end: Point::new(100, 0),
+        taper: -10,
+        thread_height: 4,
+        first_depth: 4,
+        min_cut: 1,
+        finishing_allowance: 0,
+        finishing_passes: 1,
+        tool_angle: 60,
+        infeed: Infeed::RightFlank,
+        lead_in: 0,
+        starts: 1,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::Amounts { short: 1, long: 3 },
+        pass_limit: 100,
+    };
     let ours: Vec<Move> = cycleref::expand_g76(&c).expect("a valid cycle").collect();
     assert_same_moves(&Ok(ours.clone()), &cycleref_spec::g76::expand(&c), "the X-long cycle");
+    // C = (100 - 10, 5) = (90, 5). The pass at depth 4 = k runs from (90,
+    // 5) to D = (100, 0); the run-out ends J = 1 back towards A: (100, 1),
+    // where the cut line (the root) lies at X = 90 + 10·4/5 = 98 (radius,
+    // below the tool: air) and the crest at 102.
     let region = ThreadRegion::of(&c).expect("not a face thread");
     assert!(region.x_long());
     let mut at = c.start;
     let mut crossing = Vec::new();
     for (i, m) in ours.iter().enumerate() {
         if m.role == Role::RunOut {
-            assert_eq!(m.to, Point::new(100, 2), "the run-out ends at (X_D, Z_D - t·J)");
+            assert_eq!(m.to, Point::new(100, 1));
         }
         if m.motion == Motion::Rapid && region.meets(at, m.to) {
             crossing.push((ours[i - 1].role, m.role, at, m.to));
         }
         at = m.to;
     }
-    // The one pass (k = Δd = 4, d = 0) and the finishing pass: each retract
-    // after its run-out, and nothing else.
-    let expected = (Role::RunOut, Role::Retract, Point::new(100, 2), Point::new(115, 2));
+    // The rough pass (k = Δd = 4, d = 0) and the finishing pass: each
+    // retract after its run-out, through the band's cut part, and nothing
+    // else.
+    let expected = (Role::RunOut, Role::Retract, Point::new(100, 1), Point::new(115, 1));
     assert_eq!(crossing, vec![expected, expected]);
 }
 

@@ -160,6 +160,25 @@ def test_gsk980_g32_runout_golden():
     ]
 
 
+def test_gsk980_g92_o0012_golden():
+    # spec/tests/g92.rs, gsk980_example_o0012: "① rapid to B = (x, 5); ②
+    # thread to K = 1 before C, Z-27, still at x (straight), then the run-out
+    # to Z-28 and J = 3 (radius) outwards, x + 6; ③ rapid to the X of A, X65;
+    # ④ rapid to A", for x = 58.7, 57.7, 57, 56.9.
+    cycles = cycleref.expand(example("gsk980-g92-o0012.nc"), profile="gsk980")
+    assert [(c.code, c.line) for c in cycles] == [("G92", 4), ("G92", 5), ("G92", 6), ("G92", 7)]
+    for cycle, x in zip(cycles, ["58.700", "57.700", "57.000", "56.900"]):
+        xr = D(x) + 6
+        assert rendered(cycle) == [
+            ("rapid", D(x), D("5.000")),
+            ("thread", D(x), D("-27.000")),
+            ("thread", xr, D("-28.000")),
+            ("rapid", D("65.000"), D("-28.000")),
+            ("rapid", D("65.000"), D("5.000")),
+        ]
+        assert {(m.pass_.kind, m.pass_.number, m.pass_.depth) for m in cycle.moves} == {("single", 1, D("0.000"))}
+
+
 def test_gsk980_g75_seed_golden():
     # proofs/tests/g75_golden.rs, seed001_as_written: pecks at X47 ... X32,
     # retracts of 0.5 (X48 ... X33), the last peck cut short at X30, plunges

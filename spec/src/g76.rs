@@ -456,6 +456,13 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
                 if kk > i.abs() {
                     return Err(CycleError::RunOutTooLong { run_out: len(kk, u), length: len(i.abs(), u) });
                 }
+                // Reading R-XRUNOUT: the run-out ends at X of the pass end,
+                // J along Z towards A, where the cut line lies at X of the
+                // end plus xf·i·J/|W|: beyond the tool, on the work's side,
+                // when s·i > 0.
+                if s * i > Decimal::ZERO {
+                    return Err(CycleError::RunOutIntoWork { taper: len(i, u) });
+                }
             }
         }
     }

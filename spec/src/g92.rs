@@ -43,6 +43,7 @@ use crate::pass::{pass_path, PassFrame};
 /// [`G92Cycle::validate`]; [`CycleError::NoInfeed`] when C has the X of A
 /// and [`CycleError::TaperBeyondStart`] when B lies beyond A (reading
 /// R-G92SIDE); [`CycleError::RunOutTooLong`] (988TA note 4);
+/// [`CycleError::RunOutIntoWork`] (reading R-XRUNOUT);
 /// [`CycleError::OutOfRange`] for the X of B (reading R-RANGE).
 ///
 /// Twin: `impl/src/engine/g92.rs`, `expand_g92`.
@@ -82,6 +83,12 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
         // 988TA note 4: a long-axis run-out longer than the thread is an alarm.
         if kk > length {
             return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(length) });
+        }
+        // Reading R-XRUNOUT: on an X long axis the run-out runs along Z
+        // towards A; the cut line there lies xf·R·J/|W| beyond C's X, on
+        // the work's side when R points away from the work (s·R > 0).
+        if long_axis == LongAxis::X && Decimal::from(side) * r > Decimal::ZERO {
+            return Err(CycleError::RunOutIntoWork { taper: len(r) });
         }
     }
     if to_increments(b.0, u).abs() > MAX_LENGTH {

@@ -1107,11 +1107,23 @@ impl State<'_> {
             None => self.g92.taper.unwrap_or(0),
         };
         let lead = self.block_lead(&block)?;
-        if let Some(w) = block.get('J')? {
-            self.g92.j = Some(self.unsigned_length(&block, w)?);
+        // 980TDi note 10: "J、K输入负值时，按正值处理"; elsewhere J and K are
+        // unsigned ("不带方向") and a negative one is refused.
+        let negative_as_positive = profile.run_out == RunOutRules::Gsk980;
+        let run_out_word = |w: &Word<'_>| {
+            if negative_as_positive {
+                self.length(&block, w).map(i64::abs)
+            } else {
+                self.unsigned_length(&block, w)
+            }
+        };
+        let j = block.get('J')?.map(run_out_word).transpose()?;
+        let k = block.get('K')?.map(run_out_word).transpose()?;
+        if j.is_some() {
+            self.g92.j = j;
         }
-        if let Some(w) = block.get('K')? {
-            self.g92.k = Some(self.unsigned_length(&block, w)?);
+        if k.is_some() {
+            self.g92.k = k;
         }
         if let Some(w) = block.get('L')? {
             self.g92.starts = Some(Self::count(&block, w, 1, profile.g92_max_starts)?);

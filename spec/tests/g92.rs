@@ -275,6 +275,11 @@ fn run_out_rules_per_profile() {
     let g980 = one(&format!("{head}G92 X58.7 Z-28 F3 J3\n"), ProfileName::Gsk980);
     assert_eq!(g980[1], thread(58_700, -25_000, true, F3, Role::Cut));
     assert_eq!(g980[2], thread(64_700, -28_000, false, F3, Role::RunOut));
+    // Note 10: negative J and K are taken as positive; the 988TA refuses them.
+    let negative = one(&format!("{head}G92 X58.7 Z-28 F3 J-3 K-1\n"), ProfileName::Gsk980);
+    assert_eq!(negative, o0012_pass(58_700));
+    let e = error(&format!("{head}G92 X58.7 Z-28 F3 J-3 K1\n"), &machine(ProfileName::Gsk988));
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("J-3")));
     // Note 7: J = 0, K ≠ 0: none.
     let none = one(&format!("{head}G92 X58.7 Z-28 F3 J0 K1\n"), ProfileName::Gsk980);
     assert_eq!(none[1], thread(58_700, -28_000, true, F3, Role::Cut));
@@ -371,4 +376,29 @@ fn validate_shares_the_run_out_checks() {
     assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 100, .. })));
     let c = cycleref::G92Cycle { starts: 0, run_out: RunOut::None, ..c };
     assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 0, .. })));
+}
+
+/// Reading R-XRUNOUT. A = (60, 2), C = (40, -3), R+8: B = (56, 2); |W| = 5
+/// <= |R| = 8, X long. The cut line rises towards A (s = +1, R > 0): at
+/// Z = -3 + 0.5 it lies at X = 40 + 2·8·0.5/5 = 41.6, above C's X40, so a
+/// run-out J0.5 along Z towards A would end 0.8 (radius) inside the work:
+/// refused. With J0 (no run-out) the block expands: B, C, X60, A.
+#[test]
+fn x_long_run_out_into_the_work_is_refused() {
+    let m = machine(ProfileName::Gsk980);
+    let e = error("M3 S500\nG0 X60 Z2\nG92 X40 Z-3 R8 F1 J0.5 K2\nM30\n", &m);
+    assert_eq!(e.line, 3);
+    let ErrorKind::Cycle(CycleError::RunOutIntoWork { taper }) = e.kind else { panic!("{e}") };
+    assert_eq!(taper.increments, 8_000);
+    let f1 = Lead { word: LeadWord::F, mantissa: 1, scale: 0 };
+    let got = blocks("M3 S500\nG0 X60 Z2\nG92 X40 Z-3 R8 F1 J0\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(56_000, 2_000, Role::Approach),
+            thread(40_000, -3_000, true, f1, Role::Cut),
+            rapid(60_000, -3_000, Role::Retract),
+            rapid(60_000, 2_000, Role::Return),
+        ]]
+    );
 }

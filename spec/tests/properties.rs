@@ -81,6 +81,7 @@ fn expand(c: &G76Cycle) -> Option<Vec<Move>> {
         // Legitimate refusals of generated cycles.
         Err(
             CycleError::RunOutTooLong { .. }
+            | CycleError::RunOutIntoWork { .. }
             | CycleError::ThreadTooShort { .. }
             | CycleError::TooManyPasses { .. }
             | CycleError::OutOfRange { .. },

@@ -219,7 +219,8 @@ pub(super) const X_LONG: Template = Template {
     id: "g92-x-long",
     outcome: Expected::Valid(&["g92:x-long", "g92:taper", "g92:external"]),
     tags: &["template:g92-x-long", "rule:long-axis"],
-    description: "G92 steep taper, |R| >= |W|: X the long axis, the run-out K along X and J along Z",
+    description: "G92 steep taper, |R| >= |W|, the cut line falling away from the start point: X the long \
+                  axis, the run-out K along X and J along Z",
     generate: x_long,
 };
 
@@ -228,8 +229,10 @@ fn x_long(rng: &mut Rng) -> Draft {
     let mut l = line32(rng, &ctx, false);
     l.len = ctx.mm(rng.range(2000, 5000));
     l.z1 = l.z0 + l.dir * l.len;
-    // The thread's radius falls (external) or grows (internal) by more than its length.
-    l.taper = -l.side * (l.len + ctx.mm(rng.range(0, 4000)));
+    // The thread's radius grows (external) or falls (internal) towards C by
+    // more than its length: the cut line falls away from A, so the run-out
+    // along Z towards A ends in the air (R-XRUNOUT refuses the other slope).
+    l.taper = l.side * (l.len + ctx.mm(rng.range(0, 4000)));
     l.r0 = l.r0.max(l.taper.abs() + ctx.mm(8000));
     let k = l.lead_inc * 6 / 10;
     let extra = vec![
@@ -295,6 +298,36 @@ fn no_infeed(rng: &mut Rng) -> Draft {
     let mut lines = head(rng, &ctx, a);
     let x = if rng.chance(50) { format!("X{}", ctx.num(a.0)) } else { format!("U{}", ctx.num(0)) };
     lines.push(g92(true, &[x, format!("Z{}", ctx.num(l.z1)), l.lead.clone()]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// An X-long thread whose cut line rises towards the start point, with a
+/// run-out: J along Z towards A would end in the work (R-XRUNOUT).
+pub(super) const RUN_OUT_INTO_WORK: Template = Template {
+    id: "g92-run-out-into-work",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::RunOutIntoWork { .. }))),
+    tags: &["refuse:run-out-into-work"],
+    description:
+        "G92 steep taper (X the long axis) rising towards the start point, with a run-out J: along Z \
+                  towards A it would end in the work",
+    generate: run_out_into_work,
+};
+
+fn run_out_into_work(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let mut l = line32(rng, &ctx, false);
+    l.len = ctx.mm(rng.range(2000, 5000));
+    l.z1 = l.z0 + l.dir * l.len;
+    l.taper = -l.side * (l.len + ctx.mm(rng.range(100, 4000)));
+    l.r0 = l.r0.max(l.taper.abs() + ctx.mm(8000));
+    let k = l.lead_inc * 6 / 10;
+    let extra = vec![
+        format!("J{}", ctx.num(ctx.mm(rng.range(300, 1000)))),
+        format!("K{}", ctx.num(ctx.mm(rng.range(300, 1500)))),
+    ];
+    let mut lines = head(rng, &ctx, start_point(&ctx, &l, k, ctx.mm(3000)));
+    lines.extend(passes_lines(&ctx, &l, k, &[k], &extra));
     lines.push("M30".into());
     Draft::new(ctx, lines)
 }

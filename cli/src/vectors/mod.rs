@@ -380,6 +380,7 @@ const TEMPLATES: &[&Template] = &[
     &refused::G75_TOO_MANY_PECKS,
     &g92::TAPER_BEYOND,
     &g92::NO_INFEED,
+    &g92::RUN_OUT_INTO_WORK,
 ];
 
 /// The templates of one kind (refused or valid), in schedule order.

@@ -336,7 +336,7 @@ fn plan_extremes(c: &G76Cycle, last: i64, centre: i64) -> Option<PlanExtremes> {
 /// The manual's alarms, as [`CycleError`], in the reference's order:
 /// [`G76Cycle::validate`], [`CycleError::StartInsideThread`],
 /// [`CycleError::LeadInOnXLongAxis`], [`CycleError::TooManyPasses`],
-/// [`CycleError::ThreadTooShort`], [`CycleError::RunOutTooLong`],
+/// [`CycleError::ThreadTooShort`], [`CycleError::RunOutTooLong`], [`CycleError::RunOutIntoWork`],
 /// [`CycleError::OutOfRange`] for a pass coordinate.
 ///
 /// Twin: `spec/src/g76.rs`, `expand` (and `geometry` for the checks).
@@ -396,6 +396,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
             if let Some((_, kk)) = run_out {
                 if kk > taper_abs {
                     return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(taper_abs) });
+                }
+                // Reading R-XRUNOUT: along Z towards A is into the work
+                // when the cut line rises towards A (s·i > 0).
+                if side * c.taper > 0 {
+                    return Err(CycleError::RunOutIntoWork { taper: len(c.taper) });
                 }
             }
         }

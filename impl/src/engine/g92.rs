@@ -1,6 +1,6 @@
 //! The fixed-point G92 engine: a G92 block (`cycleref_spec::g92::expand`,
 //! the exact-decimal reference, is the authority) as one pass of the
-//! shared pass model ([`super::pass`]), the pass a G76 cycle cuts at its
+//! shared pass model (`engine::pass`), the pass a G76 cycle cuts at its
 //! thread height, once per start.
 //!
 //! [`expand_g92`] checks the block completely before the first move (the
@@ -53,8 +53,8 @@ pub struct G92Moves {
 ///
 /// In the reference's order: [`G92Cycle::validate`],
 /// [`CycleError::NoInfeed`], [`CycleError::TaperBeyondStart`],
-/// [`CycleError::RunOutTooLong`], [`CycleError::OutOfRange`] for the X of
-/// the cut start B.
+/// [`CycleError::RunOutTooLong`], [`CycleError::RunOutIntoWork`],
+/// [`CycleError::OutOfRange`] for the X of the cut start B.
 ///
 /// # Example
 ///
@@ -121,6 +121,11 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         // 988TA note 4: "当螺纹长轴方向退尾长度大于长轴的螺纹加工长度时，系统产生报警".
         if kk > length {
             return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(length) });
+        }
+        // Reading R-XRUNOUT: along Z towards A is into the work when the
+        // cut line rises towards A (s·R > 0).
+        if long_axis == LongAxis::X && side * c.taper > 0 {
+            return Err(CycleError::RunOutIntoWork { taper: len(c.taper) });
         }
     }
     // Reading R-RANGE: A and C are words within range, every other point

@@ -10,6 +10,8 @@
 //! | [`arith`] | the shared kernels (public for their contracts' proofs): the one `round_div`, the one saturating narrowing, floor and ceiling division, [`isqrt_floor`], [`round_sqrt`] | `spec/src/exact.rs` |
 //! | [`contracts`] | the contracts of the kernels of `arith` and of [`mul_tan_round`](crate::tan::mul_tan_round), as predicates | — |
 //! | [`g76`] | the G76 multi-pass threading cycle ([`expand_g76`], [`G76Moves`], [`rough_pass_count`]) | `spec/src/g76.rs` |
+//! | `pass` (private) | one thread pass, shared by G76 and G92: its path from A through the cut and run-out back to A, and the walk that streams it | `spec/src/pass.rs` |
+//! | [`g92`] | the G92 single-pass thread cycle ([`expand_g92`](g92::expand_g92)) on the shared pass | `spec/src/g92.rs` |
 //! | [`g32`] | the G32 single thread block ([`expand_g32`](g32::expand_g32)) | `spec/src/g32.rs` |
 //! | [`g75`] | the G75.1 trapezoidal groove ([`expand_g75`](g75::expand_g75), [`groove_profile`](g75::groove_profile)), split by concern: exact geometry, local contours, the absolute frame, roughing, the tail, the public profile | `spec/src/g75/` |
 //! | [`schedule`] | the G76 depth schedule, one level at a time ([`Schedule`](schedule::Schedule), public for the proofs' one-step harness) | `spec/src/g76.rs` (`next_depth`) |
