@@ -75,8 +75,8 @@ impl Kind {
 enum Context {
     /// A motion block of the program itself.
     Source { line: usize },
-    /// A G76 move.
-    G76 { line: usize, pass: Pass, role: Role },
+    /// A G76 or G78 move (`code`: which).
+    G76 { code: &'static str, line: usize, pass: Pass, role: Role },
     /// A G32 move.
     G32 { line: usize, role: Role },
     /// A G75.1 move (line of block 2).
@@ -553,6 +553,8 @@ const REGION_CYCLES: usize = 3;
 /// The cycle whose moves are being taken.
 struct Running {
     moves: Moves,
+    /// The cycle's G code.
+    code: &'static str,
     line: usize,
     /// G76 (annotated with its passes), G32, or G75.1.
     kind: RunningKind,
@@ -609,7 +611,7 @@ impl<'j> OurSteps<'j> {
                                 cut: 0,
                                 flank: cycleref::Flank::Right,
                             });
-                            Context::G76 { line, pass, role }
+                            Context::G76 { code: run.code, line, pass, role }
                         }
                         RunningKind::G32 => Context::G32 { line, role },
                         RunningKind::G92 => Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role },
@@ -644,6 +646,7 @@ impl<'j> OurSteps<'j> {
                 regions.push_back(started);
                 *current = Some(Running {
                     moves,
+                    code: cycle.code(),
                     line: cycle.line(),
                     kind: match cycle {
                         Cycle::G76(_) => RunningKind::G76,
@@ -1734,8 +1737,8 @@ impl Report {
 
     fn where_ours(&self, s: &Step) -> String {
         match s.context {
-            Context::G76 { line, pass, .. } => format!(
-                "G76 at line {line}, {} pass {} (start {}, depth {}, cut {})",
+            Context::G76 { code, line, pass, .. } => format!(
+                "{code} at line {line}, {} pass {} (start {}, depth {}, cut {})",
                 kind_name(pass.kind),
                 pass.number,
                 pass.start,
@@ -1918,8 +1921,8 @@ impl Report {
             v["start_angle_millidegrees"] = json!({"num": s.angle.num, "den": s.angle.den});
         }
         match s.context {
-            Context::G76 { line, pass, role } => {
-                v["cycle"] = json!({"code": "G76", "line": line});
+            Context::G76 { code, line, pass, role } => {
+                v["cycle"] = json!({"code": code, "line": line});
                 v["pass"] = json!({
                     "kind": kind_name(pass.kind), "number": pass.number, "start": pass.start,
                     "depth": fixed(pass.depth, self.units), "cut": fixed(pass.cut, self.units),

@@ -132,7 +132,8 @@ fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> 
     let starts = call.cycle.starts;
     writeln!(
         out,
-        "(G76 line {}: {} rough + {} finish passes x {} start{})",
+        "({} line {}: {} rough + {} finish passes x {} start{})",
+        call.code.code(),
         call.block.line,
         rough_passes,
         call.cycle.finishing_passes,
@@ -417,7 +418,7 @@ fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
         let Item::G76(call) = &item else { return Ok(()) };
         let u = call.cycle.units;
-        writeln!(out, "G76 at line {} ({}):", call.block.line, job.name)?;
+        writeln!(out, "{} at line {} ({}):", call.code.code(), call.block.line, job.name)?;
         let [a, b, c, d, e, f, g, h] = PASS_ROW;
         writeln!(out, "{a:>6} {b:>6} {c:>5} {d:>6} {e:>12} {f:>12} {g:>14} {h:>14}")?;
         let mut moves = moves(job, Cycle::G76(call))?.peekable();

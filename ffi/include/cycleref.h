@@ -92,6 +92,10 @@ enum CyclerefCycle
      * A G92 thread-cutting cycle block.
      */
     CYCLEREF_CYCLE_G92 = 3,
+    /**
+     * A G78 enhanced multiple thread-cutting cycle (the G76 cycle's model).
+     */
+    CYCLEREF_CYCLE_G78 = 4,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -370,6 +374,19 @@ enum CyclerefInfeed
      * D2: left and right flanks alternately.
      */
     CYCLEREF_INFEED_LEFT_RIGHT = 2,
+    /**
+     * G78 r = 0: on the centre line.
+     */
+    CYCLEREF_INFEED_CENTRE = 3,
+    /**
+     * G78 r = 1: along the left flank.
+     */
+    CYCLEREF_INFEED_LEFT_FLANK = 4,
+    /**
+     * G78 r = 3 on the 980TDi: one pass a level, right and left flank in
+     * turn.
+     */
+    CYCLEREF_INFEED_ALTERNATING = 5,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -711,6 +728,10 @@ typedef struct CyclerefG76Params {
      * Largest number of rough passes; 0 for the default (1 000 000).
      */
     uint32_t pass_limit;
+    /**
+     * A `CyclerefDepthMode` (0, decreasing, for G76).
+     */
+    uint32_t depth_mode;
     /**
      * Non-zero: inch units.
      */

@@ -145,6 +145,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use cycleref::{expand_g76, G76Moves, InputUnit, XMode};
 use cycleref_spec::pipeline::{self, Engine};
+use cycleref_spec::reader::Multipass;
 use cycleref_spec::{Cycle, Machine, Moves, ProfileName, ProgramError, Reader, RunError};
 
 pub use cursor::CyclerefCursor;
@@ -298,7 +299,10 @@ impl CycleMoves {
         let moves = pipeline::expand_at(cycle, Engine::Impl).map_err(run_failure)?;
         // The C names of the pipeline's cycles.
         let kind = match cycle {
-            Cycle::G76(_) => CyclerefCycle::G76,
+            Cycle::G76(c) => match c.code {
+                Multipass::G76 => CyclerefCycle::G76,
+                Multipass::G78 => CyclerefCycle::G78,
+            },
             Cycle::G32(_) => CyclerefCycle::G32,
             Cycle::G75(_) => CyclerefCycle::G75,
             Cycle::G92(_) => CyclerefCycle::G92,

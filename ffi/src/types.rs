@@ -12,8 +12,8 @@ use core::ffi::c_char;
 
 use cycleref::g76::DEFAULT_PASS_LIMIT;
 use cycleref::{
-    Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Lead, LeadWord, Motion, Move, PassKind, Point, Role,
-    RunOut, Units, XMode,
+    DepthMode, Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Lead, LeadWord, Motion, Move, PassKind,
+    Point, Role, RunOut, Units, XMode,
 };
 
 /// Size of `CyclerefError.message` in bytes, the terminating NUL included.
@@ -81,6 +81,8 @@ pub enum CyclerefCycle {
     G75 = 2,
     /// A G92 thread-cutting cycle block.
     G92 = 3,
+    /// A G78 enhanced multiple thread-cutting cycle (the G76 cycle's model).
+    G78 = 4,
 }
 
 /// How the tool moves to the end point of a move.
@@ -177,6 +179,25 @@ pub enum CyclerefInfeed {
     RightCentre = 1,
     /// D2: left and right flanks alternately.
     LeftRight = 2,
+    /// G78 r = 0: on the centre line.
+    Centre = 3,
+    /// G78 r = 1: along the left flank.
+    LeftFlank = 4,
+    /// G78 r = 3 on the 980TDi: one pass a level, right and left flank in
+    /// turn.
+    Alternating = 5,
+}
+
+/// How the rough depths of a G76/G78 cycle grow
+/// (`CyclerefG76Params::depth_mode`).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CyclerefDepthMode {
+    /// `round(Δd √n)` with the minimum cut (G76; G78 递减式). Zero, so a
+    /// zero-initialised struct is a G76.
+    Decreasing = 0,
+    /// Equal steps of max(Δd, Δdmin) (G78 等距离).
+    Equal = 1,
 }
 
 /// The kind of run-out of a G76 cycle (`CyclerefG76Params::run_out_kind`).
@@ -465,6 +486,8 @@ pub struct CyclerefG76Params {
     pub run_out_angle: u32,
     /// Largest number of rough passes; 0 for the default (1 000 000).
     pub pass_limit: u32,
+    /// A `CyclerefDepthMode` (0, decreasing, for G76).
+    pub depth_mode: u32,
     /// Non-zero: inch units.
     pub inch: u8,
     /// Non-zero: X words are radii.
@@ -499,6 +522,13 @@ impl CyclerefG76Params {
                 Infeed::RightFlank => CyclerefInfeed::RightFlank as u32,
                 Infeed::RightCentre => CyclerefInfeed::RightCentre as u32,
                 Infeed::LeftRight => CyclerefInfeed::LeftRight as u32,
+                Infeed::Centre => CyclerefInfeed::Centre as u32,
+                Infeed::LeftFlank => CyclerefInfeed::LeftFlank as u32,
+                Infeed::Alternating => CyclerefInfeed::Alternating as u32,
+            },
+            depth_mode: match c.depth_mode {
+                DepthMode::Decreasing => CyclerefDepthMode::Decreasing as u32,
+                DepthMode::Equal => CyclerefDepthMode::Equal as u32,
             },
             starts: c.starts,
             lead_word: match c.lead.word {
@@ -544,7 +574,15 @@ impl CyclerefG76Params {
             0 => Infeed::RightFlank,
             1 => Infeed::RightCentre,
             2 => Infeed::LeftRight,
+            3 => Infeed::Centre,
+            4 => Infeed::LeftFlank,
+            5 => Infeed::Alternating,
             v => return Err(bad("infeed", v, "CyclerefInfeed")),
+        };
+        let depth_mode = match self.depth_mode {
+            0 => DepthMode::Decreasing,
+            1 => DepthMode::Equal,
+            v => return Err(bad("depth_mode", v, "CyclerefDepthMode")),
         };
         let word = match self.lead_word {
             0 => LeadWord::F,
@@ -577,6 +615,7 @@ impl CyclerefG76Params {
             finishing_passes: self.finishing_passes,
             tool_angle: self.tool_angle,
             infeed,
+            depth_mode,
             lead_in: self.lead_in,
             starts: self.starts,
             lead: Lead { word, mantissa: self.lead_mantissa, scale: self.lead_scale },

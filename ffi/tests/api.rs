@@ -570,7 +570,8 @@ fn the_step_api_yields_the_cycle() {
             CyclerefG76Params { run_out_kind: 3, ..params },
             CyclerefG76Params { lead_word: 2, ..params },
             CyclerefG76Params { increment: 3, ..params },
-            CyclerefG76Params { infeed: 3, ..params },
+            CyclerefG76Params { infeed: 6, ..params },
+            CyclerefG76Params { depth_mode: 2, ..params },
         ] {
             assert!(cycleref_g76_new(&bad, &mut err).is_null());
             assert_eq!(err.status, CyclerefStatus::InvalidArgument);

@@ -14,7 +14,7 @@
 //! ```
 
 use crate::g75::{Corner, G75Cycle, PathType};
-use crate::g76::{G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
+use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
 use crate::lead::{Lead, LeadWord};
 use crate::units::{IncrementSystem, InputUnit, Point, Units, XMode};
 
@@ -36,6 +36,7 @@ pub const M68X6: G76Cycle = G76Cycle {
     finishing_passes: 2,
     tool_angle: 60,
     infeed: Infeed::RightFlank,
+    depth_mode: DepthMode::Decreasing,
     lead_in: 0,
     starts: 1,
     lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },

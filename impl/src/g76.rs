@@ -1,5 +1,7 @@
-//! The typed parameters of one G76 cycle, as the program reader resolves
-//! them (one home, used by the reference model and by the engine alike).
+//! The typed parameters of one multiple thread-cutting cycle, G76 or GSK's
+//! enhanced G78, as the program reader resolves them (one home, used by the
+//! reference model and by the engine alike): G78 is a front end on the same
+//! cycle, with infeed modes and a depth mode G76 lacks.
 //!
 //! Every length is in least increments; radius amounts (k, Δd, Δdmin, d, i,
 //! E, J, K) are radius increments whatever [`XMode`] says, while the points
@@ -12,16 +14,41 @@ use crate::error::{CycleError, Field};
 use crate::lead::Lead;
 use crate::units::{Length, Point, Units, XMode, MAX_LENGTH};
 
-/// Infeed mode, the `D` word of the extended G76 (切入方式, seed 000).
+/// Infeed mode (切入方式): the `D` word of the extended G76 (seed 000), the
+/// `P(r)` digits of G78 (reading R-G78INFEED).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Infeed {
-    /// D0: along the right flank of the thread form (the original G76).
+    /// G76 D0, G78 r = 2: along the right flank of the thread form (the
+    /// original G76).
     RightFlank,
-    /// D1: right flank and centre, alternately.
+    /// G76 D1, G78 r = 3 (988TA 右中轮流): right flank and centre,
+    /// alternately (odd levels right, even levels centre).
     RightCentre,
-    /// D2: left and right flanks alternately, equal amounts: two passes
-    /// (right, then left) at every depth level but the last.
+    /// G76 D2, G78 r = 4 (988TA 左右等量轮流): left and right flanks
+    /// alternately, equal amounts: two passes (right, then left) at every
+    /// depth level but the last.
     LeftRight,
+    /// G78 r = 0 (沿螺纹牙型中线切入): every pass on the centre line of the
+    /// final form (radial infeed).
+    Centre,
+    /// G78 r = 1 (沿螺纹牙型左边切入): every pass on the left flank, the
+    /// right flank mirrored about the centre line.
+    LeftFlank,
+    /// G78 r = 3 on the 980TDi (交错切入): one pass a level, odd levels on the
+    /// right flank, even levels on the left (reading R-G78ALT).
+    Alternating,
+}
+
+/// How the rough depths grow (G78 P(m) on the 980TDi, D on the 988TA: 切深
+/// 选择).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthMode {
+    /// 递减式进刀: `round(Δd √n)` with the minimum cut (G76's schedule, the
+    /// only one G76 has).
+    Decreasing,
+    /// 等距离进刀: every rough cut Δd (at least Δdmin, at least one
+    /// increment): `D(n) = min(k - d, D(n-1) + max(Δd, Δdmin))`.
+    Equal,
 }
 
 /// The run-out (退尾) the cycle must make, after the profile's rules for
@@ -151,8 +178,10 @@ pub struct G76Cycle {
     pub finishing_passes: u32,
     /// P(a): tool angle (刀尖角度) in degrees, 0..=99.
     pub tool_angle: u32,
-    /// D: infeed mode.
+    /// D (G76) or P(r) (G78): infeed mode.
     pub infeed: Infeed,
+    /// G78's depth mode; always [`DepthMode::Decreasing`] for G76.
+    pub depth_mode: DepthMode,
     /// E: lead-in (旋进) distance along X (radius, unsigned); 0 is none.
     pub lead_in: i64,
     /// L: number of starts (头数), 1..=999.

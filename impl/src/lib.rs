@@ -16,7 +16,7 @@
 //! directly in least increments (IS-B: 0.001 mm), expanded move by move:
 //!
 //! ```
-//! use cycleref::{expand_g76, G76Cycle, Infeed, Lead, LeadWord, Motion, Point, RunOut, Units, XMode};
+//! use cycleref::{expand_g76, DepthMode, G76Cycle, Infeed, Lead, LeadWord, Motion, Point, RunOut, Units, XMode};
 //!
 //! let cycle = G76Cycle {
 //!     units: Units::IS_B_METRIC,
@@ -31,6 +31,7 @@
 //!     finishing_passes: 2,                 // P(m) 02
 //!     tool_angle: 60,                      // P(a) 60
 //!     infeed: Infeed::RightFlank,
+//!     depth_mode: DepthMode::Decreasing,
 //!     lead_in: 0,
 //!     starts: 1,
 //!     lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 }, // F6
@@ -73,7 +74,7 @@ pub use engine::{expand_g76, G76Moves};
 pub use error::{CycleError, Field, GrooveEdge};
 pub use g32::{G32Block, G32RunOut};
 pub use g75::{Corner, CornerKind, G75Cycle, PathType};
-pub use g76::{G76Cycle, Infeed, RunOut};
+pub use g76::{DepthMode, G76Cycle, Infeed, RunOut};
 pub use g92::G92Cycle;
 pub use lead::{Lead, LeadWord, Ratio};
 pub use moves::{Flank, Motion, Move, Pass, PassKind, Plunge, Role};

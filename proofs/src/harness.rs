@@ -11,8 +11,8 @@
 
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::{
-    CycleError, Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role,
-    RunOut, Units, XMode,
+    CycleError, DepthMode, Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind,
+    Point, Role, RunOut, Units, XMode,
 };
 
 use crate::cover;
@@ -35,8 +35,12 @@ pub struct Domain {
     pub tool_angle: (i64, i64),
     /// Finishing passes m.
     pub finishing: (i64, i64),
-    /// Infeed mode: 0 = D0, 1 = D1, 2 = D2.
+    /// Infeed mode: 0 = D0, 1 = D1, 2 = D2 (G76 and G78 r = 2, 3, 4), 3 =
+    /// centre, 4 = left flank, 5 = alternating flanks (G78 r = 0, 1 and the
+    /// 980TDi's r = 3).
     pub infeed: (i64, i64),
+    /// Depth mode (G78): 0 = equal steps, 1 = decreasing (G76's only).
+    pub depth_mode: (i64, i64),
     /// Starts L.
     pub starts: (i64, i64),
     /// 0 = external, 1 = internal.
@@ -82,6 +86,7 @@ impl Domain {
         tool_angle: (0, 99),
         finishing: (0, 99),
         infeed: (0, 2),
+        depth_mode: (1, 1),
         starts: (1, 999),
         internal: (0, 1),
         positive_z: (0, 1),
@@ -106,6 +111,7 @@ impl Domain {
         min_cut: (0, 4),
         allowance: (0, 20),
         infeed: (0, 2),
+        depth_mode: (1, 1),
         ..Domain::POINT
     };
 
@@ -120,6 +126,7 @@ impl Domain {
         tool_angle: (60, 60),
         finishing: (1, 1),
         infeed: (0, 0),
+        depth_mode: (1, 1),
         starts: (1, 1),
         internal: (0, 0),
         positive_z: (0, 0),
@@ -188,8 +195,12 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
     let infeed = match pick(d.infeed) {
         0 => Infeed::RightFlank,
         1 => Infeed::RightCentre,
-        _ => Infeed::LeftRight,
+        2 => Infeed::LeftRight,
+        3 => Infeed::Centre,
+        4 => Infeed::LeftFlank,
+        _ => Infeed::Alternating,
     };
+    let depth_mode = if pick(d.depth_mode) == 0 { DepthMode::Equal } else { DepthMode::Decreasing };
     let starts = count(d.starts);
     let internal = pick(d.internal) == 1;
     let positive_z = pick(d.positive_z) == 1;
@@ -244,6 +255,7 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
         finishing_passes: finishing,
         tool_angle,
         infeed,
+        depth_mode,
         lead_in,
         starts,
         lead,

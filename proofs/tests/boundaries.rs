@@ -22,6 +22,7 @@ fn at_the_edge(taper: i64) -> G76Cycle {
         finishing_passes: 1,
         tool_angle: 60,
         infeed: Infeed::RightFlank,
+        depth_mode: cycleref::DepthMode::Decreasing,
         lead_in: 0,
         starts: 1,
         lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },

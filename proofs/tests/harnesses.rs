@@ -36,6 +36,7 @@ const SCHEDULE_WIDE: Domain = Domain {
     min_cut: (0, 12),
     allowance: (0, 150),
     infeed: (0, 2),
+    depth_mode: (1, 1),
     ..Domain::POINT
 };
 
@@ -51,6 +52,7 @@ const GEOMETRY: Domain = Domain {
     tool_angle: (60, 60),
     finishing: (1, 1),
     infeed: (0, 2),
+    depth_mode: (1, 1),
     internal: (0, 1),
     positive_z: (0, 1),
     taper: (-42, 42),
@@ -74,6 +76,7 @@ const WIDE: Domain = Domain {
     tool_angle: (0, 99),
     finishing: (0, 5),
     infeed: (0, 2),
+    depth_mode: (1, 1),
     starts: (1, 4),
     internal: (0, 1),
     positive_z: (0, 1),

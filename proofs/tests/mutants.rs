@@ -61,6 +61,7 @@ const GEOMETRY: Domain = Domain {
     allowance: (0, 1),
     tool_angle: (58, 62),
     infeed: (0, 2),
+    depth_mode: (1, 1),
     internal: (0, 1),
     positive_z: (0, 1),
     taper: (-45, 45),

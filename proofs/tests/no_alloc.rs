@@ -114,6 +114,7 @@ fn multi_start_does_not_allocate() {
     let c = G76Cycle {
         starts: 7,
         infeed: Infeed::LeftRight,
+        depth_mode: cycleref::DepthMode::Decreasing,
         first_depth: 300,
         min_cut: 20,
         lead_in: 2000,

@@ -110,6 +110,7 @@ fn cycle(k: i64, first_depth: i64, min_cut: i64, finishing_allowance: i64) -> G7
         finishing_passes: 1,
         tool_angle: 60,
         infeed: Infeed::RightFlank,
+        depth_mode: cycleref::DepthMode::Decreasing,
         lead_in: 0,
         starts: 1,
         lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },

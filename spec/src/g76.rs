@@ -26,7 +26,7 @@
 
 use cycleref::angle::StartAngle;
 use cycleref::error::{CycleError, Field};
-use cycleref::g76::{G76Cycle, Infeed, RunOut};
+use cycleref::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use cycleref::lead::{Lead, Ratio};
 use cycleref::moves::{Flank, Move, Pass, PassKind};
 use cycleref::units::{Length, MAX_LENGTH};
@@ -150,13 +150,21 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// 精车切削量 R(d) 则 X 轴切深 = 牙高 P(k) − 精车切削量 R(d)".
 ///
 /// Twin: `impl/src/engine/schedule.rs`, `Schedule::next_level`.
+///
+/// G78's equal steps (等距离进刀, "等距离进刀的每次切削量为 Q(△d)", with the
+/// minimum cut as for every rough cut: "当粗车切削量小于△dmin时，以△dmin作为
+/// 本次粗车的切削量"): `Dn = min(k - d, D(n-1) + max(Δd, Δdmin, 1
+/// increment))`.
 #[must_use]
 pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
     let u = c.units;
     let last = from_increments(c.thread_height - c.finishing_allowance, u);
-    let law = depth_by_law(from_increments(c.first_depth, u), n, u);
+    let first = from_increments(c.first_depth, u);
     let min = effective_min_cut(from_increments(c.min_cut, u), u);
-    last.min(law.max(previous + min))
+    match c.depth_mode {
+        DepthMode::Decreasing => last.min(depth_by_law(first, n, u).max(previous + min)),
+        DepthMode::Equal => last.min(previous + first.max(min)),
+    }
 }
 
 /// The depths of the rough levels, in order: they strictly increase and the
@@ -202,29 +210,40 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let passes_of = |levels: u64| -> u64 {
         match c.infeed {
             Infeed::LeftRight => (2 * levels).saturating_sub(1),
-            _ => levels,
+            Infeed::RightFlank
+            | Infeed::RightCentre
+            | Infeed::Centre
+            | Infeed::LeftFlank
+            | Infeed::Alternating => levels,
         }
     };
     let mut depth = Decimal::ZERO;
     let mut n = 0_u64;
-    let levels = loop {
-        if depth >= last {
-            break n;
-        }
-        n += 1;
-        let law = depth_by_law(first, n, u);
-        if law < depth + min {
-            let rest = to_increments(last - depth, u);
-            let step = to_increments(min, u);
-            let more = u64::try_from(ceil_div(i128::from(rest), i128::from(step))).unwrap_or(u64::MAX);
-            break n - 1 + more;
-        }
-        if law >= last {
-            break n;
-        }
-        depth = law;
-        if n > limit {
-            return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+    let levels = if c.depth_mode == DepthMode::Equal {
+        // Equal steps of max(Δd, Δdmin, 1): ceil((k - d) / step) levels.
+        let step = to_increments(first.max(min), u);
+        let rest = to_increments(last, u);
+        u64::try_from(ceil_div(i128::from(rest), i128::from(step))).unwrap_or(u64::MAX)
+    } else {
+        loop {
+            if depth >= last {
+                break n;
+            }
+            n += 1;
+            let law = depth_by_law(first, n, u);
+            if law < depth + min {
+                let rest = to_increments(last - depth, u);
+                let step = to_increments(min, u);
+                let more = u64::try_from(ceil_div(i128::from(rest), i128::from(step))).unwrap_or(u64::MAX);
+                break n - 1 + more;
+            }
+            if law >= last {
+                break n;
+            }
+            depth = law;
+            if n > limit {
+                return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+            }
         }
     };
     let passes = passes_of(levels);
@@ -258,6 +277,11 @@ pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
 ///   flank, then on the left flank mirrored about the centre line
 ///   (`2 zc - round(Dn tan(a/2))`); the last level once (the two flanks meet
 ///   at `zc`), as the 988TA figure draws Bn1, Bn2 … and a single Bf.
+/// * G78 r = 0 (中线切入): every rough pass on the centre line, `zc`.
+/// * G78 r = 1 (左边切入): every rough pass on the left flank, `2 zc -
+///   round(Dn tan(a/2))`.
+/// * G78 r = 3 on the 980TDi (交错切入, reading R-G78ALT): one pass a level,
+///   odd levels on the right flank, even levels on the left.
 /// * Finishing: m passes at depth k from the Z of the last rough pass, `zc`
 ///   (seed 000 注意 2: "精车 Z 轴起切点与最后一刀粗车一致"); the first removes
 ///   d, the others 0 (seed 000: "第一次精车切削量为 d，其后的精车切削量为 0").
@@ -311,6 +335,22 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
                 push(PassKind::Rough, depth, cut, Flank::Right, right, number);
                 if level < f {
                     number += 1;
+                    push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+                }
+            }
+            Infeed::Centre => {
+                number += 1;
+                push(PassKind::Rough, depth, cut, Flank::Centre, centre, number);
+            }
+            Infeed::LeftFlank => {
+                number += 1;
+                push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+            }
+            Infeed::Alternating => {
+                number += 1;
+                if level % 2 == 1 {
+                    push(PassKind::Rough, depth, cut, Flank::Right, right, number);
+                } else {
                     push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
                 }
             }

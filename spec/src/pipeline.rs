@@ -33,7 +33,8 @@ pub enum Engine {
 /// A cycle of a program, borrowed from the item the reader produced.
 #[derive(Clone, Copy, Debug)]
 pub enum Cycle<'r, 'a> {
-    /// A G76 multiple thread-cutting cycle.
+    /// A G76 multiple thread-cutting cycle, or a G78 (its code in the call:
+    /// the same cycle, another front end).
     G76(&'r G76Call<'a>),
     /// A G32 thread-cutting block.
     G32(&'r G32Call<'a>),
@@ -56,11 +57,12 @@ impl<'r, 'a> Cycle<'r, 'a> {
         }
     }
 
-    /// The G code, as the manuals write it (`G76`, `G32`, `G75.1`, `G92`).
+    /// The G code, as the manuals write it (`G76`, `G78`, `G32`, `G75.1`,
+    /// `G92`).
     #[must_use]
     pub fn code(self) -> &'static str {
         match self {
-            Cycle::G76(_) => "G76",
+            Cycle::G76(c) => c.code.code(),
             Cycle::G32(_) => "G32",
             Cycle::G75(_) => "G75.1",
             Cycle::G92(_) => "G92",

@@ -14,7 +14,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::str::FromStr;
 
-use cycleref::{IncrementSystem, InputUnit, Units, XMode};
+use cycleref::{IncrementSystem, Infeed, InputUnit, Units, XMode};
 use rust_decimal::Decimal;
 
 /// Which control's manual a program is read by.
@@ -161,6 +161,31 @@ pub struct Profile {
     pub g92_extra: &'static str,
     /// Largest L (starts) of G92: 980TDi 1..99, 988TA 1..999.
     pub g92_max_starts: i64,
+    /// The control's G78 (the GSK profiles), or `None` (FANUC).
+    pub g78: Option<G78Rules>,
+}
+
+/// How a profile writes G78, the enhanced multiple thread-cutting cycle
+/// (manuals/gsk980tdi-g78.txt, manuals/gsk988ta-g78.txt; readings R-G78P,
+/// R-G78INFEED).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct G78Rules {
+    /// Addresses of block 1 besides `G P Q R M S T` (980TDi: J K D L E;
+    /// 988TA: D L E).
+    pub block1_extra: &'static str,
+    /// Addresses of block 2 besides `G X Z U W R P Q F I M S T` (988TA: J K).
+    pub block2_extra: &'static str,
+    /// The infeed mode each value of P(r) selects (980TDi 0-3, 988TA 0-4).
+    pub infeeds: &'static [Infeed],
+    /// The 980TDi's P(m) is the depth mode (切深选择) and D the finishing
+    /// passes; the 988TA's P(m) is the finishing passes and D the depth mode.
+    pub m_is_depth_mode: bool,
+    /// Largest L.
+    pub max_starts: i64,
+    /// The infeed mode's parameter when P(r) was never given (No.062, 5144).
+    pub infeed_param: &'static str,
+    /// The depth mode's parameter (No.061, 5145): 0 equal, 1 decreasing.
+    pub depth_mode_param: &'static str,
 }
 
 /// The parameter numbers a profile uses for G76.
@@ -202,6 +227,7 @@ impl Profile {
                 g75_1: false,
                 g92_extra: "",
                 g92_max_starts: 1,
+                g78: None,
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -227,6 +253,15 @@ impl Profile {
                 g75_1: true,
                 g92_extra: "JKL",
                 g92_max_starts: 99,
+                g78: Some(G78Rules {
+                    block1_extra: "JKDLE",
+                    block2_extra: "",
+                    infeeds: &[Infeed::Centre, Infeed::LeftFlank, Infeed::RightFlank, Infeed::Alternating],
+                    m_is_depth_mode: true,
+                    max_starts: 99,
+                    infeed_param: "62",
+                    depth_mode_param: "61",
+                }),
                 max_depth_increments: 99_999_999,
                 params: ParamNumbers {
                     finishing_passes: "57",
@@ -252,6 +287,21 @@ impl Profile {
                 g75_1: false,
                 g92_extra: "JKLQP",
                 g92_max_starts: 999,
+                g78: Some(G78Rules {
+                    block1_extra: "DLE",
+                    block2_extra: "JK",
+                    infeeds: &[
+                        Infeed::Centre,
+                        Infeed::LeftFlank,
+                        Infeed::RightFlank,
+                        Infeed::RightCentre,
+                        Infeed::LeftRight,
+                    ],
+                    m_is_depth_mode: false,
+                    max_starts: 999,
+                    infeed_param: "5144",
+                    depth_mode_param: "5145",
+                }),
                 max_depth_increments: 999_999_999,
                 params: ParamNumbers {
                     finishing_passes: "5142",
@@ -286,6 +336,13 @@ impl Profile {
         }
         if let Some(n) = p.thread_mode {
             m.insert(n.to_string(), ParamValue::Int(0));
+        }
+        // Reading R-PARAM: G78 right-flank infeed and decreasing depths by
+        // default, so that a G78 with neither P(r) nor the depth mode cuts
+        // G76's passes.
+        if let Some(g78) = self.g78 {
+            m.insert(g78.infeed_param.to_string(), ParamValue::Int(2));
+            m.insert(g78.depth_mode_param.to_string(), ParamValue::Int(1));
         }
         m
     }

@@ -9,7 +9,7 @@
 use cycleref::angle::StartAngle;
 use cycleref::g32::{G32Block, G32RunOut};
 use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
-use cycleref::g76::{G76Cycle, Infeed, RunOut};
+use cycleref::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use cycleref::g92::G92Cycle;
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
 use cycleref::units::{Point, MAX_LENGTH};
@@ -101,9 +101,34 @@ impl G32Call<'_> {
     }
 }
 
-/// One G76 cycle of a program.
+/// Which multiple thread-cutting cycle a [`G76Call`] is: G76, or GSK's
+/// enhanced G78, a front end on the same cycle (its infeed and depth modes
+/// are in [`G76Cycle`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Multipass {
+    /// G76, the multiple thread-cutting cycle.
+    G76,
+    /// G78, the GSK 980TDi's and 988TA's enhanced multiple thread-cutting
+    /// cycle (增强型螺纹切削循环).
+    G78,
+}
+
+impl Multipass {
+    /// The G code as the manuals write it.
+    #[must_use]
+    pub fn code(self) -> &'static str {
+        match self {
+            Multipass::G76 => "G76",
+            Multipass::G78 => "G78",
+        }
+    }
+}
+
+/// One G76 or G78 cycle of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct G76Call<'a> {
+    /// G76 or G78.
+    pub code: Multipass,
     /// Block 2 (the one with X(U) Z(W)).
     pub block: Block<'a>,
     /// Line of the block 1 whose values are in force, if any.
@@ -120,6 +145,7 @@ impl G76Call<'_> {
     #[must_use]
     pub fn detached(&self) -> G76Call<'static> {
         G76Call {
+            code: self.code,
             block: self.block.detached(),
             params_line: self.params_line,
             cycle: self.cycle,
@@ -216,6 +242,10 @@ type AxisWords<'b, 'a> =
 struct G76Modal {
     finishing_passes: Option<u32>,
     chamfer: Option<u32>,
+    /// G78's P(r) (G76's infeed D is one-shot).
+    infeed: Option<Infeed>,
+    /// G78's depth mode (980TDi P(m), 988TA D).
+    depth_mode: Option<DepthMode>,
     tool_angle: Option<u32>,
     min_cut: Option<i64>,
     allowance: Option<i64>,
@@ -226,6 +256,9 @@ struct G76Modal {
 /// One-shot values of the last block 1 (D, L, E; J, K on the 980TDi).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct G76OneShot {
+    /// The cycle whose block 1 set these (a G76 block 1 does not apply to
+    /// a G78 block 2, nor the other way).
+    code: Option<Multipass>,
     infeed: Option<Infeed>,
     starts: Option<u32>,
     lead_in: Option<i64>,
@@ -245,7 +278,8 @@ struct State<'m> {
     lead: Option<Lead>,
     speed: bool,
     spindle_on: bool,
-    modal: G76Modal,
+    /// Block 1's modal values, of G76 and of G78 (each its own).
+    modal: [G76Modal; 2],
     one_shot: G76OneShot,
     /// G32's modal J and K (seed 002: "J、K是模态代码 … 在执行非螺纹切削代码时取消").
     g32_j: Option<i64>,
@@ -431,7 +465,7 @@ impl<'m> LineReader<'m> {
                 lead: None,
                 speed: false,
                 spindle_on: false,
-                modal: G76Modal::default(),
+                modal: [G76Modal::default(); 2],
                 one_shot: G76OneShot::default(),
                 g32_j: None,
                 g32_k: None,
@@ -734,7 +768,7 @@ impl State<'_> {
 
     fn block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
         // G codes of the block.
-        let mut g76 = false;
+        let mut g76: Option<Multipass> = None;
         let mut g75 = false;
         let mut g50 = false;
         let mut g04 = false;
@@ -751,7 +785,21 @@ impl State<'_> {
                 Some(92) => motion = Some(MotionMode::G92),
                 Some(4) => g04 = true,
                 Some(50) => g50 = true,
-                Some(76) => g76 = true,
+                Some(76) => g76 = Some(Multipass::G76),
+                Some(78) => {
+                    if self.machine.profile.g78.is_none() {
+                        return Err(err(
+                            &block,
+                            Some(w),
+                            ErrorKind::Unsupported(format!(
+                                "G78 on the {} profile (G78 is GSK's enhanced thread-cutting cycle: use the \
+                                 gsk980 or gsk988 profile)",
+                                self.machine.profile.name
+                            )),
+                        ));
+                    }
+                    g76 = Some(Multipass::G78);
+                }
                 Some(20 | 21) => {
                     let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
                     if unit != self.units.unit {
@@ -808,21 +856,21 @@ impl State<'_> {
         if !block.words.is_empty() {
             // Continuity needs consecutive G32 blocks (a comment line does not count).
             let thread_block = motion.unwrap_or(self.motion) == MotionMode::G32
-                && !g76
+                && g76.is_none()
                 && !g50
                 && !g04
                 && ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c));
             if !thread_block {
                 self.thread_run = None;
                 // Seed 002: J and K are cancelled by a non-thread motion.
-                if motion.is_some_and(|m| m != MotionMode::G32) || g76 || g75 {
+                if motion.is_some_and(|m| m != MotionMode::G32) || g76.is_some() || g75 {
                     self.g32_j = None;
                     self.g32_k = None;
                 }
             }
         }
         if g75 {
-            if motion.is_some() || g76 || g50 || g04 {
+            if motion.is_some() || g76.is_some() || g50 || g04 {
                 return Err(err(
                     &block,
                     None,
@@ -837,18 +885,18 @@ impl State<'_> {
                 Some(first) => self.g75_block2(first, block).map(Item::G75),
             };
         }
-        if g76 {
+        if let Some(code) = g76 {
             if motion.is_some() {
                 return Err(err(
                     &block,
                     None,
-                    ErrorKind::Unsupported("a motion G code in the same block as G76".into()),
+                    ErrorKind::Unsupported(format!("a motion G code in the same block as {}", code.code())),
                 ));
             }
             return if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
-                self.g76_block2(block).map(Item::G76)
+                self.g76_block2(block, code).map(Item::G76)
             } else {
-                self.g76_block1(&block)?;
+                self.g76_block1(&block, code)?;
                 Ok(Item::G76Params(block))
             };
         }
@@ -1179,45 +1227,67 @@ impl State<'_> {
         q_word(self.machine, self.units, block, w)
     }
 
-    /// G76 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's extras.
-    fn g76_block1(&mut self, block: &Block<'_>) -> Result<(), ProgramError> {
+    /// G76 or G78 block 1: `P(m)(r)(a) Q(Δdmin) R(d)` and the profile's
+    /// extras (G76: J K on the 980TDi, D L E on the 988TA; G78: J K D L E,
+    /// D L E).
+    fn g76_block1(&mut self, block: &Block<'_>, code: Multipass) -> Result<(), ProgramError> {
         let profile = &self.machine.profile;
-        self.check_addresses(block, "G76 block 1", "GPQRMST", profile.block1_extra)?;
+        let (name, extra) = match (code, profile.g78) {
+            (Multipass::G78, Some(g78)) => ("G78 block 1", g78.block1_extra),
+            _ => ("G76 block 1", profile.block1_extra),
+        };
+        self.check_addresses(block, name, "GPQRMST", extra)?;
         if let Some(p) = block.get('P')? {
-            self.split_p(block, p)?;
+            self.split_p(block, p, code)?;
         }
-        if let Some(q) = block.get('Q')? {
-            self.modal.min_cut = Some(self.pq_length(block, q)?);
+        let min_cut = block.get('Q')?.map(|q| self.pq_length(block, q)).transpose()?;
+        let allowance = block.get('R')?.map(|r| self.unsigned_length(block, r)).transpose()?;
+        let lead_in = block.get('E')?.map(|e| self.unsigned_length(block, e)).transpose()?;
+        let j = block.get('J')?.map(|j| self.unsigned_length(block, j)).transpose()?;
+        let k = block.get('K')?.map(|k| self.unsigned_length(block, k)).transpose()?;
+        let modal = &mut self.modal[code as usize];
+        if min_cut.is_some() {
+            modal.min_cut = min_cut;
         }
-        if let Some(r) = block.get('R')? {
-            self.modal.allowance = Some(self.unsigned_length(block, r)?);
+        if allowance.is_some() {
+            modal.allowance = allowance;
         }
-        let mut one = G76OneShot { line: Some(block.line), ..G76OneShot::default() };
+        let mut one =
+            G76OneShot { code: Some(code), line: Some(block.line), lead_in, j, k, ..G76OneShot::default() };
         if let Some(d) = block.get('D')? {
-            one.infeed = Some(match Self::count(block, d, 0, 2)? {
-                0 => Infeed::RightFlank,
-                1 => Infeed::RightCentre,
-                _ => Infeed::LeftRight,
-            });
+            match (code, profile.g78) {
+                (Multipass::G78, Some(g78)) if g78.m_is_depth_mode => {
+                    // 980TDi: D is the finishing passes, 0..99.
+                    modal.finishing_passes = Some(Self::count(block, d, 0, 99)?);
+                }
+                (Multipass::G78, _) => {
+                    // 988TA: D is the depth mode, 0 equal, 1 decreasing.
+                    modal.depth_mode = Some(depth_mode(Self::count(block, d, 0, 1)?));
+                }
+                (Multipass::G76, _) => {
+                    one.infeed = Some(match Self::count(block, d, 0, 2)? {
+                        0 => Infeed::RightFlank,
+                        1 => Infeed::RightCentre,
+                        _ => Infeed::LeftRight,
+                    });
+                }
+            }
         }
         if let Some(l) = block.get('L')? {
-            one.starts = Some(Self::count(block, l, 1, 999)?);
-        }
-        if let Some(e) = block.get('E')? {
-            one.lead_in = Some(self.unsigned_length(block, e)?);
-        }
-        if let Some(j) = block.get('J')? {
-            one.j = Some(self.unsigned_length(block, j)?);
-        }
-        if let Some(k) = block.get('K')? {
-            one.k = Some(self.unsigned_length(block, k)?);
+            let max = match (code, profile.g78) {
+                (Multipass::G78, Some(g78)) => g78.max_starts,
+                _ => 999,
+            };
+            one.starts = Some(Self::count(block, l, 1, max)?);
         }
         self.one_shot = one;
         Ok(())
     }
 
-    /// Reading R-PSPLIT: last two digits a, next two r, the rest m.
-    fn split_p(&mut self, block: &Block<'_>, p: &Word<'_>) -> Result<(), ProgramError> {
+    /// Reading R-PSPLIT: last two digits a, next two r, the rest m. For
+    /// G78 (reading R-G78P) r is the infeed mode and, on the 980TDi, m the
+    /// depth mode.
+    fn split_p(&mut self, block: &Block<'_>, p: &Word<'_>, code: Multipass) -> Result<(), ProgramError> {
         if p.number().has_point() || p.number().negative {
             return Err(err(
                 block,
@@ -1240,21 +1310,54 @@ impl State<'_> {
             ));
         }
         let a = part(n.saturating_sub(2), n);
-        self.modal.tool_angle = Some(a);
+        let g78 = self.machine.profile.g78.filter(|_| code == Multipass::G78);
+        let min = self.machine.profile.min_finishing_passes;
+        let modal = &mut self.modal[code as usize];
+        modal.tool_angle = Some(a);
         if n >= 3 {
-            self.modal.chamfer = Some(part(n.saturating_sub(4), n - 2));
+            let r = part(n.saturating_sub(4), n - 2);
+            match g78 {
+                Some(g78) => {
+                    let mode = g78.infeeds.get(r as usize).copied().ok_or_else(|| {
+                        err(
+                            block,
+                            Some(p),
+                            ErrorKind::OutOfRange {
+                                range: format!("G78 infeed mode r 00..{:02}", g78.infeeds.len() - 1),
+                            },
+                        )
+                    })?;
+                    modal.infeed = Some(mode);
+                }
+                None => modal.chamfer = Some(r),
+            }
         }
         if n >= 5 {
             let m = part(0, n - 4);
-            let min = self.machine.profile.min_finishing_passes;
-            if m < min {
-                return Err(err(
-                    block,
-                    Some(p),
-                    ErrorKind::OutOfRange { range: format!("finishing passes m {min:02}..99") },
-                ));
+            match g78 {
+                Some(g78) if g78.m_is_depth_mode => {
+                    if m > 1 {
+                        return Err(err(
+                            block,
+                            Some(p),
+                            ErrorKind::OutOfRange {
+                                range: "G78 depth mode m 0 (equal) or 1 (decreasing)".into(),
+                            },
+                        ));
+                    }
+                    modal.depth_mode = Some(depth_mode(m));
+                }
+                _ => {
+                    if m < min {
+                        return Err(err(
+                            block,
+                            Some(p),
+                            ErrorKind::OutOfRange { range: format!("finishing passes m {min:02}..99") },
+                        ));
+                    }
+                    modal.finishing_passes = Some(m);
+                }
             }
-            self.modal.finishing_passes = Some(m);
         }
         Ok(())
     }
@@ -1288,10 +1391,16 @@ impl State<'_> {
         }
     }
 
-    /// G76 block 2: `X(U) Z(W) R(i) P(k) Q(Δd) F(I)` and the profile's extras.
-    fn g76_block2<'a>(&mut self, block: Block<'a>) -> Result<G76Call<'a>, ProgramError> {
+    /// G76 or G78 block 2: `X(U) Z(W) R(i) P(k) Q(Δd) F(I)` and the
+    /// profile's extras (J K on the 988TA).
+    fn g76_block2<'a>(&mut self, block: Block<'a>, code: Multipass) -> Result<G76Call<'a>, ProgramError> {
         let profile = &self.machine.profile;
-        self.check_addresses(&block, "G76 block 2", "GXZUWRPQFIMST", profile.block2_extra)?;
+        let g78 = profile.g78.filter(|_| code == Multipass::G78);
+        let (name, block1_extra, block2_extra) = match g78 {
+            Some(g78) => ("G78 block 2", g78.block1_extra, g78.block2_extra),
+            None => ("G76 block 2", profile.block1_extra, profile.block2_extra),
+        };
+        self.check_addresses(&block, name, "GXZUWRPQFIMST", block2_extra)?;
         let with_line = |mut e: ProgramError| {
             if e.line == 0 {
                 e.line = block.line;
@@ -1313,7 +1422,7 @@ impl State<'_> {
         let lead = self.block_lead(&block)?;
         let mut j = None;
         let mut kk = None;
-        if profile.block2_extra.contains('J') {
+        if block2_extra.contains('J') {
             if let Some(w) = block.get('J')? {
                 j = Some(self.unsigned_length(&block, w)?);
             }
@@ -1321,33 +1430,39 @@ impl State<'_> {
                 kk = Some(self.unsigned_length(&block, w)?);
             }
         }
+        // Block 1's one-shot values apply to the block 2 of the same cycle.
         let one = std::mem::take(&mut self.one_shot);
-        if profile.block1_extra.contains('J') {
+        let one = if one.code == Some(code) { one } else { G76OneShot::default() };
+        let modal = self.modal[code as usize];
+        if block1_extra.contains('J') {
             j = one.j;
             kk = one.k;
         }
         if profile.jk_modal {
+            let modal = &mut self.modal[code as usize];
             if j.is_some() {
-                self.modal.j = j;
+                modal.j = j;
             }
             if kk.is_some() {
-                self.modal.k = kk;
+                modal.k = kk;
             }
-            j = self.modal.j;
-            kk = self.modal.k;
+            j = modal.j;
+            kk = modal.k;
         }
         let p = &profile.params;
-        let m = match self.modal.finishing_passes {
+        let m = match modal.finishing_passes {
             Some(m) => m,
             None => self
                 .param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99)
                 .map_err(with_line)?,
         };
-        let a = match self.modal.tool_angle {
+        let a = match modal.tool_angle {
             Some(a) => a,
             None => self.param_count(p.tool_angle, 0, 99).map_err(with_line)?,
         };
-        let r = match self.modal.chamfer {
+        // G78 has no chamfer word (its P(r) is the infeed mode): the
+        // parameter's (reading R-G78RUNOUT).
+        let r = match modal.chamfer.filter(|_| g78.is_none()) {
             Some(r) => r,
             None => self.param_count(p.chamfer, 0, 99).map_err(with_line)?,
         };
@@ -1358,15 +1473,33 @@ impl State<'_> {
             },
             None => 45,
         };
-        let min_cut = match self.modal.min_cut {
+        let min_cut = match modal.min_cut {
             Some(v) => v,
             None => self.param_length(p.min_cut).map_err(with_line)?,
         };
-        let allowance = match self.modal.allowance {
+        let allowance = match modal.allowance {
             Some(v) => v,
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
         let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
+        let (infeed, depth_mode) = match g78 {
+            None => (one.infeed.unwrap_or(Infeed::RightFlank), DepthMode::Decreasing),
+            Some(g78) => {
+                let infeed = match modal.infeed {
+                    Some(i) => i,
+                    None => {
+                        let last = i64::try_from(g78.infeeds.len()).unwrap_or(1) - 1;
+                        let v = self.param_count(g78.infeed_param, 0, last).map_err(with_line)?;
+                        g78.infeeds.get(v as usize).copied().unwrap_or(Infeed::RightFlank)
+                    }
+                };
+                let depth = match modal.depth_mode {
+                    Some(d) => d,
+                    None => depth_mode(self.param_count(g78.depth_mode_param, 0, 1).map_err(with_line)?),
+                };
+                (infeed, depth)
+            }
+        };
         let restore = self.restore();
         let cycle = G76Cycle {
             units: self.units,
@@ -1380,7 +1513,8 @@ impl State<'_> {
             finishing_allowance: allowance,
             finishing_passes: m,
             tool_angle: a,
-            infeed: one.infeed.unwrap_or(Infeed::RightFlank),
+            infeed,
+            depth_mode,
             lead_in: one.lead_in.unwrap_or(0),
             starts: one.starts.unwrap_or(1),
             lead,
@@ -1389,7 +1523,7 @@ impl State<'_> {
         };
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.moved = true;
-        Ok(G76Call { params_line: one.line, block, cycle, restore })
+        Ok(G76Call { code, params_line: one.line, block, cycle, restore })
     }
 }
 
@@ -1661,6 +1795,16 @@ pub fn q_word(
                 StartAngle { num: u32::try_from(t).unwrap_or(u32::MAX), den: 10 }
             })
         }
+    }
+}
+
+/// G78's depth mode from its digit (980TDi P(m), 988TA D, parameters No.061
+/// and 5145): 0 equal steps (等距离进刀), 1 decreasing (递减式进刀).
+fn depth_mode(v: u32) -> DepthMode {
+    if v == 0 {
+        DepthMode::Equal
+    } else {
+        DepthMode::Decreasing
     }
 }
 

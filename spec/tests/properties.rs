@@ -4,8 +4,8 @@
 
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::{
-    CycleError, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role, RunOut,
-    Units, XMode,
+    CycleError, DepthMode, G76Cycle, IncrementSystem, Infeed, InputUnit, Motion, Move, PassKind, Point, Role,
+    RunOut, Units, XMode,
 };
 use proptest::prelude::*;
 
@@ -13,7 +13,7 @@ fn cycles() -> impl Strategy<Value = G76Cycle> {
     (
         (any::<bool>(), any::<bool>(), any::<bool>(), any::<bool>(), any::<bool>()),
         (1_i64..=20_000, 1_i64..=30_000, 0_i64..=3_000, 0_u32..=100),
-        (0_u32..=99, 0_u32..=4, 0_u8..3, 1_u32..=4),
+        (0_u32..=99, 0_u32..=4, 0_u8..12, 1_u32..=4),
         (-5_000_i64..=5_000, 1_000_i64..=200_000, 0_i64..=3_000),
         (0_u8..4, 0_i64..=3_000, 0_i64..=3_000, 0_u32..=20, 1_u32..=89),
         (1_u64..=9_999, 0_u32..=3),
@@ -60,11 +60,17 @@ fn cycles() -> impl Strategy<Value = G76Cycle> {
                     finishing_allowance: allowance,
                     finishing_passes: m,
                     tool_angle: a,
-                    infeed: match infeed {
+                    // G76's D0-D2 and G78's other modes, each with both
+                    // depth modes.
+                    infeed: match infeed % 6 {
                         0 => Infeed::RightFlank,
                         1 => Infeed::RightCentre,
-                        _ => Infeed::LeftRight,
+                        2 => Infeed::LeftRight,
+                        3 => Infeed::Centre,
+                        4 => Infeed::LeftFlank,
+                        _ => Infeed::Alternating,
                     },
+                    depth_mode: if infeed < 6 { DepthMode::Decreasing } else { DepthMode::Equal },
                     lead_in: 0,
                     starts,
                     lead: Lead { word: LeadWord::F, mantissa: lead, scale: lead_scale },

@@ -291,7 +291,8 @@ impl<'a> Panel<'a> {
 
     fn draw_heading(&self, g: Group) -> Group {
         let c = &self.call.cycle;
-        let title = format!("{} \u{2014} G76 at line {}", self.name, self.call.block.line);
+        let title =
+            format!("{} \u{2014} {} at line {}", self.name, self.call.code.code(), self.call.block.line);
         let (sz, sx) = self.map.scales();
         let scales = if (sz / sx - 1.0).abs() < 0.02 {
             "X and Z to the same scale".to_string()

@@ -10,8 +10,8 @@
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use cycleref::{Infeed, LeadWord, Move, PassKind, Role, RunOut};
-use cycleref_spec::reader::G76Call;
+use cycleref::{DepthMode, Infeed, LeadWord, Move, PassKind, Role, RunOut};
+use cycleref_spec::reader::{G76Call, Multipass};
 use cycleref_spec::ProfileName;
 
 use super::machine::{any_profile, head, Ctx, Param};
@@ -703,7 +703,22 @@ fn partial_p(rng: &mut Rng) -> Draft {
 /// The features a valid G76 shows, read from the cycle and its moves.
 pub(super) fn tags(call: &G76Call, moves: &[Move], tags: &mut BTreeSet<String>) {
     let c = &call.cycle;
-    tag(tags, "g76");
+    let g78 = call.code == Multipass::G78;
+    tag(tags, if g78 { "g78" } else { "g76" });
+    if g78 {
+        tag(
+            tags,
+            match c.infeed {
+                Infeed::Centre => "g78:centre",
+                Infeed::LeftFlank => "g78:left",
+                Infeed::RightFlank => "g78:right",
+                Infeed::RightCentre => "g78:right-centre",
+                Infeed::LeftRight => "g78:left-right",
+                Infeed::Alternating => "g78:alternating",
+            },
+        );
+        tag(tags, if c.depth_mode == DepthMode::Equal { "g78:equal" } else { "g78:decreasing" });
+    }
     let xc = c.end.x + c.x_mode.factor() * c.taper;
     tag(tags, if c.start.x > xc { "thread:external" } else { "thread:internal" });
     tag(tags, if c.end.z < c.start.z { "direction:-z" } else { "direction:+z" });
@@ -719,14 +734,18 @@ pub(super) fn tags(call: &G76Call, moves: &[Move], tags: &mut BTreeSet<String>) 
         },
     );
     tag(tags, if c.lead.word == LeadWord::F { "lead:F" } else { "lead:I" });
-    tag(
-        tags,
-        match c.infeed {
-            Infeed::RightFlank => "infeed:D0",
-            Infeed::RightCentre => "infeed:D1",
-            Infeed::LeftRight => "infeed:D2",
-        },
-    );
+    if !g78 {
+        tag(
+            tags,
+            match c.infeed {
+                Infeed::RightFlank => "infeed:D0",
+                Infeed::RightCentre => "infeed:D1",
+                Infeed::LeftRight => "infeed:D2",
+                // G76's D has no other modes: only G78's P(r) selects these.
+                Infeed::Centre | Infeed::LeftFlank | Infeed::Alternating => "infeed:g78-only",
+            },
+        );
+    }
     if c.lead_in > 0 {
         tag(tags, "lead-in");
     }
@@ -773,11 +792,11 @@ pub(super) fn tags(call: &G76Call, moves: &[Move], tags: &mut BTreeSet<String>) 
     let step = c.min_cut.max(1);
     for n in 2..=levels.len() {
         let clamp = levels[n - 2] + step;
-        if c.min_cut > 0 && law(n) < clamp && clamp < target {
+        if c.depth_mode == DepthMode::Decreasing && c.min_cut > 0 && law(n) < clamp && clamp < target {
             tag(tags, "schedule:min-cut");
         }
     }
-    if !levels.is_empty() && law(levels.len()) == target {
+    if !levels.is_empty() && law(levels.len()) == target && c.depth_mode == DepthMode::Decreasing {
         tag(tags, "schedule:exact-k-d");
     }
 }

@@ -95,7 +95,7 @@ use super::pass::{Frame, LongAxis, Walk};
 use super::schedule::{law, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
-use crate::g76::{G76Cycle, Infeed, RunOut};
+use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use crate::lead::{Lead, Ratio};
 use crate::moves::{Flank, Move, Pass, PassKind};
 use crate::tan::mul_tan_round;
@@ -124,33 +124,44 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
     let mut depth = 0_i64;
     let mut n = 0_u64;
     let mut count = crate::loop_counters::count!(PASS_COUNT);
-    let levels = loop {
-        count.tick();
-        if depth >= last {
-            break n;
-        }
-        // n ≤ limit + 1 ≤ 2^32: the loop returns once n > limit.
-        n += 1;
-        let law = law(q2, n);
-        // depth < last < 2^30 and min < 2^30: the sum is below 2^31.
-        if law < depth + min {
-            // 0 < rest < 2^30, 1 ≤ min < 2^30: ceil(rest / min) < 2^30.
-            let rest = last - depth;
-            let more = (rest + min - 1) / min;
-            break n - 1 + more.unsigned_abs();
-        }
-        if law >= last {
-            break n;
-        }
-        depth = law;
-        if n > limit {
-            return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+    let levels = if c.depth_mode == DepthMode::Equal {
+        // Every level adds max(Δd, Δdmin, 1) < 2^30: ceil((k - d) / step)
+        // levels, 0 ≤ k - d < 2^30.
+        let step = c.first_depth.max(min);
+        ((last + step - 1) / step).unsigned_abs()
+    } else {
+        loop {
+            count.tick();
+            if depth >= last {
+                break n;
+            }
+            // n ≤ limit + 1 ≤ 2^32: the loop returns once n > limit.
+            n += 1;
+            let law = law(q2, n);
+            // depth < last < 2^30 and min < 2^30: the sum is below 2^31.
+            if law < depth + min {
+                // 0 < rest < 2^30, 1 ≤ min < 2^30: ceil(rest / min) < 2^30.
+                let rest = last - depth;
+                let more = (rest + min - 1) / min;
+                break n - 1 + more.unsigned_abs();
+            }
+            if law >= last {
+                break n;
+            }
+            depth = law;
+            if n > limit {
+                return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+            }
         }
     };
     // levels < 2^33: doubling cannot overflow.
     let passes = match c.infeed {
         Infeed::LeftRight => (2 * levels).saturating_sub(1),
-        Infeed::RightFlank | Infeed::RightCentre => levels,
+        Infeed::RightFlank
+        | Infeed::RightCentre
+        | Infeed::Centre
+        | Infeed::LeftFlank
+        | Infeed::Alternating => levels,
     };
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
@@ -312,18 +323,46 @@ fn plan_extremes(c: &G76Cycle, last: i64, centre: i64) -> Option<PlanExtremes> {
             max_shift: centre,
         });
     }
-    // D1 = min(k - d, max(round(Δd √1), 0 + m)), with round(Δd √1) = Δd.
+    // D1 = min(k - d, max(round(Δd √1), 0 + m)), with round(Δd √1) = Δd;
+    // the equal-step schedule's first level is the same, min(k - d, max(Δd,
+    // m)).
     let d1 = last.min(c.first_depth.max(c.min_cut.max(1)));
     let right1 = flank_shift(d1, c.tool_angle);
-    // Shifts grow with the depth: right shifts lie in [right1, centre], D1
-    // centre passes and finishing passes at centre, D2 left passes at
-    // 2 centre - right in [centre, 2 centre - right1] (present only when
-    // there is a second level). centre < 2^31: no overflow.
-    let max_shift = match c.infeed {
-        Infeed::LeftRight if d1 < last => 2 * centre - right1,
-        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => centre,
+    // Shifts grow with the depth: right shifts lie in [right1, centre],
+    // centre passes and finishing passes at centre, left passes at 2 centre
+    // - right in [centre, 2 centre - right1]. D2 cuts a left pass at every
+    // level but the last (so at D1 when there is a second level), r = 1 at
+    // every level, the 980TDi's 交错 at the even levels (from D2 on).
+    // centre < 2^31: no overflow.
+    let (min_shift, max_shift) = match c.infeed {
+        Infeed::LeftRight if d1 < last => (right1, 2 * centre - right1),
+        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => (right1, centre),
+        Infeed::Centre => (centre, centre),
+        Infeed::LeftFlank => (centre, 2 * centre - right1),
+        Infeed::Alternating => {
+            let mut levels = schedule_of(c);
+            let second = levels.next_level().and_then(|_| levels.next_level());
+            (right1, second.map_or(centre, |d2| 2 * centre - flank_shift(d2, c.tool_angle)))
+        }
     };
-    Some(PlanExtremes { shallowest: d1, min_shift: right1, max_shift })
+    Some(PlanExtremes { shallowest: d1, min_shift, max_shift })
+}
+
+/// The schedule of a validated cycle before its first level: the depth law
+/// with the minimum cut (G76; G78 递减式), or, from the start, equal steps
+/// of `max(Δd, Δdmin, 1)` (G78 等距离), which is the minimum-cut phase with
+/// that step.
+fn schedule_of(c: &G76Cycle) -> Schedule {
+    // Δd < 2^30: Δd² < 2^60.
+    let q = c.first_depth.unsigned_abs();
+    let last = c.thread_height - c.finishing_allowance;
+    let min = c.min_cut.max(1);
+    match c.depth_mode {
+        DepthMode::Decreasing => Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false },
+        DepthMode::Equal => {
+            Schedule { q2: q * q, min: c.first_depth.max(min), last, n: 0, depth: 0, min_phase: true }
+        }
+    }
 }
 
 /// Expands a G76 cycle: checks it completely, then streams its moves.
@@ -441,13 +480,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
             StartSpacing::new(c.starts)
         },
     };
-    // Δd < 2^30: Δd² < 2^60.
-    let q = c.first_depth.unsigned_abs();
     let placeholder =
         Pass { kind: PassKind::Rough, number: 0, start: 1, depth: 0, cut: 0, flank: Flank::Right };
     let mut moves = G76Moves {
         frame,
-        schedule: Schedule { q2: q * q, min: c.min_cut.max(1), last, n: 0, depth: 0, min_phase: false },
+        schedule: schedule_of(c),
         tool_angle: c.tool_angle,
         infeed: c.infeed,
         centre,
@@ -517,6 +554,13 @@ impl G76Moves {
                         Infeed::RightFlank => (Flank::Right, right),
                         Infeed::RightCentre if self.schedule.n % 2 == 0 => (Flank::Centre, self.centre),
                         Infeed::RightCentre => (Flank::Right, right),
+                        Infeed::Centre => (Flank::Centre, self.centre),
+                        // centre < 2^31, 0 ≤ right ≤ centre.
+                        Infeed::LeftFlank => (Flank::Left, 2 * self.centre - right),
+                        Infeed::Alternating if self.schedule.n % 2 == 0 => {
+                            (Flank::Left, 2 * self.centre - right)
+                        }
+                        Infeed::Alternating => (Flank::Right, right),
                         Infeed::LeftRight => {
                             // Every level but the last (the one at k - d) twice.
                             self.stage = Stage::Rough { left_pending: depth < self.schedule.last };
