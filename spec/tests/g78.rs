@@ -1,0 +1,260 @@
+//! G78: golden tests worked by hand from the 980TDi and 988TA G78 pages
+//! (manuals/gsk980tdi-g78.txt, manuals/gsk988ta-g78.txt), every infeed
+//! mode and both depth modes, and the equality with G76 where the modes
+//! coincide. Each expected point is derived in the comments; both engines
+//! must give it.
+//!
+//! The common thread (the 988TA's example, "直螺纹示例"): A = X80 Z10, D =
+//! X60 Z-60, k = 3, Δd = 1.8, Δdmin = 0.15, d = 0.5 (so k - d = 2.5), m =
+//! 2 finishing passes, a = 45°, J1.5 K2, IS-B mm, diameter X. External
+//! (s = +1), towards -Z (t = -1), straight (i = 0): C = (60, 10).
+//!
+//! * Decreasing depths: D1 = 1.8; D2 = min(2.5, round(1.8 √2) = 2.546) =
+//!   2.5 (the figure's "1.8mm", "2.5mm", "0.5mm", "k=3mm").
+//! * X of a pass at depth D: 60 + 2 (3 - D): 62.4, 61.0; finishing 60.
+//! * tan 22.5° = 0.41421356…: right(1.8) = round(745.58) = 0.746, right(2.5)
+//!   = round(1035.53) = 1.036 = zc; left(D) = 2 zc - right(D): left(1.8) =
+//!   1.326, left(2.5) = 1.036.
+//! * Z of a pass = 10 - shift. Every pass: cut to Z-58 (K2 before D), run-out
+//!   to X + 3 (J1.5 radius) at Z-60, retract to X80, return to Z10.
+
+use cycleref::{Flank, Move, PassKind, Role};
+use cycleref_spec::pipeline::{expand, Cycle, Engine};
+use cycleref_spec::profile::Machine;
+use cycleref_spec::{read, ErrorKind, ProfileName};
+
+/// The G76/G78 cycles of a program, each expanded by both engines (which
+/// must agree).
+fn cycles(src: &str, m: &Machine) -> Vec<(&'static str, Vec<Move>)> {
+    let p = read(src, m).unwrap_or_else(|e| panic!("{e}"));
+    p.items
+        .iter()
+        .filter_map(Cycle::of)
+        .map(|c| {
+            let ours: Vec<Move> = expand(c, Engine::Impl).unwrap_or_else(|e| panic!("{e}")).collect();
+            let reference: Vec<Move> = expand(c, Engine::Spec).unwrap_or_else(|e| panic!("{e}")).collect();
+            assert_eq!(ours, reference, "line {}", c.line());
+            (c.code(), ours)
+        })
+        .collect()
+}
+
+/// The passes of a cycle: (kind, depth, flank, X, Z of the pass start).
+fn passes(moves: &[Move]) -> Vec<(PassKind, i64, Flank, i64, i64)> {
+    moves
+        .iter()
+        .filter(|m| m.role == Role::Approach)
+        .map(|m| {
+            let p = m.pass.expect("a pass");
+            (p.kind, p.depth, p.flank, m.to.x, m.to.z)
+        })
+        .collect()
+}
+
+fn gsk988() -> Machine {
+    Machine::new(ProfileName::Gsk988)
+}
+
+fn gsk980() -> Machine {
+    Machine::new(ProfileName::Gsk980)
+}
+
+const HEAD: &str = "M3 S300\nG00 X80 Z10\n";
+
+/// 988TA block 2 with the example's words.
+fn g988(p: &str, block1_extra: &str) -> String {
+    format!("{HEAD}G78 P{p} Q0.15 R0.5{block1_extra}\nG78 X60 Z-60 P3 Q1.8 F300 J1.5 K2\nG00 X80 Z10\nM30\n")
+}
+
+use Flank::{Centre, Left, Right};
+use PassKind::{Finish, Rough};
+
+/// The finishing passes: at depth 3, X60, from the last rough Z (zc).
+const FINISH: [(PassKind, i64, Flank, i64, i64); 2] =
+    [(Finish, 3_000, Centre, 60_000, 8_964), (Finish, 3_000, Centre, 60_000, 8_964)];
+
+fn with_finish(rough: &[(PassKind, i64, Flank, i64, i64)]) -> Vec<(PassKind, i64, Flank, i64, i64)> {
+    rough.iter().copied().chain(FINISH).collect()
+}
+
+/// The page's example writes P020545: r = 05, outside the page's own range
+/// of P(r) (0~4), so it is refused, naming the word and the range (reading
+/// R-G78P). With r = 02 (right flank) the figure's passes follow, and they
+/// are G76's D0 passes for the same words, move for move.
+#[test]
+fn gsk988_example_and_g76() {
+    let m = gsk988();
+    let e = read(&g988("020545", ""), &m).expect_err("r = 05 is refused");
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("P020545")));
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+    assert!(e.to_string().contains("infeed mode r 00..04"), "{e}");
+
+    let got = cycles(&g988("020245", ""), &m);
+    assert_eq!(got.len(), 1);
+    let (code, moves) = &got[0];
+    assert_eq!(*code, "G78");
+    assert_eq!(
+        passes(moves),
+        with_finish(&[(Rough, 1_800, Right, 62_400, 9_254), (Rough, 2_500, Right, 61_000, 8_964)])
+    );
+    // Pass 1 in full: cut to Z-58, run-out to X65.4 at Z-60, retract, return.
+    let ends: Vec<(i64, i64)> = moves[..5].iter().map(|m| (m.to.x, m.to.z)).collect();
+    assert_eq!(
+        ends,
+        [(62_400, 9_254), (62_400, -58_000), (65_400, -60_000), (80_000, -60_000), (80_000, 10_000)]
+    );
+    // G76 with the same words (D0; the chamfer digits r do not matter with J
+    // and K given) cuts the same moves.
+    let g76 = format!("{HEAD}G76 P020045 Q0.15 R0.5\nG76 X60 Z-60 P3 Q1.8 F300 J1.5 K2\nM30\n");
+    let same = cycles(&g76, &m);
+    assert_eq!(same[0].0, "G76");
+    assert_eq!(&same[0].1, moves);
+}
+
+/// Every 988TA infeed mode on the example's thread (decreasing depths).
+#[test]
+fn gsk988_infeed_modes() {
+    let m = gsk988();
+    let rough = |r: &str| passes(&cycles(&g988(&format!("02{r}45"), ""), &m)[0].1);
+    // r = 0, the centre line: every pass at zc.
+    assert_eq!(
+        rough("00"),
+        with_finish(&[(Rough, 1_800, Centre, 62_400, 8_964), (Rough, 2_500, Centre, 61_000, 8_964)])
+    );
+    // r = 1, the left flank: 10 - left(D): 8.674, 8.964.
+    assert_eq!(
+        rough("01"),
+        with_finish(&[(Rough, 1_800, Left, 62_400, 8_674), (Rough, 2_500, Left, 61_000, 8_964)])
+    );
+    // r = 3, right and centre in turn (G76 D1).
+    assert_eq!(
+        rough("03"),
+        with_finish(&[(Rough, 1_800, Right, 62_400, 9_254), (Rough, 2_500, Centre, 61_000, 8_964)])
+    );
+    // r = 4, left and right in equal amounts (G76 D2): level 1 twice.
+    assert_eq!(
+        rough("04"),
+        with_finish(&[
+            (Rough, 1_800, Right, 62_400, 9_254),
+            (Rough, 1_800, Left, 62_400, 8_674),
+            (Rough, 2_500, Right, 61_000, 8_964)
+        ])
+    );
+    // G76 D1 and D2 give the same passes as r = 3 and r = 4.
+    for (r, d) in [("03", "1"), ("04", "2")] {
+        let g76 = format!("{HEAD}G76 P020045 Q0.15 R0.5 D{d}\nG76 X60 Z-60 P3 Q1.8 F300 J1.5 K2\nM30\n");
+        assert_eq!(cycles(&g76, &m)[0].1, cycles(&g988(&format!("02{r}45"), ""), &m)[0].1, "r = {r}, D{d}");
+    }
+}
+
+/// Equal steps (988TA D0, "等距离进刀的每次切削量为 Q(△d)") with Δd = 0.8:
+/// 0.8, 1.6, 2.4, then k - d = 2.5 (its cut 0.1 below Δdmin: the last
+/// level takes what remains). X: 64.4, 62.8, 61.2, 61.0. right(D): round(800
+/// × 0.41421356) = 0.331, 0.663 (662.74), 0.994 (994.11), 1.036. With D1
+/// (decreasing) the same words give ten levels instead (0.8, 1.131, …).
+#[test]
+fn gsk988_equal_depths() {
+    let m = gsk988();
+    let src = format!("{HEAD}G78 P020245 Q0.15 R0.5 D0\nG78 X60 Z-60 P3 Q0.8 F3 J1.5 K2\nM30\n");
+    assert_eq!(
+        passes(&cycles(&src, &m)[0].1),
+        with_finish(&[
+            (Rough, 800, Right, 64_400, 9_669),
+            (Rough, 1_600, Right, 62_800, 9_337),
+            (Rough, 2_400, Right, 61_200, 9_006),
+            (Rough, 2_500, Right, 61_000, 8_964)
+        ])
+    );
+    let decreasing = format!("{HEAD}G78 P020245 Q0.15 R0.5 D1\nG78 X60 Z-60 P3 Q0.8 F3 J1.5 K2\nM30\n");
+    let levels = passes(&cycles(&decreasing, &m)[0].1).iter().filter(|p| p.0 == Rough).count();
+    // round(0.8 √n): 0.8, 1.131, 1.386, 1.6, 1.789, 1.96, 2.117, 2.263, 2.4,
+    // then min(2.5, 2.530) = 2.5.
+    assert_eq!(levels, 10);
+}
+
+/// The 980TDi's format: `G78 P(m)(r)(a) Q(Δdmin) R(d) J K D L E` with m
+/// the depth mode, r the infeed (0-3), D the finishing passes; P and Q of
+/// block 2 and Q(Δdmin) in increments (No.182.7 = 0). The example's thread
+/// with m = 1 (decreasing), r = 2: the same passes as the 988TA's.
+#[test]
+fn gsk980_format() {
+    let m = gsk980();
+    let src = format!("{HEAD}G78 P010245 Q150 R0.5 J1.5 K2 D2\nG78 X60 Z-60 P3000 Q1800 F3\nM30\n");
+    assert_eq!(
+        passes(&cycles(&src, &m)[0].1),
+        with_finish(&[(Rough, 1_800, Right, 62_400, 9_254), (Rough, 2_500, Right, 61_000, 8_964)])
+    );
+}
+
+/// The 980TDi's r = 3 (交错切入, reading R-G78ALT): one pass a level, odd
+/// levels on the right flank, even levels on the left. With m = 0 (equal
+/// steps) and Δd = 0.8: levels 0.8 (right, Z 10 - 0.331), 1.6 (left, 2.072 -
+/// 0.663 = 1.409: Z 8.591), 2.4 (right, Z 9.006), 2.5 (left, 2.072 - 1.036:
+/// Z 8.964).
+#[test]
+fn gsk980_alternating_flanks_with_equal_depths() {
+    let m = gsk980();
+    let src = format!("{HEAD}G78 P000345 Q150 R0.5 J1.5 K2 D2\nG78 X60 Z-60 P3000 Q800 F3\nM30\n");
+    assert_eq!(
+        passes(&cycles(&src, &m)[0].1),
+        with_finish(&[
+            (Rough, 800, Right, 64_400, 9_669),
+            (Rough, 1_600, Left, 62_800, 8_591),
+            (Rough, 2_400, Right, 61_200, 9_006),
+            (Rough, 2_500, Left, 61_000, 8_964)
+        ])
+    );
+}
+
+/// The parameters when block 1 is absent: the infeed mode (No.062, 5144)
+/// and the depth mode (No.061, 5145). By default right flank and decreasing
+/// (reading R-PARAM): G76's D0. 5144 = 0 makes it the centre line.
+#[test]
+fn parameters_when_words_are_omitted() {
+    let mut m = gsk988();
+    let src = format!("{HEAD}G78 X60 Z-60 P3 Q1.8 F3 J1.5 K2\nM30\n");
+    // The defaults: 5142 = 1 finishing pass, 5140 = 5141 = 0 (k - d = 3),
+    // 5143 = 60° (tan 30° = 0.57735027). Levels round(1.8 √n): 1.8, 2.546
+    // (2.5456), then min(3, 3.118) = 3. X: 62.4, 60.908, 60. right(D):
+    // round(1039.23) = 1.039, round(1469.93) = 1.470, round(1732.05) = 1.732
+    // = zc; Z = 10 - right: 8.961, 8.530, 8.268.
+    let p = passes(&cycles(&src, &m)[0].1);
+    assert_eq!(
+        p,
+        [
+            (Rough, 1_800, Right, 62_400, 8_961),
+            (Rough, 2_546, Right, 60_908, 8_530),
+            (Rough, 3_000, Right, 60_000, 8_268),
+            (Finish, 3_000, Centre, 60_000, 8_268)
+        ]
+    );
+    m.apply_toml("[parameters]\n5144 = 0\n5145 = 0\n").unwrap();
+    let p = passes(&cycles(&src, &m)[0].1);
+    // Equal steps of 1.8: 1.8, then min(3, 3.6) = 3; both on the centre line.
+    assert_eq!(
+        p,
+        [
+            (Rough, 1_800, Centre, 62_400, 8_268),
+            (Rough, 3_000, Centre, 60_000, 8_268),
+            (Finish, 3_000, Centre, 60_000, 8_268)
+        ]
+    );
+}
+
+/// The alarms: FANUC has no G78; the 980TDi's r stops at 3 and its m (the
+/// depth mode) at 1; the 988TA's D (depth mode) is 0 or 1; G78 cannot cut
+/// face threads (W0).
+#[test]
+fn alarms() {
+    let e = read(&format!("{HEAD}G78 X60 Z-60 P3 Q1.8 F3\n"), &Machine::new(ProfileName::Fanuc)).unwrap_err();
+    assert!(matches!(e.kind, ErrorKind::Unsupported(_)) && e.to_string().contains("G78"), "{e}");
+    let e = read(&format!("{HEAD}G78 P010445 Q150 R0.5\n"), &gsk980()).unwrap_err();
+    assert!(e.to_string().contains("infeed mode r 00..03"), "{e}");
+    let e = read(&format!("{HEAD}G78 P020245 Q150 R0.5\n"), &gsk980()).unwrap_err();
+    assert!(e.to_string().contains("depth mode"), "{e}");
+    let e = read(&format!("{HEAD}G78 P020245 Q0.15 R0.5 D2\n"), &gsk988()).unwrap_err();
+    assert_eq!(e.word.as_deref(), Some("D2"));
+    let face = format!("{HEAD}G78 X60 W0 P3 Q1.8 F3\n");
+    let e = read(&face, &gsk988()).err().expect("a face thread is refused");
+    assert!(matches!(e.kind, ErrorKind::Cycle(cycleref::CycleError::FaceThread)), "{e}");
+}
