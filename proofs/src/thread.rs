@@ -13,8 +13,9 @@
 //!   way the run-out goes;
 //! * along Z the thread runs from the last pass start to D: every pass
 //!   starts at Z_A shifted towards D by its flank shift (R-INFEED), at most
-//!   `2·zc` in D2 (the left flank `2·zc - round(Dn·tan(a/2))`) and `zc` in
-//!   D0, D1 and the finishing passes, `zc = round((k - d)·tan(a/2))` (the
+//!   `2·zc` on a left flank (D2, G78's r = 1 and the 980TDi's alternating
+//!   r = 3: `2·zc - round(Dn·tan(a/2))`) and `zc` in D0, D1, on the centre
+//!   line and in the finishing passes, `zc = round((k - d)·tan(a/2))` (the
 //!   reference's tangent product, `cycleref_spec::tan`). The approach to a
 //!   pass start ends on that boundary or before it;
 //!
@@ -88,7 +89,8 @@ impl ThreadRegion {
         let tan =
             |depth: i64| i128::from(cycleref_spec::tan::mul_tan_round(depth, c.tool_angle).unwrap_or(0));
         let zc = tan(c.thread_height - c.finishing_allowance);
-        let max_shift = if c.infeed == Infeed::LeftRight { 2 * zc } else { zc };
+        let left = matches!(c.infeed, Infeed::LeftRight | Infeed::LeftFlank | Infeed::Alternating);
+        let max_shift = if left { 2 * zc } else { zc };
         Some(ThreadRegion {
             s,
             t,

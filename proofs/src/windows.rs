@@ -10,7 +10,8 @@ use crate::harness::Domain;
 use crate::schedule::ScheduleDomain;
 
 /// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
-/// one start, every infeed mode, side, direction, unit code, run-out kind,
+/// one start, every infeed mode of G76 and G78 and both depth modes (G78 is
+/// the same cycle), side, direction, unit code, run-out kind,
 /// tool and chamfer angle, lead (F and I) and lead-in E ≤ 3. The most
 /// moves a cycle has here is 6 per pass (approach, lead-in, cut, run-out,
 /// retract, return) times 13 passes (D2 with k = 6, Δd = 1: 6 levels, 11
@@ -22,8 +23,8 @@ pub const G76_WINDOW: Domain = Domain {
     allowance: (0, 6),
     tool_angle: (0, 99),
     finishing: (0, 2),
-    infeed: (0, 2),
-    depth_mode: (1, 1),
+    infeed: (0, 5),
+    depth_mode: (0, 1),
     starts: (1, 1),
     internal: (0, 1),
     positive_z: (0, 1),
@@ -56,8 +57,8 @@ pub const EQUIVALENCE_WINDOW: Domain = Domain {
     min_cut: (0, 2),
     allowance: (0, 8),
     tool_angle: (0, 60),
-    infeed: (0, 2),
-    depth_mode: (1, 1),
+    infeed: (0, 5),
+    depth_mode: (0, 1),
     taper: (-4, 4),
     run_out_kind: (0, 1),
     run_out: (0, 2),

@@ -255,6 +255,6 @@ fn alarms() {
     let e = read(&format!("{HEAD}G78 P020245 Q0.15 R0.5 D2\n"), &gsk988()).unwrap_err();
     assert_eq!(e.word.as_deref(), Some("D2"));
     let face = format!("{HEAD}G78 X60 W0 P3 Q1.8 F3\n");
-    let e = read(&face, &gsk988()).err().expect("a face thread is refused");
+    let e = read(&face, &gsk988()).expect_err("a face thread is refused");
     assert!(matches!(e.kind, ErrorKind::Cycle(cycleref::CycleError::FaceThread)), "{e}");
 }
