@@ -134,6 +134,13 @@ const FEATURES: &[&str] = &[
     "rule:g92-gsk988-j-only",
     "rule:g92-gsk988-k-only",
     "rule:g92-gsk988-5130",
+    "g78",
+    "g78:alternating",
+    "g78:equal",
+    "rule:g78-p-infeed",
+    "rule:g78-gsk988-d",
+    "rule:g78-gsk980-m",
+    "rule:g78-gsk980-d",
 ];
 
 /// Error kinds every corpus of 100 cases refuses at least once, with the
@@ -176,6 +183,7 @@ const REFUSALS: &[(&str, &str)] = &[
     ("cycle:taper_beyond_start", "refuse:g92-taper-beyond-start"),
     ("cycle:no_infeed", "refuse:g92-no-infeed"),
     ("cycle:run_out_into_work", "refuse:run-out-into-work"),
+    ("out_of_range", "refuse:g78-infeed-out-of-range"),
 ];
 
 /// The stable kind names of `vectors/README.md`, written out again here

@@ -1,4 +1,4 @@
-r"""cycleref: the CNC manuals' lathe thread and groove cycles (G76, G32, G92, G75.1), exactly.
+r"""cycleref: the CNC manuals' lathe thread and groove cycles (G76, G78, G32, G92, G75.1), exactly.
 
 Expand a program into its moves, stream the moves of a large one, check a
 vendor's toolpath against ours, and generate conformance vectors. Lengths
@@ -92,7 +92,7 @@ class Move:
     """One move of a cycle.
 
     ``cycle`` and ``line``: the cycle's G code (``"G76"``, ``"G32"``,
-    ``"G75.1"``, ``"G92"``) and the line of the block that runs it. ``motion`` is
+    ``"G75.1"``, ``"G92"``, ``"G78"``) and the line of the block that runs it. ``motion`` is
     ``"rapid"``, ``"feed"``, ``"thread"``, ``"arc-cw"`` or ``"arc-ccw"``;
     ``x``, ``z`` the end point (X in X-word units, diameter by default);
     ``centre`` the arc's absolute centre ``(x, z)`` (arcs only); ``role``

@@ -51,6 +51,7 @@ use cycleref_spec::pipeline::{expand, Cycle, Engine};
 mod g32;
 mod g75;
 mod g76;
+mod g78;
 mod g92;
 mod machine;
 mod refused;
@@ -343,6 +344,8 @@ const TEMPLATES: &[&Template] = &[
     &g92::RUNOUT_988,
     &g92::MULTI_START,
     &g92::X_LONG,
+    &g78::GSK988,
+    &g78::GSK980,
     &refused::MISSING_P,
     &refused::MISSING_Q,
     &refused::MIN_CUT,
@@ -381,6 +384,7 @@ const TEMPLATES: &[&Template] = &[
     &g92::TAPER_BEYOND,
     &g92::NO_INFEED,
     &g92::RUN_OUT_INTO_WORK,
+    &g78::INFEED_RANGE,
 ];
 
 /// The templates of one kind (refused or valid), in schedule order.

@@ -1,14 +1,17 @@
-//! Criterion benchmarks of the G92 cycle beside G76's: the exact-decimal
-//! reference model and the fixed-point engine on the same blocks.
+//! Criterion benchmarks of G92 and G78 beside G76's: the exact-decimal
+//! reference model and the fixed-point engine on the same cycles.
 //!
 //! ```text
-//! cargo bench -p cycleref-benches --bench g92
+//! cargo bench -p cycleref-benches --bench g92_g78
 //! ```
 //!
 //! Groups (see `benches/README.md`): `g92/o0012` (the 980TDi manual's
 //! first block: one pass with a run-out), `g92/8_start` (the same block
 //! with L8: eight passes), `g92/taper` (a taper whose run-out starts on
-//! the cut line: one rounded division). Throughput is in moves.
+//! the cut line: one rounded division); `g78/alternating_equal` (G76's
+//! 1000-pass case as a G78 with equal depth steps and the flanks in turn)
+//! and `g78/centre_decreasing` (the same, centre line, G76's depths).
+//! Throughput is in moves.
 
 #![forbid(unsafe_code)]
 
@@ -16,7 +19,11 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{Criterion, Throughput};
-use cycleref::{expand_g92, G92Cycle, Lead, LeadWord, Point, RunOut, StartAngle, Units, XMode};
+use cycleref::{
+    expand_g76, expand_g92, DepthMode, G76Cycle, G92Cycle, Infeed, Lead, LeadWord, Point, RunOut, StartAngle,
+    Units, XMode,
+};
+use cycleref_benches::cases;
 
 const MEASURE: Duration = Duration::from_millis(2_500);
 const WARM_UP: Duration = Duration::from_millis(800);
@@ -49,6 +56,19 @@ fn group(cr: &mut Criterion, name: &str, c: &G92Cycle) {
     g.finish();
 }
 
+fn g78_group(cr: &mut Criterion, name: &str, c: &G76Cycle) {
+    let moves = expand_g76(c).expect("valid").count();
+    assert_eq!(moves, cycleref_spec::g76::expand(c).expect("valid").len());
+    let mut g = cr.benchmark_group(format!("g78/{name}"));
+    g.throughput(Throughput::Elements(u64::try_from(moves).unwrap_or(1)));
+    g.warm_up_time(WARM_UP).measurement_time(MEASURE).sample_size(20);
+    g.bench_function("reference", |b| b.iter(|| cycleref_spec::g76::expand(black_box(c)).expect("valid")));
+    g.bench_function("engine", |b| {
+        b.iter(|| expand_g76(black_box(c)).expect("valid").fold(0_i64, |s, m| s.wrapping_add(m.to.x)));
+    });
+    g.finish();
+}
+
 /// The groups, run from `main` (criterion's group macros are left out:
 /// their functions carry no docs, which the workspace lints deny).
 fn main() {
@@ -66,5 +86,9 @@ fn main() {
         ..o0012(1)
     };
     group(cr, "taper", &taper);
+    let g78 = G76Cycle { infeed: Infeed::Alternating, depth_mode: DepthMode::Equal, ..cases::passes_1000() };
+    g78_group(cr, "alternating_equal", &g78);
+    let g78 = G76Cycle { infeed: Infeed::Centre, ..cases::passes_1000() };
+    g78_group(cr, "centre_decreasing", &g78);
     cr.final_summary();
 }
