@@ -92,7 +92,15 @@ fn shape() -> impl Strategy<Value = Shape> {
     (
         0..4_usize,
         prop_oneof![Just(XMode::Diameter), Just(XMode::Radius)],
-        prop_oneof![Just(Infeed::RightFlank), Just(Infeed::RightCentre), Just(Infeed::LeftRight)],
+        // G76's D0-D2 and G78's other modes.
+        prop_oneof![
+            Just(Infeed::RightFlank),
+            Just(Infeed::RightCentre),
+            Just(Infeed::LeftRight),
+            Just(Infeed::Centre),
+            Just(Infeed::LeftFlank),
+            Just(Infeed::Alternating)
+        ],
         lead(),
         prop_oneof![3 => 1..=10_i64, 3 => 1..=10_000_i64, 2 => 1..=1_000_000_i64, 1 => 1..=MAX_LENGTH],
         any::<[u8; 12]>(),
@@ -240,7 +248,14 @@ fn assemble(sh: &Shape) -> G76Cycle {
         finishing_passes,
         tool_angle,
         infeed: sh.infeed,
-        depth_mode: cycleref::DepthMode::Decreasing,
+        // G78's equal steps in one shape of four: the top bits of the
+        // selector whose remainder by 10 picks the lead-in, so that every
+        // lead-in case meets both depth modes.
+        depth_mode: if sh.sel[11] >= 192 {
+            cycleref::DepthMode::Equal
+        } else {
+            cycleref::DepthMode::Decreasing
+        },
         lead_in,
         starts,
         lead: sh.lead,
