@@ -89,6 +89,11 @@ pub enum RunOutRules {
     /// (note 9): J omitted, J = 0 or K = 0 with J given: none; K omitted:
     /// short-axis run-out J only; J and K both non-zero: J and K.
     Gsk988,
+    /// GSK 988TA G92 in the high-speed mode (5129 = 1): J, K omitted: by
+    /// 5130 and 5131; K omitted (or J or K zero): none (the rapid retract
+    /// to the X of A); J omitted: K along the long axis and the short axis
+    /// to the X of A; both: J and K (reading R-G92RUNOUT).
+    Gsk988HighSpeed,
 }
 
 /// G32 run-out rules of a control (reading R-G32RUNOUT).

@@ -546,23 +546,18 @@ impl<'m> LineReader<'m> {
 }
 
 impl State<'_> {
-    /// The machine's settings that no program can use.
+    /// The machine's settings that no program can use (none at present:
+    /// 5129 = 1, the 988TA's high-speed threading mode, is refused by the
+    /// G76 block it would change, and followed by G92).
+    #[allow(clippy::unnecessary_wraps, clippy::unused_self)]
     fn check_machine(&self) -> Result<(), ProgramError> {
-        let machine = self.machine;
-        if let Some(mode) = machine.profile.params.thread_mode {
-            if machine.int_param(mode) != 0 {
-                return Err(ProgramError {
-                    line: 1,
-                    word: None,
-                    kind: ErrorKind::Parameter(format!(
-                        "{mode} = {} selects the high-speed threading mode, whose run-out rules are not \
-                         modelled; set it to 0",
-                        machine.int_param(mode)
-                    )),
-                });
-            }
-        }
         Ok(())
+    }
+
+    /// True when the 988TA's parameter 5129 (THM) selects the high-speed
+    /// threading mode.
+    fn high_speed(&self) -> bool {
+        self.machine.profile.params.thread_mode.is_some_and(|n| self.machine.int_param(n) != 0)
     }
 }
 
@@ -1201,7 +1196,10 @@ impl State<'_> {
             },
             None => 45,
         };
-        let run_out = resolve_run_out(profile.run_out, self.g92.j, self.g92.k, r, angle);
+        // 988TA: 5129 (THM) = 1 is the high-speed G92 mode, with its own
+        // J/K rules (reading R-G92RUNOUT).
+        let rules = if self.high_speed() { RunOutRules::Gsk988HighSpeed } else { profile.run_out };
+        let run_out = resolve_run_out(rules, self.g92.j, self.g92.k, r, angle);
         let cycle = G92Cycle {
             units: self.units,
             x_mode: self.machine.x_mode,
@@ -1407,6 +1405,20 @@ impl State<'_> {
             }
             e
         };
+        if code == Multipass::G76 && self.high_speed() {
+            // Reading R-RUNOUT: seed 000's 5129 switches G76 too, and no
+            // source gives G76's high-speed rules.
+            let n = profile.params.thread_mode.unwrap_or("5129");
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Parameter(format!(
+                    "{n} = {} selects the high-speed threading mode, whose G76 rules the manuals do not \
+                     give; set it to 0 (G92 follows it, G78 is not switched)",
+                    self.machine.int_param(n)
+                )),
+            ));
+        }
         let (Some(xa), Some(za)) = (self.x, self.z) else {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
         };
@@ -1851,6 +1863,18 @@ pub fn resolve_run_out(rules: RunOutRules, j: Option<i64>, k: Option<i64>, r: u3
             (Some(0), _) => RunOut::None,
             // Note 3: K omitted or K = 0 with J != 0: K = J.
             (Some(j), None | Some(0)) => RunOut::Amounts { short: j, long: j },
+            (Some(j), Some(k)) => RunOut::Amounts { short: j, long: k },
+        },
+        RunOutRules::Gsk988HighSpeed => match (j, k) {
+            // As the normal mode: the chamfer of 5130 and 5131.
+            (None, None) => chamfer(None),
+            // "省略 K 时，长轴无退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴轴向
+            // 距离，与 J 是多少无关": the rapid retract to the X of A is all
+            // there is (step (3)); J = 0 or K = 0 likewise.
+            (_, None | Some(0)) | (Some(0), _) => RunOut::None,
+            // "省略 J 时，长轴方向按 K 退尾": K along the long axis, the short
+            // axis all the way to the X of A (J' is clamped there).
+            (None, Some(k)) => RunOut::Amounts { short: MAX_LENGTH, long: k },
             (Some(j), Some(k)) => RunOut::Amounts { short: j, long: k },
         },
         RunOutRules::Gsk988 => match (j, k) {

@@ -285,6 +285,39 @@ fn run_out_rules_per_profile() {
     assert_eq!(none[1], thread(58_700, -28_000, true, F3, Role::Cut));
 }
 
+/// The 988TA's high-speed mode (5129 = 1), step (3) "X 轴以快速移动速度退刀
+/// … 返回到 X 轴绝对坐标与起点相同处": J and K: as the normal mode; K omitted
+/// ("长轴无退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴轴向距离，与 J 是多少
+/// 无关"): no run-out, the cut to C (X58.7 Z-28) and the rapid to X65; J
+/// omitted ("长轴方向按 K 退尾"): the cut to Z-27 and the run-out to the X of
+/// A, X65 Z-28, so the retract is empty and left out.
+#[test]
+fn gsk988_high_speed_mode() {
+    let mut m = machine(ProfileName::Gsk988);
+    m.apply_toml("[parameters]\n5129 = 1\n").unwrap();
+    let head = "M3 S300\nG0 X65 Z5\n";
+    let one = |words: &str| blocks(&format!("{head}G92 X58.7 Z-28 F3 {words}\n"), &m).remove(0);
+    assert_eq!(one("J3 K1"), o0012_pass(58_700));
+    assert_eq!(
+        one("J3"),
+        vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -28_000, true, F3, Role::Cut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+    assert_eq!(
+        one("K1"),
+        vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -27_000, true, F3, Role::Cut),
+            thread(65_000, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+}
+
 /// L2 on the 980TDi: the pass is cut twice from A, the second start at
 /// 180°. 988TA L3 Q30: starts at 30°, 150° and 270°.
 #[test]

@@ -320,12 +320,19 @@ fn unsupported_codes_and_unknown_positions() {
     assert_eq!(e.word.as_deref(), Some("X"));
 }
 
+/// 5129 = 1 (the 988TA's high-speed threading mode): a G76 is refused at
+/// its block 2 (no source gives its high-speed rules), a G78 is not
+/// switched; G92 follows it (spec/tests/g92.rs).
 #[test]
-fn high_speed_mode_is_refused() {
+fn high_speed_mode_refuses_g76_only() {
     let mut m = gsk988();
     m.apply_toml("[parameters]\n5129 = 1\n").unwrap();
-    let e = error("G00 X1 Z1\n", &m);
-    assert!(e.to_string().contains("5129 = 1"), "{e}");
+    let e = error("M3 S300\nG00 X80 Z10\nG76 P020560 Q0.15 R0.1\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n", &m);
+    assert_eq!(e.line, 4);
+    assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
+    assert!(e.to_string().contains("5129 = 1") && e.to_string().contains("G76"), "{e}");
+    assert!(read("M3 S300\nG00 X80 Z10\nG78 X60.64 Z-62 P3.68 Q1.8 F6\n", &m).is_ok());
+    assert!(read("G00 X1 Z1\n", &m).is_ok());
 }
 
 #[test]
