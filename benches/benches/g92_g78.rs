@@ -40,6 +40,7 @@ fn o0012(starts: u32) -> G92Cycle {
         run_out: RunOut::Amounts { short: 3_000, long: 1_000 },
         starts,
         start_angle: StartAngle::ZERO,
+        face: false,
     }
 }
 

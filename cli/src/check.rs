@@ -510,13 +510,21 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                 // is the part of it beyond the cut line's deepest X (a
                 // taper's wedge above that X is left out), as deep as any
                 // coordinate can be.
+                // A face thread (P1) is the same with X and Z exchanged: the
+                // work lies beyond the cut line along Z, between A's and C's
+                // X.
                 let c = &call.cycle;
-                let f = i128::from(c.x_mode.factor());
-                let (cx, bx) = (i128::from(c.end.x), i128::from(c.end.x) + f * i128::from(c.taper));
                 let far = 4 * i128::from(cycleref::units::MAX_LENGTH);
-                let (za, zc) = (i128::from(c.start.z), i128::from(c.end.z));
-                let x_span = if i128::from(c.start.x) > cx { (-far, cx.min(bx)) } else { (cx.max(bx), far) };
-                out.push(Region { x_lo: x_span.0, x_hi: x_span.1, z_lo: za.min(zc), z_hi: za.max(zc) });
+                let (a, e) = (c.start, c.end);
+                let (a_short, a_long, c_short, c_long, f) =
+                    if c.face { (a.z, a.x, e.z, e.x, 1) } else { (a.x, a.z, e.x, e.z, c.x_mode.factor()) };
+                let (cs, bs) =
+                    (i128::from(c_short), i128::from(c_short) + i128::from(f) * i128::from(c.taper));
+                let short = if i128::from(a_short) > cs { (-far, cs.min(bs)) } else { (cs.max(bs), far) };
+                let (la, lc) = (i128::from(a_long), i128::from(c_long));
+                let long = (la.min(lc), la.max(lc));
+                let (x, z) = if c.face { (long, short) } else { (short, long) };
+                out.push(Region { x_lo: x.0, x_hi: x.1, z_lo: z.0, z_hi: z.1 });
             }
             Cycle::G75(call) => {
                 let c = &call.cycle;

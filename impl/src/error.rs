@@ -176,9 +176,13 @@ pub enum CycleError {
     },
     /// G76 and G92 cannot cut face threads: the end point has the Z of A.
     FaceThread,
-    /// G92: the cut end C has the X of the start point A (U = 0): the block
-    /// has no infeed, and the run-out and retract, whose direction comes
-    /// from the start point, have none.
+    /// G92 P1 (a face thread): the cut end C has the X of the start point:
+    /// the thread has no length along its long axis.
+    NoThreadLength,
+    /// G92: the cut end C has the short-axis coordinate of the start point
+    /// A (U = 0; W = 0 for a face thread): the block has no infeed, and the
+    /// run-out and retract, whose direction comes from the start point,
+    /// have none.
     NoInfeed,
     /// G92: R and U differ in sign and |R| > |U/2|: the cut start B lies
     /// beyond the start point A (980TDi, 988TA: "当 R 与 U 的符号不一致时，
@@ -343,10 +347,16 @@ impl fmt::Display for CycleError {
             CycleError::FaceThread => {
                 write!(f, "the thread end Z(W) equals the Z of the start point: G76 and G92 cannot cut face threads")
             }
+            CycleError::NoThreadLength => write!(
+                f,
+                "the cut end X(U) equals the X of the start point: a G92 P1 face thread, cut along X, has \
+                 no length"
+            ),
             CycleError::NoInfeed => write!(
                 f,
-                "the cut end X(U) equals the X of the start point A (U = 0): G92 takes the direction of \
-                 its infeed, run-out and retract from the start point, and there is none"
+                "the cut end lies on the start point A's short-axis coordinate (U = 0; W = 0 for a P1 face \
+                 thread): G92 takes the direction of its infeed, run-out and retract from the start point, \
+                 and there is none"
             ),
             CycleError::TaperBeyondStart { taper, infeed } => write!(
                 f,
@@ -456,6 +466,7 @@ impl CycleError {
             Self::AllowanceExceedsHeight { .. } => "allowance_exceeds_height",
             Self::FaceThread => "face_thread",
             Self::NoInfeed => "no_infeed",
+            Self::NoThreadLength => "no_thread_length",
             Self::TaperBeyondStart { .. } => "taper_beyond_start",
             Self::RunOutTooLong { .. } => "run_out_too_long",
             Self::RunOutIntoWork { .. } => "run_out_into_work",

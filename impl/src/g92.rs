@@ -49,6 +49,11 @@ pub struct G92Cycle {
     /// Q (988TA): the spindle angle of the first start (起始角); the other
     /// starts follow at 360° / L.
     pub start_angle: StartAngle,
+    /// P1 (988TA): a face thread (端面螺纹). The long axis is X and the
+    /// short axis Z: B = (X of A, Z of C + R), the cut runs along X, J is
+    /// along Z and K along X (radius), the retract runs along Z to the Z
+    /// of A and the return along X (reading R-G92FACE).
+    pub face: bool,
 }
 
 impl G92Cycle {
@@ -65,7 +70,8 @@ impl G92Cycle {
     /// The first violated rule, as a [`CycleError`]: a coordinate or R
     /// outside the range table, the run-out words, L outside 1..999, the
     /// lead, then [`CycleError::FaceThread`] when C has the Z of A (980TDi:
-    /// "也不能加工端面螺纹").
+    /// "也不能加工端面螺纹") on an axial thread, [`CycleError::NoThreadLength`]
+    /// when C has the X of A on a face thread.
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
         let coord = |field: Field, v: i64| -> Result<(), CycleError> {
@@ -84,8 +90,11 @@ impl G92Cycle {
             return Err(CycleError::CountOutOfRange { field: Field::Starts, value: c.starts });
         }
         c.run_out.validate_lead(c.lead, c.units)?;
-        if c.end.z == c.start.z {
+        if !c.face && c.end.z == c.start.z {
             return Err(CycleError::FaceThread);
+        }
+        if c.face && c.end.x == c.start.x {
+            return Err(CycleError::NoThreadLength);
         }
         Ok(())
     }

@@ -51,6 +51,7 @@ pub fn any_g92(reach: i64, run_out: i64, max_starts: i64) -> G92Cycle {
         RunOut::None
     };
     let starts = u32::try_from(any_in(1, max_starts)).unwrap_or(1);
+    let face = any_in(0, 1) == 1;
     G92Cycle {
         units,
         x_mode,
@@ -61,6 +62,7 @@ pub fn any_g92(reach: i64, run_out: i64, max_starts: i64) -> G92Cycle {
         run_out,
         starts,
         start_angle: StartAngle::ZERO,
+        face,
     }
 }
 
@@ -79,6 +81,7 @@ where
         "R and U of opposite signs",
         "a pull-out (K = 0)",
         "two starts",
+        "a face thread (P1) with a run-out",
     ]);
     let c = any_g92(reach, run_out, max_starts);
     // The reader never makes a run-out with J = 0 (every profile: none).
@@ -87,15 +90,19 @@ where
         assume(false);
         return;
     };
-    let xf = c.x_mode.factor();
-    let (a, cut_end) = (c.start, c.end);
+    // In the frame (short axis, long axis): X and Z, or Z and X for a face
+    // thread (P1), whose long axis X counts X words (`lf`) and short axis
+    // Z radius-like (`xf` = 1 there).
+    let frame = |p: Point| if c.face { Point::new(p.z, p.x) } else { p };
+    let (xf, lf) = if c.face { (1, c.x_mode.factor()) } else { (c.x_mode.factor(), 1) };
+    let (a, cut_end) = (frame(c.start), frame(c.end));
     let b = Point::new(cut_end.x + xf * c.taper, a.z);
     let s = if a.x > cut_end.x { 1 } else { -1 };
     let w = cut_end.z - a.z;
     let t = w.signum();
-    let z_long = w.abs() > c.taper.abs();
+    let z_long = c.face || w.abs() > c.taper.abs();
     let run_out = match c.run_out {
-        RunOut::Amounts { short, long } => Some((short, long)),
+        RunOut::Amounts { short, long } => Some((short, lf * long)),
         RunOut::None | RunOut::Chamfer { .. } => None,
     };
     // The deeper end of the cut line, on the work's side.
@@ -124,7 +131,8 @@ where
             synced = true;
         }
         let from = at;
-        at = m.to;
+        at = frame(m.to);
+        let m = Move { to: frame(m.to), ..m };
         assert!(s * (m.to.x - a.x) <= 0, "no point beyond the X of A");
         assert!(s * (m.to.x - deepest) >= 0, "no point beyond the cut line");
         let order = match m.role {
@@ -179,6 +187,7 @@ where
                 cover!(z_long, "Z long with a run-out");
                 cover!(!z_long, "X long with a run-out");
                 cover!(k == 0, "a pull-out (K = 0)");
+                cover!(c.face, "a face thread (P1) with a run-out");
             }
             Role::Retract => {
                 assert_eq!(m.motion, Motion::Rapid, "the retract is a rapid");

@@ -13,10 +13,10 @@ fn cycles() -> impl Strategy<Value = G92Cycle> {
     (
         (0_u8..8, coord.clone(), coord.clone(), coord.clone(), coord.clone(), coord),
         (0_u8..4, 0_i64..=3_000_000, 0_i64..=3_000_000, 0_u32..=100, 0_u32..=90),
-        (1_u64..=99_999_999, 0_u32..=7, any::<bool>(), 0_u32..=1000, 0_u32..=359_999),
+        (1_u64..=99_999_999, 0_u32..=7, any::<bool>(), 0_u32..=1000, 0_u32..=359_999, any::<bool>()),
     )
-        .prop_map(|((code, x0, z0, x1, z1, r), (ro, j, k, chamfer, angle), (m, scale, i, l, q))| {
-            G92Cycle {
+        .prop_map(
+            |((code, x0, z0, x1, z1, r), (ro, j, k, chamfer, angle), (m, scale, i, l, q, face))| G92Cycle {
                 units: Units {
                     system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
                     unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
@@ -34,8 +34,9 @@ fn cycles() -> impl Strategy<Value = G92Cycle> {
                 },
                 starts: l.min(12),
                 start_angle: StartAngle::from_millidegrees(u64::from(q)),
-            }
-        })
+                face,
+            },
+        )
 }
 
 proptest! {
@@ -54,7 +55,7 @@ proptest! {
     #[test]
     fn engine_equals_spec_near_boundaries(
         x0 in -6_i64..=6, z0 in -6_i64..=6, x1 in -6_i64..=6, z1 in -6_i64..=6, r in -6_i64..=6,
-        j in 0_i64..=6, k in 0_i64..=6, code in 0_u8..8, l in 1_u32..=3,
+        j in 0_i64..=6, k in 0_i64..=6, code in 0_u8..8, l in 1_u32..=3, face in any::<bool>(),
     ) {
         let c = G92Cycle {
             units: Units {
@@ -69,6 +70,7 @@ proptest! {
             run_out: if j == 0 { RunOut::None } else { RunOut::Amounts { short: j, long: k } },
             starts: l,
             start_angle: StartAngle::ZERO,
+            face,
         };
         let ours = cycleref::expand_g92(&c).map(Iterator::collect::<Vec<_>>);
         prop_assert_eq!(ours, cycleref_spec::g92::expand(&c));

@@ -520,6 +520,7 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
 
     let frame = PassFrame {
         a: g.a,
+        transposed: false,
         side: g.side,
         direction: g.direction,
         length: w.abs(),

@@ -52,13 +52,21 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
     let u = c.units;
     let len = |v: Decimal| Length::new(to_increments(v, u), u);
     let xf = Decimal::from(c.x_mode.factor());
-    let a = (from_increments(c.start.x, u), from_increments(c.start.z, u));
-    let cut_end = (from_increments(c.end.x, u), from_increments(c.end.z, u));
+    let (ax, az) = (from_increments(c.start.x, u), from_increments(c.start.z, u));
+    let (cx, cz) = (from_increments(c.end.x, u), from_increments(c.end.z, u));
     let r = from_increments(c.taper, u);
-    // B: "R：切削起点与切削终点 X 轴绝对坐标的差值(半径值)".
-    let b = (cut_end.0 + xf * r, a.1);
+    // In the pass frame (`crate::pass`): (short axis, long axis). A face
+    // thread (988TA P1, reading R-G92FACE: "P = 1（端面螺纹）长轴 纵轴，短轴
+    // 横轴") has Z as its short axis, radius-like, and X as its long axis, in
+    // X words (`lf`).
+    let (a, cut_end, sf, lf) =
+        if c.face { ((az, ax), (cz, cx), Decimal::ONE, xf) } else { ((ax, az), (cx, cz), xf, Decimal::ONE) };
+    // B: "R：切削起点与切削终点 X 轴绝对坐标的差值(半径值)"; on a face thread the
+    // short axis is Z ("锥度 R 决定了锥螺纹起点短轴的位置").
+    let b = (cut_end.0 + sf * r, a.1);
     // Reading R-G92SIDE: the thread is on the side of A ("根据程序起点位置自动
-    // 确定退尾方向"); U = 0 gives none.
+    // 确定退尾方向"); no short-axis travel (U = 0, W = 0 on a face thread)
+    // gives none.
     let u_word = cut_end.0 - a.0;
     if u_word.is_zero() {
         return Err(CycleError::NoInfeed);
@@ -66,15 +74,16 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
     let side: i64 = if u_word < Decimal::ZERO { 1 } else { -1 };
     // "当 R 与 U 的符号不一致时，要求 │R│≤│U/2│": B between A and C (or on A).
     // With the same signs B lies beyond C, away from A, which is allowed.
-    if (r > Decimal::ZERO) != (u_word > Decimal::ZERO) && !r.is_zero() && xf * r.abs() > u_word.abs() {
+    if (r > Decimal::ZERO) != (u_word > Decimal::ZERO) && !r.is_zero() && sf * r.abs() > u_word.abs() {
         return Err(CycleError::TaperBeyondStart { taper: len(r), infeed: len(u_word) });
     }
     let w = cut_end.1 - a.1;
     let direction = if w > Decimal::ZERO { 1 } else { -1 };
     // "B 点与 C 点 Z 轴坐标差的绝对值大于 X 轴(半径值)坐标差的绝对值时，Z 轴为长轴；
-    // 反之，X 轴为长轴" (reading R-LONG).
-    let long_axis = if w.abs() > r.abs() { LongAxis::Z } else { LongAxis::X };
-    let run_out = run_out_amounts(c.run_out, c.lead, u);
+    // 反之，X 轴为长轴" (reading R-LONG); a face thread's long axis is X.
+    let long_axis = if c.face || w.abs() > r.abs() { LongAxis::Z } else { LongAxis::X };
+    // K along the long axis, in its units (X words on a face thread).
+    let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, k * lf));
     if let Some((_, kk)) = run_out {
         let length = match long_axis {
             LongAxis::Z => w.abs(),
@@ -96,10 +105,11 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
     }
     let frame = PassFrame {
         a,
+        transposed: c.face,
         side,
         direction,
         length: w.abs(),
-        x_factor: xf,
+        x_factor: sf,
         long_axis,
         run_out,
         lead: c.lead,

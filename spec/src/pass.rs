@@ -28,18 +28,24 @@ use rust_decimal::Decimal;
 use crate::exact::{quantize, to_increments};
 use crate::g76::LongAxis;
 
-/// What every pass of a cycle shares, in the manual's terms.
+/// What every pass of a cycle shares, in the manual's terms, in the frame's
+/// coordinates: the first the short axis (the depth), the second the long
+/// axis. They are X and Z, or Z and X for a face thread (`transposed`),
+/// turned back into X and Z when a move is made.
 #[derive(Clone, Copy, Debug)]
 pub struct PassFrame {
-    /// A, in X-word units.
+    /// A, in the frame's coordinates (X in X-word units).
     pub a: (Decimal, Decimal),
+    /// The frame's first coordinate is Z and its second X (G92 P1).
+    pub transposed: bool,
     /// +1 when A lies outside the thread (external), -1 inside.
     pub side: i64,
     /// Sign of W: +1 cutting towards +Z, -1 towards -Z.
     pub direction: i64,
     /// |W|, the thread's length along Z.
     pub length: Decimal,
-    /// X-word units per radius unit.
+    /// Short-axis units per radius unit (2 for X as a diameter; 1 for a
+    /// radius X, and for a face thread's short axis Z).
     pub x_factor: Decimal,
     /// The long axis.
     pub long_axis: LongAxis,
@@ -70,7 +76,8 @@ pub fn pass_path(
     let s = Decimal::from(f.side);
     let t = Decimal::from(f.direction);
     let xf = f.x_factor;
-    let mut path = Path { moves, at: f.a, pass, u, sync_done: false, lead: f.lead, angle };
+    let mut path =
+        Path { moves, at: f.a, pass, u, sync_done: false, lead: f.lead, angle, transposed: f.transposed };
     match lead_in_start {
         Some(an) => {
             path.go(Motion::Rapid, an, Role::Approach);
@@ -115,6 +122,7 @@ struct Path<'a> {
     sync_done: bool,
     lead: Lead,
     angle: StartAngle,
+    transposed: bool,
 }
 
 impl Path<'_> {
@@ -123,6 +131,7 @@ impl Path<'_> {
             return;
         }
         self.at = to;
+        let to = if self.transposed { (to.1, to.0) } else { to };
         let to = Point::new(to_increments(to.0, self.u), to_increments(to.1, self.u));
         self.moves.push(Move { motion, to, role, pass: Some(self.pass) });
     }

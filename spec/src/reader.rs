@@ -306,6 +306,8 @@ struct G92Modal {
     j: Option<i64>,
     k: Option<i64>,
     starts: Option<u32>,
+    /// P1 (988TA): a face thread.
+    face: Option<bool>,
 }
 
 /// The values of a G75.1 block 1, kept until block 2 arrives.
@@ -1172,16 +1174,9 @@ impl State<'_> {
             self.g92.starts = Some(Self::count(&block, w, 1, profile.g92_max_starts)?);
         }
         if let Some(w) = block.get('P')? {
-            // 988TA: "当 P=0 或省略 P 时，加工轴向螺纹；当 P=1 时，加工端面螺纹".
-            if Self::count(&block, w, 0, 1)? == 1 {
-                return Err(err(
-                    &block,
-                    Some(w),
-                    ErrorKind::Unsupported(
-                        "G92 P1 (face threads, long and short axes swapped) is not modelled yet".into(),
-                    ),
-                ));
-            }
+            // 988TA: "当 P=0 或省略 P 时，加工轴向螺纹；当 P=1 时，加工端面螺纹" (modal,
+            // "螺纹类型，模态指令"; reading R-G92FACE).
+            self.g92.face = Some(Self::count(&block, w, 0, 1)? == 1);
         }
         let start_angle = match block.get('Q')? {
             Some(w) => self.start_angle(&block, w)?,
@@ -1210,6 +1205,7 @@ impl State<'_> {
             run_out,
             starts: self.g92.starts.unwrap_or(1),
             start_angle,
+            face: self.g92.face.unwrap_or(false),
         };
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.g92.end_x = Some(end.x);

@@ -285,6 +285,39 @@ fn run_out_rules_per_profile() {
     assert_eq!(none[1], thread(58_700, -28_000, true, F3, Role::Cut));
 }
 
+/// A face thread, 988TA P1 (reading R-G92FACE: "P = 1（端面螺纹）长轴 纵轴，短轴
+/// 横轴"): A = (X60, Z5), C = (X20, Z1), so W = -4 is the infeed along Z
+/// and the cut runs along X (t = -1, towards the centre); s = +1 (A is on
+/// the +Z side of C). R0: B = (X60, Z1). J1 K2: the run-out starts K = 2
+/// (radius) before C along X, X = 20 + 2·2 = 24, on the cut line (Z1), and
+/// ends at C's X with J = 1 along Z towards A: (X20, Z2). The retract runs
+/// along Z to Z5 (X20), the return along X to A. With R-1, B = (X60, Z0)
+/// and the run-out starts on the line from B to C at X24: Z = 0 + (1 - 0)·
+/// (24 - 60)/(20 - 60) = 0.9.
+#[test]
+fn gsk988_face_thread() {
+    let m = machine(ProfileName::Gsk988);
+    let f2 = Lead { word: LeadWord::F, mantissa: 2, scale: 0 };
+    let got = blocks("M3 S300\nG0 X60 Z5\nG92 X20 Z1 F2 J1 K2 P1\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(60_000, 1_000, Role::Approach),
+            thread(24_000, 1_000, true, f2, Role::Cut),
+            thread(20_000, 2_000, false, f2, Role::RunOut),
+            rapid(20_000, 5_000, Role::Retract),
+            rapid(60_000, 5_000, Role::Return),
+        ]]
+    );
+    // P is modal: the next block (Z only) is a face thread too, R-1 modal
+    // from its own word.
+    let got = blocks("M3 S300\nG0 X60 Z5\nG92 X20 Z1 F2 J1 K2 P1\nZ0.5\nR-1 Z1\nM30\n", &m);
+    assert_eq!(got.len(), 3);
+    assert_eq!(got[1][0], rapid(60_000, 500, Role::Approach));
+    assert_eq!(got[2][0], rapid(60_000, 0, Role::Approach));
+    assert_eq!(got[2][1], thread(24_000, 900, true, f2, Role::Cut));
+}
+
 /// The 988TA's high-speed mode (5129 = 1), step (3) "X 轴以快速移动速度退刀
 /// … 返回到 X 轴绝对坐标与起点相同处": J and K: as the normal mode; K omitted
 /// ("长轴无退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴轴向距离，与 J 是多少
@@ -380,9 +413,12 @@ fn alarms() {
     let e = error(&format!("{head}G92 X58 Z-28 F3 L100\n"), &m980);
     assert_eq!((e.line, e.word.as_deref()), (3, Some("L100")));
     assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
-    let e = error(&format!("{head}G92 X58 Z-28 F3 P1\n"), &m988);
-    assert_eq!((e.line, e.word.as_deref()), (3, Some("P1")));
-    assert!(e.to_string().contains("face threads"), "{e}");
+    let e = error(&format!("{head}G92 X58 Z-28 F3 P2\n"), &m988);
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("P2")));
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+    // A face thread (P1) whose cut end has the X of A has no length.
+    let e = error(&format!("{head}G92 X65 Z1 F3 P1\n"), &m988);
+    assert_eq!((e.line, e.kind), (3, ErrorKind::Cycle(CycleError::NoThreadLength)));
     let e = error(&format!("{head}G92 F3\n"), &m980);
     assert!(matches!(e.kind, ErrorKind::Missing { .. }), "{e}");
     let e = error(&format!("{head}G92 X58 Z-28 F3 Q30\n"), &m980);
@@ -405,6 +441,7 @@ fn validate_shares_the_run_out_checks() {
         run_out: RunOut::Chamfer { tenths_of_lead: 100, angle_degrees: 45, long: None },
         starts: 1,
         start_angle: StartAngle::ZERO,
+        face: false,
     };
     assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 100, .. })));
     let c = cycleref::G92Cycle { starts: 0, run_out: RunOut::None, ..c };

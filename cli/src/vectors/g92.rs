@@ -214,6 +214,47 @@ fn multi_start(rng: &mut Rng) -> Draft {
     Draft::new(ctx, lines)
 }
 
+/// A face thread (988TA P1): the cut along X at a Z, the infeed along Z.
+pub(super) const FACE: Template = Template {
+    id: "g92-face",
+    outcome: Expected::Valid(&["g92:face"]),
+    tags: &["template:g92-face", "rule:g92-face"],
+    description:
+        "GSK 988TA G92 P1 face thread cut in two blocks (Z only in the second), J along Z, K along X",
+    generate: face,
+};
+
+fn face(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let xf = ctx.xf();
+    let (lead, lead_inc) = ctx.lead(rng, None);
+    let k = lead_inc * 6 / 10;
+    let outer = ctx.mm(rng.range(30_000, 45_000));
+    let inner = ctx.mm(rng.range(6_000, 15_000));
+    let inward = rng.chance(70);
+    let (x0, x1) = if inward { (outer, inner) } else { (inner, outer) };
+    let dir = rng.sign();
+    let z_face = ctx.mm(rng.range(-2000, 2000));
+    let clear = ctx.mm(rng.range(2000, 4000));
+    // A on the dir side of the face; each pass's cut end lies deeper into
+    // the face, away from A.
+    let a = (xf * x0, z_face + dir * (k + clear));
+    let mut lines = head(rng, &ctx, a);
+    let j = ctx.mm(rng.range(300, 1500));
+    let kk = ctx.mm(rng.range(500, 2000));
+    lines.push(format!(
+        "G92 X{} Z{} {lead} J{} K{} P1",
+        ctx.num(xf * x1),
+        ctx.num(z_face + dir * (k / 2)),
+        ctx.num(j),
+        ctx.num(kk)
+    ));
+    lines.push(format!("Z{}", ctx.num(z_face)));
+    lines.push("M30".into());
+    let what = if inward { "towards the centre" } else { "outwards" };
+    Draft::new(ctx, lines).described(format!("GSK 988TA G92 P1 face thread in two blocks, cut {what}"))
+}
+
 /// A steep taper: X the long axis.
 pub(super) const X_LONG: Template = Template {
     id: "g92-x-long",
@@ -339,10 +380,13 @@ pub(super) fn tags(call: &G92Call, moves: &[Move], tags: &mut BTreeSet<String>) 
     let c = &call.cycle;
     tag(tags, "g92");
     tag(tags, if c.taper == 0 { "g92:straight" } else { "g92:taper" });
-    if (c.end.z - c.start.z).abs() <= c.taper.abs() {
-        tag(tags, "g92:x-long");
+    // A face thread's long axis is X and its side is along Z.
+    if !c.face {
+        if (c.end.z - c.start.z).abs() <= c.taper.abs() {
+            tag(tags, "g92:x-long");
+        }
+        tag(tags, if c.start.x > c.end.x { "g92:external" } else { "g92:internal" });
     }
-    tag(tags, if c.start.x > c.end.x { "g92:external" } else { "g92:internal" });
     tag(tags, if c.lead.word == LeadWord::F { "lead:F" } else { "lead:I" });
     match c.run_out {
         RunOut::None => {}
@@ -352,6 +396,9 @@ pub(super) fn tags(call: &G92Call, moves: &[Move], tags: &mut BTreeSet<String>) 
     }
     if c.starts > 1 {
         tag(tags, "g92:multi-start");
+    }
+    if c.face {
+        tag(tags, "g92:face");
     }
     if !c.start_angle.is_zero() && !moves.is_empty() {
         tag(tags, "g92:q");

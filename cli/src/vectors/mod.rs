@@ -344,6 +344,7 @@ const TEMPLATES: &[&Template] = &[
     &g92::RUNOUT_988,
     &g92::MULTI_START,
     &g92::X_LONG,
+    &g92::FACE,
     &g78::GSK988,
     &g78::GSK980,
     &refused::MISSING_P,

@@ -83,7 +83,7 @@
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (408 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (424 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -463,6 +463,8 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let frame = Frame {
         lead: c.lead,
         a,
+        home: a,
+        transposed: false,
         d,
         c_x,
         xf,
@@ -508,7 +510,7 @@ impl G76Moves {
             self.stage = Stage::Done;
             return;
         };
-        self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.a);
+        self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.home);
         self.begin_start(0);
     }
 
@@ -519,7 +521,7 @@ impl G76Moves {
         self.frame.spacing.record_angle_gcd(start);
         // start < L ≤ 999.
         let number = u16::try_from(start + 1).unwrap_or(u16::MAX);
-        self.walk.restart(number, self.frame.spacing.angle(start), self.frame.a);
+        self.walk.restart(number, self.frame.spacing.angle(start), self.frame.home);
     }
 
     /// The next planned pass and its Z shift, as the reference's

@@ -28,7 +28,7 @@ use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g92::G92Cycle;
 use crate::moves::{Flank, Move, Pass, PassKind};
-use crate::units::{Length, MAX_LENGTH};
+use crate::units::{Length, Point, MAX_LENGTH};
 
 /// The moves of a G92 block, in order: an [`Iterator`] of constant size
 /// made by [`expand_g92`].
@@ -74,6 +74,7 @@ pub struct G92Moves {
 ///     run_out: RunOut::Amounts { short: 3_000, long: 1_000 },   // J3 K1
 ///     starts: 1,
 ///     start_angle: StartAngle::ZERO,
+///     face: false,
 /// };
 /// let moves: Vec<_> = expand_g92(&block)?.collect();
 /// let ends: Vec<_> = moves.iter().map(|m| (m.role, m.to)).collect();
@@ -94,9 +95,12 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
     let u = c.units;
     let len = |v: i64| Length::new(v, u);
     let xf = c.x_mode.factor();
-    let (a, end) = (c.start, c.end);
-    // |X(C)| + 2|R| < 3·2^30.
-    let b_x = end.x + xf * c.taper;
+    // The frame (`super::pass`): x the short axis, z the long axis; a face
+    // thread (P1) swaps X and Z, and its long axis X counts X words (`lf`).
+    let swap = |p: Point| Point::new(p.z, p.x);
+    let (a, end, sf, lf) = if c.face { (swap(c.start), swap(c.end), 1, xf) } else { (c.start, c.end, xf, 1) };
+    // |short(C)| + 2|R| < 3·2^30: B's short-axis coordinate.
+    let b_x = end.x + sf * c.taper;
     // Reading R-G92SIDE: the side of the thread is the side of A.
     let side = match a.x.cmp(&end.x) {
         Ordering::Greater => 1,
@@ -106,13 +110,16 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
     if side * (a.x - b_x) < 0 {
         return Err(CycleError::TaperBeyondStart { taper: len(c.taper), infeed: len(end.x - a.x) });
     }
-    // W ≠ 0 (validate: no face thread), |W| < 2^31.
+    // The long-axis travel ≠ 0 (validate), |W| < 2^31.
     let w = end.z - a.z;
     let direction = if w > 0 { 1 } else { -1 };
     let w_abs = w.abs();
     let taper_abs = c.taper.abs();
-    let long_axis = if w_abs > taper_abs { LongAxis::Z } else { LongAxis::X };
-    let run_out = run_out_amounts(c.run_out, c.lead, u);
+    // R-LONG for an axial thread; a face thread's long axis is X (988TA:
+    // "P = 1（端面螺纹）长轴 纵轴").
+    let long_axis = if c.face || w_abs > taper_abs { LongAxis::Z } else { LongAxis::X };
+    // K in the long axis's coordinate increments (X words on a face thread).
+    let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, lf.saturating_mul(k)));
     if let Some((_, kk)) = run_out {
         let length = match long_axis {
             LongAxis::Z => w_abs,
@@ -129,16 +136,18 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         }
     }
     // Reading R-RANGE: A and C are words within range, every other point
-    // lies between them or on B's X.
+    // lies between them or on B's short-axis coordinate.
     if b_x.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(b_x) });
     }
     let frame = Frame {
         lead: c.lead,
         a,
+        home: c.start,
+        transposed: c.face,
         d: end,
         c_x: b_x,
-        xf,
+        xf: sf,
         side,
         direction,
         w_abs,
@@ -154,7 +163,7 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         },
     };
     let pass = Pass { kind: PassKind::Single, number: 1, start: 1, depth: 0, cut: 0, flank: Flank::Centre };
-    let walk = Walk::new(frame.path(0, 0), pass, c.start_angle, a);
+    let walk = Walk::new(frame.path(0, 0), pass, c.start_angle, c.start);
     Ok(G92Moves { frame, walk, start: 0, first_angle: c.start_angle })
 }
 
@@ -181,7 +190,7 @@ impl Iterator for G92Moves {
             // next < L ≤ 999.
             let number = u16::try_from(next + 1).unwrap_or(u16::MAX);
             let angle = self.first_angle.plus(self.frame.spacing.angle(next));
-            self.walk.restart(number, angle, self.frame.a);
+            self.walk.restart(number, angle, self.frame.home);
         }
     }
 }

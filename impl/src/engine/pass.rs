@@ -31,18 +31,27 @@ pub(crate) enum LongAxis {
     X,
 }
 
-/// The fixed values of a checked threading cycle.
+/// The fixed values of a checked threading cycle, in the frame's
+/// coordinates: `x` the short axis (the depth), `z` the long axis. For an
+/// axial thread they are X and Z; for a face thread (G92 P1) they are Z and
+/// X (`transposed`), and the points of a path are turned back into X and Z
+/// when they are made.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Frame {
     /// The cycle's lead, for the thread motions.
     pub(crate) lead: Lead,
-    /// A.
+    /// A, in the frame's coordinates.
     pub(crate) a: Point,
+    /// A, in X and Z: where every pass returns.
+    pub(crate) home: Point,
+    /// The frame's x is Z and its z is X (a face thread).
+    pub(crate) transposed: bool,
     /// D (G92: the cut end C).
     pub(crate) d: Point,
     /// X of C, the thread's start at the Z of A (G92: X of B).
     pub(crate) c_x: i64,
-    /// X-word increments per radius increment.
+    /// Short-axis coordinate increments per radius increment: 2 for X as a
+    /// diameter, else 1 (a face thread's short axis is Z).
     pub(crate) xf: i64,
     /// +1 external, -1 internal.
     pub(crate) side: i64,
@@ -54,7 +63,8 @@ pub(crate) struct Frame {
     pub(crate) k: i64,
     /// Long axis.
     pub(crate) long_axis: LongAxis,
-    /// `(J, K)`.
+    /// `(J, K)`, K in the long axis's coordinate increments (a face
+    /// thread's K, a radius, is scaled to X's words by the caller).
     pub(crate) run_out: Option<(i64, i64)>,
     /// `(E, lead-in length)`.
     pub(crate) lead_in: Option<(i64, i64)>,
@@ -134,7 +144,19 @@ impl Frame {
                 }
             },
         };
-        PassPath { approach, lead_in, cut, run_out, retract: Point::new(self.a.x, last.z) }
+        let path = PassPath { approach, lead_in, cut, run_out, retract: Point::new(self.a.x, last.z) };
+        if self.transposed {
+            let swap = |p: Point| Point::new(p.z, p.x);
+            PassPath {
+                approach: swap(path.approach),
+                lead_in: path.lead_in.map(swap),
+                cut: swap(path.cut),
+                run_out: path.run_out.map(swap),
+                retract: swap(path.retract),
+            }
+        } else {
+            path
+        }
     }
 }
 
@@ -189,7 +211,7 @@ impl Walk {
                 2 => Some((true, self.path.cut, Role::Cut)),
                 3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
                 4 => Some((false, self.path.retract, Role::Retract)),
-                5 => Some((false, frame.a, Role::Return)),
+                5 => Some((false, frame.home, Role::Return)),
                 _ => return None,
             };
             self.step = step.saturating_add(1);
