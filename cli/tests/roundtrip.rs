@@ -1,7 +1,7 @@
 //! The reader round trip: a program expanded to nc by
 //! `cycleref_cli::output::expand` and read again with the same machine
 //! reproduces the expanded toolpath. The toolpath of a text is what the
-//! reader makes of it: each cycle (G76, G32, G75.1) expanded by the engine,
+//! reader makes of it: each cycle (G76, G78, G92, G32, G75.1) expanded by the engine,
 //! each plain G00/G01 block a move to its X and Z (G50 sets the position);
 //! in the nc output every G76 became plain G00/G32 blocks (each G32 block
 //! read back as a one-move G32 thread), so the two toolpaths must agree
@@ -130,6 +130,9 @@ fn the_examples_round_trip() {
         ("gsk988-m68x6.nc", ProfileName::Gsk988),
         ("seed000-extended.nc", ProfileName::Gsk988),
         ("gsk980-g32-runout.nc", ProfileName::Gsk980),
+        ("gsk980-g92-o0012.nc", ProfileName::Gsk980),
+        ("gsk980-g78.nc", ProfileName::Gsk980),
+        ("gsk988-g78.nc", ProfileName::Gsk988),
     ] {
         let path = format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"));
         let program = std::fs::read_to_string(path).unwrap();
@@ -187,6 +190,40 @@ fn g76(profile: ProfileName) -> impl Strategy<Value = String> {
         })
 }
 
+/// One G78 cycle: G76's thread with G78's P (the 988TA: m finishing passes,
+/// r 0-4, D the depth mode; the 980TDi: m the depth mode, r 0-3, D the
+/// finishing passes).
+fn g78(profile: ProfileName) -> impl Strategy<Value = String> {
+    (g76(profile), 0_u32..=4, 0_u32..=1, 1_u32..=2).prop_map(move |(g76, r, mode, d)| {
+        let mut lines: Vec<String> = g76.lines().map(str::to_string).collect();
+        // Block 1 is "G76 Pmmrraa …": rewrite its P for G78.
+        let rest = lines[1]
+            .split_once(' ')
+            .map_or("", |(_, r)| r)
+            .split_once(' ')
+            .map_or("", |(_, r)| r)
+            .to_string();
+        let a = &lines[1][9..11];
+        lines[1] = if profile == ProfileName::Gsk988 {
+            format!("G78 P02{r:02}{a} {rest} D{mode}")
+        } else {
+            format!("G78 P{mode:02}{:02}{a} {rest} D{d}", r % 4)
+        };
+        lines[2] = lines[2].replacen("G76", "G78", 1);
+        lines.join("\n") + "\n"
+    })
+}
+
+/// A G92 thread cut in two blocks (the second giving only X), with a
+/// run-out J K on the GSK profiles, then G00 back (which ends the mode).
+fn g92() -> impl Strategy<Value = String> {
+    (55_u32..=65, 0_i32..=2, 1_u32..=4, prop::bool::ANY).prop_map(|(x, taper, lead, run_out)| {
+        let r = if taper == 0 { String::new() } else { format!(" R-{taper}") };
+        let jk = if run_out { " J1 K2" } else { "" };
+        format!("G00 X80 Z5\nG92 X{x} Z-30{r} F{lead}{jk}\nX{}\nG00 X90 Z10\n", x - 1)
+    })
+}
+
 /// A G32 thread from X{x} Z5 with its approach and retract.
 fn g32() -> impl Strategy<Value = String> {
     (40_u32..=70, -3_i32..=3, 1_u32..=5).prop_map(|(x, taper, lead)| {
@@ -200,8 +237,11 @@ fn plain() -> impl Strategy<Value = String> {
 }
 
 fn program(profile: ProfileName) -> impl Strategy<Value = String> {
-    prop::collection::vec(prop_oneof![3 => g76(profile), 1 => g32(), 1 => plain()], 1..4)
-        .prop_map(|parts| format!("M03 S500\nG00 X90 Z10\n{}M30\n", parts.concat()))
+    prop::collection::vec(
+        prop_oneof![3 => g76(profile), 2 => g78(profile), 2 => g92(), 1 => g32(), 1 => plain()],
+        1..4,
+    )
+    .prop_map(|parts| format!("M03 S500\nG00 X90 Z10\n{}M30\n", parts.concat()))
 }
 
 proptest! {
