@@ -508,6 +508,38 @@ fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     })
 }
 
+/// One row of a single-block thread table (G32, G92): the block's line, a
+/// five-wide column, then three points (X and Z each), the last one `-`
+/// when absent.
+fn thread_row<W: Write>(
+    out: &mut W,
+    line: usize,
+    second: &str,
+    points: [Point; 2],
+    last: Option<Point>,
+    u: Units,
+) -> io::Result<()> {
+    let (rx, rz) = last.map_or(("-".into(), "-".into()), |p: Point| {
+        (Fixed::new(p.x, u).to_string(), Fixed::new(p.z, u).to_string())
+    });
+    let [a, b] = points;
+    writeln!(
+        out,
+        "{line:>6} {second:>5} {:>14} {:>14} {:>14} {:>14} {rx:>14} {rz:>14}",
+        Fixed::new(a.x, u),
+        Fixed::new(a.z, u),
+        Fixed::new(b.x, u),
+        Fixed::new(b.z, u),
+    )
+}
+
+/// The heading of a single-block thread table.
+fn thread_heading<W: Write>(out: &mut W, title: &str, name: &str, columns: [&str; 8]) -> io::Result<()> {
+    writeln!(out, "{title} ({name}):")?;
+    let [a, b, c, d, e, f, g, h] = columns;
+    writeln!(out, "{a:>6} {b:>5} {c:>14} {d:>14} {e:>14} {f:>14} {g:>14} {h:>14}")
+}
+
 /// One table of the program's G32 blocks: synchronisation, where the cut
 /// ends and where the run-out ends.
 fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
@@ -516,12 +548,9 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
         let Item::G32(call) = &item else { return Ok(()) };
         if !any {
             any = true;
-            writeln!(out, "G32 blocks ({}):", job.name)?;
-            writeln!(
-                out,
-                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
-                "line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"
-            )?;
+            let columns =
+                ["line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];
+            thread_heading(out, "G32 blocks", &job.name, columns)?;
         }
         let u = call.g32.units;
         let (mut cut, mut run_out) = (None, None);
@@ -533,21 +562,8 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             }
         }
         let cut = cut.unwrap_or(call.g32.start);
-        let (rx, rz) = run_out.map_or(("-".into(), "-".into()), |p: Point| {
-            (Fixed::new(p.x, u).to_string(), Fixed::new(p.z, u).to_string())
-        });
-        writeln!(
-            out,
-            "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
-            call.block.line,
-            if call.g32.sync { "yes" } else { "no" },
-            Fixed::new(call.g32.start.x, u),
-            Fixed::new(call.g32.start.z, u),
-            Fixed::new(cut.x, u),
-            Fixed::new(cut.z, u),
-            rx,
-            rz
-        )
+        let sync = if call.g32.sync { "yes" } else { "no" };
+        thread_row(out, call.block.line, sync, [call.g32.start, cut], run_out, u)
     })?;
     if any {
         out.write_all(b"\n")?;
@@ -563,32 +579,14 @@ fn g92_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
         let Item::G92(call) = &item else { return Ok(()) };
         if !any {
             any = true;
-            writeln!(out, "G92 blocks ({}):", job.name)?;
-            writeln!(
-                out,
-                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
-                "line", "start", "B X", "B Z", "cut to X", "cut to Z", "run-out X", "run-out Z"
-            )?;
+            let columns = ["line", "start", "B X", "B Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];
+            thread_heading(out, "G92 blocks", &job.name, columns)?;
         }
         let c = &call.cycle;
         let u = c.units;
         // B is the end of the approach, or A itself when B is A (R-ZERO).
         let mut row = |start: u16, b: Point, cut: Point, run_out: Option<Point>| {
-            let (rx, rz) = run_out.map_or(("-".into(), "-".into()), |p: Point| {
-                (Fixed::new(p.x, u).to_string(), Fixed::new(p.z, u).to_string())
-            });
-            writeln!(
-                out,
-                "{:>6} {:>5} {:>14} {:>14} {:>14} {:>14} {:>14} {:>14}",
-                call.block.line,
-                start,
-                Fixed::new(b.x, u),
-                Fixed::new(b.z, u),
-                Fixed::new(cut.x, u),
-                Fixed::new(cut.z, u),
-                rx,
-                rz
-            )
+            thread_row(out, call.block.line, &start.to_string(), [b, cut], run_out, u)
         };
         // (start, B, end of the cut, end of the run-out); a cut left out
         // (K = |W|: the whole thread is run-out) ends at B.

@@ -195,6 +195,18 @@ pub struct G76Cycle {
     pub pass_limit: u32,
 }
 
+/// The range-table check of a cycle's coordinate words, in order (reading
+/// R-RANGE): the first outside ±[`MAX_LENGTH`] is
+/// [`CycleError::OutOfRange`]. Shared by G76 and G92.
+pub(crate) fn coordinates_in_range(units: Units, words: &[(Field, i64)]) -> Result<(), CycleError> {
+    for &(field, v) in words {
+        if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+            return Err(CycleError::OutOfRange { field, value: Length::new(v, units) });
+        }
+    }
+    Ok(())
+}
+
 /// Default [`G76Cycle::pass_limit`].
 pub const DEFAULT_PASS_LIMIT: u32 = 1_000_000;
 
@@ -216,17 +228,16 @@ impl G76Cycle {
     /// The first violated rule, as a [`CycleError`].
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
-        let coord = |field: Field, v: i64| -> Result<(), CycleError> {
-            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
-                return Err(CycleError::OutOfRange { field, value: c.len(v) });
-            }
-            Ok(())
-        };
-        coord(Field::StartX, c.start.x)?;
-        coord(Field::StartZ, c.start.z)?;
-        coord(Field::EndX, c.end.x)?;
-        coord(Field::EndZ, c.end.z)?;
-        coord(Field::Taper, c.taper)?;
+        coordinates_in_range(
+            c.units,
+            &[
+                (Field::StartX, c.start.x),
+                (Field::StartZ, c.start.z),
+                (Field::EndX, c.end.x),
+                (Field::EndZ, c.end.z),
+                (Field::Taper, c.taper),
+            ],
+        )?;
         let positive = |field: Field, v: i64| -> Result<(), CycleError> {
             if !(1..=MAX_LENGTH).contains(&v) {
                 return Err(CycleError::OutOfRange { field, value: c.len(v) });

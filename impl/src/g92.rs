@@ -21,9 +21,9 @@
 
 use crate::angle::StartAngle;
 use crate::error::{CycleError, Field};
-use crate::g76::RunOut;
+use crate::g76::{coordinates_in_range, RunOut};
 use crate::lead::Lead;
-use crate::units::{Length, Point, Units, XMode, MAX_LENGTH};
+use crate::units::{Point, Units, XMode};
 
 /// One G92 thread-cutting cycle block.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -57,10 +57,6 @@ pub struct G92Cycle {
 }
 
 impl G92Cycle {
-    fn len(&self, v: i64) -> Length {
-        Length::new(v, self.units)
-    }
-
     /// Checks the range tables and the alarms that depend only on the
     /// programmed values: both engines call this first, so they refuse the
     /// same blocks with the same error.
@@ -74,17 +70,16 @@ impl G92Cycle {
     /// when C has the X of A on a face thread.
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
-        let coord = |field: Field, v: i64| -> Result<(), CycleError> {
-            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
-                return Err(CycleError::OutOfRange { field, value: c.len(v) });
-            }
-            Ok(())
-        };
-        coord(Field::StartX, c.start.x)?;
-        coord(Field::StartZ, c.start.z)?;
-        coord(Field::EndX, c.end.x)?;
-        coord(Field::EndZ, c.end.z)?;
-        coord(Field::Taper, c.taper)?;
+        coordinates_in_range(
+            c.units,
+            &[
+                (Field::StartX, c.start.x),
+                (Field::StartZ, c.start.z),
+                (Field::EndX, c.end.x),
+                (Field::EndZ, c.end.z),
+                (Field::Taper, c.taper),
+            ],
+        )?;
         c.run_out.validate_words(c.units)?;
         if !(1..=999).contains(&c.starts) {
             return Err(CycleError::CountOutOfRange { field: Field::Starts, value: c.starts });

@@ -24,10 +24,7 @@
 //! in order, each once.
 
 use cycleref::lead::{Lead, LeadWord};
-use cycleref::{
-    CycleError, G92Cycle, IncrementSystem, InputUnit, Motion, Move, PassKind, Point, Role, RunOut,
-    StartAngle, Units, XMode,
-};
+use cycleref::{CycleError, G92Cycle, Motion, Move, PassKind, Point, Role, RunOut, StartAngle};
 
 use crate::cover;
 use crate::verify::{any_in, assume, declare};
@@ -36,12 +33,7 @@ use crate::verify::{any_in, assume, declare};
 /// `run_out` (or no run-out), 1 to `max_starts` starts, every unit code,
 /// an F1.5 lead.
 pub fn any_g92(reach: i64, run_out: i64, max_starts: i64) -> G92Cycle {
-    let code = any_in(0, 7);
-    let units = Units {
-        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-    };
-    let x_mode = if code & 4 == 4 { XMode::Radius } else { XMode::Diameter };
+    let (units, x_mode) = crate::harness::units_of(any_in(0, 7));
     let start = Point::new(any_in(-reach, reach), any_in(-reach, reach));
     let end = Point::new(any_in(-reach, reach), any_in(-reach, reach));
     let taper = any_in(-reach, reach);

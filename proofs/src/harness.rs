@@ -104,6 +104,34 @@ impl Domain {
     };
 
     /// The schedule's inputs, small enough to enumerate: k 1..=20, Δd 1..=20,
+    /// Sampling domain: the documented ranges for the depth words, with
+    /// lengths chosen so that most cycles expand (pass limit 2000), G76's
+    /// infeed modes and depths.
+    pub const WIDE: Domain = Domain {
+        height: (1, 999_999_999),
+        first_depth: (1, 999_999_999),
+        min_cut: (0, 999_999_999),
+        allowance: (0, 999_999_999),
+        tool_angle: (0, 99),
+        finishing: (0, 5),
+        infeed: (0, 2),
+        depth_mode: (1, 1),
+        starts: (1, 4),
+        internal: (0, 1),
+        positive_z: (0, 1),
+        taper: (-300_000_000, 300_000_000),
+        length: (1, 999_999_999),
+        run_out_kind: (0, 3),
+        run_out: (0, 999_999_999),
+        chamfer: (0, 99),
+        chamfer_angle: (1, 89),
+        units: (0, 7),
+        pass_limit: 2_000,
+        lead_in: (0, 1_000_000),
+        lead: (0, 3),
+        wild_x: 2_000_000_000,
+    };
+
     /// Δdmin 0..=4, d 0..=k, all three infeed modes.
     pub const SCHEDULE: Domain = Domain {
         height: (1, 20),
@@ -227,12 +255,7 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
         2 => Lead { word: LeadWord::I, mantissa: 8, scale: 0 },
         _ => Lead { word: LeadWord::I, mantissa: 2540, scale: 0 },
     };
-    let code = pick(d.units);
-    let units = Units {
-        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-    };
-    let x_mode = if code & 4 == 4 { XMode::Radius } else { XMode::Diameter };
+    let (units, x_mode) = units_of(pick(d.units));
     let xf = x_mode.factor();
     let s = if internal { -1 } else { 1 };
     let t = if positive_z { 1 } else { -1 };
@@ -556,17 +579,23 @@ pub fn isqrt_rounds(lo: u128, hi: u128, sqrt: fn(u128) -> u128) {
     cover!(x > 1 && s.checked_mul(s).is_some_and(|sq| sq < x), "rounded down");
 }
 
+/// The units and X mode of a unit code: bit 0 IS-C, bit 1 inch, bit 2
+/// radius X (0..=7), as every harness and test draws them.
+#[must_use]
+pub fn units_of(code: i64) -> (Units, XMode) {
+    let units = Units {
+        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
+        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
+    };
+    (units, if code & 4 == 4 { XMode::Radius } else { XMode::Diameter })
+}
+
 /// A G32 block of a small domain: start and end within `reach` increments
 /// of the origin (any direction, straight, tapered, face), a run-out with
 /// `|J|, K <= run_out`, IS-B/IS-C, mm/inch, diameter/radius.
 pub fn any_g32(reach: i64, run_out: i64) -> cycleref::G32Block {
     use cycleref::{G32Block, G32RunOut, StartAngle};
-    let code = any_in(0, 7);
-    let units = Units {
-        system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-        unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-    };
-    let x_mode = if code & 4 == 4 { XMode::Radius } else { XMode::Diameter };
+    let (units, x_mode) = units_of(any_in(0, 7));
     let start = Point::new(any_in(-reach, reach), any_in(-reach, reach));
     let end = Point::new(any_in(-reach, reach), any_in(-reach, reach));
     let run_out = if any_in(0, 1) == 1 {

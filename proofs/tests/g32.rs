@@ -2,8 +2,9 @@
 //! run-out harness (property 4 for G32) exhaustively and sampled.
 
 use cycleref::lead::{Lead, LeadWord};
-use cycleref::{G32Block, G32RunOut, IncrementSystem, InputUnit, Point, StartAngle, Units, XMode};
+use cycleref::{G32Block, G32RunOut, Point, StartAngle};
 use cycleref_proofs::harness;
+use cycleref_proofs::harness::units_of;
 use cycleref_proofs::shim::{check, Mode};
 use proptest::prelude::*;
 
@@ -15,11 +16,8 @@ fn blocks() -> impl Strategy<Value = G32Block> {
         (1_u64..=99_999_999, 0_u32..=7, any::<bool>(), 0_u32..=359_999, 1_u32..=999, any::<bool>()),
     )
         .prop_map(|((code, x0, z0, x1, z1), (ro, j, k, sync), (m, scale, i, q, den, frac))| G32Block {
-            units: Units {
-                system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-                unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-            },
-            x_mode: if code & 4 == 4 { XMode::Radius } else { XMode::Diameter },
+            units: units_of(i64::from(code)).0,
+            x_mode: units_of(i64::from(code)).1,
             start: Point::new(x0, z0),
             end: Point::new(x1, z1),
             lead: Lead { word: if i { LeadWord::I } else { LeadWord::F }, mantissa: m, scale },

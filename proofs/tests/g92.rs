@@ -3,8 +3,9 @@
 //! (in `unwind.rs`), and engines broken on purpose that it catches.
 
 use cycleref::lead::{Lead, LeadWord};
-use cycleref::{G92Cycle, IncrementSystem, InputUnit, Move, Point, RunOut, StartAngle, Units, XMode};
+use cycleref::{G92Cycle, Move, Point, RunOut, StartAngle};
 use cycleref_proofs::g92::g92_pass;
+use cycleref_proofs::harness::units_of;
 use cycleref_proofs::shim::{check, Mode};
 use proptest::prelude::*;
 
@@ -17,11 +18,8 @@ fn cycles() -> impl Strategy<Value = G92Cycle> {
     )
         .prop_map(
             |((code, x0, z0, x1, z1, r), (ro, j, k, chamfer, angle), (m, scale, i, l, q, face))| G92Cycle {
-                units: Units {
-                    system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-                    unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-                },
-                x_mode: if code & 4 == 4 { XMode::Radius } else { XMode::Diameter },
+                units: units_of(i64::from(code)).0,
+                x_mode: units_of(i64::from(code)).1,
                 start: Point::new(x0, z0),
                 end: Point::new(x1, z1),
                 taper: r,
@@ -58,11 +56,8 @@ proptest! {
         j in 0_i64..=6, k in 0_i64..=6, code in 0_u8..8, l in 1_u32..=3, face in any::<bool>(),
     ) {
         let c = G92Cycle {
-            units: Units {
-                system: if code & 1 == 1 { IncrementSystem::IsC } else { IncrementSystem::IsB },
-                unit: if code & 2 == 2 { InputUnit::Inch } else { InputUnit::Metric },
-            },
-            x_mode: if code & 4 == 4 { XMode::Radius } else { XMode::Diameter },
+            units: units_of(i64::from(code)).0,
+            x_mode: units_of(i64::from(code)).1,
             start: Point::new(x0, z0),
             end: Point::new(x1, z1),
             taper: r,

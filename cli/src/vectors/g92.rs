@@ -266,14 +266,20 @@ pub(super) const X_LONG: Template = Template {
 };
 
 fn x_long(rng: &mut Rng) -> Draft {
+    steep(rng, false)
+}
+
+/// A steep taper whose X travel (radius) exceeds its Z travel, with a run-out
+/// J K: its cut line falls away from A towards C (the radius grows towards
+/// C on an external thread), so the run-out along Z towards A ends in the
+/// air, or, `rising`, the other slope, which R-XRUNOUT refuses.
+fn steep(rng: &mut Rng, rising: bool) -> Draft {
     let ctx = Ctx::new(gsk(rng), rng);
     let mut l = line32(rng, &ctx, false);
     l.len = ctx.mm(rng.range(2000, 5000));
     l.z1 = l.z0 + l.dir * l.len;
-    // The thread's radius grows (external) or falls (internal) towards C by
-    // more than its length: the cut line falls away from A, so the run-out
-    // along Z towards A ends in the air (R-XRUNOUT refuses the other slope).
-    l.taper = l.side * (l.len + ctx.mm(rng.range(0, 4000)));
+    let slope = if rising { -l.side } else { l.side };
+    l.taper = slope * (l.len + ctx.mm(rng.range(100, 4000)));
     l.r0 = l.r0.max(l.taper.abs() + ctx.mm(8000));
     let k = l.lead_inc * 6 / 10;
     let extra = vec![
@@ -356,21 +362,7 @@ pub(super) const RUN_OUT_INTO_WORK: Template = Template {
 };
 
 fn run_out_into_work(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
-    let mut l = line32(rng, &ctx, false);
-    l.len = ctx.mm(rng.range(2000, 5000));
-    l.z1 = l.z0 + l.dir * l.len;
-    l.taper = -l.side * (l.len + ctx.mm(rng.range(100, 4000)));
-    l.r0 = l.r0.max(l.taper.abs() + ctx.mm(8000));
-    let k = l.lead_inc * 6 / 10;
-    let extra = vec![
-        format!("J{}", ctx.num(ctx.mm(rng.range(300, 1000)))),
-        format!("K{}", ctx.num(ctx.mm(rng.range(300, 1500)))),
-    ];
-    let mut lines = head(rng, &ctx, start_point(&ctx, &l, k, ctx.mm(3000)));
-    lines.extend(passes_lines(&ctx, &l, k, &[k], &extra));
-    lines.push("M30".into());
-    Draft::new(ctx, lines)
+    steep(rng, true)
 }
 
 // ---- what a G92 block shows ----
