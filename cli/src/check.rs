@@ -505,22 +505,19 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                 }
             }
             Cycle::G92(call) => {
-                // No thread height either: the work lies beyond the cut
-                // line, away from A, between the Z of B and of C. The box
-                // is the part of it beyond the cut line's deepest X (a
-                // taper's wedge above that X is left out), as deep as any
-                // coordinate can be.
-                // A face thread (P1) is the same with X and Z exchanged: the
-                // work lies beyond the cut line along Z, between A's and C's
-                // X.
+                // No thread height either: the thread's crests stand above
+                // the cut line, so the box runs from A's short-axis
+                // coordinate (open: our approach, retract and return run on
+                // its edges) through the cut line into the work, along the
+                // thread between A's and C's long-axis coordinates. A face
+                // thread (P1) is the same with X and Z exchanged.
                 let c = &call.cycle;
                 let far = 4 * i128::from(cycleref::units::MAX_LENGTH);
                 let (a, e) = (c.start, c.end);
-                let (a_short, a_long, c_short, c_long, f) =
-                    if c.face { (a.z, a.x, e.z, e.x, 1) } else { (a.x, a.z, e.x, e.z, c.x_mode.factor()) };
-                let (cs, bs) =
-                    (i128::from(c_short), i128::from(c_short) + i128::from(f) * i128::from(c.taper));
-                let short = if i128::from(a_short) > cs { (-far, cs.min(bs)) } else { (cs.max(bs), far) };
+                let (a_short, a_long, c_short, c_long) =
+                    if c.face { (a.z, a.x, e.z, e.x) } else { (a.x, a.z, e.x, e.z) };
+                let a_short = i128::from(a_short);
+                let short = if a_short > i128::from(c_short) { (-far, a_short) } else { (a_short, far) };
                 let (la, lc) = (i128::from(a_long), i128::from(c_long));
                 let long = (la.min(lc), la.max(lc));
                 let (x, z) = if c.face { (long, short) } else { (short, long) };

@@ -105,6 +105,23 @@ fn check_a_vendors_trace() {
     assert!(report.contains("difference: X 20 Z 0 increments"), "{report}");
 }
 
+/// A trace that retracts Z first after its run-out (its Z leg runs at the
+/// run-out's X, X63.7, through the crests of the thread between X63.7 and
+/// X65) is a rapid through the work, not an agreement (R-CHECKSPLIT).
+#[test]
+fn check_a_z_first_retract_through_the_crests() {
+    let file = example();
+    let ours = stdout(&["expand", "--profile", "gsk980", &file]);
+    let old = "G32 X63.700 Z-28.000 F3.0\nG00 X65.000 Z-28.000\nG00 X65.000 Z5.000\n";
+    assert!(ours.contains(old));
+    let z_first = ours.replace(old, "G32 X63.700 Z-28.000 F3.0\nG00 X63.700 Z5.000\nG00 X65.000 Z5.000\n");
+    let trace = tmp("z-first.nc", &z_first);
+    let out = run(&["check", "--profile", "gsk980", "--trace", trace.to_str().unwrap(), &file], None);
+    assert_eq!(out.status.code(), Some(1));
+    let report = String::from_utf8(out.stdout).expect("utf-8");
+    assert!(report.contains("G92 at line 5, start 1: E (retract end) (rapid through the work)"), "{report}");
+}
+
 /// The G92 panel: one blue per block, its rapids dashed, the run-outs
 /// green; `--line` picks a G92 block.
 #[test]

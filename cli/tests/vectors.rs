@@ -203,6 +203,7 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::FaceThread => "face_thread",
         CycleError::NoInfeed => "no_infeed",
         CycleError::NoThreadLength => "no_thread_length",
+        CycleError::SteepFaceThread { .. } => "steep_face_thread",
         CycleError::TaperBeyondStart { .. } => "taper_beyond_start",
         CycleError::RunOutTooLong { .. } => "run_out_too_long",
         CycleError::RunOutIntoWork { .. } => "run_out_into_work",

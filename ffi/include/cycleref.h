@@ -397,6 +397,33 @@ typedef uint32_t CyclerefInfeed;
 #endif // __cplusplus
 
 /**
+ * How the rough depths of a G76/G78 cycle grow
+ * (`CyclerefG76Params::depth_mode`).
+ */
+enum CyclerefDepthMode
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+    /**
+     * `round(Δd √n)` with the minimum cut (G76; G78 递减式). Zero, so a
+     * zero-initialised struct is a G76.
+     */
+    CYCLEREF_DEPTH_MODE_DECREASING = 0,
+    /**
+     * Equal steps of max(Δd, Δdmin) (G78 等距离).
+     */
+    CYCLEREF_DEPTH_MODE_EQUAL = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CyclerefDepthMode CyclerefDepthMode;
+#else
+typedef uint32_t CyclerefDepthMode;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * The kind of run-out of a G76 cycle (`CyclerefG76Params::run_out_kind`).
  */
 enum CyclerefRunOutKind

@@ -1,7 +1,7 @@
 //! # cycleref-ffi
 //!
 //! The C interface to `cycleref`: read an NC program and expand every G76,
-//! G32 and G75.1 in it into a caller-provided buffer of moves
+//! G78, G32, G92 and G75.1 in it into a caller-provided buffer of moves
 //! (`cycleref_expand`), or take the same moves one at a time from a cursor
 //! in constant memory (`cycleref_cursor_open`, `_next`, `_close`), or step
 //! one G76 cycle move by move through an opaque handle. The header is

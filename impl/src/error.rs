@@ -179,6 +179,15 @@ pub enum CycleError {
     /// G92 P1 (a face thread): the cut end C has the X of the start point:
     /// the thread has no length along its long axis.
     NoThreadLength,
+    /// G92 P1: the taper R (along Z) exceeds the cut's X travel as a
+    /// radius, so the cut would run longer along Z than along X, its long
+    /// axis (reading R-G92FACE).
+    SteepFaceThread {
+        /// R (along Z).
+        taper: Length,
+        /// U: the cut's X travel (X-word units).
+        travel: Length,
+    },
     /// G92: the cut end C has the short-axis coordinate of the start point
     /// A (U = 0; W = 0 for a face thread): the block has no infeed, and the
     /// run-out and retract, whose direction comes from the start point,
@@ -352,6 +361,11 @@ impl fmt::Display for CycleError {
                 "the cut end X(U) equals the X of the start point: a G92 P1 face thread, cut along X, has \
                  no length"
             ),
+            CycleError::SteepFaceThread { taper, travel } => write!(
+                f,
+                "R = {taper} along Z exceeds the X travel U = {travel} as a radius: a G92 P1 face thread \
+                 cuts along X, its long axis, and the cut would run longer along Z"
+            ),
             CycleError::NoInfeed => write!(
                 f,
                 "the cut end lies on the start point A's short-axis coordinate (U = 0; W = 0 for a P1 face \
@@ -467,6 +481,7 @@ impl CycleError {
             Self::FaceThread => "face_thread",
             Self::NoInfeed => "no_infeed",
             Self::NoThreadLength => "no_thread_length",
+            Self::SteepFaceThread { .. } => "steep_face_thread",
             Self::TaperBeyondStart { .. } => "taper_beyond_start",
             Self::RunOutTooLong { .. } => "run_out_too_long",
             Self::RunOutIntoWork { .. } => "run_out_into_work",

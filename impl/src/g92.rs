@@ -23,7 +23,7 @@ use crate::angle::StartAngle;
 use crate::error::{CycleError, Field};
 use crate::g76::{coordinates_in_range, RunOut};
 use crate::lead::Lead;
-use crate::units::{Point, Units, XMode};
+use crate::units::{Length, Point, Units, XMode};
 
 /// One G92 thread-cutting cycle block.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -67,7 +67,8 @@ impl G92Cycle {
     /// outside the range table, the run-out words, L outside 1..999, the
     /// lead, then [`CycleError::FaceThread`] when C has the Z of A (980TDi:
     /// "也不能加工端面螺纹") on an axial thread, [`CycleError::NoThreadLength`]
-    /// when C has the X of A on a face thread.
+    /// when C has the X of A on a face thread and
+    /// [`CycleError::SteepFaceThread`] when its R exceeds its X travel.
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
         coordinates_in_range(
@@ -90,6 +91,17 @@ impl G92Cycle {
         }
         if c.face && c.end.x == c.start.x {
             return Err(CycleError::NoThreadLength);
+        }
+        // Reading R-G92FACE: a face thread's long axis is X, so its Z travel
+        // R must not exceed its X travel as a radius (R-G32LONG would make
+        // Z the long axis of the cut, and the lead would apply along Z).
+        let travel = (c.end.x - c.start.x).unsigned_abs();
+        // xf ≤ 2 and |R| ≤ MAX_LENGTH (checked above): the product fits.
+        if c.face && c.x_mode.factor().unsigned_abs() * c.taper.unsigned_abs() > travel {
+            return Err(CycleError::SteepFaceThread {
+                taper: Length::new(c.taper, c.units),
+                travel: Length::new(c.end.x - c.start.x, c.units),
+            });
         }
         Ok(())
     }

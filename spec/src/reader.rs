@@ -1401,17 +1401,19 @@ impl State<'_> {
             }
             e
         };
-        if code == Multipass::G76 && self.high_speed() {
-            // Reading R-RUNOUT: seed 000's 5129 switches G76 too, and no
-            // source gives G76's high-speed rules.
+        if self.high_speed() {
+            // Reading R-RUNOUT: 5129 switches G76 (seed 000: "螺纹切削循环
+            // G92,G76 的模式") and G78 (the 988TA G78 page: "G92，G76，G78
+            // 的模式"), and no source gives their high-speed rules.
             let n = profile.params.thread_mode.unwrap_or("5129");
             return Err(err(
                 &block,
                 None,
                 ErrorKind::Parameter(format!(
-                    "{n} = {} selects the high-speed threading mode, whose G76 rules the manuals do not \
-                     give; set it to 0 (G92 follows it, G78 is not switched)",
-                    self.machine.int_param(n)
+                    "{n} = {} selects the high-speed threading mode, whose {} rules the manuals do not \
+                     give; set it to 0 (G92 follows it)",
+                    self.machine.int_param(n),
+                    code.code()
                 )),
             ));
         }

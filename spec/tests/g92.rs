@@ -396,8 +396,9 @@ fn multi_start_and_start_angle() {
 
 /// The alarms, each on its line and word: no infeed (U = 0), a face
 /// thread (W = 0), a run-out longer than the thread (988TA note 4), L
-/// beyond 99 on the 980TDi, P1 (face threads) not modelled, G92 without an
-/// end point, words the profile does not have.
+/// beyond 99 on the 980TDi, P outside 0..1, a P1 face thread without X
+/// travel or steeper along Z than along X, G92 without an end point, words
+/// the profile does not have.
 #[test]
 fn alarms() {
     let m980 = machine(ProfileName::Gsk980);
@@ -419,6 +420,12 @@ fn alarms() {
     // A face thread (P1) whose cut end has the X of A has no length.
     let e = error(&format!("{head}G92 X65 Z1 F3 P1\n"), &m988);
     assert_eq!((e.line, e.kind), (3, ErrorKind::Cycle(CycleError::NoThreadLength)));
+    // X65 → X61: 2 mm of X travel as a radius; R-2 is as much (45°, X still
+    // the long axis by R-G32LONG's tie), R-2.001 more: refused.
+    assert!(blocks(&format!("{head}G92 X61 Z1 R-2 F3 P1\n"), &m988).len() == 1);
+    let e = error(&format!("{head}G92 X61 Z1 R-2.001 F3 P1\n"), &m988);
+    let ErrorKind::Cycle(CycleError::SteepFaceThread { taper, travel }) = e.kind else { panic!("{e}") };
+    assert_eq!((taper.increments, travel.increments), (-2_001, -4_000));
     let e = error(&format!("{head}G92 F3\n"), &m980);
     assert!(matches!(e.kind, ErrorKind::Missing { .. }), "{e}");
     let e = error(&format!("{head}G92 X58 Z-28 F3 Q30\n"), &m980);
