@@ -103,35 +103,20 @@ impl Domain {
         wild_x: 2_000_000_000,
     };
 
-    /// The schedule's inputs, small enough to enumerate: k 1..=20, Δd 1..=20,
     /// Sampling domain: the documented ranges for the depth words, with
     /// lengths chosen so that most cycles expand (pass limit 2000), G76's
     /// infeed modes and depths.
     pub const WIDE: Domain = Domain {
-        height: (1, 999_999_999),
-        first_depth: (1, 999_999_999),
-        min_cut: (0, 999_999_999),
-        allowance: (0, 999_999_999),
-        tool_angle: (0, 99),
         finishing: (0, 5),
         infeed: (0, 2),
         depth_mode: (1, 1),
         starts: (1, 4),
-        internal: (0, 1),
-        positive_z: (0, 1),
         taper: (-300_000_000, 300_000_000),
-        length: (1, 999_999_999),
-        run_out_kind: (0, 3),
-        run_out: (0, 999_999_999),
-        chamfer: (0, 99),
-        chamfer_angle: (1, 89),
-        units: (0, 7),
-        pass_limit: 2_000,
         lead_in: (0, 1_000_000),
-        lead: (0, 3),
-        wild_x: 2_000_000_000,
+        ..Domain::FULL
     };
 
+    /// The schedule's inputs, small enough to enumerate: k 1..=20, Δd 1..=20,
     /// Δdmin 0..=4, d 0..=k, all three infeed modes.
     pub const SCHEDULE: Domain = Domain {
         height: (1, 20),

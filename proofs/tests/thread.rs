@@ -104,14 +104,11 @@ fn no_rapid_enters_an_x_long_thread() {
     );
 }
 
-/// The finding of `crate::thread`'s module docs, now refused (reading
-/// R-XRUNOUT): X long, `s·i > 0` (A at X115 outside C at X110, i = +10),
-/// a run-out: J along Z towards A would end in the work, and the retract
-/// after it would cross the thread. Both engines refuse it; without the
-/// run-out it expands.
-#[test]
-fn an_x_long_run_out_into_the_work_is_refused() {
-    let c = G76Cycle {
+/// An X-long G76 (radius X, IS-B): A = (115, 5), D = (100, 0), |W| = 5,
+/// k = Δd = 4 (one rough pass), one finishing pass, 60°; the tests set the
+/// taper i (|i| = 10 >= |W|: X long) and the run-out.
+fn x_long_cycle() -> G76Cycle {
+    G76Cycle {
         units: Units::IS_B_METRIC,
         x_mode: XMode::Radius,
         start: Point::new(115, 5),
@@ -128,9 +125,19 @@ fn an_x_long_run_out_into_the_work_is_refused() {
         lead_in: 0,
         starts: 1,
         lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
-        run_out: RunOut::Amounts { short: 2, long: 3 },
+        run_out: RunOut::None,
         pass_limit: 100,
-    };
+    }
+}
+
+/// The finding of `crate::thread`'s module docs, now refused (reading
+/// R-XRUNOUT): X long, `s·i > 0` (A at X115 outside C at X110, i = +10),
+/// a run-out: J along Z towards A would end in the work, and the retract
+/// after it would cross the thread. Both engines refuse it; without the
+/// run-out it expands.
+#[test]
+fn an_x_long_run_out_into_the_work_is_refused() {
+    let c = G76Cycle { taper: 10, run_out: RunOut::Amounts { short: 2, long: 3 }, ..x_long_cycle() };
     let refused = Err(cycleref::CycleError::RunOutIntoWork { taper: cycleref::Length::new(10, c.units) });
     assert_eq!(cycleref::expand_g76(&c).map(Iterator::count), refused.map(|()| 0));
     assert_eq!(cycleref_spec::g76::expand(&c).map(|v| v.len()), refused.map(|()| 0));
@@ -144,26 +151,7 @@ fn an_x_long_run_out_into_the_work_is_refused() {
 /// and is the one rapid the harness leaves out, checking `s·i < 0`.
 #[test]
 fn an_x_long_run_out_away_from_the_work_expands() {
-    let c = G76Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Radius,
-        start: Point::new(115, 5),
-        end: Point::new(100, 0),
-        taper: -10,
-        thread_height: 4,
-        first_depth: 4,
-        min_cut: 1,
-        finishing_allowance: 0,
-        finishing_passes: 1,
-        tool_angle: 60,
-        infeed: Infeed::RightFlank,
-        depth_mode: cycleref::DepthMode::Decreasing,
-        lead_in: 0,
-        starts: 1,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
-        run_out: RunOut::Amounts { short: 1, long: 3 },
-        pass_limit: 100,
-    };
+    let c = G76Cycle { taper: -10, run_out: RunOut::Amounts { short: 1, long: 3 }, ..x_long_cycle() };
     let ours: Vec<Move> = cycleref::expand_g76(&c).expect("a valid cycle").collect();
     assert_same_moves(&Ok(ours.clone()), &cycleref_spec::g76::expand(&c), "the X-long cycle");
     // C = (100 - 10, 5) = (90, 5). The pass at depth 4 = k runs from (90,
