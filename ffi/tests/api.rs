@@ -5,6 +5,7 @@ use core::ffi::{c_char, CStr};
 use core::ptr;
 
 use cycleref_ffi::*;
+use cycleref_spec::reader::Multipass;
 use cycleref_spec::{read, Machine, ProfileName};
 
 fn example(name: &str) -> String {
@@ -63,9 +64,17 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
     let mut out = Vec::new();
     for item in &p.items {
         match item {
-            cycleref_spec::Item::G76(c) => out.extend(cycleref::expand_g76(&c.cycle).unwrap().map(|m| {
-                CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G76, c.block.line)
-            })),
+            cycleref_spec::Item::G76(c) => {
+                let kind = match c.code {
+                    Multipass::G76 => CyclerefCycle::G76,
+                    Multipass::G78 => CyclerefCycle::G78,
+                };
+                out.extend(
+                    cycleref::expand_g76(&c.cycle)
+                        .unwrap()
+                        .map(|m| CyclerefMove::from_move(&m, c.cycle.units.decimals(), kind, c.block.line)),
+                );
+            }
             cycleref_spec::Item::G32(c) => out.extend(cycleref::expand_g32(&c.g32).unwrap().map(|m| {
                 CyclerefMove::from_move(&m, c.g32.units.decimals(), CyclerefCycle::G32, c.block.line)
             })),
@@ -115,6 +124,8 @@ const EXAMPLES: &[(&str, CyclerefProfile, ProfileName, cycleref::IncrementSystem
         ("gsk980-g75-square.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g75-slope.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
         ("gsk980-g92-o0012.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk980-g78.nc", CyclerefProfile::Gsk980, ProfileName::Gsk980, IsB),
+        ("gsk988-g78.nc", CyclerefProfile::Gsk988, ProfileName::Gsk988, IsB),
     ]
 };
 
@@ -672,6 +683,7 @@ fn pipeline_moves(program: &[u8], machine: &Machine) -> Vec<CyclerefMove> {
         let item = item.expect("reads");
         if let Some(cycle) = Cycle::of(&item) {
             let kind = match cycle {
+                Cycle::G76(c) if c.code == Multipass::G78 => CyclerefCycle::G78,
                 Cycle::G76(_) => CyclerefCycle::G76,
                 Cycle::G32(_) => CyclerefCycle::G32,
                 Cycle::G75(_) => CyclerefCycle::G75,

@@ -179,6 +179,24 @@ def test_gsk980_g92_o0012_golden():
         assert {(m.pass_.kind, m.pass_.number, m.pass_.depth) for m in cycle.moves} == {("single", 1, D("0.000"))}
 
 
+def test_gsk980_g78_golden():
+    # spec/tests/g78.rs, gsk980_alternating_flanks_with_equal_depths: "levels
+    # 0.8 (right, Z 10 - 0.331), 1.6 (left, 2.072 - 0.663 = 1.409: Z 8.591),
+    # 2.4 (right, Z 9.006), 2.5 (left, 2.072 - 1.036: Z 8.964)"; X = 60 + 2 (3 -
+    # D); two finishing passes at X60 from the last rough Z.
+    (cycle,) = cycleref.expand(example("gsk980-g78.nc"), profile="gsk980")
+    assert (cycle.code, cycle.line, cycle.params_line) == ("G78", 5, 4)
+    starts = [(m.x, m.z, m.pass_.kind, m.pass_.flank) for m in cycle.moves if m.role == "approach"]
+    assert starts == [
+        (D("64.400"), D("9.669"), "rough", "right"),
+        (D("62.800"), D("8.591"), "rough", "left"),
+        (D("61.200"), D("9.006"), "rough", "right"),
+        (D("61.000"), D("8.964"), "rough", "left"),
+        (D("60.000"), D("8.964"), "finish", "centre"),
+        (D("60.000"), D("8.964"), "finish", "centre"),
+    ]
+
+
 def test_gsk980_g75_seed_golden():
     # proofs/tests/g75_golden.rs, seed001_as_written: pecks at X47 ... X32,
     # retracts of 0.5 (X48 ... X33), the last peck cut short at X30, plunges
