@@ -467,6 +467,12 @@ typedef struct CyclerefCursor CyclerefCursor;
 typedef struct CyclerefG76 CyclerefG76;
 
 /**
+ * A G92 block being stepped move by move: an opaque handle made by
+ * `cycleref_g92_new` and freed by `cycleref_g92_free`.
+ */
+typedef struct CyclerefG92 CyclerefG92;
+
+/**
  * Options of `cycleref_expand` and `cycleref_cursor_open`: the machine a
  * program is read with.
  *
@@ -773,6 +779,103 @@ typedef struct CyclerefG76Params {
     uint8_t run_out_has_long;
 } CyclerefG76Params;
 
+/**
+ * The parameters of one G92 block (`cycleref_g92_new`), in least
+ * increments of the units given, X in X-word units (diameter increments
+ * unless `radius` is non-zero), as the reader resolves them: the modal
+ * words and the profile's run-out rules that `cycleref_expand` applies
+ * are not applied here.
+ */
+typedef struct CyclerefG92Params {
+    /**
+     * X of the start point A (X-word units).
+     */
+    int64_t start_x;
+    /**
+     * Z of the start point A.
+     */
+    int64_t start_z;
+    /**
+     * X(U): X of the cut end C (X-word units).
+     */
+    int64_t end_x;
+    /**
+     * Z(W): Z of the cut end C.
+     */
+    int64_t end_z;
+    /**
+     * R: the cut start B's short-axis coordinate minus C's (radius,
+     * signed; along Z for a face thread).
+     */
+    int64_t taper;
+    /**
+     * Digits of the lead without the decimal point.
+     */
+    uint64_t lead_mantissa;
+    /**
+     * J of a `CYCLEREF_RUN_OUT_KIND_AMOUNTS` run-out (unsigned).
+     */
+    int64_t run_out_short;
+    /**
+     * K of an `AMOUNTS` run-out, or of a `CHAMFER` run-out when
+     * `run_out_has_long` is non-zero.
+     */
+    int64_t run_out_long;
+    /**
+     * A `CyclerefIncrement` (`CYCLEREF_INCREMENT_DEFAULT` is IS-B).
+     */
+    uint32_t increment;
+    /**
+     * L: number of starts (1..=999).
+     */
+    uint32_t starts;
+    /**
+     * A `CyclerefLeadWord`.
+     */
+    uint32_t lead_word;
+    /**
+     * Decimals of the lead (`F3` is 0).
+     */
+    uint32_t lead_scale;
+    /**
+     * A `CyclerefRunOutKind`.
+     */
+    uint32_t run_out_kind;
+    /**
+     * r of a `CHAMFER` run-out: tenths of the lead (0..=99).
+     */
+    uint32_t run_out_tenths;
+    /**
+     * Chamfer angle of a `CHAMFER` run-out in degrees (1..=89).
+     */
+    uint32_t run_out_angle;
+    /**
+     * Q: the first start's spindle angle, `start_angle_num /
+     * start_angle_den` thousandths of a degree (a denominator of 0 is 1).
+     */
+    uint32_t start_angle_num;
+    /**
+     * See `start_angle_num`.
+     */
+    uint32_t start_angle_den;
+    /**
+     * Non-zero: inch units.
+     */
+    uint8_t inch;
+    /**
+     * Non-zero: X words are radii.
+     */
+    uint8_t radius;
+    /**
+     * Non-zero: a `CHAMFER` run-out has the K of `run_out_long`.
+     */
+    uint8_t run_out_has_long;
+    /**
+     * Non-zero: a face thread (988TA P1).
+     */
+    uint8_t face;
+} CyclerefG92Params;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -944,6 +1047,41 @@ int32_t cycleref_g76_next(struct CyclerefG76 *handle, struct CyclerefMove *out);
  * after this call.
  */
 void cycleref_g76_free(struct CyclerefG76 *handle);
+
+/**
+ * Checks the G92 block `params` completely and returns a handle that
+ * yields its moves, or NULL on error (with `*err` filled, as
+ * `cycleref_g76_new`). Free it with `cycleref_g92_free`.
+ *
+ * # Safety
+ *
+ * `params` must point to a readable `CyclerefG92Params`; `err` must be
+ * NULL or valid for a write.
+ */
+struct CyclerefG92 *cycleref_g92_new(const struct CyclerefG92Params *params,
+                                     struct CyclerefError *err);
+
+/**
+ * Writes the next move of the block to `*out` and returns 1, or 0 at the
+ * end, or a negative `CyclerefStatus`, as `cycleref_g76_next`.
+ *
+ * # Safety
+ *
+ * `handle` must be a live handle of `cycleref_g92_new`, not used by
+ * another thread during the call; `out` must be valid for a write.
+ */
+int32_t cycleref_g92_next(struct CyclerefG92 *handle, struct CyclerefMove *out);
+
+/**
+ * Frees a handle of `cycleref_g92_new`. NULL is accepted and ignored.
+ *
+ * # Safety
+ *
+ * `handle` must be NULL or a handle of `cycleref_g92_new` that has not
+ * been freed yet, not in use by another thread; it must not be used after
+ * this call.
+ */
+void cycleref_g92_free(struct CyclerefG92 *handle);
 
 #ifdef __cplusplus
 }  // extern "C"

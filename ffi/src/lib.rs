@@ -143,16 +143,16 @@ use core::ffi::c_char;
 use std::any::Any;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use cycleref::{expand_g76, G76Moves, InputUnit, XMode};
+use cycleref::{expand_g76, expand_g92, G76Moves, G92Moves, InputUnit, Move, XMode};
 use cycleref_spec::pipeline::{self, Engine};
 use cycleref_spec::reader::Multipass;
 use cycleref_spec::{Cycle, Machine, Moves, ProfileName, ProgramError, Reader, RunError};
 
 pub use cursor::CyclerefCursor;
 pub use types::{
-    CyclerefCycle, CyclerefError, CyclerefFlank, CyclerefG76Params, CyclerefIncrement, CyclerefInfeed,
-    CyclerefLeadWord, CyclerefMotion, CyclerefMove, CyclerefOptions, CyclerefPassKind, CyclerefProfile,
-    CyclerefRole, CyclerefRunOutKind, CyclerefStatus, CYCLEREF_ERROR_MESSAGE_LEN,
+    CyclerefCycle, CyclerefError, CyclerefFlank, CyclerefG76Params, CyclerefG92Params, CyclerefIncrement,
+    CyclerefInfeed, CyclerefLeadWord, CyclerefMotion, CyclerefMove, CyclerefOptions, CyclerefPassKind,
+    CyclerefProfile, CyclerefRole, CyclerefRunOutKind, CyclerefStatus, CYCLEREF_ERROR_MESSAGE_LEN,
 };
 
 /// Why a call failed, before it is written to a `CyclerefError`.
@@ -684,26 +684,42 @@ pub unsafe extern "C" fn cycleref_g76_next(handle: *mut CyclerefG76, out: *mut C
         // `cycleref_g76_new`, is not freed and not used elsewhere during
         // the call (the caller's contract), so a unique reference is sound.
         let h = unsafe { &mut *handle };
-        if h.poisoned {
-            return Err(Failure::new(CyclerefStatus::Panic, 0, "the handle is unusable after a panic"));
-        }
-        // Poisoned unless `next` returns: a panic inside leaves it set.
-        h.poisoned = true;
-        let next = h.moves.next();
-        h.poisoned = false;
-        let Some(m) = next else {
-            return Ok(0);
-        };
-        // SAFETY: `out` is non-null and aligned (checked) and valid for a
-        // write (the caller's contract); `write` does not read the old
-        // value.
-        unsafe { out.write(CyclerefMove::from_move(&m, h.decimals, CyclerefCycle::G76, 0)) };
-        Ok(1)
+        let next = step(&mut h.moves, &mut h.poisoned)?;
+        Ok(write_move(next, out, h.decimals, CyclerefCycle::G76))
     });
     match result {
         Ok(r) => r,
         Err(f) => f.status as i32,
     }
+}
+
+/// The next move of a stepped cycle, guarding against a panic inside the
+/// engine: `poisoned` stays set if `next` does not return, and every later
+/// call reports the panic.
+fn step<I: Iterator<Item = Move>>(moves: &mut I, poisoned: &mut bool) -> Result<Option<Move>, Failure> {
+    if *poisoned {
+        return Err(Failure::new(CyclerefStatus::Panic, 0, "the handle is unusable after a panic"));
+    }
+    *poisoned = true;
+    let next = moves.next();
+    *poisoned = false;
+    Ok(next)
+}
+
+/// Writes `next` to `*out` (non-null and aligned, checked by the caller)
+/// and returns 1, or returns 0 for the end of the cycle (`*out` untouched).
+fn write_move(next: Option<Move>, out: *mut CyclerefMove, decimals: u32, cycle: CyclerefCycle) -> i32 {
+    let Some(m) = next else {
+        return 0;
+    };
+    // SAFETY: `out` is non-null and aligned (checked by `required`) and
+    // valid for a write (the caller's contract); `write` does not read the
+    // old value.
+    #[allow(unsafe_code)]
+    unsafe {
+        out.write(CyclerefMove::from_move(&m, decimals, cycle, 0));
+    }
+    1
 }
 
 /// Frees a handle of `cycleref_g76_new`. NULL is accepted and ignored.
@@ -720,6 +736,93 @@ pub unsafe extern "C" fn cycleref_g76_free(handle: *mut CyclerefG76) {
         if !handle.is_null() {
             // SAFETY: a non-null `handle` came from `Box::into_raw` in
             // `cycleref_g76_new` and is freed only once (the caller's
+            // contract).
+            drop(unsafe { Box::from_raw(handle) });
+        }
+        Ok(())
+    });
+}
+
+/// A G92 block being stepped move by move: an opaque handle made by
+/// `cycleref_g92_new` and freed by `cycleref_g92_free`.
+#[derive(Debug)]
+pub struct CyclerefG92 {
+    /// The engine's iterator.
+    moves: G92Moves,
+    /// Decimals of one increment of the block's units.
+    decimals: u32,
+    /// Set when a call panicked (as `CyclerefG76::poisoned`).
+    poisoned: bool,
+}
+
+/// Checks the G92 block `params` completely and returns a handle that
+/// yields its moves, or NULL on error (with `*err` filled, as
+/// `cycleref_g76_new`). Free it with `cycleref_g92_free`.
+///
+/// # Safety
+///
+/// `params` must point to a readable `CyclerefG92Params`; `err` must be
+/// NULL or valid for a write.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_g92_new(
+    params: *const CyclerefG92Params,
+    err: *mut CyclerefError,
+) -> *mut CyclerefG92 {
+    let result = guard(|| {
+        required(params, "params")?;
+        // SAFETY: `params` is non-null and aligned (checked) and points to
+        // a `CyclerefG92Params` (the caller's contract); it has only
+        // integer fields, for which every bit pattern is valid.
+        let p = unsafe { params.read() };
+        let cycle = p.cycle().map_err(Failure::invalid)?;
+        let moves =
+            expand_g92(&cycle).map_err(|e| Failure::new(CyclerefStatus::CycleError, 0, e.to_string()))?;
+        Ok(Box::into_raw(Box::new(CyclerefG92 { moves, decimals: cycle.units.decimals(), poisoned: false })))
+    });
+    finish(&result, err);
+    result.unwrap_or(core::ptr::null_mut())
+}
+
+/// Writes the next move of the block to `*out` and returns 1, or 0 at the
+/// end, or a negative `CyclerefStatus`, as `cycleref_g76_next`.
+///
+/// # Safety
+///
+/// `handle` must be a live handle of `cycleref_g92_new`, not used by
+/// another thread during the call; `out` must be valid for a write.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_g92_next(handle: *mut CyclerefG92, out: *mut CyclerefMove) -> i32 {
+    let result = guard(|| {
+        required(handle, "handle")?;
+        required(out, "out")?;
+        // SAFETY: as in `cycleref_g76_next`, for a handle of
+        // `cycleref_g92_new`.
+        let h = unsafe { &mut *handle };
+        let next = step(&mut h.moves, &mut h.poisoned)?;
+        Ok(write_move(next, out, h.decimals, CyclerefCycle::G92))
+    });
+    match result {
+        Ok(r) => r,
+        Err(f) => f.status as i32,
+    }
+}
+
+/// Frees a handle of `cycleref_g92_new`. NULL is accepted and ignored.
+///
+/// # Safety
+///
+/// `handle` must be NULL or a handle of `cycleref_g92_new` that has not
+/// been freed yet, not in use by another thread; it must not be used after
+/// this call.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub unsafe extern "C" fn cycleref_g92_free(handle: *mut CyclerefG92) {
+    let _ = guard(|| {
+        if !handle.is_null() {
+            // SAFETY: a non-null `handle` came from `Box::into_raw` in
+            // `cycleref_g92_new` and is freed only once (the caller's
             // contract).
             drop(unsafe { Box::from_raw(handle) });
         }

@@ -12,8 +12,8 @@ use core::ffi::c_char;
 
 use cycleref::g76::DEFAULT_PASS_LIMIT;
 use cycleref::{
-    DepthMode, Flank, G76Cycle, IncrementSystem, Infeed, InputUnit, Lead, LeadWord, Motion, Move, PassKind,
-    Point, Role, RunOut, Units, XMode,
+    DepthMode, Flank, G76Cycle, G92Cycle, IncrementSystem, Infeed, InputUnit, Lead, LeadWord, Motion, Move,
+    PassKind, Point, Role, RunOut, StartAngle, Units, XMode,
 };
 
 /// Size of `CyclerefError.message` in bytes, the terminating NUL included.
@@ -568,8 +568,6 @@ impl CyclerefG76Params {
     /// A message naming the field whose enum value is out of range.
     pub fn cycle(&self) -> Result<G76Cycle, String> {
         let bad = |field: &str, v: u32, ty: &str| format!("{field} = {v} is not a {ty}");
-        let system =
-            increment(self.increment).ok_or_else(|| bad("increment", self.increment, "CyclerefIncrement"))?;
         let infeed = match self.infeed {
             0 => Infeed::RightFlank,
             1 => Infeed::RightCentre,
@@ -584,26 +582,18 @@ impl CyclerefG76Params {
             1 => DepthMode::Equal,
             v => return Err(bad("depth_mode", v, "CyclerefDepthMode")),
         };
-        let word = match self.lead_word {
-            0 => LeadWord::F,
-            1 => LeadWord::I,
-            v => return Err(bad("lead_word", v, "CyclerefLeadWord")),
-        };
-        let run_out = match self.run_out_kind {
-            0 => RunOut::None,
-            1 => RunOut::Amounts { short: self.run_out_short, long: self.run_out_long },
-            2 => RunOut::Chamfer {
-                tenths_of_lead: self.run_out_tenths,
-                angle_degrees: self.run_out_angle,
-                long: (self.run_out_has_long != 0).then_some(self.run_out_long),
-            },
-            v => return Err(bad("run_out_kind", v, "CyclerefRunOutKind")),
-        };
+        let units = units_of(self.increment, self.inch)?;
+        let lead = lead_of(self.lead_word, self.lead_mantissa, self.lead_scale)?;
+        let run_out = run_out_of(RunOutFields {
+            kind: self.run_out_kind,
+            short: self.run_out_short,
+            long: self.run_out_long,
+            tenths: self.run_out_tenths,
+            angle: self.run_out_angle,
+            has_long: self.run_out_has_long,
+        })?;
         Ok(G76Cycle {
-            units: Units {
-                system: system.unwrap_or(IncrementSystem::IsB),
-                unit: if self.inch != 0 { InputUnit::Inch } else { InputUnit::Metric },
-            },
+            units,
             x_mode: if self.radius != 0 { XMode::Radius } else { XMode::Diameter },
             start: Point::new(self.start_x, self.start_z),
             end: Point::new(self.end_x, self.end_z),
@@ -618,9 +608,138 @@ impl CyclerefG76Params {
             depth_mode,
             lead_in: self.lead_in,
             starts: self.starts,
-            lead: Lead { word, mantissa: self.lead_mantissa, scale: self.lead_scale },
+            lead,
             run_out,
             pass_limit: if self.pass_limit == 0 { DEFAULT_PASS_LIMIT } else { self.pass_limit },
+        })
+    }
+}
+
+/// The run-out fields of a parameters struct (G76's and G92's).
+struct RunOutFields {
+    kind: u32,
+    short: i64,
+    long: i64,
+    tenths: u32,
+    angle: u32,
+    has_long: u8,
+}
+
+/// The run-out the fields describe, or a message naming the kind out of range.
+fn run_out_of(f: RunOutFields) -> Result<RunOut, String> {
+    Ok(match f.kind {
+        0 => RunOut::None,
+        1 => RunOut::Amounts { short: f.short, long: f.long },
+        2 => RunOut::Chamfer {
+            tenths_of_lead: f.tenths,
+            angle_degrees: f.angle,
+            long: (f.has_long != 0).then_some(f.long),
+        },
+        v => return Err(format!("run_out_kind = {v} is not a CyclerefRunOutKind")),
+    })
+}
+
+/// The units of an increment field and an inch flag.
+fn units_of(increment_field: u32, inch: u8) -> Result<Units, String> {
+    let system = increment(increment_field)
+        .ok_or_else(|| format!("increment = {increment_field} is not a CyclerefIncrement"))?;
+    Ok(Units {
+        system: system.unwrap_or(IncrementSystem::IsB),
+        unit: if inch != 0 { InputUnit::Inch } else { InputUnit::Metric },
+    })
+}
+
+/// The lead of a lead word field, mantissa and scale.
+fn lead_of(word: u32, mantissa: u64, scale: u32) -> Result<Lead, String> {
+    let word = match word {
+        0 => LeadWord::F,
+        1 => LeadWord::I,
+        v => return Err(format!("lead_word = {v} is not a CyclerefLeadWord")),
+    };
+    Ok(Lead { word, mantissa, scale })
+}
+
+/// The parameters of one G92 block (`cycleref_g92_new`), in least
+/// increments of the units given, X in X-word units (diameter increments
+/// unless `radius` is non-zero), as the reader resolves them: the modal
+/// words and the profile's run-out rules that `cycleref_expand` applies
+/// are not applied here.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct CyclerefG92Params {
+    /// X of the start point A (X-word units).
+    pub start_x: i64,
+    /// Z of the start point A.
+    pub start_z: i64,
+    /// X(U): X of the cut end C (X-word units).
+    pub end_x: i64,
+    /// Z(W): Z of the cut end C.
+    pub end_z: i64,
+    /// R: the cut start B's short-axis coordinate minus C's (radius,
+    /// signed; along Z for a face thread).
+    pub taper: i64,
+    /// Digits of the lead without the decimal point.
+    pub lead_mantissa: u64,
+    /// J of a `CYCLEREF_RUN_OUT_KIND_AMOUNTS` run-out (unsigned).
+    pub run_out_short: i64,
+    /// K of an `AMOUNTS` run-out, or of a `CHAMFER` run-out when
+    /// `run_out_has_long` is non-zero.
+    pub run_out_long: i64,
+    /// A `CyclerefIncrement` (`CYCLEREF_INCREMENT_DEFAULT` is IS-B).
+    pub increment: u32,
+    /// L: number of starts (1..=999).
+    pub starts: u32,
+    /// A `CyclerefLeadWord`.
+    pub lead_word: u32,
+    /// Decimals of the lead (`F3` is 0).
+    pub lead_scale: u32,
+    /// A `CyclerefRunOutKind`.
+    pub run_out_kind: u32,
+    /// r of a `CHAMFER` run-out: tenths of the lead (0..=99).
+    pub run_out_tenths: u32,
+    /// Chamfer angle of a `CHAMFER` run-out in degrees (1..=89).
+    pub run_out_angle: u32,
+    /// Q: the first start's spindle angle, `start_angle_num /
+    /// start_angle_den` thousandths of a degree (a denominator of 0 is 1).
+    pub start_angle_num: u32,
+    /// See `start_angle_num`.
+    pub start_angle_den: u32,
+    /// Non-zero: inch units.
+    pub inch: u8,
+    /// Non-zero: X words are radii.
+    pub radius: u8,
+    /// Non-zero: a `CHAMFER` run-out has the K of `run_out_long`.
+    pub run_out_has_long: u8,
+    /// Non-zero: a face thread (988TA P1).
+    pub face: u8,
+}
+
+impl CyclerefG92Params {
+    /// The block these parameters describe.
+    ///
+    /// # Errors
+    ///
+    /// A message naming the field whose enum value is out of range.
+    pub fn cycle(&self) -> Result<G92Cycle, String> {
+        let den = if self.start_angle_den == 0 { 1 } else { self.start_angle_den };
+        Ok(G92Cycle {
+            units: units_of(self.increment, self.inch)?,
+            x_mode: if self.radius != 0 { XMode::Radius } else { XMode::Diameter },
+            start: Point::new(self.start_x, self.start_z),
+            end: Point::new(self.end_x, self.end_z),
+            taper: self.taper,
+            lead: lead_of(self.lead_word, self.lead_mantissa, self.lead_scale)?,
+            run_out: run_out_of(RunOutFields {
+                kind: self.run_out_kind,
+                short: self.run_out_short,
+                long: self.run_out_long,
+                tenths: self.run_out_tenths,
+                angle: self.run_out_angle,
+                has_long: self.run_out_has_long,
+            })?,
+            starts: self.starts,
+            start_angle: StartAngle::ZERO.plus(StartAngle { num: self.start_angle_num, den }),
+            face: self.face != 0,
         })
     }
 }

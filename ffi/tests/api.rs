@@ -936,3 +936,82 @@ fn cursors_are_independent() {
     assert_eq!(take(b), expected);
     assert_eq!(t.join().unwrap(), expected);
 }
+
+/// `cycleref_g92_new`/`_next`/`_free` on the 980TDi's O0012 first block
+/// (`G0 X65 Z5; G92 X58.7 Z-28 F3 J3 K1`, worked out in spec/tests/g92.rs:
+/// B = X58.7 Z5, the cut to Z-27, the run-out to X64.7 Z-28, the retract
+/// to X65, the return to Z5), a two-start block at Q90 (starts at 90° and
+/// 270°), the alarms and the arguments.
+#[test]
+#[allow(unsafe_code)]
+fn the_g92_step_api() {
+    let params = CyclerefG92Params {
+        increment: CyclerefIncrement::IsB as u32,
+        start_x: 65_000,
+        start_z: 5_000,
+        end_x: 58_700,
+        end_z: -28_000,
+        lead_word: CyclerefLeadWord::F as u32,
+        lead_mantissa: 3,
+        run_out_kind: CyclerefRunOutKind::Amounts as u32,
+        run_out_short: 3_000,
+        run_out_long: 1_000,
+        starts: 1,
+        ..CyclerefG92Params::default()
+    };
+    let stepped = |p: &CyclerefG92Params| -> Result<Vec<CyclerefMove>, Box<CyclerefError>> {
+        let mut err = CyclerefError::default();
+        // SAFETY: valid params and error; the handle is used, then freed once.
+        unsafe {
+            let h = cycleref_g92_new(p, &mut err);
+            if h.is_null() {
+                return Err(Box::new(err));
+            }
+            let mut out = Vec::new();
+            let mut m = CyclerefMove::default();
+            while cycleref_g92_next(h, &mut m) == 1 {
+                out.push(m);
+            }
+            assert_eq!(cycleref_g92_next(h, &mut m), 0, "fused");
+            cycleref_g92_free(h);
+            Ok(out)
+        }
+    };
+    let got: Vec<_> =
+        stepped(&params).unwrap().iter().map(|m| (m.cycle, m.motion, m.role, m.x, m.z, m.sync)).collect();
+    assert_eq!(
+        got,
+        [
+            (CyclerefCycle::G92, CyclerefMotion::Rapid, CyclerefRole::Approach, 58_700, 5_000, 0),
+            (CyclerefCycle::G92, CyclerefMotion::Thread, CyclerefRole::Cut, 58_700, -27_000, 1),
+            (CyclerefCycle::G92, CyclerefMotion::Thread, CyclerefRole::RunOut, 64_700, -28_000, 0),
+            (CyclerefCycle::G92, CyclerefMotion::Rapid, CyclerefRole::Retract, 65_000, -28_000, 0),
+            (CyclerefCycle::G92, CyclerefMotion::Rapid, CyclerefRole::Return, 65_000, 5_000, 0),
+        ]
+    );
+    // L2 from Q = 90°: 90° and 90° + 180°.
+    let two =
+        stepped(&CyclerefG92Params { starts: 2, start_angle_num: 90_000, start_angle_den: 1, ..params })
+            .unwrap();
+    let angles: Vec<_> = two
+        .iter()
+        .filter(|m| m.sync == 1)
+        .map(|m| (m.pass_start, m.start_angle_num, m.start_angle_den))
+        .collect();
+    assert_eq!(angles, [(1, 90_000, 1), (2, 270_000, 1)]);
+    // The manual's alarms are cycle errors; bad enum values invalid arguments.
+    let e = stepped(&CyclerefG92Params { end_x: 65_000, ..params }).unwrap_err();
+    assert_eq!(e.status, CyclerefStatus::CycleError);
+    assert!(e.message().contains("U = 0"), "{}", e.message());
+    let e = stepped(&CyclerefG92Params { run_out_kind: 3, ..params }).unwrap_err();
+    assert_eq!(e.status, CyclerefStatus::InvalidArgument);
+    // SAFETY: NULL arguments are refused, never read.
+    unsafe {
+        let mut err = CyclerefError::default();
+        assert!(cycleref_g92_new(ptr::null(), &mut err).is_null());
+        assert_eq!(err.status, CyclerefStatus::InvalidArgument);
+        let mut m = CyclerefMove::default();
+        assert_eq!(cycleref_g92_next(ptr::null_mut(), &mut m), CyclerefStatus::InvalidArgument as i32);
+        cycleref_g92_free(ptr::null_mut());
+    }
+}
