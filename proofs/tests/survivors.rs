@@ -1,0 +1,146 @@
+//! Tests for the engine changes that cargo-mutants found the harness tests
+//! let through (`proofs/README.md`, the mutation scores). Each expected
+//! value is worked out by hand (the working is in the comments) or taken
+//! from the exact reference `cycleref_spec`, never from the engine.
+//!
+//! The loop counters are process-wide: the counter checks are one test.
+
+use cycleref::loop_counters::{self, ISQRT_U128, ISQRT_U64};
+
+/// The Newton iterations `isqrt_floor` makes, recorded by `record_isqrt`.
+fn newton_iterations(x: u128) -> (u32, u32) {
+    loop_counters::reset();
+    cycleref::engine::record_isqrt(x);
+    (ISQRT_U64.max(), ISQRT_U128.max())
+}
+
+/// Newton's iterations counted exactly (the harnesses only check that they
+/// stay below the unwind bound, which a count stuck at 0 passes): the start
+/// is `g = 2^ceil(bits/2)`, each iteration is `y = (g + x/g) >> 1`, and
+/// the one that finds `y ≥ g` ends the loop and is counted too.
+#[test]
+fn newton_iteration_counts() {
+    // x = 2^16 (u64 loop): bits 17, g = 2^9 = 512; y = (512 + 128)/2 = 320;
+    // (320 + 204)/2 = 262; (262 + 250)/2 = 256; (256 + 256)/2 = 256 ≥ 256:
+    // 4 iterations, root 256.
+    assert_eq!(newton_iterations(1 << 16), (4, 0));
+    assert_eq!(cycleref::engine::isqrt_floor(1 << 16), 256);
+    // x = 10^6 (u64 loop): bits 20, g = 2^10 = 1024; (1024 + 976)/2 = 1000;
+    // (1000 + 1000)/2 = 1000 ≥ 1000: 2 iterations.
+    assert_eq!(newton_iterations(1_000_000), (2, 0));
+    // x = 2^64 (u128 loop): bits 65, g = 2^33 = 8 589 934 592;
+    // (2^33 + 2^31)/2 = 5 368 709 120; (5 368 709 120 + 3 435 973 836)/2
+    // = 4 402 341 478; (4 402 341 478 + 4 190 211 996)/2 = 4 296 276 737;
+    // (4 296 276 737 + 4 293 658 254)/2 = 4 294 967 495;
+    // (4 294 967 495 + 4 294 967 097)/2 = 4 294 967 296 = 2^32; then
+    // (2^32 + 2^32)/2 = 2^32 ≥ 2^32: 6 iterations, root 2^32.
+    assert_eq!(newton_iterations(1 << 64), (0, 6));
+    assert_eq!(cycleref::engine::isqrt_floor(1 << 64), 1 << 32);
+    // x = 2^128 - 1 (u128 loop): bits 128, g = 2^64; x / g = 2^64 - 1,
+    // (2^64 + 2^64 - 1)/2 = 2^64 - 1; x / (2^64 - 1) = 2^64 + 1,
+    // (2^64 - 1 + 2^64 + 1)/2 = 2^64 ≥ 2^64 - 1: 2 iterations, root
+    // 2^64 - 1.
+    assert_eq!(newton_iterations(u128::MAX), (0, 2));
+    assert_eq!(cycleref::engine::isqrt_floor(u128::MAX), u128::from(u64::MAX));
+    loop_counters::reset();
+}
+
+/// G92 with A on B's X (the taper brings the thread's start exactly to the
+/// X of A): a valid cycle whose approach is empty; one increment further
+/// out, B lies beyond A and the cycle is refused (reading R-G92SIDE; the
+/// harnesses never reached the boundary, `< 0` could become `<= 0`).
+#[test]
+fn g92_with_a_on_the_x_of_b() {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{CycleError, G92Cycle, Motion, Point, Role, RunOut, StartAngle, Units, XMode};
+
+    let cycle = |a_x: i64| G92Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(a_x, 0),
+        end: Point::new(40_000, -20_000),
+        taper: 5_000,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::None,
+        starts: 1,
+        start_angle: StartAngle::ZERO,
+    };
+    // B: X = 40.000 + 2 · 5.000 = 50.000 (diameter), the X of A, at the Z
+    // of A: B = A, so no approach. The cut along the taper to C, the
+    // retract along X to 50.000, the return along Z to A.
+    let c = cycle(50_000);
+    let moves: Vec<_> = cycleref::expand_g92(&c).expect("A on B's X is valid").collect();
+    assert_eq!(Ok(moves.clone()), cycleref_spec::g92::expand(&c));
+    let path: Vec<_> =
+        moves.iter().map(|m| (m.to, m.role, matches!(m.motion, Motion::Thread { .. }))).collect();
+    assert_eq!(
+        path,
+        [
+            (Point::new(40_000, -20_000), Role::Cut, true),
+            (Point::new(50_000, -20_000), Role::Retract, false),
+            (Point::new(50_000, 0), Role::Return, false),
+        ]
+    );
+    // A one increment nearer the axis than B: B lies beyond A. The alarm
+    // names R = 5.000 and the infeed U = 40.000 - 49.999 = -9.999.
+    let c = cycle(49_999);
+    let e = cycleref::expand_g92(&c).map(|_| ()).unwrap_err();
+    let CycleError::TaperBeyondStart { taper, infeed } = e else { panic!("{e:?}") };
+    assert_eq!((taper.increments, infeed.increments), (5_000, -9_999));
+    assert_eq!(cycleref_spec::g92::expand(&c).map(|_| ()), Err(e));
+}
+
+/// G92 run-outs at their limits: K as long as |W| is allowed and one
+/// increment more is the alarm (988TA note 4); a taper rising towards A
+/// refuses a run-out only on an X long axis (reading R-XRUNOUT), not on a
+/// Z long axis. Checked against the reference.
+#[test]
+fn g92_run_out_limits() {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{CycleError, G92Cycle, Point, RunOut, StartAngle, Units, XMode};
+
+    let cycle_from = |a_x: i64, end: Point, taper: i64, short: i64, long: i64| G92Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(a_x, 0),
+        end,
+        taper,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::Amounts { short, long },
+        starts: 1,
+        start_angle: StartAngle::ZERO,
+    };
+    let cycle = |end: Point, taper: i64, short: i64, long: i64| cycle_from(50_000, end, taper, short, long);
+    let both = |c: &G92Cycle| {
+        let ours = cycleref::expand_g92(c).map(Iterator::collect::<Vec<_>>);
+        assert_eq!(ours, cycleref_spec::g92::expand(c), "{c:?}");
+        ours
+    };
+    // Z long, |W| = 20.000: K = 20.000 expands, K = 20.001 is refused with
+    // the long-axis length 20.000.
+    let z_long = Point::new(40_000, -20_000);
+    assert!(both(&cycle(z_long, 0, 1_000, 20_000)).is_ok());
+    assert!(matches!(
+        both(&cycle(z_long, 0, 1_000, 20_001)),
+        Err(CycleError::RunOutTooLong { run_out, length }) if (run_out.increments, length.increments) == (20_001, 20_000)
+    ));
+    // Z long (|W| = 20.000 > |R| = 2.000), R > 0 on an external thread
+    // (side +1): the run-out along X is allowed.
+    assert!(both(&cycle(z_long, 2_000, 1_000, 5_000)).is_ok());
+    // X long (|R| = 4.000 ≥ |W| = 3.000), R > 0 on an external thread: a
+    // run-out along Z towards A would cut into the work.
+    let x_long = Point::new(40_000, -3_000);
+    assert!(matches!(
+        both(&cycle(x_long, 4_000, 1_000, 2_000)),
+        Err(CycleError::RunOutIntoWork { taper }) if taper.increments == 4_000
+    ));
+    // The same with R < 0 (the thread start below C): allowed.
+    assert!(both(&cycle(Point::new(48_000, -3_000), -4_000, 1_000, 2_000)).is_ok());
+    // Internal (A at X 30.000 below C, side -1), X long: R < 0 rises
+    // towards A (s·R = 4.000 > 0) and is refused, R > 0 is allowed.
+    assert!(matches!(
+        both(&cycle_from(30_000, Point::new(40_000, -3_000), -4_000, 1_000, 2_000)),
+        Err(CycleError::RunOutIntoWork { taper }) if taper.increments == -4_000
+    ));
+    assert!(both(&cycle_from(30_000, Point::new(32_000, -3_000), 4_000, 1_000, 2_000)).is_ok());
+}
