@@ -64,6 +64,7 @@ fn g92_with_a_on_the_x_of_b() {
         run_out: RunOut::None,
         starts: 1,
         start_angle: StartAngle::ZERO,
+        face: false,
     };
     // B: X = 40.000 + 2 · 5.000 = 50.000 (diameter), the X of A, at the Z
     // of A: B = A, so no approach. The cut along the taper to C, the
@@ -109,6 +110,7 @@ fn g92_run_out_limits() {
         run_out: RunOut::Amounts { short, long },
         starts: 1,
         start_angle: StartAngle::ZERO,
+        face: false,
     };
     let cycle = |end: Point, taper: i64, short: i64, long: i64| cycle_from(50_000, end, taper, short, long);
     let both = |c: &G92Cycle| {
