@@ -75,7 +75,11 @@ fn finishing() {
     harness::finishing(&FINISHING_WINDOW, &FixedPoint);
 }
 
-/// P4 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
+/// P4 over [`NO_RAPID_WINDOW`] ([`G76_WINDOW`] with threads from 1
+/// increment long, so that its cover "run-out with X long" is reachable:
+/// with |W| ≥ 20 and |i| ≤ 6 X is never long). Unwind 79; measured as P1
+/// (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`,
+/// `saturate_i64` (stubbed).
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
@@ -83,7 +87,7 @@ fn finishing() {
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
 #[kani::unwind(79)]
 fn run_out_direction() {
-    harness::run_out_direction(&G76_WINDOW, &FixedPoint);
+    harness::run_out_direction(&NO_RAPID_WINDOW, &FixedPoint);
 }
 
 /// P5 over [`G76_WINDOW`]. Unwind 79; measured as P1 (78 moves). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).

@@ -41,8 +41,10 @@ pub const G76_WINDOW: Domain = Domain {
     wild_x: 2,
 };
 
-/// The window of `no_rapid_in_thread`: [`G76_WINDOW`] with threads from 1
-/// increment long, so that X is the long axis too (`|i| ≥ |W|`, taper ±6).
+/// The window of `no_rapid_in_thread` and `run_out_direction`:
+/// [`G76_WINDOW`] with threads from 1 increment long, so that X is the long
+/// axis too (`|i| ≥ |W|`, taper ±6) and P4's cover "run-out with X long"
+/// can be reached under Kani (`--fail-uncoverable`).
 pub const NO_RAPID_WINDOW: Domain = Domain { length: (1, 40), ..G76_WINDOW };
 
 /// P3's window: [`G76_WINDOW`] with two starts (the finishing passes per

@@ -203,3 +203,18 @@ fn long_exhaustive() {
     });
     eprintln!("long exhaustive run: {:.0?}", started.elapsed());
 }
+
+/// P4's Kani window (`windows::NO_RAPID_WINDOW`) reaches every cover P4
+/// declares, "run-out with X long" included (helper-10 found it unreachable
+/// in `G76_WINDOW`, whose threads are at least 20 increments long against
+/// tapers of ±6), so `--fail-uncoverable` can pass.
+#[test]
+fn p4_kani_window_reaches_every_cover() {
+    let r = check("run-out direction (Kani window)", Mode::Sample { runs: 30_000, seed: 4 }, || {
+        harness::run_out_direction(&cycleref_proofs::windows::NO_RAPID_WINDOW, &FixedPoint);
+    });
+    for (name, hits) in &r.covers {
+        assert!(*hits > 0, "{name} is not reached in P4's Kani window");
+    }
+    assert!(r.covers.get("run-out with X long").is_some_and(|&n| n > 0), "{:?}", r.covers);
+}

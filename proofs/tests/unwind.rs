@@ -171,7 +171,7 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     let w = windows::G76_WINDOW;
     g76("depth_monotonicity", &w, harness::depth_monotonicity);
     g76("termination", &w, harness::termination);
-    g76("run_out_direction", &w, harness::run_out_direction);
+    g76("run_out_direction", &windows::NO_RAPID_WINDOW, harness::run_out_direction);
     g76("no_overcut", &w, harness::no_overcut);
     g76("no_rapid_in_thread", &windows::NO_RAPID_WINDOW, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
