@@ -195,11 +195,24 @@ pub struct G76Cycle {
     pub pass_limit: u32,
 }
 
-/// The range-table check of a cycle's coordinate words, in order (reading
-/// R-RANGE): the first outside ±[`MAX_LENGTH`] is
-/// [`CycleError::OutOfRange`]. Shared by G76 and G92.
-pub(crate) fn coordinates_in_range(units: Units, words: &[(Field, i64)]) -> Result<(), CycleError> {
-    for &(field, v) in words {
+/// The range-table check of a threading cycle's coordinate words, in
+/// order (reading R-RANGE): the start point, the end point, then the taper;
+/// the first outside ±[`MAX_LENGTH`] is [`CycleError::OutOfRange`]. Shared
+/// by G76 and G92.
+pub(crate) fn coordinates_in_range(
+    units: Units,
+    start: Point,
+    end: Point,
+    taper: i64,
+) -> Result<(), CycleError> {
+    let words = [
+        (Field::StartX, start.x),
+        (Field::StartZ, start.z),
+        (Field::EndX, end.x),
+        (Field::EndZ, end.z),
+        (Field::Taper, taper),
+    ];
+    for (field, v) in words {
         if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
             return Err(CycleError::OutOfRange { field, value: Length::new(v, units) });
         }
@@ -228,16 +241,7 @@ impl G76Cycle {
     /// The first violated rule, as a [`CycleError`].
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
-        coordinates_in_range(
-            c.units,
-            &[
-                (Field::StartX, c.start.x),
-                (Field::StartZ, c.start.z),
-                (Field::EndX, c.end.x),
-                (Field::EndZ, c.end.z),
-                (Field::Taper, c.taper),
-            ],
-        )?;
+        coordinates_in_range(c.units, c.start, c.end, c.taper)?;
         let positive = |field: Field, v: i64| -> Result<(), CycleError> {
             if !(1..=MAX_LENGTH).contains(&v) {
                 return Err(CycleError::OutOfRange { field, value: c.len(v) });

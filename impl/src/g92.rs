@@ -71,16 +71,7 @@ impl G92Cycle {
     /// [`CycleError::SteepFaceThread`] when its R exceeds its X travel.
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
-        coordinates_in_range(
-            c.units,
-            &[
-                (Field::StartX, c.start.x),
-                (Field::StartZ, c.start.z),
-                (Field::EndX, c.end.x),
-                (Field::EndZ, c.end.z),
-                (Field::Taper, c.taper),
-            ],
-        )?;
+        coordinates_in_range(c.units, c.start, c.end, c.taper)?;
         c.run_out.validate_words(c.units)?;
         if !(1..=999).contains(&c.starts) {
             return Err(CycleError::CountOutOfRange { field: Field::Starts, value: c.starts });
