@@ -86,6 +86,22 @@ pub enum Field {
     CornerR3,
     /// E(r4) of G75.1 block 2.
     CornerR4,
+    /// LinuxCNC G76 P: the thread pitch.
+    Pitch,
+    /// LinuxCNC G76 I: the thread peak offset from the drive line.
+    PeakOffset,
+    /// LinuxCNC G76 J: the initial cut depth.
+    InitialDepth,
+    /// LinuxCNC G76 K: the full thread depth.
+    FullDepth,
+    /// LinuxCNC G76 R: the depth degression.
+    Degression,
+    /// LinuxCNC G76 Q: the compound slide angle.
+    CompoundAngle,
+    /// LinuxCNC G76 E: the taper distance.
+    TaperDistance,
+    /// LinuxCNC G76 H: the spring passes.
+    SpringPasses,
 }
 
 impl Field {
@@ -131,6 +147,14 @@ impl Field {
             Field::CornerR2 => "B(r2) (outer corner at the far end)",
             Field::CornerR3 => "D(r3) (bottom corner at the start side)",
             Field::CornerR4 => "E(r4) (bottom corner at the far side)",
+            Field::Pitch => "P (thread pitch)",
+            Field::PeakOffset => "I (thread peak offset)",
+            Field::InitialDepth => "J (initial cut depth)",
+            Field::FullDepth => "K (full thread depth)",
+            Field::Degression => "R (depth degression)",
+            Field::CompoundAngle => "Q (compound slide angle)",
+            Field::TaperDistance => "E (taper distance)",
+            Field::SpringPasses => "H (spring passes)",
         }
     }
 }

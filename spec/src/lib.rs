@@ -59,11 +59,13 @@ pub mod g75;
 pub mod g76;
 pub mod g92;
 pub mod lex;
+pub mod linuxcnc;
 pub mod pass;
 pub mod pipeline;
 pub mod profile;
 pub mod reader;
 pub mod real;
+pub mod rs274;
 pub mod tan;
 
 pub use error::{ErrorKind, ProgramError};

@@ -624,10 +624,106 @@ fn trig_interval(func: TrigFn, k: u32, bits: u32) -> Option<Interval> {
     Some(Interval::outwards(&v.lo, &v.hi, q, bits))
 }
 
+/// Guard bits of the logarithm and exponential series beyond the requested
+/// precision: the exponential's argument is halved up to 6 times and the
+/// result squared back, which multiplies its relative error by at most
+/// 2^6, and the logarithm's error is multiplied by the exponent (below
+/// 2^5 for the values the models use).
+const POWER_GUARD_BITS: u32 = 64;
+
+/// `2 · atanh(num / den)` scaled by `2^q`, enclosed (`0 ≤ num/den ≤ 1/3`):
+/// `2 Σ z^(2k+1) / (2k+1)`, every term positive; the lower end sums
+/// floored terms, the upper end ceiled ones plus a bound of the remainder
+/// (after a term `t`, the rest is at most `t·z²/(1 − z²) ≤ t/8`).
+fn atanh2_scaled(num: &BigInt, den: &BigInt, q: u32) -> (BigInt, BigInt) {
+    let one = pow2(q);
+    let (n2, d2) = (num * num, den * den);
+    let mut t_lo = (&one * num).div_floor(den);
+    let mut t_hi = div_ceil(&(&one * num), den);
+    let (mut s_lo, mut s_hi) = (t_lo.clone(), t_hi.clone());
+    let mut k = 1_u32;
+    while t_hi > BigInt::one() {
+        t_lo = (&t_lo * &n2).div_floor(&d2);
+        t_hi = div_ceil(&(&t_hi * &n2), &d2);
+        let odd = BigInt::from(2 * k + 1);
+        s_lo += t_lo.div_floor(&odd);
+        s_hi += div_ceil(&t_hi, &odd);
+        k += 1;
+    }
+    // The remainder after the last term is at most t_hi/8 ≤ 1/8 unit.
+    s_hi += BigInt::one();
+    (s_lo * 2, s_hi * 2)
+}
+
+/// `ln m` scaled by `2^q`, enclosed, for an integer `m ≥ 1`:
+/// `e · ln 2 + ln(m / 2^e)` with `m / 2^e` in `[1, 2)`, each logarithm as
+/// `2 atanh((y − 1)/(y + 1))` (`ln 2 = 2 atanh(1/3)`).
+fn ln_scaled(m: u64, q: u32) -> (BigInt, BigInt) {
+    let e = 63 - m.leading_zeros();
+    let p = BigInt::one() << e;
+    let m = BigInt::from(m);
+    let (y_lo, y_hi) = atanh2_scaled(&(&m - &p), &(&m + &p), q);
+    let (l2_lo, l2_hi) = atanh2_scaled(&BigInt::one(), &BigInt::from(3), q);
+    (y_lo + l2_lo * e, y_hi + l2_hi * e)
+}
+
+/// `exp(y)` scaled by `2^q`, enclosed, for `y` enclosed by `[lo, hi]`
+/// (scaled by `2^q`, `0 ≤ lo ≤ hi < 2^(q+6)`): the argument is halved `h`
+/// times to below 1/2, the Taylor series summed (floored terms for the
+/// lower end; ceiled ones plus the remainder bound, at most the last term
+/// when the argument is below 1/2, for the upper end), and the result
+/// squared `h` times.
+fn exp_scaled(lo: &BigInt, hi: &BigInt, q: u32) -> (BigInt, BigInt) {
+    let one = pow2(q);
+    let half = pow2(q - 1);
+    let mut h = 0_u32;
+    while (hi >> h) >= half {
+        h += 1;
+    }
+    let (x_lo, x_hi) = (lo >> h, div_ceil(hi, &pow2(h)));
+    let series = |x: &BigInt, up: bool| -> BigInt {
+        let mut t = one.clone();
+        let mut sum = one.clone();
+        let mut k = 1_u32;
+        loop {
+            let den = &one * k;
+            t = if up { div_ceil(&(&t * x), &den) } else { (&t * x).div_floor(&den) };
+            if t.is_zero() {
+                return sum;
+            }
+            sum += &t;
+            if up && t <= BigInt::one() {
+                return sum + BigInt::one();
+            }
+            k += 1;
+        }
+    };
+    let (mut r_lo, mut r_hi) = (series(&x_lo, false), series(&x_hi, true));
+    for _ in 0..h {
+        r_lo = (&r_lo * &r_lo).div_floor(&one);
+        r_hi = div_ceil(&(&r_hi * &r_hi), &one);
+    }
+    (r_lo, r_hi)
+}
+
+/// The enclosure of `n^(a/b)` at `bits` fraction bits (`n ≥ 1`, `0 < a ≤
+/// b`): `exp(ln(n) · a / b)`, computed with [`POWER_GUARD_BITS`] more and
+/// rounded outwards.
+fn power_interval(n: u64, a: u32, b: u32, bits: u32) -> Interval {
+    let q = bits + POWER_GUARD_BITS;
+    let (l_lo, l_hi) = ln_scaled(n, q);
+    let (a, b) = (BigInt::from(a), BigInt::from(b));
+    let (y_lo, y_hi) = ((l_lo * &a).div_floor(&b), div_ceil(&(l_hi * &a), &b));
+    let (lo, hi) = exp_scaled(&y_lo.max(BigInt::zero()), &y_hi, q);
+    Interval::outwards(&lo, &hi, q, bits)
+}
+
 /// What a [`Real`] is made of.
 enum Op {
     Exact(Rational),
     Trig(TrigFn, u32),
+    /// `n^(a/b)`, irrational.
+    Power(u64, u32, u32),
     Add(Real, Real),
     Sub(Real, Real),
     Mul(Real, Real),
@@ -695,6 +791,35 @@ impl Real {
             Some(r) => Real::exact(r),
             None => Real::node(Op::Trig(func, k)),
         }
+    }
+
+    /// `n^(a/b)` for `n ≥ 1` and `0 < a ≤ b`: an exact integer when it is
+    /// one (`n = 1`, `a = b`, or an exact root `m` with `m^b = n^a`, tested
+    /// for `b ≤ 64`), otherwise enclosed through `exp(ln(n)·a/b)` as
+    /// narrowly as asked (the values of LinuxCNC's depth law `n^(1/R)`).
+    ///
+    /// # Panics
+    ///
+    /// When `n = 0`, `a = 0` or `a > b`.
+    #[must_use]
+    pub fn power(n: u64, a: u32, b: u32) -> Real {
+        assert!(n >= 1 && a >= 1 && a <= b, "power {n}^({a}/{b}) outside n >= 1, 0 < a <= b");
+        let g = a.gcd(&b);
+        let (a, b) = (a / g, b / g);
+        if n == 1 || a == b {
+            return Real::int(BigInt::from(n));
+        }
+        if b <= 64 {
+            // An exact root: m^b = n^a for the integer m nearest n^(a/b).
+            let estimate = power_interval(n, a, b, FIRST_PRECISION);
+            let m = estimate.lower().nearest();
+            if m.is_positive()
+                && num_traits::pow(m.clone(), b as usize) == num_traits::pow(BigInt::from(n), a as usize)
+            {
+                return Real::int(m);
+            }
+        }
+        Real::node(Op::Power(n, a, b))
     }
 
     /// `sin(k · 0.00005°)`, `0 ≤ k ≤ 1 800 000`.
@@ -767,6 +892,7 @@ impl Real {
         let v = match &self.0.op {
             Op::Exact(r) => Some(Interval::of_rational(r, bits)),
             Op::Trig(func, k) => trig_interval(*func, *k, bits),
+            Op::Power(n, a, b) => Some(power_interval(*n, *a, *b, bits)),
             Op::Add(a, b) => Some(a.enclose(bits)?.add(&b.enclose(bits)?)),
             Op::Sub(a, b) => Some(a.enclose(bits)?.sub(&b.enclose(bits)?)),
             Op::Mul(a, b) => Some(a.enclose(bits)?.mul(&b.enclose(bits)?)),

@@ -1,0 +1,144 @@
+//! The `linuxcnc` reference model against LinuxCNC's own interpreter.
+//!
+//! `data/lcnc-taper.canon` is what `rs274 -g data/lcnc-taper.ngc <
+//! /dev/null` printed (LinuxCNC 2.9.0~pre1, Debian's linuxcnc-uspace); it
+//! is the independent oracle of `taper_thread_matches_rs274`. The values
+//! in the other tests are worked by hand in their comments.
+
+use cycleref::linuxcnc::LinuxCncG76;
+use cycleref::{
+    IncrementSystem, InputUnit, Lead, LeadWord, Motion, Move, PassKind, Point, Role, Units, XMode,
+};
+use cycleref_spec::linuxcnc::{expand, taper_pitch};
+use cycleref_spec::real::Real;
+use cycleref_spec::rs274::{self, CanonMove};
+use rust_decimal::Decimal;
+
+const MM: Units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metric };
+
+/// `G0 X14 Z2` then `G76 P1.5 Z-20 I-1 J0.2 R1.5 K0.92 Q29.5 H1 E1 L3` in G8
+/// (data/lcnc-taper.ngc).
+fn taper_cycle() -> LinuxCncG76 {
+    LinuxCncG76 {
+        units: MM,
+        x_mode: XMode::Radius,
+        start: Point::new(140_000, 20_000),
+        end: Point::new(140_000, -200_000),
+        pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+        peak_offset: -10_000,
+        initial_depth: 2_000,
+        degression: 15_000,
+        full_depth: 9_200,
+        compound_angle: 295_000,
+        spring_passes: 1,
+        taper_distance: 10_000,
+        entry_taper: true,
+        exit_taper: true,
+        pass_limit: 1_000_000,
+    }
+}
+
+fn lead_decimal(l: Lead) -> Decimal {
+    Decimal::new(i64::try_from(l.mantissa).unwrap(), l.scale)
+}
+
+/// Our moves against rs274's, call by call: the same kind of motion, X
+/// (as a radius) and Z within one increment, the same pitch within 10⁻⁶.
+fn compare(ours: &[Move], canon: &[CanonMove], xf: i64, units: Units) -> Result<(), String> {
+    if ours.len() != canon.len() {
+        return Err(format!("{} moves against rs274's {}", ours.len(), canon.len()));
+    }
+    let inc = Decimal::new(1, units.decimals());
+    for (i, (m, c)) in ours.iter().zip(canon).enumerate() {
+        let x = Decimal::new(m.to.x, units.decimals()) / Decimal::from(xf);
+        let z = Decimal::new(m.to.z, units.decimals());
+        // rs274 prints four decimals: its own rounding adds half of its unit.
+        let tol = inc.max(Decimal::new(1, 4) / Decimal::from(2) + inc / Decimal::from(2));
+        if (x - c.x).abs() > tol || (z - c.z).abs() > tol {
+            return Err(format!(
+                "move {i}: ours X{x} Z{z}, rs274 X{} Z{} (output line {})",
+                c.x, c.z, c.line
+            ));
+        }
+        match (m.motion, c.rapid, c.pitch) {
+            (Motion::Rapid, true, None) => {}
+            (Motion::Thread { lead, .. }, false, Some(p)) => {
+                if (lead_decimal(lead) - p).abs() > Decimal::new(1, 6) {
+                    return Err(format!("move {i}: pitch {} against rs274's {p}", lead_decimal(lead)));
+                }
+            }
+            _ => return Err(format!("move {i}: {:?} against rs274's {c:?}", m.motion)),
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn taper_thread_matches_rs274() {
+    let canon = rs274::read(include_str!("data/lcnc-taper.canon")).unwrap();
+    // The first motion is the program's G0 X14 Z2, the last its G0 X20 Z5.
+    let cycle = &canon[1..canon.len() - 1];
+    let ours = expand(&taper_cycle()).unwrap();
+    compare(&ours, cycle, 1, MM).unwrap();
+    // 9 rough passes: 0.2·n^(2/3) < 0.92 ⇔ n < 4.6^1.5 = 9.866; then the
+    // full-depth pass and one spring pass: 11 passes of 6 moves (back, in,
+    // angled in, over, angled out, out), and the return.
+    assert_eq!(ours.len(), 11 * 6 + 1);
+    let rough = ours.iter().filter(|m| m.pass.is_some_and(|p| p.kind == PassKind::Rough)).count();
+    assert_eq!(rough, 9 * 6);
+}
+
+#[test]
+fn taper_pitch_is_p_times_hypot_over_e() {
+    // 1.5·√(1² + 0.92²)/1 = 1.5·1.358823… = 2.0382345… → 2.038235 (rs274
+    // prints 2.038235 too).
+    assert_eq!(taper_pitch(&taper_cycle()), Lead { word: LeadWord::F, mantissa: 2_038_235, scale: 6 });
+}
+
+#[test]
+fn straight_thread_by_hand() {
+    // G8, X0 = 10, Z0 = 1, Z-10, P1, I-0.5 J0.1 K0.3, R1, Q0, H0, no taper.
+    // Depths 0.1·n < 0.3: n = 1, 2 (n = 3 equals K: the loop stops,
+    // interp_convert.cc l.5776 `depth < end_depth`); then one pass at K.
+    // Pass at δ: back X = 10 + (0.3 − δ), in X = 10 − (0.5 + δ), Z fixed.
+    let c = LinuxCncG76 {
+        units: MM,
+        x_mode: XMode::Radius,
+        start: Point::new(100_000, 10_000),
+        end: Point::new(100_000, -100_000),
+        pitch: Lead { word: LeadWord::F, mantissa: 1, scale: 0 },
+        peak_offset: -5_000,
+        initial_depth: 1_000,
+        degression: 10_000,
+        full_depth: 3_000,
+        compound_angle: 0,
+        spring_passes: 0,
+        taper_distance: 0,
+        entry_taper: false,
+        exit_taper: false,
+        pass_limit: 1_000_000,
+    };
+    let ours = expand(&c).unwrap();
+    let pts: Vec<(i64, i64, Role)> = ours.iter().map(|m| (m.to.x, m.to.z, m.role)).collect();
+    let mut expected = Vec::new();
+    for (back, cut) in [(102_000, 94_000), (101_000, 93_000), (100_000, 92_000)] {
+        expected.push((back, 10_000, Role::Approach));
+        expected.push((cut, 10_000, Role::Approach));
+        expected.push((cut, -100_000, Role::Cut));
+        expected.push((back, -100_000, Role::Retract));
+    }
+    expected.push((100_000, -100_000, Role::Return));
+    assert_eq!(pts, expected);
+}
+
+#[test]
+fn power_values_from_tables() {
+    // ∛4 = 1.58740105196819947475…, ∛100 = 4.64158883361277889241…
+    // (published constants; to_decimal truncates), and exact roots.
+    assert_eq!(Real::power(2, 2, 3).to_decimal(20).unwrap(), "1.58740105196819947475");
+    assert_eq!(Real::power(10, 2, 3).to_decimal(20).unwrap(), "4.64158883361277889241");
+    assert!(Real::power(8, 2, 3).is_exact());
+    assert_eq!(Real::power(8, 2, 3).to_decimal(3).unwrap(), "4.000");
+    assert!(Real::power(9, 1, 2).is_exact());
+    assert!(!Real::power(10, 1, 2).is_exact());
+}
