@@ -1,0 +1,9 @@
+(PEERS straight: M20x1.5 external, gsk988 profile; P Q in mm)
+O0003;
+G99 G21;
+M03 S500;
+G00 X22 Z2;
+G76 P010060 Q0.05 R0;
+G76 X18.16 Z-20 R0 P0.92 Q0.3 F1.5;
+G00 X100;
+M30;
