@@ -3,7 +3,8 @@
 //! Debian's `linuxcnc-uspace`), whose canonical calls must match our moves
 //! call by call: the same motion (rapid or synchronised feed), X (as a
 //! radius) and Z within one increment plus rs274's own four-decimal
-//! printing, the same pitch within 10⁻⁶.
+//! printing, the same pitch within 10⁻⁶. H runs from -1 (no full-depth
+//! pass, as the interpreter reads H-1) to 3.
 //!
 //! The one other difference allowed is reading R-LCNC-TIE: where the
 //! exact depth of rough pass n equals K (`J·n^(1/R) = K`), LinuxCNC's
@@ -91,7 +92,8 @@ fn case(g: &mut Gen) -> (String, LinuxCncG76) {
         1 => 295_000,
         _ => i32::try_from(g.range(0, 450)).unwrap() * 1_000,
     };
-    let h = i32::try_from(g.range(0, 3)).unwrap();
+    // H-1 included: no pass at full depth (R-LCNC-WORDS).
+    let h = i32::try_from(g.range(-1, 3)).unwrap();
     let e = if g.coin() { 0 } else { s(g.range(1_000, 20_000)) };
     let l = g.range(0, 3);
     let sigma = if internal { 1 } else { -1 };
