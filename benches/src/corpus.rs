@@ -165,6 +165,7 @@ mod tests {
                 Item::G32(_) => g32 += 1,
                 Item::G75(_) => g75 += 1,
                 Item::G92(_) => panic!("the generated programs have no G92"),
+                Item::LinuxCncG76(_) => panic!("the generated programs have no LinuxCNC G76"),
                 Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
         }

@@ -467,6 +467,13 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
     let mut out = Vec::new();
     {
         match cycle {
+            Cycle::LinuxCnc(call) => {
+                return Err(format!(
+                    "{}: line {}: check does not compare LinuxCNC's G76 yet (issue 15); `cycleref expand \
+                     --profile linuxcnc` gives its moves",
+                    job.name, call.block.line
+                ))
+            }
             Cycle::G76(call) => {
                 let c = &call.cycle;
                 let f = i128::from(c.x_mode.factor());
@@ -658,6 +665,8 @@ impl<'j> OurSteps<'j> {
                         Cycle::G32(_) => RunningKind::G32,
                         Cycle::G75(_) => RunningKind::G75,
                         Cycle::G92(_) => RunningKind::G92,
+                        // Not reached: regions_of refuses it above.
+                        Cycle::LinuxCnc(_) => RunningKind::G76,
                     },
                     restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
                 });

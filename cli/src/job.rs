@@ -73,6 +73,8 @@ pub enum Profile {
     Gsk980,
     /// GSK 988TA.
     Gsk988,
+    /// LinuxCNC 2.9 (its one-block G76).
+    LinuxCnc,
 }
 
 /// What the command line says about the program and the machine. An
@@ -455,6 +457,7 @@ pub fn machine(opts: &Options) -> Result<Machine, Failure> {
         Profile::Fanuc => ProfileName::Fanuc,
         Profile::Gsk980 => ProfileName::Gsk980,
         Profile::Gsk988 => ProfileName::Gsk988,
+        Profile::LinuxCnc => ProfileName::LinuxCnc,
     });
     let mut machine = Machine::new(flag.unwrap_or(ProfileName::Gsk988));
     if let Some(p) = &opts.params {

@@ -183,6 +183,7 @@ impl CycleJson {
             Cycle::G76(c) => (Some(c.params_line), None, c.cycle.start),
             Cycle::G32(c) => (None, None, c.g32.start),
             Cycle::G92(c) => (None, None, c.cycle.start),
+            Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
             Cycle::G75(c) => {
                 (Some(Some(c.params_line)), Some(PointJson::new(c.cycle.from, u)), c.cycle.start)
             }

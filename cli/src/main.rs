@@ -148,6 +148,7 @@ impl Common {
                 ProfileArg::Fanuc => Profile::Fanuc,
                 ProfileArg::Gsk980 => Profile::Gsk980,
                 ProfileArg::Gsk988 => Profile::Gsk988,
+                ProfileArg::LinuxCnc => Profile::LinuxCnc,
             }),
             increment: self.increment.map(|i| match i {
                 Increment::IsB => IncrementSystem::IsB,
@@ -170,6 +171,9 @@ enum ProfileArg {
     Fanuc,
     Gsk980,
     Gsk988,
+    /// LinuxCNC 2.9's interpreter: G76 P Z I J R K Q H E L, G7/G8 (IS-C, radius X at start)
+    #[value(name = "linuxcnc")]
+    LinuxCnc,
 }
 
 #[derive(Clone, Copy, ValueEnum)]

@@ -11,10 +11,10 @@
 use std::cell::RefCell;
 use std::io::{self, Write};
 
-use cycleref::{Motion, Move, PathType, Point, Role, Units};
+use cycleref::{Motion, Move, PassKind, PathType, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, Restore};
+use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, Restore};
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, FIXED_BUF};
 use crate::job::{Failure, Job};
@@ -90,9 +90,46 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             }
             Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
             Item::G92(call) => nc_g92(out, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
+            Item::LinuxCncG76(call) => nc_linuxcnc(out, call, moves(job, Cycle::LinuxCnc(call))?)?,
         }
         Ok(())
     })
+}
+
+/// The NC blocks of one LinuxCNC G76, in LinuxCNC's words so that its
+/// interpreter reads them back: a heading, a comment before each pass,
+/// `G0 X Z` for a rapid and `G33 X Z K` for a synchronised move (K the
+/// distance per revolution along the move, reading R-LCNC-SYNC). X is in
+/// the X mode of the block (G7 diameter, G8 radius).
+fn nc_linuxcnc<W: Write>(out: &mut W, call: &LinuxCncCall<'_>, moves: Moves) -> io::Result<()> {
+    let u = call.cycle.units;
+    writeln!(out, "(G76 line {}: LinuxCNC threading cycle)", call.block.line)?;
+    let mut current = None;
+    for m in moves {
+        if let Some(p) = m.pass {
+            if current != Some((p.kind, p.number)) {
+                current = Some((p.kind, p.number));
+                let kind = if p.kind == PassKind::Rough { "pass" } else { "full depth" };
+                writeln!(out, "({kind} {})", p.number)?;
+            }
+        }
+        let Motion::Thread { lead, .. } = m.motion else {
+            // Rapids (LinuxCNC reads G00 as G0).
+            nc_move(out, &m, u, QUnit::Degrees { wrap: false })?;
+            continue;
+        };
+        let mut line = Line::new();
+        let l = &mut line;
+        xz(out, l, b"G33 ", m.to, u)?;
+        let mut buf = [0; FIXED_BUF];
+        let text = LeadText(lead).encode(&mut buf);
+        // The lead's text is "F…": K carries the same value.
+        l.push(out, b" K")?;
+        l.push(out, &text[1..])?;
+        l.push(out, b"\n")?;
+        l.flush(out)?;
+    }
+    Ok(())
 }
 
 /// The NC blocks of one G92 block: a heading, a comment before each start
@@ -408,6 +445,7 @@ pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
         .and_then(|()| table(summary.g75, groove_tables, &mut out))
         .and_then(|()| table(summary.g32, thread_table, &mut out))
         .and_then(|()| table(summary.g92, g92_table, &mut out))
+        .and_then(|()| table(summary.linuxcnc, linuxcnc_tables, &mut out))
         .and_then(|()| out.flush());
     written.map_err(|e| Failure::output(&e))
 }
@@ -443,6 +481,46 @@ fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                 Fixed::new(bn.x, u),
                 Fixed::new(bn.z, u)
             )?;
+        }
+        out.write_all(b"\n")
+    })
+}
+
+/// The passes of each LinuxCNC G76: one row per pass with its depth below
+/// the peak and its cut (radius), the X of the cut, and the Z where the
+/// pass starts and ends (both shifted by the compound angle, reading
+/// R-LCNC-PASS).
+fn linuxcnc_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    each_item(job, |item| {
+        let Item::LinuxCncG76(call) = &item else { return Ok(()) };
+        let u = call.cycle.units;
+        writeln!(out, "G76 (LinuxCNC) at line {} ({}):", call.block.line, job.name)?;
+        let heading = ["pass", "kind", "flank", "depth", "cut", "X", "Z from", "Z to"];
+        let [a, b, c, d, e, f, g, h] = heading;
+        writeln!(out, "{a:>6} {b:>6} {c:>6} {d:>12} {e:>12} {f:>14} {g:>14} {h:>14}")?;
+        // (pass, Z of its first move, X of its cut)
+        let mut open: Option<(cycleref::Pass, i64, i64)> = None;
+        for m in moves(job, Cycle::LinuxCnc(call))? {
+            let Some(p) = m.pass else { continue };
+            let entry = open.get_or_insert((p, m.to.z, m.to.x));
+            if m.role == Role::Cut {
+                entry.2 = m.to.x;
+            }
+            if m.role == Role::Retract {
+                writeln!(
+                    out,
+                    "{:>6} {:>6} {:>6} {:>12} {:>12} {:>14} {:>14} {:>14}",
+                    p.number,
+                    if p.kind == PassKind::Rough { "rough" } else { "full" },
+                    flank_name(p.flank),
+                    Fixed::new(p.depth, u),
+                    Fixed::new(p.cut, u),
+                    Fixed::new(entry.2, u),
+                    Fixed::new(entry.1, u),
+                    Fixed::new(m.to.z, u)
+                )?;
+                open = None;
+            }
         }
         out.write_all(b"\n")
     })

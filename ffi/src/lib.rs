@@ -306,6 +306,9 @@ impl CycleMoves {
             Cycle::G32(_) => CyclerefCycle::G32,
             Cycle::G75(_) => CyclerefCycle::G75,
             Cycle::G92(_) => CyclerefCycle::G92,
+            // LinuxCNC's G76 (the linuxcnc profile, which the C options do
+            // not select yet: issue 15) is a G76.
+            Cycle::LinuxCnc(_) => CyclerefCycle::G76,
         };
         Ok(CycleMoves { moves, cycle: kind, line: cycle.line(), decimals: cycle.units().decimals() })
     }

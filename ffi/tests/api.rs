@@ -84,6 +84,8 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
             cycleref_spec::Item::G92(c) => out.extend(cycleref::expand_g92(&c.cycle).unwrap().map(|m| {
                 CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G92, c.block.line)
             })),
+            // The C options cannot select the linuxcnc profile yet.
+            cycleref_spec::Item::LinuxCncG76(_) => panic!("no LinuxCNC program through the C interface"),
             // Named, not `_`: a new kind of item must be added here.
             cycleref_spec::Item::Source(_)
             | cycleref_spec::Item::G76Params(_)
@@ -688,6 +690,7 @@ fn pipeline_moves(program: &[u8], machine: &Machine) -> Vec<CyclerefMove> {
                 Cycle::G32(_) => CyclerefCycle::G32,
                 Cycle::G75(_) => CyclerefCycle::G75,
                 Cycle::G92(_) => CyclerefCycle::G92,
+                Cycle::LinuxCnc(_) => CyclerefCycle::G76,
             };
             let (decimals, line) = (cycle.units().decimals(), cycle.line());
             let ours: Vec<_> = expand(cycle, Engine::Impl).expect("expands").collect();

@@ -268,6 +268,8 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), (Failure, Option<Run
                 Cycle::G76(c) => (c.params_line, None, c.cycle.start),
                 Cycle::G32(c) => (None, None, c.g32.start),
                 Cycle::G92(c) => (None, None, c.cycle.start),
+                // Not selectable from Python yet (issue 15).
+                Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
                 Cycle::G75(c) => (Some(c.params_line), Some(c.cycle.from), c.cycle.start),
             };
             let moves = job.expand(cycle).map_err(|f| (f, None))?.collect();

@@ -17,7 +17,7 @@ use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, G92Moves, Move, Point, 
 
 use crate::error::ProgramError;
 use crate::profile::Machine;
-use crate::reader::{G32Call, G75Call, G76Call, G92Call, Item, Reader, Restore};
+use crate::reader::{G32Call, G75Call, G76Call, G92Call, Item, LinuxCncCall, Reader, Restore};
 
 /// Which model expands the cycles. Both give the same moves, move by move.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -42,6 +42,8 @@ pub enum Cycle<'r, 'a> {
     G75(&'r G75Call<'a>),
     /// A G92 thread-cutting cycle block.
     G92(&'r G92Call<'a>),
+    /// LinuxCNC's G76 (the `linuxcnc` profile).
+    LinuxCnc(&'r LinuxCncCall<'a>),
 }
 
 impl<'r, 'a> Cycle<'r, 'a> {
@@ -53,6 +55,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Item::G32(c) => Some(Cycle::G32(c)),
             Item::G75(c) => Some(Cycle::G75(c)),
             Item::G92(c) => Some(Cycle::G92(c)),
+            Item::LinuxCncG76(c) => Some(Cycle::LinuxCnc(c)),
             Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => None,
         }
     }
@@ -66,6 +69,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G32(_) => "G32",
             Cycle::G75(_) => "G75.1",
             Cycle::G92(_) => "G92",
+            Cycle::LinuxCnc(_) => "G76",
         }
     }
 
@@ -77,6 +81,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G32(c) => c.block.line,
             Cycle::G75(c) => c.block.line,
             Cycle::G92(c) => c.block.line,
+            Cycle::LinuxCnc(c) => c.block.line,
         }
     }
 
@@ -88,6 +93,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G32(c) => c.g32.units,
             Cycle::G75(c) => c.cycle.units,
             Cycle::G92(c) => c.cycle.units,
+            Cycle::LinuxCnc(c) => c.cycle.units,
         }
     }
 
@@ -99,6 +105,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G32(c) => c.g32.start,
             Cycle::G75(c) => c.cycle.from,
             Cycle::G92(c) => c.cycle.start,
+            Cycle::LinuxCnc(c) => c.cycle.start,
         }
     }
 
@@ -110,8 +117,11 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G76(c) => c.restore,
             Cycle::G75(c) => c.restore,
             // G32 and G92 are modal: the mode in force is theirs, and every
-            // G92 block is expanded (reading R-G92MODAL).
-            Cycle::G32(_) | Cycle::G92(_) => Restore::default(),
+            // G92 block is expanded (reading R-G92MODAL). LinuxCNC's G76 is
+            // modal too, but a later block that would repeat it is refused
+            // by the reader (its words are needed again), so the expansion's
+            // G0 is what the following blocks see.
+            Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => Restore::default(),
         }
     }
 }
@@ -178,6 +188,11 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         (Engine::Spec, Cycle::G32(c)) => Inner::Reference(crate::g32::expand(&c.g32)?.into_iter()),
         (Engine::Spec, Cycle::G75(c)) => Inner::Reference(crate::g75::expand(&c.cycle)?.into_iter()),
         (Engine::Spec, Cycle::G92(c)) => Inner::Reference(crate::g92::expand(&c.cycle)?.into_iter()),
+        // LinuxCNC's G76 has no fixed-point engine yet (issue 15): both
+        // engines run the exact reference, as README says.
+        (Engine::Impl | Engine::Spec, Cycle::LinuxCnc(c)) => {
+            Inner::Reference(crate::linuxcnc::expand(&c.cycle)?.into_iter())
+        }
     };
     Ok(Moves(inner))
 }
@@ -250,6 +265,8 @@ pub struct Summary {
     pub g75: usize,
     /// The number of G92 blocks.
     pub g92: usize,
+    /// The number of LinuxCNC G76 cycles.
+    pub linuxcnc: usize,
 }
 
 /// The first phase of a run (reading R-STREAM): reads every item of
@@ -276,15 +293,15 @@ pub fn validate(source: &[u8], machine: &Machine, engine: Engine) -> Result<Summ
 pub struct Validation {
     engine: Engine,
     items: usize,
-    /// Cycles by kind: G76, G32, G75.1, G92.
-    cycles: [usize; 4],
+    /// Cycles by kind: G76, G32, G75.1, G92, LinuxCNC G76.
+    cycles: [usize; 5],
 }
 
 impl Validation {
     /// Nothing checked yet; cycles will be expanded with `engine`.
     #[must_use]
     pub fn new(engine: Engine) -> Validation {
-        Validation { engine, items: 0, cycles: [0; 4] }
+        Validation { engine, items: 0, cycles: [0; 5] }
     }
 
     /// Checks the next item of the program.
@@ -300,6 +317,7 @@ impl Validation {
                 Cycle::G32(_) => 1,
                 Cycle::G75(_) => 2,
                 Cycle::G92(_) => 3,
+                Cycle::LinuxCnc(_) => 4,
             }] += 1;
             // Every alarm is raised before the first move: the moves are
             // not taken.
@@ -311,7 +329,16 @@ impl Validation {
     /// What was learnt, with the `units` the reader ended with.
     #[must_use]
     pub fn summary(&self, units: Units) -> Summary {
-        let [g76, g32, g75, g92] = self.cycles;
-        Summary { units, items: self.items, cycles: g76 + g32 + g75 + g92, g76, g32, g75, g92 }
+        let [g76, g32, g75, g92, linuxcnc] = self.cycles;
+        Summary {
+            units,
+            items: self.items,
+            cycles: g76 + g32 + g75 + g92 + linuxcnc,
+            g76,
+            g32,
+            g75,
+            g92,
+            linuxcnc,
+        }
     }
 }

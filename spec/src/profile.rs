@@ -26,6 +26,9 @@ pub enum ProfileName {
     Gsk980,
     /// GSK 988TA and the extended G76 of seed 000.
     Gsk988,
+    /// LinuxCNC 2.9's interpreter: the one-block `G76 P Z I J R K Q H E L`,
+    /// G7/G8 (issue 15; readings R-LCNC-* in `docs/INTERPRETATIONS.md`).
+    LinuxCnc,
 }
 
 impl FromStr for ProfileName {
@@ -35,7 +38,8 @@ impl FromStr for ProfileName {
             "fanuc" => Ok(ProfileName::Fanuc),
             "gsk980" | "gsk980tdi" => Ok(ProfileName::Gsk980),
             "gsk988" | "gsk988ta" => Ok(ProfileName::Gsk988),
-            _ => Err(format!("unknown profile `{s}` (expected fanuc, gsk980 or gsk988)")),
+            "linuxcnc" => Ok(ProfileName::LinuxCnc),
+            _ => Err(format!("unknown profile `{s}` (expected fanuc, gsk980, gsk988 or linuxcnc)")),
         }
     }
 }
@@ -46,6 +50,7 @@ impl fmt::Display for ProfileName {
             ProfileName::Fanuc => "fanuc",
             ProfileName::Gsk980 => "gsk980",
             ProfileName::Gsk988 => "gsk988",
+            ProfileName::LinuxCnc => "linuxcnc",
         })
     }
 }
@@ -131,11 +136,25 @@ pub enum QUnit {
     },
 }
 
+/// Which word set a profile's programs are written in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Dialect {
+    /// FANUC's and GSK's: the two-block G76, G32, G92, G78, G75.1, U and W
+    /// as incremental X and Z, diameter or radius X by setting.
+    Fanuc,
+    /// LinuxCNC's: the one-block G76 (`P Z I J R K Q H E L`), G7/G8 to
+    /// switch diameter and radius X within the program; U and W are axes
+    /// of their own, not incremental X and Z; no machine parameters.
+    LinuxCnc,
+}
+
 /// The data that distinguishes one control from another.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Profile {
     /// The profile's name.
     pub name: ProfileName,
+    /// The word set of its programs.
+    pub dialect: Dialect,
     /// Addresses allowed in G76 block 1 besides `G`, `N`, `P`, `Q`, `R`.
     pub block1_extra: &'static str,
     /// Addresses allowed in G76 block 2 besides `G`, `N`, `X`, `Z`, `U`,
@@ -221,6 +240,7 @@ impl Profile {
         match name {
             ProfileName::Fanuc => Profile {
                 name,
+                dialect: Dialect::Fanuc,
                 block1_extra: "",
                 block2_extra: "",
                 p_split: PSplit::WholeOnly,
@@ -247,6 +267,7 @@ impl Profile {
             },
             ProfileName::Gsk980 => Profile {
                 name,
+                dialect: Dialect::Fanuc,
                 block1_extra: "JK",
                 block2_extra: "",
                 p_split: PSplit::Partial,
@@ -281,6 +302,7 @@ impl Profile {
             },
             ProfileName::Gsk988 => Profile {
                 name,
+                dialect: Dialect::Fanuc,
                 block1_extra: "DLE",
                 block2_extra: "JK",
                 p_split: PSplit::WholeOnly,
@@ -319,6 +341,37 @@ impl Profile {
                     thread_mode: Some("5129"),
                 },
             },
+            // LinuxCNC has none of the FANUC-style cycles and no machine
+            // parameters for G76: the reader refuses those codes on this
+            // profile, so the fields below are never read (the G76 of
+            // LinuxCNC is read by its own front end).
+            ProfileName::LinuxCnc => Profile {
+                name,
+                dialect: Dialect::LinuxCnc,
+                block1_extra: "",
+                block2_extra: "",
+                p_split: PSplit::WholeOnly,
+                min_finishing_passes: 0,
+                bare_length_is_increments: false,
+                run_out: RunOutRules::ChamferOnly,
+                jk_modal: false,
+                g32_rules: G32Rules::NoRunOut,
+                g75_1: false,
+                g92_extra: "",
+                g92_max_starts: 1,
+                g78: None,
+                max_depth_increments: 999_999_999,
+                params: ParamNumbers {
+                    finishing_passes: "",
+                    chamfer: "",
+                    chamfer_angle: None,
+                    tool_angle: "",
+                    min_cut: "",
+                    finishing_allowance: "",
+                    pq_unit: None,
+                    thread_mode: None,
+                },
+            },
         }
     }
 
@@ -328,6 +381,10 @@ impl Profile {
     pub fn default_params(&self) -> BTreeMap<String, ParamValue> {
         let p = &self.params;
         let mut m = BTreeMap::new();
+        if self.dialect == Dialect::LinuxCnc {
+            // No machine parameter changes what LinuxCNC's G76 does.
+            return m;
+        }
         m.insert(p.finishing_passes.to_string(), ParamValue::Int(1));
         m.insert(p.chamfer.to_string(), ParamValue::Int(0));
         if let Some(n) = p.chamfer_angle {
@@ -365,6 +422,8 @@ impl Profile {
                 }
             }
             ProfileName::Gsk988 => QUnit::Degrees { wrap: true },
+            // Never asked: G32 is refused on the linuxcnc profile.
+            ProfileName::LinuxCnc => QUnit::Degrees { wrap: false },
         }
     }
 
@@ -392,6 +451,8 @@ impl Profile {
                     PqUnit::Increments
                 }
             }
+            // LinuxCNC's G76 words are lengths.
+            ProfileName::LinuxCnc => PqUnit::Length,
         }
     }
 }
@@ -427,16 +488,19 @@ pub struct Machine {
 
 impl Machine {
     /// The machine with the built-in defaults of `profile`: IS-B, metric,
-    /// diameter X, no calculator-type input.
+    /// diameter X, no calculator-type input; for `linuxcnc`, IS-C (0.0001
+    /// mm, 0.00001 inch: the four decimals `rs274` prints) and radius X
+    /// (LinuxCNC starts in G8).
     #[must_use]
     pub fn new(profile: ProfileName) -> Machine {
         let profile = Profile::get(profile);
         let params = profile.default_params();
+        let linuxcnc = profile.dialect == Dialect::LinuxCnc;
         Machine {
             profile,
-            increment: IncrementSystem::IsB,
+            increment: if linuxcnc { IncrementSystem::IsC } else { IncrementSystem::IsB },
             unit: InputUnit::Metric,
-            x_mode: XMode::Diameter,
+            x_mode: if linuxcnc { XMode::Radius } else { XMode::Diameter },
             calculator_input: false,
             pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
             params,
@@ -507,8 +571,10 @@ impl Machine {
         if let Some(v) = table.get("profile") {
             let name: ProfileName = v.as_str().ok_or("`profile` must be a string")?.parse()?;
             if name != self.profile.name && !keep_profile {
-                self.profile = Profile::get(name);
-                self.params = self.profile.default_params();
+                // The new profile's defaults, then the file's other keys.
+                let pass_limit = self.pass_limit;
+                *self = Machine::new(name);
+                self.pass_limit = pass_limit;
             }
         }
         for (key, value) in &table {

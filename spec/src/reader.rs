@@ -12,14 +12,17 @@ use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
 use cycleref::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use cycleref::g92::G92Cycle;
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
+use cycleref::linuxcnc::LinuxCncG76;
 use cycleref::units::{Point, MAX_LENGTH};
-use cycleref::{InputUnit, Units};
+use cycleref::{InputUnit, Units, XMode};
 use rust_decimal::Decimal;
 
 use crate::error::ErrorKind::NotInIncrements;
 use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{Block, Lexer, Position, Word};
-use crate::profile::{G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
+use crate::profile::{Dialect, G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
+
+mod linuxcnc;
 
 /// What the reader found in a program, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -39,6 +42,25 @@ pub enum Item<'a> {
     /// A G92 thread-cutting cycle block (the first, or a repeat in G92
     /// mode): a cycle to expand.
     G92(G92Call<'a>),
+    /// A LinuxCNC G76 block (the `linuxcnc` profile): a cycle to expand.
+    LinuxCncG76(LinuxCncCall<'a>),
+}
+
+/// One LinuxCNC G76 block of a program.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LinuxCncCall<'a> {
+    /// The block.
+    pub block: Block<'a>,
+    /// The resolved cycle.
+    pub cycle: LinuxCncG76,
+}
+
+impl LinuxCncCall<'_> {
+    /// The call with its block [detached](Block::detached) from the text.
+    #[must_use]
+    pub fn detached(&self) -> LinuxCncCall<'static> {
+        LinuxCncCall { block: self.block.detached(), cycle: self.cycle }
+    }
 }
 
 /// One G92 block of a program.
@@ -291,6 +313,12 @@ struct State<'m> {
     g75_pending: Option<G75Block1>,
     /// G92's modal values (reading R-G92MODAL).
     g92: G92Modal,
+    /// The X mode in force (the machine's, switched by G7/G8 on the
+    /// linuxcnc profile).
+    x_mode: XMode,
+    /// LinuxCNC: G76 is the motion mode in force (a later block with X or
+    /// Z runs it again and needs its words again, as the interpreter does).
+    lcnc_g76: bool,
 }
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
@@ -474,6 +502,8 @@ impl<'m> LineReader<'m> {
                 thread_run: None,
                 g75_pending: None,
                 g92: G92Modal::default(),
+                x_mode: machine.x_mode,
+                lcnc_g76: false,
             },
             at: None,
             line: 0,
@@ -764,6 +794,9 @@ impl State<'_> {
     }
 
     fn block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+        if self.machine.profile.dialect == Dialect::LinuxCnc {
+            return self.linuxcnc_block(block);
+        }
         // G codes of the block.
         let mut g76: Option<Multipass> = None;
         let mut g75 = false;

@@ -26,6 +26,7 @@ use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, Motion, Move, Point, 
 use cycleref_spec::linuxcnc::expand;
 use cycleref_spec::real::Real;
 use cycleref_spec::rs274::{self, CanonMove};
+use cycleref_spec::{Item, Machine, ProfileName};
 use rust_decimal::Decimal;
 
 /// A small deterministic generator (xorshift64*), so a failure names a
@@ -67,12 +68,16 @@ fn case(g: &mut Gen) -> (String, LinuxCncG76) {
     let z0 = s(g.range(-20_000, 50_000));
     let length = s(g.range(20_000, 400_000));
     let z_end = if towards_plus { z0 + length } else { z0 - length };
-    let pitch_hundredths = g.range(25, 400);
-    let pitch = if inch {
-        Lead { word: LeadWord::F, mantissa: u64::try_from(pitch_hundredths).unwrap(), scale: 3 }
-    } else {
-        Lead { word: LeadWord::F, mantissa: u64::try_from(pitch_hundredths).unwrap(), scale: 2 }
+    let mut pitch = Lead {
+        word: LeadWord::F,
+        mantissa: u64::try_from(g.range(25, 400)).unwrap(),
+        scale: if inch { 3 } else { 2 },
     };
+    // The fewest decimals, as the reader keeps a pitch.
+    while pitch.mantissa % 10 == 0 {
+        pitch.mantissa /= 10;
+        pitch.scale -= 1;
+    }
     let i_abs = s(g.range(200, 10_000)) * xf;
     let j = s(g.range(100, 3_000)) * xf;
     // R: 1, 1.5, 2, or two decimals in 1..3.
@@ -198,6 +203,18 @@ fn compare(ours: &[Move], canon: &[CanonMove], c: &LinuxCncG76) -> Result<(), St
 /// Compares one program with rs274; true when it needed the R-LCNC-TIE
 /// allowance. `what` names the case in a failure.
 fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
+    // The program reader's linuxcnc profile reads the words as the cycle.
+    let read = cycleref_spec::read(program, &Machine::new(ProfileName::LinuxCnc))
+        .unwrap_or_else(|e| panic!("{what}: the reader refused it: {e}\n{program}"));
+    let calls: Vec<&LinuxCncG76> = read
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::LinuxCncG76(c) => Some(&c.cycle),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(calls, [cycle], "{what}: the reader's cycle\n{program}");
     let ours = expand(cycle).unwrap_or_else(|e| panic!("{what} refused: {e}\n{program}"));
     let out = rs274(program);
     let canon = rs274::read(&out).unwrap();

@@ -296,6 +296,12 @@ pub fn run(
                 Item::G32(call) => threads.push((call.detached(), moves)),
                 Item::G92(call) => g92s.push((call.detached(), moves)),
                 Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
+                Item::LinuxCncG76(call) => {
+                    return Err(crate::Failure::msg(format!(
+                        "{}: line {}: plot does not draw LinuxCNC's G76 yet (issue 15)",
+                        job.name, call.block.line
+                    )))
+                }
                 Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
             Ok(())

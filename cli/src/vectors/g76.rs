@@ -208,7 +208,8 @@ fn random_jk(rng: &mut Rng, ctx: &Ctx, g: &mut G76) {
         _ => vec![format!("J{}", ctx.num(j)), format!("K{}", ctx.num(k))],
     };
     match ctx.profile {
-        ProfileName::Fanuc => {}
+        // LinuxCnc: never drawn (the vectors draw FANUC and GSK profiles).
+        ProfileName::Fanuc | ProfileName::LinuxCnc => {}
         ProfileName::Gsk980 => g.extra1.extend(words),
         ProfileName::Gsk988 => g.extra2.extend(words),
     }

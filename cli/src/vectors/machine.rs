@@ -123,7 +123,8 @@ impl Ctx {
     /// The state bit of the P/Q unit (182.7 or 3401#6).
     fn pq_bit(&self) -> i64 {
         let key = match self.profile {
-            ProfileName::Fanuc => return 0,
+            // LinuxCnc: never drawn (the vectors draw FANUC and GSK profiles).
+            ProfileName::Fanuc | ProfileName::LinuxCnc => return 0,
             ProfileName::Gsk980 => "182.7",
             ProfileName::Gsk988 => "3401.6",
         };
@@ -136,7 +137,7 @@ impl Ctx {
     /// Whether P(k), Q(Δd) and Q(Δdmin) are written in increments.
     pub(super) fn pq_in_increments(&self) -> bool {
         match self.profile {
-            ProfileName::Fanuc => true,
+            ProfileName::Fanuc | ProfileName::LinuxCnc => true,
             ProfileName::Gsk980 => self.pq_bit() == 0,
             ProfileName::Gsk988 => self.pq_bit() == 1,
         }
@@ -178,7 +179,7 @@ impl Ctx {
     /// The Q of G32 for `millidegrees`, in the profile's unit.
     pub(super) fn q(&self, millidegrees: i64) -> String {
         let degrees = match self.profile {
-            ProfileName::Fanuc => false,
+            ProfileName::Fanuc | ProfileName::LinuxCnc => false,
             ProfileName::Gsk980 => self.pq_bit() == 1,
             ProfileName::Gsk988 => true,
         };

@@ -446,6 +446,8 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                     Cycle::G32(call) => g32::tags(call, &moves, &mut tags),
                     Cycle::G75(call) => g75::tags(call, &moves, &mut tags),
                     Cycle::G92(call) => g92::tags(call, &moves, &mut tags),
+                    // Not drawn yet: the vectors draw FANUC and GSK programs.
+                    Cycle::LinuxCnc(_) => {}
                 }
                 count += moves.len();
                 let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;

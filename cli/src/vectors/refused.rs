@@ -120,7 +120,8 @@ fn run_out_long(rng: &mut Rng) -> Draft {
     let profile = any_profile(rng);
     let (ctx, mut t, mut g) = base(profile, rng);
     match profile {
-        ProfileName::Fanuc => {
+        // LinuxCnc: never drawn (any_profile draws FANUC and GSK profiles).
+        ProfileName::Fanuc | ProfileName::LinuxCnc => {
             // The chamfer r × 0.1 × lead beyond a short thread.
             let dir = if t.d.1 < t.a.1 { -1 } else { 1 };
             t.w = ctx.mm(rng.range(3000, 6000));
@@ -224,7 +225,8 @@ fn out_of_range(rng: &mut Rng) -> Draft {
                 ("m = 0 (01..99)", 6),
             ]);
         }
-        ProfileName::Fanuc => variants.push(("m = 0 (01..99)", 6)),
+        // LinuxCnc: never drawn (any_profile draws FANUC and GSK profiles).
+        ProfileName::Fanuc | ProfileName::LinuxCnc => variants.push(("m = 0 (01..99)", 6)),
         ProfileName::Gsk980 => variants.push(("negative K in block 1", 7)),
     }
     let (what, v) = rng.pick(&variants);
@@ -320,7 +322,8 @@ fn address(rng: &mut Rng) -> Draft {
     let one = ctx.num(ctx.mm(1000));
     let mut g32_word = None;
     let what = match profile {
-        ProfileName::Fanuc => match rng.range(0, 3) {
+        // LinuxCnc: never drawn (any_profile draws FANUC and GSK profiles).
+        ProfileName::Fanuc | ProfileName::LinuxCnc => match rng.range(0, 3) {
             0 => {
                 g.extra2.push(format!("J{one}"));
                 "J in FANUC G76 block 2"

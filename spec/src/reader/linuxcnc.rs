@@ -1,0 +1,328 @@
+//! The reader's front end for the `linuxcnc` profile: LinuxCNC's word set
+//! (`G76 P Z I J R K Q H E L`, G7/G8), with the interpreter's conditions
+//! as errors in its own words beside ours (readings R-LCNC-* in
+//! `docs/INTERPRETATIONS.md`). The modal state, the lengths and the
+//! spindle are the reader's one home; only the words differ.
+
+use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
+use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE, MAX_DEGRESSION, RIGHT_ANGLE};
+use cycleref::units::{InputUnit, Point, XMode};
+use rust_decimal::Decimal;
+
+use super::{err, Item, LinuxCncCall, MotionMode, State};
+use crate::error::{ErrorKind, ProgramError};
+use crate::lex::{Block, Word};
+
+/// The G codes this front end reads (anything else is refused by name).
+const KNOWN: &str = "G0-G4, G7, G8, G18, G20, G21, G40, G54-G59, G61, G64, G76, G80, G90, G94, G95, G96, G97";
+
+/// LinuxCNC's own text of an error, beside ours.
+const P_MISSING: &str = "LinuxCNC: \"P word missing with G76\"";
+const IJK_MISSING: &str = "LinuxCNC: \"I J or K words missing with G76\"";
+
+impl State<'_> {
+    /// One block of a LinuxCNC program.
+    pub(super) fn linuxcnc_block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+        let mut motion = None;
+        let mut g76 = false;
+        let mut mode = None;
+        for w in block.all('G') {
+            let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
+            let whole = w.number().integer().filter(|_| code.fract().is_zero());
+            match whole {
+                Some(0) => motion = Some(MotionMode::G00),
+                Some(1) => motion = Some(MotionMode::G01),
+                Some(2) => motion = Some(MotionMode::G02),
+                Some(3) => motion = Some(MotionMode::G03),
+                Some(76) => g76 = true,
+                Some(7) => mode = Some(XMode::Diameter),
+                Some(8) => mode = Some(XMode::Radius),
+                Some(20 | 21) => {
+                    let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
+                    if unit != self.units.unit {
+                        // Reading R-UNITS.
+                        if self.moved || self.x.is_some() || self.z.is_some() {
+                            return Err(err(&block, Some(w), ErrorKind::UnitChangeAfterMotion));
+                        }
+                        self.units.unit = unit;
+                    }
+                }
+                Some(4 | 18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
+                Some(33) => {
+                    return Err(err(
+                        &block,
+                        Some(w),
+                        ErrorKind::Unsupported(
+                            "G33 on the linuxcnc profile (not modelled yet: issue 15)".into(),
+                        ),
+                    ))
+                }
+                _ => {
+                    return Err(err(
+                        &block,
+                        Some(w),
+                        ErrorKind::Unsupported(format!("G{code} (the linuxcnc profile reads {KNOWN})")),
+                    ))
+                }
+            }
+        }
+        for w in &block.words {
+            if matches!(w.letter, 'U' | 'W' | 'Y' | 'A' | 'B' | 'C' | 'V') {
+                return Err(err(
+                    &block,
+                    Some(w),
+                    ErrorKind::Unsupported(format!(
+                        "{} (an axis of its own in LinuxCNC, not incremental X or Z; the reader models the X \
+                         and Z of a lathe)",
+                        w.letter
+                    )),
+                ));
+            }
+        }
+        for w in block.all('M') {
+            match w.number().integer() {
+                Some(3 | 4) => self.spindle_on = true,
+                Some(5) => self.spindle_on = false,
+                _ => {}
+            }
+        }
+        if let Some(m) = mode {
+            if g76 && m != self.x_mode {
+                // Reading R-LCNC-G7.
+                return Err(err(
+                    &block,
+                    None,
+                    ErrorKind::Unsupported(
+                        "a G7/G8 that changes the X mode in the G76 block (LinuxCNC then scales I, J and K \
+                         twice, interp_convert.cc l.2773-2777 and l.5724-5728: program G7/G8 in a block of \
+                         its own)"
+                            .into(),
+                    ),
+                ));
+            }
+            self.switch_x_mode(&block, m)?;
+        }
+        if g76 && motion.is_some() {
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Unsupported("two motion G codes in one block (G76 and G0-G3)".into()),
+            ));
+        }
+        if let Some(m) = motion {
+            self.motion = m;
+            self.lcnc_g76 = false;
+        }
+        if g76 {
+            self.lcnc_g76 = true;
+        }
+        let axes = block.has('X') || block.has('Z');
+        if g76 || (self.lcnc_g76 && axes) {
+            return self.linuxcnc_g76(block).map(Item::LinuxCncG76);
+        }
+        if axes && !block.all('G').any(|w| w.number().integer() == Some(4)) {
+            self.x = self.axis(&block, block.get('X')?, None, self.x)?;
+            self.z = self.axis(&block, block.get('Z')?, None, self.z)?;
+            self.moved = true;
+        }
+        Ok(Item::Source(block))
+    }
+
+    /// G7/G8: the position kept in the old mode is converted (a radius
+    /// doubles; a diameter halves, and must be a whole number of
+    /// increments as a radius).
+    fn switch_x_mode(&mut self, block: &Block<'_>, to: XMode) -> Result<(), ProgramError> {
+        if to == self.x_mode {
+            return Ok(());
+        }
+        if let Some(x) = self.x {
+            self.x = Some(match to {
+                XMode::Diameter => x * 2,
+                XMode::Radius if x % 2 == 0 => x / 2,
+                XMode::Radius => {
+                    return Err(err(
+                        block,
+                        None,
+                        ErrorKind::NotInIncrements {
+                            increment: "the X position as a radius after G8 (half of an odd diameter)".into(),
+                        },
+                    ))
+                }
+            });
+        }
+        self.x_mode = to;
+        Ok(())
+    }
+
+    /// A decimal word with at most `scale` decimals, as `mantissa`, `scale`.
+    fn fixed(block: &Block<'_>, w: &Word<'_>, scale: u32, range: &str) -> Result<i64, ProgramError> {
+        let out = || err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+        let d = w.number().decimal().ok_or_else(out)?;
+        let scaled = d.checked_mul(Decimal::from(10_i64.pow(scale))).ok_or_else(out)?;
+        if !scaled.fract().is_zero() {
+            return Err(err(
+                block,
+                Some(w),
+                ErrorKind::NotInIncrements { increment: format!("{} of its unit", Decimal::new(1, scale)) },
+            ));
+        }
+        i64::try_from(scaled).map_err(|_| out())
+    }
+
+    /// A whole-number word (LinuxCNC's integer words H and L).
+    fn whole(block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
+        let d = w.number().decimal().filter(|d| d.fract().is_zero());
+        d.and_then(|d| i64::try_from(d).ok())
+            .ok_or_else(|| err(block, Some(w), ErrorKind::OutOfRange { range: "a whole number".into() }))
+    }
+
+    /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle.
+    fn linuxcnc_g76<'a>(&mut self, block: Block<'a>) -> Result<LinuxCncCall<'a>, ProgramError> {
+        self.check_addresses(&block, "G76", "GXZPIJRKQHELMSTF", "")?;
+        // convert_motion: the spindle must turn (M3 or M4; its speed may be
+        // 0, as LinuxCNC does not check it).
+        if !self.spindle_on {
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Missing {
+                    what: "M3 or M4 (a turning spindle)",
+                    rule: "LinuxCNC: \"Chosen spindle (0) not turning in G76\"",
+                },
+            ));
+        }
+        let (Some(x0), Some(z0)) = (self.x, self.z) else {
+            return Err(err(&block, None, ErrorKind::PositionUnknown));
+        };
+        let p = block.get('P')?.ok_or_else(|| {
+            err(&block, None, ErrorKind::Missing { what: "P (thread pitch)", rule: P_MISSING })
+        })?;
+        let (Some(i), Some(j), Some(k)) = (block.get('I')?, block.get('J')?, block.get('K')?) else {
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Missing {
+                    what: "I, J and K (peak offset, first depth, full depth)",
+                    rule: IJK_MISSING,
+                },
+            ));
+        };
+        // P: the pitch, > 0 (the interpreter accepts any P but -1, its
+        // "missing" value; a pitch of 0 or below cuts no thread: refused).
+        let mut scale = MAX_LEAD_SCALE;
+        let mantissa = Self::fixed(&block, p, scale, "P > 0 with at most 6 decimals")?;
+        let mut mantissa = u64::try_from(mantissa)
+            .ok()
+            .filter(|m| *m > 0)
+            .ok_or_else(|| err(&block, Some(p), ErrorKind::OutOfRange { range: "P > 0".into() }))?;
+        // The fewest decimals that hold it (P1.5 is 15 tenths).
+        while scale > 0 && mantissa % 10 == 0 {
+            mantissa /= 10;
+            scale -= 1;
+        }
+        let pitch = Lead { word: LeadWord::F, mantissa, scale };
+        let end_x = match block.get('X')? {
+            Some(w) => self.length(&block, w)?,
+            None => x0,
+        };
+        let end_z = match block.get('Z')? {
+            Some(w) => self.length(&block, w)?,
+            None => z0,
+        };
+        let peak_offset = self.length(&block, i)?;
+        let initial_depth = self.length(&block, j)?;
+        let full_depth = self.length(&block, k)?;
+        // R: below 1 or absent, 1 (R-LCNC-WORDS, l.5748).
+        let degression = match block.get('R')? {
+            Some(w) => {
+                let v = Self::fixed(&block, w, 4, "R with at most 4 decimals")?;
+                let one = i64::from(DEGRESSION_ONE);
+                if v > i64::from(MAX_DEGRESSION) {
+                    return Err(err(&block, Some(w), ErrorKind::OutOfRange { range: "R <= 100".into() }));
+                }
+                u32::try_from(v.max(one)).unwrap_or(DEGRESSION_ONE)
+            }
+            None => DEGRESSION_ONE,
+        };
+        // Q: absent or -1 is 0 (l.5739); |Q| < 90°.
+        let compound_angle = match block.get('Q')? {
+            Some(w) => {
+                let v = Self::fixed(&block, w, 4, "Q in degrees with at most 4 decimals")?;
+                if v == -10_000 {
+                    0
+                } else {
+                    i32::try_from(v)
+                        .ok()
+                        .filter(|v| v.unsigned_abs() < RIGHT_ANGLE.unsigned_abs())
+                        .ok_or_else(|| {
+                            err(
+                                &block,
+                                Some(w),
+                                ErrorKind::OutOfRange { range: "-90 < Q < 90 degrees".into() },
+                            )
+                        })?
+                }
+            }
+            None => 0,
+        };
+        // H: whole, >= -1 (read_h: "Negative H word used" below -1).
+        let spring_passes = match block.get('H')? {
+            Some(w) => {
+                let v = Self::whole(&block, w)?;
+                i32::try_from(v).ok().filter(|v| *v >= -1 && *v <= 999_999).ok_or_else(|| {
+                    err(
+                        &block,
+                        Some(w),
+                        ErrorKind::OutOfRange {
+                            range: "-1..999999 (LinuxCNC: \"Negative H word used\")".into(),
+                        },
+                    )
+                })?
+            }
+            None => 0,
+        };
+        // E: a length, below 0 read as 0 (l.5755).
+        let taper_distance = match block.get('E')? {
+            Some(w) => self.length(&block, w)?.max(0),
+            None => 0,
+        };
+        // L: whole, >= 0 (read_l: "Negative L word used"); bits 1 and 2.
+        let taper_ends = match block.get('L')? {
+            Some(w) => {
+                let v = Self::whole(&block, w)?;
+                if v < 0 {
+                    return Err(err(
+                        &block,
+                        Some(w),
+                        ErrorKind::OutOfRange { range: "L >= 0 (LinuxCNC: \"Negative L word used\")".into() },
+                    ));
+                }
+                v
+            }
+            None => 0,
+        };
+        let cycle = LinuxCncG76 {
+            units: self.units,
+            x_mode: self.x_mode,
+            start: Point::new(x0, z0),
+            end: Point::new(end_x, end_z),
+            pitch,
+            peak_offset,
+            initial_depth,
+            degression,
+            full_depth,
+            compound_angle,
+            spring_passes,
+            taper_distance,
+            entry_taper: taper_ends & 1 != 0,
+            exit_taper: taper_ends & 2 != 0,
+            pass_limit: self.machine.pass_limit,
+        };
+        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        // l.5791-5794: the tool ends at the block's X Z.
+        self.x = Some(end_x);
+        self.z = Some(end_z);
+        self.moved = true;
+        Ok(LinuxCncCall { block, cycle })
+    }
+}
