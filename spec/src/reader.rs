@@ -830,16 +830,8 @@ impl State<'_> {
                     }
                     g76 = Some(Multipass::G78);
                 }
-                Some(20 | 21) => {
-                    let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
-                    if unit != self.units.unit {
-                        // Reading R-UNITS.
-                        if self.moved || self.x.is_some() || self.z.is_some() {
-                            return Err(err(&block, Some(w), ErrorKind::UnitChangeAfterMotion));
-                        }
-                        self.units.unit = unit;
-                    }
-                }
+                Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
+                Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
                 None if Decimal::from_str_exact("75.1").ok() == w.number().decimal() => {
                     if !self.machine.profile.g75_1 {
@@ -985,6 +977,18 @@ impl State<'_> {
             self.moved = true;
         }
         Ok(Item::Source(block))
+    }
+
+    /// G20/G21 (reading R-UNITS): the unit may change only before the
+    /// first motion.
+    fn set_unit(&mut self, block: &Block<'_>, w: &Word<'_>, unit: InputUnit) -> Result<(), ProgramError> {
+        if unit != self.units.unit {
+            if self.moved || self.x.is_some() || self.z.is_some() {
+                return Err(err(block, Some(w), ErrorKind::UnitChangeAfterMotion));
+            }
+            self.units.unit = unit;
+        }
+        Ok(())
     }
 
     fn axis(

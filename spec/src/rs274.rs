@@ -17,6 +17,7 @@
 //! G7), Z in the same unit; the pitch has six decimals. Every other call
 //! is skipped. Values are kept as the exact decimals printed.
 
+use cycleref::{Motion, Move, Units, XMode};
 use rust_decimal::Decimal;
 
 /// One motion of `rs274`'s canonical output.
@@ -125,4 +126,48 @@ pub fn read(text: &str) -> Result<Vec<CanonMove>, CanonError> {
         }
     }
     Ok(out)
+}
+
+/// Our moves against `rs274`'s motions, call by call: the same kind
+/// (rapid, or feed synchronised at a pitch), X as a radius (ours divided by
+/// 2 in diameter mode) and Z within one increment of `units` plus half of
+/// rs274's printed unit (10⁻⁴), the pitch within 10⁻⁶ (the lead of every
+/// synchronised move, reading R-LCNC-SYNC).
+///
+/// # Errors
+///
+/// The first difference, named by the move's index and rs274's output
+/// line.
+pub fn compare(ours: &[Move], canon: &[CanonMove], units: Units, x_mode: XMode) -> Result<(), String> {
+    if ours.len() != canon.len() {
+        return Err(format!("{} moves against rs274's {}", ours.len(), canon.len()));
+    }
+    let dec = units.decimals();
+    let inc = Decimal::new(1, dec);
+    let tol = inc + Decimal::new(5, 5);
+    let xf = Decimal::from(x_mode.factor());
+    for (i, (m, k)) in ours.iter().zip(canon).enumerate() {
+        let x = Decimal::new(m.to.x, dec) / xf;
+        let z = Decimal::new(m.to.z, dec);
+        if (x - k.x).abs() > tol || (z - k.z).abs() > tol {
+            return Err(format!(
+                "move {i}: ours X{x} Z{z} (X as a radius), rs274 X{} Z{} (output line {})",
+                k.x, k.z, k.line
+            ));
+        }
+        match (m.motion, k.rapid, k.pitch) {
+            (Motion::Rapid, true, None) => {}
+            (Motion::Thread { lead, .. }, false, Some(p)) => {
+                let ours = Decimal::new(i64::try_from(lead.mantissa).unwrap_or(i64::MAX), lead.scale);
+                if (ours - p).abs() > Decimal::new(1, 6) {
+                    return Err(format!(
+                        "move {i}: pitch {ours} against rs274's {p} (output line {})",
+                        k.line
+                    ));
+                }
+            }
+            _ => return Err(format!("move {i}: {:?} against rs274's {k:?}", m.motion)),
+        }
+    }
+    Ok(())
 }

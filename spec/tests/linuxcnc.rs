@@ -6,13 +6,10 @@
 //! in the other tests are worked by hand in their comments.
 
 use cycleref::linuxcnc::LinuxCncG76;
-use cycleref::{
-    IncrementSystem, InputUnit, Lead, LeadWord, Motion, Move, PassKind, Point, Role, Units, XMode,
-};
+use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, PassKind, Point, Role, Units, XMode};
 use cycleref_spec::linuxcnc::{expand, taper_pitch};
 use cycleref_spec::real::Real;
-use cycleref_spec::rs274::{self, CanonMove};
-use rust_decimal::Decimal;
+use cycleref_spec::rs274;
 
 const MM: Units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metric };
 
@@ -38,48 +35,13 @@ fn taper_cycle() -> LinuxCncG76 {
     }
 }
 
-fn lead_decimal(l: Lead) -> Decimal {
-    Decimal::new(i64::try_from(l.mantissa).unwrap(), l.scale)
-}
-
-/// Our moves against rs274's, call by call: the same kind of motion, X
-/// (as a radius) and Z within one increment, the same pitch within 10⁻⁶.
-fn compare(ours: &[Move], canon: &[CanonMove], xf: i64, units: Units) -> Result<(), String> {
-    if ours.len() != canon.len() {
-        return Err(format!("{} moves against rs274's {}", ours.len(), canon.len()));
-    }
-    let inc = Decimal::new(1, units.decimals());
-    for (i, (m, c)) in ours.iter().zip(canon).enumerate() {
-        let x = Decimal::new(m.to.x, units.decimals()) / Decimal::from(xf);
-        let z = Decimal::new(m.to.z, units.decimals());
-        // rs274 prints four decimals: its own rounding adds half of its unit.
-        let tol = inc.max(Decimal::new(1, 4) / Decimal::from(2) + inc / Decimal::from(2));
-        if (x - c.x).abs() > tol || (z - c.z).abs() > tol {
-            return Err(format!(
-                "move {i}: ours X{x} Z{z}, rs274 X{} Z{} (output line {})",
-                c.x, c.z, c.line
-            ));
-        }
-        match (m.motion, c.rapid, c.pitch) {
-            (Motion::Rapid, true, None) => {}
-            (Motion::Thread { lead, .. }, false, Some(p)) => {
-                if (lead_decimal(lead) - p).abs() > Decimal::new(1, 6) {
-                    return Err(format!("move {i}: pitch {} against rs274's {p}", lead_decimal(lead)));
-                }
-            }
-            _ => return Err(format!("move {i}: {:?} against rs274's {c:?}", m.motion)),
-        }
-    }
-    Ok(())
-}
-
 #[test]
 fn taper_thread_matches_rs274() {
     let canon = rs274::read(include_str!("data/lcnc-taper.canon")).unwrap();
     // The first motion is the program's G0 X14 Z2, the last its G0 X20 Z5.
     let cycle = &canon[1..canon.len() - 1];
     let ours = expand(&taper_cycle()).unwrap();
-    compare(&ours, cycle, 1, MM).unwrap();
+    rs274::compare(&ours, cycle, MM, XMode::Radius).unwrap();
     // 9 rough passes: 0.2·n^(2/3) < 0.92 ⇔ n < 4.6^1.5 = 9.866; then the
     // full-depth pass and one spring pass: 11 passes of 6 moves (back, in,
     // angled in, over, angled out, out), and the return.

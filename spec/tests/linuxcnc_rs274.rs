@@ -22,10 +22,10 @@ use std::io::Write;
 use std::process::{Command, Stdio};
 
 use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE};
-use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, Motion, Move, Point, Units, XMode};
+use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, Point, Units, XMode};
 use cycleref_spec::linuxcnc::expand;
 use cycleref_spec::real::Real;
-use cycleref_spec::rs274::{self, CanonMove};
+use cycleref_spec::rs274;
 use cycleref_spec::{Item, Machine, ProfileName};
 use rust_decimal::Decimal;
 
@@ -169,37 +169,6 @@ fn rs274(program: &str) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
-fn lead_decimal(l: Lead) -> Decimal {
-    Decimal::new(i64::try_from(l.mantissa).unwrap(), l.scale)
-}
-
-fn compare(ours: &[Move], canon: &[CanonMove], c: &LinuxCncG76) -> Result<(), String> {
-    if ours.len() != canon.len() {
-        return Err(format!("{} moves against rs274's {}", ours.len(), canon.len()));
-    }
-    let dec = c.units.decimals();
-    let inc = Decimal::new(1, dec);
-    let tol = Decimal::new(5, 5) + inc / Decimal::TWO + inc / Decimal::TWO;
-    let xf = Decimal::from(c.x_mode.factor());
-    for (i, (m, k)) in ours.iter().zip(canon).enumerate() {
-        let x = Decimal::new(m.to.x, dec) / xf;
-        let z = Decimal::new(m.to.z, dec);
-        if (x - k.x).abs() > tol || (z - k.z).abs() > tol {
-            return Err(format!(
-                "move {i}: ours X{x} Z{z} (radius), rs274 X{} Z{} (output line {})",
-                k.x, k.z, k.line
-            ));
-        }
-        match (m.motion, k.rapid, k.pitch) {
-            (Motion::Rapid, true, None) => {}
-            (Motion::Thread { lead, .. }, false, Some(p))
-                if (lead_decimal(lead) - p).abs() <= Decimal::new(1, 6) => {}
-            _ => return Err(format!("move {i}: {:?} against rs274's {k:?}", m.motion)),
-        }
-    }
-    Ok(())
-}
-
 /// Compares one program with rs274; true when it needed the R-LCNC-TIE
 /// allowance. `what` names the case in a failure.
 fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
@@ -221,7 +190,7 @@ fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
     // The program's G0 to the start comes first; M5 and M2 add none.
     assert!(!canon.is_empty(), "{what}: rs274 printed no motion\n{program}\n{out}");
     let canon = &canon[1..];
-    let mut result = compare(&ours, canon, cycle);
+    let mut result = rs274::compare(&ours, canon, cycle.units, cycle.x_mode);
     let mut tie = false;
     let per_pass = ours.iter().filter(|m| m.pass.is_some_and(|p| p == ours[0].pass.unwrap())).count();
     if result.is_err() && canon.len() == ours.len() + per_pass {
@@ -235,7 +204,7 @@ fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
         if (&depth - &Real::int(cycle.full_depth)).sign().unwrap() == Ordering::Equal {
             let mut merged = canon.to_vec();
             merged.drain(rough * per_pass..(rough + 1) * per_pass);
-            result = compare(&ours, &merged, cycle);
+            result = rs274::compare(&ours, &merged, cycle.units, cycle.x_mode);
             tie = true;
         }
     }

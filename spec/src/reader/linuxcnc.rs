@@ -37,16 +37,8 @@ impl State<'_> {
                 Some(76) => g76 = true,
                 Some(7) => mode = Some(XMode::Diameter),
                 Some(8) => mode = Some(XMode::Radius),
-                Some(20 | 21) => {
-                    let unit = if whole == Some(20) { InputUnit::Inch } else { InputUnit::Metric };
-                    if unit != self.units.unit {
-                        // Reading R-UNITS.
-                        if self.moved || self.x.is_some() || self.z.is_some() {
-                            return Err(err(&block, Some(w), ErrorKind::UnitChangeAfterMotion));
-                        }
-                        self.units.unit = unit;
-                    }
-                }
+                Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
+                Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
                 Some(4 | 18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
                 Some(33) => {
                     return Err(err(
