@@ -85,7 +85,11 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             Item::G76(call) => nc_g76(out, call, moves(job, Cycle::G76(call))?, job.q_unit)?,
             Item::G32(call) => {
                 for m in moves(job, Cycle::G32(call))? {
-                    nc_move(out, &m, call.g32.units, job.q_unit)?;
+                    if call.code == "G33" {
+                        nc_g33_move(out, &m, call.g32.units)?;
+                    } else {
+                        nc_move(out, &m, call.g32.units, job.q_unit)?;
+                    }
                 }
             }
             Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
@@ -113,23 +117,28 @@ fn nc_linuxcnc<W: Write>(out: &mut W, call: &LinuxCncCall<'_>, moves: Moves) -> 
                 writeln!(out, "({kind} {})", p.number)?;
             }
         }
-        let Motion::Thread { lead, .. } = m.motion else {
-            // Rapids (LinuxCNC reads G00 as G0).
-            nc_move(out, &m, u, QUnit::Degrees { wrap: false })?;
-            continue;
-        };
-        let mut line = Line::new();
-        let l = &mut line;
-        xz(out, l, b"G33 ", m.to, u)?;
-        let mut buf = [0; FIXED_BUF];
-        let text = LeadText(lead).encode(&mut buf);
-        // The lead's text is "F…": K carries the same value.
-        l.push(out, b" K")?;
-        l.push(out, &text[1..])?;
-        l.push(out, b"\n")?;
-        l.flush(out)?;
+        nc_g33_move(out, &m, u)?;
     }
     Ok(())
+}
+
+/// One move in LinuxCNC's words: `G33 X Z K` for a synchronised move (K
+/// the distance per revolution along it, R-LCNC-SYNC), else as
+/// [`nc_move`] writes it (LinuxCNC reads G00 as G0).
+fn nc_g33_move<W: Write>(out: &mut W, m: &Move, u: Units) -> io::Result<()> {
+    let Motion::Thread { lead, .. } = m.motion else {
+        return nc_move(out, m, u, QUnit::Degrees { wrap: false });
+    };
+    let mut line = Line::new();
+    let l = &mut line;
+    xz(out, l, b"G33 ", m.to, u)?;
+    let mut buf = [0; FIXED_BUF];
+    let text = LeadText(lead).encode(&mut buf);
+    // The lead's text is "F…": K carries the same value.
+    l.push(out, b" K")?;
+    l.push(out, &text[1..])?;
+    l.push(out, b"\n")?;
+    l.flush(out)
 }
 
 /// The NC blocks of one G92 block: a heading, a comment before each start
@@ -628,7 +637,7 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             any = true;
             let columns =
                 ["line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];
-            thread_heading(out, "G32 blocks", &job.name, columns)?;
+            thread_heading(out, &format!("{} blocks", call.code), &job.name, columns)?;
         }
         let u = call.g32.units;
         let (mut cut, mut run_out) = (None, None);

@@ -66,7 +66,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
     pub fn code(self) -> &'static str {
         match self {
             Cycle::G76(c) => c.code.code(),
-            Cycle::G32(_) => "G32",
+            Cycle::G32(c) => c.code,
             Cycle::G75(_) => "G75.1",
             Cycle::G92(_) => "G92",
             Cycle::LinuxCnc(_) => "G76",

@@ -106,9 +106,13 @@ impl G75Call<'_> {
     }
 }
 
-/// One G32 block of a program.
+/// One G32 block of a program (or LinuxCNC's G33, the same one
+/// synchronised move: [`G32Call::code`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct G32Call<'a> {
+    /// `G32`, or `G33` on the linuxcnc profile, whose lead is the distance
+    /// per revolution along the move (reading R-LCNC-SYNC).
+    pub code: &'static str,
     /// The block.
     pub block: Block<'a>,
     /// The resolved block.
@@ -119,7 +123,7 @@ impl G32Call<'_> {
     /// The call with its block [detached](Block::detached) from the text.
     #[must_use]
     pub fn detached(&self) -> G32Call<'static> {
-        G32Call { block: self.block.detached(), g32: self.g32 }
+        G32Call { code: self.code, block: self.block.detached(), g32: self.g32 }
     }
 }
 
@@ -319,6 +323,9 @@ struct State<'m> {
     /// LinuxCNC: G76 is the motion mode in force (a later block with X or
     /// Z runs it again and needs its words again, as the interpreter does).
     lcnc_g76: bool,
+    /// LinuxCNC: G33 is the motion mode in force (likewise: every block
+    /// needs its K).
+    lcnc_g33: bool,
 }
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
@@ -504,6 +511,7 @@ impl<'m> LineReader<'m> {
                 g92: G92Modal::default(),
                 x_mode: machine.x_mode,
                 lcnc_g76: false,
+                lcnc_g33: false,
             },
             at: None,
             line: 0,
@@ -1148,7 +1156,7 @@ impl State<'_> {
         // 988TA: a run-out in a middle segment makes the thread discontinuous.
         let breaks = rules == G32Rules::Gsk988 && run_out != G32RunOut::None;
         self.thread_run = if breaks { None } else { Some(start_angle) };
-        Ok(G32Call { block, g32 })
+        Ok(G32Call { code: "G32", block, g32 })
     }
 
     /// The motion to restore after a G76 or G75.1 expansion: the mode in

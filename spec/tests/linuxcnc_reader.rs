@@ -114,12 +114,44 @@ fn what_the_profile_does_not_read() {
     // U and W are axes of their own in LinuxCNC, not incremental X and Z.
     let e = error(&format!("{HEAD}G0 U1\n"));
     assert_eq!(e.word.as_deref(), Some("U1"));
-    let e = error(&format!("{HEAD}G33 Z-5 K1\n"));
-    assert!(e.to_string().contains("G33"), "{e}");
+    let e = error(&format!("{HEAD}G33.1 Z-5 K1\n"));
+    assert!(e.to_string().contains("G33.1"), "{e}");
     let e = error(&format!("{HEAD}G92 X10 Z1\n"));
     assert!(e.to_string().contains("the linuxcnc profile reads"), "{e}");
     // Q of 90 degrees or more, R above 100, a pitch of 0.
     assert!(error(&format!("{HEAD}G76 P1 Z-5 I-0.5 J0.1 K0.3 Q90\n")).to_string().contains("-90 < Q < 90"));
     assert!(error(&format!("{HEAD}G76 P1 Z-5 I-0.5 J0.1 K0.3 R101\n")).to_string().contains("R <= 100"));
     assert!(error(&format!("{HEAD}G76 P0 Z-5 I-0.5 J0.1 K0.3\n")).to_string().contains("P > 0"));
+}
+
+#[test]
+fn g33_blocks() {
+    // G33 X Z K: one synchronised move, K per revolution along it (not
+    // halved in G7), each block its own synchronisation.
+    let src = "G18 G21 G7\nM3 S500\nG0 X20 Z1\nG33 X18 Z-5 K1.5\nG33 Z-8 K2\n";
+    let p = read(src, &machine()).unwrap();
+    let blocks: Vec<_> = p.threads().collect();
+    assert_eq!(blocks.len(), 2);
+    assert_eq!(blocks[0].code, "G33");
+    let g = blocks[0].g32;
+    assert_eq!(
+        (g.start, g.end, g.x_mode),
+        (Point::new(200_000, 10_000), Point::new(180_000, -50_000), XMode::Diameter)
+    );
+    assert_eq!((g.lead.mantissa, g.lead.scale, g.sync), (15, 1, true));
+    assert_eq!(
+        (blocks[1].g32.start, blocks[1].g32.end),
+        (Point::new(180_000, -50_000), Point::new(180_000, -80_000))
+    );
+    // The interpreter's refusals (rs274 gives each of these texts).
+    let e = error(&format!("{HEAD}G33 Z-5\n"));
+    assert!(e.to_string().contains("K word missing with g33/g33.1"), "{e}");
+    let e = error(&format!("{HEAD}G33 Z-5 K1 F1\n"));
+    assert!(e.to_string().contains("F word used with a g33/g33.1"), "{e}");
+    let e = error("G18 G21\nG0 X10 Z1\nG33 Z-5 K1\n");
+    assert!(e.to_string().contains("Spindle not turning in G33"), "{e}");
+    // Modal: an axis-only block runs G33 again and needs K.
+    let e = error(&format!("{HEAD}G33 Z-5 K1\nZ-8\n"));
+    assert_eq!(e.line, 5);
+    assert!(e.to_string().contains("K word missing"), "{e}");
 }

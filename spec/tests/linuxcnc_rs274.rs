@@ -12,6 +12,10 @@
 //! printing) full depth, one pass more than the exact model. The test
 //! accepts that extra pass only when the exact model confirms the tie.
 //!
+//! G33 blocks (one to four per program, X and/or Z, K with up to six
+//! decimals) are checked the same way, through the pipeline's G32 engine
+//! and reference (`generated_g33_blocks_match_rs274`).
+//!
 //! `rs274` missing is a failure with the command that installs it, never
 //! a silent pass: `.ci/run` installs it. The ordinary run checks 300
 //! programs; `cargo test -p cycleref-spec --test linuxcnc_rs274 -- --ignored`
@@ -141,16 +145,22 @@ fn case(g: &mut Gen) -> (String, LinuxCncG76) {
 }
 
 fn rs274(program: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("cycleref-rs274-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    // One file per call: the tests run in parallel.
+    // One directory per call, which is also rs274's working directory: it
+    // keeps a parameter file (rs274ngc.var) there, and two interpreters
+    // sharing one corrupt each other's start (seen when the tests ran in
+    // parallel). The calls of this binary also take turns.
     static CALLS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let file = dir.join(format!("case-{call}.ngc"));
+    let dir = std::env::temp_dir().join(format!("cycleref-rs274-{}-{call}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("case.ngc");
     std::fs::write(&file, program).unwrap();
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let child = Command::new("rs274")
         .arg("-g")
         .arg(&file)
+        .current_dir(&dir)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -165,7 +175,7 @@ fn rs274(program: &str) -> String {
     };
     drop(child.stdin.take().map(|mut s| s.flush()));
     let out = child.wait_with_output().unwrap();
-    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir_all(&dir);
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
@@ -266,4 +276,61 @@ fn generated_programs_match_rs274() {
 fn many_generated_programs_match_rs274() {
     let ties = run(0x15_2026_1125, 3_000);
     println!("3000 programs, {ties} with the R-LCNC-TIE allowance");
+}
+
+/// A generated program of one to four G33 blocks from a G0 start.
+fn g33_case(g: &mut Gen) -> (String, Units, XMode) {
+    let inch = g.range(0, 3) == 0;
+    let diameter = g.coin();
+    let units =
+        Units { system: IncrementSystem::IsC, unit: if inch { InputUnit::Inch } else { InputUnit::Metric } };
+    let d = units.decimals();
+    let s = |mm_increments: i64| if inch { mm_increments * 10 / 25 } else { mm_increments };
+    let xf = if diameter { 2 } else { 1 };
+    let mut program = format!(
+        "G18 {} {}\nM3 S500\nG0 X{} Z{}\n",
+        if inch { "G20" } else { "G21" },
+        if diameter { "G7" } else { "G8" },
+        text(s(g.range(50_000, 300_000)) * xf, d),
+        text(s(g.range(-20_000, 50_000)), d),
+    );
+    for _ in 0..g.range(1, 4) {
+        // X, Z or both; K with up to 6 decimals.
+        let mut words = Vec::new();
+        if g.range(0, 2) > 0 {
+            words.push(format!("X{}", text(s(g.range(50_000, 300_000)) * xf, d)));
+        }
+        if words.is_empty() || g.coin() {
+            words.push(format!("Z{}", text(s(g.range(-400_000, 50_000)), d)));
+        }
+        words.push(format!("K{}", text(g.range(1, 4_000_000), 6)));
+        program.push_str(&format!("G33 {}\n", words.join(" ")));
+    }
+    program.push_str("M5\nM2\n");
+    (program, units, if diameter { XMode::Diameter } else { XMode::Radius })
+}
+
+#[test]
+fn generated_g33_blocks_match_rs274() {
+    use cycleref_spec::pipeline::{expand as run_cycle, Cycle, Engine};
+    let mut g = Gen(0x33_2026_1124);
+    for n in 0..200 {
+        let (program, units, x_mode) = g33_case(&mut g);
+        let read = cycleref_spec::read(&program, &Machine::new(ProfileName::LinuxCnc))
+            .unwrap_or_else(|e| panic!("case {n}: {e}\n{program}"));
+        let mut ours = Vec::new();
+        for item in &read.items {
+            if let Some(cycle) = Cycle::of(item) {
+                assert_eq!(cycle.code(), "G33");
+                // The G32 engine and its reference, move for move.
+                let engine: Vec<_> = run_cycle(cycle, Engine::Impl).unwrap().collect();
+                let reference: Vec<_> = run_cycle(cycle, Engine::Spec).unwrap().collect();
+                assert_eq!(engine, reference, "case {n}\n{program}");
+                ours.extend(engine);
+            }
+        }
+        let canon = rs274::read(&rs274(&program)).unwrap();
+        rs274::compare(&ours, &canon[1..], units, x_mode)
+            .unwrap_or_else(|e| panic!("case {n} differs from rs274: {e}\n{program}"));
+    }
 }

@@ -4,17 +4,20 @@
 //! `docs/INTERPRETATIONS.md`). The modal state, the lengths and the
 //! spindle are the reader's one home; only the words differ.
 
+use cycleref::angle::StartAngle;
+use cycleref::g32::{G32Block, G32RunOut};
 use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
 use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE, MAX_DEGRESSION, RIGHT_ANGLE};
 use cycleref::units::{InputUnit, Point, XMode};
 use rust_decimal::Decimal;
 
-use super::{err, Item, LinuxCncCall, MotionMode, State};
+use super::{err, G32Call, Item, LinuxCncCall, MotionMode, State};
 use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{Block, Word};
 
 /// The G codes this front end reads (anything else is refused by name).
-const KNOWN: &str = "G0-G4, G7, G8, G18, G20, G21, G40, G54-G59, G61, G64, G76, G80, G90, G94, G95, G96, G97";
+const KNOWN: &str =
+    "G0-G4, G7, G8, G18, G20, G21, G33, G40, G54-G59, G61, G64, G76, G80, G90, G94, G95, G96, G97";
 
 /// LinuxCNC's own text of an error, beside ours.
 const P_MISSING: &str = "LinuxCNC: \"P word missing with G76\"";
@@ -25,6 +28,7 @@ impl State<'_> {
     pub(super) fn linuxcnc_block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
         let mut motion = None;
         let mut g76 = false;
+        let mut g33 = false;
         let mut mode = None;
         for w in block.all('G') {
             let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
@@ -35,20 +39,12 @@ impl State<'_> {
                 Some(2) => motion = Some(MotionMode::G02),
                 Some(3) => motion = Some(MotionMode::G03),
                 Some(76) => g76 = true,
+                Some(33) => g33 = true,
                 Some(7) => mode = Some(XMode::Diameter),
                 Some(8) => mode = Some(XMode::Radius),
                 Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
                 Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
                 Some(4 | 18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
-                Some(33) => {
-                    return Err(err(
-                        &block,
-                        Some(w),
-                        ErrorKind::Unsupported(
-                            "G33 on the linuxcnc profile (not modelled yet: issue 15)".into(),
-                        ),
-                    ))
-                }
                 _ => {
                     return Err(err(
                         &block,
@@ -94,23 +90,26 @@ impl State<'_> {
             }
             self.switch_x_mode(&block, m)?;
         }
-        if g76 && motion.is_some() {
+        if usize::from(g76) + usize::from(g33) + usize::from(motion.is_some()) > 1 {
             return Err(err(
                 &block,
                 None,
-                ErrorKind::Unsupported("two motion G codes in one block (G76 and G0-G3)".into()),
+                ErrorKind::Unsupported("two motion G codes in one block (of G0-G3, G33, G76)".into()),
             ));
         }
         if let Some(m) = motion {
             self.motion = m;
-            self.lcnc_g76 = false;
         }
-        if g76 {
-            self.lcnc_g76 = true;
+        if motion.is_some() || g33 || g76 {
+            self.lcnc_g76 = g76;
+            self.lcnc_g33 = g33;
         }
         let axes = block.has('X') || block.has('Z');
         if g76 || (self.lcnc_g76 && axes) {
             return self.linuxcnc_g76(block).map(Item::LinuxCncG76);
+        }
+        if g33 || (self.lcnc_g33 && axes) {
+            return self.linuxcnc_g33(block).map(Item::G32);
         }
         if axes && !block.all('G').any(|w| w.number().integer() == Some(4)) {
             self.x = self.axis(&block, block.get('X')?, None, self.x)?;
@@ -168,6 +167,83 @@ impl State<'_> {
             .ok_or_else(|| err(block, Some(w), ErrorKind::OutOfRange { range: "a whole number".into() }))
     }
 
+    /// `G33 X Z K`: one move synchronised with the spindle, K the distance
+    /// per revolution along the move (LinuxCNC's `START_SPEED_FEED_SYNCH(K)`
+    /// before `STRAIGHT_FEED`, interp_convert.cc l.5520-5531; not halved in
+    /// G7). Every G33 block starts its own synchronisation (rs274 prints a
+    /// `START_SPEED_FEED_SYNC` for each).
+    fn linuxcnc_g33<'a>(&mut self, block: Block<'a>) -> Result<G32Call<'a>, ProgramError> {
+        if let Some(f) = block.get('F')? {
+            return Err(err(
+                &block,
+                Some(f),
+                ErrorKind::Unsupported(
+                    "F in a G33 block (LinuxCNC: \"F word used with a g33/g33.1\")".into(),
+                ),
+            ));
+        }
+        self.check_addresses(&block, "G33", "GXZKMST", "")?;
+        let k = block.get('K')?.ok_or_else(|| {
+            err(
+                &block,
+                None,
+                ErrorKind::Missing {
+                    what: "K (distance per revolution)",
+                    rule: "LinuxCNC: \"K word missing with g33/g33.1\"",
+                },
+            )
+        })?;
+        if !self.spindle_on {
+            return Err(err(
+                &block,
+                None,
+                ErrorKind::Missing {
+                    what: "M3 or M4 (a turning spindle)",
+                    rule: "LinuxCNC: \"Spindle not turning in G33\"",
+                },
+            ));
+        }
+        let (Some(x0), Some(z0)) = (self.x, self.z) else {
+            return Err(err(&block, None, ErrorKind::PositionUnknown));
+        };
+        let lead = Self::pitch(&block, k)?;
+        let end = Point::new(
+            block.get('X')?.map(|w| self.length(&block, w)).transpose()?.unwrap_or(x0),
+            block.get('Z')?.map(|w| self.length(&block, w)).transpose()?.unwrap_or(z0),
+        );
+        let g32 = G32Block {
+            units: self.units,
+            x_mode: self.x_mode,
+            start: Point::new(x0, z0),
+            end,
+            lead,
+            run_out: G32RunOut::None,
+            start_angle: StartAngle::ZERO,
+            sync: true,
+        };
+        g32.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        self.x = Some(end.x);
+        self.z = Some(end.z);
+        self.moved = true;
+        Ok(G32Call { code: "G33", block, g32 })
+    }
+
+    /// A pitch (G76 P, G33 K): > 0, at most 6 decimals, kept with the
+    /// fewest decimals that hold it (P1.5 is 15 tenths).
+    fn pitch(block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
+        let mut scale = MAX_LEAD_SCALE;
+        let range = format!("{} > 0 with at most 6 decimals", w.letter);
+        let mantissa = Self::fixed(block, w, scale, &range)?;
+        let mut mantissa = u64::try_from(mantissa).ok().filter(|m| *m > 0).ok_or_else(|| {
+            err(block, Some(w), ErrorKind::OutOfRange { range: format!("{} > 0", w.letter) })
+        })?;
+        while scale > 0 && mantissa % 10 == 0 {
+            mantissa /= 10;
+            scale -= 1;
+        }
+        Ok(Lead { word: LeadWord::F, mantissa, scale })
+    }
+
     /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle.
     fn linuxcnc_g76<'a>(&mut self, block: Block<'a>) -> Result<LinuxCncCall<'a>, ProgramError> {
         self.check_addresses(&block, "G76", "GXZPIJRKQHELMSTF", "")?;
@@ -201,18 +277,7 @@ impl State<'_> {
         };
         // P: the pitch, > 0 (the interpreter accepts any P but -1, its
         // "missing" value; a pitch of 0 or below cuts no thread: refused).
-        let mut scale = MAX_LEAD_SCALE;
-        let mantissa = Self::fixed(&block, p, scale, "P > 0 with at most 6 decimals")?;
-        let mut mantissa = u64::try_from(mantissa)
-            .ok()
-            .filter(|m| *m > 0)
-            .ok_or_else(|| err(&block, Some(p), ErrorKind::OutOfRange { range: "P > 0".into() }))?;
-        // The fewest decimals that hold it (P1.5 is 15 tenths).
-        while scale > 0 && mantissa % 10 == 0 {
-            mantissa /= 10;
-            scale -= 1;
-        }
-        let pitch = Lead { word: LeadWord::F, mantissa, scale };
+        let pitch = Self::pitch(&block, p)?;
         let end_x = match block.get('X')? {
             Some(w) => self.length(&block, w)?,
             None => x0,
