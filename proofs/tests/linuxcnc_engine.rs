@@ -395,3 +395,33 @@ fn engine_equals_reference_long() {
         })
         .unwrap();
 }
+
+/// The new loops stay within the bounds their documentation gives
+/// (feature `loop-counters`, on for this crate's tests): the iterator moves
+/// on at most twice per move, the wide square root runs 128 steps, the
+/// root search and gcd at most 47, the series far below `MAX_TERMS` (400)
+/// even at 576 bits. The counts are process-wide maxima, so the other
+/// tests of this file running meanwhile only add cycles of the same kind.
+#[test]
+fn loop_counts_stay_within_their_bounds() {
+    use cycleref::loop_counters::{self, LCNC_ISQRT, LCNC_NEXT, LCNC_PASSES, REAL_EXP, REAL_LN, REAL_ROOT};
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+    loop_counters::reset();
+    let mut runner = TestRunner::deterministic();
+    let strategy = shape();
+    for _ in 0..100 {
+        let _ = engine(&cycle(&strategy.new_tree(&mut runner).unwrap().current()));
+    }
+    // The slow powers too (576 bits, the longest series).
+    let _ = power::<{ SLOW + 1 }>(4_294_967_297, 10_000, 29_999);
+    let _ = power::<{ SLOW + 1 }>(3, 10_000, 10_001);
+    let counts =
+        [&LCNC_NEXT, &LCNC_ISQRT, &LCNC_PASSES, &REAL_ROOT, &REAL_LN, &REAL_EXP].map(|s| (s.name, s.max()));
+    eprintln!("{counts:?}");
+    assert!(LCNC_NEXT.max() <= 2);
+    assert_eq!(LCNC_ISQRT.max(), 128);
+    assert!(LCNC_PASSES.max() <= 40);
+    assert!(REAL_ROOT.max() <= 47);
+    assert!(REAL_LN.max() <= 200 && REAL_EXP.max() <= 200);
+}

@@ -56,7 +56,9 @@
 //! Up front: two interval powers per rough pass at 192 bits (the limit
 //! check, then each pass once), rarely one at 576. Per move: O(1); a rough
 //! pass's start computes one power again. A [`LinuxCncMoves`] is a
-//! fixed-size value (the test `size_of_the_iterator` bounds it).
+//! fixed-size value (368 bytes on 64-bit targets: the words, the 128-bit
+//! enclosure of `tan Q`, the leads and the current pass's points; the test
+//! `size_of_the_iterator` bounds it by 512).
 
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
@@ -266,7 +268,37 @@ impl Points {
 }
 
 /// The moves of a LinuxCNC G76 cycle, in order: an [`Iterator`] of
-/// constant size made by [`expand_linuxcnc`].
+/// constant size made by [`expand_linuxcnc`], which has made every check;
+/// it cannot fail.
+///
+/// # Example
+///
+/// The passes of `G8 G0 X14 Z2` then `G76 P1.5 Z-20 I-1 J0.2 R1.5 K0.92
+/// Q29.5 H1 E1 L3` (mm): 9 rough passes (`0.2·n^(2/3) < 0.92` for `n ≤
+/// 9`), then the full-depth pass and one spring pass, 6 moves each (back,
+/// the two entry taper moves, over, the exit taper, out), and the return.
+///
+/// ```
+/// use cycleref::linuxcnc::LinuxCncG76;
+/// use cycleref::{expand_linuxcnc, Lead, LeadWord, PassKind, Point, Units, IncrementSystem, InputUnit, XMode};
+/// let c = LinuxCncG76 {
+///     units: Units { system: IncrementSystem::IsC, unit: InputUnit::Metric },
+///     x_mode: XMode::Radius,
+///     start: Point::new(140_000, 20_000), end: Point::new(140_000, -200_000),
+///     pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+///     peak_offset: -10_000, initial_depth: 2_000, degression: 15_000,
+///     full_depth: 9_200, compound_angle: 295_000, spring_passes: 1,
+///     taper_distance: 10_000, entry_taper: true, exit_taper: true,
+///     pass_limit: 1_000_000,
+/// };
+/// let moves: Vec<_> = expand_linuxcnc(&c)?.collect();
+/// assert_eq!(moves.len(), 11 * 6 + 1);
+/// let depths: Vec<_> = moves.iter().step_by(6).filter_map(|m| m.pass).map(|p| (p.kind, p.depth)).collect();
+/// // Pass 1 at J = 0.2, pass 2 at 0.2·2^(2/3) = 0.31748…, the last two at K.
+/// assert_eq!(depths[..2], [(PassKind::Rough, 2_000), (PassKind::Rough, 3_175)]);
+/// assert_eq!(depths[9..], [(PassKind::Finish, 9_200), (PassKind::Finish, 9_200)]);
+/// # Ok::<(), cycleref::CycleError>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct LinuxCncMoves {
     words: Words,
@@ -651,7 +683,7 @@ mod tests {
     fn size_of_the_iterator() {
         let size = core::mem::size_of::<LinuxCncMoves>();
         std::println!("size_of::<LinuxCncMoves>() = {size}");
-        assert!(size <= 1024, "LinuxCncMoves is {size} bytes");
+        assert!(size <= 512, "LinuxCncMoves is {size} bytes");
     }
 
     #[test]
@@ -694,6 +726,46 @@ mod tests {
         assert_eq!(taper_pitch(&c).unwrap().mantissa, 14_140_721_410);
         c.taper_distance = 0;
         assert_eq!(taper_pitch(&c).unwrap(), c.pitch);
+    }
+
+    /// The 512-bit path with R-G75TIE gives the points the 128-bit path
+    /// gives: every fast enclosure widened by one unit on each side (so
+    /// that none decides) leaves the decisions to the slow values.
+    #[test]
+    fn slow_path_gives_the_same_points() {
+        use crate::engine::real::Fixed;
+        let one = Fixed::<FAST>::from_int(1);
+        let widen = |v: &Interval<FAST>| {
+            Interval::new(v.lower().checked_sub(&one).unwrap(), v.upper().checked_add(&one).unwrap())
+        };
+        let mut c = cycle();
+        for variant in 0..4 {
+            c.peak_offset = if variant % 2 == 0 { -10_000 } else { 10_000 };
+            c.x_mode = if variant < 2 { XMode::Radius } else { XMode::Diameter };
+            c.end.z = if variant == 3 { 300_000 } else { -200_000 };
+            let m = expand_linuxcnc(&c).unwrap();
+            let w = m.words;
+            for depth in [Depth::Rough(1), Depth::Rough(2), Depth::Rough(7), Depth::Full] {
+                let normal = Points::of(&mut Values::new(&w, &m.tan, depth), &w).unwrap();
+                let mut v = Values::new(&w, &m.tan, depth);
+                for f in &mut v.fast {
+                    *f = widen(f);
+                }
+                assert_eq!(v.fast(X_BACK).round(Rounding::Nearest), None);
+                let slow = Points::of(&mut v, &w).unwrap();
+                assert!(v.slow.is_some());
+                assert_eq!(slow, normal, "{variant} {depth:?}");
+            }
+        }
+        // An exact value on a boundary: the sign of J·8^(2/3) − 4J at 512
+        // bits is 0 whether the power is held exact or not.
+        c.initial_depth = 1_000;
+        c.full_depth = 4_000;
+        let m = expand_linuxcnc(&c).unwrap();
+        let mut v = Values::new(&m.words, &m.tan, Depth::Rough(8));
+        assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
+        v.fast[DEEPER] = widen(&v.fast[DEEPER]);
+        assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
     }
 
     #[test]

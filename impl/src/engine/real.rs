@@ -1194,7 +1194,7 @@ pub fn ln<const N: usize>(n: u64) -> Interval<N> {
 /// that term, as `x/(k+1) < 1/2`) added to the upper end, and the sum
 /// squared `h` times. Poisoned for a poisoned or partly negative argument,
 /// and when the result reaches `2^127` (an overflow in a squaring). The
-/// loops are bounded by `MAX_HALVINGS`, [`MAX_TERMS`] and `h`.
+/// loops are bounded by `MAX_HALVINGS` (130), `MAX_TERMS` (400) and `h`.
 ///
 /// Twin: `spec/src/real.rs`, `exp_scaled`.
 ///
@@ -1611,6 +1611,71 @@ mod tests {
             assert_eq!(one.round(Rounding::Nearest), Some(1));
             assert!(one.lower().floor() <= 1 && one.upper().ceil() >= Some(1));
         }
+    }
+
+    #[test]
+    fn logarithms_and_exponentials() {
+        // ln 2, ln 10, e, e^(1/2), e^20 (published constants; the helper
+        // checks the enclosure holds the digits and is narrower than them).
+        encloses_decimal(&ln::<FAST>(2), "0.693147180559945309417232121458");
+        encloses_decimal(&ln::<SLOW>(2), "0.69314718055994530941723212145817656807");
+        encloses_decimal(&ln::<FAST>(10), "2.302585092994045684017991454684");
+        encloses_decimal(&ln::<SLOW>(1_000_000_007), "20.723265843946411131661923206492610601");
+        encloses_decimal(&exp(&Interval::<FAST>::int(1)), "2.718281828459045235360287471352");
+        encloses_decimal(&exp(&Interval::<SLOW>::half()), "1.6487212707001281468486507878141635716");
+        encloses_decimal(&exp(&Interval::<FAST>::int(20)), "485165195.409790277969106830");
+        assert_eq!(ln::<FAST>(1), Interval::int(0));
+        assert!(!ln::<FAST>(0).is_valid() && !ln::<FAST>(1 << 63).is_valid());
+        assert!(ln::<FAST>((1 << 63) - 1).is_valid());
+        // exp(ln n) = n within the widths, at both precisions.
+        for n in [3_u64, 1000, 4_294_967_297] {
+            assert_eq!(exp(&ln::<FAST>(n)).round(Rounding::Nearest), Some(i128::from(n)));
+            assert_eq!(exp(&ln::<SLOW>(n)).round(Rounding::Nearest), Some(i128::from(n)));
+        }
+        // Outside the domain, and too large a result: poisoned.
+        assert!(!exp(&Interval::<FAST>::int(-1)).is_valid());
+        assert!(!exp(&Interval::<FAST>::poison()).is_valid());
+        assert!(!exp(&Interval::<FAST>::int(100)).is_valid());
+        assert!(exp(&Interval::<FAST>::int(87)).is_valid());
+        // The widths: the fast power of a value below 2^33 keeps about 80
+        // bits, the slow one about 460.
+        let w = |iv: &Interval<FAST>| iv.upper().checked_sub(iv.lower()).unwrap();
+        let p = power::<FAST>(4_294_967_297, 10_000, 10_001);
+        assert!(w(&p).cmp_signed(&F::from_ulps(1 << 50)) == Ordering::Less);
+        let p = power::<SLOW>(4_294_967_297, 10_000, 10_001);
+        let ws = p.upper().checked_sub(p.lower()).unwrap();
+        assert!(ws.cmp_signed(&S::from_ulps(1 << 50)) == Ordering::Less);
+    }
+
+    #[test]
+    fn integer_roots() {
+        assert_eq!(integer_root(1, 2), Some(1));
+        assert_eq!(integer_root(u64::MAX, 2), None);
+        assert_eq!(integer_root(4_294_967_295 * 4_294_967_295, 2), Some(4_294_967_295));
+        assert_eq!(integer_root(1 << 62, 62), Some(2));
+        assert_eq!(integer_root(1 << 62, 63), None);
+        assert_eq!(integer_root(3_486_784_401, 20), Some(3));
+        assert_eq!(integer_root(3_486_784_402, 20), None);
+        assert_eq!(
+            (gcd_u32(10_000, 15_000), gcd_u32(0, 0), gcd_u32(7, 0), gcd_u32(u32::MAX, u32::MAX - 1)),
+            (5_000, 1, 7, 1)
+        );
+    }
+
+    #[test]
+    fn changes_of_precision() {
+        let third = Interval::<SLOW>::int(-1).div_int(3);
+        let fast: Interval<FAST> = third.at_precision();
+        // The narrowed enclosure holds the wider one.
+        let back: Interval<SLOW> = fast.at_precision();
+        assert_ne!(back.lower().cmp_signed(third.lower()), Ordering::Greater);
+        assert_ne!(back.upper().cmp_signed(third.upper()), Ordering::Less);
+        assert_eq!(fast, Interval::<FAST>::int(-1).div_int(3));
+        // Exact values stay exact both ways; poison stays poison.
+        assert_eq!(Interval::<SLOW>::int(-5).div_int(4).at_precision::<FAST>(), Interval::int(-5).div_int(4));
+        assert!(!Interval::<SLOW>::poison().at_precision::<FAST>().is_valid());
+        let big = Interval::<FAST>::int(i128::MAX >> 1);
+        assert_eq!(big.at_precision::<SLOW>().at_precision::<FAST>(), big);
     }
 
     /// `atan(1/m)` enclosed by its alternating series at the precision `N`.
