@@ -425,3 +425,35 @@ fn loop_counts_stay_within_their_bounds() {
     assert!(REAL_ROOT.max() <= 47);
     assert!(REAL_LN.max() <= 200 && REAL_EXP.max() <= 200);
 }
+
+/// Thousands of passes: large `n` in the power, every depth an interval
+/// (R = 1.2345) or exact (R = 1), G7 and G8.
+#[test]
+fn thousands_of_passes() {
+    let mut c = LinuxCncG76 {
+        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
+        x_mode: XMode::Diameter,
+        start: Point::new(200_000, 1_000),
+        end: Point::new(200_000, -30_000),
+        pitch: Lead { word: LeadWord::F, mantissa: 625, scale: 4 },
+        peak_offset: -2_000,
+        initial_depth: 10,
+        degression: 12_345,
+        full_depth: 10_000,
+        compound_angle: -291_234,
+        spring_passes: 2,
+        taper_distance: 3_000,
+        entry_taper: false,
+        exit_taper: true,
+        pass_limit: 1_000_000,
+    };
+    // δ_n < K ⇔ n < 1000^1.2345 = 5 052.43…: 5 052 rough passes, 3 at K,
+    // 5 moves each (back, in, over, exit taper, out).
+    assert_eq!(same(&c).unwrap().len(), (5_052 + 3) * 5 + 1);
+    c.degression = DEGRESSION_ONE;
+    c.x_mode = XMode::Radius;
+    // δ_n = 10n < 10 000 for n ≤ 999.
+    assert_eq!(same(&c).unwrap().len(), (999 + 3) * 5 + 1);
+    c.pass_limit = 998;
+    assert!(matches!(same(&c), Err(CycleError::TooManyPasses { .. })));
+}
