@@ -429,10 +429,9 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
                 cycleref::expand_g92(&c.cycle).map(Iterator::count),
                 cycleref_spec::g92::expand(&c.cycle).map(|v| v.len()),
             ),
-            // No fixed-point engine for LinuxCNC's G76 yet (issue 15).
             Item::LinuxCncG76(c) => (
                 c.block.line,
-                cycleref_spec::linuxcnc::expand(&c.cycle).map(|v| v.len()),
+                cycleref::expand_linuxcnc(&c.cycle).map(Iterator::count),
                 cycleref_spec::linuxcnc::expand(&c.cycle).map(|v| v.len()),
             ),
             Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => continue,

@@ -71,6 +71,7 @@ pub use angle::{StartAngle, StartSpacing};
 pub use engine::g32::{expand_g32, G32Moves};
 pub use engine::g75::{expand_g75, groove_profile, G75Moves, GrooveProfile, ProfilePoint, ProfileSegment};
 pub use engine::g92::{expand_g92, G92Moves};
+pub use engine::linuxcnc::{expand_linuxcnc, LinuxCncMoves};
 pub use engine::{expand_g76, G76Moves};
 pub use error::{CycleError, Field, GrooveEdge};
 pub use g32::{G32Block, G32RunOut};

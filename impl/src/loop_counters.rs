@@ -81,6 +81,25 @@ pub static REAL_DIVMOD: Site = Site::new("real::limbs_divmod: bits");
 /// `engine::real::sin_cos_series`: the terms of a Taylor series.
 #[cfg(feature = "loop-counters")]
 pub static REAL_SERIES: Site = Site::new("real::sin_cos_series: terms");
+/// `engine::real::ln`: the terms of an atanh series.
+#[cfg(feature = "loop-counters")]
+pub static REAL_LN: Site = Site::new("real::atanh2: terms");
+/// `engine::real::exp`: the halvings of the argument, the terms of the
+/// Taylor series and the squarings (the largest of the three).
+#[cfg(feature = "loop-counters")]
+pub static REAL_EXP: Site = Site::new("real::exp: halvings, terms, squarings");
+/// `engine::real::power`: the integer root search and the gcd.
+#[cfg(feature = "loop-counters")]
+pub static REAL_ROOT: Site = Site::new("real::power: root search, gcd");
+/// `engine::linuxcnc`: the passes checked before the first move.
+#[cfg(feature = "loop-counters")]
+pub static LCNC_PASSES: Site = Site::new("expand_linuxcnc: passes checked");
+/// `LinuxCncMoves::next`: passes moved on to before the next move.
+#[cfg(feature = "loop-counters")]
+pub static LCNC_NEXT: Site = Site::new("LinuxCncMoves::next: passes");
+/// `engine::linuxcnc::taper_pitch`: the bit pairs of the wide square root.
+#[cfg(feature = "loop-counters")]
+pub static LCNC_ISQRT: Site = Site::new("linuxcnc::isqrt_wide: bit pairs");
 /// `engine::g75::roughing`: the layers whose pecks are counted.
 #[cfg(feature = "loop-counters")]
 pub static G75_LAYERS: Site = Site::new("g75 roughing: layers counted");
@@ -97,7 +116,7 @@ pub static G75_CONTOUR: Site = Site::new("g75: contour points");
 
 /// Every site.
 #[cfg(feature = "loop-counters")]
-pub static SITES: [&Site; 16] = [
+pub static SITES: [&Site; 22] = [
     &ISQRT_U128,
     &ISQRT_U64,
     &PASS_COUNT,
@@ -110,10 +129,16 @@ pub static SITES: [&Site; 16] = [
     &REAL_LIMBS,
     &REAL_DIVMOD,
     &REAL_SERIES,
+    &REAL_LN,
+    &REAL_EXP,
+    &REAL_ROOT,
     &G75_LAYERS,
     &G75_ROUGH_NEXT,
     &G75_NEXT,
     &G75_CONTOUR,
+    &LCNC_PASSES,
+    &LCNC_NEXT,
+    &LCNC_ISQRT,
 ];
 
 /// Clears every site's largest count.

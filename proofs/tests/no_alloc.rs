@@ -1,6 +1,6 @@
 //! The engine does not allocate: a counting global allocator sees no
-//! allocation while `expand_g76` checks a cycle and its iterator yields
-//! every move.
+//! allocation while `expand_g76` (or `expand_linuxcnc`) checks a cycle and
+//! its iterator yields every move.
 //!
 //! (`cycleref` is `#![no_std]` without `alloc`, so it cannot allocate; this
 //! test checks the same thing at run time, for the whole call path.)
@@ -125,4 +125,45 @@ fn multi_start_does_not_allocate() {
     let (moves, n) = walk(&c);
     assert!(moves > 7 * 40 * 5, "{moves}");
     assert_eq!(n, 0);
+}
+
+#[test]
+fn linuxcnc_does_not_allocate() {
+    // The taper thread of spec/tests/linuxcnc.rs (R1.5: every depth an
+    // interval power), and G7 with the tie J0.1 R1.5 K0.4 (an exact power)
+    // and a Q that needs the 512-bit tangent nowhere but is irrational.
+    let mut c = cycleref::LinuxCncG76 {
+        units: cycleref::Units { system: cycleref::IncrementSystem::IsC, unit: cycleref::InputUnit::Metric },
+        x_mode: cycleref::XMode::Radius,
+        start: Point::new(140_000, 20_000),
+        end: Point::new(140_000, -200_000),
+        pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+        peak_offset: -10_000,
+        initial_depth: 2_000,
+        degression: 15_000,
+        full_depth: 9_200,
+        compound_angle: 295_000,
+        spring_passes: 1,
+        taper_distance: 10_000,
+        entry_taper: true,
+        exit_taper: true,
+        pass_limit: 1_000_000,
+    };
+    for tie in [false, true] {
+        if tie {
+            c.x_mode = cycleref::XMode::Diameter;
+            c.initial_depth = 1_000;
+            c.full_depth = 4_000;
+            c.compound_angle = -123_457;
+        }
+        let mut moves = 0_u64;
+        let n = allocations(|| {
+            for m in cycleref::expand_linuxcnc(&c).unwrap_or_else(|e| panic!("{e}")) {
+                moves += 1;
+                std::hint::black_box(m);
+            }
+        });
+        assert!(moves > 40, "{moves}");
+        assert_eq!(n, 0);
+    }
 }

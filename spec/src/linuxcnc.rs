@@ -47,6 +47,8 @@ use crate::real::Real;
 /// `x` rounded to the nearest integer, ties away from zero, decided
 /// exactly (`Real::nearest` rounds ties upwards, so a negative value is
 /// rounded as its opposite).
+///
+/// Twin: `impl/src/engine/linuxcnc.rs`, `Values::round_away`.
 fn round_away(x: &Real) -> Result<i64, CycleError> {
     let r = if x.sign()? == Ordering::Less { -(-x).nearest()? } else { x.nearest()? };
     r.to_i64().filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs()).ok_or(CycleError::OutOfRange {
@@ -61,6 +63,9 @@ fn round_away(x: &Real) -> Result<i64, CycleError> {
 /// along the taper's path, which advances Z by exactly P per revolution
 /// (reading R-LCNC-SYNC). Without a taper (E = 0) it is P, as LinuxCNC's
 /// `taper_pitch` is.
+///
+/// Twin: `impl/src/engine/linuxcnc.rs`, `taper_pitch` (in 256-bit
+/// integers).
 #[must_use]
 pub fn taper_pitch(c: &LinuxCncG76) -> Lead {
     if c.taper_distance <= 0 {
@@ -90,6 +95,9 @@ pub fn taper_pitch(c: &LinuxCncG76) -> Lead {
 /// [`CycleError::OutOfRange`] for a pass coordinate beyond the range
 /// table; [`CycleError::UndecidedRounding`] (never seen: R-G75TIE decides a
 /// value that 512 fraction bits cannot tell from a boundary).
+///
+/// Twin: `impl/src/engine/linuxcnc.rs`, `expand_linuxcnc` (the passes:
+/// `Words::values`, `Points::of`, `LinuxCncMoves::pass_move`).
 pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
     c.validate()?;
     let xf = Real::int(c.x_mode.factor());

@@ -13,7 +13,7 @@
 
 use std::fmt;
 
-use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, G92Moves, Move, Point, Units};
+use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, G92Moves, LinuxCncMoves, Move, Point, Units};
 
 use crate::error::ProgramError;
 use crate::profile::Machine;
@@ -139,6 +139,7 @@ enum Inner {
     G32(G32Moves),
     G75(Box<G75Moves>),
     G92(G92Moves),
+    LinuxCnc(LinuxCncMoves),
     Reference(std::vec::IntoIter<Move>),
 }
 
@@ -152,6 +153,7 @@ impl Iterator for Moves {
             Inner::G32(m) => m.next(),
             Inner::G75(m) => m.next(),
             Inner::G92(m) => m.next(),
+            Inner::LinuxCnc(m) => m.next(),
             Inner::Reference(m) => m.next(),
         }
     }
@@ -188,9 +190,8 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         (Engine::Spec, Cycle::G32(c)) => Inner::Reference(crate::g32::expand(&c.g32)?.into_iter()),
         (Engine::Spec, Cycle::G75(c)) => Inner::Reference(crate::g75::expand(&c.cycle)?.into_iter()),
         (Engine::Spec, Cycle::G92(c)) => Inner::Reference(crate::g92::expand(&c.cycle)?.into_iter()),
-        // LinuxCNC's G76 has no fixed-point engine yet (issue 15): both
-        // engines run the exact reference, as README says.
-        (Engine::Impl | Engine::Spec, Cycle::LinuxCnc(c)) => {
+        (Engine::Impl, Cycle::LinuxCnc(c)) => Inner::LinuxCnc(cycleref::expand_linuxcnc(&c.cycle)?),
+        (Engine::Spec, Cycle::LinuxCnc(c)) => {
             Inner::Reference(crate::linuxcnc::expand(&c.cycle)?.into_iter())
         }
     };

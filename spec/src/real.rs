@@ -635,6 +635,8 @@ const POWER_GUARD_BITS: u32 = 64;
 /// `2 Σ z^(2k+1) / (2k+1)`, every term positive; the lower end sums
 /// floored terms, the upper end ceiled ones plus a bound of the remainder
 /// (after a term `t`, the rest is at most `t·z²/(1 − z²) ≤ t/8`).
+///
+/// Twin: `impl/src/engine/real.rs`, `atanh2`.
 fn atanh2_scaled(num: &BigInt, den: &BigInt, q: u32) -> (BigInt, BigInt) {
     let one = pow2(q);
     let (n2, d2) = (num * num, den * den);
@@ -658,6 +660,8 @@ fn atanh2_scaled(num: &BigInt, den: &BigInt, q: u32) -> (BigInt, BigInt) {
 /// `ln m` scaled by `2^q`, enclosed, for an integer `m ≥ 1`:
 /// `e · ln 2 + ln(m / 2^e)` with `m / 2^e` in `[1, 2)`, each logarithm as
 /// `2 atanh((y − 1)/(y + 1))` (`ln 2 = 2 atanh(1/3)`).
+///
+/// Twin: `impl/src/engine/real.rs`, `ln`.
 fn ln_scaled(m: u64, q: u32) -> (BigInt, BigInt) {
     let e = 63 - m.leading_zeros();
     let p = BigInt::one() << e;
@@ -673,6 +677,8 @@ fn ln_scaled(m: u64, q: u32) -> (BigInt, BigInt) {
 /// lower end; ceiled ones plus the remainder bound, at most the last term
 /// when the argument is below 1/2, for the upper end), and the result
 /// squared `h` times.
+///
+/// Twin: `impl/src/engine/real.rs`, `exp`.
 fn exp_scaled(lo: &BigInt, hi: &BigInt, q: u32) -> (BigInt, BigInt) {
     let one = pow2(q);
     let half = pow2(q - 1);
@@ -797,6 +803,10 @@ impl Real {
     /// one (`n = 1`, `a = b`, or an exact root `m` with `m^b = n^a`, tested
     /// for `b ≤ 64`), otherwise enclosed through `exp(ln(n)·a/b)` as
     /// narrowly as asked (the values of LinuxCNC's depth law `n^(1/R)`).
+    ///
+    /// Twin: `impl/src/engine/real.rs`, `power` (which tests the exact
+    /// root as `n = r^b` in integers: the same cases for `a/b` in lowest
+    /// terms).
     ///
     /// # Panics
     ///

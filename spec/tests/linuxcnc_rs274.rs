@@ -12,6 +12,9 @@
 //! printing) full depth, one pass more than the exact model. The test
 //! accepts that extra pass only when the exact model confirms the tie.
 //!
+//! The fixed-point engine (`cycleref::expand_linuxcnc`) must give the
+//! reference's moves on every one of these programs.
+//!
 //! G33 blocks (one to four per program, X and/or Z, K with up to six
 //! decimals) are checked the same way, through the pipeline's G32 engine
 //! and reference (`generated_g33_blocks_match_rs274`).
@@ -195,6 +198,9 @@ fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
         .collect();
     assert_eq!(calls, [cycle], "{what}: the reader's cycle\n{program}");
     let ours = expand(cycle).unwrap_or_else(|e| panic!("{what} refused: {e}\n{program}"));
+    // The fixed-point engine gives the reference's moves.
+    let engine: Vec<_> = cycleref::expand_linuxcnc(cycle).unwrap_or_else(|e| panic!("{what}: {e}")).collect();
+    assert_eq!(engine, ours, "{what}: the engine differs from the reference\n{program}");
     let out = rs274(program);
     let canon = rs274::read(&out).unwrap();
     // The program's G0 to the start comes first; M5 and M2 add none.

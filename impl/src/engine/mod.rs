@@ -15,7 +15,8 @@
 //! | [`g32`] | the G32 single thread block ([`expand_g32`](g32::expand_g32)) | `spec/src/g32.rs` |
 //! | [`g75`] | the G75.1 trapezoidal groove ([`expand_g75`](g75::expand_g75), [`groove_profile`](g75::groove_profile)), split by concern: exact geometry, local contours, the absolute frame, roughing, the tail, the public profile | `spec/src/g75/` |
 //! | [`schedule`] | the G76 depth schedule, one level at a time ([`Schedule`](schedule::Schedule), public for the proofs' one-step harness) | `spec/src/g76.rs` (`next_depth`) |
-//! | [`real`] | dyadic fixed-point interval arithmetic and trigonometry for G75.1 | `spec/src/real.rs` |
+//! | [`linuxcnc`] | LinuxCNC's G76 ([`expand_linuxcnc`](linuxcnc::expand_linuxcnc), [`LinuxCncMoves`](linuxcnc::LinuxCncMoves), [`taper_pitch`](linuxcnc::taper_pitch)) | `spec/src/linuxcnc.rs` |
+//! | [`real`] | dyadic fixed-point interval arithmetic, trigonometry, logarithm, exponential and powers (G75.1, LinuxCNC's G76) | `spec/src/real.rs` |
 //!
 //! Where an engine restates a formula of the reference, the comment on the
 //! engine's function names its twin (file and function), and the twin names
@@ -51,6 +52,7 @@ pub mod g32;
 pub mod g75;
 pub mod g76;
 pub mod g92;
+pub mod linuxcnc;
 pub(crate) mod pass;
 pub mod real;
 pub mod schedule;
