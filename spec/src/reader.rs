@@ -326,6 +326,9 @@ struct State<'m> {
     /// LinuxCNC: G33 is the motion mode in force (likewise: every block
     /// needs its K).
     lcnc_g33: bool,
+    /// LinuxCNC: the previous block with words was a G33 move, so the
+    /// synchronisation runs on (R-LCNC-G33).
+    lcnc_thread_run: bool,
 }
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
@@ -512,6 +515,7 @@ impl<'m> LineReader<'m> {
                 x_mode: machine.x_mode,
                 lcnc_g76: false,
                 lcnc_g33: false,
+                lcnc_thread_run: false,
             },
             at: None,
             line: 0,

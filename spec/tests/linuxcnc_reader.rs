@@ -127,7 +127,7 @@ fn what_the_profile_does_not_read() {
 #[test]
 fn g33_blocks() {
     // G33 X Z K: one synchronised move, K per revolution along it (not
-    // halved in G7), each block its own synchronisation.
+    // halved in G7); a G33 after a G33 continues the synchronisation.
     let src = "G18 G21 G7\nM3 S500\nG0 X20 Z1\nG33 X18 Z-5 K1.5\nG33 Z-8 K2\n";
     let p = read(src, &machine()).unwrap();
     let blocks: Vec<_> = p.threads().collect();
@@ -139,6 +139,8 @@ fn g33_blocks() {
         (Point::new(200_000, 10_000), Point::new(180_000, -50_000), XMode::Diameter)
     );
     assert_eq!((g.lead.mantissa, g.lead.scale, g.sync), (15, 1, true));
+    // The second G33 follows the first: the synchronisation runs on.
+    assert!(!blocks[1].g32.sync);
     assert_eq!(
         (blocks[1].g32.start, blocks[1].g32.end),
         (Point::new(180_000, -50_000), Point::new(180_000, -80_000))

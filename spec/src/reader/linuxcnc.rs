@@ -26,6 +26,8 @@ const IJK_MISSING: &str = "LinuxCNC: \"I J or K words missing with G76\"";
 impl State<'_> {
     /// One block of a LinuxCNC program.
     pub(super) fn linuxcnc_block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+        // A block with words ends a run of G33 moves unless it is one.
+        let continuing = !block.words.is_empty() && std::mem::take(&mut self.lcnc_thread_run);
         let mut motion = None;
         let mut g76 = false;
         let mut g33 = false;
@@ -109,7 +111,7 @@ impl State<'_> {
             return self.linuxcnc_g76(block).map(Item::LinuxCncG76);
         }
         if g33 || (self.lcnc_g33 && axes) {
-            return self.linuxcnc_g33(block).map(Item::G32);
+            return self.linuxcnc_g33(block, continuing).map(Item::G32);
         }
         if axes && !block.all('G').any(|w| w.number().integer() == Some(4)) {
             self.x = self.axis(&block, block.get('X')?, None, self.x)?;
@@ -170,9 +172,11 @@ impl State<'_> {
     /// `G33 X Z K`: one move synchronised with the spindle, K the distance
     /// per revolution along the move (LinuxCNC's `START_SPEED_FEED_SYNCH(K)`
     /// before `STRAIGHT_FEED`, interp_convert.cc l.5520-5531; not halved in
-    /// G7). Every G33 block starts its own synchronisation (rs274 prints a
-    /// `START_SPEED_FEED_SYNC` for each).
-    fn linuxcnc_g33<'a>(&mut self, block: Block<'a>) -> Result<G32Call<'a>, ProgramError> {
+    /// G7). The spindle index is awaited only where synchronisation starts:
+    /// a G33 right after another G33 continues it (`continuing`; the
+    /// trajectory planner waits only "if we aren't already synced",
+    /// tp.c l.3531-3538, R-LCNC-G33).
+    fn linuxcnc_g33<'a>(&mut self, block: Block<'a>, continuing: bool) -> Result<G32Call<'a>, ProgramError> {
         if let Some(f) = block.get('F')? {
             return Err(err(
                 &block,
@@ -219,12 +223,13 @@ impl State<'_> {
             lead,
             run_out: G32RunOut::None,
             start_angle: StartAngle::ZERO,
-            sync: true,
+            sync: !continuing,
         };
         g32.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.x = Some(end.x);
         self.z = Some(end.z);
         self.moved = true;
+        self.lcnc_thread_run = true;
         Ok(G32Call { code: "G33", block, g32 })
     }
 
