@@ -27,13 +27,16 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use cycleref::units::MAX_LENGTH;
-use cycleref::{InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units};
+use cycleref::{
+    InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units, XMode,
+};
 use std::collections::VecDeque;
 use std::io::BufRead;
 
 use cycleref_spec::lex::{Block, Lexer, Word};
 use cycleref_spec::pipeline::Cycle;
 use cycleref_spec::pipeline::Moves;
+use cycleref_spec::profile::Dialect;
 use cycleref_spec::reader::{length_word, q_word, Item, MotionMode};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
@@ -77,8 +80,10 @@ enum Context {
     Source { line: usize },
     /// A G76 or G78 move (`code`: which).
     G76 { code: &'static str, line: usize, pass: Pass, role: Role },
-    /// A G32 move.
-    G32 { line: usize, role: Role },
+    /// A G32 move (or LinuxCNC's G33: `code`).
+    G32 { code: &'static str, line: usize, role: Role },
+    /// A move of LinuxCNC's G76 (the `linuxcnc` profile).
+    LinuxCnc { line: usize, pass: Pass, role: Role },
     /// A G75.1 move (line of block 2).
     G75 { line: usize, role: Role },
     /// A G92 move, of start `start`.
@@ -102,6 +107,21 @@ struct Step {
     sync: bool,
     /// Our annotation, or the trace's line.
     context: Context,
+}
+
+/// G33's K as a lead: > 0, at most six decimals, kept with the fewest
+/// decimals (as the reader keeps it).
+fn k_lead(b: &Block, w: &Word) -> Result<Lead, String> {
+    let bad = || at(b, Some(w), "K of G33 must be > 0 with at most 6 decimals");
+    let d = w.number().decimal().ok_or_else(bad)?;
+    let scaled = d.checked_mul(Decimal::from(1_000_000)).filter(|s| s.fract().is_zero()).ok_or_else(bad)?;
+    let mut mantissa = u64::try_from(scaled).ok().filter(|m| *m > 0).ok_or_else(bad)?;
+    let mut scale = 6;
+    while scale > 0 && mantissa % 10 == 0 {
+        mantissa /= 10;
+        scale -= 1;
+    }
+    Ok(Lead { word: LeadWord::F, mantissa, scale })
 }
 
 /// A message naming a block's line and, when there is one, its word.
@@ -174,6 +194,12 @@ struct Tracker<'m> {
     in_thread: bool,
     /// Reading a vendor's trace: every word must be one of a plain move.
     strict: bool,
+    /// The linuxcnc profile: G7/G8 switch the X mode, G33 K is a thread,
+    /// U and W are no incremental words, and X is held as a diameter
+    /// (reading R-CHECKLCNC).
+    linuxcnc: bool,
+    /// The X mode in force (G7/G8 on the linuxcnc profile).
+    x_mode: XMode,
 }
 
 impl<'m> Tracker<'m> {
@@ -187,7 +213,39 @@ impl<'m> Tracker<'m> {
             lead: None,
             in_thread: false,
             strict,
+            linuxcnc: machine.profile.dialect == Dialect::LinuxCnc,
+            x_mode: machine.x_mode,
         }
+    }
+
+    /// X as the check holds it: as written on the FANUC-style profiles; a
+    /// diameter on the linuxcnc profile, whose programs switch between
+    /// G7 and G8 (a radius doubles, exactly).
+    fn held_x(&self, x: i64, mode: XMode) -> i64 {
+        if self.linuxcnc && mode == XMode::Radius {
+            x.saturating_mul(2)
+        } else {
+            x
+        }
+    }
+
+    /// G7/G8 on the linuxcnc profile: the position kept in the old mode
+    /// converts (an odd diameter has no radius in increments).
+    fn switch_x_mode(&mut self, b: &Block, w: &Word, to: XMode) -> Result<(), String> {
+        if to == self.x_mode {
+            return Ok(());
+        }
+        if let Some(x) = self.x {
+            self.x = Some(match to {
+                XMode::Diameter => x.saturating_mul(2),
+                XMode::Radius if x % 2 == 0 => x / 2,
+                XMode::Radius => {
+                    return Err(at(b, Some(w), "G8 after an odd diameter: its radius is no increment"))
+                }
+            });
+        }
+        self.x_mode = to;
+        Ok(())
     }
 
     /// A trace's words that the check does not read are refused: they might
@@ -196,6 +254,30 @@ impl<'m> Tracker<'m> {
         let dwell = b.all('G').any(|g| g.number().integer() == Some(4));
         for w in &b.words {
             let ok = match w.letter {
+                'G' if self.linuxcnc => {
+                    let g = w.number().integer().filter(|_| w.number().decimal().is_some_and(|d| d.fract().is_zero()));
+                    if !matches!(g, Some(0..=4 | 7 | 8 | 18 | 20 | 21 | 33 | 40 | 54..=59 | 61 | 64 | 90 | 94..=97)) {
+                        return Err(at(
+                            b,
+                            Some(w),
+                            "a trace holds plain G0/G1/G2/G3/G33 blocks, not canned cycles or other modes",
+                        ));
+                    }
+                    let unit = match self.units.unit {
+                        InputUnit::Metric => 21,
+                        InputUnit::Inch => 20,
+                    };
+                    if matches!(g, Some(20 | 21)) && g != Some(unit) {
+                        return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
+                    }
+                    true
+                }
+                'U' | 'W' | 'Q' | 'I' | 'J' if self.linuxcnc && motion == Kind::Thread => false,
+                'U' | 'W' if self.linuxcnc => false,
+                'F' if self.linuxcnc && motion == Kind::Thread => {
+                    return Err(at(b, Some(w), "F in a G33 block (LinuxCNC: \"F word used with a g33/g33.1\")"))
+                }
+                'K' if self.linuxcnc && motion == Kind::Thread => true,
                 'G' => {
                     let g = w.number().integer();
                     if !matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99)) {
@@ -264,8 +346,11 @@ impl<'m> Tracker<'m> {
                 Some(1) => self.motion = Kind::Feed,
                 Some(2) => self.motion = Kind::ArcCw,
                 Some(3) => self.motion = Kind::ArcCcw,
-                Some(32) => self.motion = Kind::Thread,
-                Some(50) => g50 = true,
+                Some(32) if !self.linuxcnc => self.motion = Kind::Thread,
+                Some(33) if self.linuxcnc => self.motion = Kind::Thread,
+                Some(7) if self.linuxcnc => self.switch_x_mode(b, w, XMode::Diameter)?,
+                Some(8) if self.linuxcnc => self.switch_x_mode(b, w, XMode::Radius)?,
+                Some(50) if !self.linuxcnc => g50 = true,
                 Some(4) => dwell = true,
                 _ => {}
             }
@@ -273,7 +358,16 @@ impl<'m> Tracker<'m> {
         if self.strict {
             self.strict_words(b, self.motion)?;
         }
+        if self.linuxcnc && self.motion == Kind::Thread {
+            // G33's K: the distance per revolution along the move; every
+            // G33 block gives it (LinuxCNC: "K word missing with g33/g33.1").
+            let k = b.get('K').map_err(pe)?.ok_or_else(|| at(b, None, "a G33 block without K"))?;
+            self.lead = Some(k_lead(b, k)?);
+        }
         for letter in ['F', 'I'] {
+            if self.linuxcnc && self.motion == Kind::Thread {
+                break;
+            }
             if let Some(w) = b.get(letter).map_err(pe)? {
                 // I is an arc centre outside G32; F is shared with the feed.
                 if letter == 'F' || self.motion == Kind::Thread {
@@ -304,8 +398,9 @@ impl<'m> Tracker<'m> {
             }
             return Ok(None);
         }
-        let x = coord('X', 'U', self.x)?;
-        let z = coord('Z', 'W', self.z)?;
+        let (u, w) = if self.linuxcnc { ('\0', '\0') } else { ('U', 'W') };
+        let x = coord('X', u, self.x)?;
+        let z = coord('Z', w, self.z)?;
         if g50 {
             (self.x, self.z) = (x, z);
             return Ok(None);
@@ -315,19 +410,21 @@ impl<'m> Tracker<'m> {
         let (Some(x), Some(z)) = (x, z) else {
             return Ok(None);
         };
-        let to = Point::new(x, z);
         if from == (Some(x), Some(z)) {
             return Ok(None);
         }
+        let to = Point::new(self.held_x(x, self.x_mode), z);
         let from = match from {
-            (Some(fx), Some(fz)) => Some(Point::new(fx, fz)),
+            (Some(fx), Some(fz)) => Some(Point::new(self.held_x(fx, self.x_mode), fz)),
             _ => None,
         };
         let kind = self.motion;
         let centre = if kind.is_arc() { Some(self.centre(b, from)?) } else { None };
         let sync = kind == Kind::Thread && !self.in_thread;
         let angle = match (kind, b.get('Q').map_err(pe)?) {
-            (Kind::Thread, Some(w)) if sync => q_word(self.machine, self.units, b, w).map_err(pe)?,
+            (Kind::Thread, Some(w)) if sync && !self.linuxcnc => {
+                q_word(self.machine, self.units, b, w).map_err(pe)?
+            }
             _ => StartAngle::ZERO,
         };
         self.in_thread = kind == Kind::Thread;
@@ -380,13 +477,18 @@ impl<'m> Tracker<'m> {
     }
 
     /// One of our expanded moves: the tracker follows it.
-    fn inject(&mut self, m: &Move, context: Context) -> Step {
+    fn inject(&mut self, m: &Move, context: Context, x_mode: XMode) -> Step {
         let from = match (self.x, self.z) {
-            (Some(x), Some(z)) => Some(Point::new(x, z)),
+            (Some(x), Some(z)) => Some(Point::new(self.held_x(x, self.x_mode), z)),
             _ => None,
         };
+        // The cycle's moves are in the X mode of its block, which is the
+        // one in force.
+        self.x_mode = x_mode;
         self.x = Some(m.to.x);
         self.z = Some(m.to.z);
+        let to = Point::new(self.held_x(m.to.x, x_mode), m.to.z);
+        let centre_of = |c: Point| Point::new(self.held_x(c.x, x_mode), c.z);
         let (kind, lead, angle, sync, centre) = match m.motion {
             Motion::Rapid => (Kind::Rapid, None, StartAngle::ZERO, false, None),
             Motion::Feed => (Kind::Feed, None, StartAngle::ZERO, false, None),
@@ -398,7 +500,7 @@ impl<'m> Tracker<'m> {
                 None,
                 StartAngle::ZERO,
                 false,
-                Some(centre),
+                Some(centre_of(centre)),
             ),
         };
         self.motion = kind;
@@ -406,7 +508,7 @@ impl<'m> Tracker<'m> {
         if let Some(l) = lead {
             self.lead = Some(l);
         }
-        Step { kind, from, to: m.to, centre, lead, angle, sync, context }
+        Step { kind, from, to, centre, lead, angle, sync, context }
     }
 
     /// The motion mode in force again after a one-shot cycle.
@@ -468,11 +570,26 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
     {
         match cycle {
             Cycle::LinuxCnc(call) => {
-                return Err(format!(
-                    "{}: line {}: check does not compare LinuxCNC's G76 yet (issue 15); `cycleref expand \
-                     --profile linuxcnc` gives its moves",
-                    job.name, call.block.line
-                ))
+                // The thread space (reading R-CHECKLCNC): between the peak
+                // line X₀ − σ|I| and the full-depth cut, over the Z the
+                // synchronised moves span; X as the check holds it on this
+                // profile, a diameter.
+                let c = &call.cycle;
+                let f = i128::from(if c.x_mode == XMode::Radius { 2 } else { 1 });
+                let sigma = if c.internal() { -1 } else { 1 };
+                let x0 = i128::from(c.start.x);
+                let peak = f * (x0 - sigma * i128::from(c.peak_offset.abs()));
+                let root = f * (x0 - sigma * i128::from(c.peak_offset.abs() + c.full_depth));
+                let mut prev = c.start;
+                let mut zs: Vec<(i128, i128)> = Vec::new();
+                for m in job.expand(cycle)? {
+                    if matches!(m.motion, Motion::Thread { .. }) {
+                        zs.push((peak, i128::from(prev.z)));
+                        zs.push((root, i128::from(m.to.z)));
+                    }
+                    prev = m.to;
+                }
+                out.extend(Region::spanning(&zs));
             }
             Cycle::G76(call) => {
                 let c = &call.cycle;
@@ -558,6 +675,10 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
     Ok(out)
 }
 
+/// The pass of a cycle's move that belongs to no pass (the return).
+const NO_PASS: Pass =
+    Pass { kind: PassKind::Rough, number: 0, start: 0, depth: 0, cut: 0, flank: cycleref::Flank::Right };
+
 /// How many cycles' regions are kept for judging split rapids: the cycle
 /// being compared and its neighbours.
 const REGION_CYCLES: usize = 3;
@@ -570,6 +691,8 @@ struct Running {
     line: usize,
     /// G76 (annotated with its passes), G32, or G75.1.
     kind: RunningKind,
+    /// The X mode of the cycle's moves.
+    x_mode: XMode,
     /// For a one-shot cycle (G76, G75.1), the motion mode in force again
     /// after it; `None` for G32, which leaves its own mode.
     restore: Option<Option<MotionMode>>,
@@ -581,6 +704,7 @@ enum RunningKind {
     G32,
     G75,
     G92,
+    LinuxCnc,
 }
 
 /// Our toolpath, a step at a time: the program's motion blocks and its
@@ -612,24 +736,26 @@ impl<'j> OurSteps<'j> {
         loop {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
+                    // A move to where the tool is, is no move, in our
+                    // toolpath as in a trace (LinuxCNC's G76 ends with a
+                    // rapid of no length when X is not programmed).
+                    let t = &self.tracker;
+                    if t.x_mode == run.x_mode && (t.x, t.z) == (Some(m.to.x), Some(m.to.z)) {
+                        continue;
+                    }
                     let (line, role) = (run.line, m.role);
                     let context = match run.kind {
                         RunningKind::G76 => {
-                            let pass = m.pass.unwrap_or(Pass {
-                                kind: PassKind::Rough,
-                                number: 0,
-                                start: 0,
-                                depth: 0,
-                                cut: 0,
-                                flank: cycleref::Flank::Right,
-                            });
-                            Context::G76 { code: run.code, line, pass, role }
+                            Context::G76 { code: run.code, line, pass: m.pass.unwrap_or(NO_PASS), role }
                         }
-                        RunningKind::G32 => Context::G32 { line, role },
+                        RunningKind::G32 => Context::G32 { code: run.code, line, role },
+                        RunningKind::LinuxCnc => {
+                            Context::LinuxCnc { line, pass: m.pass.unwrap_or(NO_PASS), role }
+                        }
                         RunningKind::G92 => Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role },
                         RunningKind::G75 => Context::G75 { line, role },
                     };
-                    return Some(Ok((self.tracker.inject(&m, context), self.segment)));
+                    return Some(Ok((self.tracker.inject(&m, context, run.x_mode), self.segment)));
                 }
                 // G76 and G75.1 are one-shot: the motion mode before them is
                 // in force again.
@@ -660,13 +786,19 @@ impl<'j> OurSteps<'j> {
                     moves,
                     code: cycle.code(),
                     line: cycle.line(),
+                    x_mode: match cycle {
+                        Cycle::G76(c) => c.cycle.x_mode,
+                        Cycle::G32(c) => c.g32.x_mode,
+                        Cycle::G75(c) => c.cycle.x_mode,
+                        Cycle::G92(c) => c.cycle.x_mode,
+                        Cycle::LinuxCnc(c) => c.cycle.x_mode,
+                    },
                     kind: match cycle {
                         Cycle::G76(_) => RunningKind::G76,
                         Cycle::G32(_) => RunningKind::G32,
                         Cycle::G75(_) => RunningKind::G75,
                         Cycle::G92(_) => RunningKind::G92,
-                        // Not reached: regions_of refuses it above.
-                        Cycle::LinuxCnc(_) => RunningKind::G76,
+                        Cycle::LinuxCnc(_) => RunningKind::LinuxCnc,
                     },
                     restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
                 });
@@ -1241,7 +1373,7 @@ pub fn overlay(
     let last = widened.iter().map(|r| r.1).max().unwrap_or(0);
     let mut per_cycle = vec![Vec::new(); cycles.len()];
     let mut dropped = 0_usize;
-    for (i, step) in trace_steps(source, is_csv(trace), &job.machine, units)
+    for (i, step) in trace_steps(source, format_of(trace), &job.machine, units)
         .map_err(|e| format!("{name}: {e}"))?
         .enumerate()
     {
@@ -1267,8 +1399,120 @@ pub fn overlay(
 }
 
 /// True when the trace at `trace` is a CSV (by its extension).
-fn is_csv(trace: &Path) -> bool {
-    trace.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"))
+/// The format of a trace file, by its extension.
+fn format_of(trace: &Path) -> TraceFormat {
+    match trace.extension() {
+        Some(e) if e.eq_ignore_ascii_case("csv") => TraceFormat::Csv,
+        Some(e) if e.eq_ignore_ascii_case("canon") => TraceFormat::Rs274,
+        _ => TraceFormat::Nc,
+    }
+}
+
+/// The kinds of trace `check` reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TraceFormat {
+    /// An expanded program (plain motion blocks).
+    Nc,
+    /// A CSV of moves.
+    Csv,
+    /// LinuxCNC's canonical output (`rs274 -g FILE < /dev/null > T.canon`),
+    /// on the linuxcnc profile.
+    Rs274,
+}
+
+/// The vendor's toolpath from LinuxCNC's canonical output (reading
+/// R-CHECKLCNC): `STRAIGHT_TRAVERSE` is a rapid, `STRAIGHT_FEED` a feed,
+/// or a thread move at the pitch of the `START_SPEED_FEED_SYNC` in force;
+/// synchronisation starts at a thread move that follows no thread move
+/// (LinuxCNC's planner waits for the index only then). X is printed as a
+/// radius: the check holds it as a diameter on this profile.
+struct CanonTrace<'t> {
+    source: Box<dyn BufRead + 't>,
+    buf: Vec<u8>,
+    line: usize,
+    units: Units,
+    pitch: Option<Lead>,
+    in_thread: bool,
+    here: Option<Point>,
+}
+
+impl CanonTrace<'_> {
+    /// A printed length in increments (X doubled: a diameter).
+    fn increments(&self, v: Decimal, factor: i64, what: &str) -> Result<i64, String> {
+        let scaled = v
+            .checked_mul(Decimal::from(self.units.per_unit() * factor))
+            .filter(|s| s.fract().is_zero())
+            .ok_or_else(|| format!("line {}: {what} {v} is not a whole number of increments", self.line))?;
+        i64::try_from(scaled)
+            .ok()
+            .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
+            .ok_or_else(|| format!("line {}: {what} {v} is beyond the range table", self.line))
+    }
+
+    fn step(&mut self) -> Result<Option<Step>, String> {
+        loop {
+            self.line += 1;
+            let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
+                None => return Ok(None),
+                Some(t) => t?.to_string(),
+            };
+            let call = cycleref_spec::rs274::call(&text, self.line).map_err(|e| e.to_string())?;
+            match call {
+                Some(cycleref_spec::rs274::CanonCall::StartSync { pitch }) => {
+                    let bad =
+                        || format!("line {}: pitch {pitch} is not a lead of at most 6 decimals", self.line);
+                    let mut mantissa = pitch
+                        .checked_mul(Decimal::from(1_000_000))
+                        .filter(|s| s.fract().is_zero())
+                        .and_then(|s| u64::try_from(s).ok())
+                        .filter(|m| *m > 0)
+                        .ok_or_else(bad)?;
+                    let mut scale = 6;
+                    while scale > 0 && mantissa % 10 == 0 {
+                        mantissa /= 10;
+                        scale -= 1;
+                    }
+                    self.pitch = Some(Lead { word: LeadWord::F, mantissa, scale });
+                }
+                Some(cycleref_spec::rs274::CanonCall::StopSync) => self.pitch = None,
+                Some(cycleref_spec::rs274::CanonCall::Motion { rapid, x, z }) => {
+                    let to = Point::new(self.increments(x, 2, "X")?, self.increments(z, 1, "Z")?);
+                    let from = self.here.replace(to);
+                    if from == Some(to) {
+                        continue;
+                    }
+                    let kind = match (rapid, self.pitch) {
+                        (true, _) => Kind::Rapid,
+                        (false, None) => Kind::Feed,
+                        (false, Some(_)) => Kind::Thread,
+                    };
+                    let sync = kind == Kind::Thread && !self.in_thread;
+                    self.in_thread = kind == Kind::Thread;
+                    let lead = if kind == Kind::Thread { self.pitch } else { None };
+                    let context = Context::Source { line: self.line };
+                    return Ok(Some(Step {
+                        kind,
+                        from,
+                        to,
+                        centre: None,
+                        lead,
+                        angle: StartAngle::ZERO,
+                        sync,
+                        context,
+                    }));
+                }
+                None => {}
+            }
+        }
+    }
+}
+
+impl Iterator for CanonTrace<'_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.step().transpose().map(|r| r.map(|s| (s, 0)))
+    }
 }
 
 /// The trace's name and a buffered reader of it (`-`: standard input).
@@ -1288,11 +1532,24 @@ type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), String>> + 't>
 /// skipped).
 fn trace_steps<'t, 'm: 't>(
     source: Box<dyn BufRead + 't>,
-    is_csv: bool,
+    format: TraceFormat,
     machine: &'m Machine,
     units: Units,
 ) -> Result<TraceSteps<'t>, String> {
-    Ok(if is_csv {
+    Ok(if format == TraceFormat::Rs274 {
+        if machine.profile.dialect != Dialect::LinuxCnc {
+            return Err("an rs274 trace (.canon) is LinuxCNC's: compare it with --profile linuxcnc".into());
+        }
+        Box::new(CanonTrace {
+            source,
+            buf: Vec::new(),
+            line: 0,
+            units,
+            pitch: None,
+            in_thread: false,
+            here: None,
+        })
+    } else if format == TraceFormat::Csv {
         Box::new(CsvTrace::new(source, machine, units)?)
     } else {
         Box::new(NcTrace {
@@ -1322,7 +1579,7 @@ pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
 /// What [`run`] does after the first phase, which gave `units`.
 fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result<Report, String> {
     let (name, source) = open_trace(trace)?;
-    compare_streams(job, source, is_csv(trace), units, tolerance).map_err(|e| match e {
+    compare_streams(job, source, format_of(trace), units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) => e,
         StreamError::Theirs(e) => format!("{name}: {e}"),
     })
@@ -1337,7 +1594,8 @@ fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result
 /// Our expansion's error, or the trace's, with its line.
 pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
     let units = job.validate()?.units;
-    compare_streams(job, Box::new(bytes), is_csv, units, tolerance).map_err(|e| match e {
+    let format = if is_csv { TraceFormat::Csv } else { TraceFormat::Nc };
+    compare_streams(job, Box::new(bytes), format, units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) | StreamError::Theirs(e) => e,
     })
 }
@@ -1421,13 +1679,13 @@ impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
 fn compare_streams(
     job: &Job,
     trace: Box<dyn BufRead + '_>,
-    is_csv: bool,
+    format: TraceFormat,
     units: Units,
     tolerance: u64,
 ) -> Result<Report, StreamError> {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
     let mut ours = Grouper::new(OurSteps::new(job, units).map_err(StreamError::Ours)?);
-    let steps = trace_steps(trace, is_csv, &job.machine, units).map_err(StreamError::Theirs)?;
+    let steps = trace_steps(trace, format, &job.machine, units).map_err(StreamError::Theirs)?;
     let mut theirs = Grouper::new(steps);
     let mut report = Report::new(units, tolerance);
     let mut pending: VecDeque<Group> = VecDeque::new();
@@ -1655,6 +1913,15 @@ fn extra(g: &Group) -> Divergence {
 /// The point a move ends at, in the manual's terms.
 fn point_name(c: Context, kind: Kind) -> &'static str {
     match c {
+        // LinuxCNC's own names of the moves (threading_pass, R-LCNC-PASS).
+        Context::LinuxCnc { role, .. } => match role {
+            Role::Approach => "pass start (\"back\" or \"in\")",
+            Role::LeadIn => "entry taper (\"in\", \"angled in\")",
+            Role::Cut => "end of \"over\"",
+            Role::RunOut => "exit taper end (\"angled out\")",
+            Role::Retract => "\"out\"",
+            _ => "the block's X Z (end of the cycle)",
+        },
         Context::G76 { role, .. }
         | Context::G32 { role, .. }
         | Context::G75 { role, .. }
@@ -1714,7 +1981,8 @@ impl Report {
                 let mut text = String::new();
                 self.describe(d, &mut text);
                 let cycle_line = d.ours.and_then(|s| match s.context {
-                    Context::G76 { line, .. }
+                    Context::LinuxCnc { line, .. }
+                    | Context::G76 { line, .. }
                     | Context::G32 { line, .. }
                     | Context::G75 { line, .. }
                     | Context::G92 { line, .. } => Some(line),
@@ -1759,7 +2027,14 @@ impl Report {
                 fixed(pass.depth, self.units),
                 fixed(pass.cut, self.units)
             ),
-            Context::G32 { line, .. } => format!("G32 at line {line}"),
+            Context::G32 { code, line, .. } => format!("{code} at line {line}"),
+            Context::LinuxCnc { line, pass, .. } => format!(
+                "G76 (LinuxCNC) at line {line}, {} pass {} (depth {}, cut {})",
+                if pass.kind == PassKind::Rough { "rough" } else { "full-depth" },
+                pass.number,
+                fixed(pass.depth, self.units),
+                fixed(pass.cut, self.units)
+            ),
             Context::G92 { line, start, .. } => format!("G92 at line {line}, start {start}"),
             Context::G75 { line, role } => match crate::format::plunge_of(role) {
                 Some(p) => format!("G75.1 at line {line}, layer {} plunge {}", p.layer, p.number),
@@ -1772,7 +2047,8 @@ impl Report {
     fn theirs_line(s: &Step) -> usize {
         match s.context {
             Context::Source { line } => line,
-            Context::G76 { line, .. }
+            Context::LinuxCnc { line, .. }
+            | Context::G76 { line, .. }
             | Context::G32 { line, .. }
             | Context::G75 { line, .. }
             | Context::G92 { line, .. } => line,
@@ -1958,8 +2234,17 @@ impl Report {
                 v["point"] = json!(point_name(s.context, s.kind));
                 v["role"] = json!(crate::format::role_name(role));
             }
-            Context::G32 { line, role } => {
-                v["cycle"] = json!({"code": "G32", "line": line});
+            Context::LinuxCnc { line, pass, role } => {
+                v["cycle"] = json!({"code": "G76", "line": line});
+                v["pass"] = json!({
+                    "kind": kind_name(pass.kind), "number": pass.number,
+                    "depth": fixed(pass.depth, self.units), "cut": fixed(pass.cut, self.units),
+                });
+                v["point"] = json!(point_name(s.context, s.kind));
+                v["role"] = json!(crate::format::role_name(role));
+            }
+            Context::G32 { code, line, role } => {
+                v["cycle"] = json!({"code": code, "line": line});
                 v["point"] = json!(point_name(s.context, s.kind));
                 v["role"] = json!(crate::format::role_name(role));
             }

@@ -4,7 +4,8 @@
 //! canonical motions as the original program with its G76 (same order,
 //! the same rapid or synchronised feed, X and Z within one printed unit,
 //! the same pitch). `rs274` missing fails with the command that installs
-//! it (`.ci/run` does).
+//! it (`.ci/run` does). `check` on this profile reads our expansion, LinuxCNC's
+//! canonical output (`.canon`) and a grblHAL-style trace (docs/peers).
 
 mod common;
 
@@ -24,14 +25,34 @@ fn stdout(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("utf-8")
 }
 
-fn rs274_motions(file: &std::path::Path) -> Vec<CanonMove> {
-    let out = Command::new("rs274").arg("-g").arg(file).stdin(Stdio::null()).output().unwrap_or_else(|e| {
-        panic!(
-            "cannot run `rs274` ({e}): install LinuxCNC's interpreter with `apt-get update && \
+/// What `rs274 -g file` prints. Two interpreters at once spoil each
+/// other's start (seen as an empty output): the calls take turns, each in
+/// a working directory of its own.
+fn rs274_output(file: &std::path::Path) -> Vec<u8> {
+    static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    static CALLS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("cycleref-rs274-cli-{}-{call}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    let out = Command::new("rs274")
+        .arg("-g")
+        .arg(file)
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap_or_else(|e| {
+            panic!(
+                "cannot run `rs274` ({e}): install LinuxCNC's interpreter with `apt-get update && \
                  DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends linuxcnc-uspace`"
-        )
-    });
-    rs274::read(&String::from_utf8_lossy(&out.stdout)).expect("canonical output")
+            )
+        });
+    let _ = std::fs::remove_dir_all(&dir);
+    out.stdout
+}
+
+fn rs274_motions(file: &std::path::Path) -> Vec<CanonMove> {
+    rs274::read(&String::from_utf8_lossy(&rs274_output(file))).expect("canonical output")
 }
 
 #[test]
@@ -91,19 +112,90 @@ fn nc_json_and_passes() {
 }
 
 #[test]
-fn what_is_not_there_yet_says_so() {
-    for cmd in ["plot", "check"] {
-        let mut args = vec![cmd, "--profile", "linuxcnc"];
-        let e = example();
-        args.push(&e);
-        if cmd == "check" {
-            args.extend(["--trace", &e]);
-        } else {
-            args.extend(["-o", "/dev/null"]);
+fn check_reads_its_own_expansion_and_linuxcnc_canonical_output() {
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    // Our own expansion (G0/G33 blocks) as a trace: the same toolpath.
+    let nc = dir.join("expanded.ngc");
+    std::fs::write(&nc, stdout(&["expand", "--profile", "linuxcnc", &example()])).expect("write");
+    let out =
+        run(&["check", "--profile", "linuxcnc", &example(), "--trace", &nc.display().to_string()], None);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(text.starts_with("AGREE: 104 moves of ours, 104 of the trace"), "{text}");
+    // LinuxCNC's own canonical output (.canon): the same toolpath within
+    // one increment (R-LCNC-EXACT: rs274 prints its binary64 radius with
+    // four decimals; we round the exact diameter).
+    let canon = dir.join("linuxcnc.canon");
+    let printed = rs274_output(std::path::Path::new(&example()));
+    std::fs::write(&canon, &printed).expect("write");
+    let canon = canon.display().to_string();
+    let out =
+        run(&["check", "--profile", "linuxcnc", "--tolerance", "1", &example(), "--trace", &canon], None);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    // Within 0 increments it differs, and says where: pass 10's X is
+    // 22 + (1.84 − 0.3·10^(2/3)) = 22.447523… in diameter, which we round to
+    // 22.4475; LinuxCNC prints its radius 11.223761… as 11.2238.
+    let out = run(&["check", "--profile", "linuxcnc", &example(), "--trace", &canon], None);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("rough pass 10") && text.contains("X22.4475") && text.contains("X22.4476"),
+        "{text}"
+    );
+    // A canonical trace is LinuxCNC's: refused on another profile.
+    let out = run(&["check", "--profile", "gsk988", &example(), "--trace", &canon], None);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn check_names_where_a_grblhal_style_trace_differs() {
+    // docs/peers: grblHAL's mc_thread on the same G76 words, transcribed
+    // (grblhal-out.txt, "straight"), written as G0/G33 blocks. grblHAL
+    // anchors the compound shift at full depth, so its first pass starts
+    // at Z 2 + (0.92 − 0.3)·tan 30° = 2.3580 where LinuxCNC starts at
+    // 2 − 0.3·tan 30° = 1.8268, and from X22 (the drive line) where
+    // LinuxCNC's "back" is at 22 + (1.84 − 0.6) = 23.24.
+    let peers = format!("{}/../docs/peers", env!("CARGO_MANIFEST_DIR"));
+    let program = format!("{peers}/linuxcnc-straight-g7.ngc");
+    let moves = std::fs::read_to_string(format!("{peers}/grblhal-out.txt")).expect("grblhal-out.txt");
+    let mut trace = String::from("G7 G18 G21 G90\nM3 S500\nG0 X22 Z2\n");
+    for line in moves.lines().skip(1).take_while(|l| !l.starts_with("==")) {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let value =
+            |key: &str| words.iter().position(|w| *w == key).map(|i| words[i + 1].trim_end_matches(')'));
+        let dia = words.iter().position(|w| *w == "(dia").map(|i| words[i + 1].trim_end_matches(')'));
+        let z = words.iter().find_map(|w| w.strip_prefix('Z'));
+        match (words.first(), dia, z) {
+            (Some(&"rapid"), Some(x), Some(z)) => trace.push_str(&format!("G0 X{x} Z{z}\n")),
+            (Some(&"sync"), Some(x), Some(z)) => {
+                trace.push_str(&format!("G33 X{x} Z{z} K{}\n", value("pitch").expect("pitch")));
+            }
+            _ => {}
         }
-        let out = run(&args, None);
-        assert_eq!(out.status.code(), Some(2), "{cmd}");
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains("LinuxCNC's G76") && err.contains("issue 15"), "{cmd}: {err}");
     }
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-grbl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let file = dir.join("grblhal.ngc");
+    std::fs::write(&file, &trace).expect("write");
+    let out =
+        run(&["check", "--profile", "linuxcnc", &program, "--trace", &file.display().to_string()], None);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let first = text.split("all divergences").next().unwrap_or_default();
+    assert!(first.contains("G76 (LinuxCNC) at line 5, rough pass 1"), "{text}");
+    assert!(
+        first.contains("ours   rapid X23.2400 Z1.8268") && first.contains("theirs rapid X22.0000 Z2.3580"),
+        "{text}"
+    );
+}
+
+#[test]
+fn plot_says_it_does_not_draw_it_yet() {
+    let e = example();
+    let out = run(&["plot", "--profile", "linuxcnc", &e, "-o", "/dev/null"], None);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("LinuxCNC's G76") && err.contains("issue 15"), "{err}");
 }

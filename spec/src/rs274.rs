@@ -75,57 +75,82 @@ pub fn read(text: &str) -> Result<Vec<CanonMove>, CanonError> {
     let mut pitch = None;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
-        let Some(call) = raw.split("N..... ").nth(1) else { continue };
-        let (name, rest) = call.split_once('(').unwrap_or((call, ""));
-        let args = rest.split(')').next().unwrap_or("");
-        let numbers = || -> Result<Vec<Decimal>, CanonError> {
-            args.split(',')
-                .map(|a| {
-                    a.trim().parse::<Decimal>().map_err(|e| CanonError {
-                        line,
-                        message: format!("{name}: argument `{}` is not a number ({e})", a.trim()),
-                    })
-                })
-                .collect()
-        };
-        match name.trim() {
-            "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" => {
-                let v = numbers()?;
-                if v.len() < 3 {
-                    return Err(CanonError {
-                        line,
-                        message: format!("{name}: fewer than three coordinates"),
-                    });
-                }
-                let rapid = name.trim() == "STRAIGHT_TRAVERSE";
-                out.push(CanonMove {
-                    rapid,
-                    x: v[0],
-                    z: v[2],
-                    pitch: if rapid { None } else { pitch },
-                    line,
-                });
+        match call(raw, line)? {
+            Some(CanonCall::Motion { rapid, x, z }) => {
+                out.push(CanonMove { rapid, x, z, pitch: if rapid { None } else { pitch }, line });
             }
-            "START_SPEED_FEED_SYNC" | "START_SPEED_FEED_SYNCH" => {
-                // Two arguments (pitch, velocity mode), or three with the
-                // spindle first (later LinuxCNC versions).
-                let v = numbers()?;
-                pitch = match v.len() {
-                    2 => Some(v[0]),
-                    3 => Some(v[1]),
-                    _ => {
-                        return Err(CanonError {
-                            line,
-                            message: format!("{name}: expected 2 or 3 arguments"),
-                        })
-                    }
-                };
-            }
-            "STOP_SPEED_FEED_SYNCH" | "STOP_SPEED_FEED_SYNC" => pitch = None,
-            _ => {}
+            Some(CanonCall::StartSync { pitch: p }) => pitch = Some(p),
+            Some(CanonCall::StopSync) => pitch = None,
+            None => {}
         }
     }
     Ok(out)
+}
+
+/// One canonical call that [`read`] uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CanonCall {
+    /// `STRAIGHT_TRAVERSE` (rapid) or `STRAIGHT_FEED` to X (a radius) Z.
+    Motion {
+        /// True for `STRAIGHT_TRAVERSE`.
+        rapid: bool,
+        /// X as printed.
+        x: Decimal,
+        /// Z as printed.
+        z: Decimal,
+    },
+    /// `START_SPEED_FEED_SYNC`: the following feeds are synchronised at
+    /// `pitch` per revolution along the path.
+    StartSync {
+        /// The pitch as printed.
+        pitch: Decimal,
+    },
+    /// `STOP_SPEED_FEED_SYNCH`.
+    StopSync,
+}
+
+/// The call of one line of `rs274`'s output (`line` names it in an
+/// error), or `None` for a call [`read`] skips or a line that is no call.
+///
+/// # Errors
+///
+/// A motion or synchronisation call whose arguments are not numbers.
+pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
+    let Some(call) = raw.split("N..... ").nth(1) else { return Ok(None) };
+    let (name, rest) = call.split_once('(').unwrap_or((call, ""));
+    let args = rest.split(')').next().unwrap_or("");
+    let numbers = || -> Result<Vec<Decimal>, CanonError> {
+        args.split(',')
+            .map(|a| {
+                a.trim().parse::<Decimal>().map_err(|e| CanonError {
+                    line,
+                    message: format!("{name}: argument `{}` is not a number ({e})", a.trim()),
+                })
+            })
+            .collect()
+    };
+    Ok(match name.trim() {
+        "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" => {
+            let v = numbers()?;
+            if v.len() < 3 {
+                return Err(CanonError { line, message: format!("{name}: fewer than three coordinates") });
+            }
+            Some(CanonCall::Motion { rapid: name.trim() == "STRAIGHT_TRAVERSE", x: v[0], z: v[2] })
+        }
+        "START_SPEED_FEED_SYNC" | "START_SPEED_FEED_SYNCH" => {
+            // Two arguments (pitch, velocity mode), or three with the
+            // spindle first (later LinuxCNC versions).
+            let v = numbers()?;
+            let pitch = match v.len() {
+                2 => v[0],
+                3 => v[1],
+                _ => return Err(CanonError { line, message: format!("{name}: expected 2 or 3 arguments") }),
+            };
+            Some(CanonCall::StartSync { pitch })
+        }
+        "STOP_SPEED_FEED_SYNCH" | "STOP_SPEED_FEED_SYNC" => Some(CanonCall::StopSync),
+        _ => None,
+    })
 }
 
 /// Our moves against `rs274`'s motions, call by call: the same kind
