@@ -192,10 +192,38 @@ fn check_names_where_a_grblhal_style_trace_differs() {
 }
 
 #[test]
-fn plot_says_it_does_not_draw_it_yet() {
-    let e = example();
-    let out = run(&["plot", "--profile", "linuxcnc", &e, "-o", "/dev/null"], None);
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("LinuxCNC's G76") && err.contains("issue 15"), "{err}");
+fn plot_draws_it_with_a_trace_over_it() {
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let svg = dir.join("m20.svg");
+    let out = run(&["plot", "--profile", "linuxcnc", &example(), "-o", &svg.display().to_string()], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&svg).expect("svg");
+    assert!(text.contains("G76 (LinuxCNC) blocks (lines 6-6)"), "the panel's title");
+    assert!(text.contains("exit taper (E, L bit 2)"));
+    // 17 passes, each synchronising once (a ring at each).
+    assert_eq!(text.matches("synchronisation starts").count(), 17);
+    // With the grblHAL-style trace of docs/peers, the first divergence is
+    // marked and zoomed.
+    let peers = format!("{}/../docs/peers", env!("CARGO_MANIFEST_DIR"));
+    let svg = dir.join("grbl.svg");
+    let out = run(
+        &[
+            "plot",
+            "--profile",
+            "linuxcnc",
+            &format!("{peers}/linuxcnc-straight-g7.ngc"),
+            "--trace",
+            &format!("{peers}/trace-grblhal-straight-linuxcnc.ngc"),
+            "-o",
+            &svg.display().to_string(),
+        ],
+        None,
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&svg).expect("svg");
+    assert!(
+        text.contains("first divergence, zoomed") && text.contains("ours rapid X23.2400 Z1.8268"),
+        "zoom"
+    );
 }

@@ -1,5 +1,7 @@
 //! The panels of a program's single-block threads in `cycleref plot`: one
-//! panel with every G32 block, one with every G92 block.
+//! panel with every G32 (or G33) block, one with every G92 block, one with
+//! every LinuxCNC G76 (drawn with X as a diameter, as `check` holds it on
+//! that profile, reading R-CHECKLCNC).
 //!
 //! G32 blocks are plain thread moves, usually many short ones cut pass by
 //! pass; a G92 block is one pass of a thread whose next blocks cut it
@@ -12,7 +14,7 @@
 //! every start). The program's own moves between the blocks are not drawn.
 
 use cycleref::{Motion, Move, Point, Role, Units, XMode};
-use cycleref_spec::reader::{G32Call, G92Call};
+use cycleref_spec::reader::{G32Call, G92Call, LinuxCncCall};
 use svg::node::element::{Circle, Group, Title};
 
 use super::canvas::{
@@ -48,6 +50,22 @@ impl<'a> BlockPath<'a> {
         BlockPath { line: call.block.line, from: c.start, units: c.units, x_mode: c.x_mode, moves }
     }
 
+    /// A LinuxCNC G76 (the `linuxcnc` profile), its X doubled to a
+    /// diameter when the block is in G8, as `check` holds it (reading
+    /// R-CHECKLCNC), so that a trace's marks fall on it.
+    pub(super) fn linuxcnc(call: &LinuxCncCall<'_>, moves: &'a [Move]) -> BlockPath<'a> {
+        let c = &call.cycle;
+        let from = Point::new(c.start.x * (2 / c.x_mode.factor()), c.start.z);
+        BlockPath { line: call.block.line, from, units: c.units, x_mode: XMode::Diameter, moves }
+    }
+
+    /// A G33 block (the `linuxcnc` profile), X as [`BlockPath::linuxcnc`]'s.
+    pub(super) fn g33(call: &G32Call<'_>, moves: &'a [Move]) -> BlockPath<'a> {
+        let b = &call.g32;
+        let from = Point::new(b.start.x * (2 / b.x_mode.factor()), b.start.z);
+        BlockPath { line: call.block.line, from, units: b.units, x_mode: XMode::Diameter, moves }
+    }
+
     /// The path, for the zoomed panel.
     pub(super) fn ours(self) -> super::zoom::Ours<'a> {
         super::zoom::Ours { from: self.from, moves: self.moves, units: self.units, x_mode: self.x_mode }
@@ -76,20 +94,33 @@ pub(super) fn panel(
     );
     let total = u32::try_from(blocks.len()).unwrap_or(u32::MAX);
     let ramp_note = (total > 1).then(|| "light \u{2192} dark: first \u{2192} last block".to_string());
-    let g92 = code == "G92";
+    // G92 and LinuxCNC's G76 draw their rapids; they synchronise at every
+    // pass.
+    let g92 = code == "G92" || code == "G76 (LinuxCNC)";
     let first_blue = ramp(1, total.max(2));
     let mut entries = vec![
         (Swatch::Line(&first_blue, 1.8, None), format!("thread ({code}), one blue per block"), ramp_note),
-        (Swatch::Line(RUN_OUT, 3.0, None), "run-out (J, K)".into(), None),
+        (
+            Swatch::Line(RUN_OUT, 3.0, None),
+            if g92 && code != "G92" { "exit taper (E, L bit 2)" } else { "run-out (J, K)" }.into(),
+            None,
+        ),
     ];
-    let ring = if g92 { "each pass of each start" } else { "not continuing the block before" };
+    let ring = if code == "G92" {
+        "each pass of each start"
+    } else if g92 {
+        "each pass"
+    } else {
+        "not continuing the block before"
+    };
     entries.push((Swatch::Ring(POINT), "spindle synchronises".into(), Some(ring.into())));
     if g92 {
-        entries.push((
-            Swatch::Line(RAPID, 1.0, Some(RAPID_DASH)),
-            "rapid (G00)".into(),
-            Some("A \u{2192} B, retract, return to A".into()),
-        ));
+        let path = if code == "G92" {
+            "A \u{2192} B, retract, return to A"
+        } else {
+            "\"back\", \"in\", \"out\", to the end point"
+        };
+        entries.push((Swatch::Line(RAPID, 1.0, Some(RAPID_DASH)), "rapid (G00)".into(), Some(path.into())));
     }
     entries.push((
         Swatch::Line(RAPID, 1.0, Some("2 3")),

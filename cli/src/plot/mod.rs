@@ -34,7 +34,7 @@
 use std::collections::BTreeSet;
 
 use cycleref::{Move, Point};
-use cycleref_spec::reader::{G32Call, G76Call, G92Call};
+use cycleref_spec::reader::{G32Call, G76Call, G92Call, LinuxCncCall};
 use svg::node::element::{Group, Line, Rectangle};
 use svg::Document;
 
@@ -61,14 +61,22 @@ fn svg(
     cycles: &[(G76Call<'_>, Vec<Move>)],
     threads: &[(G32Call<'_>, Vec<Move>)],
     g92s: &[(G92Call<'_>, Vec<Move>)],
+    lcncs: &[(LinuxCncCall<'_>, Vec<Move>)],
     grooves: &[g75::Groove<'_>],
     overlay: Option<&Overlay>,
 ) -> Result<String, String> {
-    if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && grooves.is_empty() {
-        return Err(format!("{name}: no G76 cycle, G32 block, G92 block or G75.1 cycle to plot"));
+    if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && lcncs.is_empty() && grooves.is_empty() {
+        return Err(format!("{name}: no G76 cycle, G32 or G33 block, G92 block or G75.1 cycle to plot"));
     }
-    let threads: Vec<g32::BlockPath<'_>> = threads.iter().map(|(c, m)| g32::BlockPath::g32(c, m)).collect();
+    // G33 (the linuxcnc profile) is drawn with X as a diameter, as check
+    // holds it.
+    let thread_code = threads.first().map_or("G32", |(c, _)| c.code);
+    let threads: Vec<g32::BlockPath<'_>> = threads
+        .iter()
+        .map(|(c, m)| if c.code == "G33" { g32::BlockPath::g33(c, m) } else { g32::BlockPath::g32(c, m) })
+        .collect();
     let g92s: Vec<g32::BlockPath<'_>> = g92s.iter().map(|(c, m)| g32::BlockPath::g92(c, m)).collect();
+    let lcncs: Vec<g32::BlockPath<'_>> = lcncs.iter().map(|(c, m)| g32::BlockPath::linuxcnc(c, m)).collect();
     let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
     let first_line = marks.first().and_then(|m| m.cycle_line);
     // The zoomed panel of the first divergence, drawn last.
@@ -80,7 +88,9 @@ fn svg(
             .iter()
             .find(|(c, _)| Some(c.block.line) == line)
             .map(|(c, moves)| g76::ours(c, moves))
-            .or_else(|| threads.iter().chain(&g92s).find(|b| Some(b.line) == line).map(|b| b.ours()))
+            .or_else(|| {
+                threads.iter().chain(&g92s).chain(&lcncs).find(|b| Some(b.line) == line).map(|b| b.ours())
+            })
             .or_else(|| grooves.iter().find(|g| Some(g.line()) == line).map(g75::Groove::path));
         let (ours, theirs) = match ours {
             Some(ours) => (ours, line.map_or(&[][..], |l| o.points_for(l))),
@@ -90,7 +100,7 @@ fn svg(
                 let any = cycles
                     .first()
                     .map(|(c, m)| g76::ours(c, m))
-                    .or_else(|| threads.first().or(g92s.first()).map(|b| b.ours()))
+                    .or_else(|| threads.first().or(g92s.first()).or(lcncs.first()).map(|b| b.ours()))
                     .or_else(|| grooves.first().map(g75::Groove::path))?;
                 (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], ..any }, &[][..])
             }
@@ -100,6 +110,7 @@ fn svg(
     let panels = cycles.len()
         + usize::from(!threads.is_empty())
         + usize::from(!g92s.is_empty())
+        + usize::from(!lcncs.is_empty())
         + grooves.len()
         + usize::from(zoomed.is_some());
     let height = PANEL_HEIGHT * count(panels);
@@ -122,7 +133,7 @@ fn svg(
         doc = place(doc, group, index, true);
     }
     let mut before = cycles.len();
-    for (code, blocks) in [("G32", &threads), ("G92", &g92s)] {
+    for (code, blocks) in [(thread_code, &threads), ("G92", &g92s), ("G76 (LinuxCNC)", &lcncs)] {
         if blocks.is_empty() {
             continue;
         }
@@ -223,6 +234,17 @@ pub const MAX_OVERLAY_POINTS: usize = 50_000;
 /// with every panel). Counted: each G76 and G75.1 cycle and each G32 block.
 pub const MAX_CYCLES: usize = 24;
 
+/// The moves of a LinuxCNC block with X as a diameter, as `check` holds it
+/// on that profile (reading R-CHECKLCNC): doubled when the block is in G8.
+fn as_diameter(mut moves: Vec<Move>, x_mode: cycleref::XMode) -> Vec<Move> {
+    if x_mode == cycleref::XMode::Radius {
+        for m in &mut moves {
+            m.to.x = m.to.x.saturating_mul(2);
+        }
+    }
+    moves
+}
+
 /// Draws `job`'s cycles: those whose line (block 2 of G76 and G75.1,
 /// either block of G75.1, the G32 block) is in `lines`, or without
 /// `lines`, the first [`MAX_CYCLES`]. Returns the SVG document and, when
@@ -244,6 +266,7 @@ pub fn run(
     let mut cycles = Vec::new();
     let mut threads = Vec::new();
     let mut g92s = Vec::new();
+    let mut lcncs = Vec::new();
     let mut grooves = Vec::new();
     let (mut total, mut drawn) = (0_usize, 0_usize);
     // Where each G76 cycle drawn lies in the whole toolpath, by move index.
@@ -293,14 +316,16 @@ pub fn run(
             ranges.push((cycle.line(), from, position));
             match &item {
                 Item::G76(call) => cycles.push((call.detached(), moves)),
+                Item::G32(call) if call.code == "G33" => {
+                    let moves = as_diameter(moves, call.g32.x_mode);
+                    threads.push((call.detached(), moves));
+                }
                 Item::G32(call) => threads.push((call.detached(), moves)),
                 Item::G92(call) => g92s.push((call.detached(), moves)),
                 Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
                 Item::LinuxCncG76(call) => {
-                    return Err(crate::Failure::msg(format!(
-                        "{}: line {}: plot does not draw LinuxCNC's G76 yet (issue 15)",
-                        job.name, call.block.line
-                    )))
+                    let moves = as_diameter(moves, call.cycle.x_mode);
+                    lcncs.push((call.detached(), moves));
                 }
                 Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
@@ -319,7 +344,7 @@ pub fn run(
         Some(t) => Some(crate::check::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg = svg(&job.name, &cycles, &threads, &g92s, &grooves, overlay.as_ref())
+    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())
         .map_err(crate::Failure::Message)?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
