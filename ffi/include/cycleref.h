@@ -77,11 +77,12 @@ enum CyclerefCycle
 #endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
  {
     /**
-     * A G76 multiple thread-cutting cycle.
+     * A G76 multiple thread-cutting cycle (on the linuxcnc profile,
+     * LinuxCNC's G76).
      */
     CYCLEREF_CYCLE_G76 = 0,
     /**
-     * A G32 thread-cutting block.
+     * A G32 thread-cutting block (on the linuxcnc profile, a G33 block).
      */
     CYCLEREF_CYCLE_G32 = 1,
     /**
@@ -315,6 +316,11 @@ enum CyclerefProfile
      * GSK 988TA and the extended G76.
      */
     CYCLEREF_PROFILE_GSK988 = 2,
+    /**
+     * LinuxCNC 2.9: its one-block G76 and G33, G7/G8 (IS-C and radius X
+     * by default).
+     */
+    CYCLEREF_PROFILE_LINUX_CNC = 3,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

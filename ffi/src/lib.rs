@@ -255,6 +255,7 @@ fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Fail
         0 => ProfileName::Fanuc,
         1 => ProfileName::Gsk980,
         2 => ProfileName::Gsk988,
+        3 => ProfileName::LinuxCnc,
         v => return Err(Failure::invalid(format!("profile = {v} is not a CyclerefProfile"))),
     };
     let increment = types::increment(opts.increment).ok_or_else(|| {
@@ -306,8 +307,7 @@ impl CycleMoves {
             Cycle::G32(_) => CyclerefCycle::G32,
             Cycle::G75(_) => CyclerefCycle::G75,
             Cycle::G92(_) => CyclerefCycle::G92,
-            // LinuxCNC's G76 (the linuxcnc profile, which the C options do
-            // not select yet: issue 15) is a G76.
+            // LinuxCNC's G76 (the linuxcnc profile) is a G76.
             Cycle::LinuxCnc(_) => CyclerefCycle::G76,
         };
         Ok(CycleMoves { moves, cycle: kind, line: cycle.line(), decimals: cycle.units().decimals() })

@@ -54,6 +54,9 @@ pub enum CyclerefProfile {
     Gsk980 = 1,
     /// GSK 988TA and the extended G76.
     Gsk988 = 2,
+    /// LinuxCNC 2.9: its one-block G76 and G33, G7/G8 (IS-C and radius X
+    /// by default).
+    LinuxCnc = 3,
 }
 
 /// The increment system (`CyclerefOptions::increment`).
@@ -73,9 +76,10 @@ pub enum CyclerefIncrement {
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CyclerefCycle {
-    /// A G76 multiple thread-cutting cycle.
+    /// A G76 multiple thread-cutting cycle (on the linuxcnc profile,
+    /// LinuxCNC's G76).
     G76 = 0,
-    /// A G32 thread-cutting block.
+    /// A G32 thread-cutting block (on the linuxcnc profile, a G33 block).
     G32 = 1,
     /// A G75.1 radial trapezoidal groove cycle.
     G75 = 2,

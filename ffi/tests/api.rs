@@ -84,8 +84,11 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
             cycleref_spec::Item::G92(c) => out.extend(cycleref::expand_g92(&c.cycle).unwrap().map(|m| {
                 CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G92, c.block.line)
             })),
-            // The C options cannot select the linuxcnc profile yet.
-            cycleref_spec::Item::LinuxCncG76(_) => panic!("no LinuxCNC program through the C interface"),
+            cycleref_spec::Item::LinuxCncG76(c) => {
+                out.extend(cycleref::expand_linuxcnc(&c.cycle).unwrap().map(|m| {
+                    CyclerefMove::from_move(&m, c.cycle.units.decimals(), CyclerefCycle::G76, c.block.line)
+                }))
+            }
             // Named, not `_`: a new kind of item must be added here.
             cycleref_spec::Item::Source(_)
             | cycleref_spec::Item::G76Params(_)
@@ -93,6 +96,20 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
         }
     }
     out
+}
+
+#[test]
+fn linuxcnc_program_through_the_c_interface() {
+    // examples/linuxcnc-m20-taper.ngc: 17 passes of 6 moves and the closing
+    // rapid (cli/tests/linuxcnc.rs works the count), IS-C (4 decimals), X
+    // in G7 diameters as the program writes them.
+    let text = example("linuxcnc-m20-taper.ngc");
+    let moves = expand(&text, &options(CyclerefProfile::LinuxCnc)).unwrap();
+    assert_eq!(moves.len(), 17 * 6 + 1);
+    assert_eq!(moves, engine_moves(&text, &Machine::new(ProfileName::LinuxCnc)));
+    assert!(moves.iter().all(|m| m.cycle == CyclerefCycle::G76 && m.line == 6 && m.decimals == 4));
+    // Pass 1's "back" rapid: X 22 + (1.84 − 0.3) = 23.54, Z 2 − 0.15·tan 29.5°.
+    assert_eq!((moves[0].motion, moves[0].x, moves[0].z), (CyclerefMotion::Rapid, 235_400, 19_151));
 }
 
 #[test]
@@ -847,7 +864,7 @@ fn cursor_arguments() {
     let err = open(b"G00 X\xff;", &o).unwrap_err();
     assert_eq!(err.status, CyclerefStatus::InvalidArgument);
     assert!(err.message().contains("not UTF-8"), "{}", err.message());
-    let err = open(text.as_bytes(), &CyclerefOptions { profile: 3, ..o }).unwrap_err();
+    let err = open(text.as_bytes(), &CyclerefOptions { profile: 4, ..o }).unwrap_err();
     assert_eq!(err.status, CyclerefStatus::InvalidArgument);
     assert!(err.message().contains("profile"), "{}", err.message());
     let err = open(text.as_bytes(), &CyclerefOptions { params_toml_len: 3, ..o }).unwrap_err();

@@ -18,8 +18,9 @@ Move(cycle='G76', line=4, motion='rapid', x=Decimal('64.400'), z=Decimal('8.961'
 thread of the GSK 988TA manual, examples/gsk988-m68x6.nc.)
 
 Every function takes the machine as the ``cycleref`` command does:
-``profile`` (``"fanuc"``, ``"gsk980"``, ``"gsk988"``), ``increment``
-(``"is-b"``, ``"is-c"``), ``inch``, ``radius`` (X as a radius),
+``profile`` (``"fanuc"``, ``"gsk980"``, ``"gsk988"``, ``"linuxcnc"``),
+``increment`` (``"is-b"``, ``"is-c"``; ``None``, the default, is the
+profile's own: IS-B, or IS-C on ``linuxcnc``), ``inch``, ``radius`` (X as a radius),
 ``params`` (the path of a parameter file, as ``--params``) and ``engine``
 (``"impl"``, the fixed-point engine, or ``"spec"``, the exact reference
 model; both give the same moves). A program is its text (``str`` or
@@ -173,7 +174,7 @@ def expand(
     program: Any,
     *,
     profile: str = "gsk988",
-    increment: str = "is-b",
+    increment: str | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Any = None,
@@ -213,7 +214,7 @@ def iter_moves(
     program: Any,
     *,
     profile: str = "gsk988",
-    increment: str = "is-b",
+    increment: str | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Any = None,
@@ -368,7 +369,7 @@ def check(
     tolerance: int = 0,
     csv: bool = False,
     profile: str = "gsk988",
-    increment: str = "is-b",
+    increment: str | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Any = None,

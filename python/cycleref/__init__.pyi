@@ -25,7 +25,7 @@ __all__ = [
 
 Point = Tuple[Decimal, Decimal]
 _ProgramSource = Union[str, bytes, "os.PathLike[str]"]
-_ProfileName = Literal["fanuc", "gsk980", "gsk988"]
+_ProfileName = Literal["fanuc", "gsk980", "gsk988", "linuxcnc"]
 _IncrementName = Literal["is-b", "is-c"]
 _EngineName = Literal["impl", "spec"]
 _MotionName = Literal["rapid", "feed", "thread", "arc-cw", "arc-ccw"]
@@ -128,7 +128,7 @@ def expand(
     program: _ProgramSource,
     *,
     profile: _ProfileName = "gsk988",
-    increment: _IncrementName = "is-b",
+    increment: _IncrementName | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,
@@ -139,7 +139,7 @@ def iter_moves(
     program: _ProgramSource,
     *,
     profile: _ProfileName = "gsk988",
-    increment: _IncrementName = "is-b",
+    increment: _IncrementName | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,
@@ -153,7 +153,7 @@ def check(
     tolerance: int = 0,
     csv: bool = False,
     profile: _ProfileName = "gsk988",
-    increment: _IncrementName = "is-b",
+    increment: _IncrementName | None = None,
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,

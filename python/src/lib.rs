@@ -81,7 +81,7 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Program {
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn options(
     profile: &str,
-    increment: &str,
+    increment: Option<&str>,
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
@@ -91,27 +91,26 @@ fn options(
         "fanuc" => Profile::Fanuc,
         "gsk980" => Profile::Gsk980,
         "gsk988" => Profile::Gsk988,
-        p => return Err(PyValueError::new_err(format!("profile {p:?}: one of fanuc, gsk980, gsk988"))),
+        "linuxcnc" => Profile::LinuxCnc,
+        p => {
+            return Err(PyValueError::new_err(format!(
+                "profile {p:?}: one of fanuc, gsk980, gsk988, linuxcnc"
+            )))
+        }
     };
+    // None: the profile's own (IS-B; IS-C on linuxcnc).
     let increment = match increment {
-        "is-b" => IncrementSystem::IsB,
-        "is-c" => IncrementSystem::IsC,
-        i => return Err(PyValueError::new_err(format!("increment {i:?}: one of is-b, is-c"))),
+        None => None,
+        Some("is-b") => Some(IncrementSystem::IsB),
+        Some("is-c") => Some(IncrementSystem::IsC),
+        Some(i) => return Err(PyValueError::new_err(format!("increment {i:?}: one of is-b, is-c"))),
     };
     let engine = match engine {
         "impl" => Engine::Impl,
         "spec" => Engine::Spec,
         e => return Err(PyValueError::new_err(format!("engine {e:?}: one of impl, spec"))),
     };
-    Ok(Options {
-        profile: Some(profile),
-        increment: Some(increment),
-        inch,
-        radius,
-        params,
-        engine,
-        file: None,
-    })
+    Ok(Options { profile: Some(profile), increment, inch, radius, params, engine, file: None })
 }
 
 /// The job of `program` with `opts` (a text is named `name` in messages).
@@ -291,13 +290,13 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), (Failure, Option<Run
 /// `expand`: `(unit, decimals, [(code, line, params_line, from, start,
 /// [move tuple])])`.
 #[pyfunction]
-#[pyo3(signature = (program, *, profile="gsk988", increment="is-b", inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn expand<'py>(
     py: Python<'py>,
     program: Program,
     profile: &str,
-    increment: &str,
+    increment: Option<&str>,
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
@@ -403,13 +402,13 @@ impl MoveIter {
 /// `iter_moves`: checks the whole program first (the command's first
 /// phase), then an iterator over its moves.
 #[pyfunction]
-#[pyo3(signature = (program, *, profile="gsk988", increment="is-b", inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn iter_moves(
     py: Python<'_>,
     program: Program,
     profile: &str,
-    increment: &str,
+    increment: Option<&str>,
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
@@ -425,7 +424,7 @@ fn iter_moves(
 
 /// `check`: `(agree, divergences, text report, JSON report)`.
 #[pyfunction]
-#[pyo3(signature = (program, trace, *, tolerance=0, csv=false, profile="gsk988", increment="is-b", inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, trace, *, tolerance=0, csv=false, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn check(
     py: Python<'_>,
@@ -434,7 +433,7 @@ fn check(
     tolerance: u64,
     csv: bool,
     profile: &str,
-    increment: &str,
+    increment: Option<&str>,
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,

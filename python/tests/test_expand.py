@@ -272,3 +272,19 @@ def test_bad_options_are_value_errors(m68x6):
         cycleref.expand(m68x6, increment="is-a")
     with pytest.raises(TypeError):
         cycleref.expand(42)
+
+
+def test_linuxcnc_profile():
+    # examples/linuxcnc-m20-taper.ngc, worked in cli/tests/linuxcnc.rs: 15
+    # rough and 2 full-depth passes of 6 moves, and the closing rapid; IS-C
+    # by default on this profile; pass 1's "back" at X 22 + (1.84 - 0.3),
+    # Z 2 - 0.15 tan 29.5 deg; its entry taper at the taper pitch
+    # 1.5 sqrt(1 + 0.92^2) = 2.038235.
+    (cycle,) = cycleref.expand(example("linuxcnc-m20-taper.ngc"), profile="linuxcnc")
+    assert (cycle.code, cycle.line, cycle.decimals) == ("G76", 6, 4)
+    assert len(cycle.moves) == 17 * 6 + 1
+    assert rendered(cycle)[:2] == [("rapid", D("23.5400"), D("1.9151")), ("thread", D("21.5400"), D("1.9151"))]
+    assert cycle.moves[1].lead == "F2.038235"
+    # The reference model gives the same moves.
+    (ref,) = cycleref.expand(example("linuxcnc-m20-taper.ngc"), profile="linuxcnc", engine="spec")
+    assert rendered(ref) == rendered(cycle)

@@ -359,7 +359,7 @@ int main(int argc, char **argv) {
     CHECK_EQ(cycleref_expand(program, len, &opts, NULL, 5, &count, NULL),
              CYCLEREF_STATUS_INVALID_ARGUMENT);
     CyclerefOptions bad_opts = opts;
-    bad_opts.profile = 3;
+    bad_opts.profile = 4;
     CHECK_EQ(cycleref_expand(program, len, &bad_opts, moves, needed, &count, &err),
              CYCLEREF_STATUS_INVALID_ARGUMENT);
     CHECK(strstr(err.message, "profile") != NULL);
