@@ -16,6 +16,7 @@
 use crate::g75::{Corner, G75Cycle, PathType};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
 use crate::lead::{Lead, LeadWord};
+use crate::linuxcnc::LinuxCncG76;
 use crate::units::{IncrementSystem, InputUnit, Point, Units, XMode};
 
 /// M68x6 of the GSK 988TA manual (manuals/gsk988ta-g76.txt, O0013;
@@ -67,4 +68,28 @@ pub const G75_SEED: G75Cycle = G75Cycle {
     tool_width: None,
     path: PathType::Rough,
     corners: [Corner::SHARP; 4],
+};
+
+/// A LinuxCNC G76 with every feature of its passes
+/// (`spec/tests/data/lcnc-taper.ngc`, whose `rs274` output is checked in
+/// beside it): G8 (radius), from X14 Z2, `G76 P1.5 Z-20 I-1 J0.2 R1.5
+/// K0.92 Q29.5 H1 E1 L3`, IS-C metric: external, towards -Z, degression
+/// 1.5 (9 rough passes), a compound angle, a spring pass, entry and exit
+/// tapers.
+pub const LINUXCNC_TAPER: LinuxCncG76 = LinuxCncG76 {
+    units: Units { system: IncrementSystem::IsC, unit: InputUnit::Metric },
+    x_mode: XMode::Radius,
+    start: Point::new(140_000, 20_000),
+    end: Point::new(140_000, -200_000),
+    pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+    peak_offset: -10_000,
+    initial_depth: 2_000,
+    degression: 15_000,
+    full_depth: 9_200,
+    compound_angle: 295_000,
+    spring_passes: 1,
+    taper_distance: 10_000,
+    entry_taper: true,
+    exit_taper: true,
+    pass_limit: DEFAULT_PASS_LIMIT,
 };

@@ -201,23 +201,7 @@ proptest! {
 /// R-LCNC-TIE, with their counts.
 #[test]
 fn worked_cycles() {
-    let mut c = LinuxCncG76 {
-        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Metric },
-        x_mode: XMode::Radius,
-        start: Point::new(140_000, 20_000),
-        end: Point::new(140_000, -200_000),
-        pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
-        peak_offset: -10_000,
-        initial_depth: 2_000,
-        degression: 15_000,
-        full_depth: 9_200,
-        compound_angle: 295_000,
-        spring_passes: 1,
-        taper_distance: 10_000,
-        entry_taper: true,
-        exit_taper: true,
-        pass_limit: 1_000_000,
-    };
+    let mut c = cycleref::examples::LINUXCNC_TAPER;
     assert_eq!(same(&c).unwrap().len(), 11 * 6 + 1);
     // J0.1 R1.5 K0.4: δ_8 = 0.1·8^(2/3) = 0.4 = K exactly: 7 rough passes.
     c.initial_depth = 1_000;

@@ -132,23 +132,7 @@ fn linuxcnc_does_not_allocate() {
     // The taper thread of spec/tests/linuxcnc.rs (R1.5: every depth an
     // interval power), and G7 with the tie J0.1 R1.5 K0.4 (an exact power)
     // and a Q that needs the 512-bit tangent nowhere but is irrational.
-    let mut c = cycleref::LinuxCncG76 {
-        units: cycleref::Units { system: cycleref::IncrementSystem::IsC, unit: cycleref::InputUnit::Metric },
-        x_mode: cycleref::XMode::Radius,
-        start: Point::new(140_000, 20_000),
-        end: Point::new(140_000, -200_000),
-        pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
-        peak_offset: -10_000,
-        initial_depth: 2_000,
-        degression: 15_000,
-        full_depth: 9_200,
-        compound_angle: 295_000,
-        spring_passes: 1,
-        taper_distance: 10_000,
-        entry_taper: true,
-        exit_taper: true,
-        pass_limit: 1_000_000,
-    };
+    let mut c = cycleref::examples::LINUXCNC_TAPER;
     for tie in [false, true] {
         if tie {
             c.x_mode = cycleref::XMode::Diameter;

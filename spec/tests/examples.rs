@@ -25,3 +25,20 @@ fn g75_seed_is_the_seeds_program() {
     let grooves: Vec<_> = program.grooves().map(|c| c.cycle).collect();
     assert_eq!(grooves, [G75_SEED]);
 }
+
+#[test]
+fn linuxcnc_taper_is_its_program() {
+    // spec/tests/data/lcnc-taper.ngc, whose rs274 output is checked in
+    // beside it (spec/tests/linuxcnc.rs compares every call).
+    let text = include_str!("data/lcnc-taper.ngc");
+    let program = read(text, &Machine::new(ProfileName::LinuxCnc)).unwrap_or_else(|e| panic!("{e}"));
+    let cycles: Vec<_> = program
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            cycleref_spec::Item::LinuxCncG76(c) => Some(c.cycle),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(cycles, [cycleref::examples::LINUXCNC_TAPER]);
+}

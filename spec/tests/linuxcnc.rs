@@ -16,23 +16,7 @@ const MM: Units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metric 
 /// `G0 X14 Z2` then `G76 P1.5 Z-20 I-1 J0.2 R1.5 K0.92 Q29.5 H1 E1 L3` in G8
 /// (data/lcnc-taper.ngc).
 fn taper_cycle() -> LinuxCncG76 {
-    LinuxCncG76 {
-        units: MM,
-        x_mode: XMode::Radius,
-        start: Point::new(140_000, 20_000),
-        end: Point::new(140_000, -200_000),
-        pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
-        peak_offset: -10_000,
-        initial_depth: 2_000,
-        degression: 15_000,
-        full_depth: 9_200,
-        compound_angle: 295_000,
-        spring_passes: 1,
-        taper_distance: 10_000,
-        entry_taper: true,
-        exit_taper: true,
-        pass_limit: 1_000_000,
-    }
+    cycleref::examples::LINUXCNC_TAPER
 }
 
 #[test]

@@ -657,26 +657,10 @@ mod tests {
     extern crate std;
 
     use super::*;
-    use crate::units::{IncrementSystem, InputUnit, Units, XMode};
+    use crate::units::XMode;
 
     fn cycle() -> LinuxCncG76 {
-        LinuxCncG76 {
-            units: Units { system: IncrementSystem::IsC, unit: InputUnit::Metric },
-            x_mode: XMode::Radius,
-            start: Point::new(140_000, 20_000),
-            end: Point::new(140_000, -200_000),
-            pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
-            peak_offset: -10_000,
-            initial_depth: 2_000,
-            degression: 15_000,
-            full_depth: 9_200,
-            compound_angle: 295_000,
-            spring_passes: 1,
-            taper_distance: 10_000,
-            entry_taper: true,
-            exit_taper: true,
-            pass_limit: 1_000_000,
-        }
+        crate::examples::LINUXCNC_TAPER
     }
 
     #[test]
