@@ -1,5 +1,5 @@
 //! `cycleref vectors`: the checked-in corpus in `vectors/` is exactly what
-//! the generator writes for `--count 100 --seed 1`, it covers every feature
+//! the generator writes for `--count 105 --seed 1`, it covers every feature
 //! and every listed error kind, and every case replays: its program, read
 //! again with its machine settings, gives its expectation (the moves through
 //! `cycleref expand --format json` with both engines, the error through the
@@ -16,13 +16,14 @@ use serde_json::Value;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../vectors");
-const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 100 --seed 1 --out vectors";
+const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 105 --seed 1 --out vectors";
 
-/// Tags every corpus of 100 cases shows on at least one case with moves.
+/// Tags every corpus of 105 cases shows on at least one case with moves.
 const FEATURES: &[&str] = &[
     "profile:fanuc",
     "profile:gsk980",
     "profile:gsk988",
+    "profile:linuxcnc",
     "increment:is-b",
     "increment:is-c",
     "unit:mm",
@@ -35,6 +36,7 @@ const FEATURES: &[&str] = &[
     "fanuc:bare-increments",
     "fanuc:calculator-input",
     "g76",
+    "linuxcnc",
     "g32",
     "thread:external",
     "thread:internal",
@@ -145,7 +147,7 @@ const FEATURES: &[&str] = &[
     "rule:g78-gsk980-d",
 ];
 
-/// Error kinds every corpus of 100 cases refuses at least once, with the
+/// Error kinds every corpus of 105 cases refuses at least once, with the
 /// scenario tag of the refusal.
 const REFUSALS: &[(&str, &str)] = &[
     ("missing", "refuse:missing-p"),
@@ -292,7 +294,7 @@ fn cases(dir: &Path) -> Vec<Value> {
 
 #[test]
 fn checked_in_corpus_is_what_the_generator_writes() {
-    let fresh = files(&generate(100, 1, "fresh"));
+    let fresh = files(&generate(105, 1, "fresh"));
     let stored = files(Path::new(CORPUS));
     assert_eq!(
         fresh.keys().collect::<Vec<_>>(),
@@ -369,7 +371,7 @@ fn the_corpus_covers_every_feature_and_error_kind() {
 fn other_seeds_cover_everything_too() {
     // Each template fixes what it covers; the seed only varies the rest.
     for seed in [2, 3] {
-        assert_covered(&generate(100, seed, &format!("seed-{seed}")));
+        assert_covered(&generate(105, seed, &format!("seed-{seed}")));
     }
 }
 
@@ -448,7 +450,7 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
 fn every_case_replays() {
     let dir = scratch("replay");
     let all = cases(Path::new(CORPUS));
-    assert_eq!(all.len(), 100);
+    assert_eq!(all.len(), 105);
     for case in &all {
         let id = case["id"].as_str().unwrap();
         assert_eq!(case["schema"], "cycleref-vector/1", "{id}");

@@ -15,10 +15,10 @@
 //!    count extends a smaller one.
 //! 2. **Template.** The template of case `i` depends on `i` alone
 //!    (`template`): 3 slots in 5 take the valid templates of `TEMPLATES`
-//!    in turn, 2 in 5 the refused ones, and the first 100 cases (the
+//!    in turn, 2 in 5 the refused ones, and the first 105 cases (the
 //!    checked-in corpus) use every template at least once. A template is
 //!    one `Template` entry, declared beside its generator in the module of
-//!    its cycle (`g76`, `g32`, `g75`, `g92`) or in `refused`: its id, what it must
+//!    its cycle (`g76`, `g32`, `g75`, `g92`, `linuxcnc`) or in `refused`: its id, what it must
 //!    turn out to be (`Expected`: valid with some features, or refused with
 //!    an error kind the compiler checks), its tags and description, and the
 //!    generator.
@@ -42,7 +42,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
-use cycleref_spec::{read, ErrorKind, Machine, ProgramError};
+use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
 use serde_json::{json, Value};
 
 use crate::json::{CycleJson, UnitsJson};
@@ -53,6 +53,7 @@ mod g75;
 mod g76;
 mod g78;
 mod g92;
+mod linuxcnc;
 mod machine;
 mod refused;
 
@@ -347,6 +348,7 @@ const TEMPLATES: &[&Template] = &[
     &g92::FACE,
     &g78::GSK988,
     &g78::GSK980,
+    &linuxcnc::G76,
     &refused::MISSING_P,
     &refused::MISSING_Q,
     &refused::MIN_CUT,
@@ -386,6 +388,7 @@ const TEMPLATES: &[&Template] = &[
     &g92::NO_INFEED,
     &g92::RUN_OUT_INTO_WORK,
     &g78::INFEED_RANGE,
+    &linuxcnc::REFUSED,
 ];
 
 /// The templates of one kind (refused or valid), in schedule order.
@@ -446,8 +449,7 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                     Cycle::G32(call) => g32::tags(call, &moves, &mut tags),
                     Cycle::G75(call) => g75::tags(call, &moves, &mut tags),
                     Cycle::G92(call) => g92::tags(call, &moves, &mut tags),
-                    // Not drawn yet: the vectors draw FANUC and GSK programs.
-                    Cycle::LinuxCnc(_) => {}
+                    Cycle::LinuxCnc(call) => linuxcnc::tags(call, &moves, &mut tags),
                 }
                 count += moves.len();
                 let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
@@ -527,7 +529,10 @@ fn make_case(seed: u64, index: u32) -> Result<Case, String> {
             tags.insert("unit:g20".into());
         }
         tags.insert(if ctx.x == XMode::Diameter { "x:diameter" } else { "x:radius" }.into());
-        tags.insert(if ctx.pq_in_increments() { "pq:increments" } else { "pq:mm" }.into());
+        // P(k) and Q are G76 words of the FANUC-style profiles only.
+        if ctx.profile != ProfileName::LinuxCnc {
+            tags.insert(if ctx.pq_in_increments() { "pq:increments" } else { "pq:mm" }.into());
+        }
         if ctx.calculator_input {
             tags.insert("fanuc:calculator-input".into());
         }
