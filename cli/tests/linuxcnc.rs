@@ -227,3 +227,69 @@ fn plot_draws_it_with_a_trace_over_it() {
         "zoom"
     );
 }
+
+/// The LinuxCNC programs of `examples/` (`*.ngc`).
+fn ngc_examples() -> Vec<std::path::PathBuf> {
+    let dir = std::path::PathBuf::from(format!("{}/../examples", env!("CARGO_MANIFEST_DIR")));
+    let mut out: Vec<_> = std::fs::read_dir(&dir)
+        .expect("examples/")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "ngc"))
+        .collect();
+    out.sort();
+    out
+}
+
+#[test]
+fn every_linuxcnc_example_is_what_linuxcnc_cuts() {
+    let examples = ngc_examples();
+    assert!(examples.len() >= 2, "{examples:?}");
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-every-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    for (n, example) in examples.iter().enumerate() {
+        let name = example.display().to_string();
+        // LinuxCNC's canonical output of the example, as a trace: our
+        // toolpath (reader, engine, the program's own moves) within one
+        // increment, with both engines.
+        let canon = dir.join(format!("{n}.canon"));
+        std::fs::write(&canon, rs274_output(example)).expect("write");
+        let canon = canon.display().to_string();
+        // rs274 prints four decimals of the radius: in mm that is our
+        // increment (one more for our own rounding); in inch 0.0001 inch is
+        // 10 increments of 0.00001, 20 as a diameter (R-CHECKLCNC).
+        let inch = std::fs::read_to_string(example).expect("example").contains("G20");
+        let tolerance = if inch { "11" } else { "1" };
+        for engine in ["impl", "spec"] {
+            let out = run(
+                &[
+                    "check",
+                    "--profile",
+                    "linuxcnc",
+                    "--engine",
+                    engine,
+                    "--tolerance",
+                    tolerance,
+                    &name,
+                    "--trace",
+                    &canon,
+                ],
+                None,
+            );
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert_eq!(out.status.code(), Some(0), "{name} ({engine}): {text}");
+            assert!(text.starts_with("AGREE"), "{name}: {text}");
+        }
+        // Our expansion, read back by LinuxCNC: the same motions.
+        let expanded = dir.join(format!("{n}.ngc"));
+        std::fs::write(&expanded, stdout(&["expand", "--profile", "linuxcnc", &name])).expect("write");
+        let (a, b) = (rs274_motions(example), rs274_motions(&expanded));
+        assert_eq!(a.len(), b.len(), "{name}");
+        for (i, (p, q)) in a.iter().zip(&b).enumerate() {
+            let close = (p.x - q.x).abs() <= Decimal::new(1, 4) && (p.z - q.z).abs() <= Decimal::new(1, 4);
+            assert!(
+                close && p.rapid == q.rapid && p.pitch == q.pitch,
+                "{name}, motion {i}: {p:?} against {q:?}"
+            );
+        }
+    }
+}
