@@ -192,6 +192,24 @@ fn check_names_where_a_grblhal_style_trace_differs() {
 }
 
 #[test]
+fn check_names_where_a_grblhal_style_tapered_thread_differs() {
+    // docs/peers/trace-grblhal-taper-linuxcnc.ngc: grblHAL's mc_thread with
+    // its end tapers, on the example's words (docs/PEERS.md). grblHAL starts
+    // pass 1 at Z 2 − 0.15·tan 29.5° + 0.92·tan 29.5° = 2.4356 (the shift
+    // anchored at full depth) from X22; LinuxCNC's "back" is X23.54
+    // Z1.9151; grblHAL cuts the entry taper at the thread's 1.5 along the
+    // move where LinuxCNC runs 1.5·hypot(1, 0.92)/1 = 2.038235.
+    let trace = format!("{}/../docs/peers/trace-grblhal-taper-linuxcnc.ngc", env!("CARGO_MANIFEST_DIR"));
+    let out = run(&["check", "--profile", "linuxcnc", &example(), "--trace", &trace], None);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let first = text.split("all divergences").next().unwrap_or_default();
+    assert!(first.contains("rough pass 1") && first.contains("ours   rapid X23.5400 Z1.9151"), "{text}");
+    assert!(first.contains("theirs rapid X22.0000 Z2.4356"), "{text}");
+    assert!(text.contains("F2.038235") && text.contains("(lead)"), "{text}");
+}
+
+#[test]
 fn plot_draws_it_with_a_trace_over_it() {
     let dir = std::env::temp_dir().join(format!("cycleref-lcnc-plot-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("tmp dir");
