@@ -248,6 +248,26 @@ impl<'m> Tracker<'m> {
         Ok(())
     }
 
+    /// A G word of a trace: one of a plain move (`plain`, the profile's list
+    /// `moves` naming them), and no change of the input unit.
+    fn trace_g(&self, b: &Block, w: &Word, g: Option<i64>, plain: bool, moves: &str) -> Result<bool, String> {
+        if !plain {
+            return Err(at(
+                b,
+                Some(w),
+                &format!("a trace holds plain {moves} blocks, not canned cycles or other modes"),
+            ));
+        }
+        let unit = match self.units.unit {
+            InputUnit::Metric => 21,
+            InputUnit::Inch => 20,
+        };
+        if matches!(g, Some(20 | 21)) && g != Some(unit) {
+            return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
+        }
+        Ok(true)
+    }
+
     /// A trace's words that the check does not read are refused: they might
     /// shape the part (reading R-CHECKWORDS).
     fn strict_words(&self, b: &Block, motion: Kind) -> Result<(), String> {
@@ -256,21 +276,8 @@ impl<'m> Tracker<'m> {
             let ok = match w.letter {
                 'G' if self.linuxcnc => {
                     let g = w.number().integer().filter(|_| w.number().decimal().is_some_and(|d| d.fract().is_zero()));
-                    if !matches!(g, Some(0..=4 | 7 | 8 | 18 | 20 | 21 | 33 | 40 | 54..=59 | 61 | 64 | 90 | 94..=97)) {
-                        return Err(at(
-                            b,
-                            Some(w),
-                            "a trace holds plain G0/G1/G2/G3/G33 blocks, not canned cycles or other modes",
-                        ));
-                    }
-                    let unit = match self.units.unit {
-                        InputUnit::Metric => 21,
-                        InputUnit::Inch => 20,
-                    };
-                    if matches!(g, Some(20 | 21)) && g != Some(unit) {
-                        return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
-                    }
-                    true
+                    let plain = matches!(g, Some(0..=4 | 7 | 8 | 18 | 20 | 21 | 33 | 40 | 54..=59 | 61 | 64 | 90 | 94..=97));
+                    self.trace_g(b, w, g, plain, "G0/G1/G2/G3/G33")?
                 }
                 'U' | 'W' | 'Q' | 'I' | 'J' if self.linuxcnc && motion == Kind::Thread => false,
                 'U' | 'W' if self.linuxcnc => false,
@@ -280,21 +287,8 @@ impl<'m> Tracker<'m> {
                 'K' if self.linuxcnc && motion == Kind::Thread => true,
                 'G' => {
                     let g = w.number().integer();
-                    if !matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99)) {
-                        return Err(at(
-                            b,
-                            Some(w),
-                            "a trace holds plain G00/G01/G02/G03/G32 blocks, not canned cycles or other modes",
-                        ));
-                    }
-                    let unit = match self.units.unit {
-                        InputUnit::Metric => 21,
-                        InputUnit::Inch => 20,
-                    };
-                    if matches!(g, Some(20 | 21)) && g != Some(unit) {
-                        return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
-                    }
-                    true
+                    let plain = matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99));
+                    self.trace_g(b, w, g, plain, "G00/G01/G02/G03/G32")?
                 }
                 'M' => {
                     if matches!(w.number().integer(), Some(98 | 99)) {

@@ -197,19 +197,7 @@ impl State<'_> {
                 },
             )
         })?;
-        if !self.spindle_on {
-            return Err(err(
-                &block,
-                None,
-                ErrorKind::Missing {
-                    what: "M3 or M4 (a turning spindle)",
-                    rule: "LinuxCNC: \"Spindle not turning in G33\"",
-                },
-            ));
-        }
-        let (Some(x0), Some(z0)) = (self.x, self.z) else {
-            return Err(err(&block, None, ErrorKind::PositionUnknown));
-        };
+        let (x0, z0) = self.turning_at(&block, "LinuxCNC: \"Spindle not turning in G33\"")?;
         let lead = Self::pitch(&block, k)?;
         let end = Point::new(
             block.get('X')?.map(|w| self.length(&block, w)).transpose()?.unwrap_or(x0),
@@ -233,6 +221,19 @@ impl State<'_> {
         Ok(G32Call { code: "G33", block, g32 })
     }
 
+    /// Where a threading block starts: the spindle must turn (M3 or M4; its
+    /// speed may be 0, as `convert_motion` does not check it; `rule` is the
+    /// interpreter's message for the block) and the position be known.
+    fn turning_at(&self, block: &Block<'_>, rule: &'static str) -> Result<(i64, i64), ProgramError> {
+        if !self.spindle_on {
+            return Err(err(block, None, ErrorKind::Missing { what: "M3 or M4 (a turning spindle)", rule }));
+        }
+        match (self.x, self.z) {
+            (Some(x0), Some(z0)) => Ok((x0, z0)),
+            _ => Err(err(block, None, ErrorKind::PositionUnknown)),
+        }
+    }
+
     /// A pitch (G76 P, G33 K): > 0, at most 6 decimals, kept with the
     /// fewest decimals that hold it (P1.5 is 15 tenths).
     fn pitch(block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
@@ -252,21 +253,7 @@ impl State<'_> {
     /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle.
     fn linuxcnc_g76<'a>(&mut self, block: Block<'a>) -> Result<LinuxCncCall<'a>, ProgramError> {
         self.check_addresses(&block, "G76", "GXZPIJRKQHELMSTF", "")?;
-        // convert_motion: the spindle must turn (M3 or M4; its speed may be
-        // 0, as LinuxCNC does not check it).
-        if !self.spindle_on {
-            return Err(err(
-                &block,
-                None,
-                ErrorKind::Missing {
-                    what: "M3 or M4 (a turning spindle)",
-                    rule: "LinuxCNC: \"Chosen spindle (0) not turning in G76\"",
-                },
-            ));
-        }
-        let (Some(x0), Some(z0)) = (self.x, self.z) else {
-            return Err(err(&block, None, ErrorKind::PositionUnknown));
-        };
+        let (x0, z0) = self.turning_at(&block, "LinuxCNC: \"Chosen spindle (0) not turning in G76\"")?;
         let p = block.get('P')?.ok_or_else(|| {
             err(&block, None, ErrorKind::Missing { what: "P (thread pitch)", rule: P_MISSING })
         })?;
