@@ -102,11 +102,17 @@ fn no_overcut() {
     harness::no_overcut(&G76_WINDOW, &FixedPoint);
 }
 
-/// P6 over [`EQUIVALENCE_WINDOW`] (k, Δd ≤ 8). Unwind 81; measured on the
-/// engine's side: 80 moves, 6 levels counted. The reference's loops
-/// (`rust_decimal`, its square-root bisection) are not counted here, and
-/// Kani would have to execute `rust_decimal` symbolically: this harness is
-/// not expected to finish (issue 13). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
+/// P6 over [`EQUIVALENCE_WINDOW`] (k, Δd ≤ 8): the engine against the
+/// reference restated in integers (`crate::g76_exact`; under `cargo test`
+/// the harness also compares both with the decimal reference), so that
+/// Kani executes no `rust_decimal`. Unwind 81; measured: 80 moves on the
+/// engine's side and on the restatement's (`proofs/tests/unwind.rs`), 6
+/// levels counted; the restatement's own loops: its levels and passes (at
+/// most 8 and 16 here), and the reference's square-root bisection, at most
+/// 65 iterations by construction (an interval of 2^64 halved to nothing).
+/// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
+/// (stubbed; the restatement uses the reference's integer kernels, not
+/// these).
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]

@@ -176,9 +176,31 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     g76("no_overcut", &w, harness::no_overcut);
     g76("no_rapid_in_thread", &windows::NO_RAPID_WINDOW, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
-    // The engine's side only: the reference's loops (rust_decimal) are not
-    // counted here.
-    g76("equivalence", &windows::EQUIVALENCE_WINDOW, harness::equivalence);
+    // The engine's side; the integer restatement's moves below. The
+    // decimal reference's loops (rust_decimal) are not counted: Kani does
+    // not run it (`harness::equivalence`).
+    let mut m = g76_maxima("equivalence", &windows::EQUIVALENCE_WINDOW, harness::equivalence);
+    let most = exact_reference_moves(&windows::EQUIVALENCE_WINDOW);
+    m.0.insert("harness: moves of the integer reference", most);
+    assert_eq!(m.check("equivalence"), 80, "P6's most moves: 16 passes of 5");
+}
+
+/// The moves of `g76_exact::expand` (P6's other side under Kani, compared
+/// move by move with the engine's) over a window: sampled, and at its
+/// worst cases.
+fn exact_reference_moves(window: &Domain) -> u32 {
+    let most = Cell::new(0_usize);
+    let body = |d: &Domain| {
+        if let Ok(v) = cycleref_proofs::g76_exact::expand(&harness::any_cycle(d)) {
+            most.set(most.get().max(v.len()));
+        }
+    };
+    shim::check("equivalence: integer reference (sampled)", SAMPLE, || body(window));
+    let w = worst(window);
+    shim::check("equivalence: integer reference (worst)", Mode::Enumerate { max_runs: 2_000_000 }, || {
+        body(&w)
+    });
+    u32::try_from(most.get()).unwrap_or(u32::MAX)
 }
 
 /// The G75.1 harnesses: the moves of one groove (what their loops run
