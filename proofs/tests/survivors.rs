@@ -146,3 +146,103 @@ fn g92_run_out_limits() {
     ));
     assert!(both(&cycle_from(30_000, Point::new(32_000, -3_000), 4_000, 1_000, 2_000)).is_ok());
 }
+
+/// A G76 cycle for the `engine/g76.rs` survivors: IS-B metric, diameter X,
+/// F2, one start, tool angle 0 (no flank shifts), one finishing pass, D2
+/// off (D0, the right flank), no lead-in, run-out as given.
+fn g76_cycle(
+    start: cycleref::Point,
+    end: cycleref::Point,
+    taper: i64,
+    run_out: cycleref::RunOut,
+) -> cycleref::G76Cycle {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{DepthMode, G76Cycle, Infeed, Units, XMode};
+    G76Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start,
+        end,
+        taper,
+        thread_height: 1_000,
+        first_depth: 1_000,
+        min_cut: 0,
+        finishing_allowance: 0,
+        finishing_passes: 1,
+        tool_angle: 0,
+        infeed: Infeed::RightFlank,
+        depth_mode: DepthMode::Decreasing,
+        lead_in: 0,
+        starts: 1,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out,
+        pass_limit: 100,
+    }
+}
+
+/// The equal-step depth mode (G78 等距离) counts its levels as `ceil((k -
+/// d) / step)`, step = max(Δd, Δdmin, 1), before any move (reading
+/// R-LIMIT); the harness windows never put such a cycle past its pass
+/// limit, so `(k - d - step - 1) / step` passed them.
+#[test]
+fn equal_steps_count_their_levels() {
+    use cycleref::{CycleError, DepthMode, Point, RunOut};
+    // k = 10, d = 0, Δd = 3, Δdmin = 0: step max(3, 0, 1) = 3, levels at
+    // 3, 6, 9, 10: ceil(10 / 3) = 4 rough passes.
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 10,
+        first_depth: 3,
+        depth_mode: DepthMode::Equal,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(4)), Ok(4));
+    // With a limit of 3 the four passes are refused, counted exactly.
+    let e = CycleError::TooManyPasses { passes: 4, exact: true, limit: 3 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Err(e));
+    assert_eq!(cycleref::expand_g76(&c(3)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(3)).map(|_| ()), Err(e));
+}
+
+/// An X-long G76 thread (|i| ≥ |W|) whose run-out K equals |i| is allowed
+/// (the alarm is for K > |i|, as the reference), and one increment more is
+/// refused. Worked by hand: A (50.000, 0), D (40.000, -3.000), i = -4.000
+/// (radius), k = 1.000, one rough pass at k - d = 1.000 and one finishing
+/// pass, tool angle 0 (shift 0), J = 1.000, K = 4.000.
+/// C = 40.000 + 2·(-4.000) = 32.000; A is outside C (side +1) and beyond
+/// B (34.000) and the crest at D (42.000); |i| = 4.000 ≥ |W| = 3.000: X
+/// long, and s·i < 0: the run-out does not go into the work (R-XRUNOUT).
+/// Each pass at depth k starts at Bn = (32.000, 0) and ends at (40.000,
+/// -3.000); the run-out starts K = 4.000 (8.000 on the diameter) before the
+/// end along X, at X 32.000, which is Bn itself, so the cut is empty and
+/// left out (R-ZERO); the run-out goes to X 40.000 and J = 1.000 along Z
+/// towards A, Z -2.000; the retract to X 50.000, the return to A.
+#[test]
+fn g76_x_long_run_out_as_long_as_the_taper() {
+    use cycleref::{CycleError, Motion, Point, Role, RunOut};
+    let c = |k_run_out: i64| {
+        g76_cycle(
+            Point::new(50_000, 0),
+            Point::new(40_000, -3_000),
+            -4_000,
+            RunOut::Amounts { short: 1_000, long: k_run_out },
+        )
+    };
+    let moves: Vec<_> = cycleref::expand_g76(&c(4_000)).expect("K = |i| is allowed").collect();
+    assert_eq!(Ok(moves.clone()), cycleref_spec::g76::expand(&c(4_000)));
+    let pass = [
+        (Point::new(32_000, 0), Role::Approach, false),
+        (Point::new(40_000, -2_000), Role::RunOut, true),
+        (Point::new(50_000, -2_000), Role::Retract, false),
+        (Point::new(50_000, 0), Role::Return, false),
+    ];
+    let path: Vec<_> =
+        moves.iter().map(|m| (m.to, m.role, matches!(m.motion, Motion::Thread { .. }))).collect();
+    assert_eq!(path, [pass, pass].concat());
+    let e = CycleError::RunOutTooLong {
+        run_out: cycleref::Length::new(4_001, cycleref::Units::IS_B_METRIC),
+        length: cycleref::Length::new(4_000, cycleref::Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g76(&c(4_001)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(4_001)).map(|_| ()), Err(e));
+}
