@@ -246,3 +246,59 @@ fn g76_x_long_run_out_as_long_as_the_taper() {
     assert_eq!(cycleref::expand_g76(&c(4_001)).map(|_| ()), Err(e));
     assert_eq!(cycleref_spec::g76::expand(&c(4_001)).map(|_| ()), Err(e));
 }
+
+/// The pass count when the depth law lasts to the pass limit (reading
+/// R-LIMIT): the count stops with an inexact alarm only once a law level
+/// lies beyond the limit; a law phase that ends at level limit + 1 is still
+/// counted exactly. k = 60, d = 0, Δd = 40, Δdmin = 0 (m = 1), D0:
+/// D1 = round(40·√1) = 40, D2 = round(40·√2) = round(56.57) = 57 (≥ 40 +
+/// 1: the law holds), D3 = round(40·√3) = round(69.28) = 69 ≥ 60: the last
+/// level, 60. Three levels, three passes: with a limit of 3 they are
+/// allowed, with a limit of 2 refused with the exact count 3 (level 2 is a
+/// law level at the limit, not beyond it).
+#[test]
+fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
+    use cycleref::{CycleError, Point, RunOut};
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 60,
+        first_depth: 40,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Ok(3));
+    let e = CycleError::TooManyPasses { passes: 3, exact: true, limit: 2 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(2)), Err(e));
+    assert_eq!(cycleref::expand_g76(&c(2)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(2)).map(|_| ()), Err(e));
+}
+
+/// D2 (左右等量) cuts every level but the last twice: 2·levels − 1 rough
+/// passes, which the pass limit is checked against before any move. Equal
+/// steps, k = 10, d = 0, Δd = 3: levels 3, 6, 9, 10, so 2·4 − 1 = 7
+/// passes (3 R, 3 L, 6 R, 6 L, 9 R, 9 L, 10 R): allowed with a limit of
+/// 7, refused with 6.
+#[test]
+fn d2_counts_both_flanks() {
+    use cycleref::{CycleError, DepthMode, Flank, Infeed, PassKind, Point, RunOut};
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 10,
+        first_depth: 3,
+        depth_mode: DepthMode::Equal,
+        infeed: Infeed::LeftRight,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(7)), Ok(7));
+    let mut rough: Vec<_> = cycleref::expand_g76(&c(7))
+        .expect("7 passes within a limit of 7")
+        .filter_map(|m| m.pass)
+        .filter(|p| p.kind == PassKind::Rough)
+        .map(|p| (p.number, p.depth, p.flank))
+        .collect();
+    rough.dedup();
+    let (r, l) = (Flank::Right, Flank::Left);
+    assert_eq!(rough, [(1, 3, r), (2, 3, l), (3, 6, r), (4, 6, l), (5, 9, r), (6, 9, l), (7, 10, r)]);
+    let e = CycleError::TooManyPasses { passes: 7, exact: true, limit: 6 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(6)), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(6)).map(|_| ()), Err(e));
+}
