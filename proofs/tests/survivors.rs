@@ -302,3 +302,21 @@ fn d2_counts_both_flanks() {
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(6)), Err(e));
     assert_eq!(cycleref_spec::g76::expand(&c(6)).map(|_| ()), Err(e));
 }
+
+/// A must be clear of B, not only of the crest at D (reading R-SIDE): on
+/// a taper that rises towards A the crest at the start, B, lies further
+/// out than the crest at D. External thread, D (40.000, -20.000), i =
+/// 0.500 (radius), k = 1.000: C = 40.000 + 2·0.500 = 41.000, B = 41.000 +
+/// 2·1.000 = 43.000, the crest at D 40.000 + 2·1.000 = 42.000. A at X
+/// 42.500 is outside the crest at D but inside B: refused; A at 43.000, on
+/// B's X, is allowed (the check is `s·(X_A − X_B) < 0`). The harness
+/// windows put A one increment beyond both crests, never between them.
+#[test]
+fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
+    use cycleref::{CycleError, Point, RunOut};
+    let c = |a_x: i64| g76_cycle(Point::new(a_x, 0), Point::new(40_000, -20_000), 500, RunOut::None);
+    assert_eq!(cycleref::expand_g76(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    let moves: Vec<_> = cycleref::expand_g76(&c(43_000)).expect("A on B's X is clear").collect();
+    assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(43_000)));
+}
