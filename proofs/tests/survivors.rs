@@ -320,3 +320,33 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
     let moves: Vec<_> = cycleref::expand_g76(&c(43_000)).expect("A on B's X is clear").collect();
     assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(43_000)));
 }
+
+/// A cycle with nothing to cut (d = k: no rough level, reading R-NOROUGH;
+/// m = 0: no finishing pass) has no pass, so nothing of a pass is checked:
+/// not even a lead-in start beyond the range tables (reading R-RANGE looks
+/// at the first planned pass, and there is none). With one finishing pass
+/// the same lead-in start is refused. A (50.000, 999 000.000), D (40.000,
+/// 998 000.000) in IS-B increments: W = -1 000 000, t = -1; F2 = 2 000
+/// increments a revolution, E = 1 000 000: ceil(10^6 / 2 000) = 500
+/// leads, 1 000 000 long; the tool angle 0 gives the finishing pass the
+/// shift 0, so its lead-in starts at Z = 999 000 000 + 1 000 000 =
+/// 1 000 000 000 > 999 999 999.
+#[test]
+fn a_cycle_without_passes_checks_no_lead_in() {
+    use cycleref::{CycleError, Field, Length, Point, RunOut, Units};
+    let c = |finishing_passes: u32| cycleref::G76Cycle {
+        finishing_allowance: 1_000,
+        finishing_passes,
+        lead_in: 1_000_000,
+        ..g76_cycle(Point::new(50_000, 999_000_000), Point::new(40_000, 998_000_000), 0, RunOut::None)
+    };
+    let moves: Vec<_> = cycleref::expand_g76(&c(0)).expect("nothing to cut, nothing refused").collect();
+    assert!(moves.is_empty());
+    assert_eq!(cycleref_spec::g76::expand(&c(0)), Ok(moves));
+    let e = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g76(&c(1)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(1)).map(|_| ()), Err(e));
+}
