@@ -319,6 +319,48 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
     assert_eq!(cycleref_spec::g76::expand(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
     let moves: Vec<_> = cycleref::expand_g76(&c(43_000)).expect("A on B's X is clear").collect();
     assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(43_000)));
+    // The taper falling towards A (i = -0.500): C = 39.000, B = 41.000,
+    // the crest at D 42.000 now the further out. A at 41.500 is outside B
+    // but inside the crest at D: refused; on the crest at D, 42.000: clear.
+    let c = |a_x: i64| g76_cycle(Point::new(a_x, 0), Point::new(40_000, -20_000), -500, RunOut::None);
+    assert_eq!(cycleref::expand_g76(&c(41_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(41_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    let moves: Vec<_> = cycleref::expand_g76(&c(42_000)).expect("A on the crest at D is clear").collect();
+    assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(42_000)));
+}
+
+/// G92's range check on B's X (reading R-RANGE): B may lie exactly at the
+/// end of the range table, not beyond. An internal thread (A inside C,
+/// side -1), IS-B, diameter X, C = (999 997.999, -20.000), R = 1.000: B's
+/// X = 999 997 999 + 2·1 000 = 999 999 999 increments = MAX_LENGTH,
+/// allowed (the approach goes to B = (999 999 999, 0)); with C one
+/// increment further out, 999 998.000, B's X is 1 000 000 000: refused
+/// with that value.
+#[test]
+fn g92_b_at_the_end_of_the_range() {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{CycleError, Field, G92Cycle, Length, Point, RunOut, StartAngle, Units, XMode};
+    let cycle = |end_x: i64| G92Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(900_000_000, 0),
+        end: Point::new(end_x, -20_000),
+        taper: 1_000,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::None,
+        starts: 1,
+        start_angle: StartAngle::ZERO,
+        face: false,
+    };
+    let moves: Vec<_> = cycleref::expand_g92(&cycle(999_997_999)).expect("B at the range's end").collect();
+    assert_eq!(moves.first().map(|m| m.to), Some(Point::new(999_999_999, 0)), "the approach to B");
+    assert_eq!(Ok(moves), cycleref_spec::g92::expand(&cycle(999_997_999)));
+    let e = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g92(&cycle(999_998_000)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g92::expand(&cycle(999_998_000)).map(|_| ()), Err(e));
 }
 
 /// A cycle with nothing to cut (d = k: no rough level, reading R-NOROUGH;
