@@ -309,8 +309,9 @@ fn d2_counts_both_flanks() {
 /// 0.500 (radius), k = 1.000: C = 40.000 + 2·0.500 = 41.000, B = 41.000 +
 /// 2·1.000 = 43.000, the crest at D 40.000 + 2·1.000 = 42.000. A at X
 /// 42.500 is outside the crest at D but inside B: refused; A at 43.000, on
-/// B's X, is allowed (the check is `s·(X_A − X_B) < 0`). The harness
-/// windows put A one increment beyond both crests, never between them.
+/// B's X, is allowed (the check is `s·(X_A − X_B) < 0`), one increment
+/// inside it refused. The harness windows put A one increment beyond both
+/// crests, never between them or inside.
 #[test]
 fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
     use cycleref::{CycleError, Point, RunOut};
@@ -319,6 +320,9 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
     assert_eq!(cycleref_spec::g76::expand(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
     let moves: Vec<_> = cycleref::expand_g76(&c(43_000)).expect("A on B's X is clear").collect();
     assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(43_000)));
+    // One increment inside B is inside too.
+    assert_eq!(cycleref::expand_g76(&c(42_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(42_999)).map(|_| ()), Err(CycleError::StartInsideThread));
     // The taper falling towards A (i = -0.500): C = 39.000, B = 41.000,
     // the crest at D 42.000 now the further out. A at 41.500 is outside B
     // but inside the crest at D: refused; on the crest at D, 42.000: clear.
@@ -327,6 +331,8 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
     assert_eq!(cycleref_spec::g76::expand(&c(41_500)).map(|_| ()), Err(CycleError::StartInsideThread));
     let moves: Vec<_> = cycleref::expand_g76(&c(42_000)).expect("A on the crest at D is clear").collect();
     assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(42_000)));
+    assert_eq!(cycleref::expand_g76(&c(41_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(41_999)).map(|_| ()), Err(CycleError::StartInsideThread));
 }
 
 /// G92's range check on B's X (reading R-RANGE): B may lie exactly at the
