@@ -609,17 +609,37 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &(impl GrooveEngine + 
 /// Property: over the documented ranges, expanding never panics or
 /// overflows; every move lies within the coordinate range; a cycle either
 /// expands or is refused with an alarm. Bounded to the first `limit` moves.
-pub fn groove_no_panic(d: &GrooveDomain, limit: usize) {
-    declare(&["a valid groove"]);
+///
+/// `most_layers`, when given, keeps the grooves of at most that many layers
+/// (the Kani window, `crate::windows::GROOVE_NO_PANIC_LAYERS`): the peck
+/// count (§9) runs a loop over the layers before the first move, one
+/// iteration per layer, and Kani's unwind bound must exceed it. The bound
+/// is stated on the words, not taken from the engine: the layer count is
+/// `M = ceil((Y − Δu)/Δv)` with `Y = |H|` and `Δu ≥ 0` (§7), so `M ≤
+/// ceil(|H|/Δv) ≤ most_layers` when `|H| ≤ most_layers·Δv`; without V
+/// there is one layer. Returns the number of moves looked at (the
+/// harness's own loop, which `proofs/tests/unwind.rs` measures).
+pub fn groove_no_panic(d: &GrooveDomain, limit: usize, most_layers: Option<i64>) -> usize {
+    declare(&["a valid groove", "several layers"]);
     let c = any_groove(d);
+    if let (Some(most), Some(v)) = (most_layers, c.layer) {
+        // Saturating: the check holds for any words the domain gives.
+        assume(c.depth.abs() <= most.saturating_mul(v));
+    }
+    let mut looked_at = 0;
     if let Ok(moves) = cycleref::expand_g75(&c) {
         for m in moves.take(limit) {
+            looked_at += 1;
             assert!(
-                m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH
+                m.to.x.abs() <= cycleref::units::MAX_LENGTH && m.to.z.abs() <= cycleref::units::MAX_LENGTH,
+                "every move lies within the coordinate range"
             );
         }
         cover!(true, "a valid groove");
+        // M ≥ 2: the rough bottom Y − Δu lies below the first layer Δv.
+        cover!(c.layer.is_some_and(|v| c.depth.abs() - c.allowance_x > v), "several layers");
     }
+    looked_at
 }
 
 /// `from`, for tests: the tool position before the cycle (kept public for

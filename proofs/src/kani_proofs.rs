@@ -31,9 +31,10 @@ use crate::harness::{self, FixedPoint};
 use crate::schedule;
 use crate::thread;
 use crate::windows::{
-    DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW, GROOVE_WINDOW,
-    ISQRT_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW,
-    SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
+    DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW,
+    GROOVE_NO_PANIC_LAYERS, GROOVE_NO_PANIC_MOVES, GROOVE_NO_PANIC_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
+    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -101,11 +102,17 @@ fn no_overcut() {
     harness::no_overcut(&G76_WINDOW, &FixedPoint);
 }
 
-/// P6 over [`EQUIVALENCE_WINDOW`] (k, Δd ≤ 8). Unwind 81; measured on the
-/// engine's side: 80 moves, 6 levels counted. The reference's loops
-/// (`rust_decimal`, its square-root bisection) are not counted here, and
-/// Kani would have to execute `rust_decimal` symbolically: this harness is
-/// not expected to finish (issue 13). Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64` (stubbed).
+/// P6 over [`EQUIVALENCE_WINDOW`] (k, Δd ≤ 8): the engine against the
+/// reference restated in integers (`crate::g76_exact`; under `cargo test`
+/// the harness also compares both with the decimal reference), so that
+/// Kani executes no `rust_decimal`. Unwind 81; measured: 80 moves on the
+/// engine's side and on the restatement's (`proofs/tests/unwind.rs`), 6
+/// levels counted; the restatement's own loops: its levels and passes (at
+/// most 8 and 16 here), and the reference's square-root bisection, at most
+/// 65 iterations by construction (an interval of 2^64 halved to nothing).
+/// Contracts: `round_sqrt`, `mul_tan_round`, `round_div`, `saturate_i64`
+/// (stubbed; the restatement uses the reference's integer kernels, not
+/// these).
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
@@ -317,25 +324,30 @@ fn groove_material() {
     groove::groove_material(&window, &GrooveFixedPoint);
 }
 
-/// Every documented input, the first 8 moves: no panic, no overflow.
-/// Unwind 1 000 001, the measured maximum plus one: the peck count's layer
-/// loop runs once per layer before the first move, and a groove of 10^6
-/// layers of one peck each (`MAX_PECKS`) is valid, so it runs 10^6 times
-/// (enumerated); the other loops stay far below (sampled over the window
-/// and at large grooves with extreme angles: 304 bits of bit-by-bit
-/// division, at most 384 in the 256-bit context and 1 152 in the 512-bit
-/// one; 20 Taylor terms, at most 400; 8 contour points; 5 limb
-/// iterations). Kani cannot unroll that: this harness is not expected to
-/// finish until the layer loop and the division have contracts of their
-/// own (issue 13). Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
+/// Every documented input of at most 1 152 layers
+/// ([`GROOVE_NO_PANIC_WINDOW`], [`GROOVE_NO_PANIC_LAYERS`]: `|H| ≤ 1 152·Δv`,
+/// stated on the words), the first 8 moves: no panic, no overflow, every
+/// move in range. Unwind 1 153, one above the most iterations any loop
+/// reached here can make by construction: the bit-by-bit division of
+/// `engine::real` (a dividend of 18 limbs at the slow precision: 1 152
+/// bits; measured 304), the Taylor series (400 terms; measured 20), the
+/// limb loops (28), the contour points (8), and the peck count's loop over
+/// the layers (the window's 1 152; measured 1 152, enumerated); the
+/// iterator's state machines measured 3 and 2, the harness's loop 8 moves.
+/// Grooves of more layers (up to 10^6 of one peck, `MAX_PECKS`) are
+/// outside this window and checked under `cargo test` only. Kani is still
+/// not expected to finish in practice: the division and the series run on
+/// symbolic 1 152-bit and 640-bit numbers, and would need contracts of
+/// their own (issue 13). Contracts: `floor_div`, `ceil_div`,
+/// `saturate_i64` (stubbed).
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::floor_div)]
 #[kani::stub_verified(cycleref::engine::arith::ceil_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(1_000_001)]
+#[kani::unwind(1153)]
 #[kani::solver(cadical)]
 fn groove_no_panic() {
-    groove::groove_no_panic(&GrooveDomain::FULL, 8);
+    groove::groove_no_panic(&GROOVE_NO_PANIC_WINDOW, GROOVE_NO_PANIC_MOVES, Some(GROOVE_NO_PANIC_LAYERS));
 }
 
 /// The depth schedule, one step from any level `n` (an induction: see

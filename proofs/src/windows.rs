@@ -122,6 +122,34 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     units: (0, 7),
 };
 
+/// `groove_no_panic`'s window: every documented input
+/// ([`GrooveDomain::FULL`]) of at most [`GROOVE_NO_PANIC_LAYERS`] layers, the
+/// first [`GROOVE_NO_PANIC_MOVES`] moves of each groove.
+pub const GROOVE_NO_PANIC_WINDOW: GrooveDomain = GrooveDomain::FULL;
+
+/// The most layers of a groove in `groove_no_panic`'s window (`|H| ≤
+/// 1 152·Δv`; see `crate::groove::groove_no_panic`). The peck count's loop
+/// over the layers runs once per layer, so its count is at most this. The
+/// unwind bound [`GROOVE_NO_PANIC_UNWIND`] is set by the engine's largest
+/// loop capacity, the bit-by-bit division of `engine::real` (a dividend of
+/// `2N − 2` limbs at the slow precision N = 10: 1 152 bits); this layer
+/// bound is the most the same unwind bound covers. Grooves of more layers
+/// (up to `MAX_PECKS` = 10^6) are left to the tests here
+/// (`proofs/tests/g75_harnesses.rs`).
+pub const GROOVE_NO_PANIC_LAYERS: i64 = 1_152;
+
+/// Moves of each groove that `groove_no_panic` looks at under Kani.
+pub const GROOVE_NO_PANIC_MOVES: usize = 8;
+
+/// `groove_no_panic`'s unwind bound: one above the most iterations the
+/// loops it reaches can make by construction: the long division 1 152 bits
+/// (measured: 304), the Taylor series 400 terms (`MAX_TERMS`; measured: 20),
+/// a limb loop 28 limbs (the scratch buffers), the contour points 8 (the
+/// profile's arrays), the layers [`GROOVE_NO_PANIC_LAYERS`] (measured: 1 152,
+/// enumerated); and above the measured counts of the iterator's state
+/// machines (3 roughing steps, 2 stages) and of the harness's loop (8 moves).
+pub const GROOVE_NO_PANIC_UNWIND: u32 = 1_153;
+
 /// The one-step schedule harness: every documented Δd, Δdmin, k - d
 /// (`< 2^30`) and every state (depth ≤ k - d, level ≤ depth) that
 /// satisfies the invariant, i.e. every level of every cycle.
@@ -158,7 +186,7 @@ pub const UNWIND: [(&str, u32); 25] = [
     ("groove_inside", 66),
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
-    ("groove_no_panic", 1_000_001),
+    ("groove_no_panic", GROOVE_NO_PANIC_UNWIND),
     ("schedule_step", 7),
 ];
 

@@ -180,11 +180,41 @@ fn finishing_contour_is_the_profile() {
     check("profile (sampled)", SAMPLE, || groove::groove_finish_is_profile(&SQUARE_WIDE, &GrooveFixedPoint));
 }
 
+/// Every documented input, every layer count (the Kani window of
+/// `groove_no_panic` has at most 1 152 layers: `proofs/src/windows.rs`).
 #[test]
 fn no_panic_over_the_documented_ranges() {
     check("no panic (sampled)", Mode::Sample { runs: 20_000, seed: 7 }, || {
-        groove::groove_no_panic(&GrooveDomain::FULL, 64);
+        groove::groove_no_panic(&GrooveDomain::FULL, 64, None);
     });
+}
+
+/// Beyond the Kani window's 1 152 layers: the most layers a valid groove
+/// can have, 10^6 of one peck each (`MAX_PECKS`), the peck count's loop
+/// running once per layer, and 10^6 + 1, refused (`TooManyPecks`).
+#[test]
+fn no_panic_at_the_most_layers() {
+    let most = GrooveDomain {
+        depth: (999_999, 1_000_001),
+        width: (0, 0),
+        peck: (1, 1),
+        step: (1, 1),
+        layer: (1, 1),
+        retract: (0, 0),
+        allowance_x: (0, 0),
+        allowance_z: (0, 0),
+        tool_width: (-1, -1),
+        corner: (0, 0),
+        corner_kinds: (0, 0),
+        path: (0, 0),
+        signs: (0, 0),
+        units: (0, 0),
+        ..GrooveDomain::SQUARE
+    };
+    let r = check("no panic (most layers)", Mode::Exhaustive { max_runs: 3 }, || {
+        groove::groove_no_panic(&most, 64, None);
+    });
+    assert_eq!(r.runs, 3);
 }
 
 /// The long run: wider exhaustive slices, each over the choices its

@@ -9,6 +9,7 @@
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
 use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::windows;
 
 /// Runs a harness and prints its run count (`--nocapture` shows them).
 fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
@@ -128,6 +129,11 @@ fn p6_equivalence() {
         harness::equivalence(&g, &FixedPoint)
     });
     check("equivalence (sampled)", SAMPLE, || harness::equivalence(&WIDE, &FixedPoint));
+    // The integer restatement under Kani (`g76_exact`) against the decimal
+    // reference where the windows above do not reach: X long axes (|W|
+    // from 1), lead-ins, chamfered run-outs, I leads, every unit code.
+    check("equivalence (X long)", SAMPLE, || harness::equivalence(&windows::NO_RAPID_WINDOW, &FixedPoint));
+    check("equivalence (full range)", SAMPLE, || harness::equivalence(&Domain::FULL, &FixedPoint));
 }
 
 #[test]

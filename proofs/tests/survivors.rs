@@ -146,3 +146,255 @@ fn g92_run_out_limits() {
     ));
     assert!(both(&cycle_from(30_000, Point::new(32_000, -3_000), 4_000, 1_000, 2_000)).is_ok());
 }
+
+/// A G76 cycle for the `engine/g76.rs` survivors: IS-B metric, diameter X,
+/// F2, one start, tool angle 0 (no flank shifts), one finishing pass, D2
+/// off (D0, the right flank), no lead-in, run-out as given.
+fn g76_cycle(
+    start: cycleref::Point,
+    end: cycleref::Point,
+    taper: i64,
+    run_out: cycleref::RunOut,
+) -> cycleref::G76Cycle {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{DepthMode, G76Cycle, Infeed, Units, XMode};
+    G76Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start,
+        end,
+        taper,
+        thread_height: 1_000,
+        first_depth: 1_000,
+        min_cut: 0,
+        finishing_allowance: 0,
+        finishing_passes: 1,
+        tool_angle: 0,
+        infeed: Infeed::RightFlank,
+        depth_mode: DepthMode::Decreasing,
+        lead_in: 0,
+        starts: 1,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out,
+        pass_limit: 100,
+    }
+}
+
+/// The equal-step depth mode (G78 等距离) counts its levels as `ceil((k -
+/// d) / step)`, step = max(Δd, Δdmin, 1), before any move (reading
+/// R-LIMIT); the harness windows never put such a cycle past its pass
+/// limit, so `(k - d - step - 1) / step` passed them.
+#[test]
+fn equal_steps_count_their_levels() {
+    use cycleref::{CycleError, DepthMode, Point, RunOut};
+    // k = 10, d = 0, Δd = 3, Δdmin = 0: step max(3, 0, 1) = 3, levels at
+    // 3, 6, 9, 10: ceil(10 / 3) = 4 rough passes.
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 10,
+        first_depth: 3,
+        depth_mode: DepthMode::Equal,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(4)), Ok(4));
+    // With a limit of 3 the four passes are refused, counted exactly.
+    let e = CycleError::TooManyPasses { passes: 4, exact: true, limit: 3 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Err(e));
+    assert_eq!(cycleref::expand_g76(&c(3)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(3)).map(|_| ()), Err(e));
+}
+
+/// An X-long G76 thread (|i| ≥ |W|) whose run-out K equals |i| is allowed
+/// (the alarm is for K > |i|, as the reference), and one increment more is
+/// refused. Worked by hand: A (50.000, 0), D (40.000, -3.000), i = -4.000
+/// (radius), k = 1.000, one rough pass at k - d = 1.000 and one finishing
+/// pass, tool angle 0 (shift 0), J = 1.000, K = 4.000.
+/// C = 40.000 + 2·(-4.000) = 32.000; A is outside C (side +1) and beyond
+/// B (34.000) and the crest at D (42.000); |i| = 4.000 ≥ |W| = 3.000: X
+/// long, and s·i < 0: the run-out does not go into the work (R-XRUNOUT).
+/// Each pass at depth k starts at Bn = (32.000, 0) and ends at (40.000,
+/// -3.000); the run-out starts K = 4.000 (8.000 on the diameter) before the
+/// end along X, at X 32.000, which is Bn itself, so the cut is empty and
+/// left out (R-ZERO); the run-out goes to X 40.000 and J = 1.000 along Z
+/// towards A, Z -2.000; the retract to X 50.000, the return to A.
+#[test]
+fn g76_x_long_run_out_as_long_as_the_taper() {
+    use cycleref::{CycleError, Motion, Point, Role, RunOut};
+    let c = |k_run_out: i64| {
+        g76_cycle(
+            Point::new(50_000, 0),
+            Point::new(40_000, -3_000),
+            -4_000,
+            RunOut::Amounts { short: 1_000, long: k_run_out },
+        )
+    };
+    let moves: Vec<_> = cycleref::expand_g76(&c(4_000)).expect("K = |i| is allowed").collect();
+    assert_eq!(Ok(moves.clone()), cycleref_spec::g76::expand(&c(4_000)));
+    let pass = [
+        (Point::new(32_000, 0), Role::Approach, false),
+        (Point::new(40_000, -2_000), Role::RunOut, true),
+        (Point::new(50_000, -2_000), Role::Retract, false),
+        (Point::new(50_000, 0), Role::Return, false),
+    ];
+    let path: Vec<_> =
+        moves.iter().map(|m| (m.to, m.role, matches!(m.motion, Motion::Thread { .. }))).collect();
+    assert_eq!(path, [pass, pass].concat());
+    let e = CycleError::RunOutTooLong {
+        run_out: cycleref::Length::new(4_001, cycleref::Units::IS_B_METRIC),
+        length: cycleref::Length::new(4_000, cycleref::Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g76(&c(4_001)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(4_001)).map(|_| ()), Err(e));
+}
+
+/// The pass count when the depth law lasts to the pass limit (reading
+/// R-LIMIT): the count stops with an inexact alarm only once a law level
+/// lies beyond the limit; a law phase that ends at level limit + 1 is still
+/// counted exactly. k = 60, d = 0, Δd = 40, Δdmin = 0 (m = 1), D0:
+/// D1 = round(40·√1) = 40, D2 = round(40·√2) = round(56.57) = 57 (≥ 40 +
+/// 1: the law holds), D3 = round(40·√3) = round(69.28) = 69 ≥ 60: the last
+/// level, 60. Three levels, three passes: with a limit of 3 they are
+/// allowed, with a limit of 2 refused with the exact count 3 (level 2 is a
+/// law level at the limit, not beyond it).
+#[test]
+fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
+    use cycleref::{CycleError, Point, RunOut};
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 60,
+        first_depth: 40,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Ok(3));
+    let e = CycleError::TooManyPasses { passes: 3, exact: true, limit: 2 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(2)), Err(e));
+    assert_eq!(cycleref::expand_g76(&c(2)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(2)).map(|_| ()), Err(e));
+}
+
+/// D2 (左右等量) cuts every level but the last twice: 2·levels − 1 rough
+/// passes, which the pass limit is checked against before any move. Equal
+/// steps, k = 10, d = 0, Δd = 3: levels 3, 6, 9, 10, so 2·4 − 1 = 7
+/// passes (3 R, 3 L, 6 R, 6 L, 9 R, 9 L, 10 R): allowed with a limit of
+/// 7, refused with 6.
+#[test]
+fn d2_counts_both_flanks() {
+    use cycleref::{CycleError, DepthMode, Flank, Infeed, PassKind, Point, RunOut};
+    let c = |pass_limit: u32| cycleref::G76Cycle {
+        thread_height: 10,
+        first_depth: 3,
+        depth_mode: DepthMode::Equal,
+        infeed: Infeed::LeftRight,
+        pass_limit,
+        ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
+    };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(7)), Ok(7));
+    let mut rough: Vec<_> = cycleref::expand_g76(&c(7))
+        .expect("7 passes within a limit of 7")
+        .filter_map(|m| m.pass)
+        .filter(|p| p.kind == PassKind::Rough)
+        .map(|p| (p.number, p.depth, p.flank))
+        .collect();
+    rough.dedup();
+    let (r, l) = (Flank::Right, Flank::Left);
+    assert_eq!(rough, [(1, 3, r), (2, 3, l), (3, 6, r), (4, 6, l), (5, 9, r), (6, 9, l), (7, 10, r)]);
+    let e = CycleError::TooManyPasses { passes: 7, exact: true, limit: 6 };
+    assert_eq!(cycleref::engine::g76::rough_pass_count(&c(6)), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(6)).map(|_| ()), Err(e));
+}
+
+/// A must be clear of B, not only of the crest at D (reading R-SIDE): on
+/// a taper that rises towards A the crest at the start, B, lies further
+/// out than the crest at D. External thread, D (40.000, -20.000), i =
+/// 0.500 (radius), k = 1.000: C = 40.000 + 2·0.500 = 41.000, B = 41.000 +
+/// 2·1.000 = 43.000, the crest at D 40.000 + 2·1.000 = 42.000. A at X
+/// 42.500 is outside the crest at D but inside B: refused; A at 43.000, on
+/// B's X, is allowed (the check is `s·(X_A − X_B) < 0`), one increment
+/// inside it refused. The harness windows put A one increment beyond both
+/// crests, never between them or inside.
+#[test]
+fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
+    use cycleref::{CycleError, Point, RunOut};
+    let c = |a_x: i64| g76_cycle(Point::new(a_x, 0), Point::new(40_000, -20_000), 500, RunOut::None);
+    assert_eq!(cycleref::expand_g76(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    let moves: Vec<_> = cycleref::expand_g76(&c(43_000)).expect("A on B's X is clear").collect();
+    assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(43_000)));
+    // One increment inside B is inside too.
+    assert_eq!(cycleref::expand_g76(&c(42_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(42_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+    // The taper falling towards A (i = -0.500): C = 39.000, B = 41.000,
+    // the crest at D 42.000 now the further out. A at 41.500 is outside B
+    // but inside the crest at D: refused; on the crest at D, 42.000: clear.
+    let c = |a_x: i64| g76_cycle(Point::new(a_x, 0), Point::new(40_000, -20_000), -500, RunOut::None);
+    assert_eq!(cycleref::expand_g76(&c(41_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(41_500)).map(|_| ()), Err(CycleError::StartInsideThread));
+    let moves: Vec<_> = cycleref::expand_g76(&c(42_000)).expect("A on the crest at D is clear").collect();
+    assert_eq!(Ok(moves), cycleref_spec::g76::expand(&c(42_000)));
+    assert_eq!(cycleref::expand_g76(&c(41_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+    assert_eq!(cycleref_spec::g76::expand(&c(41_999)).map(|_| ()), Err(CycleError::StartInsideThread));
+}
+
+/// G92's range check on B's X (reading R-RANGE): B may lie exactly at the
+/// end of the range table, not beyond. An internal thread (A inside C,
+/// side -1), IS-B, diameter X, C = (999 997.999, -20.000), R = 1.000: B's
+/// X = 999 997 999 + 2·1 000 = 999 999 999 increments = MAX_LENGTH,
+/// allowed (the approach goes to B = (999 999 999, 0)); with C one
+/// increment further out, 999 998.000, B's X is 1 000 000 000: refused
+/// with that value.
+#[test]
+fn g92_b_at_the_end_of_the_range() {
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{CycleError, Field, G92Cycle, Length, Point, RunOut, StartAngle, Units, XMode};
+    let cycle = |end_x: i64| G92Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(900_000_000, 0),
+        end: Point::new(end_x, -20_000),
+        taper: 1_000,
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: RunOut::None,
+        starts: 1,
+        start_angle: StartAngle::ZERO,
+        face: false,
+    };
+    let moves: Vec<_> = cycleref::expand_g92(&cycle(999_997_999)).expect("B at the range's end").collect();
+    assert_eq!(moves.first().map(|m| m.to), Some(Point::new(999_999_999, 0)), "the approach to B");
+    assert_eq!(Ok(moves), cycleref_spec::g92::expand(&cycle(999_997_999)));
+    let e = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g92(&cycle(999_998_000)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g92::expand(&cycle(999_998_000)).map(|_| ()), Err(e));
+}
+
+/// A cycle with nothing to cut (d = k: no rough level, reading R-NOROUGH;
+/// m = 0: no finishing pass) has no pass, so nothing of a pass is checked:
+/// not even a lead-in start beyond the range tables (reading R-RANGE looks
+/// at the first planned pass, and there is none). With one finishing pass
+/// the same lead-in start is refused. A (50.000, 999 000.000), D (40.000,
+/// 998 000.000) in IS-B increments: W = -1 000 000, t = -1; F2 = 2 000
+/// increments a revolution, E = 1 000 000: ceil(10^6 / 2 000) = 500
+/// leads, 1 000 000 long; the tool angle 0 gives the finishing pass the
+/// shift 0, so its lead-in starts at Z = 999 000 000 + 1 000 000 =
+/// 1 000 000 000 > 999 999 999.
+#[test]
+fn a_cycle_without_passes_checks_no_lead_in() {
+    use cycleref::{CycleError, Field, Length, Point, RunOut, Units};
+    let c = |finishing_passes: u32| cycleref::G76Cycle {
+        finishing_allowance: 1_000,
+        finishing_passes,
+        lead_in: 1_000_000,
+        ..g76_cycle(Point::new(50_000, 999_000_000), Point::new(40_000, 998_000_000), 0, RunOut::None)
+    };
+    let moves: Vec<_> = cycleref::expand_g76(&c(0)).expect("nothing to cut, nothing refused").collect();
+    assert!(moves.is_empty());
+    assert_eq!(cycleref_spec::g76::expand(&c(0)), Ok(moves));
+    let e = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref::expand_g76(&c(1)).map(|_| ()), Err(e));
+    assert_eq!(cycleref_spec::g76::expand(&c(1)).map(|_| ()), Err(e));
+}

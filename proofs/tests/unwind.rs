@@ -20,7 +20,8 @@
 //! of the peck count, contour points, and `engine::real`'s limb loops,
 //! bit-by-bit division and Taylor series): enumerated at the window's
 //! deepest, widest grooves with the smallest pecks and steps, and, for
-//! `groove_no_panic`, at the most layers and the largest grooves.
+//! `groove_no_panic`, at the most layers its window allows and the largest
+//! grooves.
 //!
 //! The counts are process-wide: the measuring tests take one lock, so one
 //! measures at a time.
@@ -175,9 +176,31 @@ fn every_loop_stays_below_its_harness_unwind_bound() {
     g76("no_overcut", &w, harness::no_overcut);
     g76("no_rapid_in_thread", &windows::NO_RAPID_WINDOW, cycleref_proofs::thread::no_rapid_in_thread);
     g76("finishing", &windows::FINISHING_WINDOW, harness::finishing);
-    // The engine's side only: the reference's loops (rust_decimal) are not
-    // counted here.
-    g76("equivalence", &windows::EQUIVALENCE_WINDOW, harness::equivalence);
+    // The engine's side; the integer restatement's moves below. The
+    // decimal reference's loops (rust_decimal) are not counted: Kani does
+    // not run it (`harness::equivalence`).
+    let mut m = g76_maxima("equivalence", &windows::EQUIVALENCE_WINDOW, harness::equivalence);
+    let most = exact_reference_moves(&windows::EQUIVALENCE_WINDOW);
+    m.0.insert("harness: moves of the integer reference", most);
+    assert_eq!(m.check("equivalence"), 80, "P6's most moves: 16 passes of 5");
+}
+
+/// The moves of `g76_exact::expand` (P6's other side under Kani, compared
+/// move by move with the engine's) over a window: sampled, and at its
+/// worst cases.
+fn exact_reference_moves(window: &Domain) -> u32 {
+    let most = Cell::new(0_usize);
+    let body = |d: &Domain| {
+        if let Ok(v) = cycleref_proofs::g76_exact::expand(&harness::any_cycle(d)) {
+            most.set(most.get().max(v.len()));
+        }
+    };
+    shim::check("equivalence: integer reference (sampled)", SAMPLE, || body(window));
+    let w = worst(window);
+    shim::check("equivalence: integer reference (worst)", Mode::Enumerate { max_runs: 2_000_000 }, || {
+        body(&w)
+    });
+    u32::try_from(most.get()).unwrap_or(u32::MAX)
 }
 
 /// The G75.1 harnesses: the moves of one groove (what their loops run
@@ -234,25 +257,36 @@ fn groove_loops_stay_below_the_unwind_bounds() {
     groove_no_panic_maxima().check("groove_no_panic");
 }
 
-/// The loop maxima of `groove_no_panic` (every documented input, the first
-/// 8 moves): sampled over the window, and at the worst cases of its
-/// loops: the most layers (the peck count's layer loop runs once per layer,
-/// up to `MAX_PECKS` = 10^6 layers of one peck), and the largest grooves
-/// at extreme angles (the largest dividends of the bit-by-bit division).
+/// The loop maxima of `groove_no_panic` over its Kani window (every
+/// documented input of at most `GROOVE_NO_PANIC_LAYERS` layers, the first
+/// `GROOVE_NO_PANIC_MOVES` moves): sampled over the window, and at the
+/// worst cases of its loops: the most layers (the peck count's layer loop
+/// runs once per layer: grooves of one plunge, Δv = 1 and 2, |H| around
+/// the window's limit, so that the limit itself is reached and the next
+/// layer pruned), and the largest grooves at extreme angles (the largest
+/// dividends of the bit-by-bit division). The harness's own loop counts
+/// the moves it looks at.
 fn groove_no_panic_maxima() -> Maxima {
     use cycleref_proofs::groove::{self, GrooveDomain};
+    use windows::{GROOVE_NO_PANIC_LAYERS as LAYERS, GROOVE_NO_PANIC_MOVES as MOVES, GROOVE_NO_PANIC_WINDOW};
     loop_counters::reset();
     let mut m = Maxima::default();
+    let looked_at = Cell::new(0_usize);
+    let body = |d: &GrooveDomain| {
+        let n = groove::groove_no_panic(d, MOVES, Some(LAYERS));
+        looked_at.set(looked_at.get().max(n));
+    };
     let r = shim::check("groove_no_panic", Mode::Sample { runs: 20_000, seed: 0x0067_3735 }, || {
-        groove::groove_no_panic(&GrooveDomain::FULL, 8);
+        body(&GROOVE_NO_PANIC_WINDOW);
     });
     eprintln!("  groove_no_panic (sampled window): {} runs, {} pruned", r.runs, r.pruned);
-    // The layer loop's worst: the most layers one peck each (V = 1, P ≥
-    // the layer, one plunge), up to MAX_PECKS pecks in all.
+    // The layer loop's worst: the most layers, one peck each (P ≥ Δv, one
+    // plunge). |H| = 2·LAYERS + 2 with Δv = 2 and |H| = LAYERS + 2 with
+    // Δv = 1 are beyond the window (pruned).
     let layers = GrooveDomain {
-        depth: (999_998, 1_000_001),
+        depth: (LAYERS - 2, LAYERS + 2),
         width: (0, 0),
-        peck: (1, 2),
+        peck: (2, 3),
         step: (1, 1),
         layer: (1, 1),
         retract: (0, 0),
@@ -267,10 +301,11 @@ fn groove_no_panic_maxima() -> Maxima {
         signs: (0, 0),
         units: (0, 0),
     };
-    let r = shim::check("groove_no_panic", Mode::Enumerate { max_runs: 1_000 }, || {
-        groove::groove_no_panic(&layers, 8);
-    });
-    eprintln!("  groove_no_panic (most layers): {} runs, {} pruned", r.runs, r.pruned);
+    for (depth, layer) in [((LAYERS - 2, LAYERS + 2), (1, 1)), ((2 * LAYERS - 2, 2 * LAYERS + 2), (2, 2))] {
+        let d = GrooveDomain { depth, layer, ..layers };
+        let r = shim::check("groove_no_panic", Mode::Enumerate { max_runs: 1_000 }, || body(&d));
+        eprintln!("  groove_no_panic (most layers, V{}): {} runs, {} pruned", layer.0, r.runs, r.pruned);
+    }
     // The division's and the series' worst: the largest grooves at the
     // flank and slope extremes (the largest magnitudes enter the dividends).
     let large = GrooveDomain {
@@ -289,25 +324,35 @@ fn groove_no_panic_maxima() -> Maxima {
         path: (0, 2),
         signs: (0, 0),
         units: (0, 7),
-        ..GrooveDomain::FULL
+        ..GROOVE_NO_PANIC_WINDOW
     };
-    let r = shim::check("groove_no_panic", Mode::Sample { runs: 5_000, seed: 7 }, || {
-        groove::groove_no_panic(&large, 8);
-    });
+    let r = shim::check("groove_no_panic", Mode::Sample { runs: 5_000, seed: 7 }, || body(&large));
     eprintln!("  groove_no_panic (large, extreme angles): {} runs, {} pruned", r.runs, r.pruned);
-    m.take(0);
+    m.take(u32::try_from(looked_at.get()).unwrap_or(u32::MAX));
     m
 }
 
-/// The G75.1 engine's loops are held to the bound too: `groove_no_panic`'s
-/// layer loop runs 10^6 times, so a bound of 10^6 is one short.
+/// The window's layer limit is reached and not exceeded: the peck count's
+/// loop runs exactly `GROOVE_NO_PANIC_LAYERS` times at the worst cases,
+/// and the harness looks at `GROOVE_NO_PANIC_MOVES` moves.
 #[test]
-#[should_panic(
-    expected = "groove_no_panic: g75 roughing: layers counted runs 1000000 times, unwind bound 1000000"
-)]
+fn groove_no_panic_reaches_its_layer_limit() {
+    let _one = lock();
+    let m = groove_no_panic_maxima();
+    let layers = u32::try_from(windows::GROOVE_NO_PANIC_LAYERS).expect("a small limit");
+    assert_eq!(m.0.get("g75 roughing: layers counted"), Some(&layers));
+    assert_eq!(m.0.get("harness: moves of one cycle"), Some(&8));
+    assert!(m.0.get("real::limbs_divmod: bits").is_some_and(|&n| n > 0), "{:?}", m.0);
+}
+
+/// The G75.1 engine's loops are held to the bound too: `groove_no_panic`'s
+/// layer loop runs 1 152 times at the window's most layers, so a bound of
+/// 1 152 is one short.
+#[test]
+#[should_panic(expected = "groove_no_panic: g75 roughing: layers counted runs 1152 times, unwind bound 1152")]
 fn a_groove_loop_reaching_its_bound_fails() {
     let _one = lock();
-    groove_no_panic_maxima().check_against("groove_no_panic", 1_000_000);
+    groove_no_panic_maxima().check_against("groove_no_panic", 1_152);
 }
 
 /// P7 over the documented ranges: sampled, and enumerated at the extremes
