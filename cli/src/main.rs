@@ -24,7 +24,7 @@ const EXIT_STATUS: &str = "Exit status: 0 success (check: the toolpaths agree), 
 #[command(
     name = "cycleref",
     version,
-    about = "Reference expansion and checking of lathe thread-cutting and grooving cycles (G76, G32, G75.1)",
+    about = "Reference expansion and checking of lathe thread-cutting and grooving cycles (G76, G78, G92, G32, G75.1; LinuxCNC's G76 and G33)",
     after_help = EXIT_STATUS
 )]
 struct Cli {
