@@ -1,4 +1,4 @@
-//! Any bytes, read with every profile: the reader yields items or an error
+//! Any bytes, read with every profile (linuxcnc included): the reader yields items or an error
 //! with a line, never panics; every cycle it accepts is expanded by both
 //! engines through the one pipeline, which must give the same moves or the
 //! same error. The same bytes fed to the line-fed reader a line at a time
@@ -27,7 +27,7 @@ fn same_line_by_line(data: &[u8], machine: &Machine) {
 }
 
 fuzz_target!(|data: &[u8]| {
-    for profile in [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988] {
+    for profile in [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc] {
         let mut machine = Machine::new(profile);
         machine.pass_limit = 2_000;
         same_line_by_line(data, &machine);
