@@ -623,6 +623,32 @@ where
     let mut at = c.start;
     let mut last: Option<Pass> = None;
     let check_pass = |moves: &[Move], from: Point| {
+        // The rapids and the thread region.
+        let mut prev = from;
+        for (i, m) in moves.iter().enumerate() {
+            let synchronised = matches!(m.role, Role::LeadIn | Role::Cut | Role::RunOut);
+            assert_eq!(
+                synchronised,
+                matches!(m.motion, Motion::Thread { .. }),
+                "the synchronised moves (tapers, over) are thread moves, never rapids, and the others rapids"
+            );
+            if m.motion == Motion::Rapid {
+                let is_in = i == 1 && !entry;
+                if !is_in {
+                    assert!(
+                        sigma * (m.to.x - crest) >= 0,
+                        "a rapid other than in ends at or outside the crest"
+                    );
+                }
+                if sigma * (prev.x - crest) < 0 {
+                    assert!(
+                        prev.z == m.to.z && sigma * (m.to.x - prev.x) > 0,
+                        "a rapid from inside the thread region runs along X alone, outwards"
+                    );
+                }
+            }
+            prev = m.to;
+        }
         let n = moves.len();
         assert_eq!(n, usize::try_from(moves_per_pass(&c)).unwrap_or(0), "a pass's moves (R-LCNC-PASS)");
         let (back, out) = (moves[0], moves[n - 1]);
@@ -638,7 +664,7 @@ where
         );
         assert_eq!((over.role, over.to), (Role::Cut, Point::new(x_c, over_z)), "over runs at the cut X");
         assert!(
-            matches!(over.motion, Motion::Thread { lead, sync, .. } if lead == c.pitch && sync == !entry),
+            matches!(over.motion, Motion::Thread { lead, sync, .. } if lead == c.pitch && sync != entry),
             "over is synchronised at P, starting the synchronisation without an entry taper"
         );
         assert!(sigma * (x_b - x_c) > 0, "the cut X is deeper than the back X");
@@ -703,28 +729,6 @@ where
             assert!(t * (over_z - (z_s + e)) >= 0, "with both tapers the over runs forwards");
         }
         cover!(c.taper_distance > span && (entry || exit), "a taper longer than the pass");
-        // The rapids and the thread region.
-        let mut prev = from;
-        for (i, m) in moves.iter().enumerate() {
-            if m.motion == Motion::Rapid {
-                let is_in = i == 1 && !entry;
-                if !is_in {
-                    assert!(
-                        sigma * (m.to.x - crest) >= 0,
-                        "a rapid other than in ends at or outside the crest"
-                    );
-                }
-                if sigma * (prev.x - crest) < 0 {
-                    assert!(
-                        prev.z == m.to.z && sigma * (m.to.x - prev.x) > 0,
-                        "a rapid from inside the thread region runs along X alone, outwards"
-                    );
-                }
-            } else {
-                assert!(matches!(m.motion, Motion::Thread { .. }), "a synchronised move is a thread move");
-            }
-            prev = m.to;
-        }
     };
     for m in moves {
         if m.role == Role::Return {
