@@ -356,7 +356,7 @@ fn schedule_step() {
 }
 
 /// LinuxCNC G76 depths (`crate::linuxcnc::lcnc_depth_monotonicity`) over
-/// [`LCNC_DEPTH_WINDOW`]: R = p/q symbolic (every q ≤ 4, 1 ≤ R ≤ 3), J ≤ 3,
+/// [`LCNC_DEPTH_WINDOW`]: R = p/q symbolic (q ≤ 4, 1 ≤ R ≤ 3, in ten-thousandths: the quarters), J ≤ 3,
 /// K ≤ 6, H -1..2, G7/G8, both sides, Q 0 and 29.5°, pass limit 12: rough
 /// passes numbered in order, each shallower than K exactly, depth
 /// round(δ_n/ξ) non-decreasing with cut ≥ 0 and at most round(K/ξ), its

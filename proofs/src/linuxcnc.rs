@@ -38,8 +38,9 @@
 //! bounds the rough passes (beyond it the engine refuses the cycle,
 //! R-LIMIT, which [`lcnc_termination`] checks against the same
 //! restatement). Every integer of the restatement stays far inside `u128`
-//! in the windows of `crate::windows` (`K^p ≤ 8^12`, `(2e + 1)^p ≤ 21^12`);
-//! [`pow`] asserts it.
+//! in the windows of `crate::windows` (p ≤ 12, q ≤ 4: `K^p ≤ 6^12`,
+//! `((2d + 1)ξ)^p ≤ 26^12`) and in the tests' wider sampled window (`K ≤
+//! 60`, 40 passes: below `2^96`); [`pow`] asserts it.
 
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE};

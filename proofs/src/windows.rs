@@ -136,8 +136,9 @@ pub const SCHEDULE_STEP_WINDOW: ScheduleDomain = ScheduleDomain {
 
 /// The LinuxCNC depth window of `lcnc_depth_monotonicity` and
 /// `lcnc_termination`: J ≤ 3, K − J ≤ 3 (K ≤ 6), R = p/q for every q ≤ 4
-/// and q ≤ p ≤ 3q with `10 000·p/q` an integer (R from 1 to 3: 1, 5/4,
-/// 4/3, 3/2, 5/3, 7/4, 2, 9/4, 7/3, 5/2, 8/3, 11/4, 3), H from -1 to 2, G7
+/// and q ≤ p ≤ 3q with `10 000·p/q` an integer (R in ten-thousandths: so
+/// the quarters from 1 to 3, 1, 5/4, 3/2, 7/4, 2, 9/4, 5/2, 11/4, 3; a
+/// third is no ten-thousandth), H from -1 to 2, G7
 /// and G8, both sides, X₀ from 0 to 2 (coordinates of either sign after
 /// the rounding), Q 0 and 29.5°, no taper, pass limit 12 (J = 1, K = 6, R
 /// = 3 would take 215 rough passes: refused). The most moves: 12 rough
@@ -182,7 +183,7 @@ pub const LCNC_SPRING_WINDOW: LcncDomain = LcncDomain {
 };
 
 /// The window of `lcnc_pass_moves`: J ≤ 2, K ≤ 4, R 1 and 2, |I| ≤ 2, every
-/// angle, H 0 and 1, E from 0 to 3 with every L on threads 2 and 6 long (E
+/// angle, H 0 and 1, E from 0 to 3 with every L on threads 2 to 6 long (E
 /// longer than the pass too), both directions and sides, G7/G8, pass
 /// limit 8.
 pub const LCNC_PASS_WINDOW: LcncDomain = LcncDomain {
