@@ -299,6 +299,10 @@ where
                 rough += 1;
                 assert_eq!(u64::from(p.number), rough, "rough passes are numbered 1, 2, 3, … in order");
                 assert!(r.below_full(rough), "a rough pass is shallower than K exactly");
+                assert!(
+                    rough == 1 || r.twice_depth_pow(rough) > r.twice_depth_pow(rough - 1),
+                    "the exact rough depths strictly increase"
+                );
                 assert!(r.is_rounded_radius(rough, p.depth), "a rough depth is round(δ_n/ξ)");
                 assert!(p.depth >= depth, "rough depths never decrease");
                 assert_eq!(p.cut, p.depth - depth, "the cut is the depth less the previous pass's");
@@ -600,6 +604,7 @@ where
         "an in rapid down to the cut",
         "an out rapid from the cut (no exit taper)",
         "an exit taper ending on the crest",
+        "a pass that runs backwards (the compound shift beyond the thread)",
     ]);
     let drawn = any_lcnc(d);
     let c = drawn.c;
@@ -730,6 +735,7 @@ where
             assert!(t * (over_z - (z_s + e)) >= 0, "with both tapers the over runs forwards");
         }
         cover!(c.taper_distance > span && (entry || exit), "a taper longer than the pass");
+        cover!(span < 0, "a pass that runs backwards (the compound shift beyond the thread)");
     };
     for m in moves {
         if m.role == Role::Return {
