@@ -216,6 +216,24 @@ impl Depths {
         pow(2 * e - 1, self.p) <= v && v <= pow(2 * e + 1, self.p)
     }
 
+    /// `|v − δ_n/ξ| ≤ ½` (`v ≥ 1`): `δ_n/ξ` rounded either way at a half.
+    #[must_use]
+    pub fn is_rounded_radius_either_way(&self, n: u64, v: i64) -> bool {
+        let Ok(v) = u128::try_from(v) else { return false };
+        if v == 0 {
+            return false;
+        }
+        let w = self.twice_depth_pow(n);
+        pow((2 * v - 1) * self.xf, self.p) <= w && w <= pow((2 * v + 1) * self.xf, self.p)
+    }
+
+    /// `|v − K/ξ| ≤ ½`: `K/ξ` rounded either way at a half.
+    #[must_use]
+    pub fn is_rounded_full_radius_either_way(&self, v: i64) -> bool {
+        let Ok(v) = u128::try_from(v) else { return false };
+        (2 * v * self.xf).abs_diff(2 * self.k) <= self.xf
+    }
+
     /// `round(K/ξ)`, ties away from zero: the full depth as a radius.
     #[must_use]
     pub fn full_radius(&self) -> i64 {
@@ -563,6 +581,10 @@ pub fn is_taper_pitch(c: &LinuxCncG76, lead: Lead) -> bool {
 /// of `Z − Z₀` and, for each pass, its back X `x_b` and start Z `z_s`
 /// (from its first move), its cut X `x_c` and end Z `z_e` (from its out):
 ///
+/// * the pass starts at `z_s = Z₀ − ζ` (ζ = (δ/ξ)·tan Q, Q negated towards
+///   +Z): at Z₀ for Q = 0; shifted along the thread (`t(z_s − Z₀) ≥ 0`) for
+///   Q > 0 and against it for Q < 0; at ±45° (`tan Q = 1`) by `δ/ξ` rounded
+///   (the restatement's bracket, either way at a half);
 /// * the pass is: back, a rapid; then either "in", a rapid along X alone at
 ///   `z_s` down to `x_c`, or with an entry taper (E > 0, L bit 1) two
 ///   synchronised moves, to `(x_c + σK, z_s)` and to `(x_c, z_s + tE)`;
@@ -605,6 +627,8 @@ where
         "an out rapid from the cut (no exit taper)",
         "an exit taper ending on the crest",
         "a pass that runs backwards (the compound shift beyond the thread)",
+        "a compound shift against the thread (Q < 0)",
+        "a 45° compound shift",
     ]);
     let drawn = any_lcnc(d);
     let c = drawn.c;
@@ -612,6 +636,7 @@ where
         assume(false);
         return;
     };
+    let depths = Depths::of(&drawn);
     let sigma = if c.internal() { -1 } else { 1 };
     let t = if c.end.z > c.start.z { 1 } else { -1 };
     let crest = c.start.x - sigma * c.peak_offset.abs();
@@ -654,6 +679,33 @@ where
                 }
             }
             prev = m.to;
+        }
+        // The compound shift of the pass's start (R-LCNC-PASS): ζ = (δ/ξ)·tan Q
+        // along the thread for Q > 0 (Q is negated towards +Z, and so is
+        // the shift's sign in Z), against it for Q < 0, none for Q = 0.
+        let z_s = moves.first().map_or(c.start.z, |m| m.to.z);
+        let shift = t * (z_s - c.start.z);
+        let q_sign = i64::from(c.compound_angle.signum());
+        if q_sign == 0 {
+            assert_eq!(shift, 0, "without a compound angle every pass starts at Z₀");
+        } else {
+            assert!(
+                q_sign * shift >= 0,
+                "the compound shift runs along the thread for Q > 0, against it for Q < 0"
+            );
+            cover!(q_sign < 0 && shift < 0, "a compound shift against the thread (Q < 0)");
+            cover!(c.compound_angle.unsigned_abs() == 450_000 && shift != 0, "a 45° compound shift");
+            if c.compound_angle.unsigned_abs() == 450_000 {
+                // tan 45° = 1: |ζ| = δ/ξ rounded either way at a half.
+                let info = moves.first().and_then(|m| m.pass);
+                let exact = match info {
+                    Some(Pass { kind: PassKind::Rough, number, .. }) => {
+                        depths.is_rounded_radius_either_way(u64::from(number), shift.abs())
+                    }
+                    _ => depths.is_rounded_full_radius_either_way(shift.abs()),
+                };
+                assert!(exact, "at 45° the compound shift is the depth as a radius, rounded");
+            }
         }
         let n = moves.len();
         assert_eq!(n, usize::try_from(moves_per_pass(&c)).unwrap_or(0), "a pass's moves (R-LCNC-PASS)");

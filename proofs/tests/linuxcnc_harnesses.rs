@@ -410,3 +410,32 @@ fn an_entry_taper_beyond_the_cut_is_caught_by_pass_moves() {
     });
     caught(&LCNC_PASS_WINDOW, p4, e, "the entry taper starts K above the cut");
 }
+
+/// Q not negated for a thread towards +Z (l.5740-5742 left out): the
+/// compound shift runs against the thread there. The mutant mirrors every
+/// pass's start Z about Z₀ on threads towards +Z (the back and the in),
+/// as an engine that takes tan Q with the programmed sign would place
+/// them.
+#[test]
+fn a_compound_shift_the_wrong_way_is_caught_by_pass_moves() {
+    let e = mutant(|c, v| {
+        let towards_plus = c.end.z > c.start.z;
+        let mut first_of_pass = true;
+        let mut z_s = c.start.z;
+        v.into_iter()
+            .map(|mut m| {
+                if towards_plus && m.role == Role::Approach {
+                    if first_of_pass {
+                        z_s = m.to.z;
+                    }
+                    if m.to.z == z_s {
+                        m.to.z = 2 * c.start.z - m.to.z;
+                    }
+                }
+                first_of_pass = m.role == Role::Retract;
+                m
+            })
+            .collect()
+    });
+    caught(&LCNC_PASS_WINDOW, p4, e, "the compound shift runs along the thread for Q > 0");
+}
