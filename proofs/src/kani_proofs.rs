@@ -369,6 +369,9 @@ fn schedule_step() {
 /// exact-root search at most 12. No contract: the engine's interval
 /// kernels (`engine::real`) have none, so Kani bit-blasts 192-bit series;
 /// the harness is sound as written but expensive (like `groove_no_panic`).
+/// Covers: three or more rough passes; two at the same rounded depth; one
+/// at round(K/ξ); an exact root beyond the first pass; a fractional R; G7;
+/// internal.
 #[kani::proof]
 #[kani::unwind(256)]
 #[kani::solver(cadical)]
@@ -381,7 +384,9 @@ fn lcnc_depth_monotonicity() {
 /// `J^p·13^q < K^p`; otherwise the last rough pass N has `J^p·N^q < K^p ≤
 /// J^p·(N + 1)^q`, then 1 + H passes at K and the return, `(N + 1 + H)·4 +
 /// 1` moves. Unwind 256; measured as [`lcnc_depth_monotonicity`]. No
-/// contract (as there).
+/// contract (as there). Covers: a single rough pass; δ_(N+1) = K exactly;
+/// H = -1; H ≥ 1; refused beyond the limit; as many rough passes as the
+/// limit.
 #[kani::proof]
 #[kani::unwind(256)]
 #[kani::solver(cadical)]
@@ -396,7 +401,9 @@ fn lcnc_termination() {
 /// repeating it. Unwind 256; measured: 255 division bits, 128 bit pairs of
 /// `isqrt_wide` (the taper pitch), 60 atanh terms, 39 exp steps, 32 root
 /// and gcd steps, 15 sine/cosine terms, 9 passes checked, 67 moves of one
-/// cycle. No contract (as [`lcnc_depth_monotonicity`]).
+/// cycle. No contract (as [`lcnc_depth_monotonicity`]). Covers: H ≥ 1; a
+/// compound angle; an exit taper; an entry taper; internal; towards +Z; G7
+/// with an odd K; a first full-depth pass that cuts nothing.
 #[kani::proof]
 #[kani::unwind(256)]
 #[kani::solver(cadical)]
@@ -411,6 +418,12 @@ fn lcnc_spring_passes() {
 /// the back X and the cut X and within the pass's Z span, no rapid into
 /// the thread region but a non-tapered pass's "in". Unwind 256; measured
 /// as [`lcnc_spring_passes`] but 61 moves of one cycle. No contract.
+/// Also: each pass's start shifted by the compound angle the right way
+/// (δ/ξ rounded at 45°). Covers: each taper alone and both; L without E; a
+/// taper longer than the pass; a pass that runs backwards; tapers internal
+/// and towards +Z; an in rapid to the cut; an out rapid from the cut; an
+/// exit taper ending on the crest; a shift against the thread; a 45°
+/// shift.
 #[kani::proof]
 #[kani::unwind(256)]
 #[kani::solver(cadical)]
