@@ -28,13 +28,14 @@ use crate::contracts;
 use crate::g92;
 use crate::groove::{self, GrooveDomain, GrooveFixedPoint};
 use crate::harness::{self, FixedPoint};
+use crate::linuxcnc;
 use crate::schedule;
 use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW,
     GROOVE_NO_PANIC_LAYERS, GROOVE_NO_PANIC_MOVES, GROOVE_NO_PANIC_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
-    SCHEDULE_STEP_WINDOW,
+    LCNC_DEPTH_WINDOW, LCNC_PASS_WINDOW, LCNC_SPRING_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW,
+    NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -364,4 +365,80 @@ fn groove_no_panic() {
 #[kani::solver(cadical)]
 fn schedule_step() {
     schedule::schedule_step(&SCHEDULE_STEP_WINDOW, &cycleref::engine::schedule::Schedule::next_level);
+}
+
+/// LinuxCNC G76 depths (`crate::linuxcnc::lcnc_depth_monotonicity`) over
+/// [`LCNC_DEPTH_WINDOW`]: R = p/q symbolic (q ≤ 4, 1 ≤ R ≤ 3, in ten-thousandths: the quarters), J ≤ 3,
+/// K ≤ 6, H -1..2, G7/G8, both sides, Q 0 and 29.5°, pass limit 12: rough
+/// passes numbered in order, each shallower than K exactly, depth
+/// round(δ_n/ξ) non-decreasing with cut ≥ 0 and at most round(K/ξ), its
+/// cut X the exact depth rounded. Unwind 256; measured over the window
+/// (`proofs/tests/linuxcnc_harnesses.rs`, `every_loop_stays_below_its_unwind_bound`):
+/// 255 bits of `real::limbs_divmod` (the largest), 60 atanh terms, 39
+/// exp steps, 32 root-search and gcd steps, 15 sine/cosine terms, 13
+/// passes checked, 5 limb iterations, 2 iterator rounds, 61 moves of one
+/// cycle (the harness's loop); the harness's `pow` at most 12, its
+/// exact-root search at most 12. No contract: the engine's interval
+/// kernels (`engine::real`) have none, so Kani bit-blasts 192-bit series;
+/// the harness is sound as written but expensive (like `groove_no_panic`).
+/// Covers: three or more rough passes; two at the same rounded depth; one
+/// at round(K/ξ); an exact root beyond the first pass; a fractional R; G7;
+/// internal.
+#[kani::proof]
+#[kani::unwind(256)]
+#[kani::solver(cadical)]
+fn lcnc_depth_monotonicity() {
+    linuxcnc::lcnc_depth_monotonicity(&LCNC_DEPTH_WINDOW, &cycleref::expand_linuxcnc);
+}
+
+/// LinuxCNC G76 termination (`crate::linuxcnc::lcnc_termination`) over
+/// [`LCNC_DEPTH_WINDOW`]: refused with `TooManyPasses` exactly when
+/// `J^p·13^q < K^p`; otherwise the last rough pass N has `J^p·N^q < K^p ≤
+/// J^p·(N + 1)^q`, then 1 + H passes at K and the return, `(N + 1 + H)·4 +
+/// 1` moves. Unwind 256; measured as [`lcnc_depth_monotonicity`]. No
+/// contract (as there). Covers: a single rough pass; δ_(N+1) = K exactly;
+/// H = -1; H ≥ 1; refused beyond the limit; as many rough passes as the
+/// limit.
+#[kani::proof]
+#[kani::unwind(256)]
+#[kani::solver(cadical)]
+fn lcnc_termination() {
+    linuxcnc::lcnc_termination(&LCNC_DEPTH_WINDOW, &cycleref::expand_linuxcnc);
+}
+
+/// LinuxCNC G76 passes at full depth (`crate::linuxcnc::lcnc_spring_passes`)
+/// over [`LCNC_SPRING_WINDOW`] (K ≤ 5, R 1..2, every angle, H -1..2, E 0..2
+/// with every L, both directions and sides): depth round(K/ξ), cut X X₀ −
+/// σ(|I| + K), out at X₀, the deepest pass ending at Z, spring passes
+/// repeating it. Unwind 256; measured: 255 division bits, 128 bit pairs of
+/// `isqrt_wide` (the taper pitch), 60 atanh terms, 39 exp steps, 32 root
+/// and gcd steps, 15 sine/cosine terms, 9 passes checked, 67 moves of one
+/// cycle. No contract (as [`lcnc_depth_monotonicity`]). Covers: H ≥ 1; a
+/// compound angle; an exit taper; an entry taper; internal; towards +Z; G7
+/// with an odd K; a first full-depth pass that cuts nothing.
+#[kani::proof]
+#[kani::unwind(256)]
+#[kani::solver(cadical)]
+fn lcnc_spring_passes() {
+    linuxcnc::lcnc_spring_passes(&LCNC_SPRING_WINDOW, &cycleref::expand_linuxcnc);
+}
+
+/// LinuxCNC G76 moves of a pass (`crate::linuxcnc::lcnc_pass_moves`) over
+/// [`LCNC_PASS_WINDOW`] (K ≤ 4, R 1 and 2, every angle, H 0..1, E 0..3 with
+/// every L, threads 2 to 6 long): R-LCNC-PASS move by move, synchronised
+/// moves never rapids, the taper pitch restated in integers, tapers between
+/// the back X and the cut X and within the pass's Z span, no rapid into
+/// the thread region but a non-tapered pass's "in". Unwind 256; measured
+/// as [`lcnc_spring_passes`] but 61 moves of one cycle. No contract.
+/// Also: each pass's start shifted by the compound angle the right way
+/// (δ/ξ rounded at 45°). Covers: each taper alone and both; L without E; a
+/// taper longer than the pass; a pass that runs backwards; tapers internal
+/// and towards +Z; an in rapid to the cut; an out rapid from the cut; an
+/// exit taper ending on the crest; a shift against the thread; a 45°
+/// shift.
+#[kani::proof]
+#[kani::unwind(256)]
+#[kani::solver(cadical)]
+fn lcnc_pass_moves() {
+    linuxcnc::lcnc_pass_moves(&LCNC_PASS_WINDOW, &cycleref::expand_linuxcnc);
 }

@@ -14,6 +14,7 @@ pub mod groove;
 pub mod harness;
 #[cfg(kani)]
 mod kani_proofs;
+pub mod linuxcnc;
 pub mod schedule;
 pub mod shim;
 pub mod thread;

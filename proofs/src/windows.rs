@@ -7,6 +7,7 @@
 
 use crate::groove::GrooveDomain;
 use crate::harness::Domain;
+use crate::linuxcnc::LcncDomain;
 use crate::schedule::ScheduleDomain;
 
 /// The G76 window of P1, P2, P4 and P5: thread heights up to 6 increments,
@@ -161,8 +162,78 @@ pub const SCHEDULE_STEP_WINDOW: ScheduleDomain = ScheduleDomain {
     level: (0, 999_999_999),
 };
 
+/// The LinuxCNC depth window of `lcnc_depth_monotonicity` and
+/// `lcnc_termination`: J ≤ 3, K − J ≤ 3 (K ≤ 6), R = p/q for every q ≤ 4
+/// and q ≤ p ≤ 3q with `10 000·p/q` an integer (R in ten-thousandths: so
+/// the quarters from 1 to 3, 1, 5/4, 3/2, 7/4, 2, 9/4, 5/2, 11/4, 3; a
+/// third is no ten-thousandth), H from -1 to 2, G7
+/// and G8, both sides, X₀ from 0 to 2 (coordinates of either sign after
+/// the rounding), Q 0 and 29.5°, no taper, pass limit 12 (J = 1, K = 6, R
+/// = 3 would take 215 rough passes: refused). The most moves: 12 rough
+/// passes and 3 at full depth, 4 moves each, and the return: 61.
+pub const LCNC_DEPTH_WINDOW: LcncDomain = LcncDomain {
+    initial_depth: (1, 3),
+    extra_depth: (1, 3),
+    denominator: (1, 4),
+    max_degression: 3,
+    peak_offset: (1, 1),
+    x0: (0, 2),
+    length: (10, 10),
+    angle: (0, 1),
+    spring_passes: (-1, 2),
+    taper_distance: (0, 0),
+    taper_bits: (0, 0),
+    diameter: (0, 1),
+    internal: (0, 1),
+    towards_plus: (0, 0),
+    pass_limit: 12,
+};
+
+/// The window of `lcnc_spring_passes`: K ≤ 5, R from 1 to 2, every angle of
+/// [`crate::linuxcnc::ANGLES`], H from -1 to 2, both directions and sides,
+/// G7/G8, E 0 and 2 with every L, pass limit 8.
+pub const LCNC_SPRING_WINDOW: LcncDomain = LcncDomain {
+    initial_depth: (1, 2),
+    extra_depth: (1, 3),
+    denominator: (1, 2),
+    max_degression: 2,
+    peak_offset: (1, 2),
+    x0: (0, 0),
+    length: (10, 10),
+    angle: (0, 3),
+    spring_passes: (-1, 2),
+    taper_distance: (0, 2),
+    taper_bits: (0, 3),
+    diameter: (0, 1),
+    internal: (0, 1),
+    towards_plus: (0, 1),
+    pass_limit: 8,
+};
+
+/// The window of `lcnc_pass_moves`: J ≤ 2, K ≤ 4, R 1 and 2, |I| ≤ 2, every
+/// angle, H 0 and 1, E from 0 to 3 with every L on threads 2 to 6 long (E
+/// longer than the pass too), both directions and sides, G7/G8, pass
+/// limit 8.
+pub const LCNC_PASS_WINDOW: LcncDomain = LcncDomain {
+    initial_depth: (1, 2),
+    extra_depth: (1, 2),
+    denominator: (1, 1),
+    max_degression: 2,
+    peak_offset: (1, 2),
+    x0: (0, 0),
+    length: (2, 6),
+    angle: (0, 3),
+    spring_passes: (0, 1),
+    taper_distance: (0, 3),
+    taper_bits: (0, 3),
+    diameter: (0, 1),
+    internal: (0, 1),
+    towards_plus: (0, 1),
+    pass_limit: 8,
+};
+
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 25] = [
+pub const UNWIND: [(&str, u32); 29] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -188,6 +259,10 @@ pub const UNWIND: [(&str, u32); 25] = [
     ("groove_material", 66),
     ("groove_no_panic", GROOVE_NO_PANIC_UNWIND),
     ("schedule_step", 7),
+    ("lcnc_depth_monotonicity", 256),
+    ("lcnc_termination", 256),
+    ("lcnc_spring_passes", 256),
+    ("lcnc_pass_moves", 256),
 ];
 
 /// The bound of harness `name` in [`UNWIND`].
