@@ -116,6 +116,12 @@ fn what_the_profile_does_not_read() {
     assert_eq!(e.word.as_deref(), Some("U1"));
     let e = error(&format!("{HEAD}G33.1 Z-5 K1\n"));
     assert!(e.to_string().contains("G33.1"), "{e}");
+    let e = error(&format!("{HEAD}G41\nG76 P1 Z-5 I-0.5 J0.1 K0.3\n"));
+    assert_eq!((e.line, e.word.as_deref()), (4, Some("G41")));
+    assert!(
+        e.to_string().contains("Cannot use G76 threading cycle with cutter radius compensation on"),
+        "{e}"
+    );
     let e = error(&format!("{HEAD}G92 X10 Z1\n"));
     assert!(e.to_string().contains("the linuxcnc profile reads"), "{e}");
     // Q of 90 degrees or more, R above 100, a pitch of 0.

@@ -47,6 +47,17 @@ impl State<'_> {
                 Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
                 Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
                 Some(4 | 18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
+                Some(41 | 42) => {
+                    return Err(err(
+                        &block,
+                        Some(w),
+                        ErrorKind::Unsupported(
+                            "cutter radius compensation (not modelled; LinuxCNC refuses a G76 with it on: \
+                             \"Cannot use G76 threading cycle with cutter radius compensation on\")"
+                                .into(),
+                        ),
+                    ))
+                }
                 _ => {
                     return Err(err(
                         &block,
