@@ -570,7 +570,7 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                 // profile, a diameter.
                 let c = &call.cycle;
                 let f = i128::from(if c.x_mode == XMode::Radius { 2 } else { 1 });
-                let sigma = if c.internal() { -1 } else { 1 };
+                let sigma = i128::from(c.sigma());
                 let x0 = i128::from(c.start.x);
                 let peak = f * (x0 - sigma * i128::from(c.peak_offset.abs()));
                 let root = f * (x0 - sigma * i128::from(c.peak_offset.abs() + c.full_depth));

@@ -86,6 +86,17 @@ impl LinuxCncG76 {
         self.peak_offset > 0
     }
 
+    /// σ of reading R-LCNC-PASS: +1 for an external thread (I < 0), -1 for
+    /// an internal one; a pass at depth δ cuts at X₀ − σ(|I| + δ).
+    #[must_use]
+    pub const fn sigma(&self) -> i64 {
+        if self.internal() {
+            -1
+        } else {
+            1
+        }
+    }
+
     /// Checks the interpreter's conditions on the words and the range
     /// tables: both models call this first, so they refuse the same
     /// cycles with the same error.

@@ -303,7 +303,7 @@ where
         return;
     };
     let r = Depths::of(&drawn);
-    let sigma = if c.internal() { -1 } else { 1 };
+    let sigma = c.sigma();
     let crest = c.start.x - sigma * c.peak_offset.abs();
     let mut last: Option<Pass> = None;
     let mut rough = 0_u64;
@@ -482,7 +482,7 @@ where
         return;
     };
     let r = Depths::of(&drawn);
-    let sigma = if c.internal() { -1 } else { 1 };
+    let sigma = c.sigma();
     let (x0, k, i_abs) = (c.start.x, c.full_depth, c.peak_offset.abs());
     let x_cut = x0 - sigma * (i_abs + k);
     let exit = c.taper_distance > 0 && c.exit_taper;
@@ -637,7 +637,7 @@ where
         return;
     };
     let depths = Depths::of(&drawn);
-    let sigma = if c.internal() { -1 } else { 1 };
+    let sigma = c.sigma();
     let t = if c.end.z > c.start.z { 1 } else { -1 };
     let crest = c.start.x - sigma * c.peak_offset.abs();
     let entry = c.taper_distance > 0 && c.entry_taper;

@@ -260,7 +260,7 @@ fn a_diameter_depth_label_is_caught_by_depth_monotonicity() {
 #[test]
 fn a_shallow_cut_x_is_caught_by_depth_monotonicity() {
     let e = mutant(|c, v| {
-        let sigma = if c.internal() { -1 } else { 1 };
+        let sigma = c.sigma();
         v.into_iter()
             .map(|mut m| {
                 if m.role == Role::Cut && m.pass.is_some_and(|p| p.kind == PassKind::Rough && p.number == 2) {
@@ -305,7 +305,7 @@ fn h_ignored_is_caught_by_termination() {
 #[test]
 fn a_deeper_spring_pass_is_caught_by_spring_passes() {
     let e = mutant(|c, v| {
-        let sigma = if c.internal() { -1 } else { 1 };
+        let sigma = c.sigma();
         v.into_iter()
             .map(|mut m| {
                 if m.role == Role::Cut && m.pass.is_some_and(|p| p.kind == PassKind::Finish && p.number > 1) {
@@ -396,7 +396,7 @@ fn an_exit_taper_at_p_is_caught_by_pass_moves() {
 #[test]
 fn an_entry_taper_beyond_the_cut_is_caught_by_pass_moves() {
     let e = mutant(|c, v| {
-        let sigma = if c.internal() { -1 } else { 1 };
+        let sigma = c.sigma();
         v.into_iter()
             .map(|mut m| {
                 if m.role == Role::LeadIn && m.motion != Motion::Rapid {

@@ -101,7 +101,7 @@ pub fn taper_pitch(c: &LinuxCncG76) -> Lead {
 pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
     c.validate()?;
     let xf = Real::int(c.x_mode.factor());
-    let sigma: i64 = if c.internal() { -1 } else { 1 };
+    let sigma: i64 = c.sigma();
     let towards_plus = c.end.z > c.start.z;
     // l.5740-5742: Q in radians, negated for a thread towards +Z.
     let q = if towards_plus { -c.compound_angle } else { c.compound_angle };

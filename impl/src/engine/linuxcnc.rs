@@ -494,7 +494,7 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         x0: c.start.x,
         z0: c.start.z,
         z: c.end.z,
-        sigma: if c.internal() { -1 } else { 1 },
+        sigma: c.sigma(),
         i_abs: c.peak_offset.abs(),
         j: c.initial_depth,
         k: c.full_depth,
