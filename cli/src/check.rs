@@ -1587,8 +1587,18 @@ fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result
 ///
 /// Our expansion's error, or the trace's, with its line.
 pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
-    let units = job.validate()?.units;
     let format = if is_csv { TraceFormat::Csv } else { TraceFormat::Nc };
+    check_bytes_as(job, bytes, format, tolerance)
+}
+
+/// [`check_bytes`] with the trace's format named, LinuxCNC's canonical
+/// output included (the fuzz target `check_canon` calls it).
+///
+/// # Errors
+///
+/// Our expansion's error, or the trace's, with its line.
+pub fn check_bytes_as(job: &Job, bytes: &[u8], format: TraceFormat, tolerance: u64) -> Result<Report, String> {
+    let units = job.validate()?.units;
     compare_streams(job, Box::new(bytes), format, units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) | StreamError::Theirs(e) => e,
     })
