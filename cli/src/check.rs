@@ -139,11 +139,13 @@ fn lead_of(b: &Block, w: &Word, word: LeadWord) -> Result<Lead, String> {
     if w.number().negative {
         return Err(bad());
     }
-    let frac = w.number().frac_digits().unwrap_or_default();
-    let frac = frac.trim_end_matches('0');
-    let digits = format!("{}{frac}", w.number().int_digits());
-    let digits = digits.trim_start_matches('0');
-    let mantissa = if digits.is_empty() { 0 } else { digits.parse().map_err(|_| bad())? };
+    let n = w.number();
+    let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
+    let mut mantissa: u64 = 0;
+    for b in n.int_digits().bytes().chain(frac.bytes()) {
+        mantissa =
+            mantissa.checked_mul(10).and_then(|m| m.checked_add(u64::from(b - b'0'))).ok_or_else(bad)?;
+    }
     let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).map_err(|_| bad())? };
     if lead.in_range() {
         Ok(lead)
@@ -275,7 +277,8 @@ impl<'m> Tracker<'m> {
         for w in &b.words {
             let ok = match w.letter {
                 'G' if self.linuxcnc => {
-                    let g = w.number().integer().filter(|_| w.number().decimal().is_some_and(|d| d.fract().is_zero()));
+                    // `integer` is None for a code that is not whole.
+                    let g = w.number().integer();
                     let plain = matches!(g, Some(0..=4 | 7 | 8 | 18 | 20 | 21 | 33 | 40 | 54..=59 | 61 | 64 | 90 | 94..=97));
                     self.trace_g(b, w, g, plain, "G0/G1/G2/G3/G33")?
                 }
@@ -1597,7 +1600,12 @@ pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Res
 /// # Errors
 ///
 /// Our expansion's error, or the trace's, with its line.
-pub fn check_bytes_as(job: &Job, bytes: &[u8], format: TraceFormat, tolerance: u64) -> Result<Report, String> {
+pub fn check_bytes_as(
+    job: &Job,
+    bytes: &[u8],
+    format: TraceFormat,
+    tolerance: u64,
+) -> Result<Report, String> {
     let units = job.validate()?.units;
     compare_streams(job, Box::new(bytes), format, units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) | StreamError::Theirs(e) => e,

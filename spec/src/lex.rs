@@ -123,8 +123,7 @@ impl<'a> Number<'a> {
     /// then decides.
     #[must_use]
     pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
-        let frac = self.frac_digits().unwrap_or("").trim_end_matches('0');
-        let int = self.int_digits().trim_start_matches('0');
+        let (int, frac) = self.significant();
         let d = decimals as usize;
         if frac.len() > d {
             return Some(None);
@@ -132,24 +131,72 @@ impl<'a> Number<'a> {
         if int.len() + d > 18 {
             return None;
         }
-        let digits = |s: &str| s.bytes().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
-        let scale = 10_i64.pow(decimals);
-        let pad = 10_i64.pow(u32::try_from(d - frac.len()).ok()?);
-        let v = digits(int) * scale + digits(frac) * pad;
+        // At most 18 digits in all: no overflow.
+        let mut v = int.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+        for i in 0..d {
+            v = v * 10 + frac.get(i).map_or(0, |b| i64::from(b - b'0'));
+        }
         Some(Some(if self.negative { -v } else { v }))
+    }
+
+    /// The value times 10^`scale`, when that is a whole number that an
+    /// `i128` holds (digits finer than 10^-`scale` give `None`, as does a
+    /// value of more than 38 digits). `75.10` with scale 1 is 751.
+    #[must_use]
+    pub fn exact(&self, scale: u32) -> Option<i128> {
+        let (int, frac) = self.significant();
+        let d = scale as usize;
+        if frac.len() > d {
+            return None;
+        }
+        let mut v: i128 = 0;
+        for b in int.iter().copied().chain((0..d).map(|i| frac.get(i).copied().unwrap_or(b'0'))) {
+            v = v.checked_mul(10)?.checked_add(i128::from(b - b'0'))?;
+        }
+        Some(if self.negative { -v } else { v })
+    }
+
+    /// True when the value is greater than zero (as [`Number::decimal`]
+    /// compared with zero: a value no `Decimal` holds is not).
+    #[must_use]
+    pub fn is_positive(&self) -> bool {
+        // Up to 19 digits and a point, `decimal` always holds the value.
+        if self.digits.len() <= 20 {
+            !self.negative && self.digits.bytes().any(|b| matches!(b, b'1'..=b'9'))
+        } else {
+            self.decimal().is_some_and(|d| d > Decimal::ZERO)
+        }
+    }
+
+    /// The digits before the point without leading zeros and the digits
+    /// after it without trailing zeros.
+    fn significant(&self) -> (&'a [u8], &'a [u8]) {
+        let b = self.digits.as_bytes();
+        let (mut int, mut frac): (&[u8], &[u8]) = match self.point {
+            Some(p) => (b.get(..p as usize).unwrap_or_default(), b.get(p as usize + 1..).unwrap_or_default()),
+            None => (b, &[]),
+        };
+        while let [b'0', rest @ ..] = int {
+            int = rest;
+        }
+        while let [rest @ .., b'0'] = frac {
+            frac = rest;
+        }
+        (int, frac)
     }
 
     /// The value when it is a whole number (a decimal point followed only by
     /// zeros counts as whole).
     #[must_use]
     pub fn integer(&self) -> Option<i64> {
-        if let Some(f) = self.frac_digits() {
-            if f.bytes().any(|b| b != b'0') {
-                return None;
-            }
+        let (int, frac) = self.significant();
+        if !frac.is_empty() {
+            return None;
         }
-        let digits = self.int_digits().trim_start_matches('0');
-        let v: i64 = if digits.is_empty() { 0 } else { digits.parse().ok()? };
+        let mut v: i64 = 0;
+        for &b in int {
+            v = v.checked_mul(10)?.checked_add(i64::from(b - b'0'))?;
+        }
         Some(if self.negative { -v } else { v })
     }
 }
@@ -166,19 +213,36 @@ pub struct Word<'a> {
     /// The word as written, from its letter to its last digit (spaces
     /// between the letter and the number kept).
     raw: &'a str,
+    /// Where the number's digits start in `raw` (after the spaces and the
+    /// sign), or [`SLOW`] when `raw` is too long for a byte: the lexer
+    /// knows it, so [`Word::number`] need not look again. These three
+    /// fields fill what would be padding: a word stays 24 bytes.
+    at: u8,
+    /// Where the decimal point is in the digits, or [`SLOW`] for none.
+    point: u8,
+    /// A leading minus sign.
+    negative: bool,
 }
+
+/// "Not known": see [`Word`].
+const SLOW: u8 = u8::MAX;
 
 impl<'a> Word<'a> {
     /// A word from `raw`, the text it was read from: an address letter,
     /// perhaps spaces or tabs, a sign, digits with at most one `.`.
     #[must_use]
     pub fn new(letter: char, raw: &'a str) -> Word<'a> {
-        Word { letter, raw }
+        Word { letter, raw, at: SLOW, point: SLOW, negative: false }
     }
 
     /// The value.
     #[must_use]
     pub fn number(&self) -> Number<'a> {
+        if self.at != SLOW {
+            let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+            let point = (self.point != SLOW).then_some(u32::from(self.point));
+            return Number { negative: self.negative, digits, point };
+        }
         let rest = self.raw.get(1..).unwrap_or_default().trim_start_matches([' ', '\t']);
         match rest.as_bytes().first() {
             Some(b'-') => Number::new(true, rest.get(1..).unwrap_or_default()),
@@ -612,7 +676,8 @@ impl<'a> Lexer<'a> {
                 Err(e) => return Some(Err(e)),
             };
             let text = trim(&line.bytes[start..seg.end]);
-            self.current = seg.next.map(|n| (line, n));
+            // A block end that ends the line leaves nothing to read in it.
+            self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             if text.is_empty() && seg.words.is_empty() {
                 continue;
             }
@@ -633,7 +698,7 @@ impl<'a> Lexer<'a> {
                     t.push(b' ');
                     t.extend_from_slice(more);
                 }
-                self.current = seg.next.map(|n| (line, n));
+                self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             }
             return Some(Ok(block));
         }
@@ -685,6 +750,21 @@ fn decode_last(bytes: &[u8]) -> Option<char> {
 
 /// `bytes` without leading and trailing white space (as `str::trim`).
 fn trim(mut bytes: &[u8]) -> &[u8] {
+    // The usual case: ASCII white space (as `char::is_whitespace`) at the
+    // ends; the loops below take any other.
+    let ascii_space = |b: &u8| matches!(b, b' ' | b'\t' | b'\n' | b'\x0b' | b'\x0c' | b'\r');
+    while let [b, rest @ ..] = bytes {
+        if !ascii_space(b) {
+            break;
+        }
+        bytes = rest;
+    }
+    while let [rest @ .., b] = bytes {
+        if !ascii_space(b) {
+            break;
+        }
+        bytes = rest;
+    }
     while let Some(c) = decode(bytes).filter(|c| c.is_whitespace()) {
         bytes = &bytes[c.len_utf8()..];
     }
@@ -722,7 +802,16 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         None => std::str::from_utf8(&line[start..pos]).ok(),
     }
     .unwrap_or_default();
-    let word = Word { letter, raw };
+    // The number's place in `raw`, when `raw` is short enough for bytes
+    // (it always is but for hundreds of digits or spaces).
+    let (at, point) = match (u8::try_from(digits_start - start), u8::try_from(int_len)) {
+        (Ok(at), Ok(int)) if pos - start < usize::from(SLOW) => {
+            (at, if frac_len.is_some() { int } else { SLOW })
+        }
+        _ => (SLOW, SLOW),
+    };
+    let negative = digits_start > num_start && line[num_start] == b'-';
+    let word = Word { letter, raw, at, point, negative };
     if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
         return Err(ProgramError {
             line: line_no,

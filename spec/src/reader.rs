@@ -607,7 +607,7 @@ impl State<'_> {
 
 /// True when `block` programs G75.1.
 fn is_g75_1(block: &Block<'_>) -> bool {
-    block.all('G').any(|w| w.number().decimal() == Decimal::from_str_exact("75.1").ok())
+    block.all('G').any(|w| w.number().exact(1) == Some(751))
 }
 
 fn lone_g75(line: usize) -> ProgramError {
@@ -787,15 +787,15 @@ impl State<'_> {
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
         // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
         // I 0.0001..254 (metric) / 0.0001..100 (inch).
+        // The bounds in units of 10^-MAX_LEAD_SCALE (6 decimals).
         let (lo, hi, range) = match (word, self.units.unit) {
-            (LeadWord::F, InputUnit::Metric) => ("0.0001", "9999", "F 0.0001..9999 mm"),
-            (LeadWord::F, InputUnit::Inch) => ("0.00001", "9.99", "F 0.00001..9.99 inch"),
-            (LeadWord::I, InputUnit::Metric) => ("0.0001", "254", "I 0.0001..254 threads per inch"),
-            (LeadWord::I, InputUnit::Inch) => ("0.0001", "100", "I 0.0001..100 threads per inch"),
+            (LeadWord::F, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
+            (LeadWord::F, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
+            (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
+            (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
         };
-        let value = n.decimal().ok_or_else(|| out(range))?;
-        let lo = Decimal::from_str_exact(lo).unwrap_or(Decimal::ONE);
-        let hi = Decimal::from_str_exact(hi).unwrap_or(Decimal::ONE);
+        // Finer than 10^-6 or beyond an i128: outside the table either way.
+        let value = n.exact(MAX_LEAD_SCALE).ok_or_else(|| out(range))?;
         if n.negative || value < lo || value > hi || scale > MAX_LEAD_SCALE {
             return Err(out(range));
         }
@@ -816,7 +816,6 @@ impl State<'_> {
         let mut g04 = false;
         let mut motion = None;
         for w in block.all('G') {
-            let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
             let whole = w.number().integer();
             match whole {
                 Some(0) => motion = Some(MotionMode::G00),
@@ -845,7 +844,7 @@ impl State<'_> {
                 Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
                 Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
-                None if Decimal::from_str_exact("75.1").ok() == w.number().decimal() => {
+                None if w.number().exact(1) == Some(751) => {
                     if !self.machine.profile.g75_1 {
                         return Err(err(
                             &block,
@@ -860,6 +859,7 @@ impl State<'_> {
                     g75 = true;
                 }
                 _ => {
+                    let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
                     return Err(err(
                         &block,
                         Some(w),
@@ -867,7 +867,7 @@ impl State<'_> {
                             "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
                              G75.1, G76, G92 (the thread-cutting cycle), G96-G99)"
                         )),
-                    ))
+                    ));
                 }
             }
         }
@@ -883,7 +883,7 @@ impl State<'_> {
             // Reading R-SPINDLE: `G50 S` alone clamps the spindle speed; with X/Z
             // (the manuals' "G50 X100 Z50 M3 S300") S is the speed.
             let clamp = g50 && !block.has('X') && !block.has('Z');
-            if !clamp && s.number().decimal().is_some_and(|d| d > Decimal::ZERO) {
+            if !clamp && s.number().is_positive() {
                 self.speed = true;
             }
         }
@@ -935,7 +935,7 @@ impl State<'_> {
             };
         }
         if let Some(f) = block.get('F')? {
-            if f.number().decimal().is_some_and(|d| d > Decimal::ZERO) {
+            if f.number().is_positive() {
                 self.lead =
                     Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
             }

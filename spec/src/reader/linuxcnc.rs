@@ -33,8 +33,8 @@ impl State<'_> {
         let mut g33 = false;
         let mut mode = None;
         for w in block.all('G') {
-            let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
-            let whole = w.number().integer().filter(|_| code.fract().is_zero());
+            // A whole code: `integer` gives None for any other.
+            let whole = w.number().integer();
             match whole {
                 Some(0) => motion = Some(MotionMode::G00),
                 Some(1) => motion = Some(MotionMode::G01),
@@ -59,11 +59,12 @@ impl State<'_> {
                     ))
                 }
                 _ => {
+                    let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
                     return Err(err(
                         &block,
                         Some(w),
                         ErrorKind::Unsupported(format!("G{code} (the linuxcnc profile reads {KNOWN})")),
-                    ))
+                    ));
                 }
             }
         }

@@ -1,0 +1,93 @@
+//! The lexer's number shortcuts (`Number::scaled`, `integer`, `exact`,
+//! `is_positive`, and the number position a lexed `Word` carries) against
+//! their definitions through `rust_decimal`, on generated words: the fast
+//! paths of the reader give exactly what the exact value gives.
+
+use cycleref_spec::lex::{Lexer, Word};
+use proptest::prelude::*;
+use rust_decimal::Decimal;
+
+/// A word's text: a letter, perhaps spaces, a sign, digits with perhaps a
+/// point (leading and trailing zeros and long runs of digits included).
+fn word_text() -> impl Strategy<Value = String> {
+    (
+        prop::sample::select(vec!["X", "G", "F", "S", "P"]),
+        prop::sample::select(vec!["", " ", "  \t"]),
+        prop::sample::select(vec!["", "-", "+"]),
+        "0{0,3}[0-9]{0,24}",
+        prop::option::of("0{0,3}[0-9]{0,24}0{0,3}"),
+    )
+        .prop_filter("a number", |(_, _, _, int, frac)| {
+            !int.is_empty() || frac.as_ref().is_some_and(|f| !f.is_empty())
+        })
+        .prop_map(|(l, sp, sign, int, frac)| match frac {
+            Some(f) => format!("{l}{sp}{sign}{int}.{f}"),
+            None => format!("{l}{sp}{sign}{int}"),
+        })
+}
+
+/// 10^k as a Decimal, or None beyond its range.
+fn pow10(k: u32) -> Option<Decimal> {
+    (0..k).try_fold(Decimal::ONE, |p, _| p.checked_mul(Decimal::TEN))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(4000))]
+
+    #[test]
+    fn shortcuts_agree_with_the_exact_value(text in word_text(), scale in 0_u32..8) {
+        let block = Lexer::new(text.as_bytes()).next().expect("a block").expect("lexes");
+        let lexed = block.words[0];
+        // The lexer's precomputed number position gives what a word made
+        // from its text alone gives.
+        let n = lexed.number();
+        let slow = Word::new(lexed.letter, &text).number();
+        prop_assert_eq!(n, slow);
+        let d = n.decimal();
+        // integer: the value when whole and within an i64.
+        let whole = d.filter(|d| d.fract().is_zero()).and_then(|d| i64::try_from(d).ok());
+        prop_assert_eq!(n.integer(), whole, "integer of {}", text);
+        // is_positive: > 0 where a Decimal holds the value.
+        prop_assert_eq!(n.is_positive(), d.is_some_and(|d| d > Decimal::ZERO), "is_positive of {}", text);
+        // exact(scale): value × 10^scale when whole (checked where a Decimal
+        // holds both the value and the product).
+        if let Some(p) = d.zip(pow10(scale)).and_then(|(d, p)| d.checked_mul(p)) {
+            let expect = if p.fract().is_zero() { i128::try_from(p).ok() } else { None };
+            prop_assert_eq!(n.exact(scale), expect, "exact({}) of {}", scale, text);
+        }
+        // scaled(scale): Some(Some(v)) exactly when v = value × 10^scale is
+        // whole; Some(None) when finer.
+        match n.scaled(scale) {
+            Some(Some(v)) => prop_assert_eq!(Some(i128::from(v)), n.exact(scale), "scaled({}) of {}", scale, text),
+            Some(None) => prop_assert_eq!(n.exact(scale), None, "scaled({}) of {}", scale, text),
+            None => {}
+        }
+    }
+}
+
+#[test]
+fn worked_examples() {
+    let word = |t: &'static str| Lexer::new(t.as_bytes()).next().unwrap().unwrap().words[0];
+    // G75.1 by its exact value, whatever the zeros.
+    assert_eq!(word("G75.1").number().exact(1), Some(751));
+    assert_eq!(word("G075.10").number().exact(1), Some(751));
+    assert_eq!(word("G75.11").number().exact(1), None);
+    assert_eq!(word("G-75.1").number().exact(1), Some(-751));
+    // A lead in units of 10^-6.
+    assert_eq!(word("F0.0001").number().exact(6), Some(100));
+    assert_eq!(word("F9999").number().exact(6), Some(9_999_000_000));
+    // Zero in any spelling is not positive; a minus sign is not.
+    assert!(!word("S0.000").number().is_positive());
+    assert!(!word("S-5").number().is_positive());
+    assert!(word("S .5").number().is_positive());
+    // 19 nines do not fit an i64 whole... but 18 do.
+    assert_eq!(word("P999999999999999999").number().integer(), Some(999_999_999_999_999_999));
+    assert_eq!(word("P99999999999999999999").number().integer(), None);
+    assert_eq!(word("X-0012.500").number().scaled(3), Some(Some(-12_500)));
+    assert_eq!(word("X1.0005").number().scaled(3), Some(None));
+    // A word longer than 255 bytes takes the slow path to its number.
+    let long = format!("X-{}1.5", "0".repeat(300));
+    let w = Lexer::new(long.as_bytes()).next().unwrap().unwrap().words[0];
+    assert_eq!(w.number(), Word::new('X', &long).number());
+    assert_eq!(w.number().scaled(3), Some(Some(-1_500)));
+}
