@@ -12,7 +12,7 @@
 
 use std::fmt;
 use std::fs::File;
-use std::io::{BufRead, BufReader, IsTerminal as _, Read as _};
+use std::io::{BufReader, IsTerminal as _, Read as _};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
@@ -364,9 +364,11 @@ impl From<ProgramError> for ReadError {
 }
 
 /// The items of a program, read from its text one at a time: from the
-/// held bytes, or from its file a line at a time (one line in memory).
+/// held bytes, or from its file in pieces of whole lines (about
+/// [`CHUNK`] bytes, or one line when a line is longer: that much in
+/// memory, whatever the file's length).
 ///
-/// An item borrows the line it was read from, which the next one
+/// An item borrows the piece it was read from, which a later one
 /// overwrites; [`Items::next_with`] lends each item to a function that
 /// makes of it what the caller keeps.
 pub struct Items<'j> {
@@ -378,11 +380,58 @@ pub struct Items<'j> {
 enum Input<'j> {
     Held(&'j [u8]),
     Lines {
-        file: BufReader<File>,
-        line: Vec<u8>,
-        /// The line is finished: the next item needs the next line.
+        file: File,
+        /// The bytes read from the file and not yet consumed: the piece
+        /// (whole lines) first, then the start of the next line.
+        buf: Vec<u8>,
+        /// Where the piece ends in `buf`.
+        piece: usize,
+        /// The file has no more bytes.
+        eof: bool,
+        /// The piece is finished: the next item needs the next piece.
         next: bool,
     },
+}
+
+/// How many bytes [`Items`] reads from a file at a time.
+pub const CHUNK: usize = 1 << 16;
+
+/// The next piece of whole lines into `buf`, after dropping the piece
+/// before it: `Ok(false)` when the file has no more.
+fn next_piece(
+    file: &mut File,
+    buf: &mut Vec<u8>,
+    piece: &mut usize,
+    eof: &mut bool,
+) -> std::io::Result<bool> {
+    buf.drain(..*piece);
+    *piece = 0;
+    // The bytes before `searched` hold no line end.
+    let mut searched = 0;
+    loop {
+        // The piece ends after the last line end read so far.
+        if let Some(i) = buf[searched..].iter().rposition(|&b| b == b'\n') {
+            *piece = searched + i + 1;
+            return Ok(true);
+        }
+        searched = buf.len();
+        if *eof {
+            // The last line, without a line end.
+            *piece = buf.len();
+            return Ok(!buf.is_empty());
+        }
+        let have = buf.len();
+        buf.resize(have + CHUNK, 0);
+        let n = loop {
+            match file.read(&mut buf[have..]) {
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                r => break r,
+            }
+        };
+        let n = n.inspect_err(|_| buf.truncate(have))?;
+        buf.truncate(have + n);
+        *eof = n == 0;
+    }
 }
 
 impl<'j> Items<'j> {
@@ -395,7 +444,7 @@ impl<'j> Items<'j> {
                 if meta.len() != *len || meta.modified().ok() != *modified {
                     return Err(ReadError::Changed);
                 }
-                Input::Lines { file: BufReader::with_capacity(1 << 16, file), line: Vec::new(), next: true }
+                Input::Lines { file, buf: Vec::new(), piece: 0, eof: false, next: true }
             }
         };
         Ok(Items { reader: LineReader::new(machine), input, ended: false })
@@ -408,11 +457,10 @@ impl<'j> Items<'j> {
             return None;
         }
         loop {
-            if let Input::Lines { file, line, next: next @ true } = &mut self.input {
-                line.clear();
-                match file.read_until(b'\n', line) {
-                    Ok(0) => return self.end(),
-                    Ok(_) => *next = false,
+            if let Input::Lines { file, buf, piece, eof, next: next @ true } = &mut self.input {
+                match next_piece(file, buf, piece, eof) {
+                    Ok(false) => return self.end(),
+                    Ok(true) => *next = false,
                     Err(e) => {
                         self.ended = true;
                         return Some(Err(ReadError::Io(e)));
@@ -421,7 +469,7 @@ impl<'j> Items<'j> {
             }
             let piece: &[u8] = match &self.input {
                 Input::Held(bytes) => bytes,
-                Input::Lines { line, .. } => line,
+                Input::Lines { buf, piece, .. } => &buf[..*piece],
             };
             match self.reader.next_in(piece) {
                 Some(Ok(item)) => return Some(Ok(f(item))),

@@ -293,3 +293,38 @@ fn a_file_changed_after_the_start_is_an_error_and_writes_nothing() {
     assert!(message.contains("the file changed while it was read"), "{message}");
     assert!(out.is_empty());
 }
+
+#[test]
+fn a_file_read_in_pieces_gives_what_the_held_text_gives() {
+    // Pieces of whole lines (`job::CHUNK` bytes at a time): lines across
+    // piece boundaries, CR LF line ends, a comment line longer than a
+    // piece, and a last line without a line end give the same output as
+    // the text held whole, and an error the same line.
+    let mut text = String::from_utf8(program(3000)).expect("utf-8").replace('\n', "\r\n");
+    text.insert_str(0, &format!("({})\r\n", "x".repeat(3 * cycleref_cli::job::CHUNK / 2)));
+    let text = text.trim_end().to_string();
+    assert!(text.len() > 3 * cycleref_cli::job::CHUNK, "{}", text.len());
+    let run = |bytes: &str| {
+        let path = std::env::temp_dir().join(format!("cycleref-bounded-{}-pieces.nc", std::process::id()));
+        std::fs::write(&path, bytes).expect("writes the program");
+        let machine = Machine::new(ProfileName::Gsk988);
+        let from_file = Job::from_file(&path, machine.clone(), Engine::Impl)
+            .unwrap_or_else(|e| panic!("{}", String::from(e)));
+        let held = Job::new(&path.display().to_string(), bytes.as_bytes().to_vec(), machine, Engine::Impl);
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        let ra = output::expand(&from_file, Format::Nc, &mut a).map_err(String::from);
+        let rb = output::expand(&held, Format::Nc, &mut b).map_err(String::from);
+        std::fs::remove_file(&path).expect("removes the program");
+        assert_eq!(ra, rb);
+        assert_eq!(a, b);
+        (ra, a)
+    };
+    let (r, out) = run(&text);
+    assert!(r.is_ok() && out.len() > 100_000, "{r:?}");
+    // An error on the last line (no line end after it) names that line.
+    let lines = text.lines().count();
+    let (r, out) = run(&format!("{text}\r\nG01 X1 X2"));
+    let e = r.expect_err("a repeated X");
+    assert!(e.contains(&format!("line {}", lines + 1)), "{e}");
+    assert!(out.is_empty());
+}

@@ -132,10 +132,8 @@ impl<'a> Number<'a> {
             return None;
         }
         // At most 18 digits in all: no overflow.
-        let mut v = int.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
-        for i in 0..d {
-            v = v * 10 + frac.get(i).map_or(0, |b| i64::from(b - b'0'));
-        }
+        let v = int.iter().chain(frac).fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+        let v = v * POW10[d - frac.len()];
         Some(Some(if self.negative { -v } else { v }))
     }
 
@@ -223,6 +221,17 @@ pub struct Word<'a> {
     /// A leading minus sign.
     negative: bool,
 }
+
+/// 10^k for k up to 18.
+const POW10: [i64; 19] = {
+    let mut p = [1_i64; 19];
+    let mut k = 1;
+    while k < 19 {
+        p[k] = p[k - 1] * 10;
+        k += 1;
+    }
+    p
+};
 
 /// "Not known": see [`Word`].
 const SLOW: u8 = u8::MAX;
@@ -694,9 +703,12 @@ impl<'a> Lexer<'a> {
                 }
                 let more = trim(&line.bytes[start..seg.end]);
                 if !more.is_empty() {
-                    let t = block.text.to_mut();
+                    // One allocation of the joined size.
+                    let mut t = Vec::with_capacity(block.text.len() + 1 + more.len());
+                    t.extend_from_slice(&block.text);
                     t.push(b' ');
                     t.extend_from_slice(more);
+                    block.text = Cow::Owned(t);
                 }
                 self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             }

@@ -1027,7 +1027,23 @@ impl State<'_> {
 
     /// X, Z, U and W of a block; X with U or Z with W is an error.
     fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
-        let (xw, zw, uw, ww) = (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?);
+        let (xw, zw, uw, ww) = if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.words.repeats(c)) {
+            // `get` names the repeated word.
+            (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?)
+        } else {
+            // The usual case: one pass over the words.
+            let (mut xw, mut zw, mut uw, mut ww) = (None, None, None, None);
+            for w in &block.words {
+                match w.letter {
+                    'X' => xw = Some(w),
+                    'Z' => zw = Some(w),
+                    'U' => uw = Some(w),
+                    'W' => ww = Some(w),
+                    _ => {}
+                }
+            }
+            (xw, zw, uw, ww)
+        };
         if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
             return Err(err(
                 block,
