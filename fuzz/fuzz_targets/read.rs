@@ -1,4 +1,5 @@
-//! Any bytes, read with every profile, the reader alone (no engine): the
+//! Any bytes, read with a profile the first byte chooses, the reader
+//! alone (no engine): the
 //! reader yields items or an error with a line, never panics, and the
 //! line-fed reader (a program file read a line at a time through one
 //! reused buffer) gives the same items and the same error as the reader of
@@ -14,9 +15,15 @@
 use cycleref_spec::{LineReader, Machine, ProfileName, Reader};
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    for profile in [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc] {
-        let machine = Machine::new(profile);
+/// The profiles, one per run: the input's first byte chooses.
+const PROFILES: [ProfileName; 4] = [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc];
+
+fuzz_target!(|input: &[u8]| {
+    // The first byte chooses the profile (so that a run reads its text
+    // once each way, not four times), the rest is the program.
+    let Some((&choice, data)) = input.split_first() else { return };
+    {
+        let machine = Machine::new(PROFILES[usize::from(choice) % PROFILES.len()]);
         let mut whole = Reader::new(data, &machine);
         let mut lines = LineReader::new(&machine);
         let mut buf = Vec::new();
