@@ -542,11 +542,10 @@ impl<'a> Lexer<'a> {
     /// Reads one segment of `line` from `start` (up to a block end or the
     /// line's end): its words and the offset after its block end, or
     /// `None` for the offset when the line is finished.
-    fn segment(&self, whole: Line<'a>, start: usize) -> Result<Segment<'a>, ProgramError> {
+    fn segment(&self, whole: Line<'a>, start: usize, words: &mut Words<'a>) -> Result<Segment, ProgramError> {
         let line = whole.bytes;
         let line_no = self.line;
         let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
-        let mut words = Words::new();
         let mut pos = start;
         // N and O only first; nothing after O; `/` only first; `%` alone.
         let mut seen = false;
@@ -560,7 +559,7 @@ impl<'a> Lexer<'a> {
         while pos < line.len() {
             let b = line[pos];
             match b {
-                b';' => return Ok(Segment { words, end: pos, next: Some(pos + 1) }),
+                b';' => return Ok(Segment { end: pos, next: Some(pos + 1) }),
                 b'(' => {
                     pos =
                         comment_end(line, pos + 1).ok_or_else(|| syntax("an unclosed comment `(`".into()))?
@@ -614,7 +613,7 @@ impl<'a> Lexer<'a> {
                 _ => {
                     let rest = &line[pos..];
                     if rest.starts_with(FULL_SEMI) {
-                        return Ok(Segment { words, end: pos, next: Some(pos + FULL_SEMI.len()) });
+                        return Ok(Segment { end: pos, next: Some(pos + FULL_SEMI.len()) });
                     }
                     if rest.starts_with(FULL_OPEN) {
                         pos = comment_end(line, pos + FULL_OPEN.len())
@@ -635,7 +634,7 @@ impl<'a> Lexer<'a> {
                 }
             }
         }
-        Ok(Segment { words, end: line.len(), next: None })
+        Ok(Segment { end: line.len(), next: None })
     }
 }
 
@@ -649,9 +648,9 @@ struct Line<'a> {
     text: Option<&'a str>,
 }
 
-/// A block's worth of a line.
-struct Segment<'a> {
-    words: Words<'a>,
+/// Where a block's worth of a line ends (its words go where the caller
+/// says).
+struct Segment {
     /// Where the block's text ends (its block end, or the line's end).
     end: usize,
     /// Where the next block starts, if the line goes on.
@@ -675,30 +674,36 @@ impl<'a> Iterator for Lexer<'a> {
 
 impl<'a> Lexer<'a> {
     fn next_block(&mut self) -> Option<Result<Block<'a>, ProgramError>> {
+        // The block is built where it is returned from: its words are read
+        // into it, not moved into it.
+        let mut block = Block { line: 0, text: Cow::Borrowed(&[]), words: Words::new() };
         loop {
             let (line, start) = match self.current.take() {
                 Some(c) => c,
                 None => (self.next_line()?, 0),
             };
-            let seg = match self.segment(line, start) {
+            block.words = Words::new();
+            let seg = match self.segment(line, start, &mut block.words) {
                 Ok(s) => s,
                 Err(e) => return Some(Err(e)),
             };
             let text = trim(&line.bytes[start..seg.end]);
             // A block end that ends the line leaves nothing to read in it.
             self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
-            if text.is_empty() && seg.words.is_empty() {
+            if text.is_empty() && block.words.is_empty() {
                 continue;
             }
-            let mut block = Block { line: self.line, text: Cow::Borrowed(text), words: seg.words };
+            block.line = self.line;
+            block.text = Cow::Borrowed(text);
             // A comment after a block end on the same line belongs to that
             // block: take every following segment without words.
             while let Some((line, start)) = self.current {
-                let seg = match self.segment(line, start) {
+                let mut words = Words::new();
+                let seg = match self.segment(line, start, &mut words) {
                     Ok(s) => s,
                     Err(e) => return Some(Err(e)),
                 };
-                if !seg.words.is_empty() {
+                if !words.is_empty() {
                     break;
                 }
                 let more = trim(&line.bytes[start..seg.end]);
