@@ -199,22 +199,7 @@ fn a_finish_without_the_width_compensation_is_caught() {
 /// The material harness's slice: grooving tools, with and without layers,
 /// every corner size 0..=3 (chamfers), J0 and J1, deep enough for ridges
 /// and slivers (each a declared cover): 221 184 grooves.
-const MATERIAL: GrooveDomain = GrooveDomain {
-    depth: (6, 7),
-    width: (4, 6),
-    peck: (3, 3),
-    step: (1, 3),
-    layer: (0, 2),
-    allowance_x: (1, 2),
-    allowance_z: (0, 1),
-    tool_width: (1, 2),
-    corner: (0, 3),
-    corner_kinds: (0, 0),
-    path: (0, 1),
-    signs: (0, 0),
-    units: (0, 0),
-    ..SMALL
-};
+const MATERIAL: GrooveDomain = GrooveDomain::MATERIAL;
 
 #[test]
 fn a_step_at_the_plunge_bottom_is_caught() {
