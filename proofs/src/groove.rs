@@ -94,6 +94,57 @@ impl GrooveDomain {
         signs: (0, 3),
         units: (0, 7),
     };
+
+    /// The material harness's slice in the tests (`proofs/tests/g75_harnesses.rs`,
+    /// `proofs/tests/g75_mutants.rs`): grooving tools (w 1..=2), with and
+    /// without layers, every corner size 0..=3 as chamfers, allowances, J0
+    /// and J1, deep enough for ridges and slivers; H < 0, D > 0, IS-B metric
+    /// diameter (unit code 0), each test widening the unit codes as it needs.
+    pub const MATERIAL: GrooveDomain = GrooveDomain {
+        depth: (6, 7),
+        width: (4, 6),
+        peck: (3, 3),
+        step: (1, 3),
+        retract: (1, 1),
+        layer: (0, 2),
+        allowance_x: (1, 2),
+        allowance_z: (0, 1),
+        tool_width: (1, 2),
+        corner: (0, 3),
+        corner_kinds: (0, 0),
+        path: (0, 1),
+        signs: (0, 0),
+        units: (0, 0),
+        ..GrooveDomain::SQUARE
+    };
+
+    /// Grooves of many layers and nothing else: right-angle, zero width, a
+    /// pointed tool, no retract, allowance or corner, J0, H < 0, IS-B metric
+    /// diameter; `depth`, `peck` and `layer` (Δv) as given. With `peck ≥
+    /// layer` each layer is one plunge, so the layer loops run once per layer:
+    /// the worst case of the peck count's loop (`proofs/tests/unwind.rs`,
+    /// `proofs/tests/g75_harnesses.rs`).
+    #[must_use]
+    pub const fn layers_only(depth: (i64, i64), peck: (i64, i64), layer: (i64, i64)) -> GrooveDomain {
+        GrooveDomain {
+            depth,
+            width: (0, 0),
+            peck,
+            step: (1, 1),
+            retract: (0, 0),
+            layer,
+            allowance_x: (0, 0),
+            allowance_z: (0, 0),
+            tool_width: (-1, -1),
+            corner: (0, 0),
+            corner_kinds: (0, 0),
+            flank: (900_000, 900_000),
+            slope: (0, 0),
+            path: (0, 0),
+            signs: (0, 0),
+            units: (0, 0),
+        }
+    }
 }
 
 /// A G75.1 cycle chosen from `d`: S = (X100, Z0) (in mm at the chosen

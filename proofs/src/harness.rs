@@ -191,6 +191,33 @@ where
     }
 }
 
+/// A plain G76 cycle for the tests to build theirs on: IS-B metric, radius
+/// X, an external straight thread from X10 Z1 to X5 Z-20, F2, one start,
+/// k 1.000, Δd 0.400, Δdmin 0.100, d 0.050, one finishing pass, 60°, D0
+/// (the right flank), decreasing depths, no lead-in, no run-out, pass
+/// limit 1 000. A test names the words it depends on and takes the others
+/// from here: `G76Cycle { thread_height: 4, ..PLAIN_CYCLE }`.
+pub const PLAIN_CYCLE: G76Cycle = G76Cycle {
+    units: Units::IS_B_METRIC,
+    x_mode: XMode::Radius,
+    start: Point::new(10_000, 1_000),
+    end: Point::new(5_000, -20_000),
+    taper: 0,
+    thread_height: 1_000,
+    first_depth: 400,
+    min_cut: 100,
+    finishing_allowance: 50,
+    finishing_passes: 1,
+    tool_angle: 60,
+    infeed: Infeed::RightFlank,
+    depth_mode: DepthMode::Decreasing,
+    lead_in: 0,
+    starts: 1,
+    lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+    run_out: RunOut::None,
+    pass_limit: 1_000,
+};
+
 /// A cycle of the domain: an external or internal thread, either
 /// direction, with A clear of the crest by one increment.
 ///

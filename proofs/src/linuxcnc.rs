@@ -252,6 +252,24 @@ fn pass_changed(last: Option<Pass>, m: &Move) -> Option<Pass> {
     }
 }
 
+/// A cycle of window `d` ([`any_lcnc`]) as `engine` expands it, with the
+/// exact restatement of its depths; `None`, the run pruned, when the engine
+/// refuses it.
+fn expanded<F, I>(d: &LcncDomain, engine: &F) -> Option<(Drawn, I, Depths)>
+where
+    F: Fn(&LinuxCncG76) -> Result<I, CycleError>,
+    I: Iterator<Item = Move>,
+{
+    let drawn = any_lcnc(d);
+    match engine(&drawn.c) {
+        Ok(moves) => Some((drawn, moves, Depths::of(&drawn))),
+        Err(_) => {
+            assume(false);
+            None
+        }
+    }
+}
+
 /// True when `n^(q/p)` is an integer (`m^p = n^q` for some `m ≤ n`):
 /// `δ_n = J·m` exactly, the case the engine holds as an exact point.
 #[must_use]
@@ -296,13 +314,8 @@ where
         "G7",
         "internal",
     ]);
-    let drawn = any_lcnc(d);
+    let Some((drawn, moves, r)) = expanded(d, engine) else { return };
     let c = drawn.c;
-    let Ok(moves) = engine(&c) else {
-        assume(false);
-        return;
-    };
-    let r = Depths::of(&drawn);
     let sigma = c.sigma();
     let crest = c.start.x - sigma * c.peak_offset.abs();
     let mut last: Option<Pass> = None;
@@ -475,13 +488,8 @@ where
         "G7 with an odd K (the radius depth rounded up)",
         "the first full-depth pass cuts nothing (a rough pass at its depth)",
     ]);
-    let drawn = any_lcnc(d);
+    let Some((drawn, moves, r)) = expanded(d, engine) else { return };
     let c = drawn.c;
-    let Ok(moves) = engine(&c) else {
-        assume(false);
-        return;
-    };
-    let r = Depths::of(&drawn);
     let sigma = c.sigma();
     let (x0, k, i_abs) = (c.start.x, c.full_depth, c.peak_offset.abs());
     let x_cut = x0 - sigma * (i_abs + k);
@@ -630,13 +638,8 @@ where
         "a compound shift against the thread (Q < 0)",
         "a 45° compound shift",
     ]);
-    let drawn = any_lcnc(d);
+    let Some((drawn, moves, depths)) = expanded(d, engine) else { return };
     let c = drawn.c;
-    let Ok(moves) = engine(&c) else {
-        assume(false);
-        return;
-    };
-    let depths = Depths::of(&drawn);
     let sigma = c.sigma();
     let t = if c.end.z > c.start.z { 1 } else { -1 };
     let crest = c.start.x - sigma * c.peak_offset.abs();

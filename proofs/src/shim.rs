@@ -307,6 +307,28 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
     report
 }
 
+/// Runs one harness body on the real engine (`control`) and on an engine
+/// broken on purpose (`mutant`), both in `mode`: the control must pass (so
+/// every declared cover is satisfied in an exhaustive mode), the mutant
+/// must fail with `expected` in the failing assertion's own message, not
+/// merely in the check's name, which every failure carries. Returns the
+/// control's report.
+///
+/// # Panics
+///
+/// When the control fails, the mutant passes, or the mutant fails another
+/// assertion than the one `expected` names.
+pub fn caught(mode: Mode, control: impl Fn(), mutant: impl Fn(), expected: &str) -> Report {
+    let report = check("control", mode, control);
+    let failure = catch_unwind(AssertUnwindSafe(|| check("mutant", mode, mutant)))
+        .expect_err("the harness must catch the mutant");
+    let text = message(failure.as_ref());
+    let (head, why) = text.split_once("]: ").unwrap_or((text, ""));
+    assert!(head.starts_with("mutant: the harness failed at run"), "not a failing run: {text}");
+    assert!(why.contains(expected), "caught by another check than {expected:?}: {text}");
+    report
+}
+
 /// Installs, once, a panic hook that stays silent for the [`assume`]
 /// pruning panics and defers to the previous hook for every other panic.
 fn quiet_pruning() {

@@ -103,24 +103,21 @@ pub const G32_WINDOW: (i64, i64) = (1_000, 100);
 /// 100, one or two starts.
 pub const G92_WINDOW: (i64, i64, i64) = (1_000, 100, 2);
 
-/// G75.1: right-angle grooves up to 4 increments deep and wide.
+/// G75.1: right-angle grooves up to 4 increments deep and wide, layers up
+/// to 3, allowances and corner sizes up to 1, a pointed tool or widths
+/// 1..=2; as [`GrooveDomain::SQUARE`] retract 0..=1, every corner kind, J,
+/// sign and unit code.
 pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     depth: (1, 4),
     width: (0, 4),
     peck: (1, 4),
     step: (1, 4),
-    retract: (0, 1),
     layer: (0, 3),
     allowance_x: (0, 1),
     allowance_z: (0, 1),
     tool_width: (-1, 2),
     corner: (0, 1),
-    corner_kinds: (0, 15),
-    flank: (900_000, 900_000),
-    slope: (0, 0),
-    path: (0, 2),
-    signs: (0, 3),
-    units: (0, 7),
+    ..GrooveDomain::SQUARE
 };
 
 /// `groove_no_panic`'s window: every documented input

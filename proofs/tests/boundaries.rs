@@ -4,30 +4,17 @@
 
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::units::MAX_LENGTH;
-use cycleref::{CycleError, Field, G76Cycle, Infeed, Point, RunOut, Units, XMode};
+use cycleref::{CycleError, Field, G76Cycle, Point, Units, XMode};
+use cycleref_proofs::harness::PLAIN_CYCLE;
 use cycleref_spec::differ::assert_same_moves;
 
 /// An internal thread (radius X) whose thread start C lies at X = end + i.
 fn at_the_edge(taper: i64) -> G76Cycle {
     G76Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Radius,
         start: Point::new(999_990_000, 10_000),
         end: Point::new(999_999_000, -10_000),
         taper,
-        thread_height: 1_000,
-        first_depth: 400,
-        min_cut: 100,
-        finishing_allowance: 50,
-        finishing_passes: 1,
-        tool_angle: 60,
-        infeed: Infeed::RightFlank,
-        depth_mode: cycleref::DepthMode::Decreasing,
-        lead_in: 0,
-        starts: 1,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
-        run_out: RunOut::None,
-        pass_limit: 1_000,
+        ..PLAIN_CYCLE
     }
 }
 

@@ -8,6 +8,7 @@
 
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
 use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::windows::GROOVE_WINDOW;
 
 fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
     let r = shim::check(name, mode, body);
@@ -15,10 +16,11 @@ fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
     r
 }
 
-/// Small right-angle grooves: depth 1..=8, width 0..=6, pecks 1..=3, steps
-/// 1..=3, with or without layers of 3, allowances 0..=1, pointed tool or
-/// widths 1..=2, corner sizes 0..=1 of every kind pattern, every J, both
-/// signs of H and D, in two unit codes that between them have every unit
+/// Small right-angle grooves: the Kani window ([`GROOVE_WINDOW`]: with or
+/// without layers of 3, allowances 0..=1, pointed tool or widths 1..=2,
+/// corner sizes 0..=1 of every kind pattern, every J, both signs of H and
+/// D) deeper and wider, depth 1..=8, width 0..=6, pecks 1..=3, steps
+/// 1..=3, retract 1, in two unit codes that between them have every unit
 /// choice: IS-C inch diameter (3) and IS-B metric radius (4).
 const SMALL: GrooveDomain = GrooveDomain {
     depth: (1, 8),
@@ -26,17 +28,8 @@ const SMALL: GrooveDomain = GrooveDomain {
     peck: (1, 3),
     step: (1, 3),
     retract: (1, 1),
-    layer: (0, 3),
-    allowance_x: (0, 1),
-    allowance_z: (0, 1),
-    tool_width: (-1, 2),
-    corner: (0, 1),
-    corner_kinds: (0, 15),
-    flank: (900_000, 900_000),
-    slope: (0, 0),
-    path: (0, 2),
-    signs: (0, 3),
     units: (3, 4),
+    ..GROOVE_WINDOW
 };
 
 /// Wider, for sampling: right-angle grooves up to 400 increments.
@@ -119,22 +112,7 @@ fn inside_the_roughing_region() {
 /// the material left by the plunges and the rough contour (J0 and J1), deep
 /// enough for ridges and slivers, IS-C inch diameter and IS-B metric radius
 /// (442 368 grooves).
-const MATERIAL: GrooveDomain = GrooveDomain {
-    depth: (6, 7),
-    width: (4, 6),
-    peck: (3, 3),
-    step: (1, 3),
-    layer: (0, 2),
-    allowance_x: (1, 2),
-    allowance_z: (0, 1),
-    tool_width: (1, 2),
-    corner: (0, 3),
-    corner_kinds: (0, 0),
-    path: (0, 1),
-    signs: (0, 0),
-    units: (3, 4),
-    ..SMALL
-};
+const MATERIAL: GrooveDomain = GrooveDomain { units: (3, 4), ..GrooveDomain::MATERIAL };
 
 /// Wider, for sampling (the material grid has depth × width cells).
 const MATERIAL_WIDE: GrooveDomain = GrooveDomain {
@@ -194,23 +172,7 @@ fn no_panic_over_the_documented_ranges() {
 /// running once per layer, and 10^6 + 1, refused (`TooManyPecks`).
 #[test]
 fn no_panic_at_the_most_layers() {
-    let most = GrooveDomain {
-        depth: (999_999, 1_000_001),
-        width: (0, 0),
-        peck: (1, 1),
-        step: (1, 1),
-        layer: (1, 1),
-        retract: (0, 0),
-        allowance_x: (0, 0),
-        allowance_z: (0, 0),
-        tool_width: (-1, -1),
-        corner: (0, 0),
-        corner_kinds: (0, 0),
-        path: (0, 0),
-        signs: (0, 0),
-        units: (0, 0),
-        ..GrooveDomain::SQUARE
-    };
+    let most = GrooveDomain::layers_only((999_999, 1_000_001), (1, 1), (1, 1));
     let r = check("no panic (most layers)", Mode::Exhaustive { max_runs: 3 }, || {
         groove::groove_no_panic(&most, 64, None);
     });

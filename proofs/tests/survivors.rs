@@ -149,17 +149,16 @@ fn g92_run_out_limits() {
 
 /// A G76 cycle for the `engine/g76.rs` survivors: IS-B metric, diameter X,
 /// F2, one start, tool angle 0 (no flank shifts), one finishing pass, D2
-/// off (D0, the right flank), no lead-in, run-out as given.
+/// off (D0, the right flank), no lead-in, run-out as given (the words it
+/// does not name from `harness::PLAIN_CYCLE`).
 fn g76_cycle(
     start: cycleref::Point,
     end: cycleref::Point,
     taper: i64,
     run_out: cycleref::RunOut,
 ) -> cycleref::G76Cycle {
-    use cycleref::lead::{Lead, LeadWord};
-    use cycleref::{DepthMode, G76Cycle, Infeed, Units, XMode};
+    use cycleref::{G76Cycle, XMode};
     G76Cycle {
-        units: Units::IS_B_METRIC,
         x_mode: XMode::Diameter,
         start,
         end,
@@ -168,15 +167,10 @@ fn g76_cycle(
         first_depth: 1_000,
         min_cut: 0,
         finishing_allowance: 0,
-        finishing_passes: 1,
         tool_angle: 0,
-        infeed: Infeed::RightFlank,
-        depth_mode: DepthMode::Decreasing,
-        lead_in: 0,
-        starts: 1,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
         run_out,
         pass_limit: 100,
+        ..cycleref_proofs::harness::PLAIN_CYCLE
     }
 }
 

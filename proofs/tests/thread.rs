@@ -4,9 +4,8 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use cycleref::lead::{Lead, LeadWord};
-use cycleref::{CycleError, G76Cycle, Infeed, Motion, Move, Point, Role, RunOut, Units, XMode};
-use cycleref_proofs::harness::{Domain, FixedPoint};
+use cycleref::{CycleError, G76Cycle, Motion, Move, Point, Role, RunOut};
+use cycleref_proofs::harness::{Domain, FixedPoint, PLAIN_CYCLE};
 use cycleref_proofs::shim::{self, Mode};
 use cycleref_proofs::thread::{self, ThreadRegion};
 use cycleref_proofs::windows::G32_WINDOW;
@@ -109,8 +108,6 @@ fn no_rapid_enters_an_x_long_thread() {
 /// taper i (|i| = 10 >= |W|: X long) and the run-out.
 fn x_long_cycle() -> G76Cycle {
     G76Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Radius,
         start: Point::new(115, 5),
         end: Point::new(100, 0),
         taper: 10,
@@ -118,15 +115,8 @@ fn x_long_cycle() -> G76Cycle {
         first_depth: 4,
         min_cut: 1,
         finishing_allowance: 0,
-        finishing_passes: 1,
-        tool_angle: 60,
-        infeed: Infeed::RightFlank,
-        depth_mode: cycleref::DepthMode::Decreasing,
-        lead_in: 0,
-        starts: 1,
-        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
-        run_out: RunOut::None,
         pass_limit: 100,
+        ..PLAIN_CYCLE
     }
 }
 

@@ -283,26 +283,8 @@ fn groove_no_panic_maxima() -> Maxima {
     // The layer loop's worst: the most layers, one peck each (P ≥ Δv, one
     // plunge). |H| = 2·LAYERS + 2 with Δv = 2 and |H| = LAYERS + 2 with
     // Δv = 1 are beyond the window (pruned).
-    let layers = GrooveDomain {
-        depth: (LAYERS - 2, LAYERS + 2),
-        width: (0, 0),
-        peck: (2, 3),
-        step: (1, 1),
-        layer: (1, 1),
-        retract: (0, 0),
-        flank: (900_000, 900_000),
-        slope: (0, 0),
-        allowance_x: (0, 0),
-        allowance_z: (0, 0),
-        tool_width: (-1, -1),
-        corner: (0, 0),
-        corner_kinds: (0, 0),
-        path: (0, 0),
-        signs: (0, 0),
-        units: (0, 0),
-    };
     for (depth, layer) in [((LAYERS - 2, LAYERS + 2), (1, 1)), ((2 * LAYERS - 2, 2 * LAYERS + 2), (2, 2))] {
-        let d = GrooveDomain { depth, layer, ..layers };
+        let d = GrooveDomain::layers_only(depth, (2, 3), layer);
         let r = shim::check("groove_no_panic", Mode::Enumerate { max_runs: 1_000 }, || body(&d));
         eprintln!("  groove_no_panic (most layers, V{}): {} runs, {} pruned", layer.0, r.runs, r.pruned);
     }
