@@ -351,6 +351,52 @@ fn gsk988_high_speed_mode() {
     );
 }
 
+/// The 988TA's normal mode (THM = 5129 = 0, the default), step (3): "普通
+/// G92：X 轴和 Z 轴同时进行切削，到 D 点" (reading R-G92RUNOUT, "The 988TA's
+/// normal-mode step (3)"): the run-out is the move of X and Z together and
+/// its end is the normal mode's D; X then returns to A's X at rapid (the
+/// 980TDi's ③) before step (4)'s Z return, never a thread move all the way
+/// to A's X.
+///
+/// A = (X40, Z3), C = (X30, Z-20), R-1 F2 J1 K1.5, IS-B, diameter X.
+/// External (X_A = 40 > X_C = 30). B = (30 + 2·(-1), 3) = (28, 3). Z long
+/// (|W| = 23 > |R| = 1). J and K both given and non-zero: both run-outs
+/// (normal-mode rules). The cut ends K = 1.5 before C: Z = -20 + 1.5 =
+/// -18.5, on the line from B to C: X = 28 + (30 - 28)·(3 - (-18.5))/(3 -
+/// (-20)) = 28 + 43/23 = 29.8695652… → 29.870. The run-out (X and Z
+/// together, the thread's lead) ends at D = (30 + 2·1, -20) = (32, -20).
+/// Step ③: rapid to X40 at Z-20; step (4): rapid to Z3.
+///
+/// Note 5 ("当螺纹短轴方向退尾长度大于无退尾时的退刀距离时，系统默认短轴方向退尾长度
+/// 为无退尾时的退刀距离"): with J6 the retract without run-out is (40 - 30)/2 =
+/// 5 (radius) < 6, so J' = 5: the run-out ends at (30 + 2·5, -20) = (40,
+/// -20), A's X, and the retract, which would not move, is left out (R-ZERO).
+#[test]
+fn gsk988_normal_mode_step_3() {
+    let m = machine(ProfileName::Gsk988);
+    let got = blocks("M3 S500\nG0 X40 Z3\nG92 X30 Z-20 R-1 F2 J1 K1.5\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(28_000, 3_000, Role::Approach),
+            thread(29_870, -18_500, true, F2, Role::Cut),
+            thread(32_000, -20_000, false, F2, Role::RunOut),
+            rapid(40_000, -20_000, Role::Retract),
+            rapid(40_000, 3_000, Role::Return),
+        ]]
+    );
+    let got = blocks("M3 S500\nG0 X40 Z3\nG92 X30 Z-20 R-1 F2 J6 K1.5\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(28_000, 3_000, Role::Approach),
+            thread(29_870, -18_500, true, F2, Role::Cut),
+            thread(40_000, -20_000, false, F2, Role::RunOut),
+            rapid(40_000, 3_000, Role::Return),
+        ]]
+    );
+}
+
 /// L2 on the 980TDi: the pass is cut twice from A, the second start at
 /// 180°. 988TA L3 Q30: starts at 30°, 150° and 270°.
 #[test]
