@@ -1597,7 +1597,12 @@ pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Res
 /// # Errors
 ///
 /// Our expansion's error, or the trace's, with its line.
-pub fn check_bytes_as(job: &Job, bytes: &[u8], format: TraceFormat, tolerance: u64) -> Result<Report, String> {
+pub fn check_bytes_as(
+    job: &Job,
+    bytes: &[u8],
+    format: TraceFormat,
+    tolerance: u64,
+) -> Result<Report, String> {
     let units = job.validate()?.units;
     compare_streams(job, Box::new(bytes), format, units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) | StreamError::Theirs(e) => e,
