@@ -258,3 +258,56 @@ fn alarms() {
     let e = read(&face, &gsk988()).expect_err("a face thread is refused");
     assert!(matches!(e.kind, ErrorKind::Cycle(cycleref::CycleError::FaceThread)), "{e}");
 }
+
+/// The alarms of the pages' word list, each on its line and word.
+///
+/// * P(k), Q(Δd) omitted: "未输入 P(k)时，系统报警", "未输入△d 时，系统报警" (both
+///   pages): `Missing` at block 2 (line 4, no single word to blame), on both
+///   GSK profiles.
+/// * 980TDi: "G78 代码可加工直螺纹和锥螺纹不能加工端面螺纹": W0 is `FaceThread`
+///   at its block 2; "D： 精车次数，取值范围为 0~99" and "L：螺纹头数，取值的范围是：
+///   1～99": D100 and L100 are `OutOfRange` on block 1 (line 3), the word
+///   named; D99 and L99 are accepted.
+/// * 988TA: "P（m） 螺纹精车次数 01～99" (reading R-PSPLIT: m 01..99 on the
+///   988TA, 00..99 on the 980TDi, where m is the depth mode 0-1, R-G78P):
+///   P000245 (m = 00) is `OutOfRange` on P; on the 980TDi the same P is m =
+///   0, equal depths, and is accepted.
+#[test]
+fn alarms_of_the_word_list() {
+    let missing = |src: &str, m: &Machine, what: &str| {
+        let e = read(src, m).expect_err("refused");
+        assert_eq!((e.line, e.word.as_deref()), (4, None), "{e}");
+        let ErrorKind::Missing { what: w, .. } = e.kind else { panic!("{e}") };
+        assert!(w.contains(what), "{e}");
+    };
+    let (m980, m988) = (gsk980(), gsk988());
+    // 980TDi: P(k) and Q(Δd) in increments (No.182.7 = 0).
+    missing(&format!("{HEAD}G78 P010245 Q150 R0.5\nG78 X60 Z-60 Q1800 F3\n"), &m980, "P(k)");
+    missing(&format!("{HEAD}G78 P010245 Q150 R0.5\nG78 X60 Z-60 P3000 F3\n"), &m980, "Q(");
+    // 988TA: in mm (3401#6 = 0).
+    missing(&format!("{HEAD}G78 P020245 Q0.15 R0.5\nG78 X60 Z-60 Q1.8 F3 J1.5 K2\n"), &m988, "P(k)");
+    missing(&format!("{HEAD}G78 P020245 Q0.15 R0.5\nG78 X60 Z-60 P3 F3 J1.5 K2\n"), &m988, "Q(");
+
+    // 980TDi face thread: W0 (the end point has the Z of A).
+    let e = read(&format!("{HEAD}G78 P010245 Q150 R0.5\nG78 X60 W0 P3000 Q1800 F3\n"), &m980)
+        .expect_err("a face thread is refused");
+    assert_eq!((e.line, e.word.as_deref()), (4, None), "{e}");
+    assert!(matches!(e.kind, ErrorKind::Cycle(cycleref::CycleError::FaceThread)), "{e}");
+
+    // 980TDi D and L beyond 99.
+    for word in ["D100", "L100"] {
+        let e = read(&format!("{HEAD}G78 P010245 Q150 R0.5 {word}\nG78 X60 Z-60 P3000 Q1800 F3\n"), &m980)
+            .expect_err(word);
+        assert_eq!((e.line, e.word.as_deref()), (3, Some(word)), "{e}");
+        assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+    }
+    let ok = format!("{HEAD}G78 P010245 Q150 R0.5 D99 L99\nG78 X60 Z-60 P3000 Q1800 F3 \n");
+    assert!(read(&ok, &m980).is_ok());
+
+    // 988TA m = 00: outside 01~99.
+    let e = read(&format!("{HEAD}G78 P000245 Q0.15 R0.5\nG78 X60 Z-60 P3 Q1.8 F3 J1.5 K2\n"), &m988)
+        .expect_err("m = 00 is refused on the 988TA");
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("P000245")), "{e}");
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+    assert!(read(&format!("{HEAD}G78 P000245 Q150 R0.5\nG78 X60 Z-60 P3000 Q1800 F3\n"), &m980).is_ok());
+}
