@@ -90,7 +90,7 @@ fn passes_of_the_988ta_example() {
             ["3", "rough", "1", "right", "2.500", "0.700", "61.000", "8.964"],
         ]
     );
-    assert!(got.starts_with("G78 at line 6 ("), "{got}");
+    assert!(got.starts_with("G78 at line 10 ("), "{got}");
 }
 
 /// A vendor whose second pass starts on the right flank (Z9.337, the

@@ -150,8 +150,32 @@ fn gsk988_infeed_modes() {
 /// Equal steps (988TA D0, "等距离进刀的每次切削量为 Q(△d)") with Δd = 0.8:
 /// 0.8, 1.6, 2.4, then k - d = 2.5 (its cut 0.1 below Δdmin: the last
 /// level takes what remains). X: 64.4, 62.8, 61.2, 61.0. right(D): round(800
-/// × 0.41421356) = 0.331, 0.663 (662.74), 0.994 (994.11), 1.036. With D1
-/// (decreasing) the same words give ten levels instead (0.8, 1.131, …).
+/// × 0.41421356) = 0.331, 0.663 (662.74), 0.994 (994.11), 1.036.
+///
+/// With D1 (decreasing, R-DEPTH: Dn = min(k - d, max(Nn, D(n-1) + Δdmin)),
+/// Nn = round(0.8 √n), Δdmin = 0.15, k - d = 2.5), in increments:
+///
+/// | n | 800 √n | Nn | D(n-1) + 150 | Dn | X = 60 + 2 (3 - Dn) | right(Dn) = round(Dn tan 22.5°) | Z = 10 - right |
+/// |---|---|---|---|---|---|---|---|
+/// | 1 | 800 | 800 | - | 800 | 64.400 | 331.37 → 331 | 9.669 |
+/// | 2 | 1131.37 | 1131 | 950 | 1131 | 63.738 | 468.48 → 468 | 9.532 |
+/// | 3 | 1385.64 | 1386 | 1281 | 1386 | 63.228 | 574.10 → 574 | 9.426 |
+/// | 4 | 1600 | 1600 | 1536 | 1600 | 62.800 | 662.74 → 663 | 9.337 |
+/// | 5 | 1788.85 | 1789 | 1750 | 1789 | 62.422 | 741.03 → 741 | 9.259 |
+/// | 6 | 1959.59 | 1960 | 1939 | 1960 | 62.080 | 811.86 → 812 | 9.188 |
+/// | 7 | 2116.60 | 2117 | 2110 | 2117 | 61.766 | 876.89 → 877 | 9.123 |
+/// | 8 | 2262.74 | 2263 | 2267 | 2267 | 61.466 | 939.02 → 939 | 9.061 |
+/// | 9 | 2400 | 2400 | 2417 | 2417 | 61.166 | 1001.15 → 1001 | 8.999 |
+/// | 10 | 2529.82 | 2530 | 2567 | min(2500, 2567) = 2500 | 61.000 | 1035.53 → 1036 | 8.964 |
+///
+/// From level 8 the minimum cut takes over (N8 = 2.263 < 2.117 + 0.15 =
+/// 2.267) and stays (R-LINEAR: 2.417, not N9 = 2.4): an earlier comment
+/// here listed 2.263 and 2.4, the law without Δdmin.
+///
+/// The lead: this test writes F3; the page's example writes F300, which
+/// cycleref takes as written (GSK F without a decimal point is mm, R-POINT:
+/// a 300 mm lead, inside the 988TA's F table 0.0001~9999; `g988` above uses
+/// it), and which changes no pass point here since J and K are given.
 #[test]
 fn gsk988_equal_depths() {
     let m = gsk988();
@@ -166,10 +190,21 @@ fn gsk988_equal_depths() {
         ])
     );
     let decreasing = format!("{HEAD}G78 P020245 Q0.15 R0.5 D1\nG78 X60 Z-60 P3 Q0.8 F3 J1.5 K2\nM30\n");
-    let levels = passes(&cycles(&decreasing, &m)[0].1).iter().filter(|p| p.0 == Rough).count();
-    // round(0.8 √n): 0.8, 1.131, 1.386, 1.6, 1.789, 1.96, 2.117, 2.263, 2.4,
-    // then min(2.5, 2.530) = 2.5.
-    assert_eq!(levels, 10);
+    assert_eq!(
+        passes(&cycles(&decreasing, &m)[0].1),
+        with_finish(&[
+            (Rough, 800, Right, 64_400, 9_669),
+            (Rough, 1_131, Right, 63_738, 9_532),
+            (Rough, 1_386, Right, 63_228, 9_426),
+            (Rough, 1_600, Right, 62_800, 9_337),
+            (Rough, 1_789, Right, 62_422, 9_259),
+            (Rough, 1_960, Right, 62_080, 9_188),
+            (Rough, 2_117, Right, 61_766, 9_123),
+            (Rough, 2_267, Right, 61_466, 9_061),
+            (Rough, 2_417, Right, 61_166, 8_999),
+            (Rough, 2_500, Right, 61_000, 8_964)
+        ])
+    );
 }
 
 /// The 980TDi's format: `G78 P(m)(r)(a) Q(Δdmin) R(d) J K D L E` with m
