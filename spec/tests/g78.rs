@@ -241,6 +241,70 @@ fn gsk980_alternating_flanks_with_equal_depths() {
     );
 }
 
+/// The 980TDi's figures ("代码轨迹：(下图轨迹均为递减式进刀)"): P(r)=0 "从牙型
+/// 中间切入", P(r)=1 "左边切入" and P(r)=3 "左右两边轮流切入", all with m = 1
+/// (递减式进刀, "与 G76 进刀方式相同"), on the gsk980 profile (P(k), Q(Δd),
+/// Q(Δdmin) in increments, No.182.7 = 0).
+///
+/// `G78 P1r60 Q150 R0.5 J1.5 K2 D1` / `G78 X60 Z-60 P3000 Q1000 F3` from A
+/// = X80 Z10: k = 3, Δd = 1, Δdmin = 0.15, d = 0.5 (k - d = 2.5), a = 60°,
+/// one finishing pass (D1). External, towards -Z, straight: C = (60, 10).
+///
+/// Depths (R-DEPTH, increments): round(1000 √n) = 1000, 1414 (1414.21; ≥
+/// 1000 + 150), 1732 (1732.05; ≥ 1564), 2000 (≥ 1882), 2236 (2236.07; ≥
+/// 2150), 2449 (2449.49; ≥ 2386), then round(1000 √7) = 2646 ≥ 2500 =
+/// k - d: seven levels. X = 60 + 2 (3 - D): 64, 63.172, 62.536, 62, 61.528,
+/// 61.102, 61.
+///
+/// tan 30° = 0.57735027: right(D) = round(D tan 30°) = 577 (577.35), 816
+/// (816.37), 1000 (999.97), 1155 (1154.70), 1291 (1290.96), 1414
+/// (1413.93), 1443 (1443.38) = zc. left(D) = 2 zc - right(D) = 2886 -
+/// right: 2309, 2070, 1886, 1731, 1595, 1472, 1443 (R-G78INFEED). Z = 10 -
+/// shift: right 9.423, 9.184, 9.000, 8.845, 8.709, 8.586, 8.557; left
+/// 7.691, 7.930, 8.114, 8.269, 8.405, 8.528, 8.557; centre 8.557 on every
+/// level. The finishing pass: depth 3, X60, Z of the last rough pass
+/// (8.557), centre.
+///
+/// r = 3 (R-G78ALT): one pass a level, odd levels right, even left:
+/// 9.423, 7.930, 9.000, 8.269, 8.709, 8.528, 8.557 (level 7, right: zc).
+///
+/// The r = 3 figure's dimension labels survive in the extraction only as
+/// fragments ("△d", "2 2 2", "2 +2 2", "2△d"); what they can and cannot
+/// say about R-G78ALT is written in that reading.
+#[test]
+fn gsk980_figures() {
+    let m = gsk980();
+    let run = |r: u8| {
+        let src = format!(
+            "{HEAD}G78 P1{r:02}60 Q150 R0.5 J1.5 K2 D1\nG78 X60 Z-60 P3000 Q1000 F3\nG00 X80 Z10\nM30\n"
+        );
+        passes(&cycles(&src, &m)[0].1)
+    };
+    let depths = [1_000, 1_414, 1_732, 2_000, 2_236, 2_449, 2_500];
+    let xs = [64_000, 63_172, 62_536, 62_000, 61_528, 61_102, 61_000];
+    let right = [9_423, 9_184, 9_000, 8_845, 8_709, 8_586, 8_557];
+    let left = [7_691, 7_930, 8_114, 8_269, 8_405, 8_528, 8_557];
+    let finish = (Finish, 3_000, Centre, 60_000, 8_557);
+    let want = |flank: &dyn Fn(usize) -> (Flank, i64)| {
+        let mut v: Vec<_> = (0..7)
+            .map(|i| {
+                let (f, z) = flank(i);
+                (Rough, depths[i], f, xs[i], z)
+            })
+            .collect();
+        v.push(finish);
+        v
+    };
+    // r = 0: the centre line.
+    assert_eq!(run(0), want(&|_| (Centre, 8_557)));
+    // r = 1: the left flank.
+    assert_eq!(run(1), want(&|i| (Left, left[i])));
+    // r = 3: right on levels 1, 3, 5, 7, left on 2, 4, 6.
+    assert_eq!(run(3), want(&|i| if i % 2 == 0 { (Right, right[i]) } else { (Left, left[i]) }));
+    // r = 2, the right flank, for completeness: G76's D0.
+    assert_eq!(run(2), want(&|i| (Right, right[i])));
+}
+
 /// The parameters when block 1 is absent: the infeed mode (No.062, 5144)
 /// and the depth mode (No.061, 5145). By default right flank and decreasing
 /// (reading R-PARAM): G76's D0. 5144 = 0 makes it the centre line.
