@@ -340,6 +340,93 @@ fn parameters_when_words_are_omitted() {
     );
 }
 
+/// The 980TDi's parameters when G78's words are omitted (the page: "未输入
+/// m 时，以系统数据参数№.061 的值作为切深方式选择", "未输入 r 时 … №.062",
+/// "未输入 a 时 … №.058", "未输入 Q(△dmin)时 … №.059", "未输入 R(d)时 …
+/// №.060"; the finishing passes No.057, reading R-G78WORDS), set through
+/// `Machine::apply_toml` to values other than the defaults (R-PARAM: 57 =
+/// 1, 58 = 60, 59 = 60 = 0, 61 = 1, 62 = 2).
+///
+/// The thread: A = X80 Z10, `G78 X60 Z-60 P3000 Q800 F3` (k = 3, Δd = 0.8,
+/// increments), no J/K (block 1 absent: No.19 = 0, no run-out). a = 29°
+/// from No.058: tan 14.5° = 0.25861758.
+///
+/// 1. No block 1; 57 = 2, 58 = 29, 59 = 0.2, 60 = 0.3, 61 = 0 (equal), 62 =
+///    1 (left). k - d = 2.7; equal steps of max(0.8, 0.2) = 0.8: 0.8, 1.6,
+///    2.4, then min(2.7, 3.2) = 2.7. X = 60 + 2 (3 - D): 64.4, 62.8, 61.2,
+///    60.6. right(D) = round(D tan 14.5°): 207 (206.89), 414 (413.79), 621
+///    (620.68), 698 (698.27) = zc; left = 2·698 - right: 1189, 982, 775,
+///    698; Z = 10 - left: 8.811, 9.018, 9.225, 9.302. Two finishing passes
+///    at depth 3, X60, Z9.302.
+/// 2. No block 1; as 1 but 57 = 0 (no finishing pass), 61 = 1 (decreasing),
+///    62 = 3 (flanks in turn, R-G78ALT). round(800 √n): 800, 1131 (≥ 1000),
+///    1386 (≥ 1331), 1600 (≥ 1586), then N5 = 1789 < 1600 + 200: the
+///    minimum cut takes over, 1800, 2000, 2200, 2400, 2600, then min(2700,
+///    2800) = 2700: ten levels. X: 64.4, 63.738, 63.228, 62.8, 62.4, 62.0,
+///    61.6, 61.2, 60.8, 60.6. right: 207, 292 (292.50), 358 (358.44), 414,
+///    466 (465.51), 517 (517.24), 569 (568.96), 621, 672 (672.41), 698;
+///    odd levels right (Z = 10 - right), even left (Z = 10 - (1396 -
+///    right)): 9.793, 8.896, 9.642, 9.018, 9.534, 9.121, 9.431, 9.225,
+///    9.328, 9.302.
+/// 3. Block 1 `G78 R0.5 D1` (P and Q omitted) with 1's parameters: d = 0.5
+///    and one finishing pass from the block, the rest from 58, 59, 61, 62.
+///    k - d = 2.5: 0.8, 1.6, 2.4, 2.5; X 64.4, 62.8, 61.2, 61.0; zc =
+///    round(646.54) = 647; left = 1294 - right: 1087, 880, 673, 647; Z
+///    8.913, 9.120, 9.327, 9.353; one finishing pass at X60 Z9.353.
+#[test]
+fn gsk980_parameters_when_words_are_omitted() {
+    let body = "G78 X60 Z-60 P3000 Q800 F3\nG00 X80 Z10\nM30\n";
+    let params = |m57: u8, m61: u8, m62: u8| {
+        let mut m = gsk980();
+        m.apply_toml(&format!(
+            "[parameters]\n57 = {m57}\n58 = 29\n59 = \"0.2\"\n60 = \"0.3\"\n61 = {m61}\n62 = {m62}\n"
+        ))
+        .unwrap();
+        m
+    };
+    let m = params(2, 0, 1);
+    assert_eq!(
+        passes(&cycles(&format!("{HEAD}{body}"), &m)[0].1),
+        [
+            (Rough, 800, Left, 64_400, 8_811),
+            (Rough, 1_600, Left, 62_800, 9_018),
+            (Rough, 2_400, Left, 61_200, 9_225),
+            (Rough, 2_700, Left, 60_600, 9_302),
+            (Finish, 3_000, Centre, 60_000, 9_302),
+            (Finish, 3_000, Centre, 60_000, 9_302),
+        ]
+    );
+
+    let m = params(0, 1, 3);
+    assert_eq!(
+        passes(&cycles(&format!("{HEAD}{body}"), &m)[0].1),
+        [
+            (Rough, 800, Right, 64_400, 9_793),
+            (Rough, 1_131, Left, 63_738, 8_896),
+            (Rough, 1_386, Right, 63_228, 9_642),
+            (Rough, 1_600, Left, 62_800, 9_018),
+            (Rough, 1_800, Right, 62_400, 9_534),
+            (Rough, 2_000, Left, 62_000, 9_121),
+            (Rough, 2_200, Right, 61_600, 9_431),
+            (Rough, 2_400, Left, 61_200, 9_225),
+            (Rough, 2_600, Right, 60_800, 9_328),
+            (Rough, 2_700, Left, 60_600, 9_302),
+        ]
+    );
+
+    let m = params(2, 0, 1);
+    assert_eq!(
+        passes(&cycles(&format!("{HEAD}G78 R0.5 D1\n{body}"), &m)[0].1),
+        [
+            (Rough, 800, Left, 64_400, 8_913),
+            (Rough, 1_600, Left, 62_800, 9_120),
+            (Rough, 2_400, Left, 61_200, 9_327),
+            (Rough, 2_500, Left, 61_000, 9_353),
+            (Finish, 3_000, Centre, 60_000, 9_353),
+        ]
+    );
+}
+
 /// The alarms: FANUC has no G78; the 980TDi's r stops at 3 and its m (the
 /// depth mode) at 1; the 988TA's D (depth mode) is 0 or 1; G78 cannot cut
 /// face threads (W0).
