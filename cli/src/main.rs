@@ -71,8 +71,8 @@ enum Command {
     /// expected moves or error) as JSON files.
     #[command(after_help = EXIT_STATUS)]
     Vectors {
-        /// Number of cases (105, the default, use every template).
-        #[arg(long, default_value_t = 105)]
+        /// Number of cases (125, the default, use every template).
+        #[arg(long, default_value_t = 125)]
         count: u32,
         /// Seed of the generator: the same seed gives the same corpus.
         #[arg(long, default_value_t = 1)]

@@ -90,7 +90,7 @@ fn passes_of_the_988ta_example() {
             ["3", "rough", "1", "right", "2.500", "0.700", "61.000", "8.964"],
         ]
     );
-    assert!(got.starts_with("G78 at line 6 ("), "{got}");
+    assert!(got.starts_with("G78 at line 10 ("), "{got}");
 }
 
 /// A vendor whose second pass starts on the right flank (Z9.337, the
@@ -114,4 +114,26 @@ fn plot_titles_the_g78() {
     stdout(&["plot", "--profile", "gsk980", "--output", out.to_str().unwrap(), &example("gsk980-g78.nc")]);
     let svg = std::fs::read_to_string(&out).expect("svg");
     assert!(svg.contains("G78 at line 5"), "{}", &svg[..svg.len().min(1500)]);
+}
+
+/// `--format jsonl` on the 980TDi example: one line for the G78 (block 2
+/// at line 5, block 1 at line 4), the `json` document's cycle, then the
+/// summary: 4 rough and 2 finishing passes of 5 moves = 30 moves.
+#[test]
+fn jsonl_carries_the_g78() {
+    let file = example("gsk980-g78.nc");
+    let json = stdout(&["expand", "--profile", "gsk980", "--format", "json", &file]);
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let jsonl = stdout(&["expand", "--profile", "gsk980", "--format", "jsonl", &file]);
+    let mut lines: Vec<serde_json::Value> =
+        jsonl.lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}"))).collect();
+    let summary = lines.pop().expect("summary");
+    assert_eq!(&lines, doc["cycles"].as_array().expect("cycles"));
+    assert_eq!(lines.len(), 1);
+    assert_eq!(
+        (lines[0]["cycle"].as_str(), lines[0]["line"].as_u64(), lines[0]["params_line"].as_u64()),
+        (Some("G78"), Some(5), Some(4))
+    );
+    assert_eq!(summary["format"], "cycleref-moves-jsonl/1");
+    assert_eq!((summary["cycles"].as_u64(), summary["moves"].as_u64()), (Some(1), Some(30)));
 }

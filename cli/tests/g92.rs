@@ -145,3 +145,26 @@ fn plot_draws_the_g92_blocks() {
     assert!(one.contains("G92 blocks (lines 6-6)"));
     assert!(!one.contains("line 5: run-out"));
 }
+
+/// `--format jsonl`: one line per G92 block, each the `json` document's
+/// cycle, then the summary: 4 blocks of 5 moves each (approach, cut,
+/// run-out, retract, return) = 20 moves.
+#[test]
+fn jsonl_carries_the_g92_blocks() {
+    let file = example();
+    let json = stdout(&["expand", "--profile", "gsk980", "--format", "json", &file]);
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let jsonl = stdout(&["expand", "--profile", "gsk980", "--format", "jsonl", &file]);
+    let mut lines: Vec<serde_json::Value> =
+        jsonl.lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}"))).collect();
+    let summary = lines.pop().expect("summary");
+    assert_eq!(&lines, doc["cycles"].as_array().expect("cycles"));
+    let blocks: Vec<(Option<&str>, Option<u64>)> =
+        lines.iter().map(|c| (c["cycle"].as_str(), c["line"].as_u64())).collect();
+    assert_eq!(
+        blocks,
+        [(Some("G92"), Some(4)), (Some("G92"), Some(5)), (Some("G92"), Some(6)), (Some("G92"), Some(7))]
+    );
+    assert_eq!(summary["format"], "cycleref-moves-jsonl/1");
+    assert_eq!((summary["cycles"].as_u64(), summary["moves"].as_u64()), (Some(4), Some(20)));
+}

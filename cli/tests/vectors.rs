@@ -1,5 +1,5 @@
 //! `cycleref vectors`: the checked-in corpus in `vectors/` is exactly what
-//! the generator writes for `--count 105 --seed 1`, it covers every feature
+//! the generator writes for `--count 125 --seed 1`, it covers every feature
 //! and every listed error kind, and every case replays: its program, read
 //! again with its machine settings, gives its expectation (the moves through
 //! `cycleref expand --format json` with both engines, the error through the
@@ -16,9 +16,9 @@ use serde_json::Value;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../vectors");
-const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 105 --seed 1 --out vectors";
+const REGENERATE: &str = "cargo run -p cycleref-cli -- vectors --count 125 --seed 1 --out vectors";
 
-/// Tags every corpus of 105 cases shows on at least one case with moves.
+/// Tags every corpus of 125 cases shows on at least one case with moves.
 const FEATURES: &[&str] = &[
     "profile:fanuc",
     "profile:gsk980",
@@ -138,6 +138,7 @@ const FEATURES: &[&str] = &[
     "rule:g92-gsk988-j-only",
     "rule:g92-gsk988-k-only",
     "rule:g92-gsk988-5130",
+    "rule:g92-gsk988-high-speed",
     "g78",
     "g78:alternating",
     "g78:equal",
@@ -147,7 +148,7 @@ const FEATURES: &[&str] = &[
     "rule:g78-gsk980-d",
 ];
 
-/// Error kinds every corpus of 105 cases refuses at least once, with the
+/// Error kinds every corpus of 125 cases refuses at least once, with the
 /// scenario tag of the refusal.
 const REFUSALS: &[(&str, &str)] = &[
     ("missing", "refuse:missing-p"),
@@ -188,6 +189,16 @@ const REFUSALS: &[(&str, &str)] = &[
     ("cycle:no_infeed", "refuse:g92-no-infeed"),
     ("cycle:run_out_into_work", "refuse:run-out-into-work"),
     ("out_of_range", "refuse:g78-infeed-out-of-range"),
+    ("cycle:run_out_too_long", "refuse:g92-run-out-too-long"),
+    ("cycle:face_thread", "refuse:g92-face-thread"),
+    ("cycle:no_thread_length", "refuse:g92-no-thread-length"),
+    ("cycle:steep_face_thread", "refuse:g92-steep-face-thread"),
+    ("out_of_range", "refuse:g92-starts-out-of-range"),
+    ("out_of_range", "refuse:g92-p-out-of-range"),
+    ("out_of_range", "refuse:g78-gsk980-depth-mode"),
+    ("out_of_range", "refuse:g78-gsk988-depth-mode"),
+    ("cycle:face_thread", "refuse:g78-face-thread"),
+    ("missing", "refuse:g78-missing-word"),
 ];
 
 /// The stable kind names of `vectors/README.md`, written out again here
@@ -294,7 +305,7 @@ fn cases(dir: &Path) -> Vec<Value> {
 
 #[test]
 fn checked_in_corpus_is_what_the_generator_writes() {
-    let fresh = files(&generate(105, 1, "fresh"));
+    let fresh = files(&generate(125, 1, "fresh"));
     let stored = files(Path::new(CORPUS));
     assert_eq!(
         fresh.keys().collect::<Vec<_>>(),
@@ -371,7 +382,7 @@ fn the_corpus_covers_every_feature_and_error_kind() {
 fn other_seeds_cover_everything_too() {
     // Each template fixes what it covers; the seed only varies the rest.
     for seed in [2, 3] {
-        assert_covered(&generate(105, seed, &format!("seed-{seed}")));
+        assert_covered(&generate(125, seed, &format!("seed-{seed}")));
     }
 }
 
@@ -450,7 +461,7 @@ fn first_error(text: &str, m: &Machine) -> Option<ProgramError> {
 fn every_case_replays() {
     let dir = scratch("replay");
     let all = cases(Path::new(CORPUS));
-    assert_eq!(all.len(), 105);
+    assert_eq!(all.len(), 125);
     for case in &all {
         let id = case["id"].as_str().unwrap();
         assert_eq!(case["schema"], "cycleref-vector/1", "{id}");

@@ -151,3 +151,56 @@ fn linuxcnc_does_not_allocate() {
         assert_eq!(n, 0);
     }
 }
+
+#[test]
+fn g78_modes_do_not_allocate() {
+    // The G78 infeed modes G76 lacks (centre, left flank, the 980TDi's
+    // alternating flanks) and the equal depth steps, on M68x6's thread.
+    for (infeed, depth_mode) in [
+        (Infeed::Centre, cycleref::DepthMode::Equal),
+        (Infeed::LeftFlank, cycleref::DepthMode::Decreasing),
+        (Infeed::Alternating, cycleref::DepthMode::Equal),
+        (Infeed::Alternating, cycleref::DepthMode::Decreasing),
+    ] {
+        let c = G76Cycle { infeed, depth_mode, starts: 2, ..m68x6() };
+        let (moves, n) = walk(&c);
+        assert!(moves >= 2 * 3 * 5, "{infeed:?} {depth_mode:?}: {moves}");
+        assert_eq!(n, 0, "{infeed:?} {depth_mode:?}");
+    }
+}
+
+#[test]
+fn g92_does_not_allocate() {
+    // O0012's first block (A = X65 Z5, C = X58.7 Z-28, F3 J3 K1) with three
+    // starts, a taper and a face thread (988TA P1).
+    let c = cycleref::G92Cycle {
+        units: cycleref::Units::IS_B_METRIC,
+        x_mode: cycleref::XMode::Diameter,
+        start: Point::new(65_000, 5_000),
+        end: Point::new(58_700, -28_000),
+        taper: -1_000,
+        lead: Lead { word: LeadWord::F, mantissa: 3, scale: 0 },
+        run_out: cycleref::RunOut::Amounts { short: 3_000, long: 1_000 },
+        starts: 3,
+        start_angle: cycleref::StartAngle::ZERO,
+        face: false,
+    };
+    let face = cycleref::G92Cycle {
+        start: Point::new(60_000, 5_000),
+        end: Point::new(20_000, 1_000),
+        taper: 0,
+        face: true,
+        ..c
+    };
+    for c in [c, face] {
+        let mut moves = 0_u64;
+        let n = allocations(|| {
+            for m in cycleref::expand_g92(&c).unwrap_or_else(|e| panic!("{e}")) {
+                moves += 1;
+                std::hint::black_box(m);
+            }
+        });
+        assert_eq!(moves, 3 * 5);
+        assert_eq!(n, 0);
+    }
+}

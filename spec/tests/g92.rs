@@ -351,6 +351,52 @@ fn gsk988_high_speed_mode() {
     );
 }
 
+/// The 988TA's normal mode (THM = 5129 = 0, the default), step (3): "普通
+/// G92：X 轴和 Z 轴同时进行切削，到 D 点" (reading R-G92RUNOUT, "The 988TA's
+/// normal-mode step (3)"): the run-out is the move of X and Z together and
+/// its end is the normal mode's D; X then returns to A's X at rapid (the
+/// 980TDi's ③) before step (4)'s Z return, never a thread move all the way
+/// to A's X.
+///
+/// A = (X40, Z3), C = (X30, Z-20), R-1 F2 J1 K1.5, IS-B, diameter X.
+/// External (X_A = 40 > X_C = 30). B = (30 + 2·(-1), 3) = (28, 3). Z long
+/// (|W| = 23 > |R| = 1). J and K both given and non-zero: both run-outs
+/// (normal-mode rules). The cut ends K = 1.5 before C: Z = -20 + 1.5 =
+/// -18.5, on the line from B to C: X = 28 + (30 - 28)·(3 - (-18.5))/(3 -
+/// (-20)) = 28 + 43/23 = 29.8695652… → 29.870. The run-out (X and Z
+/// together, the thread's lead) ends at D = (30 + 2·1, -20) = (32, -20).
+/// Step ③: rapid to X40 at Z-20; step (4): rapid to Z3.
+///
+/// Note 5 ("当螺纹短轴方向退尾长度大于无退尾时的退刀距离时，系统默认短轴方向退尾长度
+/// 为无退尾时的退刀距离"): with J6 the retract without run-out is (40 - 30)/2 =
+/// 5 (radius) < 6, so J' = 5: the run-out ends at (30 + 2·5, -20) = (40,
+/// -20), A's X, and the retract, which would not move, is left out (R-ZERO).
+#[test]
+fn gsk988_normal_mode_step_3() {
+    let m = machine(ProfileName::Gsk988);
+    let got = blocks("M3 S500\nG0 X40 Z3\nG92 X30 Z-20 R-1 F2 J1 K1.5\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(28_000, 3_000, Role::Approach),
+            thread(29_870, -18_500, true, F2, Role::Cut),
+            thread(32_000, -20_000, false, F2, Role::RunOut),
+            rapid(40_000, -20_000, Role::Retract),
+            rapid(40_000, 3_000, Role::Return),
+        ]]
+    );
+    let got = blocks("M3 S500\nG0 X40 Z3\nG92 X30 Z-20 R-1 F2 J6 K1.5\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(28_000, 3_000, Role::Approach),
+            thread(29_870, -18_500, true, F2, Role::Cut),
+            thread(40_000, -20_000, false, F2, Role::RunOut),
+            rapid(40_000, 3_000, Role::Return),
+        ]]
+    );
+}
+
 /// L2 on the 980TDi: the pass is cut twice from A, the second start at
 /// 180°. 988TA L3 Q30: starts at 30°, 150° and 270°.
 #[test]
@@ -476,6 +522,264 @@ fn x_long_run_out_into_the_work_is_refused() {
             thread(40_000, -3_000, true, f1, Role::Cut),
             rapid(60_000, -3_000, Role::Retract),
             rapid(60_000, 2_000, Role::Return),
+        ]]
+    );
+}
+
+/// Figure 3-90 (980TDi), the cases other than 2 (`external_taper_with_run_out`),
+/// on the gsk980 profile, IS-B, diameter X. B = (X_C + 2R, Z_A); Z long in
+/// each (|W| > |R|); the run-out starts K before C along Z on the line B–C
+/// and ends at the Z of C, J (radius) towards A's side; then X to A's X and
+/// Z to A.
+///
+/// 1) U > 0, W < 0, R > 0 (internal, towards -Z): A = (20, 2), C = (30,
+///    -20), R1: B = (32, 2). J0.5 K1: Z = -20 + 1 = -19, X = 32 + (30 - 32)·
+///    (2 + 19)/(2 + 20) = 32 - 42/22 = 30.0909… → 30.091; the run-out ends
+///    at (30 - 2·0.5, -20) = (29, -20) (inwards, towards A).
+/// 3) U > 0, W > 0, R < 0, |R| <= |U/2| (internal, towards +Z): A = (20,
+///    -30), C = (30, -5), R-2 (2 <= 5): B = (26, -30). J0.5 K1.5: Z = -5 -
+///    1.5 = -6.5, X = 26 + 4·(-6.5 + 30)/25 = 26 + 3.76 = 29.76; the
+///    run-out ends at (29, -5).
+/// 4) U < 0, W > 0, R > 0, |R| <= |U/2| (external, towards +Z): A = (50,
+///    -30), C = (40, -5), R3 (3 <= 5): B = (46, -30). J1 K2: Z = -5 - 2 =
+///    -7, X = 46 - 6·(-7 + 30)/25 = 46 - 5.52 = 40.48; the run-out ends at
+///    (40 + 2·1, -5) = (42, -5).
+#[test]
+fn figure_3_90_cases_1_3_4() {
+    let m = machine(ProfileName::Gsk980);
+    let f1 = Lead { word: LeadWord::F, mantissa: 1, scale: 0 };
+    let case = |a: (i64, i64), words: &str| {
+        let src = format!("M3 S500\nG0 X{} Z{}\nG92 {words}\nM30\n", a.0, a.1);
+        blocks(&src, &m).remove(0)
+    };
+    assert_eq!(
+        case((20, 2), "X30 Z-20 R1 F1 J0.5 K1"),
+        vec![
+            rapid(32_000, 2_000, Role::Approach),
+            thread(30_091, -19_000, true, f1, Role::Cut),
+            thread(29_000, -20_000, false, f1, Role::RunOut),
+            rapid(20_000, -20_000, Role::Retract),
+            rapid(20_000, 2_000, Role::Return),
+        ]
+    );
+    assert_eq!(
+        case((20, -30), "X30 Z-5 R-2 F1 J0.5 K1.5"),
+        vec![
+            rapid(26_000, -30_000, Role::Approach),
+            thread(29_760, -6_500, true, f1, Role::Cut),
+            thread(29_000, -5_000, false, f1, Role::RunOut),
+            rapid(20_000, -5_000, Role::Retract),
+            rapid(20_000, -30_000, Role::Return),
+        ]
+    );
+    assert_eq!(
+        case((50, -30), "X40 Z-5 R3 F1 J1 K2"),
+        vec![
+            rapid(46_000, -30_000, Role::Approach),
+            thread(40_480, -7_000, true, f1, Role::Cut),
+            thread(42_000, -5_000, false, f1, Role::RunOut),
+            rapid(50_000, -5_000, Role::Retract),
+            rapid(50_000, -30_000, Role::Return),
+        ]
+    );
+}
+
+/// 980TDi note 3 ("省略J时，长轴方向按K退尾，短轴方向按№.19号参数设定值退尾") and
+/// note 6 ("J≠0，K=0 时，按K=J退尾"), on O0012's first block (A = X65 Z5,
+/// C = X58.7 Z-28, F3).
+///
+/// * Note 3, K1, No.19 = 10: the short axis by No.19, J = 10 × 0.1 × 3 ×
+///   tan 45° = 3; the long axis K = 1: the cut to Z-27, the run-out to
+///   X58.7 + 6 = X64.7 at Z-28 (O0012's pass). No.19 = 5: J = 1.5, X61.7.
+///   No.19 = 0 (the default): no short-axis run-out, so none at all: the
+///   cut runs to C.
+/// * Note 6, J2 K0: K = J = 2: the cut to Z-26, the run-out to X58.7 + 4 =
+///   X62.7 at Z-28.
+#[test]
+fn gsk980_notes_3_and_6() {
+    let src = |words: &str| format!("M3 S300\nG0 X65 Z5\nG92 X58.7 Z-28 F3 {words}\nM30\n");
+    let with19 = |v: u32| {
+        let mut m = machine(ProfileName::Gsk980);
+        m.apply_toml(&format!("[parameters]\n19 = {v}\n")).unwrap();
+        m
+    };
+    assert_eq!(blocks(&src("K1"), &with19(10)).remove(0), o0012_pass(58_700));
+    let got = blocks(&src("K1"), &with19(5)).remove(0);
+    assert_eq!(got[1], thread(58_700, -27_000, true, F3, Role::Cut));
+    assert_eq!(got[2], thread(61_700, -28_000, false, F3, Role::RunOut));
+    assert_eq!(
+        blocks(&src("K1"), &machine(ProfileName::Gsk980)).remove(0),
+        vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -28_000, true, F3, Role::Cut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+    let got = blocks(&src("J2 K0"), &machine(ProfileName::Gsk980)).remove(0);
+    assert_eq!(
+        got,
+        vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -26_000, true, F3, Role::Cut),
+            thread(62_700, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+}
+
+/// Threads per inch (I, "螺纹每英寸牙数", modal like F) on G92 and G78, where
+/// the lead matters: the chamfer of the parameters, K = r × 0.1 × lead.
+///
+/// * G92, 980TDi, I8 (lead 25.4/8 = 3.175 mm), No.19 = 10: K = 3.175, J =
+///   3.175 (45°). A = X70 Z5, C = X58.7 Z-28: the cut to Z-28 + 3.175 =
+///   Z-24.825, the run-out to X58.7 + 6.35 = X65.05 at Z-28 (short of X70,
+///   no clamp), the retract to X70, the return. Every thread move carries
+///   I8.
+/// * G78, 988TA, the example's thread with I8 and J, K omitted (5130 = 10,
+///   5131 = 0: 45°): K = J = 3.175; the passes of `gsk988_example_and_g76`
+///   (X62.4 Z9.254, X61.0 Z8.964, two finishing X60 Z8.964): each cut ends
+///   at Z-60 + 3.175 = Z-56.825 and its run-out at X + 6.35 (68.75, 67.35,
+///   66.35, 66.35) at Z-60.
+#[test]
+fn threads_per_inch() {
+    let i8 = Lead { word: LeadWord::I, mantissa: 8, scale: 0 };
+    let mut m = machine(ProfileName::Gsk980);
+    m.apply_toml("[parameters]\n19 = 10\n").unwrap();
+    let got = blocks("M3 S300\nG0 X70 Z5\nG92 X58.7 Z-28 I8\nM30\n", &m);
+    assert_eq!(
+        got,
+        vec![vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -24_825, true, i8, Role::Cut),
+            thread(65_050, -28_000, false, i8, Role::RunOut),
+            rapid(70_000, -28_000, Role::Retract),
+            rapid(70_000, 5_000, Role::Return),
+        ]]
+    );
+
+    let mut m = machine(ProfileName::Gsk988);
+    m.apply_toml("[parameters]\n5130 = 10\n").unwrap();
+    let src = "M3 S300\nG00 X80 Z10\nG78 P020245 Q0.15 R0.5\nG78 X60 Z-60 P3 Q1.8 I8\nM30\n";
+    let p = read(src, &m).unwrap_or_else(|e| panic!("{e}"));
+    let c = p.items.iter().find_map(Cycle::of).expect("the G78");
+    let ours: Vec<Move> = expand(c, Engine::Impl).unwrap().collect();
+    let reference: Vec<Move> = expand(c, Engine::Spec).unwrap().collect();
+    assert_eq!(ours, reference);
+    let ends: Vec<(Motion, i64, i64)> = ours.iter().map(|m| (m.motion, m.to.x, m.to.z)).collect();
+    let thread_to = |sync| Motion::Thread { lead: i8, start_angle: StartAngle::ZERO, sync };
+    let mut want = Vec::new();
+    for (x, z) in [(62_400, 9_254), (61_000, 8_964), (60_000, 8_964), (60_000, 8_964)] {
+        want.extend([
+            (Motion::Rapid, x, z),
+            (thread_to(true), x, -56_825),
+            (thread_to(false), x + 6_350, -60_000),
+            (Motion::Rapid, 80_000, -60_000),
+            (Motion::Rapid, 80_000, 10_000),
+        ]);
+    }
+    assert_eq!(ends, want);
+}
+
+/// The 988TA's taper condition in radius mode ("短轴为半径编程时：│R│≤│短轴
+/// 起点和终点差值│"), X words radii: A = X25 Z2, C = X20 Z-30, U = -5
+/// (radius), J0 (no run-out). R4: B = X20 + 4 = X24, between A and C. R5:
+/// B = X25 = A, the approach left out (R-ZERO). R5.001 > |U| = 5: B beyond
+/// A, refused (`TaperBeyondStart`, R and U in radius increments).
+#[test]
+fn gsk988_taper_condition_in_radius_mode() {
+    let mut m = machine(ProfileName::Gsk988);
+    m.apply_toml("x = \"radius\"\n").unwrap();
+    let src = |r: &str| format!("M3 S500\nG0 X25 Z2\nG92 X20 Z-30 R{r} F2 J0\nM30\n");
+    assert_eq!(
+        blocks(&src("4"), &m),
+        vec![vec![
+            rapid(24_000, 2_000, Role::Approach),
+            thread(20_000, -30_000, true, F2, Role::Cut),
+            rapid(25_000, -30_000, Role::Retract),
+            rapid(25_000, 2_000, Role::Return),
+        ]]
+    );
+    assert_eq!(blocks(&src("5"), &m)[0][0], thread(20_000, -30_000, true, F2, Role::Cut));
+    let e = error(&src("5.001"), &m);
+    assert_eq!(e.line, 3);
+    let ErrorKind::Cycle(CycleError::TaperBeyondStart { taper, infeed }) = e.kind else { panic!("{e}") };
+    assert_eq!((taper.increments, infeed.increments), (5_001, -5_000));
+}
+
+/// The 988TA's L ("多头螺纹的头数（1～999）"): L999 is accepted, 999 passes of
+/// five moves (O0012's first block, J3 K1), the last start at 998 × 360°/999
+/// = 998 × 360 000/999 thousandths = 998 × 40 000/111 (÷ 9) = 39 920 000/111
+/// = 359 639.639… thousandths (359.6396…°), kept exact as that fraction;
+/// L1000 is refused on its word.
+#[test]
+fn gsk988_starts_999_and_1000() {
+    let m = machine(ProfileName::Gsk988);
+    let head = "M3 S300\nG0 X65 Z5\n";
+    let got = blocks(&format!("{head}G92 X58.7 Z-28 F3 J3 K1 L999\nM30\n"), &m).remove(0);
+    assert_eq!(got.len(), 999 * 5);
+    let last = got[998 * 5 + 1];
+    assert_eq!((last.pass.unwrap().start, last.to.x, last.to.z), (999, 58_700, -27_000));
+    let Motion::Thread { start_angle, sync: true, .. } = last.motion else { panic!("{last:?}") };
+    assert_eq!((start_angle.num, start_angle.den), (39_920_000, 111));
+    let e = error(&format!("{head}G92 X58.7 Z-28 F3 J3 K1 L1000\nM30\n"), &m);
+    assert_eq!((e.line, e.word.as_deref()), (3, Some("L1000")));
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { .. }), "{e}");
+}
+
+/// 988TA note 4 ("当螺纹长轴方向退尾长度大于长轴的螺纹加工长度时，系统产生报警") on
+/// the gsk988 machine: A = X65 Z5, C = X58 Z4 (|W| = 1), J1 K2: K = 2 > 1,
+/// `RunOutTooLong` (2, 1); K1 (= |W|) is accepted, the cut is empty and
+/// left out (R-ZERO): the run-out runs from B straight to (X58 + 2, Z4).
+#[test]
+fn gsk988_note_4() {
+    let m = machine(ProfileName::Gsk988);
+    let e = error("M3 S300\nG0 X65 Z5\nG92 X58 Z4 F3 J1 K2\nM30\n", &m);
+    assert_eq!(e.line, 3);
+    let ErrorKind::Cycle(CycleError::RunOutTooLong { run_out, length }) = e.kind else { panic!("{e}") };
+    assert_eq!((run_out.increments, length.increments), (2_000, 1_000));
+    let got = blocks("M3 S300\nG0 X65 Z5\nG92 X58 Z4 F3 J1 K1\nM30\n", &m).remove(0);
+    assert_eq!(
+        got,
+        vec![
+            rapid(58_000, 5_000, Role::Approach),
+            thread(60_000, 4_000, true, F3, Role::RunOut),
+            rapid(65_000, 4_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]
+    );
+}
+
+/// FANUC's G92 chamfers by 5130 at the angle of 5131 (the profile reads
+/// it): 5130 = 10, 5131 = 30: K = 10 × 0.1 × 3 = 3, J = round(3 tan 30°) =
+/// round(1.7320508) = 1.732: the cut to Z-25, the run-out to X58.7 + 3.464
+/// = X62.164 at Z-28. 5131 = 60: J = round(3 tan 60°) = round(5.1961524)
+/// = 5.196, X58.7 + 10.392 = X69.092, beyond A's X65: clamped there
+/// (R-RUNOUT, note 5 adopted for all profiles), so the retract is empty.
+#[test]
+fn fanuc_chamfer_angle() {
+    let src = "M3 S300\nG0 X65. Z5.\nG92 X58.7 Z-28. F3.0\nM30\n";
+    let mut m = machine(ProfileName::Fanuc);
+    m.apply_toml("[parameters]\n5130 = 10\n5131 = 30\n").unwrap();
+    assert_eq!(
+        blocks(src, &m),
+        vec![vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -25_000, true, F3, Role::Cut),
+            thread(62_164, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, -28_000, Role::Retract),
+            rapid(65_000, 5_000, Role::Return),
+        ]]
+    );
+    m.apply_toml("[parameters]\n5131 = 60\n").unwrap();
+    assert_eq!(
+        blocks(src, &m),
+        vec![vec![
+            rapid(58_700, 5_000, Role::Approach),
+            thread(58_700, -25_000, true, F3, Role::Cut),
+            thread(65_000, -28_000, false, F3, Role::RunOut),
+            rapid(65_000, 5_000, Role::Return),
         ]]
     );
 }

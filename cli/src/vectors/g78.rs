@@ -9,15 +9,29 @@
 //! 980TDi's m the depth mode and D the finishing passes; the 988TA's D the
 //! depth mode).
 
+use cycleref::CycleError;
 use cycleref_spec::{ErrorKind, ProfileName};
 
-use super::g76::{g76_program, pmra, thread, Taper, G76};
+use super::g76::{g76_program, pmra, thread, Taper, Thread, G76};
 use super::machine::{gsk, Ctx};
 use super::{Draft, Expected, Rng, Template};
 
 /// The lines of a one-G78 program with block 1's `p` and extra words.
 fn g78_program(rng: &mut Rng, ctx: &Ctx, straight: bool, p: String, extra1: Vec<String>) -> Vec<String> {
-    let t = thread(rng, ctx, if straight { Taper::Straight } else { Taper::ZLong }, (2, 6));
+    g78_program_with(rng, ctx, straight, p, extra1, |_, _| {})
+}
+
+/// As [`g78_program`], with `change` applied to the thread and the blocks
+/// before they are written (a refusal breaks one thing there).
+fn g78_program_with(
+    rng: &mut Rng,
+    ctx: &Ctx,
+    straight: bool,
+    p: String,
+    extra1: Vec<String>,
+    change: impl FnOnce(&mut Thread, &mut G76),
+) -> Vec<String> {
+    let mut t = thread(rng, ctx, if straight { Taper::Straight } else { Taper::ZLong }, (2, 6));
     let mut g = G76::usual(rng, ctx);
     g.p = Some(p);
     g.extra1 = extra1;
@@ -28,6 +42,7 @@ fn g78_program(rng: &mut Rng, ctx: &Ctx, straight: bool, p: String, extra1: Vec<
     } else {
         g.extra2.extend(run_out);
     }
+    change(&mut t, &mut g);
     g76_program(rng, ctx, &t, &g)
         .into_iter()
         .map(|l| l.strip_prefix("G76").map_or(l.clone(), |rest| format!("G78{rest}")))
@@ -95,4 +110,78 @@ fn infeed_range(rng: &mut Rng) -> Draft {
     let p = pmra(m, r, 45);
     let lines = g78_program(rng, &ctx, true, p, vec![]);
     Draft::new(ctx, lines)
+}
+
+/// The 980TDi's P(m), the depth mode, above 1 ("P(m)：切深选择 0：等距离进刀；1：
+/// 递减式进刀").
+pub(super) const GSK980_M: Template = Template {
+    id: "g78-gsk980-depth-mode",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::OutOfRange { .. })),
+    tags: &["refuse:g78-gsk980-depth-mode"],
+    description: "GSK 980TDi G78 whose P(m), the depth mode, is 2 or more (0 equal, 1 decreasing)",
+    generate: gsk980_m,
+};
+
+fn gsk980_m(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let p = pmra(rng.range(2, 9), rng.range(0, 3), 60);
+    let lines = g78_program(rng, &ctx, true, p, vec![]);
+    Draft::new(ctx, lines)
+}
+
+/// The 988TA's D, the depth mode, above 1 ("切深选择（取值范围为：0~1）").
+pub(super) const GSK988_D: Template = Template {
+    id: "g78-gsk988-depth-mode",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::OutOfRange { .. })),
+    tags: &["refuse:g78-gsk988-depth-mode"],
+    description: "GSK 988TA G78 whose D, the depth mode, is 2 or more (0 equal, 1 decreasing)",
+    generate: gsk988_d,
+};
+
+fn gsk988_d(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let p = pmra(rng.range(1, 2), rng.range(0, 4), 60);
+    let d = rng.range(2, 9);
+    let lines = g78_program(rng, &ctx, true, p, vec![format!("D{d}")]);
+    Draft::new(ctx, lines)
+}
+
+/// A G78 whose end point has the Z of the start ("G78 代码可加工直螺纹和锥螺纹
+/// 不能加工端面螺纹").
+pub(super) const FACE_THREAD: Template = Template {
+    id: "g78-face-thread",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::FaceThread))),
+    tags: &["refuse:g78-face-thread"],
+    description: "G78 face thread: the end point has the Z of the start",
+    generate: face_thread,
+};
+
+fn face_thread(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let (m, r) = if ctx.profile == ProfileName::Gsk988 { (2, rng.range(0, 4)) } else { (1, rng.range(0, 3)) };
+    let incremental = rng.chance(50);
+    let lines = g78_program_with(rng, &ctx, true, pmra(m, r, 60), vec![], |t, g| {
+        t.d.1 = t.a.1;
+        g.incremental = incremental;
+    });
+    Draft::new(ctx, lines)
+}
+
+/// G78 block 2 without P(k) or Q(Δd) ("未输入 P(k)时，系统报警", "未输入△d 时，系统
+/// 报警").
+pub(super) const MISSING: Template = Template {
+    id: "g78-missing-word",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Missing { .. })),
+    tags: &["refuse:g78-missing-word"],
+    description: "G78 block 2 without P(k) or Q(Δd)",
+    generate: missing,
+};
+
+fn missing(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let (m, r) = if ctx.profile == ProfileName::Gsk988 { (2, rng.range(0, 4)) } else { (1, rng.range(0, 3)) };
+    let omit = if rng.chance(50) { "P" } else { "Q" };
+    let lines = g78_program_with(rng, &ctx, true, pmra(m, r, 60), vec![], |_, g| g.omit = omit);
+    let what = if omit == "P" { "P(k)" } else { "Q(Δd)" };
+    Draft::new(ctx, lines).described(format!("G78 block 2 without {what}"))
 }

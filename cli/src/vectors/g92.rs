@@ -255,6 +255,41 @@ fn face(rng: &mut Rng) -> Draft {
     Draft::new(ctx, lines).described(format!("GSK 988TA G92 P1 face thread in two blocks, cut {what}"))
 }
 
+/// The 988TA's high-speed mode (THM, 5129 = 1, R-G92RUNOUT).
+pub(super) const HIGH_SPEED: Template = Template {
+    id: "g92-high-speed",
+    outcome: Expected::Valid(&["g92:run-out"]),
+    tags: &["template:g92-high-speed", "rule:g92-gsk988-high-speed"],
+    description:
+        "GSK 988TA G92 high-speed mode (5129 = 1): J and K; J only (no run-out, the rapid retract); \
+                  K only (K along Z, X out to the start's X)",
+    generate: high_speed,
+};
+
+fn high_speed(rng: &mut Rng) -> Draft {
+    let mut ctx = Ctx::new(ProfileName::Gsk988, rng);
+    ctx.params.insert("5129", Param::Int(1));
+    let taper = rng.chance(30);
+    let l = line32(rng, &ctx, taper);
+    let k = l.lead_inc * 6 / 10;
+    let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 4000)));
+    let mut lines = head(rng, &ctx, a);
+    let variants: [Vec<String>; 3] = [
+        vec![format!("J{}", ctx.num(j)), format!("K{}", ctx.num(kk))],
+        vec![format!("J{}", ctx.num(j))],
+        vec![format!("K{}", ctx.num(kk))],
+    ];
+    for (n, words) in variants.iter().enumerate() {
+        if n > 0 {
+            lines.push(format!("G00 X{} Z{}", ctx.num(a.0), ctx.num(a.1)));
+        }
+        lines.extend(passes_lines(&ctx, &l, k, &[k], words));
+    }
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
 /// A steep taper: X the long axis.
 pub(super) const X_LONG: Template = Template {
     id: "g92-x-long",
@@ -363,6 +398,156 @@ pub(super) const RUN_OUT_INTO_WORK: Template = Template {
 
 fn run_out_into_work(rng: &mut Rng) -> Draft {
     steep(rng, true)
+}
+
+/// K along the long axis longer than the thread (988TA note 4, R-SHORT).
+pub(super) const RUN_OUT_LONG: Template = Template {
+    id: "g92-run-out-too-long",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::RunOutTooLong { .. }))),
+    tags: &["refuse:g92-run-out-too-long"],
+    description: "G92 whose run-out K along the long axis is longer than the thread (988TA note 4)",
+    generate: run_out_long,
+};
+
+fn run_out_long(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let extra = [
+        format!("J{}", ctx.num(ctx.mm(rng.range(300, 1000)))),
+        format!("K{}", ctx.num(l.len + ctx.mm(rng.range(1, 2000)).max(1))),
+    ];
+    let mut lines = head(rng, &ctx, a);
+    lines.extend(passes_lines(&ctx, &l, k, &[k], &extra));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// An axial G92 whose cut end has the Z of the start point (980TDi "也不能
+/// 加工端面螺纹"; on the 988TA a face thread needs P1).
+pub(super) const FACE_THREAD: Template = Template {
+    id: "g92-face-thread",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::FaceThread))),
+    tags: &["refuse:g92-face-thread"],
+    description: "axial G92 whose cut end has the Z of the start point (W0): a face thread",
+    generate: face_thread,
+};
+
+fn face_thread(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(any_profile(rng), rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let x = format!("X{}", ctx.num(ctx.xf() * (l.r0 + l.side * (k / 2))));
+    let z = if rng.chance(50) { format!("Z{}", ctx.num(a.1)) } else { format!("W{}", ctx.num(0)) };
+    let mut lines = head(rng, &ctx, a);
+    lines.push(g92(true, &[x, z, l.lead.clone()]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// The start of a 988TA P1 face thread: A at X `x0`, the face at `z_face`,
+/// A on the `dir` side of it.
+fn face_start(rng: &mut Rng, ctx: &Ctx) -> (String, i64, i64, i64, i64) {
+    let (lead, lead_inc) = ctx.lead(rng, None);
+    let k = lead_inc * 6 / 10;
+    let x0 = ctx.mm(rng.range(30_000, 45_000));
+    let dir = rng.sign();
+    let z_face = ctx.mm(rng.range(-2000, 2000));
+    (lead, k, x0, dir, z_face + dir * (k + ctx.mm(rng.range(2000, 4000))))
+}
+
+/// A 988TA P1 face thread whose cut end has the X of the start point.
+pub(super) const NO_THREAD_LENGTH: Template = Template {
+    id: "g92-no-thread-length",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::NoThreadLength))),
+    tags: &["refuse:g92-no-thread-length"],
+    description: "GSK 988TA G92 P1 face thread whose cut end has the X of the start point (U0): no length",
+    generate: no_thread_length,
+};
+
+fn no_thread_length(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let (lead, k, x0, dir, za) = face_start(rng, &ctx);
+    let a = (ctx.xf() * x0, za);
+    let mut lines = head(rng, &ctx, a);
+    let x = if rng.chance(50) { format!("X{}", ctx.num(a.0)) } else { format!("U{}", ctx.num(0)) };
+    lines.push(format!("G92 {x} Z{} {lead} P1", ctx.num(za - dir * (k + ctx.mm(2000)))));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// A 988TA P1 face thread whose Z travel |R| exceeds its X travel (radius).
+pub(super) const STEEP_FACE: Template = Template {
+    id: "g92-steep-face-thread",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::SteepFaceThread { .. }))),
+    tags: &["refuse:g92-steep-face-thread"],
+    description: "GSK 988TA G92 P1 face thread whose taper R along Z exceeds its X travel (radius): Z would \
+                  be its long axis (R-G92FACE)",
+    generate: steep_face,
+};
+
+fn steep_face(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let (lead, k, x0, dir, za) = face_start(rng, &ctx);
+    let xf = ctx.xf();
+    let a = (xf * x0, za);
+    // A short X travel (radius), and R beyond it, away from A along Z.
+    let travel = ctx.mm(rng.range(1000, 3000));
+    let x1 = x0 - travel;
+    let r = -dir * (travel + ctx.mm(rng.range(1, 2000)).max(1));
+    let mut lines = head(rng, &ctx, a);
+    lines.push(format!(
+        "G92 X{} Z{} R{} {lead} P1",
+        ctx.num(xf * x1),
+        ctx.num(za - dir * (k + ctx.mm(2000))),
+        ctx.num(r)
+    ));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
+}
+
+/// L outside the profile's range (980TDi 1～99, 988TA 1～999).
+pub(super) const STARTS_RANGE: Template = Template {
+    id: "g92-starts-out-of-range",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::OutOfRange { .. })),
+    tags: &["refuse:g92-starts-out-of-range"],
+    description: "G92 whose L is outside the profile's range (980TDi 1-99, 988TA 1-999)",
+    generate: starts_range,
+};
+
+fn starts_range(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(gsk(rng), rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let over = if ctx.profile == ProfileName::Gsk980 { rng.range(100, 999) } else { rng.range(1000, 9999) };
+    let starts = if rng.chance(25) { 0 } else { over };
+    let mut lines = head(rng, &ctx, a);
+    lines.extend(passes_lines(&ctx, &l, k, &[k], &[format!("L{starts}")]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines).described(format!("G92 with L{starts}, outside the profile's range"))
+}
+
+/// The 988TA's P (thread type) other than 0 and 1.
+pub(super) const P_RANGE: Template = Template {
+    id: "g92-p-out-of-range",
+    outcome: Expected::Refused(|k| matches!(k, ErrorKind::OutOfRange { .. })),
+    tags: &["refuse:g92-p-out-of-range"],
+    description: "GSK 988TA G92 whose P (thread type: 0 axial, 1 face) is 2 or more",
+    generate: p_range,
+};
+
+fn p_range(rng: &mut Rng) -> Draft {
+    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let mut lines = head(rng, &ctx, a);
+    lines.extend(passes_lines(&ctx, &l, k, &[k], &[format!("P{}", rng.range(2, 9))]));
+    lines.push("M30".into());
+    Draft::new(ctx, lines)
 }
 
 // ---- what a G92 block shows ----
