@@ -405,7 +405,7 @@ impl fmt::Display for CycleError {
             CycleError::RunOutTooLong { run_out, length } => write!(
                 f,
                 "the run-out along the long axis ({run_out}) is longer than the thread on the long axis \
-                 ({length}) (alarm: G76 note 7, G32 note 4)"
+                 ({length}) (alarm: G76 note 7, G32 note 4, 988TA G92 note 4)"
             ),
             CycleError::RunOutIntoWork { taper } => write!(
                 f,
