@@ -36,6 +36,18 @@ fn start_point(ctx: &Ctx, l: &Line32, k: i64, clear: i64) -> (i64, i64) {
     (ctx.xf() * (l.r0 + reach + l.side * (k + clear)), l.z0)
 }
 
+/// The start of a refused template's axial G92: its context on
+/// `profile`, a G32-like thread line, the thread height k (0.6 × the lead)
+/// and a start point A 1-3 mm clear of it. The draws are made in this
+/// order, so the corpus stays what it was.
+fn refused_start(rng: &mut Rng, profile: ProfileName) -> (Ctx, Line32, i64, (i64, i64)) {
+    let ctx = Ctx::new(profile, rng);
+    let l = line32(rng, &ctx, false);
+    let k = l.lead_inc * 6 / 10;
+    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    (ctx, l, k, a)
+}
+
 /// The blocks of one thread cut in passes at the depths `depths` of a
 /// thread `k` deep: the first names X, Z, R, the lead and `extra`; the
 /// others only X (the rest is modal, R-G92MODAL). The cut end X of pass
@@ -340,11 +352,9 @@ pub(super) const TAPER_BEYOND: Template = Template {
 };
 
 fn taper_beyond(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let profile = any_profile(rng);
+    let (ctx, l, k, a) = refused_start(rng, profile);
     let xf = ctx.xf();
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
     // C at the crest; R towards A, one increment to 2 mm beyond A (radius).
     let c_r = l.r0 + l.side * k;
     let gap = a.0 / xf - c_r;
@@ -373,10 +383,8 @@ pub(super) const NO_INFEED: Template = Template {
 };
 
 fn no_infeed(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let profile = any_profile(rng);
+    let (ctx, l, _, a) = refused_start(rng, profile);
     let mut lines = head(rng, &ctx, a);
     let x = if rng.chance(50) { format!("X{}", ctx.num(a.0)) } else { format!("U{}", ctx.num(0)) };
     lines.push(g92(true, &[x, format!("Z{}", ctx.num(l.z1)), l.lead.clone()]));
@@ -410,10 +418,8 @@ pub(super) const RUN_OUT_LONG: Template = Template {
 };
 
 fn run_out_long(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let profile = gsk(rng);
+    let (ctx, l, k, a) = refused_start(rng, profile);
     let extra = [
         format!("J{}", ctx.num(ctx.mm(rng.range(300, 1000)))),
         format!("K{}", ctx.num(l.len + ctx.mm(rng.range(1, 2000)).max(1))),
@@ -435,10 +441,8 @@ pub(super) const FACE_THREAD: Template = Template {
 };
 
 fn face_thread(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let profile = any_profile(rng);
+    let (ctx, l, k, a) = refused_start(rng, profile);
     let x = format!("X{}", ctx.num(ctx.xf() * (l.r0 + l.side * (k / 2))));
     let z = if rng.chance(50) { format!("Z{}", ctx.num(a.1)) } else { format!("W{}", ctx.num(0)) };
     let mut lines = head(rng, &ctx, a);
@@ -518,10 +522,8 @@ pub(super) const STARTS_RANGE: Template = Template {
 };
 
 fn starts_range(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let profile = gsk(rng);
+    let (ctx, l, k, a) = refused_start(rng, profile);
     let over = if ctx.profile == ProfileName::Gsk980 { rng.range(100, 999) } else { rng.range(1000, 9999) };
     let starts = if rng.chance(25) { 0 } else { over };
     let mut lines = head(rng, &ctx, a);
@@ -540,10 +542,7 @@ pub(super) const P_RANGE: Template = Template {
 };
 
 fn p_range(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
-    let l = line32(rng, &ctx, false);
-    let k = l.lead_inc * 6 / 10;
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
+    let (ctx, l, k, a) = refused_start(rng, ProfileName::Gsk988);
     let mut lines = head(rng, &ctx, a);
     lines.extend(passes_lines(&ctx, &l, k, &[k], &[format!("P{}", rng.range(2, 9))]));
     lines.push("M30".into());
