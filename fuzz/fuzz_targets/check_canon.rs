@@ -11,41 +11,19 @@
 
 use std::sync::OnceLock;
 
-use cycleref_cli::check::{self, TraceFormat};
+use cycleref_cli::check::TraceFormat;
 use cycleref_cli::Job;
-use cycleref_spec::pipeline::Engine;
-use cycleref_spec::{Machine, ProfileName};
+use cycleref_spec::ProfileName;
 use libfuzzer_sys::fuzz_target;
+
+mod trace;
 
 /// The fixed program.
 pub const PROGRAM: &str = include_str!("../../examples/linuxcnc-m20-taper.ngc");
 
-fn job() -> &'static Job {
-    static JOB: OnceLock<Job> = OnceLock::new();
-    JOB.get_or_init(|| {
-        let machine = Machine::new(ProfileName::LinuxCnc);
-        Job::new("linuxcnc-m20-taper.ngc", PROGRAM.as_bytes().to_vec(), machine, Engine::Impl)
-    })
-}
+static JOB: OnceLock<Job> = OnceLock::new();
 
 fuzz_target!(|data: &[u8]| {
-    let job = job();
-    // The first byte chooses the tolerance; the rest is the trace.
-    let (tol, trace) = match data.split_first() {
-        Some((&t, rest)) => (u64::from(t % 4), rest),
-        None => (0, data),
-    };
-    for format in [TraceFormat::Rs274, TraceFormat::Nc] {
-        match check::check_bytes_as(job, trace, format, tol) {
-            Ok(report) => {
-                let _ = report.text();
-                let _ = report.json();
-            }
-            // Every error names a line, except the one about the whole trace.
-            Err(e) => assert!(
-                e.contains("line ") || e.starts_with("the trace has no moves"),
-                "an error without a line: {e}"
-            ),
-        }
-    }
+    let job = trace::job(&JOB, "linuxcnc-m20-taper.ngc", PROGRAM, ProfileName::LinuxCnc);
+    trace::check_all(job, data, &[TraceFormat::Rs274, TraceFormat::Nc]);
 });
