@@ -203,8 +203,9 @@ impl<'a> Number<'a> {
 ///
 /// A word is its text and its letter (24 bytes, so that a block's words sit
 /// inline and move cheaply); its [`Number`] is read from the text when it is
-/// asked for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// asked for. Two words are equal when their letters and texts are (where
+/// the lexer found the number is not part of a word's value).
+#[derive(Clone, Copy)]
 pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
@@ -220,6 +221,20 @@ pub struct Word<'a> {
     point: u8,
     /// A leading minus sign.
     negative: bool,
+}
+
+impl PartialEq for Word<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        self.letter == other.letter && self.raw == other.raw
+    }
+}
+
+impl Eq for Word<'_> {}
+
+impl std::fmt::Debug for Word<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Word").field("letter", &self.letter).field("raw", &self.raw).finish()
+    }
 }
 
 /// 10^k for k up to 18.
