@@ -681,7 +681,11 @@ pub fn groove_equivalence(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized
 /// [`groove_equivalence`] against a given restatement (the controls pass a
 /// restatement with a deliberate error, which the comparison with the
 /// reference must catch).
-pub fn groove_equivalence_with(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized), restated: Restatement) {
+pub fn groove_equivalence_with(
+    d: &GrooveDomain,
+    engine: &(impl GrooveEngine + ?Sized),
+    restated: Restatement,
+) {
     declare(&["a groove that expands", "a groove that is refused", "several layers", "with an arc"]);
     let c = any_groove(d);
     assume(crate::g75_exact::is_square(&c));
