@@ -686,7 +686,14 @@ pub fn groove_equivalence_with(
     engine: &(impl GrooveEngine + ?Sized),
     restated: Restatement,
 ) {
-    declare(&["a groove that expands", "a groove that is refused", "several layers", "with an arc"]);
+    declare(&[
+        "a groove that expands",
+        "a corner too large",
+        "a groove narrower than the tool",
+        "ridges in layers",
+        "several layers",
+        "with an arc",
+    ]);
     let c = any_groove(d);
     assume(crate::g75_exact::is_square(&c));
     let ours = engine.expand(&c);
@@ -699,7 +706,9 @@ pub fn groove_equivalence_with(
     }
     assert_eq!(ours, exact, "engine and reference differ (the reference in integers) for {c:?}");
     cover!(ours.is_ok(), "a groove that expands");
-    cover!(ours.is_err(), "a groove that is refused");
+    cover!(matches!(ours, Err(CycleError::CornerTooLarge { .. })), "a corner too large");
+    cover!(matches!(ours, Err(CycleError::GrooveNarrowerThanTool { .. })), "a groove narrower than the tool");
+    cover!(matches!(ours, Err(CycleError::RidgesInLayers { .. })), "ridges in layers");
     if let Ok(moves) = &ours {
         cover!(moves.iter().any(|m| matches!(m.role, Role::LayerChange(_))), "several layers");
         cover!(moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })), "with an arc");

@@ -151,3 +151,81 @@ fn a_boundary_rounded_out_is_caught() {
 fn bottom_rounds_turning_the_wrong_way_are_caught() {
     caught(Slip::BottomRoundsReversed);
 }
+
+/// The alarms that no groove drawn by `any_groove` reaches (its start is
+/// X100 mm, Z0): a coordinate beyond ±999 999 999 (R-G75RANGE: the first
+/// in move order, X before Z), every move kind's end crossing the limit in
+/// turn as S moves towards it; and too many pecks (§9). The engine, the
+/// restatement and the reference agree on each.
+#[test]
+fn range_and_peck_alarms_agree() {
+    use cycleref::g75::{Corner, CornerKind, G75Cycle, PathType, RIGHT_ANGLE};
+    use cycleref::units::MAX_LENGTH;
+    use cycleref::{IncrementSystem, InputUnit, Point, Units, XMode};
+    let round = Corner { size: 2, kind: CornerKind::Round };
+    let base = G75Cycle {
+        units: Units { system: IncrementSystem::IsB, unit: InputUnit::Metric },
+        x_mode: XMode::Diameter,
+        from: Point::new(0, 0),
+        start: Point::new(0, 0),
+        peck: 3,
+        step: 2,
+        depth: 12,
+        width: 9,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 1,
+        layer: None,
+        allowance_x: 1,
+        allowance_z: 1,
+        tool_width: Some(2),
+        path: PathType::RoughAndFinish,
+        corners: [round, round, Corner { size: 1, kind: CornerKind::Chamfer }, round],
+    };
+    let same = |c: &G75Cycle| {
+        let ours = cycleref::expand_g75(c).map(Iterator::collect::<Vec<_>>);
+        let reference = cycleref_spec::g75::expand(c);
+        assert_eq!(ours, reference, "engine and reference differ for {c:?}");
+        assert_eq!(
+            g75_exact::expand(c),
+            reference,
+            "the integer restatement and the reference differ for {c:?}"
+        );
+        reference
+    };
+    let (mut out_of_range, mut expanded) = (0, 0);
+    for (sx, sz) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
+        for k in -2..=20 {
+            for axis in 0..2 {
+                let near = MAX_LENGTH - k;
+                let start = if axis == 0 { Point::new(sx * near, 0) } else { Point::new(0, sz * near) };
+                let c =
+                    G75Cycle { start, from: start, depth: sx * base.depth, width: sz * base.width, ..base };
+                match same(&c) {
+                    Err(cycleref::CycleError::OutOfRange { .. }) => out_of_range += 1,
+                    Ok(_) => expanded += 1,
+                    Err(_) => {}
+                }
+            }
+        }
+    }
+    eprintln!("near the range limit: {out_of_range} out of range, {expanded} expanded");
+    assert!(out_of_range > 0 && expanded > 0);
+    // 10^6 pecks and one more: a zero-width groove, one plunge, pecks of 1.
+    for depth in [999_999, 1_000_000, 1_000_001] {
+        let c = G75Cycle {
+            depth,
+            width: 0,
+            peck: 1,
+            tool_width: None,
+            allowance_x: 0,
+            allowance_z: 0,
+            path: PathType::Rough,
+            corners: [Corner::SHARP; 4],
+            ..base
+        };
+        let r = same(&c);
+        assert_eq!(r.is_err(), depth > 1_000_000, "{r:?}");
+    }
+}
