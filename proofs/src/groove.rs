@@ -657,6 +657,64 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &(impl GrooveEngine + 
     cover!(got.iter().any(|g| g.2.is_some()), "with an arc");
 }
 
+/// The restatement a groove harness compares with: `crate::g75_exact`'s
+/// `expand`, or one of its deliberate errors (the controls of
+/// `proofs/tests/g75_exact.rs`).
+pub type Restatement = fn(&G75Cycle) -> Result<std::vec::Vec<Move>, CycleError>;
+
+/// Property: engine = reference for right-angle grooves (A = B = 90°, L =
+/// 0): for every groove drawn from `d`, the engine's moves (or its alarm)
+/// equal the reference's.
+///
+/// The reference is `cycleref_spec::g75::expand`, exact over `num-bigint`.
+/// Under Kani the engine is compared with the reference restated in
+/// integers, [`crate::g75_exact::expand`] (the same steps on whole
+/// increments: at right angles every value of the reference is an integer
+/// or a half-integer), so that Kani does not execute `num-bigint`
+/// symbolically; under `cargo test` the engine is compared with both, and
+/// the restatement with the reference, so the restatement is itself held to
+/// the reference on every groove run here.
+pub fn groove_equivalence(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
+    groove_equivalence_with(d, engine, crate::g75_exact::expand);
+}
+
+/// [`groove_equivalence`] against a given restatement (the controls pass a
+/// restatement with a deliberate error, which the comparison with the
+/// reference must catch).
+pub fn groove_equivalence_with(
+    d: &GrooveDomain,
+    engine: &(impl GrooveEngine + ?Sized),
+    restated: Restatement,
+) {
+    declare(&[
+        "a groove that expands",
+        "a corner too large",
+        "a groove narrower than the tool",
+        "ridges in layers",
+        "several layers",
+        "with an arc",
+    ]);
+    let c = any_groove(d);
+    assume(crate::g75_exact::is_square(&c));
+    let ours = engine.expand(&c);
+    let exact = restated(&c);
+    #[cfg(not(kani))]
+    {
+        let reference = cycleref_spec::g75::expand(&c);
+        assert_eq!(ours, reference, "engine and reference differ for {c:?}");
+        assert_eq!(exact, reference, "the integer restatement and the reference differ for {c:?}");
+    }
+    assert_eq!(ours, exact, "engine and reference differ (the reference in integers) for {c:?}");
+    cover!(ours.is_ok(), "a groove that expands");
+    cover!(matches!(ours, Err(CycleError::CornerTooLarge { .. })), "a corner too large");
+    cover!(matches!(ours, Err(CycleError::GrooveNarrowerThanTool { .. })), "a groove narrower than the tool");
+    cover!(matches!(ours, Err(CycleError::RidgesInLayers { .. })), "ridges in layers");
+    if let Ok(moves) = &ours {
+        cover!(moves.iter().any(|m| matches!(m.role, Role::LayerChange(_))), "several layers");
+        cover!(moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })), "with an arc");
+    }
+}
+
 /// Property: over the documented ranges, expanding never panics or
 /// overflows; every move lies within the coordinate range; a cycle either
 /// expands or is refused with an alarm. Bounded to the first `limit` moves.

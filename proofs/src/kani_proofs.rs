@@ -33,9 +33,10 @@ use crate::schedule;
 use crate::thread;
 use crate::windows::{
     DIV_WINDOW, EQUIVALENCE_WINDOW, FINISHING_WINDOW, G32_WINDOW, G76_WINDOW, G92_WINDOW,
-    GROOVE_NO_PANIC_LAYERS, GROOVE_NO_PANIC_MOVES, GROOVE_NO_PANIC_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW,
-    LCNC_DEPTH_WINDOW, LCNC_PASS_WINDOW, LCNC_SPRING_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW,
-    NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
+    GROOVE_EQUIVALENCE_WINDOW, GROOVE_NO_PANIC_LAYERS, GROOVE_NO_PANIC_MOVES, GROOVE_NO_PANIC_WINDOW,
+    GROOVE_WINDOW, ISQRT_WINDOW, LCNC_DEPTH_WINDOW, LCNC_PASS_WINDOW, LCNC_SPRING_WINDOW, MUL_TAN_WINDOW,
+    NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+    SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -323,6 +324,30 @@ fn groove_finish_is_profile() {
 fn groove_material() {
     let window = GrooveDomain { tool_width: (1, 2), path: (0, 1), ..GROOVE_WINDOW };
     groove::groove_material(&window, &GrooveFixedPoint);
+}
+
+/// G75.1 engine = reference for right-angle grooves over
+/// [`GROOVE_EQUIVALENCE_WINDOW`] (2 to 4 increments deep, 0 to 3 wide,
+/// pecks of 2, steps 1 and 2, up to 4 layers, allowances, tool widths 0 and
+/// 1, corners of size 0 and 1, every J, sign, f = 1 and 2): the engine
+/// against the reference restated in integers (`crate::g75_exact`; under
+/// `cargo test` the harness also compares both with the `num-bigint`
+/// reference, over this whole window: 884 736 grooves), so that Kani
+/// executes no `num-bigint`. Unwind 54; measured over the whole window
+/// (`proofs/tests/unwind.rs`): 53 moves on each side (engine and integer
+/// restatement), 16 Taylor terms, 8 contour points, 4 layers counted, 4
+/// limb iterations, 3 roughing steps, 2 stages, no bit-by-bit division; the
+/// restatement's loops (its layers, plunges and pecks) are bounded by its
+/// moves. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed; the
+/// restatement uses none of the engine's kernels).
+#[kani::proof]
+#[kani::stub_verified(cycleref::engine::arith::floor_div)]
+#[kani::stub_verified(cycleref::engine::arith::ceil_div)]
+#[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
+#[kani::unwind(54)]
+#[kani::solver(cadical)]
+fn groove_equivalence() {
+    groove::groove_equivalence(&GROOVE_EQUIVALENCE_WINDOW, &GrooveFixedPoint);
 }
 
 /// Every documented input of at most 1 152 layers

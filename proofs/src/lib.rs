@@ -8,6 +8,7 @@
 #![deny(missing_docs)]
 
 pub mod contracts;
+pub mod g75_exact;
 pub mod g76_exact;
 pub mod g92;
 pub mod groove;

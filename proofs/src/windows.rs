@@ -120,6 +120,36 @@ pub const GROOVE_WINDOW: GrooveDomain = GrooveDomain {
     ..GrooveDomain::SQUARE
 };
 
+/// `groove_equivalence`'s window: right-angle grooves 2 to 4 increments
+/// deep and 0 to 3 wide, pecks of 2 (full and short last pecks), steps 1
+/// and 2 (ridges and a short last step), retract 0 and 1, no V or Δv 1 and
+/// 2 (up to 4 layers), allowances 0 and 1, tool widths 0 and 1 (I0 is the
+/// pointed tool: `width_of_tool` is 0 either way), corner sizes 0 and 1 at
+/// each corner with r2, r3, r4 rounds and r1 a chamfer or a round (at 90° a
+/// chamfer and a round have the same tangent points and the same roughing
+/// chord; they differ only in the move's motion, which r1 covers), every J
+/// and sign, IS-C inch diameter and IS-B metric radius (f = 2 and f = 1).
+/// 884 736 grooves, all enumerated under `cargo test`
+/// (`proofs/tests/g75_exact.rs`): the shim runs the engine, the integer
+/// restatement and the `num-bigint` reference on each.
+pub const GROOVE_EQUIVALENCE_WINDOW: GrooveDomain = GrooveDomain {
+    depth: (2, 4),
+    width: (0, 3),
+    peck: (2, 2),
+    step: (1, 2),
+    retract: (0, 1),
+    layer: (0, 2),
+    allowance_x: (0, 1),
+    allowance_z: (0, 1),
+    tool_width: (0, 1),
+    corner: (0, 1),
+    corner_kinds: (14, 15),
+    path: (0, 2),
+    signs: (0, 3),
+    units: (3, 4),
+    ..GrooveDomain::SQUARE
+};
+
 /// `groove_no_panic`'s window: every documented input
 /// ([`GrooveDomain::FULL`]) of at most [`GROOVE_NO_PANIC_LAYERS`] layers, the
 /// first [`GROOVE_NO_PANIC_MOVES`] moves of each groove.
@@ -230,7 +260,7 @@ pub const LCNC_PASS_WINDOW: LcncDomain = LcncDomain {
 };
 
 /// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 29] = [
+pub const UNWIND: [(&str, u32); 30] = [
     ("depth_monotonicity", 79),
     ("termination", 79),
     ("finishing", 109),
@@ -255,6 +285,7 @@ pub const UNWIND: [(&str, u32); 29] = [
     ("groove_finish_is_profile", 66),
     ("groove_material", 66),
     ("groove_no_panic", GROOVE_NO_PANIC_UNWIND),
+    ("groove_equivalence", 54),
     ("schedule_step", 7),
     ("lcnc_depth_monotonicity", 256),
     ("lcnc_termination", 256),

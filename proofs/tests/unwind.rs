@@ -257,6 +257,42 @@ fn groove_loops_stay_below_the_unwind_bounds() {
     groove_no_panic_maxima().check("groove_no_panic");
 }
 
+/// `groove_equivalence`: its whole Kani window enumerated (884 736
+/// grooves), the engine's loops counting (`cycleref::loop_counters`), and
+/// the moves on both sides the harness compares, the engine's and the
+/// integer restatement's (`g75_exact::expand`, the other side under Kani).
+/// The restatement's own loops are bounded by its moves: every layer it
+/// counts has a plunge, every plunge a peck move (from the layer top to a
+/// deeper bottom), and its contour loops run over at most 6 and 7 points.
+/// The `num-bigint` reference is not run here: Kani does not execute it.
+#[test]
+fn groove_equivalence_stays_below_its_unwind_bound() {
+    let _one = lock();
+    use cycleref_proofs::g75_exact;
+    use cycleref_proofs::groove;
+    let window = windows::GROOVE_EQUIVALENCE_WINDOW;
+    loop_counters::reset();
+    let (engine, restated) = (Cell::new(0_usize), Cell::new(0_usize));
+    let r = shim::check("groove_equivalence (window)", Mode::Enumerate { max_runs: 900_000 }, || {
+        let c = groove::any_groove(&window);
+        cycleref_proofs::verify::assume(g75_exact::is_square(&c));
+        if let Ok(moves) = cycleref::expand_g75(&c) {
+            engine.set(engine.get().max(moves.count()));
+        }
+        if let Ok(moves) = g75_exact::expand(&c) {
+            restated.set(restated.get().max(moves.len()));
+        }
+    });
+    eprintln!("  groove_equivalence (window): {} runs, {} pruned", r.runs, r.pruned);
+    assert_eq!(r.runs, 884_736, "the whole window");
+    let mut m = Maxima::default();
+    m.take(u32::try_from(engine.get()).unwrap_or(u32::MAX));
+    m.0.insert("harness: moves of the integer reference", u32::try_from(restated.get()).unwrap_or(u32::MAX));
+    assert_eq!(engine.get(), restated.get(), "both sides have the same longest path");
+    let most = m.check("groove_equivalence");
+    assert_eq!(most + 1, windows::unwind("groove_equivalence"), "the bound is one above the largest loop");
+}
+
 /// The loop maxima of `groove_no_panic` over its Kani window (every
 /// documented input of at most `GROOVE_NO_PANIC_LAYERS` layers, the first
 /// `GROOVE_NO_PANIC_MOVES` moves): sampled over the window, and at the
