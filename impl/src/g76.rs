@@ -39,6 +39,30 @@ pub enum Infeed {
     Alternating,
 }
 
+impl Infeed {
+    /// The rough passes of `levels` depth levels: one a level, but two at
+    /// every level except the last in [`Infeed::LeftRight`] (right, then
+    /// left). The one home of this count, for the engine and the reference.
+    ///
+    /// ```
+    /// use cycleref::Infeed;
+    /// assert_eq!(Infeed::RightFlank.passes(4), 4);
+    /// assert_eq!(Infeed::LeftRight.passes(4), 7);
+    /// assert_eq!(Infeed::LeftRight.passes(0), 0);
+    /// ```
+    #[must_use]
+    pub const fn passes(self, levels: u64) -> u64 {
+        match self {
+            Infeed::LeftRight => levels.saturating_mul(2).saturating_sub(1),
+            Infeed::RightFlank
+            | Infeed::RightCentre
+            | Infeed::Centre
+            | Infeed::LeftFlank
+            | Infeed::Alternating => levels,
+        }
+    }
+}
+
 /// How the rough depths grow (G78 P(m) on the 980TDi, D on the 988TA: 切深
 /// 选择).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

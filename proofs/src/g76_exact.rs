@@ -106,6 +106,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let min = c.min_cut.max(1);
     let first = c.first_depth;
     let limit = u64::from(c.pass_limit);
+    // Restated here, not `Infeed::passes` (its twin in the shared model,
+    // which the engine and the reference both call): the oracle keeps its
+    // own count.
     let passes_of = |levels: u64| -> u64 {
         match c.infeed {
             Infeed::LeftRight => (2 * levels).saturating_sub(1),

@@ -207,16 +207,7 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let min = effective_min_cut(from_increments(c.min_cut, u), u);
     let first = from_increments(c.first_depth, u);
     let limit = u64::from(c.pass_limit);
-    let passes_of = |levels: u64| -> u64 {
-        match c.infeed {
-            Infeed::LeftRight => (2 * levels).saturating_sub(1),
-            Infeed::RightFlank
-            | Infeed::RightCentre
-            | Infeed::Centre
-            | Infeed::LeftFlank
-            | Infeed::Alternating => levels,
-        }
-    };
+    let passes_of = |levels: u64| c.infeed.passes(levels);
     let mut depth = Decimal::ZERO;
     let mut n = 0_u64;
     let levels = if c.depth_mode == DepthMode::Equal {

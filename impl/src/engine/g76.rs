@@ -155,14 +155,7 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
         }
     };
     // levels < 2^33: doubling cannot overflow.
-    let passes = match c.infeed {
-        Infeed::LeftRight => (2 * levels).saturating_sub(1),
-        Infeed::RightFlank
-        | Infeed::RightCentre
-        | Infeed::Centre
-        | Infeed::LeftFlank
-        | Infeed::Alternating => levels,
-    };
+    let passes = c.infeed.passes(levels);
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
     }
