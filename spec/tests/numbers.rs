@@ -88,6 +88,14 @@ fn worked_examples() {
     assert_eq!(word("P99999999999999999999").number().integer(), None);
     assert_eq!(word("X-0012.500").number().scaled(3), Some(Some(-12_500)));
     assert_eq!(word("X1.0005").number().scaled(3), Some(None));
+    // The shortcut's edge: 18 digits with the decimals are still scaled
+    // (19 are left to the exact path, which gives the same value).
+    assert_eq!(word("X123456789012345.678").number().scaled(3), Some(Some(123_456_789_012_345_678)));
+    assert_eq!(word("X1234567890123456.789").number().scaled(3), None);
+    // Longer than 20 characters: decided through the exact value, and zero
+    // written long is still not positive.
+    assert!(!word("S0.000000000000000000000000").number().is_positive());
+    assert!(word("S0.000000000000000000000001").number().is_positive());
     // A word longer than 255 bytes takes the slow path to its number.
     let long = format!("X-{}1.5", "0".repeat(300));
     let w = Lexer::new(long.as_bytes()).next().unwrap().unwrap().words[0];
