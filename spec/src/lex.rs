@@ -834,12 +834,10 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         None => std::str::from_utf8(&line[start..pos]).ok(),
     }
     .unwrap_or_default();
-    // The number's place in `raw`, when `raw` is short enough for bytes
-    // (it always is but for hundreds of digits or spaces).
+    // The number's place in `raw`, when both offsets fit a byte below
+    // `SLOW` (they do but for hundreds of spaces or digits).
     let (at, point) = match (u8::try_from(digits_start - start), u8::try_from(int_len)) {
-        (Ok(at), Ok(int)) if pos - start < usize::from(SLOW) => {
-            (at, if frac_len.is_some() { int } else { SLOW })
-        }
+        (Ok(at), Ok(int)) if at != SLOW && int != SLOW => (at, if frac_len.is_some() { int } else { SLOW }),
         _ => (SLOW, SLOW),
     };
     let negative = digits_start > num_start && line[num_start] == b'-';

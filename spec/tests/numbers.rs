@@ -102,3 +102,24 @@ fn worked_examples() {
     assert_eq!(w.number(), Word::new('X', &long).number());
     assert_eq!(w.number().scaled(3), Some(Some(-1_500)));
 }
+
+#[test]
+fn lexer_edges() {
+    use cycleref_spec::lex::lex;
+    // A point without digits is no number.
+    let e = lex("G01 X. Z1").expect_err("X. has no number");
+    assert!(e.to_string().contains("the address `X` without a number"), "{e}");
+    assert!(lex("G01 X0. Z.5").is_ok());
+    // A comment-only segment after a block end belongs to the block before;
+    // a block after it on the same line is read too.
+    let blocks = lex("G01 X1 ;(one); G01 X2\nG01 X3").expect("lexes");
+    let texts: Vec<String> = blocks.iter().map(|b| b.text_lossy().into_owned()).collect();
+    assert_eq!(texts, ["G01 X1 (one)", "G01 X2", "G01 X3"]);
+    assert_eq!(blocks.iter().map(|b| b.line).collect::<Vec<_>>(), [1, 1, 2]);
+    // A word longer than 255 bytes whose digits start early still reads
+    // (its number found again from its text).
+    let long = format!("X1{}", "0".repeat(300));
+    let w = lex(&long).expect("lexes")[0].words[0];
+    assert_eq!(w.number().int_digits().len(), 301);
+    assert_eq!(w.number(), Word::new('X', &long).number());
+}
