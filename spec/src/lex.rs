@@ -835,9 +835,10 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     }
     .unwrap_or_default();
     // The number's place in `raw`, when both offsets fit a byte below
-    // `SLOW` (they do but for hundreds of spaces or digits).
+    // `SLOW` (they do but for hundreds of spaces or digits; an `at` of
+    // `SLOW` itself sends `Word::number` the slow way).
     let (at, point) = match (u8::try_from(digits_start - start), u8::try_from(int_len)) {
-        (Ok(at), Ok(int)) if at != SLOW && int != SLOW => (at, if frac_len.is_some() { int } else { SLOW }),
+        (Ok(at), Ok(int)) if int != SLOW => (at, if frac_len.is_some() { int } else { SLOW }),
         _ => (SLOW, SLOW),
     };
     let negative = digits_start > num_start && line[num_start] == b'-';

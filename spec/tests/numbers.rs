@@ -122,4 +122,13 @@ fn lexer_edges() {
     let w = lex(&long).expect("lexes")[0].words[0];
     assert_eq!(w.number().int_digits().len(), 301);
     assert_eq!(w.number(), Word::new('X', &long).number());
+    // Around the byte limit of the number's place: 254, 255 and 256 digits
+    // before the point, and as many spaces before the digits.
+    for n in [254, 255, 256] {
+        for text in [format!("X{}.5", "1".repeat(n)), format!("X{}1.5", " ".repeat(n))] {
+            let w = lex(&text).expect("lexes")[0].words[0];
+            assert_eq!(w.number(), Word::new('X', &text).number(), "{n}");
+            assert!(w.number().has_point(), "{n}");
+        }
+    }
 }
