@@ -75,9 +75,11 @@ pub static G32_VALIDATE: Site = Site::new("G32Block::validate: coordinates");
 /// products of an interval product (the largest count of any one of them).
 #[cfg(feature = "loop-counters")]
 pub static REAL_LIMBS: Site = Site::new("real: limb loops");
-/// `engine::real::limbs_divmod`: the bit-by-bit long division.
+/// `engine::real::limbs_divmod`: the quotient limbs of the long division
+/// (Knuth's algorithm D) and, counted apart, the corrections of each
+/// estimated limb (at most two).
 #[cfg(feature = "loop-counters")]
-pub static REAL_DIVMOD: Site = Site::new("real::limbs_divmod: bits");
+pub static REAL_DIVMOD: Site = Site::new("real::limbs_divmod: quotient limbs");
 /// `engine::real::sin_cos_series`: the terms of a Taylor series.
 #[cfg(feature = "loop-counters")]
 pub static REAL_SERIES: Site = Site::new("real::sin_cos_series: terms");

@@ -266,7 +266,7 @@ fn g92_pass() {
 }
 
 /// G75.1 pecks and steps over [`GROOVE_WINDOW`] (≤ 4 increments). Unwind
-/// 66; measured: 65 moves in a groove (the harness's loops); the engine's loops (measured by `groove_loops_stay_below_the_unwind_bounds`): 2 iterator stages, 3 roughing steps, 4 layers counted, 8 contour points, 16 Taylor terms (sin and cos of the right angle), 4 limb iterations, no bit-by-bit division (right angles are exact); the limb loops written as iterator adaptors (`all`, `any`) run over at most 28 limbs.
+/// 66; measured: 65 moves in a groove (the harness's loops); the engine's loops (measured by `groove_loops_stay_below_the_unwind_bounds`): 2 iterator stages, 3 roughing steps, 4 layers counted, 8 contour points, 16 Taylor terms (sin and cos of the right angle), 4 limb iterations, no long division (right angles are exact); the limb loops written as iterator adaptors (`all`, `any`) run over at most 28 limbs.
 /// Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed).
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::floor_div)]
@@ -336,7 +336,7 @@ fn groove_material() {
 /// executes no `num-bigint`. Unwind 54; measured over the whole window
 /// (`proofs/tests/unwind.rs`): 53 moves on each side (engine and integer
 /// restatement), 16 Taylor terms, 8 contour points, 4 layers counted, 4
-/// limb iterations, 3 roughing steps, 2 stages, no bit-by-bit division; the
+/// limb iterations, 3 roughing steps, 2 stages, no long division; the
 /// restatement's loops (its layers, plunges and pecks) are bounded by its
 /// moves. Contracts: `floor_div`, `ceil_div`, `saturate_i64` (stubbed; the
 /// restatement uses none of the engine's kernels).
@@ -354,9 +354,10 @@ fn groove_equivalence() {
 /// ([`GROOVE_NO_PANIC_WINDOW`], [`GROOVE_NO_PANIC_LAYERS`]: `|H| ≤ 1 152·Δv`,
 /// stated on the words), the first 8 moves: no panic, no overflow, every
 /// move in range. Unwind 1 153, one above the most iterations any loop
-/// reached here can make by construction: the bit-by-bit division of
-/// `engine::real` (a dividend of 18 limbs at the slow precision: 1 152
-/// bits; measured 304), the Taylor series (400 terms; measured 20), the
+/// reached here can make by construction: the layers (1 152, the bound
+/// of the window, chosen when a bit-by-bit division of 1 152 steps set
+/// the bound; the division is now Knuth's algorithm D: at most 18 quotient
+/// limbs, measured 4), the Taylor series (400 terms; measured 20), the
 /// limb loops (28), the contour points (8), and the peck count's loop over
 /// the layers (the window's 1 152; measured 1 152, enumerated); the
 /// iterator's state machines measured 3 and 2, the harness's loop 8 moves.
@@ -399,7 +400,7 @@ fn schedule_step() {
 /// round(δ_n/ξ) non-decreasing with cut ≥ 0 and at most round(K/ξ), its
 /// cut X the exact depth rounded. Unwind 256; measured over the window
 /// (`proofs/tests/linuxcnc_harnesses.rs`, `every_loop_stays_below_its_unwind_bound`):
-/// 255 bits of `real::limbs_divmod` (the largest), 60 atanh terms, 39
+/// 60 atanh terms (the largest), 3 quotient limbs of `real::limbs_divmod`, 39
 /// exp steps, 32 root-search and gcd steps, 15 sine/cosine terms, 13
 /// passes checked, 5 limb iterations, 2 iterator rounds, 61 moves of one
 /// cycle (the harness's loop); the harness's `pow` at most 12, its
@@ -435,7 +436,7 @@ fn lcnc_termination() {
 /// over [`LCNC_SPRING_WINDOW`] (K ≤ 5, R 1..2, every angle, H -1..2, E 0..2
 /// with every L, both directions and sides): depth round(K/ξ), cut X X₀ −
 /// σ(|I| + K), out at X₀, the deepest pass ending at Z, spring passes
-/// repeating it. Unwind 256; measured: 255 division bits, 128 bit pairs of
+/// repeating it. Unwind 256; measured: 3 quotient limbs of division, 128 bit pairs of
 /// `isqrt_wide` (the taper pitch), 60 atanh terms, 39 exp steps, 32 root
 /// and gcd steps, 15 sine/cosine terms, 9 passes checked, 67 moves of one
 /// cycle. No contract (as [`lcnc_depth_monotonicity`]). Covers: H ≥ 1; a

@@ -158,10 +158,12 @@ pub const GROOVE_NO_PANIC_WINDOW: GrooveDomain = GrooveDomain::FULL;
 /// The most layers of a groove in `groove_no_panic`'s window (`|H| ≤
 /// 1 152·Δv`; see `crate::groove::groove_no_panic`). The peck count's loop
 /// over the layers runs once per layer, so its count is at most this. The
-/// unwind bound [`GROOVE_NO_PANIC_UNWIND`] is set by the engine's largest
-/// loop capacity, the bit-by-bit division of `engine::real` (a dividend of
-/// `2N − 2` limbs at the slow precision N = 10: 1 152 bits); this layer
-/// bound is the most the same unwind bound covers. Grooves of more layers
+/// unwind bound [`GROOVE_NO_PANIC_UNWIND`] was set by the engine's largest
+/// loop capacity when `engine::real` divided bit by bit (a dividend of
+/// `2N − 2` limbs at the slow precision N = 10: 1 152 bits), and this layer
+/// bound is the most the same unwind bound covers; the division is now
+/// Knuth's algorithm D (at most 18 quotient limbs), so the layers are the
+/// largest capacity, and both stay. Grooves of more layers
 /// (up to `MAX_PECKS` = 10^6) are left to the tests here
 /// (`proofs/tests/g75_harnesses.rs`).
 pub const GROOVE_NO_PANIC_LAYERS: i64 = 1_152;
@@ -170,8 +172,9 @@ pub const GROOVE_NO_PANIC_LAYERS: i64 = 1_152;
 pub const GROOVE_NO_PANIC_MOVES: usize = 8;
 
 /// `groove_no_panic`'s unwind bound: one above the most iterations the
-/// loops it reaches can make by construction: the long division 1 152 bits
-/// (measured: 304), the Taylor series 400 terms (`MAX_TERMS`; measured: 20),
+/// loops it reaches can make by construction: the layers
+/// [`GROOVE_NO_PANIC_LAYERS`] (below), the long division 18 quotient limbs
+/// (Knuth's algorithm D; measured: 4), the Taylor series 400 terms (`MAX_TERMS`; measured: 20),
 /// a limb loop 28 limbs (the scratch buffers), the contour points 8 (the
 /// profile's arrays), the layers [`GROOVE_NO_PANIC_LAYERS`] (measured: 1 152,
 /// enumerated); and above the measured counts of the iterator's state

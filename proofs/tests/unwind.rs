@@ -360,7 +360,7 @@ fn groove_no_panic_reaches_its_layer_limit() {
     let layers = u32::try_from(windows::GROOVE_NO_PANIC_LAYERS).expect("a small limit");
     assert_eq!(m.0.get("g75 roughing: layers counted"), Some(&layers));
     assert_eq!(m.0.get("harness: moves of one cycle"), Some(&8));
-    assert!(m.0.get("real::limbs_divmod: bits").is_some_and(|&n| n > 0), "{:?}", m.0);
+    assert!(m.0.get("real::limbs_divmod: quotient limbs").is_some_and(|&n| n > 0), "{:?}", m.0);
 }
 
 /// The G75.1 engine's loops are held to the bound too: `groove_no_panic`'s

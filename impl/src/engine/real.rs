@@ -238,31 +238,6 @@ fn limbs_mul_small(a: &mut [u64], k: u64) -> u64 {
     carry
 }
 
-/// `a <<= 1`; returns the bit shifted out.
-fn limbs_shl1(a: &mut [u64]) -> bool {
-    let mut carry = false;
-    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
-    for x in a.iter_mut() {
-        loops.tick();
-        let out = *x >> 63 == 1;
-        *x = (*x << 1) | u64::from(carry);
-        carry = out;
-    }
-    carry
-}
-
-/// Bit `i` of `a`.
-fn limbs_bit(a: &[u64], i: usize) -> bool {
-    a.get(i / 64).is_some_and(|x| (x >> (i % 64)) & 1 == 1)
-}
-
-/// Sets bit `i` of `a`.
-fn limbs_set_bit(a: &mut [u64], i: usize) {
-    if let Some(x) = a.get_mut(i / 64) {
-        *x |= 1 << (i % 64);
-    }
-}
-
 /// The number of significant bits of `a` (0 for zero).
 fn limbs_bits(a: &[u64]) -> usize {
     let mut loops = crate::loop_counters::count!(REAL_LIMBS);
@@ -277,24 +252,160 @@ fn limbs_bits(a: &[u64]) -> usize {
     0
 }
 
-/// Long division `num / den` (binary, restoring): the quotient goes to `q`
-/// (as long as `num`, zero on entry), the remainder is left in `rem`
-/// (zero on entry, one limb longer than `den`). `den` must not be zero.
+/// Long division `num / den` (Knuth's algorithm D, TAOCP vol. 2 §4.3.1,
+/// with 64-bit digits): the quotient goes to `q` (as long as `num`, zero on
+/// entry), the remainder is left in `rem` (zero on entry, one limb longer
+/// than `den`). `den` must not be zero (a zero `den` leaves both zero).
+///
+/// One quotient limb per step, each estimated from the top two limbs of the
+/// partial remainder and the top limb of the normalised divisor (at most two
+/// too large after the test on the second limb, and then at most one: the
+/// add-back). It replaced a bit-by-bit restoring division (kept as the
+/// tests' oracle, `limbs_divmod_bits`), which took 128 + 64·k steps for a
+/// quotient of a `k`-limb number and was 15 % of `expand` (benches/README).
 fn limbs_divmod(num: &[u64], den: &[u64], q: &mut [u64], rem: &mut [u64]) {
+    let n = limbs_bits(den).div_ceil(64);
+    let m = limbs_bits(num).div_ceil(64);
+    if n == 0 {
+        return;
+    }
+    let (Some(num), Some(den)) = (num.get(..m), den.get(..n)) else { return };
+    if m < n {
+        limbs_copy(rem, num);
+        return;
+    }
+    if n == 1 {
+        let d = den.first().copied().unwrap_or(1);
+        let mut r: u64 = 0;
+        let mut loops = crate::loop_counters::count!(REAL_DIVMOD);
+        for (qi, &x) in q.iter_mut().zip(num).rev() {
+            loops.tick();
+            // r < d, so the partial dividend is below d·2^64: the digit fits.
+            let cur = (u128::from(r) << 64) | u128::from(x);
+            *qi = low64(cur / u128::from(d));
+            r = low64(cur % u128::from(d));
+        }
+        if let Some(r0) = rem.first_mut() {
+            *r0 = r;
+        }
+        return;
+    }
+    // D1: normalise, so that the divisor's top limb has its top bit set.
+    let shift = den.get(n - 1).map_or(0, |x| x.leading_zeros());
+    let mut v = [0_u64; SCRATCH];
+    let mut u = [0_u64; SCRATCH + 1];
+    let (Some(v), Some(u)) = (v.get_mut(..n), u.get_mut(..=m)) else { return };
+    limbs_shl_into(den, shift, v);
+    limbs_shl_into(num, shift, u);
+    let v_top = u128::from(v.get(n - 1).copied().unwrap_or(1));
+    let v_next = u128::from(v.get(n - 2).copied().unwrap_or(0));
     let mut loops = crate::loop_counters::count!(REAL_DIVMOD);
-    for i in (0..limbs_bits(num)).rev() {
+    for j in (0..=m - n).rev() {
         loops.tick();
-        // rem < den ≤ 2^(64·den.len()) − 1, so the shift fits rem's extra limb.
-        limbs_shl1(rem);
-        if limbs_bit(num, i) {
-            if let Some(x) = rem.first_mut() {
-                *x |= 1;
+        let limb = |u: &[u64], i: usize| u128::from(u.get(i).copied().unwrap_or(0));
+        // D3: the estimate q̂ from the top two limbs, corrected by the next.
+        let top = (limb(u, j + n) << 64) | limb(u, j + n - 1);
+        let mut q_hat = top / v_top;
+        let mut r_hat = top % v_top;
+        let mut fixes = crate::loop_counters::count!(REAL_DIVMOD);
+        while q_hat > u128::from(u64::MAX) || q_hat * v_next > ((r_hat << 64) | limb(u, j + n - 2)) {
+            fixes.tick();
+            q_hat -= 1;
+            r_hat += v_top;
+            if r_hat > u128::from(u64::MAX) {
+                break;
             }
         }
-        if limbs_cmp(rem, den) != Ordering::Less {
-            limbs_sub(rem, den);
-            limbs_set_bit(q, i);
+        // D4: u[j..=j+n] −= q̂ · v.
+        let q_digit = low64(q_hat);
+        let mut borrow: u64 = 0;
+        let mut carry: u64 = 0;
+        let mut limbs = crate::loop_counters::count!(REAL_LIMBS);
+        for (i, &vi) in v.iter().enumerate() {
+            limbs.tick();
+            let p = u128::from(q_digit) * u128::from(vi) + u128::from(carry);
+            carry = high64(p);
+            if let Some(x) = u.get_mut(i + j) {
+                let (d1, b1) = x.overflowing_sub(low64(p));
+                let (d2, b2) = d1.overflowing_sub(borrow);
+                *x = d2;
+                borrow = u64::from(b1 || b2);
+            }
         }
+        let mut negative = false;
+        if let Some(x) = u.get_mut(j + n) {
+            let (d1, b1) = x.overflowing_sub(carry);
+            let (d2, b2) = d1.overflowing_sub(borrow);
+            *x = d2;
+            negative = b1 || b2;
+        }
+        // D5, D6: q̂ was one too large (rare): add v back.
+        let q_digit = if negative {
+            let mut c = false;
+            let mut limbs = crate::loop_counters::count!(REAL_LIMBS);
+            for (i, &vi) in v.iter().enumerate() {
+                limbs.tick();
+                if let Some(x) = u.get_mut(i + j) {
+                    let (s1, c1) = x.overflowing_add(vi);
+                    let (s2, c2) = s1.overflowing_add(u64::from(c));
+                    *x = s2;
+                    c = c1 || c2;
+                }
+            }
+            if let Some(x) = u.get_mut(j + n) {
+                *x = x.wrapping_add(u64::from(c));
+            }
+            #[cfg(test)]
+            ADD_BACKS.fetch_add(1, core::sync::atomic::Ordering::Relaxed);
+            q_digit.wrapping_sub(1)
+        } else {
+            q_digit
+        };
+        if let Some(x) = q.get_mut(j) {
+            *x = q_digit;
+        }
+    }
+    // D8: the remainder is u[..n], shifted back.
+    limbs_shr_into(u.get(..n).unwrap_or(&[]), shift, rem);
+}
+
+/// How many times step D6 (add back) ran: the tests check that they reach it.
+#[cfg(test)]
+static ADD_BACKS: core::sync::atomic::AtomicUsize = core::sync::atomic::AtomicUsize::new(0);
+
+/// Copies `src` into the start of `dst` (as far as `dst` goes).
+fn limbs_copy(dst: &mut [u64], src: &[u64]) {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
+    for (d, &s) in dst.iter_mut().zip(src) {
+        loops.tick();
+        *d = s;
+    }
+}
+
+/// `out = a << shift` for `shift < 64`; `out` has at least `a.len()` limbs
+/// (one more receives the bits shifted out of the top, when it is there).
+fn limbs_shl_into(a: &[u64], shift: u32, out: &mut [u64]) {
+    let mut carry: u64 = 0;
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
+    for (o, &x) in out.iter_mut().zip(a) {
+        loops.tick();
+        *o = (x << shift) | carry;
+        carry = if shift == 0 { 0 } else { x >> (64 - shift) };
+    }
+    if let Some(o) = out.get_mut(a.len()) {
+        *o = carry;
+    }
+}
+
+/// `out = a >> shift` for `shift < 64`, `a.len()` limbs into the start of
+/// `out`.
+fn limbs_shr_into(a: &[u64], shift: u32, out: &mut [u64]) {
+    let mut loops = crate::loop_counters::count!(REAL_LIMBS);
+    for (i, o) in out.iter_mut().enumerate().take(a.len()) {
+        loops.tick();
+        let x = a.get(i).copied().unwrap_or(0);
+        let above = a.get(i + 1).copied().unwrap_or(0);
+        *o = if shift == 0 { x } else { (x >> shift) | (above << (64 - shift)) };
     }
 }
 
@@ -1344,6 +1455,131 @@ mod tests {
     use super::*;
     use std::string::String;
     use std::vec::Vec;
+
+    /// `a <<= 1`; returns the bit shifted out.
+    fn limbs_shl1(a: &mut [u64]) -> bool {
+        let mut carry = false;
+        for x in a.iter_mut() {
+            let out = *x >> 63 == 1;
+            *x = (*x << 1) | u64::from(carry);
+            carry = out;
+        }
+        carry
+    }
+
+    /// Bit `i` of `a`.
+    fn limbs_bit(a: &[u64], i: usize) -> bool {
+        a.get(i / 64).is_some_and(|x| (x >> (i % 64)) & 1 == 1)
+    }
+
+    /// The bit-by-bit restoring division that `limbs_divmod` replaced: the
+    /// oracle of `divmod_matches_the_bitwise_division`.
+    fn limbs_divmod_bits(num: &[u64], den: &[u64], q: &mut [u64], rem: &mut [u64]) {
+        for i in (0..limbs_bits(num)).rev() {
+            limbs_shl1(rem);
+            if limbs_bit(num, i) {
+                rem[0] |= 1;
+            }
+            if limbs_cmp(rem, den) != Ordering::Less {
+                limbs_sub(rem, den);
+                q[i / 64] |= 1 << (i % 64);
+            }
+        }
+    }
+
+    /// A small deterministic generator (xorshift64*), so that the test
+    /// needs no dependency.
+    struct Rng(u64);
+
+    impl Rng {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 >> 12;
+            self.0 ^= self.0 << 25;
+            self.0 ^= self.0 >> 27;
+            self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+        }
+
+        /// A limb that is often an edge: 0, 1, all ones, a top bit alone.
+        fn limb(&mut self) -> u64 {
+            match self.next() % 8 {
+                0 => 0,
+                1 => u64::MAX,
+                2 => 1 << 63,
+                3 => 1,
+                4 => u64::MAX - 1,
+                _ => self.next(),
+            }
+        }
+    }
+
+    /// Knuth's algorithm D against the restoring division, on dividends and
+    /// divisors of every length up to the widest the engine divides (18
+    /// and 10 limbs), with limbs drawn to hit the rare add-back step (a
+    /// divisor of all-ones limbs and a top limb of 2^63) and the q̂ > 2^64
+    /// case (equal top limbs).
+    #[test]
+    fn divmod_matches_the_bitwise_division() {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        for case in 0..40_000 {
+            let m = 1 + (case % 18);
+            let n = 1 + (rng.next() as usize % 11);
+            let mut num = [0_u64; 18];
+            let mut den = [0_u64; 10];
+            for x in num.iter_mut().take(m) {
+                *x = rng.limb();
+            }
+            for x in den.iter_mut().take(n.min(10)) {
+                *x = rng.limb();
+            }
+            if case % 7 == 0 {
+                // Equal leading limbs: q̂ from the top two limbs exceeds 2^64 − 1.
+                let dn = limbs_bits(&den).div_ceil(64);
+                if dn > 0 && dn <= m {
+                    num[m - 1] = den[dn - 1];
+                }
+            }
+            if limbs_bits(&den) == 0 {
+                continue;
+            }
+            let (num, den) = (&num[..m], &den[..]);
+            let (mut q1, mut r1) = ([0_u64; 18], [0_u64; 11]);
+            let (mut q2, mut r2) = ([0_u64; 18], [0_u64; 11]);
+            limbs_divmod(num, den, &mut q1[..m], &mut r1);
+            limbs_divmod_bits(num, den, &mut q2[..m], &mut r2);
+            assert_eq!((q1, r1), (q2, r2), "{num:x?} / {den:x?}");
+            // q·den + r = num, and r < den, checked without the oracle.
+            let mut back = [0_u64; 29];
+            limbs_mul(&q1[..m], den, &mut back);
+            assert!(!limbs_add(&mut back, &r1));
+            assert_eq!(limbs_cmp(&back, num), Ordering::Equal);
+            assert_eq!(limbs_cmp(&r1, den), Ordering::Less);
+        }
+    }
+
+    /// The add-back step (D6), which random limbs almost never reach
+    /// (probability about 2/2^64): the cases of Hacker's Delight's `divmnu`
+    /// tests marked "add back required", with its 16-bit digits scaled to
+    /// 64 bits (0x8000 → 2^63, 0x7fff → 2^63 − 1, 0xffff → 2^64 − 1,
+    /// 0xfffe → 2^64 − 2), each checked against the restoring division and
+    /// counted.
+    #[test]
+    fn divmod_add_back() {
+        const H: u64 = 1 << 63;
+        const M: u64 = u64::MAX;
+        let cases: [(&[u64], &[u64]); 3] =
+            [(&[3, 0, H], &[1, 0, H >> 2]), (&[0, 0, H, H - 1], &[1, 0, H]), (&[0, M - 1, 0, H], &[M, 0, H])];
+        let before = ADD_BACKS.load(core::sync::atomic::Ordering::Relaxed);
+        for (num, den) in cases {
+            let (mut q1, mut r1) = ([0_u64; 4], [0_u64; 4]);
+            let (mut q2, mut r2) = ([0_u64; 4], [0_u64; 4]);
+            let m = num.len();
+            limbs_divmod(num, den, &mut q1[..m], &mut r1[..=den.len()]);
+            limbs_divmod_bits(num, den, &mut q2[..m], &mut r2[..=den.len()]);
+            assert_eq!((q1, r1), (q2, r2), "{num:x?} / {den:x?}");
+        }
+        let after = ADD_BACKS.load(core::sync::atomic::Ordering::Relaxed);
+        assert!(after > before, "no case reached the add-back step");
+    }
 
     type F = Fixed<FAST>;
     type S = Fixed<SLOW>;
