@@ -129,16 +129,13 @@ fn nc_g33_move<W: Write>(out: &mut W, m: &Move, u: Units) -> io::Result<()> {
     let Motion::Thread { lead, .. } = m.motion else {
         return nc_move(out, m, u, QUnit::Degrees { wrap: false });
     };
-    let mut line = Line::new();
-    let l = &mut line;
-    xz(out, l, b"G33 ", m.to, u)?;
+    xz(out, b"G33 ", m.to, u)?;
     let mut buf = [0; FIXED_BUF];
     let text = LeadText(lead).encode(&mut buf);
     // The lead's text is "F…": K carries the same value.
-    l.push(out, b" K")?;
-    l.push(out, &text[1..])?;
-    l.push(out, b"\n")?;
-    l.flush(out)
+    out.write_all(b" K")?;
+    out.write_all(&text[1..])?;
+    out.write_all(b"\n")
 }
 
 /// The NC blocks of one G92 block: a heading, a comment before each start
@@ -193,20 +190,17 @@ fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> 
             if current != Some(key) {
                 current = Some(key);
                 // `(rough 1 start 1 depth 1.800 cut 1.800)`
-                let mut line = Line::new();
-                let l = &mut line;
-                l.push(out, b"(")?;
-                l.push(out, kind_name(p.kind).as_bytes())?;
-                l.push(out, b" ")?;
-                l.number(out, u64::from(p.number))?;
-                l.push(out, b" start ")?;
-                l.number(out, u64::from(p.start))?;
-                l.push(out, b" depth ")?;
-                l.fixed(out, Fixed::new(p.depth, u))?;
-                l.push(out, b" cut ")?;
-                l.fixed(out, Fixed::new(p.cut, u))?;
-                l.push(out, b")\n")?;
-                l.flush(out)?;
+                out.write_all(b"(")?;
+                out.write_all(kind_name(p.kind).as_bytes())?;
+                out.write_all(b" ")?;
+                write_number(out, u64::from(p.number))?;
+                out.write_all(b" start ")?;
+                write_number(out, u64::from(p.start))?;
+                out.write_all(b" depth ")?;
+                write_fixed(out, Fixed::new(p.depth, u))?;
+                out.write_all(b" cut ")?;
+                write_fixed(out, Fixed::new(p.cut, u))?;
+                out.write_all(b")\n")?;
             }
         }
         nc_move(out, &m, u, q)?;
@@ -279,90 +273,55 @@ fn nc_groove_move<W: Write>(out: &mut W, m: &Move, from: Point, x_factor: i64, u
     }
 }
 
-/// One output line assembled on the stack and written at once (the hot
-/// path of the nc writer: one call to the writer per line, no formatting
-/// machinery). Longer text than it holds goes straight to the writer.
-struct Line {
-    buf: [u8; 256],
-    len: usize,
+/// Writes `v`'s text (the hot path of the nc writer: the number is encoded
+/// on the stack and handed to the buffered writer, whose short writes are
+/// copies into its buffer; no formatting machinery, no line assembled
+/// first).
+fn write_fixed<W: Write>(out: &mut W, v: Fixed) -> io::Result<()> {
+    let mut buf = [0; FIXED_BUF];
+    out.write_all(v.encode(&mut buf))
 }
 
-impl Line {
-    fn new() -> Line {
-        Line { buf: [0; 256], len: 0 }
-    }
-
-    /// Appends `s`, first flushing to `out` when it does not fit.
-    fn push<W: Write>(&mut self, out: &mut W, s: &[u8]) -> io::Result<()> {
-        let end = self.len + s.len();
-        match self.buf.get_mut(self.len..end) {
-            Some(dst) => {
-                dst.copy_from_slice(s);
-                self.len = end;
-                Ok(())
-            }
-            None => {
-                self.flush(out)?;
-                out.write_all(s)
-            }
-        }
-    }
-
-    fn fixed<W: Write>(&mut self, out: &mut W, v: Fixed) -> io::Result<()> {
-        let mut buf = [0; FIXED_BUF];
-        self.push(out, v.encode(&mut buf))
-    }
-
-    fn number<W: Write>(&mut self, out: &mut W, v: u64) -> io::Result<()> {
-        let mut buf = [0; FIXED_BUF];
-        self.push(out, crate::format::encode_fixed(&mut buf, false, v, 0))
-    }
-
-    /// Writes what is held, and empties it.
-    fn flush<W: Write>(&mut self, out: &mut W) -> io::Result<()> {
-        let held = self.buf.get(..self.len).unwrap_or_default();
-        self.len = 0;
-        out.write_all(held)
-    }
+/// Writes `v` in decimal.
+fn write_number<W: Write>(out: &mut W, v: u64) -> io::Result<()> {
+    let mut buf = [0; FIXED_BUF];
+    out.write_all(crate::format::encode_fixed(&mut buf, false, v, 0))
 }
 
 /// Appends `head`, then `X` and `Z` of `to`.
-fn xz<W: Write>(out: &mut W, line: &mut Line, head: &[u8], to: Point, u: Units) -> io::Result<()> {
-    line.push(out, head)?;
-    line.push(out, b"X")?;
-    line.fixed(out, Fixed::new(to.x, u))?;
-    line.push(out, b" Z")?;
-    line.fixed(out, Fixed::new(to.z, u))
+fn xz<W: Write>(out: &mut W, head: &[u8], to: Point, u: Units) -> io::Result<()> {
+    out.write_all(head)?;
+    out.write_all(b"X")?;
+    write_fixed(out, Fixed::new(to.x, u))?;
+    out.write_all(b" Z")?;
+    write_fixed(out, Fixed::new(to.z, u))
 }
 
 /// One move as an NC block.
 fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
-    let mut line = Line::new();
-    let l = &mut line;
     match m.motion {
-        Motion::Rapid => xz(out, l, b"G00 ", m.to, u)?,
-        Motion::Feed => xz(out, l, b"G01 ", m.to, u)?,
+        Motion::Rapid => xz(out, b"G00 ", m.to, u)?,
+        Motion::Feed => xz(out, b"G01 ", m.to, u)?,
         Motion::Thread { lead, start_angle, sync } => {
-            xz(out, l, b"G32 ", m.to, u)?;
+            xz(out, b"G32 ", m.to, u)?;
             let mut buf = [0; FIXED_BUF];
-            l.push(out, b" ")?;
-            l.push(out, LeadText(lead).encode(&mut buf))?;
+            out.write_all(b" ")?;
+            out.write_all(LeadText(lead).encode(&mut buf))?;
             // Q only where synchronisation starts: on a continuation block
             // the control ignores it (seed 002, Q rule 2).
             if sync && !start_angle.is_zero() {
-                l.push(out, b" Q")?;
-                l.push(out, q_word(start_angle, u, q).as_bytes())?;
+                out.write_all(b" Q")?;
+                out.write_all(q_word(start_angle, u, q).as_bytes())?;
             }
         }
         Motion::Arc { centre, clockwise } => {
             // Without the start point the centre is written absolute.
-            xz(out, l, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
-            xz(out, l, b" (centre ", centre, u)?;
-            l.push(out, b")")?;
+            xz(out, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
+            xz(out, b" (centre ", centre, u)?;
+            out.write_all(b")")?;
         }
     }
-    l.push(out, b"\n")?;
-    l.flush(out)
+    out.write_all(b"\n")
 }
 
 fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
