@@ -1641,11 +1641,29 @@ struct Grouper<I> {
     next: Option<(Step, u32)>,
     /// Steps taken so far.
     count: usize,
+    /// Groups given back once compared, emptied, to be filled again: a
+    /// group's two vectors are allocated once, not once per pass (most
+    /// of `check`'s allocations were these). At most [`SPARE_GROUPS`].
+    spare: Vec<Group>,
 }
+
+/// The most emptied groups a [`Grouper`] keeps for reuse: a window and
+/// the trace's groups read ahead of it, so memory stays that of one
+/// window.
+const SPARE_GROUPS: usize = 2 * WINDOW_GROUPS + 16;
 
 impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
     fn new(steps: I) -> Grouper<I> {
-        Grouper { steps, next: None, count: 0 }
+        Grouper { steps, next: None, count: 0, spare: Vec::new() }
+    }
+
+    /// Takes back a group that was compared, to fill it again.
+    fn recycle(&mut self, mut g: Group) {
+        if self.spare.len() < SPARE_GROUPS {
+            g.rapids.clear();
+            g.cuts.clear();
+            self.spare.push(g);
+        }
     }
 
     fn pull(&mut self) -> Option<Result<(Step, u32), String>> {
@@ -1657,7 +1675,7 @@ impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
     }
 
     fn group(&mut self) -> Option<Result<(Group, u32), String>> {
-        let mut g = Group { rapids: Vec::new(), cuts: Vec::new() };
+        let mut g = self.spare.pop().unwrap_or(Group { rapids: Vec::new(), cuts: Vec::new() });
         let (mut rapid_owner, mut cut_owner) = (None, None);
         loop {
             let (s, seg) = match self.pull() {
@@ -1702,9 +1720,11 @@ fn compare_streams(
     let mut report = Report::new(units, tolerance);
     let mut pending: VecDeque<Group> = VecDeque::new();
     let mut lookahead: Option<(Group, u32)> = None;
+    // Reused from window to window, as the groups are.
+    let mut window = Vec::new();
+    let mut regions: Vec<Region> = Vec::new();
     loop {
         // Our next window: the groups of one owner.
-        let mut window = Vec::new();
         let mut owner = None;
         loop {
             let next = match lookahead.take() {
@@ -1731,10 +1751,16 @@ fn compare_streams(
                 Some(r) => pending.push_back(r.map_err(StreamError::Theirs)?.0),
             }
         }
-        let regions: Vec<Region> = ours.steps.regions.iter().flatten().copied().collect();
+        regions.clear();
+        regions.extend(ours.steps.regions.iter().flatten().copied());
         let next = lookahead.as_ref().map(|(g, _)| g);
         let (divergences, taken) = align(&window, pending.make_contiguous(), tol, units, &regions, next);
-        pending.drain(..taken);
+        for g in pending.drain(..taken) {
+            theirs.recycle(g);
+        }
+        for g in window.drain(..) {
+            ours.recycle(g);
+        }
         report.add(divergences);
     }
     // What the trace has beyond our last move.
