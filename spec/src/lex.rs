@@ -147,6 +147,13 @@ impl<'a> Number<'a> {
         if frac.len() > d {
             return None;
         }
+        if int.len() + d <= 18 {
+            // At most 18 digits: an i64 holds them (the usual case: G
+            // codes, leads).
+            let v = int.iter().chain(frac).fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+            let v = i128::from(v * POW10[d - frac.len()]);
+            return Some(if self.negative { -v } else { v });
+        }
         let mut v: i128 = 0;
         for b in int.iter().copied().chain((0..d).map(|i| frac.get(i).copied().unwrap_or(b'0'))) {
             v = v.checked_mul(10)?.checked_add(i128::from(b - b'0'))?;
@@ -797,6 +804,11 @@ fn trim(mut bytes: &[u8]) -> &[u8] {
         }
         bytes = rest;
     }
+    // Both ends ASCII (and not white space, after the loops above): no
+    // other white space can stand at either end.
+    if bytes.first().is_none_or(u8::is_ascii) && bytes.last().is_none_or(u8::is_ascii) {
+        return bytes;
+    }
     while let Some(c) = decode(bytes).filter(|c| c.is_whitespace()) {
         bytes = &bytes[c.len_utf8()..];
     }
@@ -854,4 +866,29 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         });
     }
     Ok((word, pos))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::trim;
+
+    /// `trim` against `str::trim` (the definition it follows: white space
+    /// as `char::is_whitespace`), on every pairing of a start and an end
+    /// drawn from ASCII and other white space and text, ASCII or not.
+    #[test]
+    fn trim_is_str_trim() {
+        let ends = ["", " ", "\t", "\r", "\u{3000}", "\u{a0}", " \u{3000} ", "\u{2003}\t"];
+        let middles = ["", "G01 X1", "（注）", "\u{3000}", "X1\u{3000}Z2", "é", "a"];
+        for start in ends {
+            for middle in middles {
+                for end in ends {
+                    let text = format!("{start}{middle}{end}");
+                    assert_eq!(trim(text.as_bytes()), text.trim().as_bytes(), "{text:?}");
+                }
+            }
+        }
+        // Bytes that are not UTF-8 stay (a GBK comment, reading R-ENCODING).
+        assert_eq!(trim(b" (\xd6\xd0) "), b"(\xd6\xd0)");
+        assert_eq!(trim(b"\xd6\xd0"), b"\xd6\xd0");
+    }
 }

@@ -92,6 +92,10 @@ fn worked_examples() {
     // (19 are left to the exact path, which gives the same value).
     assert_eq!(word("X123456789012345.678").number().scaled(3), Some(Some(123_456_789_012_345_678)));
     assert_eq!(word("X1234567890123456.789").number().scaled(3), None);
+    // exact's i64 shortcut has the same edge: 12 digits at scale 6 are 18
+    // (the shortcut), 13 are 19 (the i128 loop); both exact.
+    assert_eq!(word("F999999999999").number().exact(6), Some(999_999_999_999_000_000));
+    assert_eq!(word("F-9999999999999.5").number().exact(6), Some(-9_999_999_999_999_500_000));
     // Longer than 20 characters: decided through the exact value, and zero
     // written long is still not positive.
     assert!(!word("S0.000000000000000000000000").number().is_positive());
