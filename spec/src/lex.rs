@@ -123,8 +123,36 @@ impl<'a> Number<'a> {
     /// then decides.
     #[must_use]
     pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
-        let (int, frac) = self.significant();
         let d = decimals as usize;
+        let bytes = self.digits.as_bytes();
+        if bytes.len() <= 18 && d <= 18 {
+            // The usual word (`X64.400`) in one pass: at most 18 digits,
+            // so no overflow; the value is `v / 10^frac`.
+            let (mut v, mut frac, mut after) = (0_i64, 0_usize, false);
+            for &b in bytes {
+                if b == b'.' {
+                    after = true;
+                } else {
+                    v = v * 10 + i64::from(b - b'0');
+                    frac += usize::from(after);
+                }
+            }
+            let int = bytes.len() - frac - usize::from(after);
+            // `int + d ≤ 18` digits: v·10^(d − frac) fits (as below, but
+            // counting leading zeros: a longer number takes the way below).
+            if int + d <= 18 {
+                let v = if frac <= d {
+                    v * POW10[d - frac]
+                } else if v % POW10[frac - d] == 0 {
+                    // Finer digits that are all zeros (`1.50000`, d = 3).
+                    v / POW10[frac - d]
+                } else {
+                    return Some(None);
+                };
+                return Some(Some(if self.negative { -v } else { v }));
+            }
+        }
+        let (int, frac) = self.significant();
         if frac.len() > d {
             return Some(None);
         }

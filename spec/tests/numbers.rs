@@ -92,6 +92,13 @@ fn worked_examples() {
     // (19 are left to the exact path, which gives the same value).
     assert_eq!(word("X123456789012345.678").number().scaled(3), Some(Some(123_456_789_012_345_678)));
     assert_eq!(word("X1234567890123456.789").number().scaled(3), None);
+    // The one-pass shortcut of scaled: finer digits that are zeros, a
+    // point first or last, leading zeros that push it to the long way.
+    assert_eq!(word("X1.50000").number().scaled(3), Some(Some(1_500)));
+    assert_eq!(word("X1.50001").number().scaled(3), Some(None));
+    assert_eq!(word("X.5").number().scaled(3), Some(Some(500)));
+    assert_eq!(word("X-5.").number().scaled(3), Some(Some(-5_000)));
+    assert_eq!(word("X000000000000001.5").number().scaled(3), Some(Some(1_500)));
     // exact's i64 shortcut has the same edge: 12 digits at scale 6 are 18
     // (the shortcut), 13 are 19 (the i128 loop); both exact.
     assert_eq!(word("F999999999999").number().exact(6), Some(999_999_999_999_000_000));
