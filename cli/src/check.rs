@@ -847,26 +847,75 @@ fn trace_line<'b>(
     Some(Ok(if line == 1 { text.strip_prefix('\u{feff}').unwrap_or(text) } else { text }))
 }
 
-/// The vendor's toolpath from an expanded program, read a line at a time.
+/// The vendor's toolpath from an expanded program, read in pieces of whole
+/// lines (as the program is, `job::next_piece`), each checked to be UTF-8
+/// at once and lexed a line at a time.
 struct NcTrace<'t, 'm> {
     source: Box<dyn BufRead + 't>,
+    /// The current piece (`..piece`) and what was read beyond it.
     buf: Vec<u8>,
+    piece: usize,
+    /// Where the next line starts in the piece.
+    at: usize,
+    eof: bool,
+    /// Where the piece's first byte that is not UTF-8 is, if it has one:
+    /// the line that holds it is an error when it is reached (not before:
+    /// the lines above it are read as they would be without it).
+    bad: Option<usize>,
     line: usize,
     tracker: Tracker<'m>,
     /// The steps of the current line (a line may hold several blocks).
     ready: VecDeque<Step>,
 }
 
-impl NcTrace<'_, '_> {
+impl<'t, 'm> NcTrace<'t, 'm> {
+    fn new(source: Box<dyn BufRead + 't>, tracker: Tracker<'m>) -> NcTrace<'t, 'm> {
+        NcTrace {
+            source,
+            buf: Vec::new(),
+            piece: 0,
+            at: 0,
+            eof: false,
+            bad: None,
+            line: 0,
+            tracker,
+            ready: VecDeque::new(),
+        }
+    }
+
     /// Reads lines until one moves; false at the end.
     fn fill(&mut self) -> Result<bool, String> {
         while self.ready.is_empty() {
-            self.line += 1;
-            let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
-                None => return Ok(false),
-                Some(t) => t?,
+            if self.at >= self.piece {
+                match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
+                {
+                    Ok(false) => return Ok(false),
+                    Ok(true) => {}
+                    Err(e) => return Err(format!("line {}: {e}", self.line + 1)),
+                }
+                self.at = 0;
+                let piece = self.buf.get(..self.piece).unwrap_or_default();
+                self.bad = std::str::from_utf8(piece).err().map(|e| e.valid_up_to());
+            }
+            let piece = self.buf.get(..self.piece).unwrap_or_default();
+            let rest = piece.get(self.at..).unwrap_or_default();
+            let (end, next) = match rest.iter().position(|&b| b == b'\n') {
+                Some(i) => (self.at + i, self.at + i + 1),
+                None => (piece.len(), piece.len()),
             };
-            for b in Lexer::at_line(text.as_bytes(), self.line) {
+            self.line += 1;
+            if let Some(bad) = self.bad.filter(|&b| b < end) {
+                // A line end is ASCII: the line's own bytes decide, as
+                // `from_utf8` of the line alone would.
+                return Err(format!("line {}, byte {}: not UTF-8 text", self.line, bad - self.at + 1));
+            }
+            let mut text = piece.get(self.at..end).unwrap_or_default();
+            self.at = next;
+            // A byte-order mark may start the first line.
+            if self.line == 1 {
+                text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
+            }
+            for b in Lexer::at_line(text, self.line) {
                 let b = b.map_err(|e| e.to_string())?;
                 if let Some(s) = self.tracker.block(&b)? {
                     self.ready.push_back(s);
@@ -1549,13 +1598,7 @@ fn trace_steps<'t, 'm: 't>(
     } else if format == TraceFormat::Csv {
         Box::new(CsvTrace::new(source, machine, units)?)
     } else {
-        Box::new(NcTrace {
-            source,
-            buf: Vec::new(),
-            line: 0,
-            tracker: Tracker::new(machine, units, true),
-            ready: VecDeque::new(),
-        })
+        Box::new(NcTrace::new(source, Tracker::new(machine, units, true)))
     })
 }
 

@@ -397,9 +397,11 @@ enum Input<'j> {
 pub const CHUNK: usize = 1 << 16;
 
 /// The next piece of whole lines into `buf`, after dropping the piece
-/// before it: `Ok(false)` when the file has no more.
-fn next_piece(
-    file: &mut File,
+/// before it: `Ok(false)` when the source has no more. A piece is at
+/// least [`CHUNK`] bytes read (fewer at the end), cut after its last line
+/// end, or one whole line when a line is longer.
+pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
+    file: &mut R,
     buf: &mut Vec<u8>,
     piece: &mut usize,
     eof: &mut bool,

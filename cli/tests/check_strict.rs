@@ -354,3 +354,28 @@ fn a_trace_that_is_not_utf8_names_line_and_byte() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 2, byte 7: not UTF-8 text"), "{err}");
 }
+
+/// The trace is read in pieces of whole lines (64 KiB): a byte that is not
+/// UTF-8 far into the file, after a line longer than a piece, is still
+/// named by its own line and byte, and the lines before it are read (a
+/// byte-order mark at the start of line 1 is skipped).
+#[test]
+fn a_trace_read_in_pieces_names_the_line_and_byte_of_a_bad_byte() {
+    let p = tmp("pieces.nc", "");
+    let mut text = b"\xEF\xBB\xBFG00 X80 Z10\n".to_vec();
+    // Line 2: a comment of 100 000 bytes (longer than a piece).
+    text.extend_from_slice(b"(");
+    text.extend(std::iter::repeat_n(b'c', 100_000));
+    text.extend_from_slice(b")\n");
+    // Lines 3 to 20 002: 20 000 lines of 12 bytes (about 240 KB).
+    for _ in 0..20_000 {
+        text.extend_from_slice(b"G00 X80 Z10\n");
+    }
+    // Line 20 003: the bad byte is the 9th (after "G00 X80 ").
+    text.extend_from_slice(b"G00 X80 \xffZ10\n");
+    std::fs::write(&p, &text).expect("write");
+    let out = cycleref(&["check", "--trace", p.to_str().expect("utf-8"), &example("gsk988-m68x6.nc")]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 20003, byte 9: not UTF-8 text"), "{err}");
+}
