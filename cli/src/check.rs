@@ -1609,14 +1609,30 @@ fn trace_steps<'t, 'm: 't>(
 ///
 /// The program's first error, or the trace's, with its line.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
-    let units = job.validate()?.units;
     if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
+        job.validate()?;
         return Err("the program and the trace cannot both come from standard input".into());
     }
-    compare_file(job, trace, units, tolerance)
+    let units = job.units()?;
+    compare_file(job, trace, units, tolerance).map_err(|e| program_error_first(job, e))
 }
 
-/// What [`run`] does after the first phase, which gave `units`.
+/// `check` in one phase (reading R-STREAM): its report is written only
+/// after the comparison, so no validation phase is needed for "nothing
+/// half-written". The comparison reads the whole program in order and
+/// expands every cycle as the validation would, so it meets the program's
+/// first error exactly where the validation does; an error of the trace
+/// (or of opening it) may come first, and then the validation is run after
+/// all, so that a program error still wins and every message is the one a
+/// validation phase first would have given.
+fn program_error_first(job: &Job, e: String) -> String {
+    match job.validate() {
+        Err(program) => program.into(),
+        Ok(_) => e,
+    }
+}
+
+/// What [`run`] does once it has the program's `units`.
 fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result<Report, String> {
     let (name, source) = open_trace(trace)?;
     compare_streams(job, source, format_of(trace), units, tolerance).map_err(|e| match e {
@@ -1649,10 +1665,12 @@ pub fn check_bytes_as(
     format: TraceFormat,
     tolerance: u64,
 ) -> Result<Report, String> {
-    let units = job.validate()?.units;
-    compare_streams(job, Box::new(bytes), format, units, tolerance).map_err(|e| match e {
-        StreamError::Ours(e) | StreamError::Theirs(e) => e,
-    })
+    let units = job.units()?;
+    compare_streams(job, Box::new(bytes), format, units, tolerance)
+        .map_err(|e| match e {
+            StreamError::Ours(e) | StreamError::Theirs(e) => e,
+        })
+        .map_err(|e| program_error_first(job, e))
 }
 
 /// Whose toolpath an error comes from.

@@ -16,7 +16,7 @@ use std::io::{BufReader, IsTerminal as _, Read as _};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use cycleref::{IncrementSystem, InputUnit, XMode};
+use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary, Validation};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::Item;
@@ -206,6 +206,30 @@ impl Job {
     /// The first error in program order, named with the file.
     pub fn validate(&self) -> Result<Summary, Failure> {
         self.validate_run().map_err(|(failure, _)| failure)
+    }
+
+    /// The units the program's lengths are read in, found by reading only
+    /// as far as they are settled (reading R-UNITS: G20/G21 only before
+    /// the first motion), usually a few lines: in a valid program they are
+    /// the [`Summary::units`] that [`Job::validate`] gives, without its
+    /// reading of the whole program.
+    ///
+    /// # Errors
+    ///
+    /// When the program cannot be read as far, the first error of
+    /// [`Job::validate`] (which is then run to find it).
+    pub fn units(&self) -> Result<Units, Failure> {
+        let Ok(mut items) = Items::new(&self.text, &self.machine) else {
+            return self.validate().map(|s| s.units);
+        };
+        while !items.reader.units_settled() {
+            match items.next_with(|_| ()) {
+                None => break,
+                Some(Ok(())) => {}
+                Some(Err(_)) => return self.validate().map(|s| s.units),
+            }
+        }
+        Ok(items.reader.units())
     }
 
     /// The first phase, as [`Job::validate`], with the program's error

@@ -379,3 +379,58 @@ fn a_trace_read_in_pieces_names_the_line_and_byte_of_a_bad_byte() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 20003, byte 9: not UTF-8 text"), "{err}");
 }
+
+/// The M68x6 program (gsk988-m68x6.nc) with a second G76 appended whose
+/// start X62 lies inside its thread (crest at 60.64 + 2·3.68 = 68.00 >
+/// 62): the alarm of line 10, its last line.
+const M68_THEN_INSIDE: &str = "O0013;\nG50 X100 Z50 M3 S300;\nG00 X80 Z10;\n\
+G76 P020560 Q0.150 R0.1;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\nG00 X100 Z50;\n\
+G00 X62 Z10;\nG76 P020560 Q0.150 R0.1;\nG00 X62 Z10;\nG76 X60.64 Z-62 P3.680 Q1.800 F6;\nM30;\n";
+
+/// `check` runs in one phase (its report is written at the end): the
+/// program's last cycle, invalid, is still its error, with exit 2 and
+/// nothing on stdout, even when the trace agrees with everything before
+/// it, and even when the trace has an error of its own first (the program
+/// is then read to its end before the trace's error is given).
+#[test]
+fn a_program_error_at_the_end_wins_in_the_one_phase_check() {
+    let program = tmp("m68-then-inside.nc", M68_THEN_INSIDE);
+    let program = program.to_str().expect("utf-8");
+    for (name, trace) in [("agrees.nc", good_m68()), ("bad-first-line.nc", "G00 X\u{1}80 Z10\n".to_string())]
+    {
+        let t = tmp(name, &trace);
+        let out = cycleref(&["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), program]);
+        assert_eq!(out.status.code(), Some(2), "{name}");
+        assert!(out.stdout.is_empty(), "{name}: {}", String::from_utf8_lossy(&out.stdout));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("line 10, G76: the start point A lies inside the thread"), "{name}: {err}");
+    }
+}
+
+/// The units of a trace are those the program settles before its first
+/// motion (R-UNITS), found without reading the whole program: an inch
+/// program (G20 on line 2, G50 on line 3) agrees with its own expansion,
+/// whose 4-decimal inch values a metric reading would refuse (X2.4614 is
+/// finer than 0.001 mm).
+#[test]
+fn an_inch_program_is_checked_in_inches() {
+    let text = "O0001;\nG20;\nG50 X4 Z2 M3 S300;\nG00 X3 Z0.4;\nG76 P020560 Q0.006 R0.004;\n\
+                G76 X2.3874 Z-2.44 P0.0724 Q0.0354 F0.125;\nG00 X4 Z2;\nM30;\n";
+    let program = tmp("inch.nc", text);
+    let out = cycleref(&["expand", "--profile", "gsk988", program.to_str().expect("utf-8")]);
+    assert!(out.status.success());
+    let trace = String::from_utf8(out.stdout).expect("utf-8");
+    assert!(trace.contains("G32 X2.4614 Z-2.3775 F0.125"), "{trace}");
+    let t = tmp("inch-trace.nc", &trace);
+    let out = cycleref(&[
+        "check",
+        "--profile",
+        "gsk988",
+        "--trace",
+        t.to_str().expect("utf-8"),
+        program.to_str().expect("utf-8"),
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.starts_with("AGREE: 32 moves of ours, 32 of the trace"), "{text}");
+}

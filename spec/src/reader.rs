@@ -530,6 +530,15 @@ impl<'m> LineReader<'m> {
         self.state.units
     }
 
+    /// True once the units can no longer change (reading R-UNITS: G20/G21
+    /// only before the first motion or known position): in a valid
+    /// program, [`units`](LineReader::units) are then those the program
+    /// ends with.
+    #[must_use]
+    pub fn units_settled(&self) -> bool {
+        self.state.units_settled()
+    }
+
     /// The next item of `piece`, or `None` when the piece has no more (the
     /// next call starts the next piece). After an error the reader yields
     /// nothing more.
@@ -991,11 +1000,17 @@ impl State<'_> {
         Ok(Item::Source(block))
     }
 
+    /// True once the unit can no longer change (reading R-UNITS): after
+    /// the first motion, or once a position is known (G50).
+    fn units_settled(&self) -> bool {
+        self.moved || self.x.is_some() || self.z.is_some()
+    }
+
     /// G20/G21 (reading R-UNITS): the unit may change only before the
     /// first motion.
     fn set_unit(&mut self, block: &Block<'_>, w: &Word<'_>, unit: InputUnit) -> Result<(), ProgramError> {
         if unit != self.units.unit {
-            if self.moved || self.x.is_some() || self.z.is_some() {
+            if self.units_settled() {
                 return Err(err(block, Some(w), ErrorKind::UnitChangeAfterMotion));
             }
             self.units.unit = unit;
