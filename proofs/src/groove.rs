@@ -74,6 +74,24 @@ impl GrooveDomain {
         units: (0, 7),
     };
 
+    /// Wider right-angle grooves, for sampling (`proofs/tests/g75_exact.rs`,
+    /// `proofs/tests/g75_harnesses.rs`): up to 400 increments deep and wide,
+    /// up to 120-increment layers, tool widths to 80, corners to 40 of every
+    /// kind, every unit code, sign and J.
+    pub const SQUARE_WIDE: GrooveDomain = GrooveDomain {
+        depth: (1, 400),
+        width: (0, 400),
+        peck: (1, 60),
+        step: (1, 60),
+        retract: (0, 20),
+        layer: (0, 120),
+        allowance_x: (0, 40),
+        allowance_z: (0, 40),
+        tool_width: (-1, 80),
+        corner: (0, 40),
+        ..GrooveDomain::SQUARE
+    };
+
     /// The documented ranges (the manual's range tables), for sampling and
     /// for the no-panic proof.
     pub const FULL: GrooveDomain = GrooveDomain {

@@ -34,27 +34,10 @@ fn equivalence_over_the_kani_window() {
     assert_eq!(r.runs, 884_736);
 }
 
-/// Wider right-angle grooves: up to 400 increments deep and wide, up to
-/// 120-increment layers, tool widths to 80, corners to 40 of every kind,
-/// every unit code, sign and J.
-const SQUARE_WIDE: GrooveDomain = GrooveDomain {
-    depth: (1, 400),
-    width: (0, 400),
-    peck: (1, 60),
-    step: (1, 60),
-    retract: (0, 20),
-    layer: (0, 120),
-    allowance_x: (0, 40),
-    allowance_z: (0, 40),
-    tool_width: (-1, 80),
-    corner: (0, 40),
-    ..GrooveDomain::SQUARE
-};
-
 #[test]
 fn equivalence_over_wider_square_grooves() {
     check("groove equivalence (square, sampled)", Mode::Sample { runs: 4_000, seed: 0x6737_3565 }, || {
-        groove::groove_equivalence(&SQUARE_WIDE, &GrooveFixedPoint);
+        groove::groove_equivalence(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint);
     });
 }
 

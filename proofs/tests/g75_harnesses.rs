@@ -32,21 +32,6 @@ const SMALL: GrooveDomain = GrooveDomain {
     ..GROOVE_WINDOW
 };
 
-/// Wider, for sampling: right-angle grooves up to 400 increments.
-const SQUARE_WIDE: GrooveDomain = GrooveDomain {
-    depth: (1, 400),
-    width: (0, 400),
-    peck: (1, 60),
-    step: (1, 60),
-    retract: (0, 20),
-    layer: (0, 120),
-    allowance_x: (0, 40),
-    allowance_z: (0, 40),
-    tool_width: (-1, 80),
-    corner: (0, 40),
-    ..GrooveDomain::SQUARE
-};
-
 /// Every angle, small enough to expand quickly.
 const ANGLES: GrooveDomain = GrooveDomain {
     depth: (1, 4_000),
@@ -79,7 +64,7 @@ const PECKS: GrooveDomain =
 fn pecks_and_steps() {
     check("pecks (exhaustive)", small(200_000), || groove::groove_pecks_and_steps(&PECKS, &GrooveFixedPoint));
     check("pecks (square, sampled)", SAMPLE, || {
-        groove::groove_pecks_and_steps(&SQUARE_WIDE, &GrooveFixedPoint)
+        groove::groove_pecks_and_steps(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
     });
     check("pecks (angles, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&ANGLES, &GrooveFixedPoint));
 }
@@ -105,7 +90,9 @@ const REGION: GrooveDomain = GrooveDomain {
 #[test]
 fn inside_the_roughing_region() {
     check("inside (exhaustive)", small(700_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
-    check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("inside (sampled)", SAMPLE, || {
+        groove::groove_inside(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
+    });
 }
 
 /// Grooving tools (w ≥ 1), layers, every corner size 0..=3, allowances:
@@ -125,7 +112,7 @@ const MATERIAL_WIDE: GrooveDomain = GrooveDomain {
     allowance_z: (0, 20),
     tool_width: (1, 30),
     corner: (0, 25),
-    ..SQUARE_WIDE
+    ..GrooveDomain::SQUARE_WIDE
 };
 
 #[test]
@@ -155,7 +142,9 @@ fn finishing_contour_is_the_profile() {
     check("profile (exhaustive)", small(800_000), || {
         groove::groove_finish_is_profile(&PROFILE, &GrooveFixedPoint);
     });
-    check("profile (sampled)", SAMPLE, || groove::groove_finish_is_profile(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("profile (sampled)", SAMPLE, || {
+        groove::groove_finish_is_profile(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
+    });
 }
 
 /// Every documented input, every layer count (the Kani window of
