@@ -16,14 +16,8 @@
 
 use cycleref_proofs::g75_exact::{self, Slip};
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 use cycleref_proofs::windows::GROOVE_EQUIVALENCE_WINDOW;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// The Kani window, every groove.
 #[test]

@@ -7,14 +7,8 @@
 //! ```
 
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{check_and_print as check, Mode};
 use cycleref_proofs::windows::GROOVE_WINDOW;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// Small right-angle grooves: the Kani window ([`GROOVE_WINDOW`]: with or
 /// without layers of 3, allowances 0..=1, pointed tool or widths 1..=2,
