@@ -623,6 +623,8 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &(impl GrooveEngine + 
     let w = c.width_of_tool();
     let [r1, r2, r3, r4] = c.corners;
     // Expected cutting moves of the contour (docs/G75.md §3 with a = b = 90°).
+    // Twin: `impl/src/engine/g75/tests.rs`, `square_groove_sweep` (the
+    // engine's own test of the same moves, which cannot use this crate).
     let mut expected: std::vec::Vec<LocalMove> = std::vec::Vec::new();
     let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
     if r1.size > 0 {

@@ -1039,6 +1039,9 @@ fn square_groove_sweep() {
         }
         if c.path.finishes() {
             // The contour's cutting moves (docs/G75.md §3 with a = b = 90°).
+            // Twin: `proofs/src/groove.rs`, `groove_finish_is_profile` (the
+            // same expected moves; the proofs crate depends on this one, so
+            // its oracle cannot serve here).
             let [r1, r2, r3, r4] = c.corners;
             let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
             let mut expected: Vec<ContourMove> = Vec::new();
