@@ -11,8 +11,6 @@ use cycleref_proofs::harness::{self, Domain, FixedPoint};
 use cycleref_proofs::shim::{check_and_print as check, Mode};
 use cycleref_proofs::windows;
 
-/// Runs a harness and prints its run count (`--nocapture` shows them).
-
 /// Exhaustive over every combination of the domain's choices.
 fn exhaustive(max_runs: u64) -> Mode {
     Mode::Exhaustive { max_runs }
