@@ -4,28 +4,23 @@
 //! rapid split into X and Z, comments, N numbers, number formatting) is
 //! ignored; CSV traces work; errors exit with 2.
 
+mod common;
+
+use common::run;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn cycleref(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cycleref")).args(args).output().expect("runs")
-}
-
+/// A scratch file of this binary's (`common::tmp` under `cycleref-check-…`).
 fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cycleref-check-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    common::tmp("check", name, text)
 }
 
 /// Our own expansion of the M68x6 example: the trace a correct vendor makes.
 fn good_trace() -> String {
-    let out = cycleref(&["expand", "--profile", "gsk988", &example("gsk988-m68x6.nc")]);
+    let out = run(&["expand", "--profile", "gsk988", &example("gsk988-m68x6.nc")], None);
     assert!(out.status.success());
     String::from_utf8(out.stdout).unwrap()
 }
@@ -36,7 +31,7 @@ fn check(trace: &str, name: &str, extra: &[&str]) -> (i32, String) {
     args.extend_from_slice(extra);
     let m68 = example("gsk988-m68x6.nc");
     args.push(&m68);
-    let out = cycleref(&args);
+    let out = run(&args, None);
     (
         out.status.code().unwrap(),
         String::from_utf8(out.stdout).unwrap() + &String::from_utf8_lossy(&out.stderr),
@@ -152,7 +147,7 @@ fn csv_trace_and_json_report() {
 
 #[test]
 fn errors_exit_2() {
-    let out = cycleref(&["check", "--trace", "/nonexistent/trace.nc", &example("gsk988-m68x6.nc")]);
+    let out = run(&["check", "--trace", "/nonexistent/trace.nc", &example("gsk988-m68x6.nc")], None);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     // A trace with a canned cycle is not a plain toolpath.
@@ -165,16 +160,19 @@ fn errors_exit_2() {
 fn plot_overlays_a_trace() {
     let t = tmp("overlay.nc", &good_trace().replace("X61.764", "X61.900"));
     let svg = std::env::temp_dir().join(format!("cycleref-overlay-{}.svg", std::process::id()));
-    let out = cycleref(&[
-        "plot",
-        "--profile",
-        "gsk988",
-        &example("gsk988-m68x6.nc"),
-        "--trace",
-        t.to_str().unwrap(),
-        "-o",
-        svg.to_str().unwrap(),
-    ]);
+    let out = run(
+        &[
+            "plot",
+            "--profile",
+            "gsk988",
+            &example("gsk988-m68x6.nc"),
+            "--trace",
+            t.to_str().unwrap(),
+            "-o",
+            svg.to_str().unwrap(),
+        ],
+        None,
+    );
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("trace: ") && text.contains("#d6278a") && text.contains("clip-path"));
@@ -186,8 +184,8 @@ fn the_motion_mode_after_a_cycle_is_the_one_before_it() {
     // the program and in our expansion (which restores G01).
     let program = "M03 S500\nG01 X80 Z10 F0.2\nG76 P010060 Q0.1 R0\nG76 X60 Z-30 P2 Q1 F6\nX90 Z20\n";
     let prog = tmp("modal.nc", program);
-    let out = cycleref(&["expand", prog.to_str().unwrap()]);
+    let out = run(&["expand", prog.to_str().unwrap()], None);
     let trace = tmp("modal-trace.nc", &String::from_utf8(out.stdout).unwrap());
-    let out = cycleref(&["check", "--trace", trace.to_str().unwrap(), prog.to_str().unwrap()]);
+    let out = run(&["check", "--trace", trace.to_str().unwrap(), prog.to_str().unwrap()], None);
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
 }

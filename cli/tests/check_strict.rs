@@ -21,27 +21,22 @@
 //! * `examples/gsk980-g32-runout.nc`: the second G32 run synchronises at
 //!   Q180000 (program line 9, trace line 10).
 
+mod common;
+
+use common::run;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn cycleref(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cycleref")).args(args).output().expect("runs")
-}
-
+/// A scratch file of this binary's (`common::tmp` under `cycleref-check-strict-…`).
 fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cycleref-check-strict-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write");
-    p
+    common::tmp("check-strict", name, text)
 }
 
 fn expand(profile: &str, file: &str) -> String {
-    let out = cycleref(&["expand", "--profile", profile, &example(file)]);
+    let out = run(&["expand", "--profile", profile, &example(file)], None);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     String::from_utf8(out.stdout).expect("utf-8")
 }
@@ -54,7 +49,7 @@ fn check(profile: &str, file: &str, trace: &str, name: &str, extra: &[&str]) -> 
     let mut args = vec!["check", "--profile", profile, "--trace", p.to_str().expect("utf-8")];
     args.extend_from_slice(extra);
     args.push(&program);
-    let out = cycleref(&args);
+    let out = run(&args, None);
     (
         out.status.code().expect("exit code"),
         String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr),
@@ -349,7 +344,7 @@ fn empty_traces_are_one_error_whatever_their_format() {
 fn a_trace_that_is_not_utf8_names_line_and_byte() {
     let p = tmp("bytes.nc", "");
     std::fs::write(&p, b"G00 X80 Z10\nG00 X6\xff4 Z8\n").expect("write");
-    let out = cycleref(&["check", "--trace", p.to_str().expect("utf-8"), &example("gsk988-m68x6.nc")]);
+    let out = run(&["check", "--trace", p.to_str().expect("utf-8"), &example("gsk988-m68x6.nc")], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 2, byte 7: not UTF-8 text"), "{err}");

@@ -15,8 +15,10 @@
 //! round r4 to T4c − w (5000, 5400) about C4 − w (4700, 5400), flank B to
 //! P3 − w (5000, 0).
 
+mod common;
+
+use common::{run, stdout};
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 const EXAMPLES: &[(&str, &[&str])] = &[
     ("gsk980-g75-seed.nc", &["--profile", "gsk980", "--increment", "is-c"]),
@@ -28,16 +30,6 @@ fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn cycleref(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cycleref")).args(args).output().expect("runs")
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = cycleref(args);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
 fn square(command: &str, extra: &[&str]) -> String {
     let file = example("gsk980-g75-square.nc");
     let mut args = vec![command, "--profile", "gsk980"];
@@ -46,12 +38,9 @@ fn square(command: &str, extra: &[&str]) -> String {
     stdout(&args)
 }
 
+/// A scratch file of this binary's (`common::tmp` under `cycleref-g75-…`).
 fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cycleref-g75-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write");
-    p
+    common::tmp("g75", name, text)
 }
 
 #[test]
@@ -181,7 +170,7 @@ fn passes_lists_layers_and_plunges() {
 fn plot_draws_the_groove_and_the_tool() {
     let out = tmp("square.svg", "");
     let file = example("gsk980-g75-square.nc");
-    let o = cycleref(&["plot", "--profile", "gsk980", &file, "-o", out.to_str().expect("utf-8")]);
+    let o = run(&["plot", "--profile", "gsk980", &file, "-o", out.to_str().expect("utf-8")], None);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let svg = std::fs::read_to_string(&out).expect("svg");
     assert!(svg.starts_with("<svg") || svg.contains("<svg"), "not an SVG");
@@ -198,7 +187,7 @@ fn check_names_a_wrong_plunge() {
     let file = example("gsk980-g75-square.nc");
     let run = |trace: &str, name: &str| {
         let p = tmp(name, trace);
-        let o = cycleref(&["check", "--profile", "gsk980", "--trace", p.to_str().expect("utf-8"), &file]);
+        let o = run(&["check", "--profile", "gsk980", "--trace", p.to_str().expect("utf-8"), &file], None);
         (o.status.code().expect("exit code"), String::from_utf8_lossy(&o.stdout).into_owned())
     };
     let (code, text) = run(&ours, "same.nc");

@@ -7,24 +7,15 @@
 
 mod common;
 
-use common::run;
+use common::{jsonl_cycles, run, stdout};
 
 fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn stdout(args: &[&str]) -> String {
-    let out = run(args, None);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
+/// A scratch file of this binary's (`common::tmp` under `cycleref-g78-…`).
 fn tmp(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cycleref-g78-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp dir");
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write");
-    p
+    common::tmp("g78", name, text)
 }
 
 /// One pass: the comment, approach, cut to Z-58 (K2), run-out J1.5 (X + 3)
@@ -121,19 +112,10 @@ fn plot_titles_the_g78() {
 /// summary: 4 rough and 2 finishing passes of 5 moves = 30 moves.
 #[test]
 fn jsonl_carries_the_g78() {
-    let file = example("gsk980-g78.nc");
-    let json = stdout(&["expand", "--profile", "gsk980", "--format", "json", &file]);
-    let doc: serde_json::Value = serde_json::from_str(&json).expect("json");
-    let jsonl = stdout(&["expand", "--profile", "gsk980", "--format", "jsonl", &file]);
-    let mut lines: Vec<serde_json::Value> =
-        jsonl.lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}"))).collect();
-    let summary = lines.pop().expect("summary");
-    assert_eq!(&lines, doc["cycles"].as_array().expect("cycles"));
+    let lines = jsonl_cycles("gsk980", &example("gsk980-g78.nc"), (1, 30));
     assert_eq!(lines.len(), 1);
     assert_eq!(
         (lines[0]["cycle"].as_str(), lines[0]["line"].as_u64(), lines[0]["params_line"].as_u64()),
         (Some("G78"), Some(5), Some(4))
     );
-    assert_eq!(summary["format"], "cycleref-moves-jsonl/1");
-    assert_eq!((summary["cycles"].as_u64(), summary["moves"].as_u64()), (Some(1), Some(30)));
 }

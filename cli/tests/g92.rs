@@ -7,24 +7,15 @@
 
 mod common;
 
-use common::run;
+use common::{jsonl_cycles, run, stdout};
 
 fn example() -> String {
     format!("{}/../examples/gsk980-g92-o0012.nc", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn stdout(args: &[&str]) -> String {
-    let out = run(args, None);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
+/// A scratch file of this binary's (`common::tmp` under `cycleref-g92-…`).
 fn tmp(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cycleref-g92-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp dir");
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write");
-    p
+    common::tmp("g92", name, text)
 }
 
 /// The expected nc of one block: heading, approach, cut, run-out, retract,
@@ -151,20 +142,11 @@ fn plot_draws_the_g92_blocks() {
 /// run-out, retract, return) = 20 moves.
 #[test]
 fn jsonl_carries_the_g92_blocks() {
-    let file = example();
-    let json = stdout(&["expand", "--profile", "gsk980", "--format", "json", &file]);
-    let doc: serde_json::Value = serde_json::from_str(&json).expect("json");
-    let jsonl = stdout(&["expand", "--profile", "gsk980", "--format", "jsonl", &file]);
-    let mut lines: Vec<serde_json::Value> =
-        jsonl.lines().map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}"))).collect();
-    let summary = lines.pop().expect("summary");
-    assert_eq!(&lines, doc["cycles"].as_array().expect("cycles"));
+    let lines = jsonl_cycles("gsk980", &example(), (4, 20));
     let blocks: Vec<(Option<&str>, Option<u64>)> =
         lines.iter().map(|c| (c["cycle"].as_str(), c["line"].as_u64())).collect();
     assert_eq!(
         blocks,
         [(Some("G92"), Some(4)), (Some("G92"), Some(5)), (Some("G92"), Some(6)), (Some("G92"), Some(7))]
     );
-    assert_eq!(summary["format"], "cycleref-moves-jsonl/1");
-    assert_eq!((summary["cycles"].as_u64(), summary["moves"].as_u64()), (Some(4), Some(20)));
 }

@@ -11,18 +11,12 @@ mod common;
 
 use std::process::{Command, Stdio};
 
-use common::run;
+use common::{run, stdout};
 use cycleref_spec::rs274::{self, CanonMove};
 use rust_decimal::Decimal;
 
 fn example() -> String {
     format!("{}/../examples/linuxcnc-m20-taper.ngc", env!("CARGO_MANIFEST_DIR"))
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = run(args, None);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).expect("utf-8")
 }
 
 /// What `rs274 -g file` prints. Two interpreters at once spoil each

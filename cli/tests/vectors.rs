@@ -204,6 +204,9 @@ const REFUSALS: &[(&str, &str)] = &[
 /// The stable kind names of `vectors/README.md`, written out again here
 /// so that the corpus is checked against the documentation, not against
 /// the generator's own function.
+///
+/// Twin (deliberate): `spec/src/error.rs`, `ErrorKind::name`, and
+/// `impl/src/error.rs`, `CycleError::name`.
 fn kind(k: &ErrorKind) -> String {
     let cycle = |e: &CycleError| match e {
         CycleError::NoMotion => "no_motion",

@@ -148,17 +148,25 @@ const EXAMPLES: &[(&str, CyclerefProfile, ProfileName, cycleref::IncrementSystem
     ]
 };
 
-#[test]
-fn every_example_equals_the_engine() {
+/// Each of [`EXAMPLES`]: its name, its text, the options that expand it
+/// through the C interface (its profile and increment system) and the
+/// machine that expands it through the reader and the engine.
+fn examples() -> impl Iterator<Item = (&'static str, String, CyclerefOptions, Machine)> {
     use cycleref::IncrementSystem::IsC;
-    for &(name, profile, p, system) in EXAMPLES {
-        let text = example(name);
+    EXAMPLES.iter().map(|&(name, profile, p, system)| {
         let mut o = options(profile);
         o.increment = if system == IsC { CyclerefIncrement::IsC } else { CyclerefIncrement::IsB } as u32;
-        let got = expand(&text, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert!(!got.is_empty(), "{name}");
         let mut m = Machine::new(p);
         m.increment = system;
+        (name, example(name), o, m)
+    })
+}
+
+#[test]
+fn every_example_equals_the_engine() {
+    for (name, text, o, m) in examples() {
+        let got = expand(&text, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(!got.is_empty(), "{name}");
         assert_eq!(got, engine_moves(&text, &m), "{name}");
     }
 }
@@ -773,16 +781,10 @@ fn cursor_m68x6_equals_expand_and_the_pipeline() {
 
 #[test]
 fn cursor_every_example_equals_expand() {
-    use cycleref::IncrementSystem::IsC;
-    for &(name, profile, p, system) in EXAMPLES {
-        let text = example(name);
-        let mut o = options(profile);
-        o.increment = if system == IsC { CyclerefIncrement::IsC } else { CyclerefIncrement::IsB } as u32;
+    for (name, text, o, m) in examples() {
         let got = cursor_moves(text.as_bytes(), &o).unwrap_or_else(|e| panic!("{name}: {}", e.message()));
         assert!(!got.is_empty(), "{name}");
         assert_eq!(got, expand(&text, &o).unwrap(), "{name}");
-        let mut m = Machine::new(p);
-        m.increment = system;
         assert_eq!(got, pipeline_moves(text.as_bytes(), &m), "{name}");
     }
     // A program of three kinds of cycle: each move names its own.

@@ -492,6 +492,9 @@ impl CycleError {
     /// The alarm's stable name (`min_cut_exceeds_height`), as the
     /// conformance vectors write it after `cycle:`. A name never changes
     /// meaning; a new alarm gets a new name.
+    ///
+    /// Twin (deliberate, from `vectors/README.md`): `cli/tests/vectors.rs`,
+    /// `kind`, which checks the corpus against the documented names.
     #[must_use]
     pub const fn name(&self) -> &'static str {
         match self {

@@ -13,7 +13,7 @@
 //! # Ok::<(), cycleref::CycleError>(())
 //! ```
 
-use crate::g75::{Corner, G75Cycle, PathType};
+use crate::g75::{Corner, CornerKind, G75Cycle, PathType};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
 use crate::lead::{Lead, LeadWord};
 use crate::linuxcnc::LinuxCncG76;
@@ -68,6 +68,38 @@ pub const G75_SEED: G75Cycle = G75Cycle {
     tool_width: None,
     path: PathType::Rough,
     corners: [Corner::SHARP; 4],
+};
+
+/// The trapezoidal groove on a slope of `examples/gsk980-g75-slope.nc` at
+/// IS-B metric: from `G00 X90 Z12`, `G75.1 X80 Z0 P1500 Q2000 H-9 D-6 A60
+/// B75 L10; G75.1 R0.3 V3 U0.3 W0.1 I2.5 J1 A0.5 B0.5 D0.4 E0.4 P1111;`
+/// (flanks 60° and 75° on a 10° slope, a 2.5 mm tool, layers of 3, rough
+/// and finish, rounds at all four corners). Checked against its program
+/// by `spec/tests/g75_real.rs`, `the_slope_example_expands`.
+pub const G75_SLOPE: G75Cycle = G75Cycle {
+    units: Units::IS_B_METRIC,
+    x_mode: XMode::Diameter,
+    from: Point::new(90_000, 12_000),
+    start: Point::new(80_000, 0),
+    peck: 1_500,
+    step: 2_000,
+    depth: -9_000,
+    width: -6_000,
+    flank_a: 600_000,
+    flank_b: 750_000,
+    slope: 100_000,
+    retract: 300,
+    layer: Some(3_000),
+    allowance_x: 300,
+    allowance_z: 100,
+    tool_width: Some(2_500),
+    path: PathType::RoughAndFinish,
+    corners: [
+        Corner { size: 500, kind: CornerKind::Round },
+        Corner { size: 500, kind: CornerKind::Round },
+        Corner { size: 400, kind: CornerKind::Round },
+        Corner { size: 400, kind: CornerKind::Round },
+    ],
 };
 
 /// A LinuxCNC G76 with every feature of its passes

@@ -37,7 +37,9 @@ enum LongAxis {
     X,
 }
 
-/// The geometry (spec `Geometry`), X in X-word increments.
+/// The geometry, X in X-word increments.
+///
+/// Twin: `spec/src/g76.rs`, `Geometry`.
 #[derive(Clone, Copy, Debug)]
 struct Geometry {
     a: (i64, i64),
@@ -60,7 +62,7 @@ fn len(v: i64, u: Units) -> Length {
     Length::new(v, u)
 }
 
-/// Spec `geometry`.
+/// Twin: `spec/src/g76.rs`, `geometry`.
 fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     let xf = c.x_mode.factor();
     let a = (c.start.x, c.start.z);
@@ -83,13 +85,15 @@ fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     Ok(Geometry { a, d, c_x, side, direction, long_axis, xf })
 }
 
-/// Spec `depth_by_law`: `round(Δd √n)`, the integer nearest `√(Δd² n)`.
+/// The reference's `depth_by_law`: `round(Δd √n)`, the integer nearest `√(Δd² n)`.
+///
+/// Twin: `spec/src/g76.rs`, `depth_by_law`.
 fn depth_by_law(first_depth: i64, n: u64) -> i64 {
     let q = u128::try_from(first_depth).unwrap_or(0);
     i64::try_from(round_sqrt(q * q * u128::from(n))).unwrap_or(i64::MAX)
 }
 
-/// Spec `next_depth`.
+/// Twin: `spec/src/g76.rs`, `next_depth`.
 fn next_depth(c: &G76Cycle, n: u64, previous: i64) -> i64 {
     let last = c.thread_height - c.finishing_allowance;
     let first = c.first_depth;
@@ -100,7 +104,9 @@ fn next_depth(c: &G76Cycle, n: u64, previous: i64) -> i64 {
     }
 }
 
-/// Spec `check_pass_count` (reading R-LIMIT).
+/// The reference's `check_pass_count` (reading R-LIMIT).
+///
+/// Twin: `spec/src/g76.rs`, `check_pass_count`.
 fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
@@ -148,7 +154,7 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     Ok(())
 }
 
-/// Spec `rough_levels`.
+/// Twin: `spec/src/g76.rs`, `rough_levels`.
 fn rough_levels(c: &G76Cycle) -> Result<Vec<i64>, CycleError> {
     let last = c.thread_height - c.finishing_allowance;
     check_pass_count(c)?;
@@ -163,12 +169,16 @@ fn rough_levels(c: &G76Cycle) -> Result<Vec<i64>, CycleError> {
     Ok(levels)
 }
 
-/// Spec `flank_shift`: `round(depth × tan(a ÷ 2))` by the reference's table.
+/// The reference's `flank_shift`: `round(depth × tan(a ÷ 2))` by the reference's table.
+///
+/// Twin: `spec/src/g76.rs`, `flank_shift`.
 fn flank_shift(depth: i64, tool_angle: u32) -> i64 {
     cycleref_spec::tan::mul_tan_round(depth, tool_angle).unwrap_or(0)
 }
 
-/// Spec `planned_passes` (readings R-INFEED, R-FINISH).
+/// The reference's `planned_passes` (readings R-INFEED, R-FINISH).
+///
+/// Twin: `spec/src/g76.rs`, `planned_passes`.
 fn planned_passes(c: &G76Cycle) -> Result<Vec<Planned>, CycleError> {
     let levels = rough_levels(c)?;
     let last = c.thread_height - c.finishing_allowance;
@@ -216,14 +226,16 @@ fn planned_passes(c: &G76Cycle) -> Result<Vec<Planned>, CycleError> {
     Ok(out)
 }
 
-/// Spec `round_ratio`.
+/// Twin: `spec/src/g76.rs`, `round_ratio`.
 fn round_ratio(num: i128, r: Ratio) -> i128 {
     let n = i128::try_from(r.num).unwrap_or(i128::MAX);
     let d = i128::try_from(r.den).unwrap_or(1);
     round_div(num * n, d)
 }
 
-/// Spec `run_out_amounts`: `(J, K)` in increments (radius where X).
+/// The reference's `run_out_amounts`: `(J, K)` in increments (radius where X).
+///
+/// Twin: `spec/src/g76.rs`, `run_out_amounts`.
 fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(i64, i64)> {
     let (j, k) = match run_out {
         RunOut::None => return None,
@@ -240,7 +252,9 @@ fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(i64, i64)> 
     (j != 0).then_some((j, k))
 }
 
-/// Spec `lead_in_length` (reading R-LEADIN).
+/// The reference's `lead_in_length` (reading R-LEADIN).
+///
+/// Twin: `spec/src/g76.rs`, `lead_in_length`.
 fn lead_in_length(c: &G76Cycle) -> i64 {
     let lead = c.lead.increments_per_rev(c.units);
     let e = i128::from(c.lead_in);
@@ -250,7 +264,9 @@ fn lead_in_length(c: &G76Cycle) -> i64 {
     i64::try_from(round_div(leads * n, d)).unwrap_or(i64::MAX)
 }
 
-/// Spec `check_coordinate` (reading R-RANGE).
+/// The reference's `check_coordinate` (reading R-RANGE).
+///
+/// Twin: `spec/src/g76.rs`, `check_coordinate`.
 fn check_coordinate(v: i64, u: Units) -> Result<(), CycleError> {
     if v.abs() > MAX_LENGTH {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(v, u) });
@@ -264,7 +280,9 @@ fn quantize_sum(b: i64, num: i128, den: i128) -> i64 {
     i64::try_from(round_div(i128::from(b) * den + num, den)).unwrap_or(i64::MAX)
 }
 
-/// What every pass shares (spec `PassFrame`, G76: never transposed).
+/// What every pass shares (G76: never transposed).
+///
+/// Twin: `spec/src/pass.rs`, `PassFrame`.
 struct Frame {
     a: (i64, i64),
     side: i64,
@@ -276,7 +294,9 @@ struct Frame {
     lead: Lead,
 }
 
-/// Spec `Path`: the moves of one pass, zero-length ones left out.
+/// The reference's `Path`: the moves of one pass, zero-length ones left out.
+///
+/// Twin: `spec/src/pass.rs`, `Path`.
 struct Path<'a> {
     moves: &'a mut Vec<Move>,
     at: (i64, i64),
@@ -309,8 +329,10 @@ impl Path<'_> {
 /// A point of the frame: (X in X-word increments, Z).
 type At = (i64, i64);
 
-/// Spec `pass_path`: from A to `bn` (by `lead_in_start`), to the end line
+/// The reference's `pass_path`: from A to `bn` (by `lead_in_start`), to the end line
 /// at `end`, the run-out, the retract and the return.
+///
+/// Twin: `spec/src/pass.rs`, `pass_path`.
 fn pass_path(
     moves: &mut Vec<Move>,
     f: &Frame,

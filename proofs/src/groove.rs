@@ -74,6 +74,24 @@ impl GrooveDomain {
         units: (0, 7),
     };
 
+    /// Wider right-angle grooves, for sampling (`proofs/tests/g75_exact.rs`,
+    /// `proofs/tests/g75_harnesses.rs`): up to 400 increments deep and wide,
+    /// up to 120-increment layers, tool widths to 80, corners to 40 of every
+    /// kind, every unit code, sign and J.
+    pub const SQUARE_WIDE: GrooveDomain = GrooveDomain {
+        depth: (1, 400),
+        width: (0, 400),
+        peck: (1, 60),
+        step: (1, 60),
+        retract: (0, 20),
+        layer: (0, 120),
+        allowance_x: (0, 40),
+        allowance_z: (0, 40),
+        tool_width: (-1, 80),
+        corner: (0, 40),
+        ..GrooveDomain::SQUARE
+    };
+
     /// The documented ranges (the manual's range tables), for sampling and
     /// for the no-panic proof.
     pub const FULL: GrooveDomain = GrooveDomain {
@@ -605,6 +623,8 @@ pub fn groove_finish_is_profile(d: &GrooveDomain, engine: &(impl GrooveEngine + 
     let w = c.width_of_tool();
     let [r1, r2, r3, r4] = c.corners;
     // Expected cutting moves of the contour (docs/G75.md §3 with a = b = 90°).
+    // Twin: `impl/src/engine/g75/tests.rs`, `square_groove_sweep` (the
+    // engine's own test of the same moves, which cannot use this crate).
     let mut expected: std::vec::Vec<LocalMove> = std::vec::Vec::new();
     let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
     if r1.size > 0 {

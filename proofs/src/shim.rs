@@ -307,6 +307,19 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
     report
 }
 
+/// [`check`], then one line on standard error with what it saw: `name`,
+/// the runs, the pruned runs and each cover's count (what the test binaries
+/// print after every check, `cargo test -- --nocapture` to see it).
+///
+/// # Panics
+///
+/// As [`check`].
+pub fn check_and_print(name: &str, mode: Mode, body: impl Fn()) -> Report {
+    let r = check(name, mode, body);
+    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
+    r
+}
+
 /// Runs one harness body on the real engine (`control`) and on an engine
 /// broken on purpose (`mutant`), both in `mode`: the control must pass (so
 /// every declared cover is satisfied in an exhaustive mode), the mutant

@@ -9,14 +9,8 @@ use std::panic::catch_unwind;
 use cycleref::engine::arith;
 use cycleref_proofs::contracts;
 use cycleref_proofs::harness;
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 use cycleref_proofs::windows::{DIV_WINDOW, ISQRT_WINDOW, MUL_TAN_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW};
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 const fn sample(seed: u64) -> Mode {
     Mode::Sample { runs: 100_000, seed }

@@ -16,14 +16,8 @@
 
 use cycleref_proofs::g75_exact::{self, Slip};
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 use cycleref_proofs::windows::GROOVE_EQUIVALENCE_WINDOW;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// The Kani window, every groove.
 #[test]
@@ -34,27 +28,10 @@ fn equivalence_over_the_kani_window() {
     assert_eq!(r.runs, 884_736);
 }
 
-/// Wider right-angle grooves: up to 400 increments deep and wide, up to
-/// 120-increment layers, tool widths to 80, corners to 40 of every kind,
-/// every unit code, sign and J.
-const SQUARE_WIDE: GrooveDomain = GrooveDomain {
-    depth: (1, 400),
-    width: (0, 400),
-    peck: (1, 60),
-    step: (1, 60),
-    retract: (0, 20),
-    layer: (0, 120),
-    allowance_x: (0, 40),
-    allowance_z: (0, 40),
-    tool_width: (-1, 80),
-    corner: (0, 40),
-    ..GrooveDomain::SQUARE
-};
-
 #[test]
 fn equivalence_over_wider_square_grooves() {
     check("groove equivalence (square, sampled)", Mode::Sample { runs: 4_000, seed: 0x6737_3565 }, || {
-        groove::groove_equivalence(&SQUARE_WIDE, &GrooveFixedPoint);
+        groove::groove_equivalence(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint);
     });
 }
 

@@ -21,11 +21,7 @@ fn machine(increment: cycleref::IncrementSystem) -> Machine {
 
 /// Moves as `G01 X28.000 Z-0.200 peck 1.1`.
 fn render(moves: &[Move], decimals: u32) -> Vec<String> {
-    let f = |v: i64| {
-        let mut s = String::new();
-        cycleref::units::write_fixed(&mut s, i128::from(v), decimals).unwrap();
-        s
-    };
+    let f = |v: i64| cycleref::units::Length { increments: v, decimals }.to_string();
     moves
         .iter()
         .map(|m| {

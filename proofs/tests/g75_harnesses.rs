@@ -7,14 +7,8 @@
 //! ```
 
 use cycleref_proofs::groove::{self, GrooveDomain, GrooveFixedPoint};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{check_and_print as check, Mode};
 use cycleref_proofs::windows::GROOVE_WINDOW;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// Small right-angle grooves: the Kani window ([`GROOVE_WINDOW`]: with or
 /// without layers of 3, allowances 0..=1, pointed tool or widths 1..=2,
@@ -30,21 +24,6 @@ const SMALL: GrooveDomain = GrooveDomain {
     retract: (1, 1),
     units: (3, 4),
     ..GROOVE_WINDOW
-};
-
-/// Wider, for sampling: right-angle grooves up to 400 increments.
-const SQUARE_WIDE: GrooveDomain = GrooveDomain {
-    depth: (1, 400),
-    width: (0, 400),
-    peck: (1, 60),
-    step: (1, 60),
-    retract: (0, 20),
-    layer: (0, 120),
-    allowance_x: (0, 40),
-    allowance_z: (0, 40),
-    tool_width: (-1, 80),
-    corner: (0, 40),
-    ..GrooveDomain::SQUARE
 };
 
 /// Every angle, small enough to expand quickly.
@@ -79,7 +58,7 @@ const PECKS: GrooveDomain =
 fn pecks_and_steps() {
     check("pecks (exhaustive)", small(200_000), || groove::groove_pecks_and_steps(&PECKS, &GrooveFixedPoint));
     check("pecks (square, sampled)", SAMPLE, || {
-        groove::groove_pecks_and_steps(&SQUARE_WIDE, &GrooveFixedPoint)
+        groove::groove_pecks_and_steps(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
     });
     check("pecks (angles, sampled)", SAMPLE, || groove::groove_pecks_and_steps(&ANGLES, &GrooveFixedPoint));
 }
@@ -105,7 +84,9 @@ const REGION: GrooveDomain = GrooveDomain {
 #[test]
 fn inside_the_roughing_region() {
     check("inside (exhaustive)", small(700_000), || groove::groove_inside(&REGION, &GrooveFixedPoint));
-    check("inside (sampled)", SAMPLE, || groove::groove_inside(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("inside (sampled)", SAMPLE, || {
+        groove::groove_inside(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
+    });
 }
 
 /// Grooving tools (w ≥ 1), layers, every corner size 0..=3, allowances:
@@ -125,7 +106,7 @@ const MATERIAL_WIDE: GrooveDomain = GrooveDomain {
     allowance_z: (0, 20),
     tool_width: (1, 30),
     corner: (0, 25),
-    ..SQUARE_WIDE
+    ..GrooveDomain::SQUARE_WIDE
 };
 
 #[test]
@@ -155,7 +136,9 @@ fn finishing_contour_is_the_profile() {
     check("profile (exhaustive)", small(800_000), || {
         groove::groove_finish_is_profile(&PROFILE, &GrooveFixedPoint);
     });
-    check("profile (sampled)", SAMPLE, || groove::groove_finish_is_profile(&SQUARE_WIDE, &GrooveFixedPoint));
+    check("profile (sampled)", SAMPLE, || {
+        groove::groove_finish_is_profile(&GrooveDomain::SQUARE_WIDE, &GrooveFixedPoint)
+    });
 }
 
 /// Every documented input, every layer count (the Kani window of

@@ -8,13 +8,7 @@
 //! depth mode 0..=1).
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
-use cycleref_proofs::shim::{self, Mode};
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 
 /// Every infeed mode of G76 and G78, both depth modes.
 const MODES: Domain = Domain { infeed: (0, 5), depth_mode: (0, 1), ..Domain::SCHEDULE };

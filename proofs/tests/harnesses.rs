@@ -8,15 +8,8 @@
 //! ```
 
 use cycleref_proofs::harness::{self, Domain, FixedPoint};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{check_and_print as check, Mode};
 use cycleref_proofs::windows;
-
-/// Runs a harness and prints its run count (`--nocapture` shows them).
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// Exhaustive over every combination of the domain's choices.
 fn exhaustive(max_runs: u64) -> Mode {

@@ -14,7 +14,7 @@ use cycleref::{CycleError, Motion, Move, PassKind, Role};
 use cycleref_proofs::linuxcnc::{
     lcnc_depth_monotonicity, lcnc_pass_moves, lcnc_spring_passes, lcnc_termination, LcncDomain,
 };
-use cycleref_proofs::shim::{self, check, Mode, Report};
+use cycleref_proofs::shim::{self, check, check_and_print, Mode, Report};
 use cycleref_proofs::windows::{unwind, LCNC_DEPTH_WINDOW, LCNC_PASS_WINDOW, LCNC_SPRING_WINDOW};
 
 type Moves = std::vec::IntoIter<Move>;
@@ -55,9 +55,7 @@ const SAMPLE: Mode = Mode::Sample { runs: 3_000, seed: 0x6c63_6e63 };
 
 fn exhaustive(name: &str, window: &LcncDomain, harness: Harness, max_runs: u64) -> Report {
     let _one = lock();
-    let r = check(name, Mode::Exhaustive { max_runs }, || harness(window, &control));
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
+    check_and_print(name, Mode::Exhaustive { max_runs }, || harness(window, &control))
 }
 
 fn sampled(name: &str, harness: Harness) {

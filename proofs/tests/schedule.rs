@@ -8,7 +8,7 @@ use cycleref::engine::schedule::Schedule;
 use cycleref::G76Cycle;
 use cycleref_proofs::harness::PLAIN_CYCLE;
 use cycleref_proofs::schedule::{schedule_step, ScheduleDomain};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 
 /// The exhaustive window: Δd ≤ 20, Δdmin ≤ 3, k - d ≤ 40, every depth ≤
 /// k - d, every level ≤ the depth, both phases (1 974 560 states; the
@@ -17,12 +17,6 @@ pub const WINDOW: ScheduleDomain =
     ScheduleDomain { first_depth: (1, 20), min_cut: (0, 3), last: (0, 40), depth: (0, 40), level: (0, 40) };
 
 const REAL: fn(&mut Schedule) -> Option<i64> = Schedule::next_level;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 #[test]
 fn every_step_of_the_window() {

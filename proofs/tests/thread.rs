@@ -6,16 +6,10 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use cycleref::{CycleError, G76Cycle, Motion, Move, Point, Role, RunOut};
 use cycleref_proofs::harness::{Domain, FixedPoint, PLAIN_CYCLE};
-use cycleref_proofs::shim::{self, Mode};
+use cycleref_proofs::shim::{self, check_and_print as check, Mode};
 use cycleref_proofs::thread::{self, ThreadRegion};
 use cycleref_proofs::windows::G32_WINDOW;
 use cycleref_spec::differ::assert_same_moves;
-
-fn check(name: &str, mode: Mode, body: impl Fn()) -> shim::Report {
-    let r = shim::check(name, mode, body);
-    eprintln!("{name}: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-    r
-}
 
 /// The exhaustive window: k ≤ 4, every infeed mode, both sides and
 /// directions, straight and tapered, both long axes (|W| = 5 or 6, |i| ≤

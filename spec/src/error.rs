@@ -86,6 +86,9 @@ impl ErrorKind {
     /// conformance vectors write it; a cycle alarm is `cycle` here, and its
     /// own name is [`CycleError::name`]. A name never changes meaning; a
     /// new kind gets a new name.
+    ///
+    /// Twin (deliberate, from `vectors/README.md`): `cli/tests/vectors.rs`,
+    /// `kind`, which checks the corpus against the documented names.
     #[must_use]
     pub const fn name(&self) -> &'static str {
         match self {

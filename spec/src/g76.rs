@@ -46,6 +46,8 @@ pub enum LongAxis {
 }
 
 /// The fixed geometry of a cycle, in the manual's terms.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `Geometry`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Geometry {
     /// A, in X-word units.
@@ -95,6 +97,8 @@ fn len(v: Decimal, u: Units) -> Length {
 ///
 /// Twin: `impl/src/engine/g76.rs`, `expand_g76` (the same checks in
 /// integers).
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `geometry`.
 pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     let u = c.units;
     let xf = Decimal::from(c.x_mode.factor());
@@ -125,6 +129,8 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
 /// nearest to `√(q² n)`.
 ///
 /// Twin: `impl/src/engine/schedule.rs`, `law`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `depth_by_law`.
 #[must_use]
 pub fn depth_by_law(first_depth: Decimal, n: u64, u: Units) -> Decimal {
     let q = u128::try_from(to_increments(first_depth, u)).unwrap_or(0);
@@ -155,6 +161,8 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// minimum cut as for every rough cut: "当粗车切削量小于△dmin时，以△dmin作为
 /// 本次粗车的切削量"): `Dn = min(k - d, D(n-1) + max(Δd, Δdmin, 1
 /// increment))`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `next_depth`.
 #[must_use]
 pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
     let u = c.units;
@@ -177,6 +185,8 @@ pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
 ///
 /// [`CycleError::TooManyPasses`] when the cycle would cut more rough passes
 /// than its limit (reading R-LIMIT, which also says how the count is found).
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `rough_levels`.
 pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
     let u = c.units;
     let last = from_increments(c.thread_height - c.finishing_allowance, u);
@@ -201,6 +211,8 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
 /// to exceed it.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `check_pass_count`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `check_pass_count`.
 fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     let u = c.units;
     let last = from_increments(c.thread_height - c.finishing_allowance, u);
@@ -249,6 +261,8 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
 /// 符合公式 tg(a/2) = Z 轴位移 / X 轴位移").
 ///
 /// Twin: `impl/src/engine/g76.rs`, `flank_shift`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `flank_shift`.
 #[must_use]
 pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
     let inc = to_increments(depth, u);
@@ -282,6 +296,8 @@ pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
 /// As [`rough_levels`].
 ///
 /// Twin: `impl/src/engine/g76.rs`, `G76Moves::plan_next`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `planned_passes`.
 pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
     let u = c.units;
     let levels = rough_levels(c)?;
@@ -360,6 +376,8 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
 /// `round(num × ratio)` in increments, exactly.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `round_ratio`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `round_ratio`.
 fn round_ratio(num: i128, r: Ratio) -> i128 {
     let n = i128::try_from(r.num).unwrap_or(i128::MAX);
     let d = i128::try_from(r.den).unwrap_or(1);
@@ -375,6 +393,8 @@ fn round_ratio(num: i128, r: Ratio) -> i128 {
 /// 长轴和短轴以 45° 角退尾"). J = 0 means no run-out.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `run_out_amounts`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `run_out_amounts`.
 #[must_use]
 pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal, Decimal)> {
     let (j, k) = match run_out {
@@ -402,6 +422,8 @@ pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal
 /// long axis of the screw-in move.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `lead_in_length`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `lead_in_length`.
 #[must_use]
 pub fn lead_in_length(c: &G76Cycle) -> Decimal {
     let u = c.units;
@@ -416,6 +438,8 @@ pub fn lead_in_length(c: &G76Cycle) -> Decimal {
 
 ///
 /// Twin: `impl/src/engine/g76.rs`, `check_coordinate`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `check_coordinate`.
 fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
     if to_increments(v, u).abs() > MAX_LENGTH {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(v, u) });

@@ -32,6 +32,8 @@ use crate::g76::LongAxis;
 /// coordinates: the first the short axis (the depth), the second the long
 /// axis. They are X and Z, or Z and X for a face thread (`transposed`),
 /// turned back into X and Z when a move is made.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `PassFrame`.
 #[derive(Clone, Copy, Debug)]
 pub struct PassFrame {
     /// A, in the frame's coordinates (X in X-word units).
@@ -63,6 +65,8 @@ pub struct PassFrame {
 /// and the return to A, each carrying `pass`.
 ///
 /// Twin: `impl/src/engine/pass.rs`, `Frame::path` and `Walk::next_move`.
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `pass_path`.
 pub fn pass_path(
     moves: &mut Vec<Move>,
     f: &PassFrame,
@@ -114,6 +118,9 @@ pub fn pass_path(
     path.go(Motion::Rapid, f.a, Role::Return);
 }
 
+/// The moves of one pass, zero-length ones left out (reading R-ZERO).
+///
+/// Restated in integers: `proofs/src/g76_exact.rs`, `Path`.
 struct Path<'a> {
     moves: &'a mut Vec<Move>,
     at: (Decimal, Decimal),

@@ -580,28 +580,7 @@ fn the_slope_example_expands() {
     let calls: Vec<_> = program.grooves().collect();
     assert_eq!(calls.len(), 1);
     let c = calls[0].cycle;
-    let round = |size| Corner { size, kind: CornerKind::Round };
-    let expected = G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
-        from: Point::new(90_000, 12_000),
-        start: Point::new(80_000, 0),
-        peck: 1_500,
-        step: 2_000,
-        depth: -9_000,
-        width: -6_000,
-        flank_a: 600_000,
-        flank_b: 750_000,
-        slope: 100_000,
-        retract: 300,
-        layer: Some(3_000),
-        allowance_x: 300,
-        allowance_z: 100,
-        tool_width: Some(2_500),
-        path: PathType::RoughAndFinish,
-        corners: [round(500), round(500), round(400), round(400)],
-    };
-    assert_eq!(c, expected);
+    assert_eq!(c, cycleref::examples::G75_SLOPE);
     let g = g75::groove(&c);
     // Two values lie exactly on a rounding boundary (R-G75TIE):
     // y_K1 = 9000 − 300 − 2·400·tan 30°·sin 60° − 300·cos 60°

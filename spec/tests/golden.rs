@@ -18,11 +18,7 @@ fn example(name: &str) -> String {
 
 /// Moves as compact NC-like strings: `G00 X64.400 Z8.961`, `G32 …`.
 fn render(moves: &[Move], decimals: u32) -> Vec<String> {
-    let f = |v: i64| {
-        let mut s = String::new();
-        cycleref::units::write_fixed(&mut s, i128::from(v), decimals).unwrap();
-        s
-    };
+    let f = |v: i64| cycleref::units::Length { increments: v, decimals }.to_string();
     moves
         .iter()
         .map(|m| {
@@ -252,11 +248,7 @@ fn expand_text(src: &str) -> Vec<Move> {
 
 /// The pass starts (approach ends) with their flank, as `(X, Z, flank)`.
 fn starts(moves: &[Move]) -> Vec<(String, String, cycleref::Flank, PassKind, u32)> {
-    let f = |v: i64| {
-        let mut s = String::new();
-        cycleref::units::write_fixed(&mut s, i128::from(v), 3).unwrap();
-        s
-    };
+    let f = |v: i64| cycleref::units::Length { increments: v, decimals: 3 }.to_string();
     moves
         .iter()
         .filter(|m| m.role == Role::Approach)

@@ -183,21 +183,30 @@ fn runout_988(rng: &mut Rng) -> Draft {
     ctx.params.insert("5131", Param::Int(rng.pick(&[0, 30, 45, 60])));
     let l = line32(rng, &ctx, false);
     let k = l.lead_inc * 6 / 10;
+    run_out_variants(rng, ctx, &l, k, true)
+}
+
+/// One G92 at depth `k` of thread `l` for each run-out variant: J and K, J
+/// only, K only and, with `neither`, none; the first straight after the
+/// head, each later one from a G00 back to A (which ends the mode and its
+/// J, K); then M30.
+fn run_out_variants(rng: &mut Rng, ctx: Ctx, l: &Line32, k: i64, neither: bool) -> Draft {
     let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 4000)));
+    let a = start_point(&ctx, l, k, ctx.mm(rng.range(2000, 4000)));
     let mut lines = head(rng, &ctx, a);
-    let variants: [Vec<String>; 4] = [
+    let mut variants: Vec<Vec<String>> = vec![
         vec![format!("J{}", ctx.num(j)), format!("K{}", ctx.num(kk))],
         vec![format!("J{}", ctx.num(j))],
         vec![format!("K{}", ctx.num(kk))],
-        vec![],
     ];
-    // Each variant from G00 (which ends the mode and its J, K).
+    if neither {
+        variants.push(vec![]);
+    }
     for (n, words) in variants.iter().enumerate() {
         if n > 0 {
             lines.push(format!("G00 X{} Z{}", ctx.num(a.0), ctx.num(a.1)));
         }
-        lines.extend(passes_lines(&ctx, &l, k, &[k], words));
+        lines.extend(passes_lines(&ctx, l, k, &[k], words));
     }
     lines.push("M30".into());
     Draft::new(ctx, lines)
@@ -284,22 +293,7 @@ fn high_speed(rng: &mut Rng) -> Draft {
     let taper = rng.chance(30);
     let l = line32(rng, &ctx, taper);
     let k = l.lead_inc * 6 / 10;
-    let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
-    let a = start_point(&ctx, &l, k, ctx.mm(rng.range(2000, 4000)));
-    let mut lines = head(rng, &ctx, a);
-    let variants: [Vec<String>; 3] = [
-        vec![format!("J{}", ctx.num(j)), format!("K{}", ctx.num(kk))],
-        vec![format!("J{}", ctx.num(j))],
-        vec![format!("K{}", ctx.num(kk))],
-    ];
-    for (n, words) in variants.iter().enumerate() {
-        if n > 0 {
-            lines.push(format!("G00 X{} Z{}", ctx.num(a.0), ctx.num(a.1)));
-        }
-        lines.extend(passes_lines(&ctx, &l, k, &[k], words));
-    }
-    lines.push("M30".into());
-    Draft::new(ctx, lines)
+    run_out_variants(rng, ctx, &l, k, false)
 }
 
 /// A steep taper: X the long axis.

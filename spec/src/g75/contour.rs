@@ -6,6 +6,9 @@
 //! Twin: `impl/src/engine/g75/contour.rs`, `rough_vertices` and
 //! `finish_profile`; the turning sense `impl/src/engine/g75/frame.rs`,
 //! `Frame::clockwise`.
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use std::cmp::Ordering;
 

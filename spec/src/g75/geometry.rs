@@ -5,6 +5,9 @@
 //!
 //! Twin: the engine evaluates the same formulas over intervals in
 //! `impl/src/engine/g75/exact.rs` (`Enclosures::new`, `Enclosures::eval`).
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use std::cmp::Ordering;
 

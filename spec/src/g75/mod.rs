@@ -39,6 +39,9 @@
 //! range check and the roughing moves), `profile` (the whole groove, for
 //! tests). The fixed-point engine is split the same way
 //! (`impl/src/engine/g75/`).
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use cycleref::error::CycleError;
 use cycleref::g75::G75Cycle;

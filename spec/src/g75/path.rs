@@ -5,6 +5,9 @@
 //! Twin: `impl/src/engine/g75/frame.rs` (`Frame::point`, the range check),
 //! `impl/src/engine/g75/tail.rs` (`TailBuilder`) and
 //! `impl/src/engine/g75/roughing.rs` (`G75Moves::next_rough`).
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use cycleref::error::{CycleError, Field};
 use cycleref::moves::{Plunge, Role};

@@ -4,6 +4,9 @@
 //!
 //! Twin: `impl/src/engine/g75/exact.rs`, `Region` (`flank_a`, `flank_b`,
 //! `chord3`, `chord4`, `left`, `right`).
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use cycleref::g75::corner;
 

@@ -5,6 +5,9 @@
 //! Twin: `impl/src/engine/g75/roughing.rs` (`Layers`, `check_peck_count`,
 //! the `Roughing` state machine) and `impl/src/engine/g75/exact.rs`,
 //! `Evaluator::plunges`.
+//!
+//! Restated in integers for right-angle grooves, function by function:
+//! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use cycleref::error::CycleError;
 use cycleref::g75::MAX_PECKS;
@@ -19,6 +22,8 @@ use super::*;
 /// # Errors
 ///
 /// [`CycleError::UndecidedRounding`].
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, in `expand_with` (0).
 pub fn y_top(g: &Groove) -> Result<i128, CycleError> {
     floor(&y3(g))
 }
@@ -28,6 +33,8 @@ pub fn y_top(g: &Groove) -> Result<i128, CycleError> {
 /// 未输入时默认为断续切削到凹槽最大深度 (不分层, 走刀方式与 G75 类似)").
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `Layers::new`.
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `layer_count`.
 #[must_use]
 pub fn layer_count(g: &Groove) -> i128 {
     match g.layer {
@@ -40,6 +47,8 @@ pub fn layer_count(g: &Groove) -> i128 {
 /// without V (R-G75LAYER).
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `Layers::bottom`.
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `layer_bottom`.
 #[must_use]
 pub fn layer_bottom(g: &Groove, m: i128) -> i128 {
     match g.layer {
@@ -50,6 +59,8 @@ pub fn layer_bottom(g: &Groove, m: i128) -> i128 {
 
 /// The top of layer `m`: `y_top` for layer 1, `y_(m−1)` after (R-G75LAYER:
 /// "Layer m ≥ 2 starts at `y_{m−1}`").
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `layer_top`.
 #[must_use]
 pub fn layer_top(g: &Groove, m: i128, y_top: i128) -> i128 {
     if m <= 1 {
@@ -100,6 +111,8 @@ impl PlungeRange {
 /// [`CycleError::UndecidedRounding`].
 ///
 /// Twin: `impl/src/engine/g75/exact.rs`, `Evaluator::plunges`.
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `plunge_range`.
 pub fn plunge_range(g: &Groove, m: i128) -> Result<PlungeRange, CycleError> {
     let y = int(layer_bottom(g, m));
     Ok(PlungeRange { first: ceil(&left(g, &y))?, last: floor(&right(g, &y))? - g.tool })
@@ -116,6 +129,8 @@ pub fn plunge_range(g: &Groove, m: i128) -> Result<PlungeRange, CycleError> {
 /// # Errors
 ///
 /// [`CycleError::GrooveNarrowerThanTool`]; [`CycleError::UndecidedRounding`].
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `check_tool_fits`.
 pub fn check_tool_fits(g: &Groove) -> Result<PlungeRange, CycleError> {
     // R-G75NARROWJ: for every J, J2 included.
     let range = plunge_range(g, layer_count(g))?;
@@ -143,6 +158,8 @@ pub fn check_tool_fits(g: &Groove) -> Result<PlungeRange, CycleError> {
 /// # Errors
 ///
 /// [`CycleError::RidgesInLayers`]; [`CycleError::UndecidedRounding`].
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `check_ridges`.
 pub fn check_ridges(g: &Groove) -> Result<(), CycleError> {
     let c = &g.cycle;
     if !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool {
@@ -162,6 +179,8 @@ pub fn check_ridges(g: &Groove) -> Result<(), CycleError> {
 /// The number of pecks of one plunge from `top` to `bottom`:
 /// `ceil((bottom − top)/Δi)` (R-G75PECK: peck j feeds to
 /// `min(top + j·Δi, bottom)`).
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `peck_count`.
 #[must_use]
 pub fn peck_count(top: i128, bottom: i128, peck: i128) -> i128 {
     (bottom - top + peck - 1) / peck
@@ -236,6 +255,8 @@ pub struct Layer {
 /// [`CycleError::TooManyPecks`]; [`CycleError::UndecidedRounding`].
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `check_peck_count`.
+///
+/// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `rough_layers`.
 pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
     let too_many = CycleError::TooManyPecks { limit: MAX_PECKS };
     let count = layer_count(g);

@@ -821,31 +821,7 @@ fn slope_groove_invariants() {
 /// `G00 X90 Z12; G75.1 X80 Z0 P1500 Q2000 H-9 D-6 A60 B75 L10; G75.1
 /// R0.3 V3 U0.3 W0.1 I2.5 J1 A0.5 B0.5 D0.4 E0.4 P1111` at IS-B.
 fn slope_example() -> G75Cycle {
-    G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
-        start: Point::new(80_000, 0),
-        from: Point::new(90_000, 12_000),
-        peck: 1_500,
-        step: 2_000,
-        depth: -9_000,
-        width: -6_000,
-        flank_a: 600_000,
-        flank_b: 750_000,
-        slope: 100_000,
-        retract: 300,
-        layer: Some(3_000),
-        allowance_x: 300,
-        allowance_z: 100,
-        tool_width: Some(2_500),
-        path: PathType::RoughAndFinish,
-        corners: [
-            Corner { size: 500, kind: CornerKind::Round },
-            Corner { size: 500, kind: CornerKind::Round },
-            Corner { size: 400, kind: CornerKind::Round },
-            Corner { size: 400, kind: CornerKind::Round },
-        ],
-    }
+    crate::examples::G75_SLOPE
 }
 
 /// The benchmark's wide groove (`benches/src/cases.rs`): `G00 X210 Z5;
@@ -1063,6 +1039,9 @@ fn square_groove_sweep() {
         }
         if c.path.finishes() {
             // The contour's cutting moves (docs/G75.md §3 with a = b = 90°).
+            // Twin: `proofs/src/groove.rs`, `groove_finish_is_profile` (the
+            // same expected moves; the proofs crate depends on this one, so
+            // its oracle cannot serve here).
             let [r1, r2, r3, r4] = c.corners;
             let arc = |k: Corner, centre: (i64, i64)| (k.kind == CornerKind::Round).then_some(centre);
             let mut expected: Vec<ContourMove> = Vec::new();
