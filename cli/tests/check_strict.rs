@@ -369,7 +369,7 @@ fn a_trace_read_in_pieces_names_the_line_and_byte_of_a_bad_byte() {
     // Line 20 003: the bad byte is the 9th (after "G00 X80 ").
     text.extend_from_slice(b"G00 X80 \xffZ10\n");
     std::fs::write(&p, &text).expect("write");
-    let out = cycleref(&["check", "--trace", p.to_str().expect("utf-8"), &example("gsk988-m68x6.nc")]);
+    let out = run(&["check", "--trace", p.to_str().expect("utf-8"), &example("gsk988-m68x6.nc")], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 20003, byte 9: not UTF-8 text"), "{err}");
@@ -394,7 +394,8 @@ fn a_program_error_at_the_end_wins_in_the_one_phase_check() {
     for (name, trace) in [("agrees.nc", good_m68()), ("bad-first-line.nc", "G00 X\u{1}80 Z10\n".to_string())]
     {
         let t = tmp(name, &trace);
-        let out = cycleref(&["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), program]);
+        let out =
+            run(&["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), program], None);
         assert_eq!(out.status.code(), Some(2), "{name}");
         assert!(out.stdout.is_empty(), "{name}: {}", String::from_utf8_lossy(&out.stdout));
         let err = String::from_utf8_lossy(&out.stderr);
@@ -412,19 +413,22 @@ fn an_inch_program_is_checked_in_inches() {
     let text = "O0001;\nG20;\nG50 X4 Z2 M3 S300;\nG00 X3 Z0.4;\nG76 P020560 Q0.006 R0.004;\n\
                 G76 X2.3874 Z-2.44 P0.0724 Q0.0354 F0.125;\nG00 X4 Z2;\nM30;\n";
     let program = tmp("inch.nc", text);
-    let out = cycleref(&["expand", "--profile", "gsk988", program.to_str().expect("utf-8")]);
+    let out = run(&["expand", "--profile", "gsk988", program.to_str().expect("utf-8")], None);
     assert!(out.status.success());
     let trace = String::from_utf8(out.stdout).expect("utf-8");
     assert!(trace.contains("G32 X2.4614 Z-2.3775 F0.125"), "{trace}");
     let t = tmp("inch-trace.nc", &trace);
-    let out = cycleref(&[
-        "check",
-        "--profile",
-        "gsk988",
-        "--trace",
-        t.to_str().expect("utf-8"),
-        program.to_str().expect("utf-8"),
-    ]);
+    let out = run(
+        &[
+            "check",
+            "--profile",
+            "gsk988",
+            "--trace",
+            t.to_str().expect("utf-8"),
+            program.to_str().expect("utf-8"),
+        ],
+        None,
+    );
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{text}{}", String::from_utf8_lossy(&out.stderr));
     assert!(text.starts_with("AGREE: 32 moves of ours, 32 of the trace"), "{text}");
