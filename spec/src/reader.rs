@@ -257,6 +257,19 @@ impl MotionMode {
             MotionMode::G92 => "G92",
         }
     }
+
+    /// The motion of G00-G03, which every dialect reads alike (`None` for
+    /// another code): one home for both readers' tables.
+    #[must_use]
+    pub fn plain(code: i64) -> Option<MotionMode> {
+        match code {
+            0 => Some(MotionMode::G00),
+            1 => Some(MotionMode::G01),
+            2 => Some(MotionMode::G02),
+            3 => Some(MotionMode::G03),
+            _ => None,
+        }
+    }
 }
 
 /// X, Z, U and W of a block.
@@ -827,10 +840,7 @@ impl State<'_> {
         for w in block.all('G') {
             let whole = w.number().integer();
             match whole {
-                Some(0) => motion = Some(MotionMode::G00),
-                Some(1) => motion = Some(MotionMode::G01),
-                Some(2) => motion = Some(MotionMode::G02),
-                Some(3) => motion = Some(MotionMode::G03),
+                Some(c @ 0..=3) => motion = MotionMode::plain(c),
                 Some(32) => motion = Some(MotionMode::G32),
                 Some(92) => motion = Some(MotionMode::G92),
                 Some(4) => g04 = true,

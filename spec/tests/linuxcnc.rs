@@ -5,8 +5,10 @@
 //! is the independent oracle of `taper_thread_matches_rs274`. The values
 //! in the other tests are worked by hand in their comments.
 
+mod common;
+
 use cycleref::linuxcnc::LinuxCncG76;
-use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, PassKind, Point, Role, Units, XMode};
+use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, PassKind, Role, Units, XMode};
 use cycleref_spec::linuxcnc::{expand, taper_pitch};
 use cycleref_spec::real::Real;
 use cycleref_spec::rs274;
@@ -47,23 +49,7 @@ fn straight_thread_by_hand() {
     // Depths 0.1·n < 0.3: n = 1, 2 (n = 3 equals K: the loop stops,
     // interp_convert.cc l.5776 `depth < end_depth`); then one pass at K.
     // Pass at δ: back X = 10 + (0.3 − δ), in X = 10 − (0.5 + δ), Z fixed.
-    let c = LinuxCncG76 {
-        units: MM,
-        x_mode: XMode::Radius,
-        start: Point::new(100_000, 10_000),
-        end: Point::new(100_000, -100_000),
-        pitch: Lead { word: LeadWord::F, mantissa: 1, scale: 0 },
-        peak_offset: -5_000,
-        initial_depth: 1_000,
-        degression: 10_000,
-        full_depth: 3_000,
-        compound_angle: 0,
-        spring_passes: 0,
-        taper_distance: 0,
-        entry_taper: false,
-        exit_taper: false,
-        pass_limit: 1_000_000,
-    };
+    let c = common::STRAIGHT_RADIUS;
     let ours = expand(&c).unwrap();
     let pts: Vec<(i64, i64, Role)> = ours.iter().map(|m| (m.to.x, m.to.z, m.role)).collect();
     let mut expected = Vec::new();

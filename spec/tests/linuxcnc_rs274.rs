@@ -24,6 +24,8 @@
 //! programs; `cargo test -p cycleref-spec --test linuxcnc_rs274 -- --ignored`
 //! checks 3 000.
 
+mod common;
+
 use std::cmp::Ordering;
 use std::io::Write;
 use std::process::{Command, Stdio};
@@ -249,24 +251,8 @@ fn an_exact_tie_is_the_one_extra_pass() {
     // 3.9999999999999996, so its depth is below K and it cuts pass 8 too
     // (the case helper-13 found). Both then cut the full-depth pass.
     let program = "G18 G21 G8\nM3 S500\nG0 X10 Z1\nG76 P1 Z-10 I-0.5 J0.1 R1.5 K0.4 Q0 H0\nM5\nM2\n";
-    let units = Units { system: IncrementSystem::IsC, unit: InputUnit::Metric };
-    let cycle = LinuxCncG76 {
-        units,
-        x_mode: XMode::Radius,
-        start: Point::new(100_000, 10_000),
-        end: Point::new(100_000, -100_000),
-        pitch: Lead { word: LeadWord::F, mantissa: 1, scale: 0 },
-        peak_offset: -5_000,
-        initial_depth: 1_000,
-        degression: 15_000,
-        full_depth: 4_000,
-        compound_angle: 0,
-        spring_passes: 0,
-        taper_distance: 0,
-        entry_taper: false,
-        exit_taper: false,
-        pass_limit: 1_000_000,
-    };
+    // The hand-worked straight thread with R1.5 and K0.4.
+    let cycle = LinuxCncG76 { degression: 15_000, full_depth: 4_000, ..common::STRAIGHT_RADIUS };
     assert_eq!(expand(&cycle).unwrap().len(), 8 * 4 + 1);
     assert!(check("the tie case", program, &cycle), "rs274 was expected to cut the extra pass");
 }

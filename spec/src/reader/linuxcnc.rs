@@ -36,10 +36,7 @@ impl State<'_> {
             // A whole code: `integer` gives None for any other.
             let whole = w.number().integer();
             match whole {
-                Some(0) => motion = Some(MotionMode::G00),
-                Some(1) => motion = Some(MotionMode::G01),
-                Some(2) => motion = Some(MotionMode::G02),
-                Some(3) => motion = Some(MotionMode::G03),
+                Some(c @ 0..=3) => motion = MotionMode::plain(c),
                 Some(76) => g76 = true,
                 Some(33) => g33 = true,
                 Some(7) => mode = Some(XMode::Diameter),
