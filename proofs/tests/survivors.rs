@@ -3,9 +3,17 @@
 //! value is worked out by hand (the working is in the comments) or taken
 //! from the exact reference `cycleref_spec`, never from the engine.
 //!
-//! The loop counters are process-wide: the counter checks are one test.
+//! The loop counters are process-wide, and every engine run records into
+//! them: each test holds [`serial`] while it runs, so that the counter
+//! checks read only their own runs.
 
 use cycleref::loop_counters::{self, ISQRT_U128, ISQRT_U64};
+
+/// One test at a time in this binary (see the module docs).
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    SERIAL.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
 
 /// The Newton iterations `isqrt_floor` makes, recorded by `record_isqrt`.
 fn newton_iterations(x: u128) -> (u32, u32) {
@@ -20,6 +28,7 @@ fn newton_iterations(x: u128) -> (u32, u32) {
 /// the one that finds `y ≥ g` ends the loop and is counted too.
 #[test]
 fn newton_iteration_counts() {
+    let _serial = serial();
     // x = 2^16 (u64 loop): bits 17, g = 2^9 = 512; y = (512 + 128)/2 = 320;
     // (320 + 204)/2 = 262; (262 + 250)/2 = 256; (256 + 256)/2 = 256 ≥ 256:
     // 4 iterations, root 256.
@@ -51,6 +60,7 @@ fn newton_iteration_counts() {
 /// harnesses never reached the boundary, `< 0` could become `<= 0`).
 #[test]
 fn g92_with_a_on_the_x_of_b() {
+    let _serial = serial();
     use cycleref::lead::{Lead, LeadWord};
     use cycleref::{CycleError, G92Cycle, Motion, Point, Role, RunOut, StartAngle, Units, XMode};
 
@@ -97,6 +107,7 @@ fn g92_with_a_on_the_x_of_b() {
 /// Z long axis. Checked against the reference.
 #[test]
 fn g92_run_out_limits() {
+    let _serial = serial();
     use cycleref::lead::{Lead, LeadWord};
     use cycleref::{CycleError, G92Cycle, Point, RunOut, StartAngle, Units, XMode};
 
@@ -180,6 +191,7 @@ fn g76_cycle(
 /// limit, so `(k - d - step - 1) / step` passed them.
 #[test]
 fn equal_steps_count_their_levels() {
+    let _serial = serial();
     use cycleref::{CycleError, DepthMode, Point, RunOut};
     // k = 10, d = 0, Δd = 3, Δdmin = 0: step max(3, 0, 1) = 3, levels at
     // 3, 6, 9, 10: ceil(10 / 3) = 4 rough passes.
@@ -213,6 +225,7 @@ fn equal_steps_count_their_levels() {
 /// towards A, Z -2.000; the retract to X 50.000, the return to A.
 #[test]
 fn g76_x_long_run_out_as_long_as_the_taper() {
+    let _serial = serial();
     use cycleref::{CycleError, Motion, Point, Role, RunOut};
     let c = |k_run_out: i64| {
         g76_cycle(
@@ -252,6 +265,7 @@ fn g76_x_long_run_out_as_long_as_the_taper() {
 /// law level at the limit, not beyond it).
 #[test]
 fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
+    let _serial = serial();
     use cycleref::{CycleError, Point, RunOut};
     let c = |pass_limit: u32| cycleref::G76Cycle {
         thread_height: 60,
@@ -273,6 +287,7 @@ fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
 /// 7, refused with 6.
 #[test]
 fn d2_counts_both_flanks() {
+    let _serial = serial();
     use cycleref::{CycleError, DepthMode, Flank, Infeed, PassKind, Point, RunOut};
     let c = |pass_limit: u32| cycleref::G76Cycle {
         thread_height: 10,
@@ -308,6 +323,7 @@ fn d2_counts_both_flanks() {
 /// crests, never between them or inside.
 #[test]
 fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
+    let _serial = serial();
     use cycleref::{CycleError, Point, RunOut};
     let c = |a_x: i64| g76_cycle(Point::new(a_x, 0), Point::new(40_000, -20_000), 500, RunOut::None);
     assert_eq!(cycleref::expand_g76(&c(42_500)).map(|_| ()), Err(CycleError::StartInsideThread));
@@ -338,6 +354,7 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
 /// with that value.
 #[test]
 fn g92_b_at_the_end_of_the_range() {
+    let _serial = serial();
     use cycleref::lead::{Lead, LeadWord};
     use cycleref::{CycleError, Field, G92Cycle, Length, Point, RunOut, StartAngle, Units, XMode};
     let cycle = |end_x: i64| G92Cycle {
@@ -375,6 +392,7 @@ fn g92_b_at_the_end_of_the_range() {
 /// 1 000 000 000 > 999 999 999.
 #[test]
 fn a_cycle_without_passes_checks_no_lead_in() {
+    let _serial = serial();
     use cycleref::{CycleError, Field, Length, Point, RunOut, Units};
     let c = |finishing_passes: u32| cycleref::G76Cycle {
         finishing_allowance: 1_000,
@@ -391,4 +409,58 @@ fn a_cycle_without_passes_checks_no_lead_in() {
     };
     assert_eq!(cycleref::expand_g76(&c(1)).map(|_| ()), Err(e));
     assert_eq!(cycleref_spec::g76::expand(&c(1)).map(|_| ()), Err(e));
+}
+
+/// `Schedule::resume` refuses every state outside the engine's ranges,
+/// one range at a time, and keeps the ones inside (the proofs only ever
+/// make states inside them, so `&&` could become `||`, or `resume` always
+/// `None`, and no harness noticed).
+#[test]
+fn a_schedule_is_resumed_only_inside_the_engine_ranges() {
+    let _serial = serial();
+    use cycleref::engine::schedule::Schedule;
+    use cycleref::units::MAX_LENGTH;
+    let max_level = MAX_LENGTH.unsigned_abs();
+    // Inside: Δd = 3000, Δdmin = 0, k - d = 10 000, one level made at 3000.
+    let s = Schedule::resume(3_000, 0, 10_000, 1, 3_000, false).expect("inside the ranges");
+    assert_eq!((s.level(), s.depth(), s.min_phase()), (1, 3_000, false));
+    // The ends of each range are inside.
+    assert!(Schedule::resume(MAX_LENGTH, MAX_LENGTH, MAX_LENGTH, max_level, MAX_LENGTH, true).is_some());
+    assert!(Schedule::resume(1, 0, 0, 0, 0, false).is_some());
+    // One value outside, the others inside: refused.
+    for (what, state) in [
+        ("Δd 0", Schedule::resume(0, 0, 10_000, 1, 3_000, false)),
+        ("Δd past the range", Schedule::resume(MAX_LENGTH + 1, 0, 10_000, 1, 3_000, false)),
+        ("Δdmin below 0", Schedule::resume(3_000, -1, 10_000, 1, 3_000, false)),
+        ("Δdmin past the range", Schedule::resume(3_000, MAX_LENGTH + 1, 10_000, 1, 3_000, false)),
+        ("k - d below 0", Schedule::resume(3_000, 0, -1, 0, 0, false)),
+        ("k - d past the range", Schedule::resume(3_000, 0, MAX_LENGTH + 1, 1, 3_000, false)),
+        ("depth below 0", Schedule::resume(3_000, 0, 10_000, 1, -1, false)),
+        ("depth past k - d", Schedule::resume(3_000, 0, 10_000, 1, 10_001, false)),
+        ("level past the range", Schedule::resume(3_000, 0, 10_000, max_level + 1, 3_000, false)),
+    ] {
+        assert!(state.is_none(), "{what}");
+    }
+    // The next level from there, by the law: round(3000·√2) = round(4242.64)
+    // = 4243, above 3000 + max(Δdmin, 1) = 3001, so the law stays in force.
+    let mut s = s;
+    assert_eq!(s.next_level(), Some(4_243));
+    assert_eq!((s.level(), s.depth(), s.min_phase()), (2, 4_243, false));
+}
+
+/// The law's square root is recorded for the unwind check with its own
+/// argument Δd²·n (loop counters): Δd = 3000, n = 2, x = 18 000 000, bits
+/// 25, g = 2^13 = 8192; y = (8192 + 2197)/2 = 5194; (5194 + 3465)/2 =
+/// 4329; (4329 + 4158)/2 = 4243; (4243 + 4242)/2 = 4242; (4242 + 4243)/2 =
+/// 4242 ≥ 4242: 5 iterations on u64. Δd² + n (9 000 002) and Δd²/n
+/// (4 500 000) take 4, so a wrong argument is seen.
+#[test]
+fn the_law_records_its_own_square_root() {
+    let _serial = serial();
+    use cycleref::engine::schedule::Schedule;
+    let mut s = Schedule::resume(3_000, 0, 10_000, 1, 3_000, false).expect("inside the ranges");
+    loop_counters::reset();
+    assert_eq!(s.next_level(), Some(4_243));
+    assert_eq!((ISQRT_U64.max(), ISQRT_U128.max()), (5, 0));
+    loop_counters::reset();
 }
