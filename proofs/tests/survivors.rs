@@ -441,6 +441,15 @@ fn a_schedule_is_resumed_only_inside_the_engine_ranges() {
     ] {
         assert!(state.is_none(), "{what}");
     }
+    // The same words at another state: every field of the state is the
+    // one given (none kept from before), inside the ranges only.
+    let t = s.with_state(5, 7_000, true).expect("inside the ranges");
+    assert_eq!((t.level(), t.depth(), t.min_phase()), (5, 7_000, true));
+    assert_eq!(t.with_state(1, 3_000, false), Some(s));
+    assert!(s.with_state(1, 10_001, false).is_none(), "depth past k - d");
+    assert!(s.with_state(1, -1, false).is_none(), "depth below 0");
+    assert!(s.with_state(max_level + 1, 3_000, false).is_none(), "level past the range");
+    assert!(s.with_state(max_level, 10_000, false).is_some(), "the ends");
     // The next level from there, by the law: round(3000·√2) = round(4242.64)
     // = 4243, above 3000 + max(Δdmin, 1) = 3001, so the law stays in force.
     let mut s = s;
