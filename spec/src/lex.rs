@@ -40,8 +40,9 @@ pub const INLINE_WORDS: usize = 6;
 pub struct Number<'a> {
     /// A leading minus sign.
     pub negative: bool,
-    /// The digits and the decimal point, as written (`060.640`, `.5`, `6`).
-    digits: &'a str,
+    /// The digits and the decimal point, as written (`060.640`, `.5`, `6`):
+    /// ASCII, kept as bytes (the lexer need not make a `str` of its line).
+    digits: &'a [u8],
     /// Where the decimal point is in `digits`, if there is one.
     point: Option<u32>,
 }
@@ -52,21 +53,31 @@ impl<'a> Number<'a> {
     #[must_use]
     pub fn new(negative: bool, digits: &'a str) -> Number<'a> {
         let point = digits.bytes().position(|b| b == b'.').and_then(|p| u32::try_from(p).ok());
-        Number { negative, digits, point }
+        Number { negative, digits: digits.as_bytes(), point }
     }
 
     /// Digits before the decimal point, as written (leading zeros kept).
     #[must_use]
     pub fn int_digits(&self) -> &'a str {
+        ascii(self.int_bytes())
+    }
+
+    /// Digits after the decimal point, when there is a decimal point.
+    #[must_use]
+    pub fn frac_digits(&self) -> Option<&'a str> {
+        self.frac_bytes().map(ascii)
+    }
+
+    /// [`Number::int_digits`] as bytes.
+    pub(crate) fn int_bytes(&self) -> &'a [u8] {
         match self.point {
             Some(p) => self.digits.get(..p as usize).unwrap_or_default(),
             None => self.digits,
         }
     }
 
-    /// Digits after the decimal point, when there is a decimal point.
-    #[must_use]
-    pub fn frac_digits(&self) -> Option<&'a str> {
+    /// [`Number::frac_digits`] as bytes.
+    pub(crate) fn frac_bytes(&self) -> Option<&'a [u8]> {
         self.point.map(|p| self.digits.get(p as usize + 1..).unwrap_or_default())
     }
 
@@ -80,13 +91,13 @@ impl<'a> Number<'a> {
     /// `None` when no [`Decimal`] holds it exactly.
     #[must_use]
     pub fn decimal(&self) -> Option<Decimal> {
-        let frac = self.frac_digits().unwrap_or("");
-        let int = self.int_digits();
+        let frac = self.frac_bytes().unwrap_or_default();
+        let int = self.int_bytes();
         // The usual case without an allocation: at most 28 decimals and a
         // mantissa below 2^96.
         let mut mantissa: u128 = 0;
         let mut fits = frac.len() <= 28;
-        for b in int.bytes().chain(frac.bytes()) {
+        for &b in int.iter().chain(frac) {
             match mantissa.checked_mul(10).and_then(|m| m.checked_add(u128::from(b - b'0'))) {
                 Some(m) if m < (1 << 96) => mantissa = m,
                 _ => {
@@ -108,10 +119,10 @@ impl<'a> Number<'a> {
         if self.negative {
             s.push('-');
         }
-        s.push_str(if int.is_empty() { "0" } else { int });
+        s.push_str(if int.is_empty() { "0" } else { ascii(int) });
         if !frac.is_empty() {
             s.push('.');
-            s.push_str(frac);
+            s.push_str(ascii(frac));
         }
         Decimal::from_str_exact(&s).ok()
     }
@@ -124,7 +135,7 @@ impl<'a> Number<'a> {
     #[must_use]
     pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
         let d = decimals as usize;
-        let bytes = self.digits.as_bytes();
+        let bytes = self.digits;
         if bytes.len() <= 18 && d <= 18 {
             // The usual word (`X64.400`) in one pass: at most 18 digits,
             // so no overflow; the value is `v / 10^frac`.
@@ -195,7 +206,7 @@ impl<'a> Number<'a> {
     pub fn is_positive(&self) -> bool {
         // Up to 19 digits and a point, `decimal` always holds the value.
         if self.digits.len() <= 20 {
-            !self.negative && self.digits.bytes().any(|b| matches!(b, b'1'..=b'9'))
+            !self.negative && self.digits.iter().any(|b| matches!(b, b'1'..=b'9'))
         } else {
             self.decimal().is_some_and(|d| d > Decimal::ZERO)
         }
@@ -204,7 +215,7 @@ impl<'a> Number<'a> {
     /// The digits before the point without leading zeros and the digits
     /// after it without trailing zeros.
     fn significant(&self) -> (&'a [u8], &'a [u8]) {
-        let b = self.digits.as_bytes();
+        let b = self.digits;
         let (mut int, mut frac): (&[u8], &[u8]) = match self.point {
             Some(p) => (b.get(..p as usize).unwrap_or_default(), b.get(p as usize + 1..).unwrap_or_default()),
             None => (b, &[]),
@@ -245,8 +256,9 @@ pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
     /// The word as written, from its letter to its last digit (spaces
-    /// between the letter and the number kept).
-    raw: &'a str,
+    /// between the letter and the number kept): ASCII, kept as bytes (the
+    /// lexer need not make a `str` of its line).
+    raw: &'a [u8],
     /// Where the number's digits start in `raw` (after the spaces and the
     /// sign), or [`SLOW`] when `raw` is too long for a byte: the lexer
     /// knows it, so [`Word::number`] need not look again. These three
@@ -268,7 +280,7 @@ impl Eq for Word<'_> {}
 
 impl std::fmt::Debug for Word<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Word").field("letter", &self.letter).field("raw", &self.raw).finish()
+        f.debug_struct("Word").field("letter", &self.letter).field("raw", &ascii(self.raw)).finish()
     }
 }
 
@@ -283,6 +295,12 @@ const POW10: [i64; 19] = {
     p
 };
 
+/// `bytes`, ASCII by construction (a word's text, a number's digits), as
+/// a `str`.
+fn ascii(bytes: &[u8]) -> &str {
+    std::str::from_utf8(bytes).unwrap_or_default()
+}
+
 /// "Not known": see [`Word`].
 const SLOW: u8 = u8::MAX;
 
@@ -291,7 +309,7 @@ impl<'a> Word<'a> {
     /// perhaps spaces or tabs, a sign, digits with at most one `.`.
     #[must_use]
     pub fn new(letter: char, raw: &'a str) -> Word<'a> {
-        Word { letter, raw, at: SLOW, point: SLOW, negative: false }
+        Word { letter, raw: raw.as_bytes(), at: SLOW, point: SLOW, negative: false }
     }
 
     /// The value.
@@ -302,7 +320,7 @@ impl<'a> Word<'a> {
             let point = (self.point != SLOW).then_some(u32::from(self.point));
             return Number { negative: self.negative, digits, point };
         }
-        let rest = self.raw.get(1..).unwrap_or_default().trim_start_matches([' ', '\t']);
+        let rest = ascii(self.raw.get(1..).unwrap_or_default()).trim_start_matches([' ', '\t']);
         match rest.as_bytes().first() {
             Some(b'-') => Number::new(true, rest.get(1..).unwrap_or_default()),
             Some(b'+') => Number::new(false, rest.get(1..).unwrap_or_default()),
@@ -313,10 +331,11 @@ impl<'a> Word<'a> {
     /// The word as written, without the spaces inside it (for messages).
     #[must_use]
     pub fn text(&self) -> Cow<'a, str> {
-        if self.raw.bytes().any(|b| b == b' ' || b == b'\t') {
-            Cow::Owned(self.raw.chars().filter(|c| !c.is_whitespace()).collect())
+        let raw = ascii(self.raw);
+        if raw.bytes().any(|b| b == b' ' || b == b'\t') {
+            Cow::Owned(raw.chars().filter(|c| !c.is_whitespace()).collect())
         } else {
-            Cow::Borrowed(self.raw)
+            Cow::Borrowed(raw)
         }
     }
 }
@@ -561,7 +580,7 @@ impl<'a> Lexer<'a> {
     pub(crate) fn resume(src: &'a [u8], at: Position) -> Lexer<'a> {
         let current = at.current.and_then(|(start, end, next)| {
             let bytes = src.get(start..end)?;
-            Some((Line { start, bytes, text: std::str::from_utf8(bytes).ok() }, next))
+            Some((Line { start, bytes }, next))
         });
         Lexer { src, pos: at.pos, line: at.line, current, done: at.done }
     }
@@ -585,8 +604,9 @@ impl<'a> Lexer<'a> {
         self.pos += advance;
         self.line += 1;
         let bytes = line.strip_suffix(b"\r").unwrap_or(line);
-        // One check per line: then every word is a slice of it for free.
-        Some(Line { start, bytes, text: std::str::from_utf8(bytes).ok() })
+        // No UTF-8 check of the line as a whole: `segment` checks every
+        // byte outside a comment, and a word is ASCII bytes.
+        Some(Line { start, bytes })
     }
 
     /// Reads one segment of `line` from `start` (up to a block end or the
@@ -688,14 +708,12 @@ impl<'a> Lexer<'a> {
     }
 }
 
-/// A line of the program, and its text when it is all UTF-8 (a line with
-/// a GBK comment is not).
+/// A line of the program.
 #[derive(Clone, Copy, Debug)]
 struct Line<'a> {
     /// Offset of the line's first byte in the source.
     start: usize,
     bytes: &'a [u8],
-    text: Option<&'a str>,
 }
 
 /// Where a block's worth of a line ends (its words go where the caller
@@ -869,11 +887,7 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
         pos = end;
     }
     // ASCII by construction: a letter, spaces, a sign, digits, a point.
-    let raw = match whole.text {
-        Some(t) => t.get(start..pos),
-        None => std::str::from_utf8(&line[start..pos]).ok(),
-    }
-    .unwrap_or_default();
+    let raw = &line[start..pos];
     // The number's place in `raw`, when both offsets fit a byte below
     // `SLOW` (they do but for hundreds of spaces or digits; an `at` of
     // `SLOW` itself sends `Word::number` the slow way).

@@ -804,7 +804,10 @@ impl State<'_> {
     fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
         let n = &w.number();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
-        let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
+        let mut frac = n.frac_bytes().unwrap_or_default();
+        while let [rest @ .., b'0'] = frac {
+            frac = rest;
+        }
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
         // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
@@ -822,8 +825,7 @@ impl State<'_> {
             return Err(out(range));
         }
         // Within the range table and MAX_LEAD_SCALE, the digits fit a u64.
-        let mantissa =
-            n.int_digits().bytes().chain(frac.bytes()).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
+        let mantissa = n.int_bytes().iter().chain(frac).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
         Ok(Lead { word, mantissa, scale })
     }
 
