@@ -328,6 +328,47 @@ impl<'a> Word<'a> {
         }
     }
 
+    /// [`Number::scaled`] of [`Word::number`], without making the number
+    /// on the usual path (where the lexer found the digits and the point).
+    #[inline]
+    pub(crate) fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
+        let d = decimals as usize;
+        let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+        if self.at == SLOW || digits.len() > 18 || d > 18 {
+            return self.number().scaled(decimals);
+        }
+        // As `Number::scaled`, with the point's place known: no test of
+        // every byte for it.
+        let (int, frac): (&[u8], &[u8]) = if self.point == SLOW {
+            (digits, &[])
+        } else {
+            let p = usize::from(self.point);
+            (digits.get(..p).unwrap_or_default(), digits.get(p + 1..).unwrap_or_default())
+        };
+        if int.len() + d > 18 {
+            return self.number().scaled(decimals);
+        }
+        let v = int.iter().chain(frac).fold(0_i64, |v, &b| v * 10 + i64::from(b - b'0'));
+        let v = if frac.len() <= d {
+            v * POW10[d - frac.len()]
+        } else if v % POW10[frac.len() - d] == 0 {
+            v / POW10[frac.len() - d]
+        } else {
+            return Some(None);
+        };
+        Some(Some(if self.negative { -v } else { v }))
+    }
+
+    /// True when the word's number has a decimal point.
+    #[inline]
+    pub(crate) fn has_point(&self) -> bool {
+        if self.at == SLOW {
+            self.number().has_point()
+        } else {
+            self.point != SLOW
+        }
+    }
+
     /// The word as written, without the spaces inside it (for messages).
     #[must_use]
     pub fn text(&self) -> Cow<'a, str> {
@@ -456,10 +497,21 @@ impl<'a> Block<'a> {
     /// # Errors
     ///
     /// [`ErrorKind::Duplicate`] when the address appears twice.
+    #[inline]
     pub fn get(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
         if !self.words.repeats(letter) {
-            return Ok(self.all(letter).next());
+            // The usual case, decided by the masks (inlined: most blocks
+            // have no S or F).
+            if !self.words.has(letter) {
+                return Ok(None);
+            }
+            return Ok(self.words.iter().find(|w| w.letter == letter));
         }
+        self.get_repeated(letter)
+    }
+
+    /// [`Block::get`] of a letter that is there more than once: the error.
+    fn get_repeated(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
         let mut it = self.all(letter);
         let first = it.next();
         if let Some(second) = it.next() {

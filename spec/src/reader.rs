@@ -690,6 +690,14 @@ fn to_increments(
     w: &Word<'_>,
     bare_increments: bool,
 ) -> Result<i64, ProgramError> {
+    // The usual word: a value in increments within range.
+    if !bare_increments || w.has_point() {
+        if let Some(Some(v)) = w.scaled(units.decimals()) {
+            if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() {
+                return Ok(v);
+            }
+        }
+    }
     let n = &w.number();
     let not_in_increments = || NotInIncrements { increment: increment_text(units) };
     // A value too large for any range table gets the range message, even
