@@ -486,6 +486,11 @@ pub struct Block<'a> {
 }
 
 impl<'a> Block<'a> {
+    /// No line, no text, no words: a block to read into.
+    pub(crate) fn empty() -> Block<'a> {
+        Block { line: 0, text: Cow::Borrowed(&[]), words: Words::new() }
+    }
+
     /// The words with address `letter`.
     pub fn all(&self, letter: char) -> impl Iterator<Item = &Word<'a>> {
         let words: &[Word<'a>] = if self.words.has(letter) { &self.words } else { &[] };
@@ -781,22 +786,27 @@ impl<'a> Iterator for Lexer<'a> {
     type Item = Result<Block<'a>, ProgramError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.done {
-            return None;
-        }
-        let r = self.next_block();
-        if !matches!(r, Some(Ok(_))) {
-            self.done = true;
-        }
-        r
+        let mut block = Block::empty();
+        Some(self.next_into(&mut block)?.map(|()| block))
     }
 }
 
 impl<'a> Lexer<'a> {
-    fn next_block(&mut self) -> Option<Result<Block<'a>, ProgramError>> {
-        // The block is built where it is returned from: its words are read
-        // into it, not moved into it.
-        let mut block = Block { line: 0, text: Cow::Borrowed(&[]), words: Words::new() };
+    /// The next block, read into `block` (whose words it replaces), as
+    /// [`Iterator::next`] gives it: the line-fed reader reads a block
+    /// where it stays until it moves into its item.
+    pub(crate) fn next_into(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
+        if self.done {
+            return None;
+        }
+        let r = self.next_block(block);
+        if !matches!(r, Some(Ok(()))) {
+            self.done = true;
+        }
+        r
+    }
+
+    fn next_block(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
         loop {
             let (line, start) = match self.current.take() {
                 Some(c) => c,
@@ -837,7 +847,7 @@ impl<'a> Lexer<'a> {
                 }
                 self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             }
-            return Some(Ok(block));
+            return Some(Ok(()));
         }
     }
 }
