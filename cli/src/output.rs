@@ -56,7 +56,7 @@ fn phase_two(e: impl std::fmt::Display) -> io::Error {
 }
 
 /// Calls `f` with each item of `job`'s program (the second phase).
-fn each_item(job: &Job, f: impl FnMut(Item<'_>) -> io::Result<()>) -> io::Result<()> {
+fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Result<()> {
     job.for_each_item(
         |failure| match failure {
             Failure::Message(m) => phase_two(m),
@@ -76,7 +76,7 @@ fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
 
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
-        match &item {
+        match item {
             Item::Source(b) => {
                 out.write_all(&b.text)?;
                 out.write_all(b"\n")?;
@@ -336,7 +336,7 @@ fn cycle_documents(job: &Job) -> io::Result<impl Iterator<Item = io::Result<Cycl
     let mut items = job.items().map_err(|f| phase_two(String::from(f)))?;
     Ok(std::iter::from_fn(move || loop {
         let document =
-            items.next_with(|item| Cycle::of(&item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))));
+            items.next_with(|item| Cycle::of(item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))));
         match document? {
             Ok(Some(document)) => return Some(document),
             Ok(None) => {}
