@@ -314,12 +314,19 @@ impl<'a> Word<'a> {
 
     /// The value.
     #[must_use]
+    #[inline]
     pub fn number(&self) -> Number<'a> {
         if self.at != SLOW {
             let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
             let point = (self.point != SLOW).then_some(u32::from(self.point));
             return Number { negative: self.negative, digits, point };
         }
+        self.number_slow()
+    }
+
+    /// [`Word::number`] read from the text (a word made by [`Word::new`],
+    /// or one too long for the lexer's offsets).
+    fn number_slow(&self) -> Number<'a> {
         let rest = ascii(self.raw.get(1..).unwrap_or_default()).trim_start_matches([' ', '\t']);
         match rest.as_bytes().first() {
             Some(b'-') => Number::new(true, rest.get(1..).unwrap_or_default()),

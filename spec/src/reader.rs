@@ -682,6 +682,7 @@ fn lone_g75(line: usize) -> ProgramError {
 /// # Errors
 ///
 /// A value finer than the increment or beyond the range tables.
+#[inline]
 pub fn length_word(
     machine: &Machine,
     units: Units,
@@ -713,13 +714,14 @@ fn range_err(units: Units, signed: bool) -> ErrorKind {
 
 /// A length word in increments. `bare_increments` says what a value
 /// without a decimal point means.
+#[inline]
 fn to_increments(
     units: Units,
     block: &Block<'_>,
     w: &Word<'_>,
     bare_increments: bool,
 ) -> Result<i64, ProgramError> {
-    // The usual word: a value in increments within range.
+    // The usual word (inlined): a value in increments within range.
     if !bare_increments || w.has_point() {
         if let Some(Some(v)) = w.scaled(units.decimals()) {
             if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() {
@@ -727,6 +729,17 @@ fn to_increments(
             }
         }
     }
+    increments_slow(units, block, w, bare_increments)
+}
+
+/// [`to_increments`] of every word, errors included.
+#[inline(never)]
+fn increments_slow(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
     let n = &w.number();
     let not_in_increments = || NotInIncrements { increment: increment_text(units) };
     // A value too large for any range table gets the range message, even
@@ -1084,6 +1097,7 @@ impl State<'_> {
         Ok(())
     }
 
+    #[inline]
     fn axis(
         &self,
         block: &Block<'_>,
@@ -1107,7 +1121,11 @@ impl State<'_> {
     }
 
     /// X, Z, U and W of a block; X with U or Z with W is an error.
+    #[inline]
     fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
+        if !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
+            return Ok((None, None, None, None));
+        }
         let (xw, zw, uw, ww) = if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.words.repeats(c)) {
             // `get` names the repeated word.
             (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?)
