@@ -436,18 +436,27 @@ impl<'a> Words<'a> {
     }
 
     /// Adds `w` after the others.
+    #[inline]
     pub fn push(&mut self, w: Word<'a>) {
         let bit = letter_bit(w.letter);
         self.repeated |= self.present & bit;
         self.present |= bit;
         match &mut self.store {
+            // The usual case, inlined: room in the inline words.
+            WordStore::Inline(v) if !v.is_full() => v.push(w),
+            _ => self.push_more(w),
+        }
+    }
+
+    /// [`Words::push`] past the inline words.
+    #[inline(never)]
+    fn push_more(&mut self, w: Word<'a>) {
+        match &mut self.store {
             WordStore::Inline(v) => {
-                if let Err(e) = v.try_push(w) {
-                    let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
-                    heap.extend(v.drain(..));
-                    heap.push(e.element());
-                    self.store = WordStore::Heap(heap);
-                }
+                let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
+                heap.extend(v.drain(..));
+                heap.push(w);
+                self.store = WordStore::Heap(heap);
             }
             WordStore::Heap(v) => v.push(w),
         }
@@ -903,7 +912,18 @@ fn decode_last(bytes: &[u8]) -> Option<char> {
 }
 
 /// `bytes` without leading and trailing white space (as `str::trim`).
-fn trim(mut bytes: &[u8]) -> &[u8] {
+#[inline]
+fn trim(bytes: &[u8]) -> &[u8] {
+    // The usual block: neither end is white space (a printable ASCII
+    // character is not).
+    match (bytes.first(), bytes.last()) {
+        (Some(f), Some(l)) if f.is_ascii_graphic() && l.is_ascii_graphic() => bytes,
+        _ => trim_ends(bytes),
+    }
+}
+
+/// [`trim`] of text that may start or end with white space.
+fn trim_ends(mut bytes: &[u8]) -> &[u8] {
     // The usual case: ASCII white space (as `char::is_whitespace`) at the
     // ends; the loops below take any other.
     let ascii_space = |b: &u8| matches!(b, b' ' | b'\t' | b'\n' | b'\x0b' | b'\x0c' | b'\r');
@@ -938,22 +958,26 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     let line = whole.bytes;
     let letter = char::from(line[start].to_ascii_uppercase());
     let mut pos = start + 1;
-    while pos < line.len() && (line[pos] == b' ' || line[pos] == b'\t') {
+    while let Some(b' ' | b'\t') = line.get(pos) {
         pos += 1;
     }
     let num_start = pos;
-    if pos < line.len() && (line[pos] == b'-' || line[pos] == b'+') {
+    if let Some(b'-' | b'+') = line.get(pos) {
         pos += 1;
     }
-    let digits = |from: usize| from + line[from..].iter().take_while(|b| b.is_ascii_digit()).count();
     let digits_start = pos;
-    pos = digits(pos);
+    while let Some(b'0'..=b'9') = line.get(pos) {
+        pos += 1;
+    }
     let int_len = pos - digits_start;
     let mut frac_len = None;
-    if pos < line.len() && line[pos] == b'.' {
-        let end = digits(pos + 1);
-        frac_len = Some(end - pos - 1);
-        pos = end;
+    if let Some(b'.') = line.get(pos) {
+        pos += 1;
+        let frac_start = pos;
+        while let Some(b'0'..=b'9') = line.get(pos) {
+            pos += 1;
+        }
+        frac_len = Some(pos - frac_start);
     }
     // ASCII by construction: a letter, spaces, a sign, digits, a point.
     let raw = &line[start..pos];
@@ -967,16 +991,23 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     let negative = digits_start > num_start && line[num_start] == b'-';
     let word = Word { letter, raw, at, point, negative };
     if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
-        return Err(ProgramError {
-            line: line_no,
-            word: Some(word.text().into_owned()),
-            kind: ErrorKind::Syntax(format!(
-                "the address `{letter}` without a number{}",
-                if num_start == pos { "" } else { " (only a sign)" }
-            )),
-        });
+        return Err(no_number(line_no, &word, num_start == pos));
     }
     Ok((word, pos))
+}
+
+/// The error of a word without a number (perhaps with a sign).
+#[cold]
+fn no_number(line_no: usize, word: &Word<'_>, no_sign: bool) -> ProgramError {
+    ProgramError {
+        line: line_no,
+        word: Some(word.text().into_owned()),
+        kind: ErrorKind::Syntax(format!(
+            "the address `{}` without a number{}",
+            word.letter,
+            if no_sign { "" } else { " (only a sign)" }
+        )),
+    }
 }
 
 #[cfg(test)]
