@@ -789,6 +789,7 @@ impl State<'_> {
     }
 
     /// A length word (reading R-POINT: FANUC bare values are increments).
+    #[inline(always)]
     fn length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         length_word(self.machine, self.units, block, w)
     }
@@ -1097,7 +1098,7 @@ impl State<'_> {
         Ok(())
     }
 
-    #[inline]
+    #[inline(always)]
     fn axis(
         &self,
         block: &Block<'_>,
@@ -1121,7 +1122,7 @@ impl State<'_> {
     }
 
     /// X, Z, U and W of a block; X with U or Z with W is an error.
-    #[inline]
+    #[inline(always)]
     fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
         if !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
             return Ok((None, None, None, None));
