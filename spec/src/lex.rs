@@ -811,6 +811,7 @@ impl<'a> Lexer<'a> {
     /// The next block, read into `block` (whose words it replaces), as
     /// [`Iterator::next`] gives it: the line-fed reader reads a block
     /// where it stays until it moves into its item.
+    #[inline(always)]
     pub(crate) fn next_into(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
         if self.done {
             return None;
@@ -822,6 +823,7 @@ impl<'a> Lexer<'a> {
         r
     }
 
+    #[inline(always)]
     fn next_block(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
         loop {
             let (line, start) = match self.current.take() {
