@@ -366,6 +366,23 @@ impl<'a> Word<'a> {
         Some(Some(if self.negative { -v } else { v }))
     }
 
+    /// [`Number::integer`] of [`Word::number`], without making the number
+    /// for a word of at most 18 digits without a point (a G or M code).
+    #[inline]
+    pub(crate) fn integer(&self) -> Option<i64> {
+        if self.at != SLOW && self.point == SLOW {
+            let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+            if digits.len() <= 18 {
+                let mut v = 0_i64;
+                for &b in digits {
+                    v = v * 10 + i64::from(b - b'0');
+                }
+                return Some(if self.negative { -v } else { v });
+            }
+        }
+        self.number().integer()
+    }
+
     /// True when the word's number has a decimal point.
     #[inline]
     pub(crate) fn has_point(&self) -> bool {

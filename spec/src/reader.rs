@@ -908,7 +908,7 @@ impl State<'_> {
         let mut g04 = false;
         let mut motion = None;
         for w in block.all('G') {
-            let whole = w.number().integer();
+            let whole = w.integer();
             match whole {
                 Some(c @ 0..=3) => motion = MotionMode::plain(c),
                 Some(32) => motion = Some(MotionMode::G32),
@@ -962,7 +962,7 @@ impl State<'_> {
         }
         // M codes and S.
         for w in block.all('M') {
-            match w.number().integer() {
+            match w.integer() {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
                 _ => {}
