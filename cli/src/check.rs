@@ -766,8 +766,8 @@ impl<'j> OurSteps<'j> {
             let (job, tracker, segment) = (self.job, &mut self.tracker, self.segment);
             let (regions, current) = (&mut self.regions, &mut self.current);
             let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, String> {
-                let Some(cycle) = Cycle::of(&item) else {
-                    let Item::Source(b) = &item else { return Ok(None) };
+                let Some(cycle) = Cycle::of(item) else {
+                    let Item::Source(b) = item else { return Ok(None) };
                     return match tracker.block(b) {
                         Ok(step) => Ok(step.map(|s| (s, segment))),
                         Err(e) => Err(format!("{}: {e}", job.name)),

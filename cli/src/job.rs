@@ -184,7 +184,7 @@ impl Job {
     pub fn for_each_item<E>(
         &self,
         read: impl Fn(Failure) -> E,
-        mut f: impl FnMut(Item<'_>) -> Result<(), E>,
+        mut f: impl FnMut(&Item<'_>) -> Result<(), E>,
     ) -> Result<(), E> {
         let mut items = self.items().map_err(&read)?;
         while let Some(r) = items.next_with(&mut f) {
@@ -302,7 +302,7 @@ impl Job {
 fn validate(text: &Text, machine: &Machine, engine: Engine) -> Result<Summary, ReadError> {
     let mut items = Items::new(text, machine)?;
     let mut validation = Validation::new(engine);
-    while let Some(r) = items.next_with(|item| validation.item(&item)) {
+    while let Some(r) = items.next_with(|item| validation.item(item)) {
         r?.map_err(ReadError::Run)?;
     }
     Ok(validation.summary(items.reader.units()))
@@ -478,7 +478,7 @@ impl<'j> Items<'j> {
 
     /// The next item, made into what the caller keeps by `f`; `None` after
     /// the last item or after an error.
-    pub fn next_with<T>(&mut self, f: impl FnOnce(Item<'_>) -> T) -> Option<Result<T, ReadError>> {
+    pub fn next_with<T>(&mut self, f: impl FnOnce(&Item<'_>) -> T) -> Option<Result<T, ReadError>> {
         if self.ended {
             return None;
         }
@@ -497,8 +497,9 @@ impl<'j> Items<'j> {
                 Input::Held(bytes) => bytes,
                 Input::Lines { buf, piece, .. } => &buf[..*piece],
             };
+            // The item is lent where it was returned: it does not move.
             match self.reader.next_in(piece) {
-                Some(Ok(item)) => return Some(Ok(f(item))),
+                Some(Ok(ref item)) => return Some(Ok(f(item))),
                 Some(Err(e)) => {
                     self.ended = true;
                     return Some(Err(e.into()));

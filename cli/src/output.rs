@@ -56,7 +56,7 @@ fn phase_two(e: impl std::fmt::Display) -> io::Error {
 }
 
 /// Calls `f` with each item of `job`'s program (the second phase).
-fn each_item(job: &Job, f: impl FnMut(Item<'_>) -> io::Result<()>) -> io::Result<()> {
+fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Result<()> {
     job.for_each_item(
         |failure| match failure {
             Failure::Message(m) => phase_two(m),
@@ -76,7 +76,7 @@ fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
 
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
-        match &item {
+        match item {
             Item::Source(b) => {
                 out.write_all(&b.text)?;
                 out.write_all(b"\n")?;
@@ -336,7 +336,7 @@ fn cycle_documents(job: &Job) -> io::Result<impl Iterator<Item = io::Result<Cycl
     let mut items = job.items().map_err(|f| phase_two(String::from(f)))?;
     Ok(std::iter::from_fn(move || loop {
         let document =
-            items.next_with(|item| Cycle::of(&item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))));
+            items.next_with(|item| Cycle::of(item).map(|c| moves(job, c).map(|m| CycleJson::new(c, m))));
         match document? {
             Ok(Some(document)) => return Some(document),
             Ok(None) => {}
@@ -370,7 +370,7 @@ struct JsonlSummary<'n> {
 fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     let (mut cycles, mut moves_total) = (0, 0_u64);
     each_item(job, |item| {
-        let Some(c) = Cycle::of(&item) else { return Ok(()) };
+        let Some(c) = Cycle::of(item) else { return Ok(()) };
         let m = moves(job, c)?;
         // Counted on a copy of the iterator: the summary line is exact.
         moves_total += m.clone().count() as u64;
@@ -422,7 +422,7 @@ const PASS_ROW: [&str; 8] = ["pass", "kind", "start", "flank", "depth", "cut", "
 
 fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
-        let Item::G76(call) = &item else { return Ok(()) };
+        let Item::G76(call) = item else { return Ok(()) };
         let u = call.cycle.units;
         writeln!(out, "{} at line {} ({}):", call.code.code(), call.block.line, job.name)?;
         let [a, b, c, d, e, f, g, h] = PASS_ROW;
@@ -460,7 +460,7 @@ fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// R-LCNC-PASS).
 fn linuxcnc_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
-        let Item::LinuxCncG76(call) = &item else { return Ok(()) };
+        let Item::LinuxCncG76(call) = item else { return Ok(()) };
         let u = call.cycle.units;
         writeln!(out, "G76 (LinuxCNC) at line {} ({}):", call.block.line, job.name)?;
         let heading = ["pass", "kind", "flank", "depth", "cut", "X", "Z from", "Z to"];
@@ -498,7 +498,7 @@ fn linuxcnc_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// Z, the X it starts from (Amn), the X it reaches (Bmn) and its pecks.
 fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     each_item(job, |item| {
-        let Item::G75(call) = &item else { return Ok(()) };
+        let Item::G75(call) = item else { return Ok(()) };
         let u = call.cycle.units;
         writeln!(out, "G75.1 at lines {}-{} ({}):", call.params_line, call.block.line, job.name)?;
         writeln!(
@@ -591,7 +591,7 @@ fn thread_heading<W: Write>(out: &mut W, title: &str, name: &str, columns: [&str
 fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let mut any = false;
     each_item(job, |item| {
-        let Item::G32(call) = &item else { return Ok(()) };
+        let Item::G32(call) = item else { return Ok(()) };
         if !any {
             any = true;
             let columns =
@@ -622,7 +622,7 @@ fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 fn g92_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let mut any = false;
     each_item(job, |item| {
-        let Item::G92(call) = &item else { return Ok(()) };
+        let Item::G92(call) = item else { return Ok(()) };
         if !any {
             any = true;
             let columns = ["line", "start", "B X", "B Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];

@@ -262,7 +262,7 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), (Failure, Option<Run
     job.for_each_item(
         |f| (f, None),
         |item| {
-            let Some(cycle) = Cycle::of(&item) else { return Ok(()) };
+            let Some(cycle) = Cycle::of(item) else { return Ok(()) };
             let (params_line, from, start) = match cycle {
                 Cycle::G76(c) => (c.params_line, None, c.cycle.start),
                 Cycle::G32(c) => (None, None, c.g32.start),
@@ -354,7 +354,7 @@ impl Stream {
             self.cycle = None;
             let cycle = &mut self.cycle;
             let next = self.reading.with_dependent_mut(|job, items| {
-                items.next_with(|item| match Cycle::of(&item) {
+                items.next_with(|item| match Cycle::of(item) {
                     Some(c) => job.expand(c).map(|m| Some((c.code(), c.line(), c.units(), m))),
                     None => Ok(None),
                 })

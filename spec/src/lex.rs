@@ -40,8 +40,9 @@ pub const INLINE_WORDS: usize = 6;
 pub struct Number<'a> {
     /// A leading minus sign.
     pub negative: bool,
-    /// The digits and the decimal point, as written (`060.640`, `.5`, `6`).
-    digits: &'a str,
+    /// The digits and the decimal point, as written (`060.640`, `.5`, `6`):
+    /// ASCII, kept as bytes (the lexer need not make a `str` of its line).
+    digits: &'a [u8],
     /// Where the decimal point is in `digits`, if there is one.
     point: Option<u32>,
 }
@@ -52,21 +53,31 @@ impl<'a> Number<'a> {
     #[must_use]
     pub fn new(negative: bool, digits: &'a str) -> Number<'a> {
         let point = digits.bytes().position(|b| b == b'.').and_then(|p| u32::try_from(p).ok());
-        Number { negative, digits, point }
+        Number { negative, digits: digits.as_bytes(), point }
     }
 
     /// Digits before the decimal point, as written (leading zeros kept).
     #[must_use]
     pub fn int_digits(&self) -> &'a str {
+        ascii(self.int_bytes())
+    }
+
+    /// Digits after the decimal point, when there is a decimal point.
+    #[must_use]
+    pub fn frac_digits(&self) -> Option<&'a str> {
+        self.frac_bytes().map(ascii)
+    }
+
+    /// [`Number::int_digits`] as bytes.
+    pub(crate) fn int_bytes(&self) -> &'a [u8] {
         match self.point {
             Some(p) => self.digits.get(..p as usize).unwrap_or_default(),
             None => self.digits,
         }
     }
 
-    /// Digits after the decimal point, when there is a decimal point.
-    #[must_use]
-    pub fn frac_digits(&self) -> Option<&'a str> {
+    /// [`Number::frac_digits`] as bytes.
+    pub(crate) fn frac_bytes(&self) -> Option<&'a [u8]> {
         self.point.map(|p| self.digits.get(p as usize + 1..).unwrap_or_default())
     }
 
@@ -80,13 +91,13 @@ impl<'a> Number<'a> {
     /// `None` when no [`Decimal`] holds it exactly.
     #[must_use]
     pub fn decimal(&self) -> Option<Decimal> {
-        let frac = self.frac_digits().unwrap_or("");
-        let int = self.int_digits();
+        let frac = self.frac_bytes().unwrap_or_default();
+        let int = self.int_bytes();
         // The usual case without an allocation: at most 28 decimals and a
         // mantissa below 2^96.
         let mut mantissa: u128 = 0;
         let mut fits = frac.len() <= 28;
-        for b in int.bytes().chain(frac.bytes()) {
+        for &b in int.iter().chain(frac) {
             match mantissa.checked_mul(10).and_then(|m| m.checked_add(u128::from(b - b'0'))) {
                 Some(m) if m < (1 << 96) => mantissa = m,
                 _ => {
@@ -108,10 +119,10 @@ impl<'a> Number<'a> {
         if self.negative {
             s.push('-');
         }
-        s.push_str(if int.is_empty() { "0" } else { int });
+        s.push_str(if int.is_empty() { "0" } else { ascii(int) });
         if !frac.is_empty() {
             s.push('.');
-            s.push_str(frac);
+            s.push_str(ascii(frac));
         }
         Decimal::from_str_exact(&s).ok()
     }
@@ -124,7 +135,7 @@ impl<'a> Number<'a> {
     #[must_use]
     pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
         let d = decimals as usize;
-        let bytes = self.digits.as_bytes();
+        let bytes = self.digits;
         if bytes.len() <= 18 && d <= 18 {
             // The usual word (`X64.400`) in one pass: at most 18 digits,
             // so no overflow; the value is `v / 10^frac`.
@@ -195,7 +206,7 @@ impl<'a> Number<'a> {
     pub fn is_positive(&self) -> bool {
         // Up to 19 digits and a point, `decimal` always holds the value.
         if self.digits.len() <= 20 {
-            !self.negative && self.digits.bytes().any(|b| matches!(b, b'1'..=b'9'))
+            !self.negative && self.digits.iter().any(|b| matches!(b, b'1'..=b'9'))
         } else {
             self.decimal().is_some_and(|d| d > Decimal::ZERO)
         }
@@ -204,7 +215,7 @@ impl<'a> Number<'a> {
     /// The digits before the point without leading zeros and the digits
     /// after it without trailing zeros.
     fn significant(&self) -> (&'a [u8], &'a [u8]) {
-        let b = self.digits.as_bytes();
+        let b = self.digits;
         let (mut int, mut frac): (&[u8], &[u8]) = match self.point {
             Some(p) => (b.get(..p as usize).unwrap_or_default(), b.get(p as usize + 1..).unwrap_or_default()),
             None => (b, &[]),
@@ -245,8 +256,9 @@ pub struct Word<'a> {
     /// The address, upper case.
     pub letter: char,
     /// The word as written, from its letter to its last digit (spaces
-    /// between the letter and the number kept).
-    raw: &'a str,
+    /// between the letter and the number kept): ASCII, kept as bytes (the
+    /// lexer need not make a `str` of its line).
+    raw: &'a [u8],
     /// Where the number's digits start in `raw` (after the spaces and the
     /// sign), or [`SLOW`] when `raw` is too long for a byte: the lexer
     /// knows it, so [`Word::number`] need not look again. These three
@@ -268,7 +280,7 @@ impl Eq for Word<'_> {}
 
 impl std::fmt::Debug for Word<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Word").field("letter", &self.letter).field("raw", &self.raw).finish()
+        f.debug_struct("Word").field("letter", &self.letter).field("raw", &ascii(self.raw)).finish()
     }
 }
 
@@ -283,6 +295,12 @@ const POW10: [i64; 19] = {
     p
 };
 
+/// `bytes`, ASCII by construction (a word's text, a number's digits), as
+/// a `str`.
+fn ascii(bytes: &[u8]) -> &str {
+    std::str::from_utf8(bytes).unwrap_or_default()
+}
+
 /// "Not known": see [`Word`].
 const SLOW: u8 = u8::MAX;
 
@@ -291,18 +309,25 @@ impl<'a> Word<'a> {
     /// perhaps spaces or tabs, a sign, digits with at most one `.`.
     #[must_use]
     pub fn new(letter: char, raw: &'a str) -> Word<'a> {
-        Word { letter, raw, at: SLOW, point: SLOW, negative: false }
+        Word { letter, raw: raw.as_bytes(), at: SLOW, point: SLOW, negative: false }
     }
 
     /// The value.
     #[must_use]
+    #[inline]
     pub fn number(&self) -> Number<'a> {
         if self.at != SLOW {
             let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
             let point = (self.point != SLOW).then_some(u32::from(self.point));
             return Number { negative: self.negative, digits, point };
         }
-        let rest = self.raw.get(1..).unwrap_or_default().trim_start_matches([' ', '\t']);
+        self.number_slow()
+    }
+
+    /// [`Word::number`] read from the text (a word made by [`Word::new`],
+    /// or one too long for the lexer's offsets).
+    fn number_slow(&self) -> Number<'a> {
+        let rest = ascii(self.raw.get(1..).unwrap_or_default()).trim_start_matches([' ', '\t']);
         match rest.as_bytes().first() {
             Some(b'-') => Number::new(true, rest.get(1..).unwrap_or_default()),
             Some(b'+') => Number::new(false, rest.get(1..).unwrap_or_default()),
@@ -310,13 +335,72 @@ impl<'a> Word<'a> {
         }
     }
 
+    /// [`Number::scaled`] of [`Word::number`], without making the number
+    /// on the usual path (where the lexer found the digits and the point).
+    #[inline]
+    pub(crate) fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
+        let d = decimals as usize;
+        let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+        if self.at == SLOW || digits.len() > 18 || d > 18 {
+            return self.number().scaled(decimals);
+        }
+        // As `Number::scaled`, with the point's place known: no test of
+        // every byte for it.
+        let (int, frac): (&[u8], &[u8]) = if self.point == SLOW {
+            (digits, &[])
+        } else {
+            let p = usize::from(self.point);
+            (digits.get(..p).unwrap_or_default(), digits.get(p + 1..).unwrap_or_default())
+        };
+        if int.len() + d > 18 {
+            return self.number().scaled(decimals);
+        }
+        let v = int.iter().chain(frac).fold(0_i64, |v, &b| v * 10 + i64::from(b - b'0'));
+        let v = if frac.len() <= d {
+            v * POW10[d - frac.len()]
+        } else if v % POW10[frac.len() - d] == 0 {
+            v / POW10[frac.len() - d]
+        } else {
+            return Some(None);
+        };
+        Some(Some(if self.negative { -v } else { v }))
+    }
+
+    /// [`Number::integer`] of [`Word::number`], without making the number
+    /// for a word of at most 18 digits without a point (a G or M code).
+    #[inline]
+    pub(crate) fn integer(&self) -> Option<i64> {
+        if self.at != SLOW && self.point == SLOW {
+            let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+            if digits.len() <= 18 {
+                let mut v = 0_i64;
+                for &b in digits {
+                    v = v * 10 + i64::from(b - b'0');
+                }
+                return Some(if self.negative { -v } else { v });
+            }
+        }
+        self.number().integer()
+    }
+
+    /// True when the word's number has a decimal point.
+    #[inline]
+    pub(crate) fn has_point(&self) -> bool {
+        if self.at == SLOW {
+            self.number().has_point()
+        } else {
+            self.point != SLOW
+        }
+    }
+
     /// The word as written, without the spaces inside it (for messages).
     #[must_use]
     pub fn text(&self) -> Cow<'a, str> {
-        if self.raw.bytes().any(|b| b == b' ' || b == b'\t') {
-            Cow::Owned(self.raw.chars().filter(|c| !c.is_whitespace()).collect())
+        let raw = ascii(self.raw);
+        if raw.bytes().any(|b| b == b' ' || b == b'\t') {
+            Cow::Owned(raw.chars().filter(|c| !c.is_whitespace()).collect())
         } else {
-            Cow::Borrowed(self.raw)
+            Cow::Borrowed(raw)
         }
     }
 }
@@ -369,18 +453,27 @@ impl<'a> Words<'a> {
     }
 
     /// Adds `w` after the others.
+    #[inline]
     pub fn push(&mut self, w: Word<'a>) {
         let bit = letter_bit(w.letter);
         self.repeated |= self.present & bit;
         self.present |= bit;
         match &mut self.store {
+            // The usual case, inlined: room in the inline words.
+            WordStore::Inline(v) if !v.is_full() => v.push(w),
+            _ => self.push_more(w),
+        }
+    }
+
+    /// [`Words::push`] past the inline words.
+    #[inline(never)]
+    fn push_more(&mut self, w: Word<'a>) {
+        match &mut self.store {
             WordStore::Inline(v) => {
-                if let Err(e) = v.try_push(w) {
-                    let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
-                    heap.extend(v.drain(..));
-                    heap.push(e.element());
-                    self.store = WordStore::Heap(heap);
-                }
+                let mut heap = Vec::with_capacity(2 * INLINE_WORDS);
+                heap.extend(v.drain(..));
+                heap.push(w);
+                self.store = WordStore::Heap(heap);
             }
             WordStore::Heap(v) => v.push(w),
         }
@@ -426,6 +519,11 @@ pub struct Block<'a> {
 }
 
 impl<'a> Block<'a> {
+    /// No line, no text, no words: a block to read into.
+    pub(crate) fn empty() -> Block<'a> {
+        Block { line: 0, text: Cow::Borrowed(&[]), words: Words::new() }
+    }
+
     /// The words with address `letter`.
     pub fn all(&self, letter: char) -> impl Iterator<Item = &Word<'a>> {
         let words: &[Word<'a>] = if self.words.has(letter) { &self.words } else { &[] };
@@ -437,10 +535,21 @@ impl<'a> Block<'a> {
     /// # Errors
     ///
     /// [`ErrorKind::Duplicate`] when the address appears twice.
+    #[inline]
     pub fn get(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
         if !self.words.repeats(letter) {
-            return Ok(self.all(letter).next());
+            // The usual case, decided by the masks (inlined: most blocks
+            // have no S or F).
+            if !self.words.has(letter) {
+                return Ok(None);
+            }
+            return Ok(self.words.iter().find(|w| w.letter == letter));
         }
+        self.get_repeated(letter)
+    }
+
+    /// [`Block::get`] of a letter that is there more than once: the error.
+    fn get_repeated(&self, letter: char) -> Result<Option<&Word<'a>>, ProgramError> {
         let mut it = self.all(letter);
         let first = it.next();
         if let Some(second) = it.next() {
@@ -561,7 +670,7 @@ impl<'a> Lexer<'a> {
     pub(crate) fn resume(src: &'a [u8], at: Position) -> Lexer<'a> {
         let current = at.current.and_then(|(start, end, next)| {
             let bytes = src.get(start..end)?;
-            Some((Line { start, bytes, text: std::str::from_utf8(bytes).ok() }, next))
+            Some((Line { start, bytes }, next))
         });
         Lexer { src, pos: at.pos, line: at.line, current, done: at.done }
     }
@@ -585,8 +694,9 @@ impl<'a> Lexer<'a> {
         self.pos += advance;
         self.line += 1;
         let bytes = line.strip_suffix(b"\r").unwrap_or(line);
-        // One check per line: then every word is a slice of it for free.
-        Some(Line { start, bytes, text: std::str::from_utf8(bytes).ok() })
+        // No UTF-8 check of the line as a whole: `segment` checks every
+        // byte outside a comment, and a word is ASCII bytes.
+        Some(Line { start, bytes })
     }
 
     /// Reads one segment of `line` from `start` (up to a block end or the
@@ -688,14 +798,12 @@ impl<'a> Lexer<'a> {
     }
 }
 
-/// A line of the program, and its text when it is all UTF-8 (a line with
-/// a GBK comment is not).
+/// A line of the program.
 #[derive(Clone, Copy, Debug)]
 struct Line<'a> {
     /// Offset of the line's first byte in the source.
     start: usize,
     bytes: &'a [u8],
-    text: Option<&'a str>,
 }
 
 /// Where a block's worth of a line ends (its words go where the caller
@@ -711,22 +819,29 @@ impl<'a> Iterator for Lexer<'a> {
     type Item = Result<Block<'a>, ProgramError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.done {
-            return None;
-        }
-        let r = self.next_block();
-        if !matches!(r, Some(Ok(_))) {
-            self.done = true;
-        }
-        r
+        let mut block = Block::empty();
+        Some(self.next_into(&mut block)?.map(|()| block))
     }
 }
 
 impl<'a> Lexer<'a> {
-    fn next_block(&mut self) -> Option<Result<Block<'a>, ProgramError>> {
-        // The block is built where it is returned from: its words are read
-        // into it, not moved into it.
-        let mut block = Block { line: 0, text: Cow::Borrowed(&[]), words: Words::new() };
+    /// The next block, read into `block` (whose words it replaces), as
+    /// [`Iterator::next`] gives it: the line-fed reader reads a block
+    /// where it stays until it moves into its item.
+    #[inline(always)]
+    pub(crate) fn next_into(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
+        if self.done {
+            return None;
+        }
+        let r = self.next_block(block);
+        if !matches!(r, Some(Ok(()))) {
+            self.done = true;
+        }
+        r
+    }
+
+    #[inline(always)]
+    fn next_block(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
         loop {
             let (line, start) = match self.current.take() {
                 Some(c) => c,
@@ -767,7 +882,7 @@ impl<'a> Lexer<'a> {
                 }
                 self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             }
-            return Some(Ok(block));
+            return Some(Ok(()));
         }
     }
 }
@@ -816,7 +931,18 @@ fn decode_last(bytes: &[u8]) -> Option<char> {
 }
 
 /// `bytes` without leading and trailing white space (as `str::trim`).
-fn trim(mut bytes: &[u8]) -> &[u8] {
+#[inline]
+fn trim(bytes: &[u8]) -> &[u8] {
+    // The usual block: neither end is white space (a printable ASCII
+    // character is not).
+    match (bytes.first(), bytes.last()) {
+        (Some(f), Some(l)) if f.is_ascii_graphic() && l.is_ascii_graphic() => bytes,
+        _ => trim_ends(bytes),
+    }
+}
+
+/// [`trim`] of text that may start or end with white space.
+fn trim_ends(mut bytes: &[u8]) -> &[u8] {
     // The usual case: ASCII white space (as `char::is_whitespace`) at the
     // ends; the loops below take any other.
     let ascii_space = |b: &u8| matches!(b, b' ' | b'\t' | b'\n' | b'\x0b' | b'\x0c' | b'\r');
@@ -851,29 +977,29 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     let line = whole.bytes;
     let letter = char::from(line[start].to_ascii_uppercase());
     let mut pos = start + 1;
-    while pos < line.len() && (line[pos] == b' ' || line[pos] == b'\t') {
+    while let Some(b' ' | b'\t') = line.get(pos) {
         pos += 1;
     }
     let num_start = pos;
-    if pos < line.len() && (line[pos] == b'-' || line[pos] == b'+') {
+    if let Some(b'-' | b'+') = line.get(pos) {
         pos += 1;
     }
-    let digits = |from: usize| from + line[from..].iter().take_while(|b| b.is_ascii_digit()).count();
     let digits_start = pos;
-    pos = digits(pos);
+    while let Some(b'0'..=b'9') = line.get(pos) {
+        pos += 1;
+    }
     let int_len = pos - digits_start;
     let mut frac_len = None;
-    if pos < line.len() && line[pos] == b'.' {
-        let end = digits(pos + 1);
-        frac_len = Some(end - pos - 1);
-        pos = end;
+    if let Some(b'.') = line.get(pos) {
+        pos += 1;
+        let frac_start = pos;
+        while let Some(b'0'..=b'9') = line.get(pos) {
+            pos += 1;
+        }
+        frac_len = Some(pos - frac_start);
     }
     // ASCII by construction: a letter, spaces, a sign, digits, a point.
-    let raw = match whole.text {
-        Some(t) => t.get(start..pos),
-        None => std::str::from_utf8(&line[start..pos]).ok(),
-    }
-    .unwrap_or_default();
+    let raw = &line[start..pos];
     // The number's place in `raw`, when both offsets fit a byte below
     // `SLOW` (they do but for hundreds of spaces or digits; an `at` of
     // `SLOW` itself sends `Word::number` the slow way).
@@ -884,16 +1010,23 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     let negative = digits_start > num_start && line[num_start] == b'-';
     let word = Word { letter, raw, at, point, negative };
     if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
-        return Err(ProgramError {
-            line: line_no,
-            word: Some(word.text().into_owned()),
-            kind: ErrorKind::Syntax(format!(
-                "the address `{letter}` without a number{}",
-                if num_start == pos { "" } else { " (only a sign)" }
-            )),
-        });
+        return Err(no_number(line_no, &word, num_start == pos));
     }
     Ok((word, pos))
+}
+
+/// The error of a word without a number (perhaps with a sign).
+#[cold]
+fn no_number(line_no: usize, word: &Word<'_>, no_sign: bool) -> ProgramError {
+    ProgramError {
+        line: line_no,
+        word: Some(word.text().into_owned()),
+        kind: ErrorKind::Syntax(format!(
+            "the address `{}` without a number{}",
+            word.letter,
+            if no_sign { "" } else { " (only a sign)" }
+        )),
+    }
 }
 
 #[cfg(test)]

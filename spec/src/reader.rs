@@ -361,6 +361,28 @@ struct G92Modal {
     face: Option<bool>,
 }
 
+/// What [`State::scan`] found a block to be: the rest of its reading
+/// takes the block itself.
+#[derive(Debug)]
+enum Next {
+    /// A block echoed as written: read in full.
+    Source,
+    /// A block of the LinuxCNC dialect (read by `linuxcnc_block`).
+    LinuxCnc,
+    /// G75.1 block 1: read in full, pending.
+    G75Params,
+    /// G75.1 block 2, after its block 1.
+    G75(G75Block1),
+    /// G76 (G78) block 1: read in full.
+    G76Params,
+    /// G76 (G78) block 2.
+    G76(Multipass),
+    /// A G32 block.
+    G32,
+    /// A G92 block.
+    G92,
+}
+
 /// The values of a G75.1 block 1, kept until block 2 arrives.
 #[derive(Clone, Debug, PartialEq, Eq)]
 struct G75Block1 {
@@ -570,8 +592,10 @@ impl<'m> LineReader<'m> {
             Some(at) => Lexer::resume(piece, at),
             None => Lexer::at_line(piece, self.line + 1),
         };
-        let block = match lexer.next() {
-            Some(Ok(b)) => b,
+        // The block is read where it stays until it moves into its item.
+        let mut block = Block::empty();
+        match lexer.next_into(&mut block) {
+            Some(Ok(())) => {}
             Some(Err(e)) => {
                 self.done = true;
                 return Some(Err(e));
@@ -580,7 +604,7 @@ impl<'m> LineReader<'m> {
                 self.line = lexer.line();
                 return None;
             }
-        };
+        }
         self.at = Some(lexer.position());
         if let Some(first) = &self.state.g75_pending {
             // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
@@ -589,7 +613,12 @@ impl<'m> LineReader<'m> {
                 return Some(Err(lone_g75(first.line)));
             }
         }
-        let item = self.state.block(block);
+        let item = match self.state.scan(&block) {
+            // The usual block: it moves once, into the item returned.
+            Ok(Next::Source) => return Some(Ok(Item::Source(block))),
+            Ok(next) => self.state.item(next, block),
+            Err(e) => Err(e),
+        };
         self.done = item.is_err();
         Some(item)
     }
@@ -653,6 +682,7 @@ fn lone_g75(line: usize) -> ProgramError {
 /// # Errors
 ///
 /// A value finer than the increment or beyond the range tables.
+#[inline]
 pub fn length_word(
     machine: &Machine,
     units: Units,
@@ -684,7 +714,27 @@ fn range_err(units: Units, signed: bool) -> ErrorKind {
 
 /// A length word in increments. `bare_increments` says what a value
 /// without a decimal point means.
+#[inline]
 fn to_increments(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
+    // The usual word (inlined): a value in increments within range.
+    if !bare_increments || w.has_point() {
+        if let Some(Some(v)) = w.scaled(units.decimals()) {
+            if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() {
+                return Ok(v);
+            }
+        }
+    }
+    increments_slow(units, block, w, bare_increments)
+}
+
+/// [`to_increments`] of every word, errors included.
+#[inline(never)]
+fn increments_slow(
     units: Units,
     block: &Block<'_>,
     w: &Word<'_>,
@@ -739,6 +789,7 @@ impl State<'_> {
     }
 
     /// A length word (reading R-POINT: FANUC bare values are increments).
+    #[inline(always)]
     fn length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         length_word(self.machine, self.units, block, w)
     }
@@ -804,7 +855,10 @@ impl State<'_> {
     fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
         let n = &w.number();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
-        let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
+        let mut frac = n.frac_bytes().unwrap_or_default();
+        while let [rest @ .., b'0'] = frac {
+            frac = rest;
+        }
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
         // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
@@ -822,14 +876,30 @@ impl State<'_> {
             return Err(out(range));
         }
         // Within the range table and MAX_LEAD_SCALE, the digits fit a u64.
-        let mantissa =
-            n.int_digits().bytes().chain(frac.bytes()).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
+        let mantissa = n.int_bytes().iter().chain(frac).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
         Ok(Lead { word, mantissa, scale })
     }
 
-    fn block<'a>(&mut self, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+    /// The item of `block` once [`State::scan`] has said what it is.
+    fn item<'a>(&mut self, next: Next, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+        match next {
+            Next::Source => Ok(Item::Source(block)),
+            Next::LinuxCnc => self.linuxcnc_block(block),
+            Next::G75Params => Ok(Item::G75Params(block)),
+            Next::G75(first) => self.g75_block2(first, block).map(Item::G75),
+            Next::G76Params => Ok(Item::G76Params(block)),
+            Next::G76(code) => self.g76_block2(block, code).map(Item::G76),
+            Next::G32 => self.g32_block(block).map(Item::G32),
+            Next::G92 => self.g92_block(block).map(Item::G92),
+        }
+    }
+
+    /// Reads `block` in the modal state as far as deciding its item: all
+    /// of it for a block that is not a cycle's (most are), which then
+    /// moves once, into its item.
+    fn scan(&mut self, block: &Block<'_>) -> Result<Next, ProgramError> {
         if self.machine.profile.dialect == Dialect::LinuxCnc {
-            return self.linuxcnc_block(block);
+            return Ok(Next::LinuxCnc);
         }
         // G codes of the block.
         let mut g76: Option<Multipass> = None;
@@ -838,7 +908,7 @@ impl State<'_> {
         let mut g04 = false;
         let mut motion = None;
         for w in block.all('G') {
-            let whole = w.number().integer();
+            let whole = w.integer();
             match whole {
                 Some(c @ 0..=3) => motion = MotionMode::plain(c),
                 Some(32) => motion = Some(MotionMode::G32),
@@ -849,7 +919,7 @@ impl State<'_> {
                 Some(78) => {
                     if self.machine.profile.g78.is_none() {
                         return Err(err(
-                            &block,
+                            block,
                             Some(w),
                             ErrorKind::Unsupported(format!(
                                 "G78 on the {} profile (G78 is GSK's enhanced thread-cutting cycle: use the \
@@ -860,13 +930,13 @@ impl State<'_> {
                     }
                     g76 = Some(Multipass::G78);
                 }
-                Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
-                Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
+                Some(20) => self.set_unit(block, w, InputUnit::Inch)?,
+                Some(21) => self.set_unit(block, w, InputUnit::Metric)?,
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
                 None if w.number().exact(1) == Some(751) => {
                     if !self.machine.profile.g75_1 {
                         return Err(err(
-                            &block,
+                            block,
                             Some(w),
                             ErrorKind::Unsupported(format!(
                                 "G75.1 on the {} profile (G75.1 is a GSK 980TDi cycle: use the gsk980 \
@@ -880,7 +950,7 @@ impl State<'_> {
                 _ => {
                     let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
                     return Err(err(
-                        &block,
+                        block,
                         Some(w),
                         ErrorKind::Unsupported(format!(
                             "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
@@ -892,7 +962,7 @@ impl State<'_> {
         }
         // M codes and S.
         for w in block.all('M') {
-            match w.number().integer() {
+            match w.integer() {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
                 _ => {}
@@ -925,38 +995,38 @@ impl State<'_> {
         if g75 {
             if motion.is_some() || g76.is_some() || g50 || g04 {
                 return Err(err(
-                    &block,
+                    block,
                     None,
                     ErrorKind::Unsupported("another G code of group 00/01 in the same block as G75.1".into()),
                 ));
             }
             return match self.g75_pending.take() {
                 None => {
-                    self.g75_pending = Some(self.g75_block1(&block)?);
-                    Ok(Item::G75Params(block))
+                    self.g75_pending = Some(self.g75_block1(block)?);
+                    Ok(Next::G75Params)
                 }
-                Some(first) => self.g75_block2(first, block).map(Item::G75),
+                Some(first) => Ok(Next::G75(first)),
             };
         }
         if let Some(code) = g76 {
             if motion.is_some() {
                 return Err(err(
-                    &block,
+                    block,
                     None,
                     ErrorKind::Unsupported(format!("a motion G code in the same block as {}", code.code())),
                 ));
             }
             return if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
-                self.g76_block2(block, code).map(Item::G76)
+                Ok(Next::G76(code))
             } else {
-                self.g76_block1(&block, code)?;
-                Ok(Item::G76Params(block))
+                self.g76_block1(block, code)?;
+                Ok(Next::G76Params)
             };
         }
         if let Some(f) = block.get('F')? {
             if f.number().is_positive() {
                 self.lead =
-                    Some(self.lead(&block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
+                    Some(self.lead(block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
             }
         }
         if let Some(m) = motion {
@@ -976,38 +1046,38 @@ impl State<'_> {
             } else {
                 "G92 cuts to its cut end point C"
             };
-            return Err(err(&block, None, ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule }));
+            return Err(err(block, None, ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule }));
         }
         if g04 {
-            return Ok(Item::Source(block));
+            return Ok(Next::Source);
         }
-        let (xw, zw, uw, ww) = Self::axis_words(&block)?;
+        let (xw, zw, uw, ww) = Self::axis_words(block)?;
         if g50 {
             if uw.is_some() || ww.is_some() {
-                return Err(err(&block, uw.or(ww), ErrorKind::Unsupported("U/W in G50".into())));
+                return Err(err(block, uw.or(ww), ErrorKind::Unsupported("U/W in G50".into())));
             }
             if let Some(w) = xw {
-                self.x = Some(self.length(&block, w)?);
+                self.x = Some(self.length(block, w)?);
             }
             if let Some(w) = zw {
-                self.z = Some(self.length(&block, w)?);
+                self.z = Some(self.length(block, w)?);
             }
-            return Ok(Item::Source(block));
+            return Ok(Next::Source);
         }
         if xw.is_some() || zw.is_some() || uw.is_some() || ww.is_some() {
             if self.motion == MotionMode::G32 {
-                return self.g32_block(block).map(Item::G32);
+                return Ok(Next::G32);
             }
             if self.motion == MotionMode::G92 {
-                return self.g92_block(block).map(Item::G92);
+                return Ok(Next::G92);
             }
             self.g32_j = None;
             self.g32_k = None;
-            self.x = self.axis(&block, xw, uw, self.x)?;
-            self.z = self.axis(&block, zw, ww, self.z)?;
+            self.x = self.axis(block, xw, uw, self.x)?;
+            self.z = self.axis(block, zw, ww, self.z)?;
             self.moved = true;
         }
-        Ok(Item::Source(block))
+        Ok(Next::Source)
     }
 
     /// True once the unit can no longer change (reading R-UNITS): after
@@ -1028,6 +1098,7 @@ impl State<'_> {
         Ok(())
     }
 
+    #[inline(always)]
     fn axis(
         &self,
         block: &Block<'_>,
@@ -1051,7 +1122,11 @@ impl State<'_> {
     }
 
     /// X, Z, U and W of a block; X with U or Z with W is an error.
+    #[inline(always)]
     fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
+        if !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
+            return Ok((None, None, None, None));
+        }
         let (xw, zw, uw, ww) = if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.words.repeats(c)) {
             // `get` names the repeated word.
             (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?)

@@ -279,11 +279,11 @@ pub fn run(
     job.for_each_item(
         |f| f,
         |item| {
-            let Some(cycle) = Cycle::of(&item) else {
+            let Some(cycle) = Cycle::of(item) else {
                 // A block that moves is one move of the toolpath (as `check`
                 // counts them; approximately: a block to where the tool is
                 // counts too, which the overlay's slack absorbs).
-                if let Item::Source(b) = &item {
+                if let Item::Source(b) = item {
                     position += usize::from(['X', 'Z', 'U', 'W'].iter().any(|&c| b.has(c)));
                 }
                 return Ok(());
