@@ -473,3 +473,45 @@ fn the_law_records_its_own_square_root() {
     assert_eq!((ISQRT_U64.max(), ISQRT_U128.max()), (5, 0));
     loop_counters::reset();
 }
+
+/// The contracts' predicates refuse a wrong answer at each bound (the
+/// contract tests run them on the kernels' right answers only, so a bound
+/// loosened by one, `<` → `<=`, went unseen: `contracts.rs` 32:27, 50:26,
+/// 71:36, 71:69, 90:31). Worked by hand: √16 = 4, so 3 is not
+/// `isqrt_floor(16)` ((3 + 1)² = 16 is not above 16); round(√12) = 3
+/// (√12 = 3.46), so 4 is not `round_sqrt(12)` (4·3 = 12 is not below 12),
+/// round(√20) = 4 (√20 = 4.47; 20 ≤ 4·5) and round(√21) = 5; 5/2 = 2.5
+/// rounds away from zero to 3, so 2 is not `round_div(5, 2)` (the tie's
+/// remainder 1 has num's sign), nor −2 `round_div(−5, 2)`; magnitudes of
+/// 2^126 are outside `round_div`'s precondition, 2^126 − 1 inside.
+#[test]
+fn the_contracts_refuse_a_wrong_answer_at_each_bound() {
+    let _serial = serial();
+    use cycleref::engine::contracts::{
+        isqrt_floor_ensures, round_div_ensures, round_div_requires, round_sqrt_ensures,
+    };
+    assert!(isqrt_floor_ensures(16, 4));
+    assert!(!isqrt_floor_ensures(16, 3));
+    assert!(!isqrt_floor_ensures(16, 5));
+    assert!(isqrt_floor_ensures(15, 3));
+    assert!(!isqrt_floor_ensures(15, 4));
+    assert!(round_sqrt_ensures(12, 3));
+    assert!(!round_sqrt_ensures(12, 4));
+    assert!(round_sqrt_ensures(13, 4));
+    assert!(round_sqrt_ensures(20, 4));
+    assert!(!round_sqrt_ensures(21, 4));
+    assert!(round_sqrt_ensures(21, 5));
+    assert!(round_div_ensures(5, 2, 3));
+    assert!(!round_div_ensures(5, 2, 2));
+    assert!(round_div_ensures(-5, 2, -3));
+    assert!(!round_div_ensures(-5, 2, -2));
+    assert!(round_div_ensures(7, 3, 2));
+    assert!(!round_div_ensures(7, 3, 3));
+    let edge = 1_i128 << 126;
+    assert!(round_div_requires(edge - 1, 1));
+    assert!(!round_div_requires(edge, 1));
+    assert!(!round_div_requires(-edge, 1));
+    assert!(round_div_requires(1, edge - 1));
+    assert!(!round_div_requires(1, edge));
+    assert!(!round_div_requires(1, 0));
+}
