@@ -36,7 +36,7 @@ pub const INLINE_WORDS: usize = 6;
 
 /// A number as written after an address: a sign, digits, perhaps a
 /// decimal point and more digits, borrowed from the program's text.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 pub struct Number<'a> {
     /// A leading minus sign.
     pub negative: bool,
@@ -299,6 +299,17 @@ const POW10: [i64; 19] = {
 /// a `str`.
 fn ascii(bytes: &[u8]) -> &str {
     std::str::from_utf8(bytes).unwrap_or_default()
+}
+
+impl std::fmt::Debug for Number<'_> {
+    /// The digits as text (they are kept as bytes).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Number")
+            .field("negative", &self.negative)
+            .field("digits", &ascii(self.digits))
+            .field("point", &self.point)
+            .finish()
+    }
 }
 
 /// "Not known": see [`Word`].

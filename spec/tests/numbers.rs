@@ -143,3 +143,13 @@ fn lexer_edges() {
         }
     }
 }
+
+/// A number's `Debug` shows its digits as text (they are kept as bytes).
+#[test]
+fn a_number_debugs_as_text() {
+    let w = Lexer::new(b"X-060.640").next().unwrap().unwrap().words[0];
+    assert_eq!(
+        format!("{:?}", w.number()),
+        r#"Number { negative: true, digits: "060.640", point: Some(3) }"#
+    );
+}
