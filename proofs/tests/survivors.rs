@@ -515,3 +515,38 @@ fn the_contracts_refuse_a_wrong_answer_at_each_bound() {
     assert!(!round_div_requires(1, edge));
     assert!(!round_div_requires(1, 0));
 }
+
+/// The same for the other predicates the second half of the contracts.rs
+/// run left alive (110:5-31 `div_requires`, 119:42 `floor_div_ensures`,
+/// 132:42 `ceil_div_ensures`,
+/// 155:15/29/39 the sign check of `mul_tan_round_ensures`). Worked by hand:
+/// `floor_div` and `ceil_div` need a positive divisor and a dividend below
+/// 2^120 in magnitude; 6/2 = 3, so 2 is not `floor_div(6, 2)` (the
+/// remainder 2 is not below 2); tan 45° = 1 (h = 90 half-degrees), so
+/// `mul_tan_round(±100, 90)` is ±100 and never the other sign.
+#[test]
+fn the_other_contracts_refuse_a_wrong_answer_at_each_bound() {
+    let _serial = serial();
+    use cycleref::engine::contracts::{
+        ceil_div_ensures, div_requires, floor_div_ensures, mul_tan_round_ensures,
+    };
+    let edge = 1_i128 << 120;
+    assert!(div_requires(1, 1));
+    assert!(!div_requires(1, 0));
+    assert!(!div_requires(1, -1));
+    assert!(div_requires(edge - 1, 1));
+    assert!(!div_requires(edge, 1));
+    assert!(!div_requires(-edge, 1));
+    assert!(floor_div_ensures(6, 2, 3));
+    assert!(!floor_div_ensures(6, 2, 2));
+    assert!(floor_div_ensures(-7, 2, -4));
+    assert!(!floor_div_ensures(-7, 2, -3));
+    // ceil(6/2) = 3, so 4 is not `ceil_div(6, 2)` (4·2 − 6 = 2 is not below 2).
+    assert!(ceil_div_ensures(6, 2, 3));
+    assert!(!ceil_div_ensures(6, 2, 4));
+    assert!(mul_tan_round_ensures(100, 90, Some(100)));
+    assert!(mul_tan_round_ensures(-100, 90, Some(-100)));
+    assert!(!mul_tan_round_ensures(-100, 90, Some(100)));
+    assert!(!mul_tan_round_ensures(100, 90, Some(-100)));
+    assert!(mul_tan_round_ensures(0, 90, Some(0)));
+}
