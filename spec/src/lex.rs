@@ -135,33 +135,10 @@ impl<'a> Number<'a> {
     #[must_use]
     pub fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
         let d = decimals as usize;
-        let bytes = self.digits;
-        if bytes.len() <= 18 && d <= 18 {
-            // The usual word (`X64.400`) in one pass: at most 18 digits,
-            // so no overflow; the value is `v / 10^frac`.
-            let (mut v, mut frac, mut after) = (0_i64, 0_usize, false);
-            for &b in bytes {
-                if b == b'.' {
-                    after = true;
-                } else {
-                    v = v * 10 + i64::from(b - b'0');
-                    frac += usize::from(after);
-                }
-            }
-            let int = bytes.len() - frac - usize::from(after);
-            // `int + d ≤ 18` digits: v·10^(d − frac) fits (as below, but
-            // counting leading zeros: a longer number takes the way below).
-            if int + d <= 18 {
-                let v = if frac <= d {
-                    v * POW10[d - frac]
-                } else if v % POW10[frac - d] == 0 {
-                    // Finer digits that are all zeros (`1.50000`, d = 3).
-                    v / POW10[frac - d]
-                } else {
-                    return Some(None);
-                };
-                return Some(Some(if self.negative { -v } else { v }));
-            }
+        if let Some(short) =
+            scaled_short(self.int_bytes(), self.frac_bytes().unwrap_or_default(), self.negative, d)
+        {
+            return Some(short);
         }
         let (int, frac) = self.significant();
         if frac.len() > d {
@@ -312,6 +289,28 @@ impl std::fmt::Debug for Number<'_> {
     }
 }
 
+/// [`Number::scaled`] of the digits `int` `.` `frac` (leading and trailing
+/// zeros included) when they are short enough to need no care: at most 18
+/// digits, and at most 18 once scaled by 10^`d` (so no overflow); `None`
+/// otherwise, for the caller's longer way (which drops the zeros first).
+/// The one shortcut of [`Number::scaled`] and [`Word::scaled`].
+#[inline]
+fn scaled_short(int: &[u8], frac: &[u8], negative: bool, d: usize) -> Option<Option<i64>> {
+    if int.len() + frac.len() > 18 || int.len() + d > 18 {
+        return None;
+    }
+    let v = int.iter().chain(frac).fold(0_i64, |v, &b| v * 10 + i64::from(b - b'0'));
+    let v = if frac.len() <= d {
+        v * POW10[d - frac.len()]
+    } else if v % POW10[frac.len() - d] == 0 {
+        // Finer digits that are all zeros (`1.50000`, d = 3).
+        v / POW10[frac.len() - d]
+    } else {
+        return Some(None);
+    };
+    Some(Some(if negative { -v } else { v }))
+}
+
 /// "Not known": see [`Word`].
 const SLOW: u8 = u8::MAX;
 
@@ -350,31 +349,19 @@ impl<'a> Word<'a> {
     /// on the usual path (where the lexer found the digits and the point).
     #[inline]
     pub(crate) fn scaled(&self, decimals: u32) -> Option<Option<i64>> {
-        let d = decimals as usize;
-        let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
-        if self.at == SLOW || digits.len() > 18 || d > 18 {
-            return self.number().scaled(decimals);
+        if self.at != SLOW {
+            let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+            let (int, frac): (&[u8], &[u8]) = if self.point == SLOW {
+                (digits, &[])
+            } else {
+                let p = usize::from(self.point);
+                (digits.get(..p).unwrap_or_default(), digits.get(p + 1..).unwrap_or_default())
+            };
+            if let Some(short) = scaled_short(int, frac, self.negative, decimals as usize) {
+                return Some(short);
+            }
         }
-        // As `Number::scaled`, with the point's place known: no test of
-        // every byte for it.
-        let (int, frac): (&[u8], &[u8]) = if self.point == SLOW {
-            (digits, &[])
-        } else {
-            let p = usize::from(self.point);
-            (digits.get(..p).unwrap_or_default(), digits.get(p + 1..).unwrap_or_default())
-        };
-        if int.len() + d > 18 {
-            return self.number().scaled(decimals);
-        }
-        let v = int.iter().chain(frac).fold(0_i64, |v, &b| v * 10 + i64::from(b - b'0'));
-        let v = if frac.len() <= d {
-            v * POW10[d - frac.len()]
-        } else if v % POW10[frac.len() - d] == 0 {
-            v / POW10[frac.len() - d]
-        } else {
-            return Some(None);
-        };
-        Some(Some(if self.negative { -v } else { v }))
+        self.number().scaled(decimals)
     }
 
     /// [`Number::integer`] of [`Word::number`], without making the number
