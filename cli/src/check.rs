@@ -823,6 +823,12 @@ impl Iterator for OurSteps<'_> {
     }
 }
 
+/// The error of a trace's line `line` whose byte at offset `at` (from 0)
+/// is not UTF-8.
+fn not_utf8(line: usize, at: usize) -> String {
+    format!("line {line}, byte {}: not UTF-8 text", at + 1)
+}
+
 /// One line of a trace read from a stream, checked to be UTF-8 (the
 /// line end removed); `None` at the end.
 fn trace_line<'b>(
@@ -841,7 +847,7 @@ fn trace_line<'b>(
     }
     let text = match std::str::from_utf8(buf) {
         Ok(t) => t,
-        Err(e) => return Some(Err(format!("line {line}, byte {}: not UTF-8 text", e.valid_up_to() + 1))),
+        Err(e) => return Some(Err(not_utf8(line, e.valid_up_to()))),
     };
     // A byte-order mark may start the first line.
     Some(Ok(if line == 1 { text.strip_prefix('\u{feff}').unwrap_or(text) } else { text }))
@@ -907,7 +913,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             if let Some(bad) = self.bad.filter(|&b| b < end) {
                 // A line end is ASCII: the line's own bytes decide, as
                 // `from_utf8` of the line alone would.
-                return Err(format!("line {}, byte {}: not UTF-8 text", self.line, bad - self.at + 1));
+                return Err(not_utf8(self.line, bad - self.at));
             }
             let mut text = piece.get(self.at..end).unwrap_or_default();
             self.at = next;
@@ -1713,6 +1719,12 @@ struct Grouper<I> {
 /// window.
 const SPARE_GROUPS: usize = 2 * WINDOW_GROUPS + 16;
 
+/// The most moves an emptied group may have room for and still be kept:
+/// a pass has a handful; a group grown to thousands (a long run of plain
+/// moves, up to [`GROUP_MOVES`]) is dropped, so that reused groups never
+/// hold more room than the passes they carry need.
+const SPARE_ROOM: usize = 64;
+
 impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
     fn new(steps: I) -> Grouper<I> {
         Grouper { steps, next: None, count: 0, spare: Vec::new() }
@@ -1720,7 +1732,7 @@ impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
 
     /// Takes back a group that was compared, to fill it again.
     fn recycle(&mut self, mut g: Group) {
-        if self.spare.len() < SPARE_GROUPS {
+        if self.spare.len() < SPARE_GROUPS && g.rapids.capacity() + g.cuts.capacity() <= SPARE_ROOM {
             g.rapids.clear();
             g.cuts.clear();
             self.spare.push(g);
