@@ -15,7 +15,7 @@ pub fn fixed(v: i64, units: Units) -> String {
 /// A length in increments, displayed as a decimal with the increment's
 /// number of decimals (`64.400`), without an allocation. Width and
 /// alignment flags apply (`{:>12}`).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Fixed {
     value: i64,
     decimals: u32,
@@ -109,9 +109,76 @@ impl serde::Serialize for Fixed {
     }
 }
 
+/// A value whose text is written at the end of a [`FIXED_BUF`] buffer:
+/// [`Fixed`] and [`LeadText`].
+pub trait EncodeAtEnd: Copy + PartialEq {
+    /// The text, written so that it ends at the end of `buf`.
+    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8];
+
+    /// A hash of the value (equal values, equal hashes).
+    fn hash(self) -> u64;
+}
+
+impl EncodeAtEnd for Fixed {
+    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        self.encode(buf)
+    }
+
+    fn hash(self) -> u64 {
+        self.value.unsigned_abs() ^ u64::from(self.decimals)
+    }
+}
+
+/// How many texts a [`RecentText`] keeps (a power of two).
+const RECENT: usize = 8;
+
+/// The texts last written for the values of one place of a line (the X of
+/// a move, its lead), so that a value written again is copied, not encoded
+/// again: the passes of a thread return to the same retract X, start Z and
+/// end Z, and every G32 block of a cycle has the same lead. Each value has
+/// one place, chosen by its hash (a direct-mapped cache: one comparison a
+/// look-up); a value that finds another in its place takes it.
+#[derive(Clone, Debug)]
+pub struct RecentText<K> {
+    keys: [Option<K>; RECENT],
+    texts: [[u8; FIXED_BUF]; RECENT],
+    starts: [usize; RECENT],
+}
+
+impl<K: EncodeAtEnd> RecentText<K> {
+    /// Nothing written yet.
+    #[must_use]
+    pub fn new() -> RecentText<K> {
+        RecentText { keys: [None; RECENT], texts: [[0; FIXED_BUF]; RECENT], starts: [FIXED_BUF; RECENT] }
+    }
+
+    /// The text of `key`: the one kept if it is the value in its place,
+    /// else its text encoded (and kept there).
+    #[inline]
+    pub fn text(&mut self, key: K) -> &[u8] {
+        // Fibonacci hashing: the top bits of the product spread values that
+        // differ in their low digits over the places.
+        #[allow(clippy::cast_possible_truncation)]
+        let slot =
+            (key.hash().wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - RECENT.trailing_zeros())) as usize;
+        let slot = slot % RECENT;
+        if self.keys[slot] != Some(key) {
+            self.starts[slot] = FIXED_BUF - key.encode_at_end(&mut self.texts[slot]).len();
+            self.keys[slot] = Some(key);
+        }
+        &self.texts[slot][self.starts[slot]..]
+    }
+}
+
+impl<K: EncodeAtEnd> Default for RecentText<K> {
+    fn default() -> Self {
+        RecentText::new()
+    }
+}
+
 /// The lead word as programmed (`F6.0`, `F1.5`, `I20.0`), displayed without
 /// an allocation.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LeadText(pub cycleref::Lead);
 
 impl LeadText {
@@ -137,6 +204,16 @@ impl LeadText {
             LeadWord::I => b'I',
         };
         &buf[start..]
+    }
+}
+
+impl EncodeAtEnd for LeadText {
+    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        self.encode(buf)
+    }
+
+    fn hash(self) -> u64 {
+        self.0.mantissa ^ u64::from(self.0.scale)
     }
 }
 
@@ -271,6 +348,43 @@ mod tests {
             (LeadWord::F, 1, 6, "F0.000001"),
         ] {
             assert_eq!(LeadText(Lead { word, mantissa, scale }).to_string(), text);
+        }
+    }
+
+    /// `RecentText` gives the text a fresh encoding gives, whatever came
+    /// before: values that repeat (as a thread's retract X does), values
+    /// that share a place and push each other out, the same value in other
+    /// units, and leads.
+    #[test]
+    fn recent_text_is_the_text_of_the_value_asked_for() {
+        let mm = Units { system: IncrementSystem::IsB, unit: InputUnit::Metric };
+        let inch = Units { system: IncrementSystem::IsC, unit: InputUnit::Inch };
+        let mut recent = RecentText::<Fixed>::new();
+        let mut x = 0x2545_F491_4F6C_DD1D_u64;
+        let pool: Vec<i64> =
+            (0..40).map(|i| (i * 7_919 - 130_000) * if i % 3 == 0 { -1 } else { 1 }).collect();
+        for step in 0..50_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Mostly values from a small pool (hits and collisions), some
+            // fresh ones, both units.
+            let v = if step % 5 == 0 { (x >> 1) as i64 } else { pool[(x % 40) as usize] };
+            let u = if x & (1 << 40) == 0 { mm } else { inch };
+            let want = Fixed::new(v, u).to_string();
+            assert_eq!(std::str::from_utf8(recent.text(Fixed::new(v, u))).unwrap(), want, "{v}");
+        }
+        let mut leads = RecentText::<LeadText>::new();
+        for (word, mantissa, scale, text) in [
+            (LeadWord::F, 6, 0, "F6.0"),
+            (LeadWord::F, 6, 0, "F6.0"),
+            (LeadWord::I, 6, 0, "I6.0"),
+            (LeadWord::F, 60, 1, "F6.0"),
+            (LeadWord::F, 15, 1, "F1.5"),
+            (LeadWord::F, 6, 0, "F6.0"),
+        ] {
+            let got = leads.text(LeadText(Lead { word, mantissa, scale }));
+            assert_eq!(std::str::from_utf8(got).unwrap(), text);
         }
     }
 

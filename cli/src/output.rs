@@ -16,7 +16,7 @@ use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, Restore};
 
-use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, FIXED_BUF};
+use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
 use crate::job::{Failure, Job};
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
 
@@ -75,6 +75,7 @@ fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
 }
 
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
+    let t = &mut NcText::default();
     each_item(job, |item| {
         match item {
             Item::Source(b) => {
@@ -82,19 +83,19 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
                 out.write_all(b"\n")?;
             }
             Item::G76Params(_) | Item::G75Params(_) => {}
-            Item::G76(call) => nc_g76(out, call, moves(job, Cycle::G76(call))?, job.q_unit)?,
+            Item::G76(call) => nc_g76(out, t, call, moves(job, Cycle::G76(call))?, job.q_unit)?,
             Item::G32(call) => {
                 for m in moves(job, Cycle::G32(call))? {
                     if call.code == "G33" {
-                        nc_g33_move(out, &m, call.g32.units)?;
+                        nc_g33_move(out, t, &m, call.g32.units)?;
                     } else {
-                        nc_move(out, &m, call.g32.units, job.q_unit)?;
+                        nc_move(out, t, &m, call.g32.units, job.q_unit)?;
                     }
                 }
             }
-            Item::G75(call) => nc_g75(out, call, moves(job, Cycle::G75(call))?)?,
-            Item::G92(call) => nc_g92(out, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
-            Item::LinuxCncG76(call) => nc_linuxcnc(out, call, moves(job, Cycle::LinuxCnc(call))?)?,
+            Item::G75(call) => nc_g75(out, t, call, moves(job, Cycle::G75(call))?)?,
+            Item::G92(call) => nc_g92(out, t, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
+            Item::LinuxCncG76(call) => nc_linuxcnc(out, t, call, moves(job, Cycle::LinuxCnc(call))?)?,
         }
         Ok(())
     })
@@ -105,7 +106,12 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// `G0 X Z` for a rapid and `G33 X Z K` for a synchronised move (K the
 /// distance per revolution along the move, reading R-LCNC-SYNC). X is in
 /// the X mode of the block (G7 diameter, G8 radius).
-fn nc_linuxcnc<W: Write>(out: &mut W, call: &LinuxCncCall<'_>, moves: Moves) -> io::Result<()> {
+fn nc_linuxcnc<W: Write>(
+    out: &mut W,
+    t: &mut NcText,
+    call: &LinuxCncCall<'_>,
+    moves: Moves,
+) -> io::Result<()> {
     let u = call.cycle.units;
     writeln!(out, "(G76 line {}: LinuxCNC threading cycle)", call.block.line)?;
     let mut current = None;
@@ -117,7 +123,7 @@ fn nc_linuxcnc<W: Write>(out: &mut W, call: &LinuxCncCall<'_>, moves: Moves) -> 
                 writeln!(out, "({kind} {})", p.number)?;
             }
         }
-        nc_g33_move(out, &m, u)?;
+        nc_g33_move(out, t, &m, u)?;
     }
     Ok(())
 }
@@ -125,13 +131,12 @@ fn nc_linuxcnc<W: Write>(out: &mut W, call: &LinuxCncCall<'_>, moves: Moves) -> 
 /// One move in LinuxCNC's words: `G33 X Z K` for a synchronised move (K
 /// the distance per revolution along it, R-LCNC-SYNC), else as
 /// [`nc_move`] writes it (LinuxCNC reads G00 as G0).
-fn nc_g33_move<W: Write>(out: &mut W, m: &Move, u: Units) -> io::Result<()> {
+fn nc_g33_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units) -> io::Result<()> {
     let Motion::Thread { lead, .. } = m.motion else {
-        return nc_move(out, m, u, QUnit::Degrees { wrap: false });
+        return nc_move(out, t, m, u, QUnit::Degrees { wrap: false });
     };
-    xz(out, b"G33 ", m.to, u)?;
-    let mut buf = [0; FIXED_BUF];
-    let text = LeadText(lead).encode(&mut buf);
+    xz(out, t, b"G33 ", m.to, u)?;
+    let text = t.lead.text(LeadText(lead));
     // The lead's text is "F…": K carries the same value.
     out.write_all(b" K")?;
     out.write_all(&text[1..])?;
@@ -141,7 +146,13 @@ fn nc_g33_move<W: Write>(out: &mut W, m: &Move, u: Units) -> io::Result<()> {
 /// The NC blocks of one G92 block: a heading, a comment before each start
 /// of a multi-start thread, the moves (the `nc` format contract, in the
 /// README).
-fn nc_g92<W: Write>(out: &mut W, call: &G92Call<'_>, moves: Moves, q: QUnit) -> io::Result<()> {
+fn nc_g92<W: Write>(
+    out: &mut W,
+    t: &mut NcText,
+    call: &G92Call<'_>,
+    moves: Moves,
+    q: QUnit,
+) -> io::Result<()> {
     let u = call.cycle.units;
     let starts = call.cycle.starts;
     writeln!(
@@ -159,14 +170,20 @@ fn nc_g92<W: Write>(out: &mut W, call: &G92Call<'_>, moves: Moves, q: QUnit) -> 
                 writeln!(out, "(start {})", p.start)?;
             }
         }
-        nc_move(out, &m, u, q)?;
+        nc_move(out, t, &m, u, q)?;
     }
     Ok(())
 }
 
 /// The NC blocks of one G76 cycle: a heading, a comment before each pass
 /// and start, the moves (the `nc` format contract, in the README).
-fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> io::Result<()> {
+fn nc_g76<W: Write>(
+    out: &mut W,
+    t: &mut NcText,
+    call: &G76Call<'_>,
+    moves: Moves,
+    q: QUnit,
+) -> io::Result<()> {
     let u = call.cycle.units;
     // The heading counts the rough passes, found before any move (reading
     // R-LIMIT) as both engines find it; the cycle expanded, so it has a
@@ -203,14 +220,14 @@ fn nc_g76<W: Write>(out: &mut W, call: &G76Call<'_>, moves: Moves, q: QUnit) -> 
                 out.write_all(b")\n")?;
             }
         }
-        nc_move(out, &m, u, q)?;
+        nc_move(out, t, &m, u, q)?;
     }
     restore(out, call.restore)
 }
 
 /// The NC blocks of one G75.1 cycle: a heading, a comment per layer and
 /// plunge and before each contour, the moves.
-fn nc_g75<W: Write>(out: &mut W, call: &G75Call<'_>, moves: Moves) -> io::Result<()> {
+fn nc_g75<W: Write>(out: &mut W, t: &mut NcText, call: &G75Call<'_>, moves: Moves) -> io::Result<()> {
     let c = &call.cycle;
     let u = c.units;
     let (mut layers, mut plunges) = (0, 0);
@@ -256,20 +273,27 @@ fn nc_g75<W: Write>(out: &mut W, call: &G75Call<'_>, moves: Moves) -> io::Result
             writeln!(out, "({n})")?;
         }
         contour = name;
-        nc_groove_move(out, &m, at, c.x_mode.factor(), u)?;
+        nc_groove_move(out, t, &m, at, c.x_mode.factor(), u)?;
         at = m.to;
     }
     restore(out, call.restore)
 }
 
 /// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
-fn nc_groove_move<W: Write>(out: &mut W, m: &Move, from: Point, x_factor: i64, u: Units) -> io::Result<()> {
+fn nc_groove_move<W: Write>(
+    out: &mut W,
+    t: &mut NcText,
+    m: &Move,
+    from: Point,
+    x_factor: i64,
+    u: Units,
+) -> io::Result<()> {
     if let Motion::Arc { centre, clockwise } = m.motion {
         let (i, k) = arc_ik(from, centre, x_factor, u);
         let g = if clockwise { "G02" } else { "G03" };
         writeln!(out, "{g} X{} Z{} I{i} K{k}", Fixed::new(m.to.x, u), Fixed::new(m.to.z, u))
     } else {
-        nc_move(out, m, u, QUnit::Millidegrees { no_point: true })
+        nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true })
     }
 }
 
@@ -288,25 +312,35 @@ fn write_number<W: Write>(out: &mut W, v: u64) -> io::Result<()> {
     out.write_all(crate::format::encode_fixed(&mut buf, false, v, 0))
 }
 
+/// The texts the nc writer wrote last for the X and Z of a move and for a
+/// lead ([`RecentText`]): most moves of a thread return to an X or a Z
+/// written before, and every G32 block of a cycle has the same lead.
+#[derive(Default)]
+struct NcText {
+    x: RecentText<Fixed>,
+    z: RecentText<Fixed>,
+    lead: RecentText<LeadText>,
+}
+
 /// Appends `head`, then `X` and `Z` of `to`.
-fn xz<W: Write>(out: &mut W, head: &[u8], to: Point, u: Units) -> io::Result<()> {
+#[inline]
+fn xz<W: Write>(out: &mut W, t: &mut NcText, head: &[u8], to: Point, u: Units) -> io::Result<()> {
     out.write_all(head)?;
     out.write_all(b"X")?;
-    write_fixed(out, Fixed::new(to.x, u))?;
+    out.write_all(t.x.text(Fixed::new(to.x, u)))?;
     out.write_all(b" Z")?;
-    write_fixed(out, Fixed::new(to.z, u))
+    out.write_all(t.z.text(Fixed::new(to.z, u)))
 }
 
 /// One move as an NC block.
-fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
+fn nc_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
     match m.motion {
-        Motion::Rapid => xz(out, b"G00 ", m.to, u)?,
-        Motion::Feed => xz(out, b"G01 ", m.to, u)?,
+        Motion::Rapid => xz(out, t, b"G00 ", m.to, u)?,
+        Motion::Feed => xz(out, t, b"G01 ", m.to, u)?,
         Motion::Thread { lead, start_angle, sync } => {
-            xz(out, b"G32 ", m.to, u)?;
-            let mut buf = [0; FIXED_BUF];
+            xz(out, t, b"G32 ", m.to, u)?;
             out.write_all(b" ")?;
-            out.write_all(LeadText(lead).encode(&mut buf))?;
+            out.write_all(t.lead.text(LeadText(lead)))?;
             // Q only where synchronisation starts: on a continuation block
             // the control ignores it (seed 002, Q rule 2).
             if sync && !start_angle.is_zero() {
@@ -316,8 +350,11 @@ fn nc_move<W: Write>(out: &mut W, m: &Move, u: Units, q: QUnit) -> io::Result<()
         }
         Motion::Arc { centre, clockwise } => {
             // Without the start point the centre is written absolute.
-            xz(out, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
-            xz(out, b" (centre ", centre, u)?;
+            xz(out, t, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
+            out.write_all(b" (centre X")?;
+            write_fixed(out, Fixed::new(centre.x, u))?;
+            out.write_all(b" Z")?;
+            write_fixed(out, Fixed::new(centre.z, u))?;
             out.write_all(b")")?;
         }
     }

@@ -80,9 +80,9 @@ pub static REAL_LIMBS: Site = Site::new("real: limb loops");
 /// estimated limb (at most two).
 #[cfg(feature = "loop-counters")]
 pub static REAL_DIVMOD: Site = Site::new("real::limbs_divmod: quotient limbs");
-/// `engine::real::sin_cos_series`: the terms of a Taylor series.
+/// `engine::real::series`: the terms of a Taylor series (sine or cosine).
 #[cfg(feature = "loop-counters")]
-pub static REAL_SERIES: Site = Site::new("real::sin_cos_series: terms");
+pub static REAL_SERIES: Site = Site::new("real::series: terms");
 /// `engine::real::ln`: the terms of an atanh series.
 #[cfg(feature = "loop-counters")]
 pub static REAL_LN: Site = Site::new("real::atanh2: terms");

@@ -1040,40 +1040,62 @@ pub fn pi<const N: usize>() -> Interval<N> {
 /// of `x < 1.6` fall below one unit after about 140 steps).
 const MAX_TERMS: u64 = 400;
 
-/// `sin x` and `cos x` for `x = k · π / 3 600 000` by their Taylor series
-/// (no exact cases: see [`sin_cos`]). `k ≤ 1 800 000`, so `0 ≤ x ≤ π/2 < 2`:
-/// the terms `x^j/j!` decrease from `j = 1` on and the series alternate, so
-/// the remainder after the last term summed is at most the next term.
-fn sin_cos_series<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
+/// `x = k · π / 3 600 000` and `x²`, the argument of [`series`].
+fn series_argument<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
     let x = pi::<N>().mul_int(i64::from(k)).div_int(u64::from(HALF_TURN));
     let x2 = x.mul(&x);
+    (x, x2)
+}
+
+/// `sin x` (`first = x`, `first_index = 1`) or `cos x` (`first = 1`,
+/// `first_index = 0`) by its Taylor series, for `x = k · π / 3 600 000`
+/// with `k ≤ 1 800 000` (no exact cases: see [`sin_cos`]). Then `0 ≤ x ≤
+/// π/2 < 2`: the terms `x^j/j!` decrease from `j = 1` on and the series
+/// alternate, so the remainder after the last term summed is at most the
+/// next term.
+fn series<const N: usize>(x2: &Interval<N>, first: Interval<N>, first_index: u64) -> Interval<N> {
     // A term whose upper bound is at most 4 units of the last place ends
     // the series: its bound is then added to both ends as the remainder.
     let small = Fixed::<N>::from_ulps(4);
-    let series = |first: Interval<N>, first_index: u64| -> Interval<N> {
-        let mut sum = first;
-        let mut term = first;
-        let mut j: u64 = 1;
-        let mut loops = crate::loop_counters::count!(REAL_SERIES);
-        while j <= MAX_TERMS {
-            loops.tick();
-            // t_j = t_(j−1) · x² / ((f + 2j − 1)(f + 2j)), f = 1 for sin
-            // (x^(2j+1)/(2j+1)!), 0 for cos (x^(2j)/(2j)!).
-            let a = first_index + 2 * j - 1;
-            term = term.mul(&x2).div_int(a * (a + 1));
-            if !term.ok {
-                return Interval::poison();
-            }
-            if term.hi.cmp_signed(&small) != Ordering::Greater {
-                let bound = Interval::new(term.hi.checked_neg().unwrap_or(term.hi), term.hi);
-                return sum.add(&bound);
-            }
-            sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
-            j += 1;
+    let mut sum = first;
+    let mut term = first;
+    let mut j: u64 = 1;
+    let mut loops = crate::loop_counters::count!(REAL_SERIES);
+    while j <= MAX_TERMS {
+        loops.tick();
+        // t_j = t_(j−1) · x² / ((f + 2j − 1)(f + 2j)), f = 1 for sin
+        // (x^(2j+1)/(2j+1)!), 0 for cos (x^(2j)/(2j)!).
+        let a = first_index + 2 * j - 1;
+        term = term.mul(x2).div_int(a * (a + 1));
+        if !term.ok {
+            return Interval::poison();
         }
-        Interval::poison()
-    };
-    (series(x, 1), series(Interval::int(1), 0))
+        if term.hi.cmp_signed(&small) != Ordering::Greater {
+            let bound = Interval::new(term.hi.checked_neg().unwrap_or(term.hi), term.hi);
+            return sum.add(&bound);
+        }
+        sum = if j % 2 == 1 { sum.sub(&term) } else { sum.add(&term) };
+        j += 1;
+    }
+    Interval::poison()
+}
+
+/// `sin x` by its series ([`series`]).
+fn sin_series<const N: usize>(k: u32) -> Interval<N> {
+    let (x, x2) = series_argument::<N>(k);
+    series(&x2, x, 1)
+}
+
+/// `cos x` by its series ([`series`]).
+fn cos_series<const N: usize>(k: u32) -> Interval<N> {
+    let (_, x2) = series_argument::<N>(k);
+    series(&x2, Interval::int(1), 0)
+}
+
+/// `sin x` and `cos x` by their series ([`series`]), sharing `x` and `x²`.
+fn sin_cos_series<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
+    let (x, x2) = series_argument::<N>(k);
+    (series(&x2, x, 1), series(&x2, Interval::int(1), 0))
 }
 
 /// `sin(k·0.00005°)`, exact for 0, 30° and 90° (`docs/G75.md` §6).
@@ -1084,7 +1106,7 @@ pub fn sin<const N: usize>(k: u32) -> Interval<N> {
         600_000 => Interval::half(),
         RIGHT => Interval::int(1),
         k if k > RIGHT => Interval::poison(),
-        k => sin_cos_series(k).0,
+        k => sin_series(k),
     }
 }
 
@@ -1096,7 +1118,7 @@ pub fn cos<const N: usize>(k: u32) -> Interval<N> {
         1_200_000 => Interval::half(),
         RIGHT => Interval::int(0),
         k if k > RIGHT => Interval::poison(),
-        k => sin_cos_series(k).1,
+        k => cos_series(k),
     }
 }
 
