@@ -369,7 +369,7 @@ mod tests {
             x ^= x << 17;
             // Mostly values from a small pool (hits and collisions), some
             // fresh ones, both units.
-            let v = if step % 5 == 0 { (x >> 1) as i64 } else { pool[(x % 40) as usize] };
+            let v = if step % 5 == 0 { i64::try_from(x >> 1).unwrap() } else { pool[(x % 40) as usize] };
             let u = if x & (1 << 40) == 0 { mm } else { inch };
             let want = Fixed::new(v, u).to_string();
             assert_eq!(std::str::from_utf8(recent.text(Fixed::new(v, u))).unwrap(), want, "{v}");
