@@ -1123,11 +1123,17 @@ pub fn cos<const N: usize>(k: u32) -> Interval<N> {
 }
 
 /// The sine and cosine of `k·0.00005°` together (one series evaluation for
-/// both when neither is an exact case).
+/// both when neither is an exact case, and for 45°, whose sine is its
+/// cosine).
 #[must_use]
 pub fn sin_cos<const N: usize>(k: u32) -> (Interval<N>, Interval<N>) {
     match k {
         0 | 600_000 | 1_200_000 | RIGHT => (sin(k), cos(k)),
+        900_000 => {
+            // sin 45° = cos 45° = √2/2: one enclosure serves both.
+            let s = sin_series(k);
+            (s, s)
+        }
         k if k > RIGHT => (Interval::poison(), Interval::poison()),
         k => sin_cos_series(k),
     }
@@ -1842,6 +1848,13 @@ mod tests {
         encloses_decimal(&cos::<FAST>(900_000), "0.70710678118654752440084436210484");
         encloses_decimal(&sin::<FAST>(900_000), "0.70710678118654752440084436210484");
         encloses_decimal(&cos::<SLOW>(900_000), "0.70710678118654752440084436210484");
+        // 45° together: one series for both.
+        let (s, c) = sin_cos::<FAST>(900_000);
+        encloses_decimal(&s, "0.70710678118654752440084436210484");
+        encloses_decimal(&c, "0.70710678118654752440084436210484");
+        let (s, c) = sin_cos::<SLOW>(900_000);
+        encloses_decimal(&s, "0.70710678118654752440084436210484");
+        encloses_decimal(&c, "0.70710678118654752440084436210484");
         // sin 60° = cos 30° = √3/2, tan 30° = 1/√3, tan 60° = √3.
         encloses_decimal(&sin::<FAST>(1_200_000), "0.86602540378443864676372317075293");
         encloses_decimal(&cos::<SLOW>(600_000), "0.86602540378443864676372317075293");
