@@ -415,7 +415,7 @@ pub struct Words<'a> {
 }
 
 /// The bit of an address letter in [`Words`]' masks (0 for a non-letter).
-fn letter_bit(letter: char) -> u32 {
+pub(crate) fn letter_bit(letter: char) -> u32 {
     if letter.is_ascii_uppercase() {
         1 << (letter as u32 - 'A' as u32)
     } else {

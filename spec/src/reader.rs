@@ -19,7 +19,7 @@ use rust_decimal::Decimal;
 
 use crate::error::ErrorKind::NotInIncrements;
 use crate::error::{ErrorKind, ProgramError};
-use crate::lex::{Block, Lexer, Position, Word};
+use crate::lex::{letter_bit, Block, Lexer, Position, Word};
 use crate::profile::{Dialect, G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
 mod linuxcnc;
@@ -712,6 +712,11 @@ fn range_err(units: Units, signed: bool) -> ErrorKind {
     ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
 }
 
+/// The bits ([`letter_bit`]) of the upper-case letters of `letters`.
+fn letter_mask(letters: &str) -> u32 {
+    letters.chars().fold(0, |m, c| m | letter_bit(c))
+}
+
 /// A length word in increments. `bare_increments` says what a value
 /// without a decimal point means.
 #[inline]
@@ -1178,7 +1183,13 @@ impl State<'_> {
         allowed: &str,
         extra: &str,
     ) -> Result<(), ProgramError> {
+        // Most words are upper-case letters of the lists: a bit test each;
+        // the lists themselves are read for any other.
+        let listed = letter_mask(allowed) | letter_mask(extra);
         for w in &block.words {
+            if letter_bit(w.letter) & listed != 0 {
+                continue;
+            }
             if !allowed.contains(w.letter) && !extra.contains(w.letter) {
                 return Err(err(
                     block,
