@@ -2,7 +2,8 @@
 //! into a writer (the `json` and `jsonl` output contracts in the README).
 //!
 //! Every document of moves is written from these types: `expand --format
-//! json` and `jsonl`, and the expected moves of `vectors`. Fields are in
+//! json` and `jsonl` (by [`ser`], the writer that serializes them), and the
+//! expected moves of `vectors` (through `serde_json::Value`). Fields are in
 //! the contract's order; the moves of a cycle are taken from the engine as
 //! they are written, so a cycle of a million moves costs no memory here.
 
@@ -14,6 +15,8 @@ use cycleref_spec::pipeline::{Cycle, Moves};
 use serde::ser::{Serialize, SerializeSeq, Serializer};
 
 use crate::format::{flank_name, kind_name, plunge_of, role_name, Fixed, LeadText};
+
+pub mod ser;
 
 /// `{"unit": "mm", "decimals": 3}`.
 #[derive(serde::Serialize)]

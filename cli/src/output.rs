@@ -352,8 +352,7 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         units: UnitsJson::new(units),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)?))),
     };
-    let mut ser = serde_json::Serializer::with_formatter(&mut *out, crate::json::Pretty::default());
-    serde::Serialize::serialize(&doc, &mut ser).map_err(io::Error::from)?;
+    crate::json::ser::to_writer_pretty(&mut *out, &doc)?;
     out.write_all(b"\n")
 }
 
@@ -375,7 +374,7 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         // Counted on a copy of the iterator: the summary line is exact.
         moves_total += m.clone().count() as u64;
         cycles += 1;
-        serde_json::to_writer(&mut *out, &CycleJson::new(c, m)).map_err(io::Error::from)?;
+        crate::json::ser::to_writer_compact(&mut *out, &CycleJson::new(c, m))?;
         out.write_all(b"\n")
     })?;
     let summary = JsonlSummary {
@@ -385,7 +384,7 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         cycles,
         moves: moves_total,
     };
-    serde_json::to_writer(&mut *out, &summary).map_err(io::Error::from)?;
+    crate::json::ser::to_writer_compact(&mut *out, &summary)?;
     out.write_all(b"\n")
 }
 
