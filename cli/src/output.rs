@@ -18,6 +18,7 @@ use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, Resto
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, FIXED_BUF};
 use crate::job::{Failure, Job};
+use crate::json::ser::JsonSerializer;
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
 
 /// The format of `expand`'s output.
@@ -352,8 +353,9 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         units: UnitsJson::new(units),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)?))),
     };
-    crate::json::ser::to_writer_pretty(&mut *out, &doc)?;
-    out.write_all(b"\n")
+    let mut ser = JsonSerializer::<_, true>::new(&mut *out);
+    ser.write_line(&doc)?;
+    ser.finish()
 }
 
 /// The summary line of the jsonl format.
@@ -368,14 +370,14 @@ struct JsonlSummary<'n> {
 
 fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     let (mut cycles, mut moves_total) = (0, 0_u64);
+    let mut ser = JsonSerializer::<_, false>::new(&mut *out);
     each_item(job, |item| {
         let Some(c) = Cycle::of(item) else { return Ok(()) };
         let m = moves(job, c)?;
         // Counted on a copy of the iterator: the summary line is exact.
         moves_total += m.clone().count() as u64;
         cycles += 1;
-        crate::json::ser::to_writer_compact(&mut *out, &CycleJson::new(c, m))?;
-        out.write_all(b"\n")
+        ser.write_line(&CycleJson::new(c, m))
     })?;
     let summary = JsonlSummary {
         format: "cycleref-moves-jsonl/1",
@@ -384,8 +386,8 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         cycles,
         moves: moves_total,
     };
-    crate::json::ser::to_writer_compact(&mut *out, &summary)?;
-    out.write_all(b"\n")
+    ser.write_line(&summary)?;
+    ser.finish()
 }
 
 /// Writes the pass tables of `job`: every G76 cycle, then every G75.1

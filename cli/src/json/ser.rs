@@ -3,37 +3,51 @@
 //! byte for byte — pretty (two spaces, `": "`, as [`super::Pretty`]) or
 //! compact (as `serde_json::to_writer`) — for a fraction of its work.
 //!
-//! Where the work goes (callgrind, a 1 MB program, issue 11): `serde_json`
-//! writes each key and each string value in three or four writes, scanning
-//! every byte for escapes, and a struct field in six or seven. Here a
-//! field's line break, indentation, comma and opening quote are one write
-//! from a table, its name a second, `": "` a third; a string needing no
-//! escape (every string of the moves documents) is checked eight bytes a
-//! step and written at once; integers are written two digits a step.
+//! Where `serde_json`'s work went (callgrind, a 1 MB program, issue 11):
+//! each key and each string value was three or four writes with every byte
+//! scanned for escapes, a struct field six or seven writes, and each length
+//! (`"64.400"`) was checked as UTF-8 to become a `&str`. Here:
+//!
+//! * the output is gathered in the serializer's own buffer and handed to
+//!   the writer in blocks of 64 KiB (at the end of an element of an array
+//!   or a value of a map), so a write is a copy into a `Vec`;
+//! * the start of a struct field — comma, line break, indentation, the
+//!   quoted name and `": "` — is made once per name and level and kept
+//!   ([`FieldStart`]): a field's start is then one copy of fixed size (the
+//!   names are `&'static str`, so the name's address and length are its
+//!   identity);
+//! * a line break with its indentation is one copy of fixed size too;
+//! * a string is checked for escapes eight bytes a step and copied whole
+//!   when it needs none (every string of the moves documents);
+//! * lengths and leads ([`Fixed`], [`LeadText`]) serialize through
+//!   `collect_str`, which every serializer writes as a string; this one
+//!   writes their ASCII digits straight into its buffer (see
+//!   [`serialize_plain`]), without `&str`, UTF-8 check or escape scan;
+//! * integers are written two digits a step ([`encode_fixed`]).
 //!
 //! Everything `serde_json` serializes is written the same way here, except
 //! floats, which are handed to `serde_json` itself (the moves documents
 //! have none), and map keys that are neither strings, integers, booleans
 //! nor floats, which are an error in both.
 
+use std::cell::Cell;
 use std::fmt;
 use std::io;
 
 use serde::ser::{self, Serialize};
 
-use crate::format::{encode_fixed, FIXED_BUF};
+use crate::format::{encode_fixed, Fixed, LeadText, FIXED_BUF};
 
 /// Writes `value` as pretty JSON, exactly as `serde_json` with
 /// [`super::Pretty`] (or `serde_json::to_writer_pretty`) would.
 ///
 /// # Errors
 ///
-/// A failure to write, as it came; an error raised while serializing (a
-/// [`Serialize`] implementation's own, a map key that is not a string) as
-/// [`io::ErrorKind::InvalidData`] with its message, as `serde_json`'s
-/// errors convert into [`io::Error`].
+/// As [`JsonSerializer::write`].
 pub fn to_writer_pretty<W: io::Write, T: ?Sized + Serialize>(out: W, value: &T) -> io::Result<()> {
-    value.serialize(&mut JsonSerializer::<W, true>::new(out)).map_err(io::Error::from)
+    let mut ser = JsonSerializer::<W, true>::new(out);
+    ser.write(value)?;
+    ser.finish()
 }
 
 /// Writes `value` as compact JSON (no whitespace), exactly as
@@ -41,9 +55,11 @@ pub fn to_writer_pretty<W: io::Write, T: ?Sized + Serialize>(out: W, value: &T) 
 ///
 /// # Errors
 ///
-/// As [`to_writer_pretty`].
+/// As [`JsonSerializer::write`].
 pub fn to_writer_compact<W: io::Write, T: ?Sized + Serialize>(out: W, value: &T) -> io::Result<()> {
-    value.serialize(&mut JsonSerializer::<W, false>::new(out)).map_err(io::Error::from)
+    let mut ser = JsonSerializer::<W, false>::new(out);
+    ser.write(value)?;
+    ser.finish()
 }
 
 /// A failure of [`JsonSerializer`].
@@ -53,8 +69,8 @@ pub enum Error {
     Io(io::Error),
     /// A [`Serialize`] implementation failed (`serde::ser::Error::custom`).
     Custom(String),
-    /// A map key that JSON cannot have: it is not a string, an integer, a
-    /// boolean, a char or a finite float (`serde_json`'s words).
+    /// A map key that JSON cannot have: not a string, an integer, a
+    /// boolean, a char or a float (`serde_json`'s words).
     KeyMustBeAString,
     /// A float map key that is not finite (`serde_json`'s words).
     FloatKeyMustBeFinite,
@@ -107,38 +123,74 @@ impl From<Error> for io::Error {
 
 type Result<T> = std::result::Result<T, Error>;
 
-/// The deepest level whose line prefix comes from [`LINE_PREFIXES`]; deeper
-/// levels are written a piece at a time.
-const TABLE_LEVELS: usize = 32;
-
-/// A line prefix of [`LINE_PREFIXES`]: room for `,`, `\n`, two spaces a
-/// level and `"`.
-const PREFIX_ROOM: usize = 3 + 2 * TABLE_LEVELS;
-
-/// For each level: `,\n`, two spaces a level, `"` — the start of every
-/// element and field after the first in the pretty form (the first starts
-/// one byte later, without the comma; a value that is not a key stops
-/// before the quote).
-const LINE_PREFIXES: [[u8; PREFIX_ROOM]; TABLE_LEVELS] = line_prefixes();
-
-const fn line_prefixes() -> [[u8; PREFIX_ROOM]; TABLE_LEVELS] {
-    let mut table = [[b' '; PREFIX_ROOM]; TABLE_LEVELS];
-    let mut level = 0;
-    while level < TABLE_LEVELS {
-        table[level][0] = b',';
-        table[level][1] = b'\n';
-        table[level][2 + 2 * level] = b'"';
-        level += 1;
-    }
-    table
+/// A text of ASCII digits, letters, `.` and `-`: nothing in it needs an
+/// escape in JSON.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum PlainText {
+    /// A length.
+    Length(Fixed),
+    /// A lead word.
+    Lead(LeadText),
 }
+
+impl PlainText {
+    fn encode(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        match self {
+            PlainText::Length(f) => f.encode(buf),
+            PlainText::Lead(l) => l.encode(buf),
+        }
+    }
+}
+
+thread_local! {
+    /// The text offered by [`serialize_plain`] while it runs, with the
+    /// address of the value it is the text of.
+    static OFFERED: Cell<Option<(usize, PlainText)>> = const { Cell::new(None) };
+}
+
+/// The address of `value`, its identity while it is borrowed.
+fn address_of<T: ?Sized>(value: &T) -> usize {
+    std::ptr::from_ref(value).cast::<()>().addr()
+}
+
+/// Serializes `value`, whose `Display` is `text`, as a string with
+/// `collect_str`: every serializer writes it as the string `value`
+/// displays (`serde_json`, `serde_json::Value`, any other). While the call
+/// runs `text` is offered, tagged with `value`'s address, and
+/// [`JsonSerializer`]'s `collect_str` takes it: it writes the digits
+/// without formatting machinery, UTF-8 check or escape scan.
+pub(crate) fn serialize_plain<S: ser::Serializer, D: fmt::Display>(
+    value: &D,
+    text: PlainText,
+    s: S,
+) -> std::result::Result<S::Ok, S::Error> {
+    OFFERED.set(Some((address_of(value), text)));
+    let written = s.collect_str(value);
+    OFFERED.set(None);
+    written
+}
+
+/// The output is handed to the writer once the buffer holds this much (at
+/// the end of an array's element or a map's value).
+const FLUSH_AT: usize = 1 << 16;
+
+/// The size of the fixed copies: a line prefix or a field start of up to
+/// this many bytes is copied as a block of this size, then cut to length.
+const CHUNK: usize = 64;
+
+/// `,`, a line break and the indentation of levels up to 63: a line prefix
+/// is a slice of it (without the comma for the first element).
+const LINE: [u8; 130] = {
+    let mut line = [b' '; 130];
+    line[0] = b',';
+    line[1] = b'\n';
+    line
+};
 
 /// What a byte becomes in a JSON string: 0 itself; `u` the `\u00XX` form;
 /// any other the letter after the backslash (serde_json's table: the
 /// controls, `"` and `\`; DEL and non-ASCII bytes pass through).
-static ESCAPE: [u8; 256] = escapes();
-
-const fn escapes() -> [u8; 256] {
+static ESCAPE: [u8; 256] = {
     let mut table = [0_u8; 256];
     let mut b = 0;
     while b < 0x20 {
@@ -153,26 +205,28 @@ const fn escapes() -> [u8; 256] {
     table[b'"' as usize] = b'"';
     table[b'\\' as usize] = b'\\';
     table
-}
+};
 
-/// Whether some byte of `s` needs an escape: eight bytes a step (a byte
-/// below 0x20, `"` or `\`), then the rest one by one.
+/// Whether some byte of `s` needs an escape (below 0x20, `"` or `\`):
+/// eight bytes a step, then the rest one by one.
 #[inline]
 fn needs_escape(s: &[u8]) -> bool {
-    const LOW: u64 = 0x0101_0101_0101_0101;
+    const ONES: u64 = 0x0101_0101_0101_0101;
     const HIGH: u64 = 0x8080_8080_8080_8080;
     let mut chunks = s.chunks_exact(8);
     for chunk in &mut chunks {
         let mut word = [0; 8];
         word.copy_from_slice(chunk);
         let v = u64::from_le_bytes(word);
-        // A zero byte of x has the high bit set in (x - LOW) & !x & HIGH;
-        // a byte below 0x20 has it in (v - 0x20…) & !v.
-        let quote = v ^ (LOW * u64::from(b'"'));
-        let backslash = v ^ (LOW * u64::from(b'\\'));
-        let found = (v.wrapping_sub(LOW * 0x20) & !v)
-            | (quote.wrapping_sub(LOW) & !quote)
-            | (backslash.wrapping_sub(LOW) & !backslash);
+        // A byte of x below n (n ≤ 0x80) sets its high bit in
+        // (x - n·ONES) & !x & HIGH; a byte equal to c is a zero byte of
+        // x ^ c·ONES, below 1. A borrow only runs on from a byte that is
+        // itself found, so no byte is found wrongly.
+        let quote = v ^ (ONES * u64::from(b'"'));
+        let backslash = v ^ (ONES * u64::from(b'\\'));
+        let found = (v.wrapping_sub(ONES * 0x20) & !v)
+            | (quote.wrapping_sub(ONES) & !quote)
+            | (backslash.wrapping_sub(ONES) & !backslash);
         if found & HIGH != 0 {
             return true;
         }
@@ -180,178 +234,291 @@ fn needs_escape(s: &[u8]) -> bool {
     chunks.remainder().iter().any(|&b| ESCAPE[usize::from(b)] != 0)
 }
 
-/// Writes the contents of a JSON string for `s` (without the quotes).
+/// Appends the contents of a JSON string for `s` (without the quotes).
 #[inline]
-fn write_contents<W: io::Write>(out: &mut W, s: &str) -> io::Result<()> {
-    let bytes = s.as_bytes();
-    if !needs_escape(bytes) {
-        return out.write_all(bytes);
+fn push_contents(buf: &mut Vec<u8>, s: &[u8]) {
+    if needs_escape(s) {
+        push_escaped(buf, s);
+    } else {
+        buf.extend_from_slice(s);
     }
-    write_escaped(out, bytes)
 }
 
-/// The slow path of [`write_contents`]: runs without an escape are written
-/// whole, each escape as serde_json writes it.
+/// The slow path of [`push_contents`]: runs without an escape are copied
+/// whole, each escape written as serde_json writes it.
 #[cold]
-fn write_escaped<W: io::Write>(out: &mut W, bytes: &[u8]) -> io::Result<()> {
+fn push_escaped(buf: &mut Vec<u8>, s: &[u8]) {
     const HEX: &[u8; 16] = b"0123456789abcdef";
     let mut start = 0;
-    for (i, &b) in bytes.iter().enumerate() {
+    for (i, &b) in s.iter().enumerate() {
         let escape = ESCAPE[usize::from(b)];
         if escape == 0 {
             continue;
         }
-        out.write_all(&bytes[start..i])?;
+        buf.extend_from_slice(&s[start..i]);
         start = i + 1;
         if escape == b'u' {
-            out.write_all(&[b'\\', b'u', b'0', b'0', HEX[usize::from(b >> 4)], HEX[usize::from(b & 0xF)]])?;
+            buf.extend_from_slice(&[
+                b'\\',
+                b'u',
+                b'0',
+                b'0',
+                HEX[usize::from(b >> 4)],
+                HEX[usize::from(b & 0xF)],
+            ]);
         } else {
-            out.write_all(&[b'\\', escape])?;
+            buf.extend_from_slice(&[b'\\', escape]);
         }
     }
-    out.write_all(&bytes[start..])
+    buf.extend_from_slice(&s[start..]);
 }
 
-/// The decimal text of `mag` (with `-` when `negative`) as serde_json
-/// writes integers.
+/// Appends the decimal text of `mag`, with `-` when `negative`, as
+/// serde_json writes integers.
 #[inline]
-fn write_integer<W: io::Write>(out: &mut W, negative: bool, mag: u64) -> io::Result<()> {
-    let mut buf = [0; FIXED_BUF];
-    out.write_all(encode_fixed(&mut buf, negative, mag, 0))
+fn push_integer(buf: &mut Vec<u8>, negative: bool, mag: u64) {
+    if !negative && mag < 10 {
+        // mag < 10: one digit.
+        #[allow(clippy::cast_possible_truncation)]
+        buf.push(b'0' + mag as u8);
+    } else {
+        let mut digits = [0; FIXED_BUF];
+        buf.extend_from_slice(encode_fixed(&mut digits, negative, mag, 0));
+    }
+}
+
+/// The start of a struct field, made once per name and level: `,`, in the
+/// pretty form a line break and the indentation, then `"name": ` (`"name":`
+/// compact). The first field of an object starts one byte later.
+#[derive(Clone, Copy)]
+struct FieldStart {
+    /// The name's address and length (a `&'static str`: they identify it).
+    name: (usize, usize),
+    level: usize,
+    len: usize,
+    bytes: [u8; CHUNK],
+}
+
+/// A slot of the field-start table that holds nothing.
+const NO_FIELD_START: FieldStart = FieldStart { name: (0, usize::MAX), level: 0, len: 0, bytes: [0; CHUNK] };
+
+/// The number of slots of the field-start table (a power of two).
+const FIELD_START_SLOTS: usize = 128;
+
+/// The slot of a name's field start at a level.
+#[inline]
+fn field_start_slot(name: (usize, usize), level: usize) -> usize {
+    let h = (name.0 ^ level.rotate_right(8)).wrapping_mul(0x9E37_79B9_7F4A_7C15_u64 as usize);
+    h >> (usize::BITS - FIELD_START_SLOTS.trailing_zeros())
 }
 
 /// A serde [`Serializer`](serde::Serializer) writing JSON to `W`: pretty
-/// when `PRETTY`, else compact. Build it with [`JsonSerializer::new`], or
-/// use [`to_writer_pretty`] and [`to_writer_compact`].
-pub struct JsonSerializer<W, const PRETTY: bool> {
+/// when `PRETTY`, else compact. The output is gathered in a buffer and
+/// handed to `W` in blocks: call [`JsonSerializer::finish`] at the end
+/// (dropping it writes what is left too, ignoring a failure).
+pub struct JsonSerializer<W: io::Write, const PRETTY: bool> {
     out: W,
+    buf: Vec<u8>,
     /// The number of arrays and objects open.
     level: usize,
+    field_starts: Box<[FieldStart; FIELD_START_SLOTS]>,
 }
 
 impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     /// A serializer writing to `out`.
     pub fn new(out: W) -> Self {
-        JsonSerializer { out, level: 0 }
-    }
-
-    /// The writer.
-    pub fn into_inner(self) -> W {
-        self.out
-    }
-
-    /// Opens an array or object with `open` (`[` or `{`); `empty` closes it
-    /// at once with `close`.
-    #[inline]
-    fn open(&mut self, open: u8, close: u8, empty: bool) -> Result<Compound<'_, W, PRETTY>> {
-        if empty {
-            self.out.write_all(&[open, close])?;
-            return Ok(Compound { ser: self, state: State::Empty });
-        }
-        self.out.write_all(&[open])?;
-        self.level += 1;
-        Ok(Compound { ser: self, state: State::First })
-    }
-
-    /// Closes what [`Self::open`] opened with `close`: in the pretty form
-    /// on a line of its own when it has an element.
-    #[inline]
-    fn close(&mut self, state: State, close: u8) -> Result<()> {
-        match state {
-            State::Empty => Ok(()),
-            State::First => {
-                self.level -= 1;
-                Ok(self.out.write_all(&[close])?)
-            }
-            State::Rest => {
-                self.level -= 1;
-                self.closing_line()?;
-                Ok(self.out.write_all(&[close])?)
-            }
+        JsonSerializer {
+            out,
+            buf: Vec::with_capacity(FLUSH_AT + 4096),
+            level: 0,
+            field_starts: Box::new([NO_FIELD_START; FIELD_START_SLOTS]),
         }
     }
 
-    /// The start of an element or field: `,` unless `first`; in the pretty
-    /// form a line break and the indentation of this level; `"` when
-    /// `quote` (a key follows).
-    #[inline]
-    fn element_start(&mut self, first: bool, quote: bool) -> io::Result<()> {
-        if PRETTY {
-            let skip = usize::from(first);
-            match LINE_PREFIXES.get(self.level) {
-                Some(prefix) => {
-                    let end = 2 + 2 * self.level + usize::from(quote);
-                    self.out.write_all(&prefix[skip..end])
-                }
-                None => {
-                    self.out.write_all(&b",\n"[skip..])?;
-                    (0..self.level).try_for_each(|_| self.out.write_all(b"  "))?;
-                    if quote {
-                        self.out.write_all(b"\"")?;
-                    }
-                    Ok(())
-                }
-            }
-        } else {
-            match (first, quote) {
-                (true, false) => Ok(()),
-                (true, true) => self.out.write_all(b"\""),
-                (false, false) => self.out.write_all(b","),
-                (false, true) => self.out.write_all(b",\""),
-            }
-        }
+    /// Serializes `value`.
+    ///
+    /// # Errors
+    ///
+    /// A failure to write, as it came; an error raised while serializing
+    /// (a [`Serialize`] implementation's own, a map key that is not a
+    /// string) as [`io::ErrorKind::InvalidData`] with its message, as
+    /// `serde_json`'s errors convert into [`io::Error`].
+    pub fn write<T: ?Sized + Serialize>(&mut self, value: &T) -> io::Result<()> {
+        value.serialize(&mut *self)?;
+        self.flush_if_full()
     }
 
-    /// In the pretty form, a line break and the indentation of this level
-    /// (before a closing bracket); nothing in the compact form.
+    /// Serializes `value`, then a line break (a line of `jsonl`).
+    ///
+    /// # Errors
+    ///
+    /// As [`Self::write`].
+    pub fn write_line<T: ?Sized + Serialize>(&mut self, value: &T) -> io::Result<()> {
+        value.serialize(&mut *self)?;
+        self.buf.push(b'\n');
+        self.flush_if_full()
+    }
+
+    /// Hands what is left to the writer (the writer itself is not flushed).
+    ///
+    /// # Errors
+    ///
+    /// A failure to write.
+    pub fn finish(mut self) -> io::Result<()> {
+        self.flush()
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        let written = self.out.write_all(&self.buf);
+        self.buf.clear();
+        written
+    }
+
     #[inline]
-    fn closing_line(&mut self) -> io::Result<()> {
-        if PRETTY {
-            self.element_start(true, false)
+    fn flush_if_full(&mut self) -> io::Result<()> {
+        if self.buf.len() >= FLUSH_AT {
+            self.flush()
         } else {
             Ok(())
         }
     }
 
-    /// The end of a key: `": "` (pretty) or `":"`.
+    /// Opens an array or object with `open` (`[` or `{`); `empty` closes it
+    /// at once with `close`.
     #[inline]
-    fn key_end(&mut self) -> io::Result<()> {
-        self.out.write_all(if PRETTY { b"\": " } else { b"\":" })
+    fn open(&mut self, open: u8, close: u8, empty: bool) -> Compound<'_, W, PRETTY> {
+        if empty {
+            self.buf.extend_from_slice(&[open, close]);
+            return Compound { ser: self, state: State::Empty };
+        }
+        self.buf.push(open);
+        self.level += 1;
+        Compound { ser: self, state: State::First }
+    }
+
+    /// Closes what [`Self::open`] opened with `close`: in the pretty form
+    /// on a line of its own when it has an element.
+    #[inline]
+    fn close(&mut self, state: State, close: u8) {
+        if state == State::Empty {
+            return;
+        }
+        self.level -= 1;
+        if PRETTY && state == State::Rest {
+            self.line_break(false);
+        }
+        self.buf.push(close);
+    }
+
+    /// Pretty form: `,` when `comma`, a line break and the indentation of
+    /// this level.
+    #[inline]
+    fn line_break(&mut self, comma: bool) {
+        let skip = usize::from(!comma);
+        let end = 2 + 2 * self.level;
+        if end <= CHUNK {
+            let at = self.buf.len();
+            self.buf.extend_from_slice(&LINE[skip..skip + CHUNK]);
+            self.buf.truncate(at + end - skip);
+        } else if end <= LINE.len() {
+            self.buf.extend_from_slice(&LINE[skip..end]);
+        } else {
+            self.buf.extend_from_slice(&LINE[skip..2]);
+            (0..self.level).for_each(|_| self.buf.extend_from_slice(b"  "));
+        }
+    }
+
+    /// The start of an array's element: `,` unless `first`, and in the
+    /// pretty form a line break and the indentation.
+    #[inline]
+    fn element_start(&mut self, first: bool) {
+        if PRETTY {
+            self.line_break(!first);
+        } else if !first {
+            self.buf.push(b',');
+        }
+    }
+
+    /// The start of a field named `name`: `,` unless `first`, the line
+    /// (pretty form), `"name"` and the colon.
+    #[inline]
+    fn field_start(&mut self, name: &'static str, first: bool) {
+        let id = (name.as_ptr().addr(), name.len());
+        let slot = field_start_slot(id, self.level);
+        let start = &self.field_starts[slot];
+        if start.name == id && start.level == self.level {
+            let skip = usize::from(first);
+            let at = self.buf.len();
+            self.buf.extend_from_slice(&start.bytes[skip..skip + CHUNK - 1]);
+            self.buf.truncate(at + start.len - skip);
+        } else {
+            self.new_field_start(name, first, slot);
+        }
+    }
+
+    /// [`Self::field_start`] for a name not in the table: the start is
+    /// made and kept, when it fits.
+    #[inline(never)]
+    fn new_field_start(&mut self, name: &'static str, first: bool, slot: usize) {
+        let mut bytes = Vec::with_capacity(CHUNK);
+        if PRETTY {
+            let end = 2 + 2 * self.level;
+            bytes.extend_from_slice(&LINE[..end.min(LINE.len())]);
+            (LINE.len()..end).step_by(2).for_each(|_| bytes.extend_from_slice(b"  "));
+            bytes.push(b'"');
+            push_contents(&mut bytes, name.as_bytes());
+            bytes.extend_from_slice(b"\": ");
+        } else {
+            bytes.extend_from_slice(b",\"");
+            push_contents(&mut bytes, name.as_bytes());
+            bytes.extend_from_slice(b"\":");
+        }
+        self.buf.extend_from_slice(&bytes[usize::from(first)..]);
+        if bytes.len() <= CHUNK {
+            let mut start = FieldStart {
+                name: (name.as_ptr().addr(), name.len()),
+                level: self.level,
+                len: bytes.len(),
+                bytes: [0; CHUNK],
+            };
+            start.bytes[..bytes.len()].copy_from_slice(&bytes);
+            self.field_starts[slot] = start;
+        }
     }
 
     /// `s` as a JSON string, quoted.
     #[inline]
-    fn string(&mut self, s: &str) -> io::Result<()> {
-        let bytes = s.as_bytes();
-        if needs_escape(bytes) {
-            self.out.write_all(b"\"")?;
-            write_escaped(&mut self.out, bytes)?;
-        } else {
-            self.out.write_all(b"\"")?;
-            self.out.write_all(bytes)?;
-        }
-        self.out.write_all(b"\"")
+    fn string(&mut self, s: &[u8]) {
+        self.buf.reserve(s.len() + 2);
+        self.buf.push(b'"');
+        push_contents(&mut self.buf, s);
+        self.buf.push(b'"');
     }
 
     /// `{"variant": ` — the opening of an enum variant with data.
-    fn variant_open(&mut self, variant: &str) -> Result<()> {
-        self.out.write_all(b"{")?;
+    fn variant_open(&mut self, variant: &'static str) {
+        self.buf.push(b'{');
         self.level += 1;
-        self.element_start(true, true)?;
-        write_contents(&mut self.out, variant)?;
-        Ok(self.key_end()?)
+        self.field_start(variant, true);
     }
 
     /// The closing `}` of [`Self::variant_open`].
-    fn variant_close(&mut self) -> Result<()> {
-        self.level -= 1;
-        self.closing_line()?;
-        Ok(self.out.write_all(b"}")?)
+    fn variant_close(&mut self) {
+        self.close(State::Rest, b'}');
     }
 
     /// A float, as serde_json writes it (`null` when not finite).
     fn float<F: Serialize>(&mut self, v: F) -> Result<()> {
-        serde_json::to_writer(&mut self.out, &v).map_err(|e| Error::Io(e.into()))
+        serde_json::to_writer(&mut self.buf, &v).map_err(|e| Error::Io(e.into()))
+    }
+}
+
+impl<W: io::Write, const PRETTY: bool> Drop for JsonSerializer<W, PRETTY> {
+    /// Hands what is left to the writer, as a dropped `BufWriter` does.
+    fn drop(&mut self) {
+        if !self.buf.is_empty() {
+            let _ = self.flush();
+        }
     }
 }
 
@@ -377,8 +544,10 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
     type SerializeStruct = Compound<'a, W, PRETTY>;
     type SerializeStructVariant = Compound<'a, W, PRETTY>;
 
+    #[inline]
     fn serialize_bool(self, v: bool) -> Result<()> {
-        Ok(self.out.write_all(if v { b"true" } else { b"false" })?)
+        self.buf.extend_from_slice(if v { b"true" } else { b"false" });
+        Ok(())
     }
 
     fn serialize_i8(self, v: i8) -> Result<()> {
@@ -395,32 +564,37 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
 
     #[inline]
     fn serialize_i64(self, v: i64) -> Result<()> {
-        Ok(write_integer(&mut self.out, v < 0, v.unsigned_abs())?)
+        push_integer(&mut self.buf, v < 0, v.unsigned_abs());
+        Ok(())
     }
 
     fn serialize_i128(self, v: i128) -> Result<()> {
-        Ok(write!(self.out, "{v}")?)
+        Ok(io::Write::write_fmt(&mut self.buf, format_args!("{v}"))?)
     }
 
+    #[inline]
     fn serialize_u8(self, v: u8) -> Result<()> {
         self.serialize_u64(v.into())
     }
 
+    #[inline]
     fn serialize_u16(self, v: u16) -> Result<()> {
         self.serialize_u64(v.into())
     }
 
+    #[inline]
     fn serialize_u32(self, v: u32) -> Result<()> {
         self.serialize_u64(v.into())
     }
 
     #[inline]
     fn serialize_u64(self, v: u64) -> Result<()> {
-        Ok(write_integer(&mut self.out, false, v)?)
+        push_integer(&mut self.buf, false, v);
+        Ok(())
     }
 
     fn serialize_u128(self, v: u128) -> Result<()> {
-        Ok(write!(self.out, "{v}")?)
+        Ok(io::Write::write_fmt(&mut self.buf, format_args!("{v}"))?)
     }
 
     fn serialize_f32(self, v: f32) -> Result<()> {
@@ -437,7 +611,8 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
 
     #[inline]
     fn serialize_str(self, v: &str) -> Result<()> {
-        Ok(self.string(v)?)
+        self.string(v.as_bytes());
+        Ok(())
     }
 
     /// An array of the bytes' values, as serde_json writes bytes.
@@ -460,7 +635,8 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
     }
 
     fn serialize_unit(self) -> Result<()> {
-        Ok(self.out.write_all(b"null")?)
+        self.buf.extend_from_slice(b"null");
+        Ok(())
     }
 
     fn serialize_unit_struct(self, _name: &'static str) -> Result<()> {
@@ -483,14 +659,15 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         variant: &'static str,
         value: &T,
     ) -> Result<()> {
-        self.variant_open(variant)?;
+        self.variant_open(variant);
         value.serialize(&mut *self)?;
-        self.variant_close()
+        self.variant_close();
+        Ok(())
     }
 
     #[inline]
     fn serialize_seq(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY>> {
-        self.open(b'[', b']', len == Some(0))
+        Ok(self.open(b'[', b']', len == Some(0)))
     }
 
     fn serialize_tuple(self, len: usize) -> Result<Compound<'a, W, PRETTY>> {
@@ -508,13 +685,13 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         variant: &'static str,
         len: usize,
     ) -> Result<Compound<'a, W, PRETTY>> {
-        self.variant_open(variant)?;
+        self.variant_open(variant);
         self.serialize_seq(Some(len))
     }
 
     #[inline]
     fn serialize_map(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY>> {
-        self.open(b'{', b'}', len == Some(0))
+        Ok(self.open(b'{', b'}', len == Some(0)))
     }
 
     #[inline]
@@ -529,59 +706,65 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         variant: &'static str,
         len: usize,
     ) -> Result<Compound<'a, W, PRETTY>> {
-        self.variant_open(variant)?;
+        self.variant_open(variant);
         self.serialize_map(Some(len))
     }
 
-    /// `value`'s text as a JSON string, escaped as it is written.
+    /// `value`'s text as a JSON string: the text [`serialize_plain`]
+    /// offers for `value` as it is, any other escaped as it is displayed.
+    #[inline]
     fn collect_str<T: ?Sized + fmt::Display>(self, value: &T) -> Result<()> {
-        /// Escapes what `Display` writes; keeps the writer's error.
-        struct Escaping<'w, W> {
-            out: &'w mut W,
-            error: Option<io::Error>,
-        }
-        impl<W: io::Write> fmt::Write for Escaping<'_, W> {
-            fn write_str(&mut self, s: &str) -> fmt::Result {
-                write_contents(self.out, s).map_err(|e| {
-                    self.error = Some(e);
-                    fmt::Error
-                })
+        if let Some((at, text)) = OFFERED.get() {
+            if at == address_of(value) {
+                let mut digits = [0; FIXED_BUF];
+                self.string(text.encode(&mut digits));
+                return Ok(());
             }
         }
-        self.out.write_all(b"\"")?;
-        let mut escaping = Escaping { out: &mut self.out, error: None };
-        if fmt::write(&mut escaping, format_args!("{value}")).is_err() {
-            return Err(match escaping.error {
-                Some(e) => Error::Io(e),
-                None => Error::Custom("a Display implementation returned an error".to_string()),
-            });
+        self.display(value)
+    }
+}
+
+impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
+    /// `value`'s `Display` as a JSON string, escaped as it is written.
+    fn display<T: ?Sized + fmt::Display>(&mut self, value: &T) -> Result<()> {
+        /// Escapes what `Display` writes.
+        struct Escaping<'b>(&'b mut Vec<u8>);
+        impl fmt::Write for Escaping<'_> {
+            fn write_str(&mut self, s: &str) -> fmt::Result {
+                push_contents(self.0, s.as_bytes());
+                Ok(())
+            }
         }
-        Ok(self.out.write_all(b"\"")?)
+        self.buf.push(b'"');
+        fmt::write(&mut Escaping(&mut self.buf), format_args!("{value}"))
+            .map_err(|_| Error::Custom("a Display implementation returned an error".to_string()))?;
+        self.buf.push(b'"');
+        Ok(())
     }
 }
 
 /// An array or object being written (serde's `SerializeSeq`,
 /// `SerializeMap`, `SerializeStruct` and the others).
-pub struct Compound<'a, W, const PRETTY: bool> {
+pub struct Compound<'a, W: io::Write, const PRETTY: bool> {
     ser: &'a mut JsonSerializer<W, PRETTY>,
     state: State,
 }
 
 impl<W: io::Write, const PRETTY: bool> Compound<'_, W, PRETTY> {
-    /// The start of the next element or field (`quote`: a key follows).
+    /// Whether the next element is the first; from now on it is not.
     #[inline]
-    fn next(&mut self, quote: bool) -> io::Result<()> {
+    fn take_first(&mut self) -> bool {
         let first = self.state == State::First;
         self.state = State::Rest;
-        self.ser.element_start(first, quote)
+        first
     }
 
-    /// A field named `key`: its line, `"key": ` and its value.
+    /// A field named `name`: its start and its value.
     #[inline]
-    fn field<T: ?Sized + Serialize>(&mut self, key: &str, value: &T) -> Result<()> {
-        self.next(true)?;
-        write_contents(&mut self.ser.out, key)?;
-        self.ser.key_end()?;
+    fn field<T: ?Sized + Serialize>(&mut self, name: &'static str, value: &T) -> Result<()> {
+        let first = self.take_first();
+        self.ser.field_start(name, first);
         value.serialize(&mut *self.ser)
     }
 }
@@ -592,13 +775,16 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeSeq for Compound<'_, W, PRE
 
     #[inline]
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
-        self.next(false)?;
-        value.serialize(&mut *self.ser)
+        let first = self.take_first();
+        self.ser.element_start(first);
+        value.serialize(&mut *self.ser)?;
+        Ok(self.ser.flush_if_full()?)
     }
 
     #[inline]
     fn end(self) -> Result<()> {
-        self.ser.close(self.state, b']')
+        self.ser.close(self.state, b']');
+        Ok(())
     }
 }
 
@@ -637,8 +823,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeTupleVariant for Compound<'
     }
 
     fn end(self) -> Result<()> {
-        self.ser.close(self.state, b']')?;
-        self.ser.variant_close()
+        self.ser.close(self.state, b']');
+        self.ser.variant_close();
+        Ok(())
     }
 }
 
@@ -647,17 +834,22 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeMap for Compound<'_, W, PRE
     type Error = Error;
 
     fn serialize_key<T: ?Sized + Serialize>(&mut self, key: &T) -> Result<()> {
-        self.next(true)?;
-        key.serialize(KeySerializer { out: &mut self.ser.out })?;
-        Ok(self.ser.key_end()?)
+        let first = self.take_first();
+        self.ser.element_start(first);
+        self.ser.buf.push(b'"');
+        key.serialize(KeySerializer { buf: &mut self.ser.buf })?;
+        self.ser.buf.extend_from_slice(if PRETTY { b"\": " } else { b"\":" });
+        Ok(())
     }
 
     fn serialize_value<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
-        value.serialize(&mut *self.ser)
+        value.serialize(&mut *self.ser)?;
+        Ok(self.ser.flush_if_full()?)
     }
 
     fn end(self) -> Result<()> {
-        self.ser.close(self.state, b'}')
+        self.ser.close(self.state, b'}');
+        Ok(())
     }
 }
 
@@ -672,7 +864,8 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeStruct for Compound<'_, W, 
 
     #[inline]
     fn end(self) -> Result<()> {
-        self.ser.close(self.state, b'}')
+        self.ser.close(self.state, b'}');
+        Ok(())
     }
 }
 
@@ -685,25 +878,29 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeStructVariant for Compound<
     }
 
     fn end(self) -> Result<()> {
-        self.ser.close(self.state, b'}')?;
-        self.ser.variant_close()
+        self.ser.close(self.state, b'}');
+        self.ser.variant_close();
+        Ok(())
     }
 }
 
 /// Writes a map key's text between the quotes that the map writes (as
 /// serde_json: strings escaped, numbers and booleans as their text, any
 /// other kind an error).
-struct KeySerializer<'w, W> {
-    out: &'w mut W,
+struct KeySerializer<'b> {
+    buf: &'b mut Vec<u8>,
 }
 
-impl<W: io::Write> KeySerializer<'_, W> {
-    fn integer(self, negative: bool, mag: u64) -> Result<()> {
-        Ok(write_integer(self.out, negative, mag)?)
+impl KeySerializer<'_> {
+    fn float<F: Serialize>(self, v: F, finite: bool) -> Result<()> {
+        if !finite {
+            return Err(Error::FloatKeyMustBeFinite);
+        }
+        serde_json::to_writer(self.buf, &v).map_err(|e| Error::Io(e.into()))
     }
 }
 
-impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
+impl ser::Serializer for KeySerializer<'_> {
     type Ok = ();
     type Error = Error;
     type SerializeSeq = ser::Impossible<(), Error>;
@@ -715,7 +912,8 @@ impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
     type SerializeStructVariant = ser::Impossible<(), Error>;
 
     fn serialize_bool(self, v: bool) -> Result<()> {
-        Ok(self.out.write_all(if v { b"true" } else { b"false" })?)
+        self.buf.extend_from_slice(if v { b"true" } else { b"false" });
+        Ok(())
     }
 
     fn serialize_i8(self, v: i8) -> Result<()> {
@@ -731,11 +929,12 @@ impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
     }
 
     fn serialize_i64(self, v: i64) -> Result<()> {
-        self.integer(v < 0, v.unsigned_abs())
+        push_integer(self.buf, v < 0, v.unsigned_abs());
+        Ok(())
     }
 
     fn serialize_i128(self, v: i128) -> Result<()> {
-        Ok(write!(self.out, "{v}")?)
+        Ok(io::Write::write_fmt(self.buf, format_args!("{v}"))?)
     }
 
     fn serialize_u8(self, v: u8) -> Result<()> {
@@ -751,25 +950,20 @@ impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
     }
 
     fn serialize_u64(self, v: u64) -> Result<()> {
-        self.integer(false, v)
+        push_integer(self.buf, false, v);
+        Ok(())
     }
 
     fn serialize_u128(self, v: u128) -> Result<()> {
-        Ok(write!(self.out, "{v}")?)
+        Ok(io::Write::write_fmt(self.buf, format_args!("{v}"))?)
     }
 
     fn serialize_f32(self, v: f32) -> Result<()> {
-        if !v.is_finite() {
-            return Err(Error::FloatKeyMustBeFinite);
-        }
-        serde_json::to_writer(self.out, &v).map_err(|e| Error::Io(e.into()))
+        self.float(v, v.is_finite())
     }
 
     fn serialize_f64(self, v: f64) -> Result<()> {
-        if !v.is_finite() {
-            return Err(Error::FloatKeyMustBeFinite);
-        }
-        serde_json::to_writer(self.out, &v).map_err(|e| Error::Io(e.into()))
+        self.float(v, v.is_finite())
     }
 
     fn serialize_char(self, v: char) -> Result<()> {
@@ -777,7 +971,8 @@ impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
     }
 
     fn serialize_str(self, v: &str) -> Result<()> {
-        Ok(write_contents(self.out, v)?)
+        push_contents(self.buf, v.as_bytes());
+        Ok(())
     }
 
     fn serialize_bytes(self, _v: &[u8]) -> Result<()> {
@@ -860,7 +1055,7 @@ impl<W: io::Write> ser::Serializer for KeySerializer<'_, W> {
 
     fn collect_str<T: ?Sized + fmt::Display>(self, value: &T) -> Result<()> {
         // The quotes are the map's: only the escaped text is written here.
-        let text = value.to_string();
-        self.serialize_str(&text)
+        push_contents(self.buf, value.to_string().as_bytes());
+        Ok(())
     }
 }
