@@ -1461,6 +1461,11 @@ mod tests {
             };
         }
         assert_same(&deep);
+        // Each name at every level (a kept field start is for one level).
+        let nested = (0..NAMES.len()).map(|name| {
+            (0..30).fold(Doc::Bool(true), |d, _| Doc::Struct(vec![(name, Some(d)), (0, Some(Doc::Unit))]))
+        });
+        assert_same(&nested.collect::<Vec<_>>());
         let row = Doc::Struct(vec![
             (1, Some(Doc::Str("rapid".into()))),
             (
@@ -1476,6 +1481,24 @@ mod tests {
         assert_same(&long);
     }
 
+    /// A kept field start is for its name at its level, whatever slot it
+    /// is found in.
+    #[test]
+    fn a_kept_field_start_is_used_at_its_own_level_only() {
+        static NAME: &str = "x";
+        let id = (NAME.as_ptr().addr(), NAME.len());
+        let mut ser = JsonSerializer::<Vec<u8>, true>::new(Vec::new());
+        ser.level = 1;
+        ser.field_start(NAME, false);
+        assert_eq!(ser.buf, b",\n  \"x\": ");
+        ser.field_starts[field_start_slot(id, 3)] = ser.field_starts[field_start_slot(id, 1)];
+        ser.level = 3;
+        ser.buf.clear();
+        ser.field_start(NAME, true);
+        assert_eq!(ser.buf, b"\n      \"x\": ");
+        ser.buf.clear();
+    }
+
     #[test]
     fn lengths_and_leads_are_strings_through_other_serializers() {
         let mm = Units { system: IncrementSystem::IsB, unit: InputUnit::Metric };
@@ -1484,12 +1507,15 @@ mod tests {
         assert_eq!(serde_json::to_value(length).unwrap(), serde_json::json!("-0.005"));
         assert_eq!(serde_json::to_value(lead).unwrap(), serde_json::json!("F6.0"));
         assert_eq!(serde_json::to_string(&(length, lead)).unwrap(), r#"["-0.005","F6.0"]"#);
-        // A text offered to another serializer is withdrawn: a value at
-        // the same address written afterwards is its own.
-        let mut out = Vec::new();
-        to_writer_compact(&mut out, &Doc::Display(vec!["a\"b".into()])).unwrap();
-        assert_eq!(out, br#""a\"b""#);
+        // A text offered to another serializer is withdrawn.
+        assert!(OFFERED.get().is_none());
         assert_same(&(length, lead, Doc::Display(vec!["1.000".into()])));
+        // An offered text is written only for the value it was offered with.
+        OFFERED.set(Some((address_of(&length), PlainText::Length(length))));
+        let mut out = Vec::new();
+        to_writer_compact(&mut out, &(Doc::Display(vec!["a\"b".into()]), length)).unwrap();
+        assert!(OFFERED.get().is_none());
+        assert_eq!(String::from_utf8(out).unwrap(), r#"["a\"b","-0.005"]"#);
     }
 
     /// A writer that fails with `kind` once `room` bytes are taken.
