@@ -241,8 +241,10 @@ pub struct MovesDocument<'n, C> {
 const NEWLINE_INDENT: &[u8; 63] = b"\n                                                              ";
 
 /// serde_json's pretty format (two spaces, `": "`), byte for byte, with
-/// each line break and its indentation written at once: the writer sees a
-/// few calls per line instead of one per level.
+/// each line break and its indentation written at once, as a
+/// `serde_json::ser::Formatter`. The commands write with [`ser`] since
+/// issue 11; this is the reference its tests hold it to (and the way to
+/// write these documents with `serde_json` itself).
 #[derive(Clone, Debug, Default)]
 pub struct Pretty {
     level: usize,

@@ -13,7 +13,7 @@
 //!   or a value of a map), so a write is a copy into a `Vec`;
 //! * the start of a struct field — comma, line break, indentation, the
 //!   quoted name and `": "` — is made once per name and level and kept
-//!   ([`FieldStart`]): a field's start is then one copy of fixed size (the
+//!   (`FieldStart`): a field's start is then one copy of fixed size (the
 //!   names are `&'static str`, so the name's address and length are its
 //!   identity);
 //! * a line break with its indentation is one copy of fixed size too;
@@ -22,13 +22,14 @@
 //! * lengths and leads ([`Fixed`], [`LeadText`]) serialize through
 //!   `collect_str`, which every serializer writes as a string; this one
 //!   writes their ASCII digits straight into its buffer (see
-//!   [`serialize_plain`]), without `&str`, UTF-8 check or escape scan;
+//!   `serialize_plain`), without `&str`, UTF-8 check or escape scan;
 //! * integers are written two digits a step ([`encode_fixed`]).
 //!
-//! Everything `serde_json` serializes is written the same way here, except
-//! floats, which are handed to `serde_json` itself (the moves documents
-//! have none), and map keys that are neither strings, integers, booleans
-//! nor floats, which are an error in both.
+//! The whole serde data model is written as `serde_json` writes it (the
+//! tests hold the two to the same bytes): floats by `serde_json` itself
+//! (the moves documents have none); a map key JSON cannot have is refused
+//! with `serde_json`'s words; errors convert into [`io::Error`] as
+//! `serde_json`'s do.
 
 use std::cell::Cell;
 use std::fmt;
@@ -723,7 +724,7 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         self.serialize_map(Some(len))
     }
 
-    /// `value`'s text as a JSON string: the text [`serialize_plain`]
+    /// `value`'s text as a JSON string: the text `serialize_plain`
     /// offers for `value` as it is, any other escaped as it is displayed.
     #[inline]
     fn collect_str<T: ?Sized + fmt::Display>(self, value: &T) -> Result<()> {
