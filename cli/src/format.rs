@@ -7,6 +7,8 @@ use cycleref::Point;
 use cycleref::{Flank, IncrementSystem, LeadWord, PassKind, Role, StartAngle, Units};
 use cycleref_spec::profile::QUnit;
 
+use crate::json::ser::{serialize_plain, PlainText};
+
 /// `v` increments as a decimal with the increment's number of decimals.
 pub fn fixed(v: i64, units: Units) -> String {
     Fixed::new(v, units).to_string()
@@ -102,10 +104,12 @@ impl fmt::Display for Fixed {
     }
 }
 
+/// A string (`"64.400"`) in every format: `collect_str` of the text
+/// above; the JSON writer takes the digits without the text
+/// ([`crate::json::ser`]).
 impl serde::Serialize for Fixed {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut buf = [0; FIXED_BUF];
-        s.serialize_str(std::str::from_utf8(self.encode(&mut buf)).map_err(serde::ser::Error::custom)?)
+        serialize_plain(self, PlainText::Length(*self), s)
     }
 }
 
@@ -224,10 +228,10 @@ impl fmt::Display for LeadText {
     }
 }
 
+/// A string (`"F6.0"`) in every format, as [`Fixed`]'s.
 impl serde::Serialize for LeadText {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut buf = [0; FIXED_BUF];
-        s.serialize_str(std::str::from_utf8(self.encode(&mut buf)).map_err(serde::ser::Error::custom)?)
+        serialize_plain(self, PlainText::Lead(*self), s)
     }
 }
 

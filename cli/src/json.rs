@@ -2,7 +2,8 @@
 //! into a writer (the `json` and `jsonl` output contracts in the README).
 //!
 //! Every document of moves is written from these types: `expand --format
-//! json` and `jsonl`, and the expected moves of `vectors`. Fields are in
+//! json` and `jsonl` (by [`ser`], the writer that serializes them), and the
+//! expected moves of `vectors` (through `serde_json::Value`). Fields are in
 //! the contract's order; the moves of a cycle are taken from the engine as
 //! they are written, so a cycle of a million moves costs no memory here.
 
@@ -14,6 +15,8 @@ use cycleref_spec::pipeline::{Cycle, Moves};
 use serde::ser::{Serialize, SerializeSeq, Serializer};
 
 use crate::format::{flank_name, kind_name, plunge_of, role_name, Fixed, LeadText};
+
+pub mod ser;
 
 /// `{"unit": "mm", "decimals": 3}`.
 #[derive(serde::Serialize)]
@@ -238,8 +241,10 @@ pub struct MovesDocument<'n, C> {
 const NEWLINE_INDENT: &[u8; 63] = b"\n                                                              ";
 
 /// serde_json's pretty format (two spaces, `": "`), byte for byte, with
-/// each line break and its indentation written at once: the writer sees a
-/// few calls per line instead of one per level.
+/// each line break and its indentation written at once, as a
+/// `serde_json::ser::Formatter`. The commands write with [`ser`] since
+/// issue 11; this is the reference its tests hold it to (and the way to
+/// write these documents with `serde_json` itself).
 #[derive(Clone, Debug, Default)]
 pub struct Pretty {
     level: usize,

@@ -9,7 +9,7 @@
 //! * [`output`]: the streaming writers of `expand` (nc, json, jsonl) and
 //!   `passes`;
 //! * [`json`]: the typed `cycleref-moves/1` documents, serialized straight
-//!   into the writer;
+//!   into the writer by their own serializer ([`json::ser`]);
 //! * [`format`](mod@format): the text forms of lengths, leads, angles and names;
 //! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
 //! * [`plot`]: `plot`, the SVG drawing (one module per cycle over a shared

@@ -18,6 +18,7 @@ use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, Resto
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
 use crate::job::{Failure, Job};
+use crate::json::ser::JsonSerializer;
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
 
 /// The format of `expand`'s output.
@@ -389,9 +390,9 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         units: UnitsJson::new(units),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)?))),
     };
-    let mut ser = serde_json::Serializer::with_formatter(&mut *out, crate::json::Pretty::default());
-    serde::Serialize::serialize(&doc, &mut ser).map_err(io::Error::from)?;
-    out.write_all(b"\n")
+    let mut ser = JsonSerializer::<_, true>::new(&mut *out);
+    ser.write_line(&doc)?;
+    ser.finish()
 }
 
 /// The summary line of the jsonl format.
@@ -406,14 +407,14 @@ struct JsonlSummary<'n> {
 
 fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     let (mut cycles, mut moves_total) = (0, 0_u64);
+    let mut ser = JsonSerializer::<_, false>::new(&mut *out);
     each_item(job, |item| {
         let Some(c) = Cycle::of(item) else { return Ok(()) };
         let m = moves(job, c)?;
         // Counted on a copy of the iterator: the summary line is exact.
         moves_total += m.clone().count() as u64;
         cycles += 1;
-        serde_json::to_writer(&mut *out, &CycleJson::new(c, m)).map_err(io::Error::from)?;
-        out.write_all(b"\n")
+        ser.write_line(&CycleJson::new(c, m))
     })?;
     let summary = JsonlSummary {
         format: "cycleref-moves-jsonl/1",
@@ -422,8 +423,8 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         cycles,
         moves: moves_total,
     };
-    serde_json::to_writer(&mut *out, &summary).map_err(io::Error::from)?;
-    out.write_all(b"\n")
+    ser.write_line(&summary)?;
+    ser.finish()
 }
 
 /// Writes the pass tables of `job`: every G76 cycle, then every G75.1
