@@ -731,36 +731,13 @@ impl<'a> Lexer<'a> {
                 b'/' => return Err(out_of_place("/", "block delete `/` may only start a block")),
                 b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
                 b if b.is_ascii_alphabetic() => {
-                    let (word, end) = read_word(whole, pos, line_no)?;
-                    if mark {
-                        return Err(misplaced(line_no, &word, MARK_RULE));
-                    }
-                    match word.letter {
-                        'N' if !seen => {}
-                        'N' => {
-                            return Err(misplaced(
-                                line_no,
-                                &word,
-                                "a sequence number N may only start a block (after an optional `/`)",
-                            ))
-                        }
-                        'O' if !seen => program_number = Some(word),
-                        'O' => {
-                            return Err(misplaced(
-                                line_no,
-                                &word,
-                                "a program number O must stand at the start of a block of its own",
-                            ))
-                        }
-                        _ if program_number.is_some() => {
-                            // The O word is the one out of place.
-                            return Err(misplaced(
-                                line_no,
-                                program_number.as_ref().unwrap_or(&word),
-                                "a program number O must stand in a block of its own; nothing may follow it",
-                            ));
-                        }
-                        _ => words.push(word),
+                    let (word, end, has_digits) = read_word(whole, pos);
+                    // The usual word goes straight to the block's words; the
+                    // rules of the others are out of line.
+                    if has_digits && !mark && program_number.is_none() && !matches!(word.letter, 'N' | 'O') {
+                        words.push(word);
+                    } else {
+                        other_word(word, has_digits, mark, seen, &mut program_number, words, line_no)?;
                     }
                     seen = true;
                     pos = end;
@@ -971,7 +948,7 @@ fn trim_ends(mut bytes: &[u8]) -> &[u8] {
 }
 
 /// The word that starts at `start` (an ASCII letter) and the offset after it.
-fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>, usize), ProgramError> {
+fn read_word(whole: Line<'_>, start: usize) -> (Word<'_>, usize, bool) {
     let line = whole.bytes;
     let letter = char::from(line[start].to_ascii_uppercase());
     let mut pos = start + 1;
@@ -1007,22 +984,76 @@ fn read_word(whole: Line<'_>, start: usize, line_no: usize) -> Result<(Word<'_>,
     };
     let negative = digits_start > num_start && line[num_start] == b'-';
     let word = Word { letter, raw, at, point, negative };
-    if int_len == 0 && frac_len.is_none_or(|f| f == 0) {
-        return Err(no_number(line_no, &word, num_start == pos));
-    }
-    Ok((word, pos))
+    // No error is made here: a `Result` carrying a `ProgramError` went
+    // through memory on the hot path (a store-forwarding stall per word,
+    // perf); `other_word` makes it.
+    let has_digits = int_len > 0 || frac_len.is_some_and(|f| f > 0);
+    (word, pos, has_digits)
 }
 
-/// The error of a word without a number (perhaps with a sign).
+/// A word of a segment that is not simply pushed: one without a number
+/// (`has_digits` false), a word after `%` (`mark`), an N or O word, a word
+/// after an O: the rules of [`Lexer`]'s `segment`, in their order.
+#[inline(never)]
+fn other_word<'a>(
+    word: Word<'a>,
+    has_digits: bool,
+    mark: bool,
+    seen: bool,
+    program_number: &mut Option<Word<'a>>,
+    words: &mut Words<'a>,
+    line_no: usize,
+) -> Result<(), ProgramError> {
+    if !has_digits {
+        return Err(no_number(line_no, &word));
+    }
+    if mark {
+        return Err(misplaced(line_no, &word, MARK_RULE));
+    }
+    match word.letter {
+        'N' if !seen => {}
+        'N' => {
+            return Err(misplaced(
+                line_no,
+                &word,
+                "a sequence number N may only start a block (after an optional `/`)",
+            ))
+        }
+        'O' if !seen => *program_number = Some(word),
+        'O' => {
+            return Err(misplaced(
+                line_no,
+                &word,
+                "a program number O must stand at the start of a block of its own",
+            ))
+        }
+        _ if program_number.is_some() => {
+            // The O word is the one out of place.
+            return Err(misplaced(
+                line_no,
+                program_number.as_ref().unwrap_or(&word),
+                "a program number O must stand in a block of its own; nothing may follow it",
+            ));
+        }
+        _ => words.push(word),
+    }
+    Ok(())
+}
+
+/// The error of a word without a number (perhaps with a sign or a point):
+/// `word` from its letter to where the lexer stopped.
 #[cold]
-fn no_number(line_no: usize, word: &Word<'_>, no_sign: bool) -> ProgramError {
+#[inline(never)]
+fn no_number(line_no: usize, word: &Word<'_>) -> ProgramError {
+    // Nothing but spaces after the letter: no sign (nor point) either.
+    let bare = word.raw.iter().skip(1).all(|&b| b == b' ' || b == b'\t');
     ProgramError {
         line: line_no,
         word: Some(word.text().into_owned()),
         kind: ErrorKind::Syntax(format!(
             "the address `{}` without a number{}",
             word.letter,
-            if no_sign { "" } else { " (only a sign)" }
+            if bare { "" } else { " (only a sign)" }
         )),
     }
 }
