@@ -905,7 +905,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             }
             let piece = self.buf.get(..self.piece).unwrap_or_default();
             let rest = piece.get(self.at..).unwrap_or_default();
-            let (end, next) = match rest.iter().position(|&b| b == b'\n') {
+            let (end, next) = match memchr::memchr(b'\n', rest) {
                 Some(i) => (self.at + i, self.at + i + 1),
                 None => (piece.len(), piece.len()),
             };

@@ -436,7 +436,7 @@ pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
     let mut searched = 0;
     loop {
         // The piece ends after the last line end read so far.
-        if let Some(i) = buf[searched..].iter().rposition(|&b| b == b'\n') {
+        if let Some(i) = memchr::memrchr(b'\n', &buf[searched..]) {
             *piece = searched + i + 1;
             return Ok(true);
         }

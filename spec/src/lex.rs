@@ -685,7 +685,9 @@ impl<'a> Lexer<'a> {
         }
         let start = self.pos;
         let rest = &self.src[self.pos..];
-        let (line, advance) = match rest.iter().position(|&b| b == b'\n') {
+        // memchr: a line end is found many bytes a step (a byte loop here
+        // was a sixth of the reader's time).
+        let (line, advance) = match memchr::memchr(b'\n', rest) {
             Some(i) => (&rest[..i], i + 1),
             None => (rest, rest.len()),
         };
