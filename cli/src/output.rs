@@ -187,9 +187,13 @@ fn nc_g76<W: Write>(
 ) -> io::Result<()> {
     let u = call.cycle.units;
     // The heading counts the rough passes, found before any move (reading
-    // R-LIMIT) as both engines find it; the cycle expanded, so it has a
-    // count.
-    let rough_passes = cycleref::engine::rough_pass_count(&call.cycle).unwrap_or(0);
+    // R-LIMIT) as both engines find it: the engine's iterator keeps its
+    // count, the reference's is counted again; the cycle expanded, so it
+    // has a count.
+    let rough_passes = match moves.rough_passes() {
+        Some(n) => n,
+        None => cycleref::engine::rough_pass_count(&call.cycle).unwrap_or(0),
+    };
     let starts = call.cycle.starts;
     writeln!(
         out,

@@ -159,6 +159,20 @@ impl Iterator for Moves {
     }
 }
 
+impl Moves {
+    /// The number of rough passes of a G76 or G78 cycle (reading R-LIMIT),
+    /// when the engine counted them before its first move (the fixed-point
+    /// engine does); `None` for the other cycles and for the reference,
+    /// whose count [`cycleref::engine::rough_pass_count`] gives.
+    #[must_use]
+    pub fn rough_passes(&self) -> Option<u64> {
+        match &self.0 {
+            Inner::G76(m) => Some(m.rough_passes()),
+            _ => None,
+        }
+    }
+}
+
 /// The moves of `cycle` by `engine`.
 ///
 /// Every alarm is raised here, before the first move: taking the moves

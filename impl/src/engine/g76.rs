@@ -290,6 +290,8 @@ pub struct G76Moves {
     walk: Walk,
     /// Current start, 0-based.
     start: u32,
+    /// The number of rough passes, found before any move (reading R-LIMIT).
+    rough_passes: u64,
 }
 
 /// What the up-front checks need of the planned passes: the depth of the
@@ -400,7 +402,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     if long_axis == LongAxis::X && c.lead_in > 0 {
         return Err(CycleError::LeadInOnXLongAxis);
     }
-    check_pass_count(c)?;
+    let rough_passes = check_pass_count(c)?;
     let last = c.thread_height - c.finishing_allowance;
     let centre = flank_shift(last, c.tool_angle);
     let extremes = plan_extremes(c, last, centre);
@@ -491,12 +493,33 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         // Replaced by next_pass below before any use.
         walk: Walk::new(frame.path(0, 0), placeholder, StartAngle::ZERO, a),
         start: 0,
+        rough_passes,
     };
     moves.next_pass();
     Ok(moves)
 }
 
 impl G76Moves {
+    /// The number of rough passes of the cycle, as [`rough_pass_count`]
+    /// gives it: [`expand_g76`] counted them (reading R-LIMIT) before it
+    /// returned.
+    ///
+    /// ```
+    /// use cycleref::engine::rough_pass_count;
+    /// use cycleref::examples::M68X6;
+    /// use cycleref::expand_g76;
+    ///
+    /// // k − d = 3.58; the levels 1.8·√n are 1.8, 2.546, 3.118, then 3.6,
+    /// // which the last level, at 3.58, takes the place of.
+    /// assert_eq!(expand_g76(&M68X6)?.rough_passes(), 4);
+    /// assert_eq!(rough_pass_count(&M68X6)?, 4);
+    /// # Ok::<(), cycleref::CycleError>(())
+    /// ```
+    #[must_use]
+    pub fn rough_passes(&self) -> u64 {
+        self.rough_passes
+    }
+
     /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
     fn next_pass(&mut self) {
         let Some((pass, shift)) = self.plan_next() else {
