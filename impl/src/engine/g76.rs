@@ -83,7 +83,7 @@
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (424 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (432 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
