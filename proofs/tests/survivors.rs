@@ -550,3 +550,45 @@ fn the_other_contracts_refuse_a_wrong_answer_at_each_bound() {
     assert!(!mul_tan_round_ensures(100, 90, Some(-100)));
     assert!(mul_tan_round_ensures(0, 90, Some(0)));
 }
+
+/// `engine/g75/roughing.rs` 77:15 (`lower += …` → `-=` in
+/// `check_peck_count`): the closed-form lower bound of the peck count
+/// refuses a groove before its layers are counted one by one, which is
+/// what bounds that loop by `MAX_PECKS` (the outcome alone cannot show it:
+/// the count layer by layer refuses the groove too, one layer later).
+/// Worked by hand: a right-angle groove (L = 0, so y_top = 0) of depth
+/// Y = 1 000 001 increments, Δv = 1, Δi = 1, no allowance and no tool
+/// width has M = 1 000 001 layers of one plunge of one peck each; the
+/// bound is 1 (layer 1) + (M − 2)·1 + 1 (the last) = 1 000 001 >
+/// MAX_PECKS = 10^6: `TooManyPecks`, and the layer loop never runs. One
+/// layer less, 10^6 pecks, is admitted, and the loop counts all 10^6
+/// layers.
+#[test]
+fn the_peck_count_refuses_too_many_layers_before_counting_them() {
+    use cycleref::g75::MAX_PECKS;
+    use cycleref::loop_counters::G75_LAYERS;
+    use cycleref::CycleError;
+    use cycleref_proofs::groove::{any_groove, GrooveDomain};
+    use cycleref_proofs::shim::{check, Mode};
+    let _serial = serial();
+    // Each domain is one point: its run makes the cycle (the domain's
+    // choices are made inside the shim) and expands it.
+    let one = Mode::Exhaustive { max_runs: 1 };
+    let too_many = GrooveDomain::layers_only((1_000_001, 1_000_001), (1, 1), (1, 1));
+    let r = check("10^6 + 1 layers", one, || {
+        let c = any_groove(&too_many);
+        loop_counters::reset();
+        assert_eq!(cycleref::expand_g75(&c).err(), Some(CycleError::TooManyPecks { limit: MAX_PECKS }));
+        assert_eq!(G75_LAYERS.max(), 0, "the layers were counted one by one before the refusal");
+    });
+    assert_eq!(r.runs, 1);
+    let most = GrooveDomain::layers_only((1_000_000, 1_000_000), (1, 1), (1, 1));
+    let r = check("10^6 layers", one, || {
+        let c = any_groove(&most);
+        loop_counters::reset();
+        assert!(cycleref::expand_g75(&c).is_ok());
+        assert_eq!(G75_LAYERS.max(), 1_000_000);
+    });
+    assert_eq!(r.runs, 1);
+    loop_counters::reset();
+}
