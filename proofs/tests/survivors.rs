@@ -592,3 +592,51 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
     assert_eq!(r.runs, 1);
     loop_counters::reset();
 }
+
+/// `engine/g75/contour.rs` 155:27 (`size(R3) > 0` → `>=` in
+/// `rough_vertices`): an angled groove whose bottom corner r3 has size 0
+/// (flank A 30°, flank B 18.67385°) roughs its contour along flank A to
+/// the bottom in one feed; the mutant puts the corner's K1 and K2 in,
+/// which round elsewhere than flank A's bottom point. The harness tests'
+/// windows are right-angle grooves, where they coincide. The moves are
+/// the exact reference's (`cycleref_spec::g75::expand`): 19 of them, the
+/// ninth the rough contour's feed to X4.9897 Z0.1030 (IS-C inch).
+#[test]
+fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
+    use cycleref::{
+        Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, Motion, PathType, Point, Role, Units, XMode,
+    };
+    let _serial = serial();
+    let chamfer = Corner { size: 0, kind: CornerKind::Chamfer };
+    let c = G75Cycle {
+        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
+        x_mode: XMode::Diameter,
+        from: Point::new(52_000, 500),
+        start: Point::new(50_000, 1000),
+        peck: 108,
+        step: 62,
+        depth: -108,
+        width: 102,
+        flank_a: 600_000,
+        flank_b: 373_477,
+        slope: 0,
+        retract: 1112,
+        layer: Some(160),
+        allowance_x: 5,
+        allowance_z: 0,
+        tool_width: Some(54),
+        path: PathType::RoughAndFinish,
+        corners: [
+            chamfer,
+            chamfer,
+            Corner { size: 0, kind: CornerKind::Round },
+            Corner { size: 1, kind: CornerKind::Round },
+        ],
+    };
+    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    assert_eq!(reference.len(), 19);
+    assert_eq!(reference[8].to, Point::new(49_897, 1030));
+    assert_eq!((reference[8].motion, reference[8].role), (Motion::Feed, Role::RoughContour));
+    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
+    assert_eq!(engine, reference);
+}
