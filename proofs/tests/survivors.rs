@@ -551,8 +551,9 @@ fn the_other_contracts_refuse_a_wrong_answer_at_each_bound() {
     assert!(mul_tan_round_ensures(0, 90, Some(0)));
 }
 
-/// `engine/g75/roughing.rs` 77:15 (`lower += …` → `-=` in
-/// `check_peck_count`): the closed-form lower bound of the peck count
+/// `engine/g75/roughing.rs` 77:15 (`lower += …` → `-=`, `*=`) and 77:30
+/// (`(M − 2) * pecks` → `+`, `/`) in `check_peck_count`: the closed-form
+/// lower bound of the peck count
 /// refuses a groove before its layers are counted one by one, which is
 /// what bounds that loop by `MAX_PECKS` (the outcome alone cannot show it:
 /// the count layer by layer refuses the groove too, one layer later).
@@ -577,6 +578,18 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
     let too_many = GrooveDomain::layers_only((1_000_001, 1_000_001), (1, 1), (1, 1));
     let r = check("10^6 + 1 layers", one, || {
         let c = any_groove(&too_many);
+        loop_counters::reset();
+        assert_eq!(cycleref::expand_g75(&c).err(), Some(CycleError::TooManyPecks { limit: MAX_PECKS }));
+        assert_eq!(G75_LAYERS.max(), 0, "the layers were counted one by one before the refusal");
+    });
+    assert_eq!(r.runs, 1);
+    // Layers of two pecks (Δv = 2, Δi = 1), Y = 1 000 002: M = 500 001,
+    // and the bound 2 (layer 1) + (M − 2)·2 + 2 (the last) = 1 000 002 >
+    // 10^6: refused before counting too (a bound that adds the middle
+    // layers' count and their pecks, or divides them, is below the limit).
+    let two_pecks = GrooveDomain::layers_only((1_000_002, 1_000_002), (1, 1), (2, 2));
+    let r = check("500 001 layers of 2 pecks", one, || {
+        let c = any_groove(&two_pecks);
         loop_counters::reset();
         assert_eq!(cycleref::expand_g75(&c).err(), Some(CycleError::TooManyPecks { limit: MAX_PECKS }));
         assert_eq!(G75_LAYERS.max(), 0, "the layers were counted one by one before the refusal");
