@@ -572,37 +572,31 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
     use cycleref_proofs::groove::{any_groove, GrooveDomain};
     use cycleref_proofs::shim::{check, Mode};
     let _serial = serial();
-    // Each domain is one point: its run makes the cycle (the domain's
-    // choices are made inside the shim) and expands it.
-    let one = Mode::Exhaustive { max_runs: 1 };
-    let too_many = GrooveDomain::layers_only((1_000_001, 1_000_001), (1, 1), (1, 1));
-    let r = check("10^6 + 1 layers", one, || {
-        let c = any_groove(&too_many);
-        loop_counters::reset();
-        assert_eq!(cycleref::expand_g75(&c).err(), Some(CycleError::TooManyPecks { limit: MAX_PECKS }));
-        assert_eq!(G75_LAYERS.max(), 0, "the layers were counted one by one before the refusal");
-    });
-    assert_eq!(r.runs, 1);
     // Layers of two pecks (Δv = 2, Δi = 1), Y = 1 000 002: M = 500 001,
     // and the bound 2 (layer 1) + (M − 2)·2 + 2 (the last) = 1 000 002 >
     // 10^6: refused before counting too (a bound that adds the middle
     // layers' count and their pecks, or divides them, is below the limit).
-    let two_pecks = GrooveDomain::layers_only((1_000_002, 1_000_002), (1, 1), (2, 2));
-    let r = check("500 001 layers of 2 pecks", one, || {
-        let c = any_groove(&two_pecks);
-        loop_counters::reset();
-        assert_eq!(cycleref::expand_g75(&c).err(), Some(CycleError::TooManyPecks { limit: MAX_PECKS }));
-        assert_eq!(G75_LAYERS.max(), 0, "the layers were counted one by one before the refusal");
-    });
-    assert_eq!(r.runs, 1);
-    let most = GrooveDomain::layers_only((1_000_000, 1_000_000), (1, 1), (1, 1));
-    let r = check("10^6 layers", one, || {
-        let c = any_groove(&most);
-        loop_counters::reset();
-        assert!(cycleref::expand_g75(&c).is_ok());
-        assert_eq!(G75_LAYERS.max(), 1_000_000);
-    });
-    assert_eq!(r.runs, 1);
+    // Each case: (depth Y, Δv), refused or not, the layers counted one by
+    // one.
+    let cases = [
+        ("10^6 + 1 layers of 1 peck", (1_000_001, 1), false, 0),
+        ("500 001 layers of 2 pecks", (1_000_002, 2), false, 0),
+        ("10^6 layers of 1 peck", (1_000_000, 1), true, 1_000_000),
+    ];
+    for (name, (depth, layer), admitted, counted) in cases {
+        let domain = GrooveDomain::layers_only((depth, depth), (1, 1), (layer, layer));
+        // The domain is one point: its run makes the cycle (the domain's
+        // choices are made inside the shim) and expands it.
+        let r = check(name, Mode::Exhaustive { max_runs: 1 }, || {
+            let c = any_groove(&domain);
+            loop_counters::reset();
+            let expanded = cycleref::expand_g75(&c).err();
+            let refused = Some(CycleError::TooManyPecks { limit: MAX_PECKS });
+            assert_eq!(expanded, if admitted { None } else { refused }, "{name}");
+            assert_eq!(G75_LAYERS.max(), counted, "{name}: the layers counted one by one");
+        });
+        assert_eq!(r.runs, 1);
+    }
     loop_counters::reset();
 }
 
