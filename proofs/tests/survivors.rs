@@ -647,3 +647,87 @@ fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
     let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
     assert_eq!(engine, reference);
 }
+
+/// `engine/g75/contour.rs` 167:17 (`y_k4 > y_top` → `>=` in
+/// `rough_vertices`) and its mirror 157:17 (`y_k1 > y_top` → `>=`): a
+/// groove whose bottom chamfers' chords meet the flanks between the layer
+/// top and the next integer depth. The moves are the same either way (K4
+/// is then R3, K1 is R0: the mutants' extra feed would not move and is left
+/// out, R-G75ZERO), but `groove_profile` lists the roughing region's
+/// vertices, and the mutants list R3 (R0) twice. Worked by hand (and the
+/// reference `cycleref_spec::g75::profile` agrees): A60 B60, Y = 6001
+/// (diameter, f = 2), U400 W200, d = 8000, chamfers r3 = r4 = 3118, no
+/// slope, so y_top = 0 and y_K1 = y_K4 = floor(6001 − 400 − 2·3118·sin 60°
+/// − 400·cos 60°) = floor(5401 − 3118·√3) = floor(0.4656…) = 0, not below
+/// y_top: neither K1 nor K4 is a vertex. P1.u = 3000.5·cot 60° =
+/// 1732.3395…; R0 = (ceil(max(flankA_r(0), chord3_r(0))), 0) =
+/// (ceil(max(200, 199.7312…)), 0) = (200, 0); K2 =
+/// (ceil(1732.3395… + 3118 + 200), 5601) = (5051, 5601); K3 =
+/// (floor(1732.3395… + 8000 − 3318), 5601) = (6414, 5601); R3 =
+/// (floor(min(flankB_r(0), chord4_r(0))), 0) =
+/// (floor(min(11264.6790…, 11264.9478…)), 0) = (11264, 0), which is
+/// K4 = (floor(flankB_r(0)), 0). Absolute, without the tool width:
+/// X = 30000 − y, Z = −u.
+#[test]
+fn chords_meeting_the_flanks_at_the_layer_top_add_no_vertex() {
+    use cycleref::{
+        Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, Motion, PathType, Point, Role, Units, XMode,
+    };
+    let _serial = serial();
+    let chamfer = Corner { size: 3118, kind: CornerKind::Chamfer };
+    let c = G75Cycle {
+        units: Units { system: IncrementSystem::IsB, unit: InputUnit::Metric },
+        x_mode: XMode::Diameter,
+        from: Point::new(40_000, 5_000),
+        start: Point::new(30_000, 0),
+        peck: 2_000,
+        step: 1_000,
+        depth: -6_001,
+        width: -8_000,
+        flank_a: 600_000,
+        flank_b: 600_000,
+        slope: 0,
+        retract: 500,
+        layer: None,
+        allowance_x: 400,
+        allowance_z: 200,
+        tool_width: Some(1_000),
+        path: PathType::RoughAndFinish,
+        corners: [Corner::SHARP, Corner::SHARP, chamfer, chamfer],
+    };
+    let by_hand = [
+        Point::new(30_000, -200),
+        Point::new(24_399, -5_051),
+        Point::new(24_399, -6_414),
+        Point::new(30_000, -11_264),
+    ];
+    // The reference's vertices, in the same frame.
+    let reference = cycleref_spec::g75::profile(&c).expect("the reference has the profile");
+    assert_eq!(reference.y_top, 0);
+    let g = cycleref_spec::g75::groove(&c);
+    assert_eq!((cycleref_spec::g75::y_k1(&g), cycleref_spec::g75::y_k4(&g)), (Ok(0), Ok(0)));
+    let at = |u: i128, y: i128| Point::new(30_000 - i64::try_from(y).unwrap(), -i64::try_from(u).unwrap());
+    let vertices: Vec<Point> = reference.rough.iter().map(|v| at(v.at.u, v.at.y)).collect();
+    assert_eq!(vertices, by_hand);
+    let profile = cycleref::groove_profile(&c).expect("the engine has the profile");
+    assert_eq!(profile.roughing(), by_hand);
+    // The moves are the reference's.
+    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
+    assert_eq!(reference.len(), 28);
+    // The rough contour: rapid to R0, feeds to K2, K3 − w, R3 − w (w =
+    // 1000), rapid back to A11 = (5051, 0); no feed that would not move.
+    let contour: Vec<_> =
+        reference.iter().filter(|m| m.role == Role::RoughContour).map(|m| (m.motion, m.to)).collect();
+    assert_eq!(
+        contour,
+        [
+            (Motion::Rapid, Point::new(30_000, -200)),
+            (Motion::Feed, Point::new(24_399, -5_051)),
+            (Motion::Feed, Point::new(24_399, -5_414)),
+            (Motion::Feed, Point::new(30_000, -10_264)),
+            (Motion::Rapid, Point::new(30_000, -5_051)),
+        ]
+    );
+    assert_eq!(engine, reference);
+}
