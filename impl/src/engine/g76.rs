@@ -520,6 +520,17 @@ impl G76Moves {
         self.rough_passes
     }
 
+    /// The path of this start is done: the next start, or the next pass.
+    #[inline(never)]
+    fn advance(&mut self) {
+        let next = self.start.saturating_add(1);
+        if next < self.frame.starts {
+            self.begin_start(next);
+        } else {
+            self.next_pass();
+        }
+    }
+
     /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
     fn next_pass(&mut self) {
         let Some((pass, shift)) = self.plan_next() else {
@@ -626,8 +637,12 @@ impl G76Moves {
 impl Iterator for G76Moves {
     type Item = Move;
 
-    // Inlined across crates: a call per move costs more than the move.
-    #[inline]
+    // Inlined across crates: a call per move costs more than the move, and
+    // a `Move` returned through memory is assembled there piece by piece
+    // and read back whole (a store-forwarding stall per move). Only the
+    // walk is inline; the next start or pass is a call (`advance`), once
+    // per path.
+    #[inline(always)]
     fn next(&mut self) -> Option<Move> {
         let mut count = crate::loop_counters::count!(G76_NEXT);
         loop {
@@ -638,13 +653,7 @@ impl Iterator for G76Moves {
             if let Some(m) = self.walk.next_move(&self.frame) {
                 return Some(m);
             }
-            // The path of this start is done: next start, or next pass.
-            let next = self.start.saturating_add(1);
-            if next < self.frame.starts {
-                self.begin_start(next);
-            } else {
-                self.next_pass();
-            }
+            self.advance();
         }
     }
 }

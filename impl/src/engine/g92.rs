@@ -170,7 +170,9 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
 impl Iterator for G92Moves {
     type Item = Move;
 
-    #[inline]
+    // Inlined across crates (see `G76Moves::next`): only the walk; the
+    // next start is a call (`next_start`), once per path.
+    #[inline(always)]
     fn next(&mut self) -> Option<Move> {
         let mut count = crate::loop_counters::count!(G92_NEXT);
         loop {
@@ -178,20 +180,30 @@ impl Iterator for G92Moves {
             if let Some(m) = self.walk.next_move(&self.frame) {
                 return Some(m);
             }
-            // The path of this start is done: the next start, if any
-            // (reading R-STARTS: each start a full pass from A).
-            let next = self.start.saturating_add(1);
-            if next >= self.frame.starts {
+            if !self.next_start() {
                 return None;
             }
-            self.start = next;
-            #[cfg(feature = "loop-counters")]
-            self.frame.spacing.record_angle_gcd(next);
-            // next < L ≤ 999.
-            let number = u16::try_from(next + 1).unwrap_or(u16::MAX);
-            let angle = self.first_angle.plus(self.frame.spacing.angle(next));
-            self.walk.restart(number, angle, self.frame.home);
         }
+    }
+}
+
+impl G92Moves {
+    /// The path of this start is done: the next start, if any (reading
+    /// R-STARTS: each start a full pass from A); false after the last.
+    #[inline(never)]
+    fn next_start(&mut self) -> bool {
+        let next = self.start.saturating_add(1);
+        if next >= self.frame.starts {
+            return false;
+        }
+        self.start = next;
+        #[cfg(feature = "loop-counters")]
+        self.frame.spacing.record_angle_gcd(next);
+        // next < L ≤ 999.
+        let number = u16::try_from(next + 1).unwrap_or(u16::MAX);
+        let angle = self.first_angle.plus(self.frame.spacing.angle(next));
+        self.walk.restart(number, angle, self.frame.home);
+        true
     }
 }
 

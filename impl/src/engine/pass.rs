@@ -94,6 +94,11 @@ impl Frame {
     /// reference's `pass_path` builds it.
     ///
     /// Twin: `spec/src/pass.rs`, `pass_path`.
+    // Inlined into each cycle's next pass: a `PassPath` returned through
+    // memory is written piece by piece and read back whole (a
+    // store-forwarding stall per pass, 40 % of `next_pass` in the G76
+    // benchmark).
+    #[inline(always)]
     pub(crate) fn path(&self, depth: i64, shift: i64) -> PassPath {
         let (s, t, xf) = (self.side, self.direction, self.xf);
         // 0 ≤ k - depth < 2^30; X of C < 3·2^30, Z shifts < 2^32.

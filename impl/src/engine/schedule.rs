@@ -92,6 +92,7 @@ impl Schedule {
     /// The depth of the next level, or `None` after the level at `k - d`.
     ///
     /// Twin: `spec/src/g76.rs`, `next_depth` (and `rough_levels`).
+    #[inline]
     pub fn next_level(&mut self) -> Option<i64> {
         if self.depth >= self.last {
             return None;
