@@ -600,6 +600,208 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
     loop_counters::reset();
 }
 
+/// `engine/g75/roughing.rs` 97:37 (`last − first` → `last + first`) and
+/// 97:50 (`+ 1` → `* 1`) in `check_peck_count`: the plunges of a layer,
+/// `ceil((A_mf − A_m1)/Δk) + 1`, times its pecks, are what is compared
+/// with `MAX_PECKS`, so a count off by a few plunges shows only at the
+/// limit (§9: more than 10^6 pecks refused, 10^6 admitted). One layer
+/// (no V), so the closed-form lower bound is one plunge's pecks, far
+/// below the limit, and the exact count decides. Worked by hand, for
+/// right-angle grooves (a = b = 90°, L = 0: y_top = 0, `left(y) = Δw`,
+/// `right(y) = d − Δw`, so A_11 = Δw and A_1f = d − Δw − w), Δi = Δk = 1,
+/// no U, a pointed tool (w = 0), no retract:
+///
+/// * Y = 1000, d = 1001, W1: A_11 = 1, A_1f = 1000, 1000 plunges of
+///   1000 pecks, exactly 10^6: admitted. With `last + first` the count
+///   is (1001 + 1)·1000 = 1 002 000: refused (A_11 = 1 > 0 is needed to
+///   see it; at A_11 = 0 the two agree).
+/// * Y = 9901, d = 100, no W: A_11 = 0, A_1f = 100, 101 plunges of 9901
+///   pecks, 1 000 001: refused. With `* 1` the count is 100·9901 =
+///   990 100: admitted.
+///
+/// The reference's `rough_layers` (which counts the same product) agrees;
+/// the engine only checks up front, the moves are not drawn.
+#[test]
+fn the_peck_count_is_exact_at_the_limit() {
+    use cycleref::g75::{MAX_PECKS, RIGHT_ANGLE};
+    use cycleref::{Corner, CycleError, G75Cycle, PathType, Point, Units, XMode};
+    use cycleref_spec::g75::{groove, peck_count, rough_layers, y_top};
+    let _serial = serial();
+    let cycle = |depth: i64, width: i64, allowance_z: i64| G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        from: Point::new(120_000, 5_000),
+        start: Point::new(100_000, 0),
+        peck: 1,
+        step: 1,
+        depth,
+        width,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer: None,
+        allowance_x: 0,
+        allowance_z,
+        tool_width: None,
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
+    // 1000 plunges from A_11 = 1 to A_1f = 1000, of 1000 pecks each.
+    let c = cycle(1_000, 1_001, 1);
+    let g = groove(&c);
+    assert_eq!(y_top(&g), Ok(0));
+    let layers = rough_layers(&g, 0).expect("the reference admits 10^6 pecks");
+    assert_eq!(layers.len(), 1);
+    let (first, last) = (layers[0].range.first, layers[0].range.last);
+    assert_eq!((first, last), (1, 1_000));
+    assert_eq!(layers[0].range.count(1) * peck_count(0, layers[0].bottom, 1), i128::from(MAX_PECKS));
+    assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Ok(()), "exactly 10^6 pecks");
+    // 101 plunges from A_11 = 0 to A_1f = 100, of 9901 pecks each.
+    let c = cycle(9_901, 100, 0);
+    let g = groove(&c);
+    assert_eq!(rough_layers(&g, 0).map(|_| ()), Err(refused));
+    let range = cycleref_spec::g75::plunge_range(&g, 1).expect("a right-angle groove");
+    assert_eq!((range.first, range.last, range.count(1)), (0, 100, 101));
+    assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(refused), "10^6 + 1 pecks");
+}
+
+/// `engine/g75/roughing.rs` 190:33 (`y_lim − top` → `y_lim / top` in
+/// `check_roughing`, closure `peck_beyond`; applied by hand, the mutation
+/// run had not reached that line yet): the first peck end beyond the
+/// range tables (R-G75RANGE: the first coordinate beyond ±999 999 999 in
+/// move order) is `top + j·Δi` with `j = floor((y_lim − top)/Δi) + 1`,
+/// clamped at the layer's bottom. Worked by hand: a right-angle groove
+/// (y_top = 0), S = (X999 999 974, Z0) in IS-B increments, Y = +40 (so
+/// X = 999 999 974 + y, and y_lim = 999 999 999 − 999 999 974 = 25),
+/// Δi = 4, d = 10 with a tool as wide (one plunge position, u = 0), no
+/// allowances, no retract, J0. The approach to A11 = (0, 0) is in range.
+///
+/// * No V, one layer from 0 to 40: pecks to 4, 8, …, 24 (X 999 999 998),
+///   then 28: X = 1 000 000 002, the first beyond, j = floor(25/4) + 1 =
+///   7. The mutant divides 25 by the top 0 and panics.
+/// * V10: layers to 10, 20, 30, 40 (M = 4); layers 1 and 2 stay within
+///   25; layer 3 pecks from 20 to 24 (X 999 999 998), then 28: X =
+///   1 000 000 002 again, j = floor((25 − 20)/4) + 1 = 2. The mutant
+///   takes j = floor((25/20)/4) + 1 = 1, the peck to 24, in range, and
+///   lets the roughing through (applied by hand: a later move, at the
+///   depth 40, is then reported, X 1 000 000 014).
+///
+/// The reference (`cycleref_spec::g75::expand`, which makes the moves
+/// and checks them in order) reports the same.
+#[test]
+fn the_first_peck_beyond_the_range_is_reported() {
+    use cycleref::g75::RIGHT_ANGLE;
+    use cycleref::{Corner, CycleError, Field, G75Cycle, Length, PathType, Point, Units, XMode};
+    let _serial = serial();
+    let cycle = |layer: Option<i64>| G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        from: Point::new(999_990_000, 5_000),
+        start: Point::new(999_999_974, 0),
+        peck: 4,
+        step: 1,
+        depth: 40,
+        width: 10,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer,
+        allowance_x: 0,
+        allowance_z: 0,
+        tool_width: Some(10),
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    let beyond = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_002, Units::IS_B_METRIC),
+    };
+    for (name, layer) in [("one layer", None), ("layer 3 of 4", Some(10))] {
+        let c = cycle(layer);
+        assert_eq!(cycleref_spec::g75::expand(&c).map(|_| ()), Err(beyond), "{name}: the reference");
+        assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(beyond), "{name}");
+    }
+}
+
+/// `engine/g75/roughing.rs` 182:21 (`u_lim = MAX − sz·S.z` →
+/// `MAX / sz * S.z` in `check_roughing`): `u_lim` is the furthest u whose
+/// Z = S.z + sz·u is within ±999 999 999, and a layer-1 plunge beyond it is
+/// refused at the first step there (R-G75RANGE). The mutant's bound is
+/// `sz·MAX·S.z`: 0 when S is at Z0 (the harness domains' S), hugely
+/// negative when S lies behind Z0 along sz, hugely positive beyond it.
+/// Worked by hand, a right-angle groove (y_top = 0) at S = (X100.000,
+/// Z s) in IS-B increments, H−2.000 (X = 100 000 − y), D3.000 (sz = +1,
+/// Z = s + u), Δi = 1000, Δk = 1000, a 1.000 tool, no allowances, no
+/// retract, J0: A_11 = 0, A_1f = 3000 − 1000 = 2000, plunges at u = 0,
+/// 1000, 2000, each of two pecks (to X99.000, X98.000).
+///
+/// * s = −1000 (Z−1.000): every Z is within range (−1000 … 1000), the
+///   cycle is valid, its moves the reference's (the approach to A11 =
+///   (X100.000, Z−1.000), pecks to X99.000 and X98.000, the retract to
+///   X100.000, the step to Z0). The mutant's bound is −999 999 999 000,
+///   below A_1f, and it refuses the cycle at the Z of its own first "step
+///   beyond", u = (floor(−999 999 999 000/1000) + 1)·1000 =
+///   −999 999 998 000.
+/// * s = 999 999 499: u_lim = 500, so the step to the second plunge, u =
+///   (floor(500/1000) + 1)·1000 = 1000, is the first coordinate beyond,
+///   Z = 1 000 000 499. The mutant's bound, 999 999 999·999 999 499, is
+///   beyond every plunge, so it does not report that step (applied by
+///   hand: a later move, at u = 2000, is reported, Z 1 000 001 499).
+#[test]
+fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
+    use cycleref::g75::RIGHT_ANGLE;
+    use cycleref::{
+        Corner, CycleError, Field, G75Cycle, Length, Motion, PathType, Plunge, Point, Role, Units, XMode,
+    };
+    let _serial = serial();
+    let cycle = |z: i64| G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        from: Point::new(110_000, z),
+        start: Point::new(100_000, z),
+        peck: 1_000,
+        step: 1_000,
+        depth: -2_000,
+        width: 3_000,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer: None,
+        allowance_x: 0,
+        allowance_z: 0,
+        tool_width: Some(1_000),
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    let c = cycle(-1_000);
+    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    let first: Vec<_> = reference.iter().take(5).map(|m| (m.motion, m.to, m.role)).collect();
+    let plunge = |number: u32| Plunge { layer: 1, number };
+    assert_eq!(
+        first,
+        [
+            (Motion::Rapid, Point::new(100_000, -1_000), Role::Approach),
+            (Motion::Feed, Point::new(99_000, -1_000), Role::Peck(plunge(1))),
+            (Motion::Feed, Point::new(98_000, -1_000), Role::Peck(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, -1_000), Role::PlungeRetract(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, 0), Role::Step(plunge(2))),
+        ]
+    );
+    let engine: Vec<_> = cycleref::expand_g75(&c).expect("S at Z−1.000 is valid").collect();
+    assert_eq!(engine, reference);
+    let c = cycle(999_999_499);
+    let beyond = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_499, Units::IS_B_METRIC),
+    };
+    assert_eq!(cycleref_spec::g75::expand(&c).map(|_| ()), Err(beyond), "the reference");
+    assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(beyond));
+}
+
 /// `engine/g75/contour.rs` 155:27 (`size(R3) > 0` → `>=` in
 /// `rough_vertices`): an angled groove whose bottom corner r3 has size 0
 /// (flank A 30°, flank B 18.67385°) roughs its contour along flank A to
