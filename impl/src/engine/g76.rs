@@ -113,6 +113,11 @@ fn flank_shift(depth: i64, tool_angle: u32) -> i64 {
 /// exactly as the reference's `check_pass_count` (reading R-LIMIT).
 ///
 /// Twin: `spec/src/g76.rs`, `check_pass_count`.
+// Not inlined into `expand_g76`: inlined, its square-root loop ran about
+// half as slow again (the same instructions; the flat benchmark's
+// up-front count 184 µs against 120 µs), the last of the per-pass
+// regression since e31a431 (CHANGELOG).
+#[inline(never)]
 fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
     // validate(): 0 ≤ d ≤ k < 2^30, 0 ≤ Δdmin ≤ k, 1 ≤ Δd < 2^30.
     let last = c.thread_height - c.finishing_allowance;
