@@ -850,6 +850,69 @@ fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
     assert_eq!(engine, reference);
 }
 
+/// The mirror of the test above, for flank B (`engine/g75/contour.rs`
+/// 164:27, `size(R4) > 0` → `>=` in `rough_vertices`, left by the G75.1
+/// run): a zero r4 on an angled flank B. With the mutant the rough contour
+/// takes K3 and K4 of a zero corner (rounded elsewhere than flank B's
+/// bottom point): applied by hand, the engine feeds to X4.9897 Z0.1118 and
+/// X4.9900 Z0.1121 where the reference feeds to X4.9897 Z0.1120 and then
+/// up flank B to X5.0000 Z0.1149, one move more in all (21 against 20).
+/// The expected moves are the reference's.
+#[test]
+fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
+    use cycleref::{
+        Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, Motion, PathType, Point, Role, Units, XMode,
+    };
+    let _serial = serial();
+    let chamfer = Corner { size: 0, kind: CornerKind::Chamfer };
+    // The cycle of the test above with the flanks and the bottom corners
+    // exchanged: A 18.67385°, B 30°, r3 a round of 1, r4 zero.
+    let c = G75Cycle {
+        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
+        x_mode: XMode::Diameter,
+        from: Point::new(52_000, 500),
+        start: Point::new(50_000, 1000),
+        peck: 108,
+        step: 62,
+        depth: -108,
+        width: 102,
+        flank_a: 373_477,
+        flank_b: 600_000,
+        slope: 0,
+        retract: 1112,
+        layer: Some(160),
+        allowance_x: 5,
+        allowance_z: 0,
+        tool_width: Some(54),
+        path: PathType::RoughAndFinish,
+        corners: [
+            chamfer,
+            chamfer,
+            Corner { size: 1, kind: CornerKind::Round },
+            Corner { size: 0, kind: CornerKind::Round },
+        ],
+    };
+    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    assert_eq!(reference.len(), 20);
+    // The rough contour along the bottom to flank B's bottom point (K3 − w)
+    // and up flank B to R3 − w.
+    let contour: Vec<_> =
+        reference.iter().filter(|m| m.role == Role::RoughContour).map(|m| (m.motion, m.to)).collect();
+    assert_eq!(
+        contour,
+        [
+            (Motion::Rapid, Point::new(50_000, 1_000)),
+            (Motion::Feed, Point::new(49_902, 1_065)),
+            (Motion::Feed, Point::new(49_897, 1_072)),
+            (Motion::Feed, Point::new(49_897, 1_120)),
+            (Motion::Feed, Point::new(50_000, 1_149)),
+            (Motion::Rapid, Point::new(50_000, 1_072)),
+        ]
+    );
+    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
+    assert_eq!(engine, reference);
+}
+
 /// `engine/g75/contour.rs` 167:17 (`y_k4 > y_top` → `>=` in
 /// `rough_vertices`) and its mirror 157:17 (`y_k1 > y_top` → `>=`): a
 /// groove whose bottom chamfers' chords meet the flanks between the layer
