@@ -812,36 +812,9 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
 /// ninth the rough contour's feed to X4.9897 Z0.1030 (IS-C inch).
 #[test]
 fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
-    use cycleref::{
-        Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, Motion, PathType, Point, Role, Units, XMode,
-    };
+    use cycleref::{Motion, Point, Role};
     let _serial = serial();
-    let chamfer = Corner { size: 0, kind: CornerKind::Chamfer };
-    let c = G75Cycle {
-        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
-        x_mode: XMode::Diameter,
-        from: Point::new(52_000, 500),
-        start: Point::new(50_000, 1000),
-        peck: 108,
-        step: 62,
-        depth: -108,
-        width: 102,
-        flank_a: 600_000,
-        flank_b: 373_477,
-        slope: 0,
-        retract: 1112,
-        layer: Some(160),
-        allowance_x: 5,
-        allowance_z: 0,
-        tool_width: Some(54),
-        path: PathType::RoughAndFinish,
-        corners: [
-            chamfer,
-            chamfer,
-            Corner { size: 0, kind: CornerKind::Round },
-            Corner { size: 1, kind: CornerKind::Round },
-        ],
-    };
+    let c = angled_groove_with_a_zero_bottom_corner(false);
     let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
     assert_eq!(reference.len(), 19);
     assert_eq!(reference[8].to, Point::new(49_897, 1030));
@@ -860,38 +833,9 @@ fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
 /// The expected moves are the reference's.
 #[test]
 fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
-    use cycleref::{
-        Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, Motion, PathType, Point, Role, Units, XMode,
-    };
+    use cycleref::{Motion, Point, Role};
     let _serial = serial();
-    let chamfer = Corner { size: 0, kind: CornerKind::Chamfer };
-    // The cycle of the test above with the flanks and the bottom corners
-    // exchanged: A 18.67385°, B 30°, r3 a round of 1, r4 zero.
-    let c = G75Cycle {
-        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
-        x_mode: XMode::Diameter,
-        from: Point::new(52_000, 500),
-        start: Point::new(50_000, 1000),
-        peck: 108,
-        step: 62,
-        depth: -108,
-        width: 102,
-        flank_a: 373_477,
-        flank_b: 600_000,
-        slope: 0,
-        retract: 1112,
-        layer: Some(160),
-        allowance_x: 5,
-        allowance_z: 0,
-        tool_width: Some(54),
-        path: PathType::RoughAndFinish,
-        corners: [
-            chamfer,
-            chamfer,
-            Corner { size: 1, kind: CornerKind::Round },
-            Corner { size: 0, kind: CornerKind::Round },
-        ],
-    };
+    let c = angled_groove_with_a_zero_bottom_corner(true);
     let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
     assert_eq!(reference.len(), 20);
     // The rough contour along the bottom to flank B's bottom point (K3 − w)
@@ -911,6 +855,40 @@ fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
     );
     let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
     assert_eq!(engine, reference);
+}
+
+/// The cycle of the two tests above: IS-C inch, flanks 30° and 18.67385°,
+/// a zero bottom corner (a round of size 0) beside a round of 1; on flank
+/// A (r3 = 0, A = 30°) or, `on_flank_b`, mirrored: the flanks and the
+/// bottom corners exchanged (r4 = 0, B = 30°).
+fn angled_groove_with_a_zero_bottom_corner(on_flank_b: bool) -> cycleref::G75Cycle {
+    use cycleref::{Corner, CornerKind, G75Cycle, IncrementSystem, InputUnit, PathType, Point, Units, XMode};
+    let chamfer = Corner { size: 0, kind: CornerKind::Chamfer };
+    let (zero, one) =
+        (Corner { size: 0, kind: CornerKind::Round }, Corner { size: 1, kind: CornerKind::Round });
+    let (steep, shallow) = (600_000, 373_477);
+    let (flank_a, flank_b, r3, r4) =
+        if on_flank_b { (shallow, steep, one, zero) } else { (steep, shallow, zero, one) };
+    G75Cycle {
+        units: Units { system: IncrementSystem::IsC, unit: InputUnit::Inch },
+        x_mode: XMode::Diameter,
+        from: Point::new(52_000, 500),
+        start: Point::new(50_000, 1000),
+        peck: 108,
+        step: 62,
+        depth: -108,
+        width: 102,
+        flank_a,
+        flank_b,
+        slope: 0,
+        retract: 1112,
+        layer: Some(160),
+        allowance_x: 5,
+        allowance_z: 0,
+        tool_width: Some(54),
+        path: PathType::RoughAndFinish,
+        corners: [chamfer, chamfer, r3, r4],
+    }
 }
 
 /// `engine/g75/contour.rs` 167:17 (`y_k4 > y_top` → `>=` in
