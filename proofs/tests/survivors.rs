@@ -857,6 +857,55 @@ fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
     assert_eq!(engine, reference);
 }
 
+/// `engine/g75/profile.rs` 113:24 (`out.finish_len += 1` → `*= 1` in
+/// `groove_profile`, left by the G75.1 run: nothing looked at the
+/// finishing profile, only at the roughing vertices). The finishing
+/// profile of the flank-B cycle above is the path of the reference's
+/// finishing contour, with the points on flank B's side moved back by the
+/// tool width (w = 54: the moves are the tool's, whose reference edge is
+/// on flank A's side): S, the feed to X4.9892 Z0.1070, the arc (centre
+/// X4.9894 Z0.1071, counter-clockwise) to X4.9892 Z0.1071, then
+/// Z0.1119 + 54 and X5.0000 Z0.1150 + 54. The mutant's profile is empty.
+#[test]
+fn the_finishing_profile_is_the_finish_contour_with_the_tool_width() {
+    use cycleref::{Motion, Point, ProfileSegment, Role};
+    let _serial = serial();
+    let c = angled_groove_with_a_zero_bottom_corner(true);
+    let w = c.tool_width.expect("the cycle has a tool width");
+    let contour: Vec<_> = cycleref_spec::g75::expand(&c)
+        .expect("the reference expands it")
+        .into_iter()
+        .filter(|m| m.role == Role::FinishContour)
+        .map(|m| (m.motion, m.to))
+        .collect();
+    let arc = Motion::Arc { centre: Point::new(49_894, 1_071), clockwise: false };
+    assert_eq!(
+        contour,
+        [
+            (Motion::Rapid, Point::new(50_000, 1_000)),
+            (Motion::Feed, Point::new(49_892, 1_070)),
+            (arc, Point::new(49_892, 1_071)),
+            (Motion::Feed, Point::new(49_892, 1_119)),
+            (Motion::Feed, Point::new(50_000, 1_150)),
+        ]
+    );
+    let profile = cycleref::groove_profile(&c).expect("the engine has the profile");
+    let finishing: Vec<_> = profile.finishing().iter().map(|p| (p.segment, p.at)).collect();
+    assert_eq!(
+        finishing,
+        [
+            (ProfileSegment::Start, Point::new(50_000, 1_000)),
+            (ProfileSegment::Line, Point::new(49_892, 1_070)),
+            (
+                ProfileSegment::Arc { centre: Point::new(49_894, 1_071), clockwise: false },
+                Point::new(49_892, 1_071)
+            ),
+            (ProfileSegment::Line, Point::new(49_892, 1_119 + w)),
+            (ProfileSegment::Line, Point::new(50_000, 1_150 + w)),
+        ]
+    );
+}
+
 /// The cycle of the two tests above: IS-C inch, flanks 30° and 18.67385°,
 /// a zero bottom corner (a round of size 0) beside a round of 1; on flank
 /// A (r3 = 0, A = 30°) or, `on_flank_b`, mirrored: the flanks and the
