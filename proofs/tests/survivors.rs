@@ -15,6 +15,20 @@ fn serial() -> std::sync::MutexGuard<'static, ()> {
     SERIAL.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
+/// The reference's moves of a G75.1 cycle, once the engine's are found to
+/// be the same (`differ::assert_same_moves`, the one "same moves" check).
+fn g75_reference_moves(c: &cycleref::G75Cycle) -> Vec<cycleref::Move> {
+    let reference = cycleref_spec::g75::expand(c);
+    let engine = cycleref::expand_g75(c).map(Iterator::collect);
+    cycleref_spec::differ::assert_same_moves(&engine, &reference, format_args!("{c:?}"));
+    reference.expect("the reference expands it")
+}
+
+/// The motion and end point of each of `moves` with role `role`.
+fn with_role(moves: &[cycleref::Move], role: cycleref::Role) -> Vec<(cycleref::Motion, cycleref::Point)> {
+    moves.iter().filter(|m| m.role == role).map(|m| (m.motion, m.to)).collect()
+}
+
 /// The Newton iterations `isqrt_floor` makes, recorded by `record_isqrt`.
 fn newton_iterations(x: u128) -> (u32, u32) {
     loop_counters::reset();
@@ -814,13 +828,10 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
 fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
     use cycleref::{Motion, Point, Role};
     let _serial = serial();
-    let c = angled_groove_with_a_zero_bottom_corner(false);
-    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    let reference = g75_reference_moves(&angled_groove_with_a_zero_bottom_corner(false));
     assert_eq!(reference.len(), 19);
     assert_eq!(reference[8].to, Point::new(49_897, 1030));
     assert_eq!((reference[8].motion, reference[8].role), (Motion::Feed, Role::RoughContour));
-    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
-    assert_eq!(engine, reference);
 }
 
 /// The mirror of the test above, for flank B (`engine/g75/contour.rs`
@@ -835,15 +846,12 @@ fn a_zero_bottom_corner_of_an_angled_groove_roughs_along_its_flank() {
 fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
     use cycleref::{Motion, Point, Role};
     let _serial = serial();
-    let c = angled_groove_with_a_zero_bottom_corner(true);
-    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
+    let reference = g75_reference_moves(&angled_groove_with_a_zero_bottom_corner(true));
     assert_eq!(reference.len(), 20);
     // The rough contour along the bottom to flank B's bottom point (K3 − w)
     // and up flank B to R3 − w.
-    let contour: Vec<_> =
-        reference.iter().filter(|m| m.role == Role::RoughContour).map(|m| (m.motion, m.to)).collect();
     assert_eq!(
-        contour,
+        with_role(&reference, Role::RoughContour),
         [
             (Motion::Rapid, Point::new(50_000, 1_000)),
             (Motion::Feed, Point::new(49_902, 1_065)),
@@ -853,8 +861,6 @@ fn a_zero_bottom_corner_on_flank_b_roughs_along_it() {
             (Motion::Rapid, Point::new(50_000, 1_072)),
         ]
     );
-    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
-    assert_eq!(engine, reference);
 }
 
 /// `engine/g75/profile.rs` 113:24 (`out.finish_len += 1` → `*= 1` in
@@ -872,12 +878,7 @@ fn the_finishing_profile_is_the_finish_contour_with_the_tool_width() {
     let _serial = serial();
     let c = angled_groove_with_a_zero_bottom_corner(true);
     let w = c.tool_width.expect("the cycle has a tool width");
-    let contour: Vec<_> = cycleref_spec::g75::expand(&c)
-        .expect("the reference expands it")
-        .into_iter()
-        .filter(|m| m.role == Role::FinishContour)
-        .map(|m| (m.motion, m.to))
-        .collect();
+    let contour = with_role(&g75_reference_moves(&c), Role::FinishContour);
     let arc = Motion::Arc { centre: Point::new(49_894, 1_071), clockwise: false };
     assert_eq!(
         contour,
@@ -1004,15 +1005,12 @@ fn chords_meeting_the_flanks_at_the_layer_top_add_no_vertex() {
     let profile = cycleref::groove_profile(&c).expect("the engine has the profile");
     assert_eq!(profile.roughing(), by_hand);
     // The moves are the reference's.
-    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
-    let engine: Vec<_> = cycleref::expand_g75(&c).expect("the engine expands it").collect();
+    let reference = g75_reference_moves(&c);
     assert_eq!(reference.len(), 28);
     // The rough contour: rapid to R0, feeds to K2, K3 − w, R3 − w (w =
     // 1000), rapid back to A11 = (5051, 0); no feed that would not move.
-    let contour: Vec<_> =
-        reference.iter().filter(|m| m.role == Role::RoughContour).map(|m| (m.motion, m.to)).collect();
     assert_eq!(
-        contour,
+        with_role(&reference, Role::RoughContour),
         [
             (Motion::Rapid, Point::new(30_000, -200)),
             (Motion::Feed, Point::new(24_399, -5_051)),
@@ -1021,5 +1019,4 @@ fn chords_meeting_the_flanks_at_the_layer_top_add_no_vertex() {
             (Motion::Rapid, Point::new(30_000, -5_051)),
         ]
     );
-    assert_eq!(engine, reference);
 }
