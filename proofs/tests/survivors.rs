@@ -24,6 +24,20 @@ fn g75_reference_moves(c: &cycleref::G75Cycle) -> Vec<cycleref::Move> {
     reference.expect("the reference expands it")
 }
 
+/// The engine and the reference both refuse the G76 cycle `c` with `e`,
+/// before any move.
+fn g76_refused_by_both(c: &cycleref::G76Cycle, e: cycleref::CycleError) {
+    assert_eq!(cycleref::expand_g76(c).map(|_| ()), Err(e), "the engine");
+    assert_eq!(cycleref_spec::g76::expand(c).map(|_| ()), Err(e), "the reference");
+}
+
+/// The engine and the reference both refuse the G75.1 cycle `c` with `e`,
+/// before any move; `what` names the case in a failure.
+fn g75_refused_by_both(c: &cycleref::G75Cycle, e: cycleref::CycleError, what: &str) {
+    assert_eq!(cycleref_spec::g75::expand(c).map(|_| ()), Err(e), "{what}: the reference");
+    assert_eq!(cycleref::expand_g75(c).map(|_| ()), Err(e), "{what}: the engine");
+}
+
 /// The motion and end point of each of `moves` with role `role`.
 fn with_role(moves: &[cycleref::Move], role: cycleref::Role) -> Vec<(cycleref::Motion, cycleref::Point)> {
     moves.iter().filter(|m| m.role == role).map(|m| (m.motion, m.to)).collect()
@@ -220,8 +234,7 @@ fn equal_steps_count_their_levels() {
     // With a limit of 3 the four passes are refused, counted exactly.
     let e = CycleError::TooManyPasses { passes: 4, exact: true, limit: 3 };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Err(e));
-    assert_eq!(cycleref::expand_g76(&c(3)).map(|_| ()), Err(e));
-    assert_eq!(cycleref_spec::g76::expand(&c(3)).map(|_| ()), Err(e));
+    g76_refused_by_both(&c(3), e);
 }
 
 /// An X-long G76 thread (|i| ≥ |W|) whose run-out K equals |i| is allowed
@@ -264,8 +277,7 @@ fn g76_x_long_run_out_as_long_as_the_taper() {
         run_out: cycleref::Length::new(4_001, cycleref::Units::IS_B_METRIC),
         length: cycleref::Length::new(4_000, cycleref::Units::IS_B_METRIC),
     };
-    assert_eq!(cycleref::expand_g76(&c(4_001)).map(|_| ()), Err(e));
-    assert_eq!(cycleref_spec::g76::expand(&c(4_001)).map(|_| ()), Err(e));
+    g76_refused_by_both(&c(4_001), e);
 }
 
 /// The pass count when the depth law lasts to the pass limit (reading
@@ -290,8 +302,7 @@ fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Ok(3));
     let e = CycleError::TooManyPasses { passes: 3, exact: true, limit: 2 };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(2)), Err(e));
-    assert_eq!(cycleref::expand_g76(&c(2)).map(|_| ()), Err(e));
-    assert_eq!(cycleref_spec::g76::expand(&c(2)).map(|_| ()), Err(e));
+    g76_refused_by_both(&c(2), e);
 }
 
 /// D2 (左右等量) cuts every level but the last twice: 2·levels − 1 rough
@@ -323,7 +334,7 @@ fn d2_counts_both_flanks() {
     assert_eq!(rough, [(1, 3, r), (2, 3, l), (3, 6, r), (4, 6, l), (5, 9, r), (6, 9, l), (7, 10, r)]);
     let e = CycleError::TooManyPasses { passes: 7, exact: true, limit: 6 };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(6)), Err(e));
-    assert_eq!(cycleref_spec::g76::expand(&c(6)).map(|_| ()), Err(e));
+    g76_refused_by_both(&c(6), e);
 }
 
 /// A must be clear of B, not only of the crest at D (reading R-SIDE): on
@@ -421,8 +432,7 @@ fn a_cycle_without_passes_checks_no_lead_in() {
         field: Field::PassCoordinate,
         value: Length::new(1_000_000_000, Units::IS_B_METRIC),
     };
-    assert_eq!(cycleref::expand_g76(&c(1)).map(|_| ()), Err(e));
-    assert_eq!(cycleref_spec::g76::expand(&c(1)).map(|_| ()), Err(e));
+    g76_refused_by_both(&c(1), e);
 }
 
 /// `Schedule::resume` refuses every state outside the engine's ranges,
@@ -735,8 +745,7 @@ fn the_first_peck_beyond_the_range_is_reported() {
     };
     for (name, layer) in [("one layer", None), ("layer 3 of 4", Some(10))] {
         let c = cycle(layer);
-        assert_eq!(cycleref_spec::g75::expand(&c).map(|_| ()), Err(beyond), "{name}: the reference");
-        assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(beyond), "{name}");
+        g75_refused_by_both(&c, beyond, name);
     }
 }
 
@@ -812,8 +821,73 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
         field: Field::PassCoordinate,
         value: Length::new(1_000_000_499, Units::IS_B_METRIC),
     };
-    assert_eq!(cycleref_spec::g75::expand(&c).map(|_| ()), Err(beyond), "the reference");
-    assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(beyond));
+    g75_refused_by_both(&c, beyond, "S beyond");
+}
+
+/// `engine/g75/roughing.rs` 197:40 (`floor_div(u_lim − a11, Δk)` →
+/// `u_lim + a11` in `check_roughing`): the first step beyond the Z range
+/// counts its steps from A_11, the first plunge of layer 1, which is at u =
+/// 0 only when nothing keeps the tool off flank A. Here the finishing
+/// allowance Δw = 0.500 does (R-G75REGION: left(y) = y·cot A + Δw, cot 90°
+/// = 0). Worked by hand, a right-angle groove at S = (X100.000, Z s), IS-B,
+/// H−2.000, D5.000 (sz = +1, Z = s + u), Δi = Δk = 1000, a 1.000 tool, Δw
+/// = 500, Δu = 0: A_11 = 500, A_1f = 5000 − 1000 − 500 = 3500, plunges at
+/// u = 500, 1500, 2500, 3500, each of two pecks (to X99.000, X98.000).
+///
+/// * s = −3000: every Z is within range (−2500 … 500); the first moves are
+///   the approach to A_11 = (X100.000, Z−2.500), the pecks, the retract
+///   and the step to u = 1500, Z−1.500.
+/// * s = 999 999 399: u_lim = 999 999 999 − s = 600, A_11's Z (999 999
+///   899) is in range, the step to u = 500 + (floor((600 − 500)/1000) +
+///   1)·1000 = 1500 is the first coordinate beyond: Z = 1 000 000 899. The
+///   mutant counts from u_lim + A_11 = 1100: u = 500 + 2·1000 = 2500, Z =
+///   1 000 001 899.
+#[test]
+fn a_step_beyond_the_z_range_is_counted_from_the_first_plunge() {
+    use cycleref::g75::RIGHT_ANGLE;
+    use cycleref::{
+        Corner, CycleError, Field, G75Cycle, Length, Motion, PathType, Plunge, Point, Role, Units, XMode,
+    };
+    let _serial = serial();
+    let cycle = |z: i64| G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        from: Point::new(110_000, z),
+        start: Point::new(100_000, z),
+        peck: 1_000,
+        step: 1_000,
+        depth: -2_000,
+        width: 5_000,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer: None,
+        allowance_x: 0,
+        allowance_z: 500,
+        tool_width: Some(1_000),
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    let moves = g75_reference_moves(&cycle(-3_000));
+    let plunge = |number: u32| Plunge { layer: 1, number };
+    let first: Vec<_> = moves.iter().take(5).map(|m| (m.motion, m.to, m.role)).collect();
+    assert_eq!(
+        first,
+        [
+            (Motion::Rapid, Point::new(100_000, -2_500), Role::Approach),
+            (Motion::Feed, Point::new(99_000, -2_500), Role::Peck(plunge(1))),
+            (Motion::Feed, Point::new(98_000, -2_500), Role::Peck(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, -2_500), Role::PlungeRetract(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, -1_500), Role::Step(plunge(2))),
+        ]
+    );
+    let c = cycle(999_999_399);
+    let beyond = CycleError::OutOfRange {
+        field: Field::PassCoordinate,
+        value: Length::new(1_000_000_899, Units::IS_B_METRIC),
+    };
+    g75_refused_by_both(&c, beyond, "S beyond");
 }
 
 /// `engine/g75/contour.rs` 155:27 (`size(R3) > 0` → `>=` in
