@@ -1,0 +1,447 @@
+//! Both streams made into groups (a run of rapids and the cutting moves
+//! after it) and aligned by edit distance, a window of our groups at a time
+//! (reading R-CHECKSTREAM), so that a missing or an extra pass is reported
+//! as such. `compare_streams` drives the whole comparison.
+
+use std::collections::VecDeque;
+use std::io::BufRead;
+
+use cycleref::Units;
+
+use super::compare::{compare, only_kinds};
+use super::ours::{OurSteps, Region};
+use super::report::Report;
+use super::trace::trace_steps;
+use super::{Divergence, Group, Kind, Step, TraceFormat};
+use crate::job::Job;
+
+/// Whose toolpath an error comes from.
+pub(super) enum StreamError {
+    Ours(String),
+    Theirs(String),
+}
+
+/// The most moves in one group: a pass longer than this (a program of a
+/// million G01 blocks is one "pass") is compared in pieces of this size.
+const GROUP_MOVES: usize = 4096;
+
+/// The most groups of ours aligned at once: a cycle with more passes is
+/// aligned in windows of this many.
+const WINDOW_GROUPS: usize = 512;
+
+/// The most cells of an alignment table (beyond, groups are compared in
+/// order): 512 groups of ours against 1024 of theirs.
+const MAX_CELLS: usize = 1 << 19;
+
+/// Steps made into groups (a run of rapids and the cutting moves after
+/// it), each with its owner: the segment of its first cutting move, or of
+/// its first rapid.
+struct Grouper<I> {
+    steps: I,
+    next: Option<(Step, u32)>,
+    /// Steps taken so far.
+    count: usize,
+    /// Groups given back once compared, emptied, to be filled again: a
+    /// group's two vectors are allocated once, not once per pass (most
+    /// of `check`'s allocations were these). At most [`SPARE_GROUPS`].
+    spare: Vec<Group>,
+}
+
+/// The most emptied groups a [`Grouper`] keeps for reuse: a window and
+/// the trace's groups read ahead of it, so memory stays that of one
+/// window.
+const SPARE_GROUPS: usize = 2 * WINDOW_GROUPS + 16;
+
+/// The most moves an emptied group may have room for and still be kept:
+/// a pass has a handful; a group grown to thousands (a long run of plain
+/// moves, up to [`GROUP_MOVES`]) is dropped, so that reused groups never
+/// hold more room than the passes they carry need.
+const SPARE_ROOM: usize = 64;
+
+impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
+    fn new(steps: I) -> Grouper<I> {
+        Grouper { steps, next: None, count: 0, spare: Vec::new() }
+    }
+
+    /// Takes back a group that was compared, to fill it again.
+    fn recycle(&mut self, mut g: Group) {
+        if self.spare.len() < SPARE_GROUPS && g.rapids.capacity() + g.cuts.capacity() <= SPARE_ROOM {
+            g.rapids.clear();
+            g.cuts.clear();
+            self.spare.push(g);
+        }
+    }
+
+    fn pull(&mut self) -> Option<Result<(Step, u32), String>> {
+        let s = self.next.take().map(Ok).or_else(|| self.steps.next());
+        if matches!(s, Some(Ok(_))) {
+            self.count += 1;
+        }
+        s
+    }
+
+    fn group(&mut self) -> Option<Result<(Group, u32), String>> {
+        let mut g = self.spare.pop().unwrap_or(Group { rapids: Vec::new(), cuts: Vec::new() });
+        let (mut rapid_owner, mut cut_owner) = (None, None);
+        loop {
+            let (s, seg) = match self.pull() {
+                None if g.len() == 0 => return None,
+                None => break,
+                Some(Err(e)) => return Some(Err(e)),
+                Some(Ok(v)) => v,
+            };
+            let full = g.cuts.len() >= GROUP_MOVES || g.rapids.len() >= GROUP_MOVES;
+            if g.len() > 0 && ((s.kind == Kind::Rapid && !g.cuts.is_empty()) || full) {
+                self.next = Some((s, seg));
+                self.count -= 1;
+                break;
+            }
+            if s.kind == Kind::Rapid {
+                rapid_owner.get_or_insert(seg);
+                g.rapids.push(s);
+            } else {
+                cut_owner.get_or_insert(seg);
+                g.cuts.push(s);
+            }
+        }
+        Some(Ok((g, cut_owner.or(rapid_owner).unwrap_or(0))))
+    }
+}
+
+/// Compares our toolpath with the trace's, both read as they are taken:
+/// our groups are aligned a cycle (at most [`WINDOW_GROUPS`] groups) at a
+/// time with the trace's next groups, of which the alignment takes what it
+/// matches and leaves the rest for the next window (reading R-CHECKSTREAM).
+pub(super) fn compare_streams(
+    job: &Job,
+    trace: Box<dyn BufRead + '_>,
+    format: TraceFormat,
+    units: Units,
+    tolerance: u64,
+) -> Result<Report, StreamError> {
+    let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
+    let mut ours = Grouper::new(OurSteps::new(job, units).map_err(StreamError::Ours)?);
+    let steps = trace_steps(trace, format, &job.machine, units).map_err(StreamError::Theirs)?;
+    let mut theirs = Grouper::new(steps);
+    let mut report = Report::new(units, tolerance);
+    let mut pending: VecDeque<Group> = VecDeque::new();
+    let mut lookahead: Option<(Group, u32)> = None;
+    // Reused from window to window, as the groups are.
+    let mut window = Vec::new();
+    let mut regions: Vec<Region> = Vec::new();
+    loop {
+        // Our next window: the groups of one owner.
+        let mut owner = None;
+        loop {
+            let next = match lookahead.take() {
+                Some(g) => g,
+                None => match ours.group() {
+                    None => break,
+                    Some(r) => r.map_err(StreamError::Ours)?,
+                },
+            };
+            if owner.is_some_and(|o| o != next.1) || window.len() == WINDOW_GROUPS {
+                lookahead = Some(next);
+                break;
+            }
+            owner = Some(next.1);
+            window.push(next.0);
+        }
+        if window.is_empty() {
+            break;
+        }
+        let want = window.len() + window.len().max(16);
+        while pending.len() < want {
+            match theirs.group() {
+                None => break,
+                Some(r) => pending.push_back(r.map_err(StreamError::Theirs)?.0),
+            }
+        }
+        regions.clear();
+        regions.extend(ours.steps.regions.iter().flatten().copied());
+        let next = lookahead.as_ref().map(|(g, _)| g);
+        let (divergences, taken) = align(&window, pending.make_contiguous(), tol, units, &regions, next);
+        for g in pending.drain(..taken) {
+            theirs.recycle(g);
+        }
+        for g in window.drain(..) {
+            ours.recycle(g);
+        }
+        report.add(divergences);
+    }
+    // What the trace has beyond our last move.
+    for g in pending.drain(..) {
+        report.add(vec![extra(&g)]);
+    }
+    while let Some(g) = theirs.group() {
+        report.add(vec![extra(&g.map_err(StreamError::Theirs)?.0)]);
+    }
+    if theirs.count == 0 {
+        return Err(StreamError::Theirs("the trace has no moves (reading R-CHECKEMPTY)".into()));
+    }
+    report.ours_moves = ours.count;
+    report.theirs_moves = theirs.count;
+    Ok(report)
+}
+
+/// One step of the alignment.
+#[derive(Clone, Copy)]
+enum Op {
+    /// Our group i against their group j.
+    Pair(usize, usize),
+    /// Our groups i.. (p of them) joined against their groups j.. (q).
+    Join {
+        i: usize,
+        p: usize,
+        j: usize,
+        q: usize,
+    },
+    Missing(usize),
+    Extra(usize),
+}
+
+/// The joins tried: one group of ours against two of theirs, two against
+/// one, two against two (a rapid written for a cutting move splits a pass
+/// or moves a pass boundary; the reverse joins them).
+const JOINS: [(usize, usize); 3] = [(1, 2), (2, 1), (2, 2)];
+
+/// Groups joined into one: the later groups' rapids become moves among
+/// the cuts.
+fn joined(gs: &[Group]) -> Group {
+    let mut out = Group { rapids: Vec::new(), cuts: Vec::new() };
+    for (n, g) in gs.iter().enumerate() {
+        out = if n == 0 { g.clone() } else { out.joined(g) };
+    }
+    out
+}
+
+/// Aligns the groups by edit distance (a match costs 0, a substitution 1,
+/// a missing or extra group 1, a join of groups that differ only in kinds
+/// of move 1) and lists the differences in our order, with the number of
+/// their groups taken. When our toolpath goes on with `next`, the
+/// alignment may stop before the end of theirs, and the rest belongs to
+/// what follows: it stops where the cost plus 1 when their next group is
+/// not `next` is least (the fewest groups at equal cost). Without `next`
+/// it takes all of `b`.
+fn align(
+    a: &[Group],
+    b: &[Group],
+    tol: i64,
+    units: Units,
+    regions: &[Region],
+    next: Option<&Group>,
+) -> (Vec<Divergence>, usize) {
+    let free_end = next.is_some();
+    let (n, m) = (a.len(), b.len());
+    let cmp = |x: &Group, y: &Group| compare(x, y, tol, units, regions);
+    // Beyond this size the table is too big: compare in order.
+    if (n + 1).saturating_mul(m + 1) > MAX_CELLS {
+        let mut out = Vec::new();
+        let end = if free_end { n.min(m) } else { m };
+        for i in 0..n.max(end) {
+            match (a.get(i), b.get(i).filter(|_| i < end)) {
+                (Some(x), Some(y)) => out.extend(cmp(x, y)),
+                (Some(x), None) => out.push(missing(x)),
+                (None, Some(y)) => out.push(extra(y)),
+                (None, None) => {}
+            }
+        }
+        return (out, end);
+    }
+    // The usual case first: every group of ours met in order, and theirs
+    // resumes with our next group (or ends with ours).
+    let in_order = n <= m
+        && a.iter().zip(b).all(|(x, y)| cmp(x, y).is_empty())
+        && match next {
+            Some(o) => b.get(n).is_none_or(|t| cmp(o, t).is_empty()),
+            None => n == m,
+        };
+    if in_order {
+        return (Vec::new(), n);
+    }
+    let w = m + 1;
+    let equal: Vec<bool> =
+        a.iter().flat_map(|x| b.iter().map(move |y| (x, y))).map(|(x, y)| cmp(x, y).is_empty()).collect();
+    let eq = |i: usize, j: usize| equal[i * m + j];
+    // A join of our groups i..i+p with their j..j+q, only where the sizes
+    // fit (the cheap test first).
+    let join = |i: usize, p: usize, j: usize, q: usize| {
+        let (x, y) = (&a[i..i + p], &b[j..j + q]);
+        x.iter().map(Group::len).sum::<usize>() == y.iter().map(Group::len).sum::<usize>()
+            && x[0].rapids.len() == y[0].rapids.len()
+            && only_kinds(&cmp(&joined(x), &joined(y)))
+    };
+    let mut cost = vec![0_u32; (n + 1) * w];
+    // The join that reached a cell: 0 none, k + 1 for JOINS[k].
+    let mut via = vec![0_u8; (n + 1) * w];
+    for i in 0..=n {
+        for j in 0..=m {
+            let c = if i == 0 || j == 0 {
+                u32::try_from(i + j).unwrap_or(u32::MAX / 2)
+            } else {
+                let sub = cost[(i - 1) * w + j - 1] + u32::from(!eq(i - 1, j - 1));
+                let mut c = sub.min(cost[(i - 1) * w + j] + 1).min(cost[i * w + j - 1] + 1);
+                for (k, (p, q)) in JOINS.into_iter().enumerate() {
+                    if i >= p && j >= q && cost[(i - p) * w + j - q] + 1 < c && join(i - p, p, j - q, q) {
+                        via[i * w + j] = u8::try_from(k + 1).unwrap_or(0);
+                        c = cost[(i - p) * w + j - q] + 1;
+                    }
+                }
+                c
+            };
+            cost[i * w + j] = c;
+        }
+    }
+    // Where it ends in theirs: all of it, or (free end) the fewest groups
+    // at the least cost.
+    let resumes = |j: usize| match (b.get(j), next) {
+        (Some(t), Some(o)) => cmp(o, t).is_empty(),
+        _ => true,
+    };
+    let end = if free_end {
+        (0..=m).min_by_key(|&j| (cost[n * w + j] + u32::from(!resumes(j)), j)).unwrap_or(m)
+    } else {
+        m
+    };
+    // Walk back.
+    let (mut i, mut j) = (n, end);
+    let mut ops = Vec::new();
+    // Walking back, a missing or extra group is preferred over a match of
+    // equal cost: when passes repeat (finishing passes), the one reported
+    // missing is the last, where a trace that stops early stops.
+    while i > 0 || j > 0 {
+        if let Some(&(p, q)) = via[i * w + j].checked_sub(1).and_then(|k| JOINS.get(usize::from(k))) {
+            ops.push(Op::Join { i: i - p, p, j: j - q, q });
+            i -= p;
+            j -= q;
+        } else if i > 0 && cost[i * w + j] == cost[(i - 1) * w + j] + 1 {
+            ops.push(Op::Missing(i - 1));
+            i -= 1;
+        } else if i > 0
+            && j > 0
+            && cost[i * w + j] == cost[(i - 1) * w + j - 1] + u32::from(!eq(i - 1, j - 1))
+        {
+            ops.push(Op::Pair(i - 1, j - 1));
+            i -= 1;
+            j -= 1;
+        } else {
+            ops.push(Op::Extra(j - 1));
+            j -= 1;
+        }
+    }
+    ops.reverse();
+    let mut out = Vec::new();
+    for op in ops {
+        match op {
+            Op::Pair(x, y) => out.extend(cmp(&a[x], &b[y])),
+            Op::Join { i, p, j, q } => out.extend(cmp(&joined(&a[i..i + p]), &joined(&b[j..j + q]))),
+            Op::Missing(x) => out.push(missing(&a[x])),
+            Op::Extra(y) => out.push(extra(&b[y])),
+        }
+    }
+    (out, end)
+}
+
+fn first_step(g: &Group) -> Option<Step> {
+    g.cuts.first().or(g.rapids.last()).copied()
+}
+
+fn missing(g: &Group) -> Divergence {
+    Divergence { what: "missing pass", ours: first_step(g), theirs: None, moves: g.len() }
+}
+
+fn extra(g: &Group) -> Divergence {
+    Divergence { what: "extra pass", ours: None, theirs: first_step(g), moves: g.len() }
+}
+
+#[cfg(test)]
+mod tests {
+    use cycleref::{InputUnit, Lead, LeadWord, Point, StartAngle};
+
+    use super::*;
+    use crate::check::Context;
+
+    const MM: Units = Units { system: cycleref::IncrementSystem::IsB, unit: InputUnit::Metric };
+
+    fn step(kind: Kind, x: i64, z: i64, line: usize) -> Step {
+        let lead = (kind == Kind::Thread).then_some(Lead { word: LeadWord::F, mantissa: 2, scale: 0 });
+        Step {
+            kind,
+            from: None,
+            to: Point::new(x, z),
+            centre: None,
+            lead,
+            angle: StartAngle::ZERO,
+            sync: kind == Kind::Thread,
+            context: Context::Source { line },
+        }
+    }
+
+    /// A pass at depth `x`: a rapid to its start and one thread move.
+    fn pass(x: i64) -> Group {
+        Group { rapids: vec![step(Kind::Rapid, x, 10, 1)], cuts: vec![step(Kind::Thread, x, -30, 2)] }
+    }
+
+    fn whats(d: &[Divergence]) -> Vec<&'static str> {
+        d.iter().map(|d| d.what).collect()
+    }
+
+    #[test]
+    fn equal_groups_agree_and_take_as_many() {
+        let ours = [pass(100), pass(90), pass(80)];
+        let theirs = [pass(100), pass(90), pass(80), pass(70)];
+        // Our next group is theirs after the three: they agree, three taken.
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&pass(70)));
+        assert_eq!((whats(&d), taken), (vec![], 3));
+        // Without a next group, all of theirs is taken: one extra pass.
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        assert_eq!((whats(&d), taken), (vec!["extra pass"], 4));
+    }
+
+    #[test]
+    fn a_missing_pass_is_one_divergence_not_a_shift() {
+        let ours = [pass(100), pass(90), pass(80), pass(70)];
+        let theirs = [pass(100), pass(80), pass(70)];
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        assert_eq!((whats(&d), taken), (vec!["missing pass"], 3));
+        assert_eq!(d[0].ours.map(|s| s.to), Some(Point::new(90, -30)));
+    }
+
+    #[test]
+    fn a_window_stops_where_the_trace_resumes_with_our_next_group() {
+        // Our window's last pass is missing from the trace, which goes on
+        // with our next window's first pass: the window takes two groups and
+        // reports the missing pass, instead of pairing it with the next
+        // window's pass (a substitution, then an extra pass later).
+        let ours = [pass(100), pass(90), pass(80)];
+        let next = pass(500);
+        let theirs = [pass(100), pass(90), pass(500), pass(490)];
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&next));
+        assert_eq!((whats(&d), taken), (vec!["missing pass"], 2));
+    }
+
+    #[test]
+    fn a_changed_end_point_is_named_within_the_tolerance() {
+        let ours = [pass(100)];
+        let mut moved = pass(100);
+        moved.cuts[0].to = Point::new(100, -31);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 0, MM, &[], None);
+        assert_eq!(whats(&d), vec!["end point"]);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 1, MM, &[], None);
+        assert!(d.is_empty());
+    }
+
+    #[test]
+    fn long_runs_are_grouped_in_pieces() {
+        // One rapid and GROUP_MOVES + 5 feeds: two groups, the second of 5.
+        let steps = std::iter::once(Ok((step(Kind::Rapid, 0, 0, 1), 0))).chain(
+            (1..=GROUP_MOVES + 5).map(|i| Ok((step(Kind::Feed, 0, -i64::try_from(i).unwrap_or(0), 2), 0))),
+        );
+        let mut g = Grouper::new(steps);
+        let first = g.group().and_then(Result::ok).map(|(g, _)| (g.rapids.len(), g.cuts.len()));
+        let second = g.group().and_then(Result::ok).map(|(g, _)| (g.rapids.len(), g.cuts.len()));
+        assert_eq!((first, second), (Some((1, GROUP_MOVES)), Some((0, 5))));
+        assert!(g.group().is_none());
+        assert_eq!(g.count, GROUP_MOVES + 6);
+    }
+}

@@ -1,0 +1,306 @@
+//! `cycleref check`: compares a vendor's toolpath with ours, pass by pass.
+//!
+//! Both toolpaths become lists of moves (kind, start and end point, an
+//! arc's centre, and for thread moves the lead, the start angle and where
+//! synchronisation starts). Ours comes from the program's own motion blocks
+//! and the expansion of its cycles, each move annotated with the cycle,
+//! pass and point it is in the manual's terms; theirs from the trace, an
+//! expanded program or a CSV.
+//!
+//! What does not matter is ignored: blocks that do not move, number
+//! formatting, N numbers and comments (the trace is read as words), and a
+//! rapid split into an X move and a Z move (in either order) whose corner
+//! path stays out of the regions the cycles cut (reading R-CHECKSPLIT; a
+//! split through them is a "rapid through the work"). What shapes the part
+//! is compared strictly: the kind of every move (rapid, feed, arc clockwise,
+//! arc counter-clockwise, thread), every end point and arc centre (within
+//! the tolerance, the only thing it applies to), every thread move's lead,
+//! where synchronisation starts and its start angle (exactly), the rapid
+//! points, and the order of the passes. The moves are grouped into passes
+//! (a run of rapids and the cutting moves after it), and the groups are
+//! aligned with an edit distance, so a missing or an extra pass is reported
+//! as such instead of shifting every later comparison; a rapid written for a
+//! cutting move (or the reverse) splits (or joins) a pass, and the alignment
+//! joins the pieces again to name that move.
+//!
+//! ## How data flows through this module
+//!
+//! Two streams of steps meet in the alignment, a window at a time, and
+//! only the divergences are kept:
+//!
+//! * `ours`: our steps, from the program's motion blocks (`Tracker`, which
+//!   also reads an expanded program given as the trace) and its expanded
+//!   cycles, each annotated, and the regions the cycles cut;
+//! * `trace`: their steps, read as they are taken from an expanded
+//!   program, a CSV or LinuxCNC's canonical output;
+//! * `align`: both streams made into groups (passes), and our groups
+//!   aligned a window at a time with theirs by edit distance
+//!   (`compare_streams` drives the whole comparison);
+//! * `compare`: an aligned pair of groups compared move by move, each
+//!   difference a divergence;
+//! * `report`: the divergences counted and listed, written as text or
+//!   JSON, or as the marks `plot --trace` draws.
+//!
+//! This module holds the types they share (`Kind`, `Context`, `Step`,
+//! `Group`, `Divergence`) and the entry points: [`run`], [`check_bytes`],
+//! [`check_bytes_as`] and [`overlay`].
+
+mod align;
+mod compare;
+mod ours;
+mod report;
+mod trace;
+
+use std::path::Path;
+
+use cycleref::{Lead, Pass, Point, Role, StartAngle, Units};
+
+use crate::job::Job;
+
+use align::{compare_streams, StreamError};
+pub use report::{Mark, Report, MAX_LISTED};
+use trace::{format_of, open_trace, trace_steps};
+
+/// How a move moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Rapid,
+    Feed,
+    /// G02.
+    ArcCw,
+    /// G03.
+    ArcCcw,
+    Thread,
+}
+
+impl Kind {
+    fn name(self) -> &'static str {
+        match self {
+            Kind::Rapid => "rapid",
+            Kind::Feed => "feed",
+            Kind::ArcCw => "arc-cw",
+            Kind::ArcCcw => "arc-ccw",
+            Kind::Thread => "thread",
+        }
+    }
+
+    fn is_arc(self) -> bool {
+        matches!(self, Kind::ArcCw | Kind::ArcCcw)
+    }
+}
+
+/// Where one of our moves comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Context {
+    /// A motion block of the program itself.
+    Source { line: usize },
+    /// A G76 or G78 move (`code`: which).
+    G76 { code: &'static str, line: usize, pass: Pass, role: Role },
+    /// A G32 move (or LinuxCNC's G33: `code`).
+    G32 { code: &'static str, line: usize, role: Role },
+    /// A move of LinuxCNC's G76 (the `linuxcnc` profile).
+    LinuxCnc { line: usize, pass: Pass, role: Role },
+    /// A G75.1 move (line of block 2).
+    G75 { line: usize, role: Role },
+    /// A G92 move, of start `start`.
+    G92 { line: usize, start: u16, role: Role },
+}
+
+/// One move of either toolpath.
+#[derive(Clone, Copy, Debug)]
+struct Step {
+    kind: Kind,
+    /// Where the move starts, when known.
+    from: Option<Point>,
+    to: Point,
+    /// The centre of an arc, absolute (X in X-word units).
+    centre: Option<Point>,
+    /// Lead of a thread move.
+    lead: Option<Lead>,
+    /// Start angle where synchronisation starts (thread moves).
+    angle: StartAngle,
+    /// True where the move starts a synchronised run.
+    sync: bool,
+    /// Our annotation, or the trace's line.
+    context: Context,
+}
+
+/// A pass-sized piece of a toolpath: a run of rapids (possibly empty) and
+/// the cutting moves after it.
+#[derive(Clone, Debug)]
+struct Group {
+    rapids: Vec<Step>,
+    cuts: Vec<Step>,
+}
+
+impl Group {
+    fn len(&self) -> usize {
+        self.rapids.len() + self.cuts.len()
+    }
+
+    /// This group and the next as one: the next one's rapids become moves
+    /// among the cuts (a rapid written for a cutting move splits a pass).
+    fn joined(&self, next: &Group) -> Group {
+        let mut cuts = self.cuts.clone();
+        cuts.extend_from_slice(&next.rapids);
+        cuts.extend_from_slice(&next.cuts);
+        Group { rapids: self.rapids.clone(), cuts }
+    }
+}
+
+/// One difference between the toolpaths.
+#[derive(Clone, Debug)]
+struct Divergence {
+    /// What differs.
+    what: &'static str,
+    /// Our move (None for an extra move in the trace).
+    ours: Option<Step>,
+    /// Their move (None for a missing one).
+    theirs: Option<Step>,
+    /// For a missing or extra pass: how many moves.
+    moves: usize,
+}
+
+/// The trace at `trace` as points to draw over the cycles drawn: for each
+/// range of `ranges` (the indices of a drawn cycle's moves in our whole
+/// toolpath, the first move being 0), the trace's moves whose index lies in
+/// it, widened by a tenth (at least 16) each way so that a trace with a few
+/// moves more or less still shows whole; at most
+/// [`crate::plot::MAX_OVERLAY_POINTS`] a cycle. The trace is read as it is
+/// taken, then again by [`run`] for the divergences to mark.
+///
+/// # Errors
+///
+/// The program's or the trace's first error; a trace on standard input
+/// (`-`), which cannot be read twice.
+pub fn overlay(
+    job: &Job,
+    trace: &Path,
+    units: Units,
+    cycles: &[(usize, usize, usize)],
+) -> Result<crate::plot::Overlay, String> {
+    if trace == Path::new("-") {
+        return Err(
+            "plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
+                    give it as a file, not `-`"
+                .into(),
+        );
+    }
+    let (name, source) = open_trace(trace)?;
+    let widened: Vec<(usize, usize)> = cycles
+        .iter()
+        .map(|&(_, from, to)| {
+            let slack = ((to - from) / 10).max(16);
+            (from.saturating_sub(slack), to + slack)
+        })
+        .collect();
+    let last = widened.iter().map(|r| r.1).max().unwrap_or(0);
+    let mut per_cycle = vec![Vec::new(); cycles.len()];
+    let mut dropped = 0_usize;
+    for (i, step) in trace_steps(source, format_of(trace), &job.machine, units)
+        .map_err(|e| format!("{name}: {e}"))?
+        .enumerate()
+    {
+        let p = step.map_err(|e| format!("{name}: {e}"))?.0.to;
+        if i > last {
+            // The rest is read only for its errors.
+            continue;
+        }
+        for (k, (from, to)) in widened.iter().enumerate() {
+            if (*from..*to).contains(&i) {
+                if per_cycle[k].len() < crate::plot::MAX_OVERLAY_POINTS {
+                    per_cycle[k].push(p);
+                } else {
+                    dropped += 1;
+                }
+            }
+        }
+    }
+    // Where they diverge: the comparison `check` makes, at tolerance 0.
+    let marks = compare_file(job, trace, units, 0)?.marks();
+    let lines = cycles.iter().map(|&(line, _, _)| line).collect();
+    Ok(crate::plot::Overlay { name, per_cycle, lines, dropped, marks })
+}
+
+/// The kinds of trace `check` reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TraceFormat {
+    /// An expanded program (plain motion blocks).
+    Nc,
+    /// A CSV of moves.
+    Csv,
+    /// LinuxCNC's canonical output (`rs274 -g FILE < /dev/null > T.canon`),
+    /// on the linuxcnc profile.
+    Rs274,
+}
+
+/// Runs the comparison of `job`'s program with the trace at `trace` (`-`:
+/// standard input; `.csv`: a CSV).
+///
+/// # Errors
+///
+/// The program's first error, or the trace's, with its line.
+pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
+    if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
+        job.validate()?;
+        return Err("the program and the trace cannot both come from standard input".into());
+    }
+    let units = job.units()?;
+    compare_file(job, trace, units, tolerance).map_err(|e| program_error_first(job, e))
+}
+
+/// `check` in one phase (reading R-STREAM): its report is written only
+/// after the comparison, so no validation phase is needed for "nothing
+/// half-written". The comparison reads the whole program in order and
+/// expands every cycle as the validation would, so it meets the program's
+/// first error exactly where the validation does; an error of the trace
+/// (or of opening it) may come first, and then the validation is run after
+/// all, so that a program error still wins and every message is the one a
+/// validation phase first would have given.
+fn program_error_first(job: &Job, e: String) -> String {
+    match job.validate() {
+        Err(program) => program.into(),
+        Ok(_) => e,
+    }
+}
+
+/// What [`run`] does once it has the program's `units`.
+fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result<Report, String> {
+    let (name, source) = open_trace(trace)?;
+    compare_streams(job, source, format_of(trace), units, tolerance).map_err(|e| match e {
+        StreamError::Ours(e) => e,
+        StreamError::Theirs(e) => format!("{name}: {e}"),
+    })
+}
+
+/// The comparison of `job`'s program with a trace given as bytes (`.nc`
+/// text, or CSV when `is_csv`): what `run` does after opening the file.
+/// The fuzz target `check_trace` and the property tests call it.
+///
+/// # Errors
+///
+/// Our expansion's error, or the trace's, with its line.
+pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
+    let format = if is_csv { TraceFormat::Csv } else { TraceFormat::Nc };
+    check_bytes_as(job, bytes, format, tolerance)
+}
+
+/// [`check_bytes`] with the trace's format named, LinuxCNC's canonical
+/// output included (the fuzz target `check_canon` calls it).
+///
+/// # Errors
+///
+/// Our expansion's error, or the trace's, with its line.
+pub fn check_bytes_as(
+    job: &Job,
+    bytes: &[u8],
+    format: TraceFormat,
+    tolerance: u64,
+) -> Result<Report, String> {
+    let units = job.units()?;
+    compare_streams(job, Box::new(bytes), format, units, tolerance)
+        .map_err(|e| match e {
+            StreamError::Ours(e) | StreamError::Theirs(e) => e,
+        })
+        .map_err(|e| program_error_first(job, e))
+}

@@ -1,0 +1,548 @@
+//! The vendor's toolpath as a stream of steps, read as it is taken: an
+//! expanded program (`NcTrace`), a CSV (`CsvTrace`) or LinuxCNC's canonical
+//! output (`CanonTrace`), every line checked to be UTF-8. Also how a trace
+//! is opened, and which format its file's extension names.
+
+use std::collections::VecDeque;
+use std::io::BufRead;
+use std::path::Path;
+
+use cycleref::units::MAX_LENGTH;
+use cycleref::{Lead, LeadWord, Point, StartAngle, Units};
+use cycleref_spec::lex::Lexer;
+use cycleref_spec::profile::Dialect;
+use cycleref_spec::Machine;
+use rust_decimal::Decimal;
+
+use super::ours::Tracker;
+use super::{Context, Kind, Step, TraceFormat};
+
+/// The error of a trace's line `line` whose byte at offset `at` (from 0)
+/// is not UTF-8.
+fn not_utf8(line: usize, at: usize) -> String {
+    format!("line {line}, byte {}: not UTF-8 text", at + 1)
+}
+
+/// One line of a trace read from a stream, checked to be UTF-8 (the
+/// line end removed); `None` at the end.
+fn trace_line<'b>(
+    source: &mut dyn BufRead,
+    buf: &'b mut Vec<u8>,
+    line: usize,
+) -> Option<Result<&'b str, String>> {
+    buf.clear();
+    match source.read_until(b'\n', buf) {
+        Ok(0) => return None,
+        Ok(_) => {}
+        Err(e) => return Some(Err(format!("line {line}: {e}"))),
+    }
+    if buf.last() == Some(&b'\n') {
+        buf.pop();
+    }
+    let text = match std::str::from_utf8(buf) {
+        Ok(t) => t,
+        Err(e) => return Some(Err(not_utf8(line, e.valid_up_to()))),
+    };
+    // A byte-order mark may start the first line.
+    Some(Ok(if line == 1 { text.strip_prefix('\u{feff}').unwrap_or(text) } else { text }))
+}
+
+/// The vendor's toolpath from an expanded program, read in pieces of whole
+/// lines (as the program is, `job::next_piece`), each checked to be UTF-8
+/// at once and lexed a line at a time.
+struct NcTrace<'t, 'm> {
+    source: Box<dyn BufRead + 't>,
+    /// The current piece (`..piece`) and what was read beyond it.
+    buf: Vec<u8>,
+    piece: usize,
+    /// Where the next line starts in the piece.
+    at: usize,
+    eof: bool,
+    /// Where the piece's first byte that is not UTF-8 is, if it has one:
+    /// the line that holds it is an error when it is reached (not before:
+    /// the lines above it are read as they would be without it).
+    bad: Option<usize>,
+    line: usize,
+    tracker: Tracker<'m>,
+    /// The steps of the current line (a line may hold several blocks).
+    ready: VecDeque<Step>,
+}
+
+impl<'t, 'm> NcTrace<'t, 'm> {
+    fn new(source: Box<dyn BufRead + 't>, tracker: Tracker<'m>) -> NcTrace<'t, 'm> {
+        NcTrace {
+            source,
+            buf: Vec::new(),
+            piece: 0,
+            at: 0,
+            eof: false,
+            bad: None,
+            line: 0,
+            tracker,
+            ready: VecDeque::new(),
+        }
+    }
+
+    /// Reads lines until one moves; false at the end.
+    fn fill(&mut self) -> Result<bool, String> {
+        while self.ready.is_empty() {
+            if self.at >= self.piece {
+                match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
+                {
+                    Ok(false) => return Ok(false),
+                    Ok(true) => {}
+                    Err(e) => return Err(format!("line {}: {e}", self.line + 1)),
+                }
+                self.at = 0;
+                let piece = self.buf.get(..self.piece).unwrap_or_default();
+                self.bad = std::str::from_utf8(piece).err().map(|e| e.valid_up_to());
+            }
+            let piece = self.buf.get(..self.piece).unwrap_or_default();
+            let rest = piece.get(self.at..).unwrap_or_default();
+            let (end, next) = match memchr::memchr(b'\n', rest) {
+                Some(i) => (self.at + i, self.at + i + 1),
+                None => (piece.len(), piece.len()),
+            };
+            self.line += 1;
+            if let Some(bad) = self.bad.filter(|&b| b < end) {
+                // A line end is ASCII: the line's own bytes decide, as
+                // `from_utf8` of the line alone would.
+                return Err(not_utf8(self.line, bad - self.at));
+            }
+            let mut text = piece.get(self.at..end).unwrap_or_default();
+            self.at = next;
+            // A byte-order mark may start the first line.
+            if self.line == 1 {
+                text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
+            }
+            for b in Lexer::at_line(text, self.line) {
+                let b = b.map_err(|e| e.to_string())?;
+                if let Some(s) = self.tracker.block(&b)? {
+                    self.ready.push_back(s);
+                }
+            }
+        }
+        Ok(true)
+    }
+}
+
+impl Iterator for NcTrace<'_, '_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        match self.fill() {
+            Ok(true) => self.ready.pop_front().map(|s| Ok((s, 0))),
+            Ok(false) => None,
+            Err(e) => Some(Err(e)),
+        }
+    }
+}
+
+/// The columns a CSV trace may have.
+const CSV_COLUMNS: [&str; 9] = ["motion", "x", "z", "lead", "q", "i", "k", "cx", "cz"];
+
+/// The vendor's toolpath from a CSV with a header naming its columns
+/// (`motion`, `x`, `z`; `lead`, `q`; `i`, `k` or `cx`, `cz` for arcs).
+struct CsvTrace<'t, 'm> {
+    source: Box<dyn BufRead + 't>,
+    buf: Vec<u8>,
+    line: usize,
+    machine: &'m Machine,
+    units: Units,
+    cols: Vec<String>,
+    cm: usize,
+    cx: usize,
+    cz: usize,
+    cl: Option<usize>,
+    cq: Option<usize>,
+    ci: Option<usize>,
+    ck: Option<usize>,
+    ccx: Option<usize>,
+    ccz: Option<usize>,
+    here: Option<Point>,
+    in_thread: bool,
+}
+
+impl<'t, 'm> CsvTrace<'t, 'm> {
+    /// The trace after its header (an empty text has no header and no rows).
+    fn new(
+        mut source: Box<dyn BufRead + 't>,
+        machine: &'m Machine,
+        units: Units,
+    ) -> Result<CsvTrace<'t, 'm>, String> {
+        let mut buf = Vec::new();
+        let mut cols = vec!["motion".to_string(), "x".into(), "z".into()];
+        let mut h = 0;
+        while let Some(l) = trace_line(&mut *source, &mut buf, h + 1) {
+            let l = l?;
+            if !l.trim().is_empty() {
+                cols = Self::columns(h, l)?;
+                break;
+            }
+            h += 1;
+        }
+        let col = |name: &str| cols.iter().position(|c| c == name);
+        let (Some(cm), Some(cx), Some(cz)) = (col("motion"), col("x"), col("z")) else {
+            return Err(format!(
+                "CSV line {}: the header must name the columns motion, x and z (lead, q, i, k, cx and cz are optional)",
+                h + 1
+            ));
+        };
+        let (cl, cq, ci, ck, ccx, ccz) = (col("lead"), col("q"), col("i"), col("k"), col("cx"), col("cz"));
+        Ok(CsvTrace {
+            source,
+            buf,
+            line: h + 1,
+            machine,
+            units,
+            cols,
+            cm,
+            cx,
+            cz,
+            cl,
+            cq,
+            ci,
+            ck,
+            ccx,
+            ccz,
+            here: None,
+            in_thread: false,
+        })
+    }
+
+    /// The columns the header at line `h` (0-based) names.
+    fn columns(h: usize, header: &str) -> Result<Vec<String>, String> {
+        let cols: Vec<String> = header.split(',').map(|c| c.trim().to_ascii_lowercase()).collect();
+        for (n, c) in cols.iter().enumerate() {
+            if !CSV_COLUMNS.contains(&c.as_str()) {
+                return Err(format!(
+                    "CSV line {}: unknown column `{c}` (the columns are {})",
+                    h + 1,
+                    CSV_COLUMNS.join(", ")
+                ));
+            }
+            if cols[..n].contains(c) {
+                return Err(format!("CSV line {}: the column `{c}` appears twice", h + 1));
+            }
+        }
+        Ok(cols)
+    }
+
+    /// The step of CSV line `n` (1-based), if it moves.
+    fn row(&mut self, n: usize, line: &str) -> Result<Option<Step>, String> {
+        let f: Vec<&str> = line.split(',').map(str::trim).collect();
+        if f.len() > self.cols.len() {
+            return Err(format!("CSV line {n}: {} fields, the header names {}", f.len(), self.cols.len()));
+        }
+        let get = |c: Option<usize>| c.and_then(|c| f.get(c).copied()).filter(|s| !s.is_empty());
+        let motion = get(Some(self.cm)).unwrap_or("");
+        let kind = match motion.to_ascii_lowercase().as_str() {
+            "rapid" | "g00" | "g0" => Kind::Rapid,
+            "feed" | "g01" | "g1" => Kind::Feed,
+            "thread" | "g32" => Kind::Thread,
+            "arc-cw" | "g02" | "g2" => Kind::ArcCw,
+            "arc-ccw" | "g03" | "g3" => Kind::ArcCcw,
+            "arc" => {
+                return Err(format!(
+                    "CSV line {n}: motion `arc` needs a direction: arc-cw (G02) or arc-ccw (G03)"
+                ))
+            }
+            _ => {
+                return Err(format!(
+                "CSV line {n}: unknown motion `{motion}` (rapid, feed, thread, arc-cw, arc-ccw; or G00, G01, \
+                 G32, G02, G03)"
+            ))
+            }
+        };
+        let decimal = |s: &str, what: &str| -> Result<Decimal, String> {
+            let ok = !s.is_empty()
+                && s.trim_start_matches(['-', '+']).chars().all(|c| c.is_ascii_digit() || c == '.')
+                && s.trim_start_matches(['-', '+']).chars().any(|c| c.is_ascii_digit());
+            let d = if ok { Decimal::from_str_exact(s).ok() } else { None };
+            d.ok_or_else(|| format!("CSV line {n}: {what} `{s}` is not a decimal"))
+        };
+        // A length in increments times `factor`, exact, within the range table.
+        let length = |s: Option<&str>, what: &str, factor: i64| -> Result<i64, String> {
+            let s = s.ok_or_else(|| format!("CSV line {n}: {what} is missing"))?;
+            let out = || format!("CSV line {n}: {what} `{s}` is outside the range table");
+            let v = decimal(s, what)?
+                .checked_mul(Decimal::from(self.units.per_unit()))
+                .and_then(|v| v.checked_mul(Decimal::from(factor)))
+                .ok_or_else(out)?;
+            if !v.fract().is_zero() {
+                return Err(format!("CSV line {n}: {what} `{s}` is not a whole number of increments"));
+            }
+            let v = i64::try_from(v.trunc()).map_err(|_| out())?;
+            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() * factor.unsigned_abs() {
+                return Err(out());
+            }
+            Ok(v)
+        };
+        let to = Point::new(length(get(Some(self.cx)), "x", 1)?, length(get(Some(self.cz)), "z", 1)?);
+        let lead = match get(self.cl) {
+            Some(s) if kind == Kind::Thread => Some(parse_lead(s).ok_or_else(|| {
+                format!("CSV line {n}: lead `{s}` (write F6.0, I20 or 6.0, within the range tables)")
+            })?),
+            Some(s) => return Err(format!("CSV line {n}: lead `{s}` on a row that is not a thread move")),
+            None if kind == Kind::Thread => return Err(format!("CSV line {n}: a thread row needs its lead")),
+            None => None,
+        };
+        let angle = match get(self.cq) {
+            Some(s) if kind == Kind::Thread => csv_angle(s, n)?,
+            Some(s) => return Err(format!("CSV line {n}: q `{s}` on a row that is not a thread move")),
+            None => StartAngle::ZERO,
+        };
+        let relative = get(self.ci).is_some() || get(self.ck).is_some();
+        let absolute = get(self.ccx).is_some() || get(self.ccz).is_some();
+        let centre = match (kind.is_arc(), relative, absolute) {
+            (false, false, false) => None,
+            (false, _, _) => {
+                return Err(format!(
+                    "CSV line {n}: an arc centre on a row that is not an arc (arc-cw or arc-ccw)"
+                ))
+            }
+            (true, false, false) => {
+                return Err(format!(
+                    "CSV line {n}: an arc without a centre: give i and k, or cx and cz (reading R-CHECKARC)"
+                ))
+            }
+            (true, true, true) => {
+                return Err(format!("CSV line {n}: give the centre once: i and k, or cx and cz, not both"))
+            }
+            (true, true, false) => {
+                let Some(p) = self.here else {
+                    return Err(format!(
+                    "CSV line {n}: i and k are from the arc's start, and no earlier row gives it (use cx, cz)"
+                ));
+                };
+                let di = match get(self.ci) {
+                    Some(s) => length(Some(s), "i", self.machine.x_mode.factor())?,
+                    None => 0,
+                };
+                let dk = match get(self.ck) {
+                    Some(s) => length(Some(s), "k", 1)?,
+                    None => 0,
+                };
+                Some(Point::new(p.x + di, p.z + dk))
+            }
+            (true, false, true) => {
+                Some(Point::new(length(get(self.ccx), "cx", 1)?, length(get(self.ccz), "cz", 1)?))
+            }
+        };
+        if self.here == Some(to) {
+            return Ok(None);
+        }
+        let from = self.here;
+        self.here = Some(to);
+        let sync = kind == Kind::Thread && !self.in_thread;
+        self.in_thread = kind == Kind::Thread;
+        let angle = if sync { angle } else { StartAngle::ZERO };
+        Ok(Some(Step { kind, from, to, centre, lead, angle, sync, context: Context::Source { line: n } }))
+    }
+}
+
+impl Iterator for CsvTrace<'_, '_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            self.line += 1;
+            let mut buf = std::mem::take(&mut self.buf);
+            let row = match trace_line(&mut *self.source, &mut buf, self.line)? {
+                Err(e) => Err(e),
+                Ok(line) if line.trim().is_empty() => Ok(None),
+                Ok(line) => self.row(self.line, line),
+            };
+            self.buf = buf;
+            match row {
+                Ok(Some(s)) => return Some(Ok((s, 0))),
+                Ok(None) => {}
+                Err(e) => return Some(Err(e)),
+            }
+        }
+    }
+}
+
+/// A CSV start angle: thousandths of a degree, multiples of 0.1, below 360°.
+fn csv_angle(s: &str, n: usize) -> Result<StartAngle, String> {
+    let bad =
+        || format!("CSV line {n}: q `{s}` must be 0 to 360000 thousandths of a degree, in steps of 0.1");
+    if !s.chars().all(|c| c.is_ascii_digit() || c == '.') || !s.chars().any(|c| c.is_ascii_digit()) {
+        return Err(bad());
+    }
+    let d = Decimal::from_str_exact(s).map_err(|_| bad())?;
+    let tenths = d.checked_mul(Decimal::from(10)).ok_or_else(bad)?;
+    if !tenths.fract().is_zero() || d > Decimal::from(360_000) {
+        return Err(bad());
+    }
+    let t = u32::try_from(tenths.trunc()).map_err(|_| bad())?;
+    Ok(if t % 10 == 0 {
+        StartAngle::from_millidegrees(u64::from(t / 10))
+    } else {
+        StartAngle { num: t, den: 10 }
+    })
+}
+
+fn parse_lead(s: &str) -> Option<Lead> {
+    let (word, v) = match s.chars().next()? {
+        'F' | 'f' => (LeadWord::F, &s[1..]),
+        'I' | 'i' => (LeadWord::I, &s[1..]),
+        _ => (LeadWord::F, s),
+    };
+    let (int, frac) = v.split_once('.').unwrap_or((v, ""));
+    let frac = frac.trim_end_matches('0');
+    if !int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit()) || int.is_empty() && frac.is_empty() {
+        return None;
+    }
+    let digits = format!("{int}{frac}");
+    let digits = digits.trim_start_matches('0');
+    let mantissa = if digits.is_empty() { 0 } else { digits.parse().ok()? };
+    let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).ok()? };
+    lead.in_range().then_some(lead)
+}
+
+/// True when the trace at `trace` is a CSV (by its extension).
+/// The format of a trace file, by its extension.
+pub(super) fn format_of(trace: &Path) -> TraceFormat {
+    match trace.extension() {
+        Some(e) if e.eq_ignore_ascii_case("csv") => TraceFormat::Csv,
+        Some(e) if e.eq_ignore_ascii_case("canon") => TraceFormat::Rs274,
+        _ => TraceFormat::Nc,
+    }
+}
+
+/// The vendor's toolpath from LinuxCNC's canonical output (reading
+/// R-CHECKLCNC): `STRAIGHT_TRAVERSE` is a rapid, `STRAIGHT_FEED` a feed,
+/// or a thread move at the pitch of the `START_SPEED_FEED_SYNC` in force;
+/// synchronisation starts at a thread move that follows no thread move
+/// (LinuxCNC's planner waits for the index only then). X is printed as a
+/// radius: the check holds it as a diameter on this profile.
+struct CanonTrace<'t> {
+    source: Box<dyn BufRead + 't>,
+    buf: Vec<u8>,
+    line: usize,
+    units: Units,
+    pitch: Option<Lead>,
+    in_thread: bool,
+    here: Option<Point>,
+}
+
+impl CanonTrace<'_> {
+    /// A printed length in increments (X doubled: a diameter).
+    fn increments(&self, v: Decimal, factor: i64, what: &str) -> Result<i64, String> {
+        let scaled = v
+            .checked_mul(Decimal::from(self.units.per_unit() * factor))
+            .filter(|s| s.fract().is_zero())
+            .ok_or_else(|| format!("line {}: {what} {v} is not a whole number of increments", self.line))?;
+        i64::try_from(scaled)
+            .ok()
+            .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
+            .ok_or_else(|| format!("line {}: {what} {v} is beyond the range table", self.line))
+    }
+
+    fn step(&mut self) -> Result<Option<Step>, String> {
+        loop {
+            self.line += 1;
+            let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
+                None => return Ok(None),
+                Some(t) => t?.to_string(),
+            };
+            let call = cycleref_spec::rs274::call(&text, self.line).map_err(|e| e.to_string())?;
+            match call {
+                Some(cycleref_spec::rs274::CanonCall::StartSync { pitch }) => {
+                    let bad =
+                        || format!("line {}: pitch {pitch} is not a lead of at most 6 decimals", self.line);
+                    let mut mantissa = pitch
+                        .checked_mul(Decimal::from(1_000_000))
+                        .filter(|s| s.fract().is_zero())
+                        .and_then(|s| u64::try_from(s).ok())
+                        .filter(|m| *m > 0)
+                        .ok_or_else(bad)?;
+                    let mut scale = 6;
+                    while scale > 0 && mantissa % 10 == 0 {
+                        mantissa /= 10;
+                        scale -= 1;
+                    }
+                    self.pitch = Some(Lead { word: LeadWord::F, mantissa, scale });
+                }
+                Some(cycleref_spec::rs274::CanonCall::StopSync) => self.pitch = None,
+                Some(cycleref_spec::rs274::CanonCall::Motion { rapid, x, z }) => {
+                    let to = Point::new(self.increments(x, 2, "X")?, self.increments(z, 1, "Z")?);
+                    let from = self.here.replace(to);
+                    if from == Some(to) {
+                        continue;
+                    }
+                    let kind = match (rapid, self.pitch) {
+                        (true, _) => Kind::Rapid,
+                        (false, None) => Kind::Feed,
+                        (false, Some(_)) => Kind::Thread,
+                    };
+                    let sync = kind == Kind::Thread && !self.in_thread;
+                    self.in_thread = kind == Kind::Thread;
+                    let lead = if kind == Kind::Thread { self.pitch } else { None };
+                    let context = Context::Source { line: self.line };
+                    return Ok(Some(Step {
+                        kind,
+                        from,
+                        to,
+                        centre: None,
+                        lead,
+                        angle: StartAngle::ZERO,
+                        sync,
+                        context,
+                    }));
+                }
+                None => {}
+            }
+        }
+    }
+}
+
+impl Iterator for CanonTrace<'_> {
+    type Item = Result<(Step, u32), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.step().transpose().map(|r| r.map(|s| (s, 0)))
+    }
+}
+
+/// The trace's name and a buffered reader of it (`-`: standard input).
+pub(super) fn open_trace(trace: &Path) -> Result<(String, Box<dyn BufRead>), String> {
+    if trace == Path::new("-") {
+        return Ok((crate::job::STDIN_NAME.to_string(), Box::new(std::io::stdin().lock())));
+    }
+    let file = std::fs::File::open(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
+    Ok((trace.display().to_string(), Box::new(std::io::BufReader::with_capacity(1 << 16, file))))
+}
+
+/// Steps with their segments, read as they are taken.
+type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), String>> + 't>;
+
+/// The vendor's steps, read as they are taken from `source`: an expanded
+/// program, or a CSV. The text must be UTF-8 (a byte-order mark is
+/// skipped).
+pub(super) fn trace_steps<'t, 'm: 't>(
+    source: Box<dyn BufRead + 't>,
+    format: TraceFormat,
+    machine: &'m Machine,
+    units: Units,
+) -> Result<TraceSteps<'t>, String> {
+    Ok(if format == TraceFormat::Rs274 {
+        if machine.profile.dialect != Dialect::LinuxCnc {
+            return Err("an rs274 trace (.canon) is LinuxCNC's: compare it with --profile linuxcnc".into());
+        }
+        Box::new(CanonTrace {
+            source,
+            buf: Vec::new(),
+            line: 0,
+            units,
+            pitch: None,
+            in_thread: false,
+            here: None,
+        })
+    } else if format == TraceFormat::Csv {
+        Box::new(CsvTrace::new(source, machine, units)?)
+    } else {
+        Box::new(NcTrace::new(source, Tracker::new(machine, units, true)))
+    })
+}
