@@ -401,7 +401,6 @@ fn parse_lead(s: &str) -> Option<Lead> {
     lead.in_range().then_some(lead)
 }
 
-/// True when the trace at `trace` is a CSV (by its extension).
 /// The format of a trace file, by its extension.
 pub(super) fn format_of(trace: &Path) -> TraceFormat {
     match trace.extension() {
@@ -519,7 +518,7 @@ pub(super) fn open_trace(trace: &Path) -> Result<(String, Box<dyn BufRead>), Str
 type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), String>> + 't>;
 
 /// The vendor's steps, read as they are taken from `source`: an expanded
-/// program, or a CSV. The text must be UTF-8 (a byte-order mark is
+/// program, a CSV, or LinuxCNC's canonical trace (`rs274`). The text must be UTF-8 (a byte-order mark is
 /// skipped).
 pub(super) fn trace_steps<'t, 'm: 't>(
     source: Box<dyn BufRead + 't>,
