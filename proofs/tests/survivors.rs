@@ -691,6 +691,73 @@ fn the_peck_count_is_exact_at_the_limit() {
     assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(refused), "10^6 + 1 pecks");
 }
 
+/// `engine/g75/roughing.rs` 89:34 (`m == 1` → `m != 1`) and 91:21
+/// (`m == count` → `m != count`) in `check_peck_count`: each layer's
+/// plunges are counted over its own range, A_m1 to A_mf; the first and
+/// the last layer's ranges are known before the count, the others are
+/// worked out. The mutants count layers 2..M with layer 1's range, or
+/// the middle layers with the last layer's. On a right-angle groove every
+/// layer has the same range, so they agree; here flank A leans. Worked by
+/// hand (§9, R-G75REGION), radius mode (f = 1), flank A 45° (cot = 1),
+/// flank B 90°, Y = 300 in layers of Δv = 100 (M = 3, bottoms 100, 200,
+/// 300, y_top = 0), Δi = Δk = 1, a 0.001 tool (w = 1), no allowances:
+/// flank A is at u = y, the bottom runs from P1 at u = 300 to P2 at u = 300
+/// + D, flank B stands at P2, so layer m's plunges run from A_m1 = 100·m
+/// to A_mf = 300 + D − 1: D + 300 − 100·m plunges of 100 pecks. In all,
+/// 100·(3D + 300) pecks:
+///
+/// * D = 3.233: 999 900, admitted. 89:34 counts layers 2 and 3 with layer
+///   1's D + 200 plunges: 30 000 more, 1 029 900, refused.
+/// * D = 3.234: 1 000 200, refused. 91:21 counts layer 2 with layer 3's
+///   D plunges: 10 000 fewer, 990 200, admitted.
+///
+/// The ranges are checked against the reference's `plunge_range`, the
+/// outcomes against its `rough_layers` and the engine's `expand_g75`.
+#[test]
+fn each_layer_is_counted_over_its_own_plunges() {
+    use cycleref::g75::{MAX_PECKS, RIGHT_ANGLE};
+    use cycleref::{Corner, CycleError, G75Cycle, PathType, Point, Units, XMode};
+    use cycleref_spec::g75::{groove, plunge_range, rough_layers, y_top};
+    let _serial = serial();
+    let cycle = |width: i64| G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Radius,
+        from: Point::new(120_000, -5_000),
+        start: Point::new(100_000, 0),
+        peck: 1,
+        step: 1,
+        depth: -300,
+        width,
+        flank_a: 450_000,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer: Some(100),
+        allowance_x: 0,
+        allowance_z: 0,
+        tool_width: Some(1),
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    };
+    let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
+    for (width, outcome) in [(3_233, Ok(())), (3_234, Err(refused))] {
+        let c = cycle(width);
+        let g = groove(&c);
+        assert_eq!(y_top(&g), Ok(0), "D {width}");
+        for m in 1..=3_i128 {
+            let range = plunge_range(&g, m).expect("a layer of the groove");
+            let (first, last) = (100 * m, 300 + i128::from(width) - 1);
+            assert_eq!(
+                (range.first, range.last, range.count(1)),
+                (first, last, last - first + 1),
+                "D {width}"
+            );
+        }
+        assert_eq!(rough_layers(&g, 0).map(|_| ()), outcome, "D {width}: the reference");
+        assert_eq!(cycleref::expand_g75(&c).map(|_| ()), outcome, "D {width}: the engine");
+    }
+}
+
 /// `engine/g75/roughing.rs` 190:33 (`y_lim − top` → `y_lim / top` in
 /// `check_roughing`, closure `peck_beyond`; applied by hand, the mutation
 /// run had not reached that line yet): the first peck end beyond the
@@ -712,6 +779,26 @@ fn the_peck_count_is_exact_at_the_limit() {
 ///   lets the roughing through (applied by hand: a later move, at the
 ///   depth 40, is then reported, X 1 000 000 014).
 ///
+/// * V10, Δi = 3 (`roughing.rs` 203:27 `(m − 1) * Δv` → `+`, `/`, 203:22
+///   `m − 1` → `m + 1`, and 186:20 `Δv > 0` → `<`, which all report a peck
+///   of the wrong layer top and agreed with Δi = 4 only because every top
+///   they took is a multiple of 4): layer 3 pecks from 20 to 23, then 26:
+///   X = 1 000 000 000, j = floor(5/3) + 1 = 2. The mutants' tops 12, 0
+///   and 40 give 27, 27 and 28; with 186:20 the one-layer check peck from
+///   0, 27.
+/// * V10, Δi = 4, S at X999 999 989 (`roughing.rs` 193:11 `y1 > y_lim` →
+///   `>=`): y_lim = 10 = the first layer's bottom, so layer 1 is in range
+///   (its last peck ends on the limit, X 999 999 999) and layer 2's first
+///   peck, 10 + 4 = 14, is the first beyond: X = 1 000 000 003. The
+///   mutant takes layer 1 as beyond, finds its peck clamped at 10 in
+///   range, and returns with nothing reported.
+/// * V10, Δi = 4, S at Z999 999.999 (`roughing.rs` 196:12 `A_1f > u_lim`
+///   → `>=`): the one plunge position, u = 0, is at the Z limit (u_lim =
+///   999 999 999 − S.z = 0 = A_1f), so every Z is in range, and the peck
+///   to 28 in layer 3 is again the first beyond, X = 1 000 000 002. The
+///   mutant takes A_1f as beyond, finds its Z in range, and returns with
+///   nothing reported.
+///
 /// The reference (`cycleref_spec::g75::expand`, which makes the moves
 /// and checks them in order) reports the same.
 #[test]
@@ -719,12 +806,12 @@ fn the_first_peck_beyond_the_range_is_reported() {
     use cycleref::g75::RIGHT_ANGLE;
     use cycleref::{Corner, CycleError, Field, G75Cycle, Length, PathType, Point, Units, XMode};
     let _serial = serial();
-    let cycle = |layer: Option<i64>| G75Cycle {
+    let cycle = |(x, z): (i64, i64), peck: i64, layer: Option<i64>| G75Cycle {
         units: Units::IS_B_METRIC,
         x_mode: XMode::Diameter,
         from: Point::new(999_990_000, 5_000),
-        start: Point::new(999_999_974, 0),
-        peck: 4,
+        start: Point::new(x, z),
+        peck,
         step: 1,
         depth: 40,
         width: 10,
@@ -739,13 +826,19 @@ fn the_first_peck_beyond_the_range_is_reported() {
         path: PathType::Rough,
         corners: [Corner::SHARP; 4],
     };
-    let beyond = CycleError::OutOfRange {
-        field: Field::PassCoordinate,
-        value: Length::new(1_000_000_002, Units::IS_B_METRIC),
-    };
-    for (name, layer) in [("one layer", None), ("layer 3 of 4", Some(10))] {
-        let c = cycle(layer);
-        g75_refused_by_both(&c, beyond, name);
+    let cases = [
+        ("one layer", (999_999_974, 0), 4, None, 1_000_000_002),
+        ("layer 3 of 4", (999_999_974, 0), 4, Some(10), 1_000_000_002),
+        ("layer 3 of 4, Δi = 3", (999_999_974, 0), 3, Some(10), 1_000_000_000),
+        ("layer 2 of 4, layer 1 to the limit", (999_999_989, 0), 4, Some(10), 1_000_000_003),
+        ("layer 3 of 4, S at the Z limit", (999_999_974, 999_999_999), 4, Some(10), 1_000_000_002),
+    ];
+    for (name, s, peck, layer, beyond) in cases {
+        let beyond = CycleError::OutOfRange {
+            field: Field::PassCoordinate,
+            value: Length::new(beyond, Units::IS_B_METRIC),
+        };
+        g75_refused_by_both(&cycle(s, peck, layer), beyond, name);
     }
 }
 
