@@ -701,10 +701,10 @@ fn the_peck_count_is_exact_at_the_limit() {
 /// hand (§9, R-G75REGION), radius mode (f = 1), flank A 45° (cot = 1),
 /// flank B 90°, Y = 300 in layers of Δv = 100 (M = 3, bottoms 100, 200,
 /// 300, y_top = 0), Δi = Δk = 1, a 0.001 tool (w = 1), no allowances:
-/// flank A is at u = y, the bottom runs from P1 at u = 300 to P2 at u = 300
-/// + D, flank B stands at P2, so layer m's plunges run from A_m1 = 100·m
-/// to A_mf = 300 + D − 1: D + 300 − 100·m plunges of 100 pecks. In all,
-/// 100·(3D + 300) pecks:
+/// flank A is at u = y, the bottom runs from P1 at u = 300 to P2 at
+/// u = 300 + D, flank B stands at P2, so layer m's plunges run from A_m1 =
+/// 100·m to A_mf = 300 + D − 1: D + 300 − 100·m plunges of 100 pecks. In
+/// all, 100·(3D + 300) pecks:
 ///
 /// * D = 3.233: 999 900, admitted. 89:34 counts layers 2 and 3 with layer
 ///   1's D + 200 plunges: 30 000 more, 1 029 900, refused.
