@@ -691,6 +691,45 @@ fn the_peck_count_is_exact_at_the_limit() {
     assert_eq!(cycleref::expand_g75(&c).map(|_| ()), Err(refused), "10^6 + 1 pecks");
 }
 
+/// `engine/real.rs` 66:26 (`SCRATCH = 2 * MAX_LIMBS` → `2 + MAX_LIMBS`,
+/// found by a sampled run): the scratch buffers then hold a product of
+/// two 8-limb numbers at most, so every product and quotient of the
+/// 512-bit (`SLOW`, 10-limb) precision fails and comes back poisoned. The
+/// G75.1 engine needs that precision only where the 128-bit one leaves a
+/// floor or a ceiling open, which no harness window reaches: their
+/// grooves are right-angled or drawn at random angles, whose values are
+/// never integers made of irrational factors. The slope example
+/// (`cycleref::examples::G75_SLOPE`, examples/gsk980-g75-slope.nc) is
+/// made of them (R-G75TIE): with A = 60° and a round r3 the depth of K1
+/// is `9000 − 300 − 2·400·tan 30°·sin 60° − 300·cos 60° = 8150` exactly,
+/// and the second layer's right boundary `4500·cot 60° + 6000 + 1500·
+/// cot 75° − 100 = 8900`. Its rough contour, worked out from the formulas
+/// (mpmath, 80 digits; `impl/src/engine/g75/tests.rs`,
+/// `slope_example_expands`): R0 (X83.629 Z0.947), K1 (X71.850 Z−2.453),
+/// K2 (X71.300 Z−2.930), K3 (X71.300 Z−5.691), K4 (X71.971 Z−6.128), R3
+/// (X83.629 Z−7.690), the tool's far side 2.500 short of the contour's;
+/// then the rapid back to A_11 (X83.629 Z−0.967: ceil(left(3000)) =
+/// ceil(966.025…)). The moves are the reference's.
+#[test]
+fn the_slope_example_decides_its_ties() {
+    use cycleref::{Motion, Point, Role};
+    let _serial = serial();
+    let c = cycleref::examples::G75_SLOPE;
+    let moves = g75_reference_moves(&c);
+    assert_eq!(
+        with_role(&moves, Role::RoughContour),
+        [
+            (Motion::Rapid, Point::new(83_629, 947)),
+            (Motion::Feed, Point::new(71_850, -2_453)),
+            (Motion::Feed, Point::new(71_300, -2_930)),
+            (Motion::Feed, Point::new(71_300, -5_691)),
+            (Motion::Feed, Point::new(71_971, -6_128)),
+            (Motion::Feed, Point::new(83_629, -7_690)),
+            (Motion::Rapid, Point::new(83_629, -967)),
+        ]
+    );
+}
+
 /// `engine/g75/roughing.rs` 89:34 (`m == 1` → `m != 1`) and 91:21
 /// (`m == count` → `m != count`) in `check_peck_count`: each layer's
 /// plunges are counted over its own range, A_m1 to A_mf; the first and
