@@ -38,6 +38,35 @@ fn g75_refused_by_both(c: &cycleref::G75Cycle, e: cycleref::CycleError, what: &s
     assert_eq!(cycleref::expand_g75(c).map(|_| ()), Err(e), "{what}: the engine");
 }
 
+/// A right-angle G75.1 rough groove (IS-B, diameter): S at X100.000 Z0
+/// from X120.000 Z5.000, H−2.000, D3.000, Δi = Δk = 1.000, a pointed tool,
+/// one layer, no allowances, no retract, sharp corners. The G75.1 tests
+/// below change what they need with `..square_groove()`.
+fn square_groove() -> cycleref::G75Cycle {
+    use cycleref::g75::RIGHT_ANGLE;
+    use cycleref::{Corner, PathType, Point, Units, XMode};
+    cycleref::G75Cycle {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        from: Point::new(120_000, 5_000),
+        start: Point::new(100_000, 0),
+        peck: 1_000,
+        step: 1_000,
+        depth: -2_000,
+        width: 3_000,
+        flank_a: RIGHT_ANGLE,
+        flank_b: RIGHT_ANGLE,
+        slope: 0,
+        retract: 0,
+        layer: None,
+        allowance_x: 0,
+        allowance_z: 0,
+        tool_width: None,
+        path: PathType::Rough,
+        corners: [Corner::SHARP; 4],
+    }
+}
+
 /// The motion and end point of each of `moves` with role `role`.
 fn with_role(moves: &[cycleref::Move], role: cycleref::Role) -> Vec<(cycleref::Motion, cycleref::Point)> {
     moves.iter().filter(|m| m.role == role).map(|m| (m.motion, m.to)).collect()
@@ -647,29 +676,17 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
 /// the engine only checks up front, the moves are not drawn.
 #[test]
 fn the_peck_count_is_exact_at_the_limit() {
-    use cycleref::g75::{MAX_PECKS, RIGHT_ANGLE};
-    use cycleref::{Corner, CycleError, G75Cycle, PathType, Point, Units, XMode};
+    use cycleref::g75::MAX_PECKS;
+    use cycleref::{CycleError, G75Cycle};
     use cycleref_spec::g75::{groove, peck_count, rough_layers, y_top};
     let _serial = serial();
     let cycle = |depth: i64, width: i64, allowance_z: i64| G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
-        from: Point::new(120_000, 5_000),
-        start: Point::new(100_000, 0),
         peck: 1,
         step: 1,
         depth,
         width,
-        flank_a: RIGHT_ANGLE,
-        flank_b: RIGHT_ANGLE,
-        slope: 0,
-        retract: 0,
-        layer: None,
-        allowance_x: 0,
         allowance_z,
-        tool_width: None,
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
+        ..square_groove()
     };
     let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
     // 1000 plunges from A_11 = 1 to A_1f = 1000, of 1000 pecks each.
@@ -754,29 +771,21 @@ fn the_slope_example_decides_its_ties() {
 /// outcomes against its `rough_layers` and the engine's `expand_g75`.
 #[test]
 fn each_layer_is_counted_over_its_own_plunges() {
-    use cycleref::g75::{MAX_PECKS, RIGHT_ANGLE};
-    use cycleref::{Corner, CycleError, G75Cycle, PathType, Point, Units, XMode};
+    use cycleref::g75::MAX_PECKS;
+    use cycleref::{CycleError, G75Cycle, Point, XMode};
     use cycleref_spec::g75::{groove, plunge_range, rough_layers, y_top};
     let _serial = serial();
     let cycle = |width: i64| G75Cycle {
-        units: Units::IS_B_METRIC,
         x_mode: XMode::Radius,
         from: Point::new(120_000, -5_000),
-        start: Point::new(100_000, 0),
         peck: 1,
         step: 1,
         depth: -300,
         width,
         flank_a: 450_000,
-        flank_b: RIGHT_ANGLE,
-        slope: 0,
-        retract: 0,
         layer: Some(100),
-        allowance_x: 0,
-        allowance_z: 0,
         tool_width: Some(1),
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
+        ..square_groove()
     };
     let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
     for (width, outcome) in [(3_233, Ok(())), (3_234, Err(refused))] {
@@ -842,28 +851,18 @@ fn each_layer_is_counted_over_its_own_plunges() {
 /// and checks them in order) reports the same.
 #[test]
 fn the_first_peck_beyond_the_range_is_reported() {
-    use cycleref::g75::RIGHT_ANGLE;
-    use cycleref::{Corner, CycleError, Field, G75Cycle, Length, PathType, Point, Units, XMode};
+    use cycleref::{CycleError, Field, G75Cycle, Length, Point, Units};
     let _serial = serial();
     let cycle = |(x, z): (i64, i64), peck: i64, layer: Option<i64>| G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
         from: Point::new(999_990_000, 5_000),
         start: Point::new(x, z),
         peck,
         step: 1,
         depth: 40,
         width: 10,
-        flank_a: RIGHT_ANGLE,
-        flank_b: RIGHT_ANGLE,
-        slope: 0,
-        retract: 0,
         layer,
-        allowance_x: 0,
-        allowance_z: 0,
         tool_width: Some(10),
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
+        ..square_groove()
     };
     let cases = [
         ("one layer", (999_999_974, 0), 4, None, 1_000_000_002),
@@ -907,30 +906,13 @@ fn the_first_peck_beyond_the_range_is_reported() {
 ///   hand: a later move, at u = 2000, is reported, Z 1 000 001 499).
 #[test]
 fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
-    use cycleref::g75::RIGHT_ANGLE;
-    use cycleref::{
-        Corner, CycleError, Field, G75Cycle, Length, Motion, PathType, Plunge, Point, Role, Units, XMode,
-    };
+    use cycleref::{CycleError, Field, G75Cycle, Length, Motion, Plunge, Point, Role, Units};
     let _serial = serial();
     let cycle = |z: i64| G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
         from: Point::new(110_000, z),
         start: Point::new(100_000, z),
-        peck: 1_000,
-        step: 1_000,
-        depth: -2_000,
-        width: 3_000,
-        flank_a: RIGHT_ANGLE,
-        flank_b: RIGHT_ANGLE,
-        slope: 0,
-        retract: 0,
-        layer: None,
-        allowance_x: 0,
-        allowance_z: 0,
         tool_width: Some(1_000),
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
+        ..square_groove()
     };
     let c = cycle(-1_000);
     let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
@@ -976,30 +958,15 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
 ///   1 000 001 899.
 #[test]
 fn a_step_beyond_the_z_range_is_counted_from_the_first_plunge() {
-    use cycleref::g75::RIGHT_ANGLE;
-    use cycleref::{
-        Corner, CycleError, Field, G75Cycle, Length, Motion, PathType, Plunge, Point, Role, Units, XMode,
-    };
+    use cycleref::{CycleError, Field, G75Cycle, Length, Motion, Plunge, Point, Role, Units};
     let _serial = serial();
     let cycle = |z: i64| G75Cycle {
-        units: Units::IS_B_METRIC,
-        x_mode: XMode::Diameter,
         from: Point::new(110_000, z),
         start: Point::new(100_000, z),
-        peck: 1_000,
-        step: 1_000,
-        depth: -2_000,
         width: 5_000,
-        flank_a: RIGHT_ANGLE,
-        flank_b: RIGHT_ANGLE,
-        slope: 0,
-        retract: 0,
-        layer: None,
-        allowance_x: 0,
         allowance_z: 500,
         tool_width: Some(1_000),
-        path: PathType::Rough,
-        corners: [Corner::SHARP; 4],
+        ..square_groove()
     };
     let moves = g75_reference_moves(&cycle(-3_000));
     let plunge = |number: u32| Plunge { layer: 1, number };
