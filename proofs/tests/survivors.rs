@@ -747,6 +747,25 @@ fn the_slope_example_decides_its_ties() {
     );
 }
 
+/// `engine/real.rs` 273:10 (`m < n` → `m <= n` in `limbs_divmod`, found
+/// by a sampled run): a dividend of as many significant limbs as the
+/// divisor was taken as smaller than it, quotient 0. `Fixed::div_round`
+/// shifts the dividend up by the fraction limbs (two at the 128-bit
+/// precision), so that happens for a dividend below 2^-64 and a divisor
+/// of at least 1, where the quotient is a few ulps: 9 ulps / 3 is 3 ulps
+/// exactly, and (2^64 − 1) ulps / 5 is 3 689 348 814 741 910 323 ulps
+/// exactly (2^64 − 1 = 5 · 3 689 348 814 741 910 323); the mutant makes
+/// both `[0, 1 ulp]`, which does not hold the quotient. No move of the
+/// harness windows changed with it; the kernel must still divide every
+/// input it is given, and the enclosures built on it rely on that.
+#[test]
+fn a_dividend_as_long_as_its_divisor_is_divided() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let ulps = |u: u64| Interval::<FAST>::point(Fixed::from_ulps(u));
+    assert_eq!(ulps(9).div(&Interval::int(3)), ulps(3));
+    assert_eq!(ulps(u64::MAX).div(&Interval::int(5)), ulps(3_689_348_814_741_910_323));
+}
+
 /// `engine/g75/roughing.rs` 89:34 (`m == 1` → `m != 1`) and 91:21
 /// (`m == count` → `m != count`) in `check_peck_count`: each layer's
 /// plunges are counted over its own range, A_m1 to A_mf; the first and
