@@ -14,11 +14,11 @@ use cycleref::{G32RunOut, LeadWord, Move};
 use cycleref_spec::reader::G32Call;
 use cycleref_spec::ProfileName;
 
-use super::machine::{any_profile, head, Ctx};
+use super::machine::{any_profile, head, MachineStyle};
 use super::{tag, Draft, Expected, Rng, Template};
 
 /// A G32 block.
-pub(super) fn g32(ctx: &Ctx, x: Option<i64>, z: Option<i64>, words: &[String]) -> String {
+pub(super) fn g32(ctx: &MachineStyle, x: Option<i64>, z: Option<i64>, words: &[String]) -> String {
     let mut s = String::from("G32");
     if let Some(x) = x {
         let _ = write!(s, " X{}", ctx.num(x));
@@ -55,7 +55,7 @@ pub(super) struct Line32 {
 }
 
 /// A random G32 thread, straight or (with `taper`) tapered.
-pub(super) fn line32(rng: &mut Rng, ctx: &Ctx, taper: bool) -> Line32 {
+pub(super) fn line32(rng: &mut Rng, ctx: &MachineStyle, taper: bool) -> Line32 {
     let side = rng.sign();
     let dir = if rng.chance(70) { -1 } else { 1 };
     let (lead, lead_inc) = ctx.lead(rng, None);
@@ -88,7 +88,7 @@ pub(super) const PASSES: Template = Template {
 };
 
 fn passes(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let taper = rng.chance(50);
     let l = line32(rng, &ctx, taper);
     let xf = ctx.xf();
@@ -150,7 +150,7 @@ pub(super) const FACE: Template = Template {
 };
 
 fn face(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let xf = ctx.xf();
     let (lead, lead_inc) = ctx.lead(rng, None);
     let outer = ctx.mm(rng.range(30_000, 45_000));
@@ -200,7 +200,7 @@ fn face(rng: &mut Rng) -> Draft {
 
 /// G32 blocks with run-out, one per rule of the profile, each cut from the
 /// same start (G00 between them cancels J and K), then one without J/K.
-fn runout_program(rng: &mut Rng, ctx: &Ctx, l: &Line32, variants: &[Vec<String>]) -> Vec<String> {
+fn runout_program(rng: &mut Rng, ctx: &MachineStyle, l: &Line32, variants: &[Vec<String>]) -> Vec<String> {
     let xf = ctx.xf();
     let x1 = (l.taper != 0).then_some(xf * (l.r0 + l.taper));
     let clear = ctx.mm(rng.range(3000, 5000));
@@ -240,7 +240,7 @@ pub(super) const RUNOUT_980: Template = Template {
 };
 
 fn runout_980(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let taper = rng.chance(50);
     let l = line32(rng, &ctx, taper);
     let (j, k) = (ctx.mm(rng.range(300, 2000)), ctx.mm(rng.range(500, 3000)));
@@ -275,7 +275,7 @@ pub(super) const RUNOUT_988: Template = Template {
 };
 
 fn runout_988(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let mut l = line32(rng, &ctx, false);
     // Steep: the X travel (radius) at least the Z travel; K along X, J along Z.
     l.len = ctx.mm(rng.range(3000, 6000));
@@ -301,7 +301,7 @@ pub(super) const CONTINUOUS: Template = Template {
 };
 
 fn continuous(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let xf = ctx.xf();
     let l = line32(rng, &ctx, false);
     let rise = ctx.mm(rng.range(500, 2000));

@@ -15,7 +15,7 @@ use cycleref::{CornerKind, IncrementSystem, Motion, Move, PathType, Role};
 use cycleref_spec::reader::G75Call;
 use cycleref_spec::ProfileName;
 
-use super::machine::{head, Ctx};
+use super::machine::{head, MachineStyle};
 use super::{tag, Draft, Expected, Rng, Template};
 
 /// One G75.1 cycle as written, in increments: X, P(Δi), H, V and U in
@@ -64,7 +64,7 @@ pub(super) struct Groove {
 /// peck and a step that are replaced by the templates; S is on an outer
 /// diameter for `sx < 0`, in a bore for `sx > 0`, and the tool stands clear
 /// of it.
-pub(super) fn groove(rng: &mut Rng, ctx: &Ctx, sx: i64, sz: i64, h_um: i64, d_um: i64) -> Groove {
+pub(super) fn groove(rng: &mut Rng, ctx: &MachineStyle, sx: i64, sz: i64, h_um: i64, d_um: i64) -> Groove {
     let xf = ctx.xf();
     let r0 = if sx < 0 { rng.range(150, 400) } else { rng.range(120, 300) } * 100;
     let zs = rng.range(-200, 200) * 100;
@@ -95,14 +95,14 @@ pub(super) fn groove(rng: &mut Rng, ctx: &Ctx, sx: i64, sz: i64, h_um: i64, d_um
 
 /// P(Δi) that cuts `h` radius increments in at most `n` pecks, in X-word
 /// units, rounded up to 0.1 mm where the units allow.
-pub(super) fn peck_for(ctx: &Ctx, h: i64, n: i64) -> i64 {
+pub(super) fn peck_for(ctx: &MachineStyle, h: i64, n: i64) -> i64 {
     let grain = ctx.mm(100).max(1);
     let per = (h + n - 1) / n.max(1);
     ctx.xf() * ((per + grain - 1) / grain * grain).max(1)
 }
 
 /// `microns` of a radius in increments, at least one.
-pub(super) fn small(ctx: &Ctx, microns: i64) -> i64 {
+pub(super) fn small(ctx: &MachineStyle, microns: i64) -> i64 {
     ctx.mm(microns).max(1)
 }
 
@@ -128,7 +128,7 @@ pub(super) fn corner_digits(rng: &mut Rng, round: [bool; 4]) -> String {
 }
 
 /// The two blocks of a G75.1.
-pub(super) fn g75_lines(ctx: &Ctx, g: &Groove) -> Vec<String> {
+pub(super) fn g75_lines(ctx: &MachineStyle, g: &Groove) -> Vec<String> {
     let mut b1 = String::from("G75.1");
     if let Some(x) = g.start.0 {
         let _ = write!(b1, " X{}", ctx.num(x));
@@ -169,7 +169,7 @@ pub(super) fn g75_lines(ctx: &Ctx, g: &Groove) -> Vec<String> {
 }
 
 /// The lines of a one-G75.1 program.
-pub(super) fn g75_program(rng: &mut Rng, ctx: &Ctx, g: &Groove) -> Vec<String> {
+pub(super) fn g75_program(rng: &mut Rng, ctx: &MachineStyle, g: &Groove) -> Vec<String> {
     let mut lines = head(rng, ctx, g.from);
     lines.extend(g75_lines(ctx, g));
     if rng.chance(30) {
@@ -196,7 +196,7 @@ pub(super) const SEED: Template = Template {
 };
 
 fn seed(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     // The seed's example is written for IS-C (P30000 is 3 mm).
     ctx.increment = IncrementSystem::IsC;
     let h_um = rng.range(60, 100) * 100;
@@ -230,7 +230,7 @@ pub(super) const SQUARE: Template = Template {
 };
 
 fn square(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let xf = ctx.xf();
     let (sx, sz) = (rng.sign(), rng.sign());
     let h_um = rng.range(30, 60) * 100;
@@ -267,7 +267,7 @@ pub(super) const CORNERS: Template = Template {
 };
 
 fn corners(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let (sx, sz) = (rng.sign(), rng.sign());
     let h_um = rng.range(30, 60) * 100;
     let with_tool = rng.chance(50);
@@ -313,7 +313,7 @@ pub(super) const SLOPE: Template = Template {
 };
 
 fn slope(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let (sx, sz) = (rng.sign(), rng.sign());
     let h_um = rng.range(30, 60) * 100;
     let with_tool = rng.chance(40);
@@ -357,7 +357,7 @@ pub(super) const INTERNAL: Template = Template {
 };
 
 fn internal(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let h_um = rng.range(20, 50) * 100;
     let d_um = rng.range(30, 60) * 100;
     let mut g = groove(rng, &ctx, 1, 1, h_um, d_um);

@@ -14,7 +14,7 @@ use cycleref::{DepthMode, Infeed, LeadWord, Move, PassKind, Role, RunOut};
 use cycleref_spec::reader::{G76Call, Multipass};
 use cycleref_spec::ProfileName;
 
-use super::machine::{any_profile, head, Ctx, Param};
+use super::machine::{any_profile, head, MachineStyle, Param};
 use super::{tag, Draft, Expected, Rng, Template};
 
 /// One G76 thread: geometry and schedule, in increments.
@@ -55,7 +55,7 @@ pub(super) enum Taper {
 
 /// A random thread, external or internal, cut towards -Z or +Z; `rough`
 /// is the range of the rough pass count the first depth aims at.
-pub(super) fn thread(rng: &mut Rng, ctx: &Ctx, taper: Taper, rough: (i64, i64)) -> Thread {
+pub(super) fn thread(rng: &mut Rng, ctx: &MachineStyle, taper: Taper, rough: (i64, i64)) -> Thread {
     let xf = ctx.xf();
     let side = rng.sign();
     let dir = if rng.chance(70) { -1 } else { 1 };
@@ -104,7 +104,7 @@ pub(super) fn pmra(m: i64, r: i64, a: i64) -> String {
 }
 
 /// A usual P(m)(r)(a): m 1..2 (0..2 on the 980TDi), r 0..10, a.
-fn random_pmra(rng: &mut Rng, ctx: &Ctx) -> String {
+fn random_pmra(rng: &mut Rng, ctx: &MachineStyle) -> String {
     let m = if ctx.profile == ProfileName::Gsk980 && rng.chance(15) { 0 } else { rng.range(1, 2) };
     let r = if rng.chance(40) { 0 } else { rng.range(1, 10) };
     pmra(m, r, tool_angle(rng))
@@ -145,7 +145,7 @@ impl G76 {
     }
 
     /// Both blocks with a usual P(m)(r)(a), absolute or incremental.
-    pub(super) fn usual(rng: &mut Rng, ctx: &Ctx) -> G76 {
+    pub(super) fn usual(rng: &mut Rng, ctx: &MachineStyle) -> G76 {
         G76 {
             block1: true,
             p: Some(random_pmra(rng, ctx)),
@@ -159,7 +159,7 @@ impl G76 {
 }
 
 /// The one or two blocks of a G76.
-pub(super) fn g76_lines(ctx: &Ctx, t: &Thread, g: &G76) -> Vec<String> {
+pub(super) fn g76_lines(ctx: &MachineStyle, t: &Thread, g: &G76) -> Vec<String> {
     let mut out = Vec::new();
     if g.block1 {
         let mut s = String::from("G76");
@@ -199,7 +199,7 @@ pub(super) fn g76_lines(ctx: &Ctx, t: &Thread, g: &G76) -> Vec<String> {
 
 /// Random run-out words J/K for the profile (none on FANUC): for the
 /// 980TDi in block 1, for the 988TA in block 2.
-fn random_jk(rng: &mut Rng, ctx: &Ctx, g: &mut G76) {
+fn random_jk(rng: &mut Rng, ctx: &MachineStyle, g: &mut G76) {
     let j = ctx.mm(rng.range(300, 2000));
     let k = ctx.mm(rng.range(500, 3000));
     let words = match rng.range(0, 3) {
@@ -216,7 +216,7 @@ fn random_jk(rng: &mut Rng, ctx: &Ctx, g: &mut G76) {
 }
 
 /// The lines of a one-G76 program.
-pub(super) fn g76_program(rng: &mut Rng, ctx: &Ctx, t: &Thread, g: &G76) -> Vec<String> {
+pub(super) fn g76_program(rng: &mut Rng, ctx: &MachineStyle, t: &Thread, g: &G76) -> Vec<String> {
     let mut lines = head(rng, ctx, t.a);
     lines.extend(g76_lines(ctx, t, g));
     lines.push("M30".into());
@@ -235,7 +235,7 @@ pub(super) const BASIC: Template = Template {
 };
 
 fn basic(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let t = thread(rng, &ctx, Taper::Any, (2, 5));
     let mut g = G76::usual(rng, &ctx);
     random_jk(rng, &ctx, &mut g);
@@ -263,7 +263,7 @@ pub(super) const D2: Template = Template {
 
 /// A GSK 988TA G76 with the infeed word D`mode`.
 fn infeed(rng: &mut Rng, mode: i64) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let t = thread(rng, &ctx, Taper::Any, (2, 5));
     let mut g = G76::usual(rng, &ctx);
     g.extra1.push(format!("D{mode}"));
@@ -282,7 +282,7 @@ pub(super) const LEAD_IN: Template = Template {
 };
 
 fn lead_in(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let taper = if rng.chance(70) { Taper::Straight } else { Taper::ZLong };
     let t = thread(rng, &ctx, taper, (2, 4));
     let mut g = G76::usual(rng, &ctx);
@@ -305,7 +305,7 @@ pub(super) const MULTI_START: Template = Template {
 };
 
 fn multi_start(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let t = thread(rng, &ctx, Taper::Any, (1, 2));
     let mut g = G76::usual(rng, &ctx);
     g.p = Some(pmra(1, rng.range(0, 5), tool_angle(rng)));
@@ -319,7 +319,7 @@ fn multi_start(rng: &mut Rng) -> Draft {
 
 /// A thread with one rough level and one finishing pass, for programs of
 /// several cycles.
-fn small_thread(rng: &mut Rng, ctx: &Ctx) -> Thread {
+fn small_thread(rng: &mut Rng, ctx: &MachineStyle) -> Thread {
     let mut t = thread(rng, ctx, Taper::Straight, (1, 1));
     t.dd = t.k;
     t
@@ -342,7 +342,7 @@ pub(super) const RUNOUT_980: Template = Template {
 };
 
 fn runout_980(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let t = small_thread(rng, &ctx);
     let r = rng.range(2, 9);
     let a = tool_angle(rng);
@@ -387,7 +387,7 @@ pub(super) const RUNOUT_988: Template = Template {
 };
 
 fn runout_988(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let t = small_thread(rng, &ctx);
     let r = rng.range(2, 9);
     let a = tool_angle(rng);
@@ -418,7 +418,7 @@ pub(super) const RUNOUT_988_K_ONLY: Template = Template {
 };
 
 fn runout_988_k_only(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let t = small_thread(rng, &ctx);
     let (jt, kt) = (ctx.num(ctx.mm(rng.range(300, 2000))), ctx.num(ctx.mm(rng.range(500, 3000))));
     let mut lines = head(rng, &ctx, t.a);
@@ -446,7 +446,7 @@ pub(super) const CHAMFER: Template = Template {
 
 fn chamfer(rng: &mut Rng) -> Draft {
     let profile = rng.pick(&[ProfileName::Fanuc, ProfileName::Gsk988]);
-    let mut ctx = Ctx::new(profile, rng);
+    let mut ctx = MachineStyle::new(profile, rng);
     ctx.params.insert("5131", Param::Int(rng.pick(&[30, 60, 20])));
     let t = thread(rng, &ctx, Taper::Any, (1, 2));
     // Cycle 1: r from parameter 5130 (no block 1, Δdmin and d from 5140
@@ -475,7 +475,7 @@ pub(super) const X_LONG: Template = Template {
 };
 
 fn x_long(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let t = thread(rng, &ctx, Taper::XLong, (2, 4));
     let mut g = G76::usual(rng, &ctx);
     g.p = Some(pmra(rng.range(1, 2), rng.range(0, 3), rng.pick(&[0, 29, 30, 55, 60])));
@@ -494,7 +494,7 @@ pub(super) const TAPER: Template = Template {
 };
 
 fn taper(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let t = thread(rng, &ctx, Taper::ZLong, (2, 5));
     let mut g = G76::usual(rng, &ctx);
     random_jk(rng, &ctx, &mut g);
@@ -512,7 +512,7 @@ pub(super) const ONE_PASS: Template = Template {
 };
 
 fn one_pass(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let mut t = thread(rng, &ctx, Taper::Any, (1, 1));
     t.dd = t.k - t.allowance + if rng.chance(40) { 0 } else { rng.range(1, t.k) };
     let mut g = G76::usual(rng, &ctx);
@@ -531,7 +531,7 @@ pub(super) const MIN_CUT: Template = Template {
 };
 
 fn min_cut(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let mut t = thread(rng, &ctx, Taper::Any, (1, 1));
     // k - d about 3 Δd and Δdmin about 0.35 Δd: the law's steps fall below
     // Δdmin from the third level on.
@@ -554,7 +554,7 @@ pub(super) const EXACT: Template = Template {
 };
 
 fn exact(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let mut t = thread(rng, &ctx, Taper::Any, (2, 4));
     // k - d = round(Δd √n) exactly.
     let n = rng.range(2, 5);
@@ -579,7 +579,7 @@ pub(super) const D_EQUALS_K: Template = Template {
 };
 
 fn d_equals_k(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let mut t = thread(rng, &ctx, Taper::Any, (1, 2));
     t.allowance = t.k;
     t.dmin = t.dmin.min(t.k);
@@ -600,7 +600,7 @@ pub(super) const I_LEAD: Template = Template {
 };
 
 fn i_lead(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let mut t = thread(rng, &ctx, Taper::Any, (2, 4));
     t.lead = ctx.lead(rng, Some(LeadWord::I)).0;
     let mut g = G76::usual(rng, &ctx);
@@ -621,7 +621,7 @@ pub(super) const PARAMS_MODAL: Template = Template {
 /// Cycle 1 from the parameters (no block 1), cycle 2 with a block 1,
 /// cycle 3 with the modal values of that block 1 and the modal lead.
 fn params_modal(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(any_profile(rng), rng);
+    let mut ctx = MachineStyle::new(any_profile(rng), rng);
     let t = small_thread(rng, &ctx);
     let p = ctx.profile_data();
     let names = &p.params;
@@ -665,7 +665,7 @@ pub(super) const FANUC_CALC: Template = Template {
 
 /// A FANUC G76 with calculator-type input (`calc`) or with bare lengths.
 fn fanuc_style(rng: &mut Rng, calc: bool) -> Draft {
-    let mut ctx = Ctx::new(ProfileName::Fanuc, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Fanuc, rng);
     ctx.calculator_input = calc;
     ctx.bare = !calc;
     let t = thread(rng, &ctx, Taper::Any, (2, 5));
@@ -684,7 +684,7 @@ pub(super) const PARTIAL_P: Template = Template {
 };
 
 fn partial_p(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let t = small_thread(rng, &ctx);
     let mut lines = head(rng, &ctx, t.a);
     let a = tool_angle(rng);

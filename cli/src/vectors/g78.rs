@@ -13,11 +13,17 @@ use cycleref::CycleError;
 use cycleref_spec::{ErrorKind, ProfileName};
 
 use super::g76::{g76_program, pmra, thread, Taper, Thread, G76};
-use super::machine::{gsk, Ctx};
+use super::machine::{gsk, MachineStyle};
 use super::{Draft, Expected, Rng, Template};
 
 /// The lines of a one-G78 program with block 1's `p` and extra words.
-fn g78_program(rng: &mut Rng, ctx: &Ctx, straight: bool, p: String, extra1: Vec<String>) -> Vec<String> {
+fn g78_program(
+    rng: &mut Rng,
+    ctx: &MachineStyle,
+    straight: bool,
+    p: String,
+    extra1: Vec<String>,
+) -> Vec<String> {
     g78_program_with(rng, ctx, straight, p, extra1, |_, _| {})
 }
 
@@ -25,7 +31,7 @@ fn g78_program(rng: &mut Rng, ctx: &Ctx, straight: bool, p: String, extra1: Vec<
 /// before they are written (a refusal breaks one thing there).
 fn g78_program_with(
     rng: &mut Rng,
-    ctx: &Ctx,
+    ctx: &MachineStyle,
     straight: bool,
     p: String,
     extra1: Vec<String>,
@@ -59,7 +65,7 @@ pub(super) const GSK988: Template = Template {
 };
 
 fn gsk988(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let r = rng.range(0, 4);
     let depth = rng.range(0, 1);
     let p = pmra(rng.range(1, 2), r, rng.pick(&[29, 30, 55, 60]));
@@ -85,7 +91,7 @@ pub(super) const GSK980: Template = Template {
 };
 
 fn gsk980(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let p = pmra(0, 3, rng.pick(&[29, 30, 55, 60]));
     let d = rng.range(0, 2);
     let straight = rng.chance(60);
@@ -105,7 +111,7 @@ pub(super) const INFEED_RANGE: Template = Template {
 };
 
 fn infeed_range(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
+    let ctx = MachineStyle::new(gsk(rng), rng);
     let (m, r) = if ctx.profile == ProfileName::Gsk988 { (2, rng.range(5, 9)) } else { (1, rng.range(4, 9)) };
     let p = pmra(m, r, 45);
     let lines = g78_program(rng, &ctx, true, p, vec![]);
@@ -123,7 +129,7 @@ pub(super) const GSK980_M: Template = Template {
 };
 
 fn gsk980_m(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let p = pmra(rng.range(2, 9), rng.range(0, 3), 60);
     let lines = g78_program(rng, &ctx, true, p, vec![]);
     Draft::new(ctx, lines)
@@ -139,7 +145,7 @@ pub(super) const GSK988_D: Template = Template {
 };
 
 fn gsk988_d(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let p = pmra(rng.range(1, 2), rng.range(0, 4), 60);
     let d = rng.range(2, 9);
     let lines = g78_program(rng, &ctx, true, p, vec![format!("D{d}")]);
@@ -157,7 +163,7 @@ pub(super) const FACE_THREAD: Template = Template {
 };
 
 fn face_thread(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
+    let ctx = MachineStyle::new(gsk(rng), rng);
     let (m, r) = if ctx.profile == ProfileName::Gsk988 { (2, rng.range(0, 4)) } else { (1, rng.range(0, 3)) };
     let incremental = rng.chance(50);
     let lines = g78_program_with(rng, &ctx, true, pmra(m, r, 60), vec![], |t, g| {
@@ -178,7 +184,7 @@ pub(super) const MISSING: Template = Template {
 };
 
 fn missing(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
+    let ctx = MachineStyle::new(gsk(rng), rng);
     let (m, r) = if ctx.profile == ProfileName::Gsk988 { (2, rng.range(0, 4)) } else { (1, rng.range(0, 3)) };
     let omit = if rng.chance(50) { "P" } else { "Q" };
     let lines = g78_program_with(rng, &ctx, true, pmra(m, r, 60), vec![], |_, g| g.omit = omit);

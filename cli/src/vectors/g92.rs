@@ -13,7 +13,7 @@ use cycleref_spec::reader::G92Call;
 use cycleref_spec::{ErrorKind, ProfileName};
 
 use super::g32::{line32, Line32};
-use super::machine::{any_profile, gsk, head, Ctx, Param};
+use super::machine::{any_profile, gsk, head, MachineStyle, Param};
 use super::{tag, Draft, Expected, Rng, Template};
 
 /// A G92 block: `G92` (on the first block of the mode) and its words.
@@ -31,7 +31,7 @@ fn g92(first: bool, words: &[String]) -> String {
 /// A start point A clear of the thread `l` (radius values, the side of
 /// `l`): `clear` beyond its crest at the start and at the end, on the Z of
 /// its start.
-fn start_point(ctx: &Ctx, l: &Line32, k: i64, clear: i64) -> (i64, i64) {
+fn start_point(ctx: &MachineStyle, l: &Line32, k: i64, clear: i64) -> (i64, i64) {
     let reach = if l.side > 0 { l.taper.max(0) } else { l.taper.min(0) };
     (ctx.xf() * (l.r0 + reach + l.side * (k + clear)), l.z0)
 }
@@ -40,8 +40,8 @@ fn start_point(ctx: &Ctx, l: &Line32, k: i64, clear: i64) -> (i64, i64) {
 /// `profile`, a G32-like thread line, the thread height k (0.6 × the lead)
 /// and a start point A 1-3 mm clear of it. The draws are made in this
 /// order, so the corpus stays what it was.
-fn refused_start(rng: &mut Rng, profile: ProfileName) -> (Ctx, Line32, i64, (i64, i64)) {
-    let ctx = Ctx::new(profile, rng);
+fn refused_start(rng: &mut Rng, profile: ProfileName) -> (MachineStyle, Line32, i64, (i64, i64)) {
+    let ctx = MachineStyle::new(profile, rng);
     let l = line32(rng, &ctx, false);
     let k = l.lead_inc * 6 / 10;
     let a = start_point(&ctx, &l, k, ctx.mm(rng.range(1000, 3000)));
@@ -52,7 +52,7 @@ fn refused_start(rng: &mut Rng, profile: ProfileName) -> (Ctx, Line32, i64, (i64
 /// thread `k` deep: the first names X, Z, R, the lead and `extra`; the
 /// others only X (the rest is modal, R-G92MODAL). The cut end X of pass
 /// n is the crest line's end less its depth.
-fn passes_lines(ctx: &Ctx, l: &Line32, k: i64, depths: &[i64], extra: &[String]) -> Vec<String> {
+fn passes_lines(ctx: &MachineStyle, l: &Line32, k: i64, depths: &[i64], extra: &[String]) -> Vec<String> {
     let xf = ctx.xf();
     let mut lines = Vec::new();
     for (n, depth) in depths.iter().enumerate() {
@@ -88,7 +88,7 @@ pub(super) const PASSES: Template = Template {
 };
 
 fn passes(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let taper = rng.chance(40);
     let l = line32(rng, &ctx, taper);
     let k = l.lead_inc * 6 / 10;
@@ -137,7 +137,7 @@ pub(super) const RUNOUT_980: Template = Template {
 };
 
 fn runout_980(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(ProfileName::Gsk980, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     ctx.params.insert("19", Param::Int(rng.range(1, 20)));
     let taper = rng.chance(30);
     let l = line32(rng, &ctx, taper);
@@ -178,7 +178,7 @@ pub(super) const RUNOUT_988: Template = Template {
 };
 
 fn runout_988(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     ctx.params.insert("5130", Param::Int(rng.range(1, 20)));
     ctx.params.insert("5131", Param::Int(rng.pick(&[0, 30, 45, 60])));
     let l = line32(rng, &ctx, false);
@@ -190,7 +190,7 @@ fn runout_988(rng: &mut Rng) -> Draft {
 /// only, K only and, with `neither`, none; the first straight after the
 /// head, each later one from a G00 back to A (which ends the mode and its
 /// J, K); then M30.
-fn run_out_variants(rng: &mut Rng, ctx: Ctx, l: &Line32, k: i64, neither: bool) -> Draft {
+fn run_out_variants(rng: &mut Rng, ctx: MachineStyle, l: &Line32, k: i64, neither: bool) -> Draft {
     let (j, kk) = (ctx.mm(rng.range(300, 1500)), ctx.mm(rng.range(500, 2500)));
     let a = start_point(&ctx, l, k, ctx.mm(rng.range(2000, 4000)));
     let mut lines = head(rng, &ctx, a);
@@ -224,7 +224,7 @@ pub(super) const MULTI_START: Template = Template {
 };
 
 fn multi_start(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let l = line32(rng, &ctx, false);
     let k = l.lead_inc * 6 / 10;
     let starts = rng.range(2, 4);
@@ -246,7 +246,7 @@ pub(super) const FACE: Template = Template {
 };
 
 fn face(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let xf = ctx.xf();
     let (lead, lead_inc) = ctx.lead(rng, None);
     let k = lead_inc * 6 / 10;
@@ -288,7 +288,7 @@ pub(super) const HIGH_SPEED: Template = Template {
 };
 
 fn high_speed(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     ctx.params.insert("5129", Param::Int(1));
     let taper = rng.chance(30);
     let l = line32(rng, &ctx, taper);
@@ -315,7 +315,7 @@ fn x_long(rng: &mut Rng) -> Draft {
 /// C on an external thread), so the run-out along Z towards A ends in the
 /// air, or, `rising`, the other slope, which R-XRUNOUT refuses.
 fn steep(rng: &mut Rng, rising: bool) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
+    let ctx = MachineStyle::new(gsk(rng), rng);
     let mut l = line32(rng, &ctx, false);
     l.len = ctx.mm(rng.range(2000, 5000));
     l.z1 = l.z0 + l.dir * l.len;
@@ -447,7 +447,7 @@ fn face_thread(rng: &mut Rng) -> Draft {
 
 /// The start of a 988TA P1 face thread: A at X `x0`, the face at `z_face`,
 /// A on the `dir` side of it.
-fn face_start(rng: &mut Rng, ctx: &Ctx) -> (String, i64, i64, i64, i64) {
+fn face_start(rng: &mut Rng, ctx: &MachineStyle) -> (String, i64, i64, i64, i64) {
     let (lead, lead_inc) = ctx.lead(rng, None);
     let k = lead_inc * 6 / 10;
     let x0 = ctx.mm(rng.range(30_000, 45_000));
@@ -466,7 +466,7 @@ pub(super) const NO_THREAD_LENGTH: Template = Template {
 };
 
 fn no_thread_length(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let (lead, k, x0, dir, za) = face_start(rng, &ctx);
     let a = (ctx.xf() * x0, za);
     let mut lines = head(rng, &ctx, a);
@@ -487,7 +487,7 @@ pub(super) const STEEP_FACE: Template = Template {
 };
 
 fn steep_face(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let (lead, k, x0, dir, za) = face_start(rng, &ctx);
     let xf = ctx.xf();
     let a = (xf * x0, za);

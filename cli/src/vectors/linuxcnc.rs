@@ -11,13 +11,13 @@ use cycleref::{CycleError, Field, IncrementSystem, InputUnit, Move, XMode};
 use cycleref_spec::reader::LinuxCncCall;
 use cycleref_spec::{ErrorKind, ProfileName};
 
-use super::machine::Ctx;
+use super::machine::MachineStyle;
 use super::{tag, Draft, Expected, Rng, Template};
 
 /// A linuxcnc machine (IS-C, the profile's own) and the program's unit and
 /// X mode: G20 or G21 and G7 or G8 are written in the program.
-fn ctx(rng: &mut Rng) -> Ctx {
-    let mut ctx = Ctx::new(ProfileName::LinuxCnc, rng);
+fn ctx(rng: &mut Rng) -> MachineStyle {
+    let mut ctx = MachineStyle::new(ProfileName::LinuxCnc, rng);
     ctx.increment = IncrementSystem::IsC;
     ctx.unit = if rng.chance(25) { InputUnit::Inch } else { InputUnit::Metric };
     ctx.g20 = ctx.unit == InputUnit::Inch;
@@ -47,7 +47,7 @@ struct Words {
 }
 
 /// A G76 of a few passes (at most 5 rough, so that a case stays small).
-fn words(ctx: &Ctx, rng: &mut Rng) -> Words {
+fn words(ctx: &MachineStyle, rng: &mut Rng) -> Words {
     let xf = ctx.xf();
     let internal = rng.chance(30);
     let towards_plus = rng.chance(25);
@@ -74,7 +74,7 @@ fn words(ctx: &Ctx, rng: &mut Rng) -> Words {
 
 /// The program of `w`, `g76` the G76 block as it stands (a refusal may
 /// change it).
-fn program(ctx: &Ctx, w: &Words, g76: &str, spindle: bool) -> Vec<String> {
+fn program(ctx: &MachineStyle, w: &Words, g76: &str, spindle: bool) -> Vec<String> {
     let mut lines = vec![format!(
         "G18 {} {}",
         if ctx.unit == InputUnit::Inch { "G20" } else { "G21" },
@@ -92,7 +92,7 @@ fn program(ctx: &Ctx, w: &Words, g76: &str, spindle: bool) -> Vec<String> {
 }
 
 /// The G76 block of `w`, leaving out the words of `omit`.
-fn g76_block(ctx: &Ctx, w: &Words, omit: &[char]) -> String {
+fn g76_block(ctx: &MachineStyle, w: &Words, omit: &[char]) -> String {
     let mut s = String::from("G76");
     let mut word = |letter: char, value: String| {
         if !omit.contains(&letter) {

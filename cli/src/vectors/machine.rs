@@ -1,11 +1,11 @@
 //! The machine a case runs on, and the way its program's words are written.
 //!
-//! A [`Ctx`] is drawn once per draft: profile, increment system, unit (and
+//! A [`MachineStyle`] is drawn once per draft: profile, increment system, unit (and
 //! whether the program selects inch by G20), X mode, FANUC's ways of
 //! writing lengths, the pass limit and any parameter overrides. The
-//! generators write every word through it ([`Ctx::num`], [`Ctx::pq`],
-//! [`Ctx::lead`], [`Ctx::q`]), so one template gives programs in every
-//! style the profiles accept; [`Ctx::settings`] writes the same machine as
+//! generators write every word through it ([`MachineStyle::num`], [`MachineStyle::pq`],
+//! [`MachineStyle::lead`], [`MachineStyle::q`]), so one template gives programs in every
+//! style the profiles accept; [`MachineStyle::settings`] writes the same machine as
 //! the case's parameter file and its `machine` object.
 
 use std::collections::BTreeMap;
@@ -31,7 +31,7 @@ pub(super) enum Param {
 
 /// Everything about the machine, and the style the program is written in.
 #[derive(Clone)]
-pub(super) struct Ctx {
+pub(super) struct MachineStyle {
     pub(super) profile: ProfileName,
     pub(super) increment: IncrementSystem,
     /// The unit of the program's values (the machine's, or G20).
@@ -46,9 +46,9 @@ pub(super) struct Ctx {
     pub(super) params: BTreeMap<&'static str, Param>,
 }
 
-impl Ctx {
+impl MachineStyle {
     /// A machine of `profile` with its other settings drawn from `rng`.
-    pub(super) fn new(profile: ProfileName, rng: &mut Rng) -> Ctx {
+    pub(super) fn new(profile: ProfileName, rng: &mut Rng) -> MachineStyle {
         let increment = if rng.chance(35) { IncrementSystem::IsC } else { IncrementSystem::IsB };
         let inch = rng.chance(25);
         let g20 = inch && rng.chance(50);
@@ -69,7 +69,7 @@ impl Ctx {
             }
             _ => {}
         }
-        Ctx {
+        MachineStyle {
             profile,
             increment,
             unit: if inch { InputUnit::Inch } else { InputUnit::Metric },
@@ -261,7 +261,7 @@ pub(super) fn decimal(v: i64, decimals: u32, point: bool) -> String {
 }
 
 /// Spindle start and positioning at `a`.
-pub(super) fn head(rng: &mut Rng, ctx: &Ctx, a: (i64, i64)) -> Vec<String> {
+pub(super) fn head(rng: &mut Rng, ctx: &MachineStyle, a: (i64, i64)) -> Vec<String> {
     let mut l = Vec::new();
     if ctx.g20 {
         l.push("G20".to_string());

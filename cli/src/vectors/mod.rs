@@ -23,7 +23,7 @@
 //!    an error kind the compiler checks), its tags and description, and the
 //!    generator.
 //! 3. **Draft.** The generator writes a `Draft`: the machine
-//!    (`machine::Ctx`, also the style the words are written in) and the
+//!    (`machine::MachineStyle`, also the style the words are written in) and the
 //!    program's lines, with what the variant it drew adds to the entry.
 //! 4. **Evaluation.** The program is read and every cycle expanded by both
 //!    the fixed-point engine and the exact reference model (`evaluate`);
@@ -57,7 +57,7 @@ mod linuxcnc;
 mod machine;
 mod refused;
 
-use machine::Ctx;
+use machine::MachineStyle;
 
 /// Schema of a case file.
 const CASE_SCHEMA: &str = "cycleref-vector/1";
@@ -261,7 +261,7 @@ struct Template {
 /// One case as a generator drafts it, before it is checked: the machine,
 /// the program, and what the variant drawn adds to its template's entry.
 struct Draft {
-    ctx: Ctx,
+    ctx: MachineStyle,
     lines: Vec<String>,
     /// The case's description, when the variant drawn has its own.
     description: Option<String>,
@@ -275,7 +275,7 @@ struct Draft {
 }
 
 impl Draft {
-    fn new(ctx: Ctx, lines: Vec<String>) -> Draft {
+    fn new(ctx: MachineStyle, lines: Vec<String>) -> Draft {
         Draft { ctx, lines, description: None, tags: Vec::new(), requires: &[], refusal: None }
     }
 

@@ -15,14 +15,14 @@ use cycleref_spec::{ErrorKind, ProfileName};
 use super::g32::{g32, line32};
 use super::g75::{corner_digits, g75_lines, g75_program, groove, peck_for, small, Groove};
 use super::g76::{g76_lines, g76_program, pmra, thread, Taper, Thread, G76};
-use super::machine::{any_profile, decimal, gsk, head, Ctx, Param};
+use super::machine::{any_profile, decimal, gsk, head, MachineStyle, Param};
 use super::{Draft, Expected, Refusal, Rng, Template};
 
 // ---- G76, G32 and the reader ----
 
 /// A usual one-G76 draft to break.
-fn base(profile: ProfileName, rng: &mut Rng) -> (Ctx, Thread, G76) {
-    let ctx = Ctx::new(profile, rng);
+fn base(profile: ProfileName, rng: &mut Rng) -> (MachineStyle, Thread, G76) {
+    let ctx = MachineStyle::new(profile, rng);
     let t = thread(rng, &ctx, Taper::Straight, (1, 3));
     let g = G76::usual(rng, &ctx);
     (ctx, t, g)
@@ -379,7 +379,7 @@ pub(super) const G32_NO_END: Template = Template {
 };
 
 fn g32_no_end(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let l = line32(rng, &ctx, false);
     let mut lines = head(rng, &ctx, (ctx.xf() * l.r0, l.z0));
     lines.push(format!("G32 {}", l.lead));
@@ -397,7 +397,7 @@ pub(super) const G32_ZERO_LEAD: Template = Template {
 };
 
 fn g32_zero_lead(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let l = line32(rng, &ctx, false);
     let mut lines = head(rng, &ctx, (ctx.xf() * l.r0, l.z0));
     let zero = rng.pick(&["F0", "F0.0", "I0"]);
@@ -416,7 +416,7 @@ pub(super) const TOO_MANY: Template = Template {
 };
 
 fn too_many(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(any_profile(rng), rng);
+    let mut ctx = MachineStyle::new(any_profile(rng), rng);
     let limit = rng.range(2, 6);
     ctx.pass_limit = u32::try_from(limit).unwrap_or(2);
     let mut t = thread(rng, &ctx, Taper::Straight, (limit + 3, limit + 12));
@@ -474,7 +474,7 @@ pub(super) const LEAD_IN_X: Template = Template {
 };
 
 fn lead_in_x(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(ProfileName::Gsk988, rng);
+    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
     let t = thread(rng, &ctx, Taper::XLong, (1, 3));
     let mut g = G76::usual(rng, &ctx);
     g.extra1.push(format!("E{}", ctx.num(ctx.mm(rng.range(300, 2000)))));
@@ -492,7 +492,7 @@ pub(super) const G32_NO_MOTION: Template = Template {
 };
 
 fn g32_no_motion(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let l = line32(rng, &ctx, false);
     let x0 = ctx.xf() * l.r0;
     let mut lines = head(rng, &ctx, (x0, l.z0));
@@ -515,7 +515,7 @@ pub(super) const G32_RUN_OUT_LONG: Template = Template {
 };
 
 fn g32_run_out_long(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(gsk(rng), rng);
+    let ctx = MachineStyle::new(gsk(rng), rng);
     let taper = rng.chance(30);
     let l = line32(rng, &ctx, taper);
     let xf = ctx.xf();
@@ -607,7 +607,7 @@ pub(super) const PASS_OUT_OF_RANGE: Template = Template {
 };
 
 fn pass_out_of_range(rng: &mut Rng) -> Draft {
-    let ctx = Ctx::new(any_profile(rng), rng);
+    let ctx = MachineStyle::new(any_profile(rng), rng);
     let xf = ctx.xf();
     let max = cycleref::units::MAX_LENGTH;
     // Internal steep taper: X of C = X(D) + xf·i lies beyond the range table.
@@ -650,7 +650,7 @@ pub(super) const UNIT_CHANGE: Template = Template {
 };
 
 fn unit_change(rng: &mut Rng) -> Draft {
-    let mut ctx = Ctx::new(any_profile(rng), rng);
+    let mut ctx = MachineStyle::new(any_profile(rng), rng);
     ctx.g20 = false;
     let l = line32(rng, &ctx, false);
     let mut lines =
@@ -709,8 +709,8 @@ fn misc(rng: &mut Rng) -> Draft {
 
 /// A valid right-angled G75.1 draft to break: A and B left out (90°), a
 /// pointed tool, one to three pecks and a few plunges, any J.
-fn g75_base(rng: &mut Rng) -> (Ctx, Groove) {
-    let ctx = Ctx::new(ProfileName::Gsk980, rng);
+fn g75_base(rng: &mut Rng) -> (MachineStyle, Groove) {
+    let ctx = MachineStyle::new(ProfileName::Gsk980, rng);
     let (sx, sz) = (rng.sign(), rng.sign());
     let h_um = rng.range(20, 60) * 100;
     let d_um = rng.range(30, 80) * 100;
@@ -727,7 +727,7 @@ fn g75_base(rng: &mut Rng) -> (Ctx, Groove) {
 }
 
 /// The radial depth of `g` in radius increments, and the bottom width.
-fn g75_size(ctx: &Ctx, g: &Groove) -> (i64, i64) {
+fn g75_size(ctx: &MachineStyle, g: &Groove) -> (i64, i64) {
     (g.depth.abs() / ctx.xf(), g.width.abs())
 }
 
