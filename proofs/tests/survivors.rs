@@ -617,6 +617,12 @@ fn the_other_contracts_refuse_a_wrong_answer_at_each_bound() {
 /// MAX_PECKS = 10^6: `TooManyPecks`, and the layer loop never runs. One
 /// layer less, 10^6 pecks, is admitted, and the loop counts all 10^6
 /// layers.
+///
+/// Also 77:66 (`(M − 1) * Δv` → `/`, the top of the last layer in the
+/// bound): Y = 10^6 in two layers of Δv = 500 000 has 500 000 + 500 000 =
+/// 10^6 pecks, admitted, and both layers are counted; the mutant's last
+/// layer starts at (2 − 1)/500 000 = 0, so its bound is 500 000 + 10^6,
+/// and the groove is refused.
 #[test]
 fn the_peck_count_refuses_too_many_layers_before_counting_them() {
     use cycleref::g75::MAX_PECKS;
@@ -635,6 +641,7 @@ fn the_peck_count_refuses_too_many_layers_before_counting_them() {
         ("10^6 + 1 layers of 1 peck", (1_000_001, 1), false, 0),
         ("500 001 layers of 2 pecks", (1_000_002, 2), false, 0),
         ("10^6 layers of 1 peck", (1_000_000, 1), true, 1_000_000),
+        ("2 layers of 500 000 pecks", (1_000_000, 500_000), true, 2),
     ];
     for (name, (depth, layer), admitted, counted) in cases {
         let domain = GrooveDomain::layers_only((depth, depth), (1, 1), (layer, layer));
