@@ -356,31 +356,10 @@ fn extra(g: &Group) -> Divergence {
 
 #[cfg(test)]
 mod tests {
-    use cycleref::{InputUnit, Lead, LeadWord, Point, StartAngle};
+    use cycleref::Point;
 
     use super::*;
-    use crate::check::Context;
-
-    const MM: Units = Units { system: cycleref::IncrementSystem::IsB, unit: InputUnit::Metric };
-
-    fn step(kind: Kind, x: i64, z: i64, line: usize) -> Step {
-        let lead = (kind == Kind::Thread).then_some(Lead { word: LeadWord::F, mantissa: 2, scale: 0 });
-        Step {
-            kind,
-            from: None,
-            to: Point::new(x, z),
-            centre: None,
-            lead,
-            angle: StartAngle::ZERO,
-            sync: kind == Kind::Thread,
-            context: Context::Source { line },
-        }
-    }
-
-    /// A pass at depth `x`: a rapid to its start and one thread move.
-    fn pass(x: i64) -> Group {
-        Group { rapids: vec![step(Kind::Rapid, x, 10, 1)], cuts: vec![step(Kind::Thread, x, -30, 2)] }
-    }
+    use crate::check::test_steps::{pass, step, MM};
 
     fn whats(d: &[Divergence]) -> Vec<&'static str> {
         d.iter().map(|d| d.what).collect()

@@ -137,3 +137,103 @@ pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: &[R
 pub(super) fn only_kinds(d: &[Divergence]) -> bool {
     d.iter().all(|d| d.what == "kind of move")
 }
+
+#[cfg(test)]
+mod tests {
+    use cycleref::{Lead, LeadWord, Point, StartAngle};
+
+    use super::*;
+    use crate::check::test_steps::{step, MM};
+
+    fn whats(d: &[Divergence]) -> Vec<&'static str> {
+        d.iter().map(|d| d.what).collect()
+    }
+
+    /// A group of the given rapids and cuts.
+    fn group(rapids: Vec<Step>, cuts: Vec<Step>) -> Group {
+        Group { rapids, cuts }
+    }
+
+    /// A rapid to (x, z) from (fx, fz).
+    fn rapid(from: (i64, i64), to: (i64, i64)) -> Step {
+        Step { from: Some(Point::new(from.0, from.1)), ..step(Kind::Rapid, to.0, to.1, 1) }
+    }
+
+    #[test]
+    fn a_diagonal_rapid_split_outside_the_regions_agrees() {
+        // Ours: (100, 10) to (90, 0) in one rapid. Theirs: along X to the
+        // corner (90, 10), then along Z to (90, 0), or along Z first to the
+        // corner (100, 0).
+        let ours = group(vec![rapid((100, 10), (90, 0))], vec![]);
+        let x_first = group(vec![rapid((100, 10), (90, 10)), rapid((90, 10), (90, 0))], vec![]);
+        let z_first = group(vec![rapid((100, 10), (100, 0)), rapid((100, 0), (90, 0))], vec![]);
+        assert!(compare(&ours, &x_first, 0, MM, &[]).is_empty());
+        assert!(compare(&ours, &z_first, 0, MM, &[]).is_empty());
+        // A region X 85..95, Z 2..8 (open): the X-first split's second leg
+        // runs down X 90 through it (R-CHECKSPLIT); the Z-first split's legs
+        // (X 100, then Z 0) pass it by.
+        let cut = Region::spanning(&[(85, 2), (95, 8)]).into_iter().collect::<Vec<_>>();
+        assert_eq!(whats(&compare(&ours, &x_first, 0, MM, &cut)), ["rapid through the work"]);
+        assert!(compare(&ours, &z_first, 0, MM, &cut).is_empty());
+        // A rapid to another point, and one more rapid than ours.
+        let elsewhere = group(vec![rapid((100, 10), (90, 1))], vec![]);
+        assert_eq!(whats(&compare(&ours, &elsewhere, 0, MM, &[])), ["rapid point"]);
+        assert!(compare(&ours, &elsewhere, 1, MM, &[]).is_empty(), "within a tolerance of 1");
+        let more = group(vec![rapid((100, 10), (90, 0)), rapid((90, 0), (95, 0))], vec![]);
+        assert_eq!(whats(&compare(&ours, &more, 0, MM, &[])), ["extra rapid"]);
+    }
+
+    #[test]
+    fn leads_are_compared_as_rates() {
+        let thread = |lead: Lead| Step { lead: Some(lead), ..step(Kind::Thread, 90, -30, 2) };
+        let lead = |word, mantissa, scale| Lead { word, mantissa, scale };
+        let ours = group(vec![], vec![thread(lead(LeadWord::F, 254, 2))]);
+        // F2.54 = F2.540 = I10 (25.4 mm / 10 threads per inch): the same
+        // rate, 2540 increments a turn.
+        for same in [lead(LeadWord::F, 2540, 3), lead(LeadWord::I, 10, 0)] {
+            assert!(compare(&ours, &group(vec![], vec![thread(same)]), 0, MM, &[]).is_empty(), "{same:?}");
+        }
+        // F2.5 and I11 (2309.09… increments) are other rates.
+        for other in [lead(LeadWord::F, 25, 1), lead(LeadWord::I, 11, 0)] {
+            let d = compare(&ours, &group(vec![], vec![thread(other)]), 0, MM, &[]);
+            assert_eq!(whats(&d), ["lead"], "{other:?}");
+        }
+    }
+
+    #[test]
+    fn synchronisation_and_start_angle_are_exact() {
+        let ours = group(vec![], vec![step(Kind::Thread, 90, -30, 2)]);
+        let unsynchronised = Step { sync: false, ..step(Kind::Thread, 90, -30, 2) };
+        let d = compare(&ours, &group(vec![], vec![unsynchronised]), 0, MM, &[]);
+        assert_eq!(whats(&d), ["synchronisation"]);
+        // 180° for 0°: a start angle, whatever the tolerance.
+        let half_turn = Step { angle: StartAngle { num: 180_000, den: 1 }, ..step(Kind::Thread, 90, -30, 2) };
+        let d = compare(&ours, &group(vec![], vec![half_turn]), 1_000, MM, &[]);
+        assert_eq!(whats(&d), ["start angle"]);
+    }
+
+    #[test]
+    fn kinds_arcs_and_counts_of_moves() {
+        // A rapid written for a feed: a kind of move, and nothing else.
+        let ours = group(vec![], vec![step(Kind::Feed, 90, -30, 2)]);
+        let d = compare(&ours, &group(vec![], vec![step(Kind::Rapid, 90, -30, 2)]), 0, MM, &[]);
+        assert_eq!(whats(&d), ["kind of move"]);
+        assert!(only_kinds(&d));
+        // An arc the other way round with its centre 2 off: the direction
+        // and the centre (beyond a tolerance of 1, not of 2).
+        let arc = |kind, cz| Step { centre: Some(Point::new(80, cz)), ..step(kind, 90, -30, 2) };
+        let ours = group(vec![], vec![arc(Kind::ArcCw, -20)]);
+        let d = compare(&ours, &group(vec![], vec![arc(Kind::ArcCcw, -22)]), 1, MM, &[]);
+        assert_eq!(whats(&d), ["arc direction", "arc centre"]);
+        assert!(!only_kinds(&d));
+        assert_eq!(
+            whats(&compare(&ours, &group(vec![], vec![arc(Kind::ArcCcw, -22)]), 2, MM, &[])),
+            ["arc direction"]
+        );
+        // One move short, and one too many.
+        let two = group(vec![], vec![step(Kind::Feed, 90, -30, 2), step(Kind::Feed, 100, -30, 3)]);
+        let one = group(vec![], vec![step(Kind::Feed, 90, -30, 2)]);
+        assert_eq!(whats(&compare(&two, &one, 0, MM, &[])), ["missing move"]);
+        assert_eq!(whats(&compare(&one, &two, 0, MM, &[])), ["extra move"]);
+    }
+}

@@ -49,6 +49,8 @@ mod align;
 mod compare;
 mod ours;
 mod report;
+#[cfg(test)]
+mod test_steps;
 mod trace;
 
 use std::path::Path;

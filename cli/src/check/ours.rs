@@ -445,7 +445,7 @@ pub(super) struct Region {
 }
 
 impl Region {
-    fn spanning(points: &[(i128, i128)]) -> Option<Region> {
+    pub(super) fn spanning(points: &[(i128, i128)]) -> Option<Region> {
         let (&(x0, z0), rest) = points.split_first()?;
         let mut r = Region { x_lo: x0, x_hi: x0, z_lo: z0, z_hi: z0 };
         for &(x, z) in rest {
