@@ -773,6 +773,25 @@ fn a_dividend_as_long_as_its_divisor_is_divided() {
     assert_eq!(ulps(u64::MAX).div(&Interval::int(5)), ulps(3_689_348_814_741_910_323));
 }
 
+/// `engine/real.rs` 1409:28 (`lo < hi` → `lo > hi` in `integer_root`) and
+/// 1467:15 (`n == 1 || a == b` → `&&` in `power`), found by a sampled
+/// run: `power(n, a, b)` = n^(a/b) is an exact point when it is an
+/// integer (LinuxCNC's depth law J·n^(1/R), R-LCNC-EXACT: an exact depth
+/// is what `lcnc_termination` compares with K). With the first mutant no
+/// root is ever found, with the second a ratio that reduces to 1 is an
+/// exact root only below 2^32; both leave the series' enclosure, a narrow
+/// interval but not a point. By hand: 8^(2/3) = 2² = 4, 9^(1/2) = 3,
+/// 1024^(3/10) = 2³ = 8, 2^62^(1/2) = 2^31, and (2^40)^(3/3) = 2^40.
+#[test]
+fn powers_that_are_integers_are_exact() {
+    use cycleref::engine::real::{power, Interval, FAST};
+    let cases =
+        [(8, 2, 3, 4), (9, 1, 2, 3), (1024, 3, 10, 8), (1 << 62, 1, 2, 1 << 31), (1 << 40, 3, 3, 1 << 40)];
+    for (n, a, b, exact) in cases {
+        assert_eq!(power::<FAST>(n, a, b), Interval::int(exact), "{n}^({a}/{b})");
+    }
+}
+
 /// `engine/g75/roughing.rs` 89:34 (`m == 1` → `m != 1`) and 91:21
 /// (`m == count` → `m != count`) in `check_peck_count`: each layer's
 /// plunges are counted over its own range, A_m1 to A_mf; the first and
