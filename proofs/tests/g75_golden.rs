@@ -20,6 +20,9 @@ fn machine(increment: cycleref::IncrementSystem) -> Machine {
 }
 
 /// Moves as `G01 X28.000 Z-0.200 peck 1.1`.
+///
+/// Twins: `impl/src/engine/g75/tests.rs`, `render` (in increments), and
+/// `spec/tests/golden.rs`, `render` (the G76/G32 lines, without roles).
 fn render(moves: &[Move], decimals: u32) -> Vec<String> {
     let f = |v: i64| cycleref::units::Length { increments: v, decimals }.to_string();
     moves

@@ -17,6 +17,9 @@ fn example(name: &str) -> String {
 }
 
 /// Moves as compact NC-like strings: `G00 X64.400 Z8.961`, `G32 …`.
+///
+/// Twin: `proofs/tests/g75_golden.rs`, `render` (G75.1 lines, with each
+/// move's role).
 fn render(moves: &[Move], decimals: u32) -> Vec<String> {
     let f = |v: i64| cycleref::units::Length { increments: v, decimals }.to_string();
     moves

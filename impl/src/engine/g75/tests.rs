@@ -57,6 +57,11 @@ fn square() -> G75Cycle {
     }
 }
 
+/// Moves as `G01 X28000 Z-200 peck 1.1` (increments), for the golden
+/// lists below.
+///
+/// Twin: `proofs/tests/g75_golden.rs`, `render` (the same lines in
+/// millimetres; `impl` cannot use a test helper of `proofs`).
 fn render(moves: &[Move]) -> Vec<String> {
     moves
         .iter()
