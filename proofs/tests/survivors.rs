@@ -771,6 +771,36 @@ fn a_dividend_as_long_as_its_divisor_is_divided() {
     let ulps = |u: u64| Interval::<FAST>::point(Fixed::from_ulps(u));
     assert_eq!(ulps(9).div(&Interval::int(3)), ulps(3));
     assert_eq!(ulps(u64::MAX).div(&Interval::int(5)), ulps(3_689_348_814_741_910_323));
+    // A dividend shorter than the divisor (`engine/real.rs` 378:5,
+    // `limbs_copy` → `()`, from the second sample: the remainder is then
+    // left 0 and the quotient taken as exact): 1 ulp / 2^64 is below one
+    // ulp but not 0, so its enclosure is [0, 1 ulp], not the point 0.
+    let tiny = ulps(1).div(&Interval::int(1 << 64));
+    assert_eq!(tiny, Interval::new(Fixed::zero(), Fixed::from_ulps(1)));
+}
+
+/// `engine/real.rs` 309:29 (`r̂ = top % v_top` → `top / v_top` in
+/// `limbs_divmod`, found by the second sample): Knuth's step D3 corrects
+/// the estimated quotient digit q̂ with the remainder r̂; without it q̂
+/// can stay two too large, and step D6 adds back only once. At the 128-bit
+/// precision, `Interval::div` divides A·2^128 by B; with A =
+/// 0x7fffffffffffffff_4000000000000000 + 0x4000000000000001 ulps and B =
+/// 0x4000000000000001_ffffffffffffffff (the limbs found by a throwaway
+/// search over a restatement of the algorithm in Python) the exact
+/// quotient, floor(A·2^128 / B) computed with Python's integers, is
+/// 680 564 733 841 876 926 576 261 077 463 054 942 367 ulps, limbs
+/// (least significant first) 0x9f, 0xffffffffffffffed, 1, 0, with a
+/// remainder: the enclosure is that and one ulp more.
+#[test]
+fn a_quotient_digit_estimated_two_too_large_is_corrected() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let a = Fixed::<FAST>::from_int(0x7fff_ffff_ffff_ffff_4000_0000_0000_0000)
+        .checked_add(&Fixed::from_ulps(0x4000_0000_0000_0001))
+        .expect("below 2^127");
+    let b = Fixed::<FAST>::from_int(0x4000_0000_0000_0001_ffff_ffff_ffff_ffff);
+    let q = Interval::point(a).div(&Interval::point(b));
+    assert_eq!(q.lower().limbs(), &[0x9f, 0xffff_ffff_ffff_ffed, 1, 0]);
+    assert_eq!(q.upper().limbs(), &[0xa0, 0xffff_ffff_ffff_ffed, 1, 0]);
 }
 
 /// `engine/real.rs` 1409:28 (`lo < hi` → `lo > hi` in `integer_root`) and
