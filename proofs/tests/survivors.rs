@@ -803,6 +803,21 @@ fn a_quotient_digit_estimated_two_too_large_is_corrected() {
     assert_eq!(q.upper().limbs(), &[0xa0, 0xffff_ffff_ffff_ffed, 1, 0]);
 }
 
+/// `engine/real.rs` 834:25 (`nonneg(self) && nonneg(o)` → `||` in
+/// `Interval::mul`, from the second sample): only a product of two
+/// non-negative intervals is [lo·lo, hi·hi]; with one negative factor the
+/// ends come from other pairs. By hand: [1, 2]·[−3, −1] = [−6, −1] (the
+/// mutant gives [−3, −2], which holds neither 2·(−3) nor 1·(−1)), and
+/// [−3, −1]·[1, 2] the same; [−1, 2]·[3, 4] = [−4, 8].
+#[test]
+fn interval_products_take_the_ends_of_every_sign() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
+    assert_eq!(iv(1, 2).mul(&iv(-3, -1)), iv(-6, -1));
+    assert_eq!(iv(-3, -1).mul(&iv(1, 2)), iv(-6, -1));
+    assert_eq!(iv(-1, 2).mul(&iv(3, 4)), iv(-4, 8));
+}
+
 /// `engine/real.rs` 1409:28 (`lo < hi` → `lo > hi` in `integer_root`) and
 /// 1467:15 (`n == 1 || a == b` → `&&` in `power`), found by a sampled
 /// run: `power(n, a, b)` = n^(a/b) is an exact point when it is an
