@@ -38,6 +38,34 @@ fn g75_refused_by_both(c: &cycleref::G75Cycle, e: cycleref::CycleError, what: &s
     assert_eq!(cycleref::expand_g75(c).map(|_| ()), Err(e), "{what}: the engine");
 }
 
+/// R-G75RANGE (and the G76/G92 range checks): the first pass coordinate
+/// beyond ±999 999 999, `value` in IS-B metric increments.
+fn beyond_the_range(value: i64) -> cycleref::CycleError {
+    use cycleref::{CycleError, Field, Length, Units};
+    CycleError::OutOfRange { field: Field::PassCoordinate, value: Length::new(value, Units::IS_B_METRIC) }
+}
+
+/// The first plunge of a one-layer `square_groove()` with S at X100.000
+/// and a 1.000 tool (`c`), as the reference makes it and the engine too:
+/// the approach to A_11 at Z `a11`, the pecks to X99.000 and X98.000, the
+/// retract, and the step to the second plunge at Z `step`.
+fn assert_first_plunge(c: &cycleref::G75Cycle, a11: i64, step: i64) {
+    use cycleref::{Motion, Plunge, Point, Role};
+    let moves = g75_reference_moves(c);
+    let first: Vec<_> = moves.iter().take(5).map(|m| (m.motion, m.to, m.role)).collect();
+    let plunge = |number: u32| Plunge { layer: 1, number };
+    assert_eq!(
+        first,
+        [
+            (Motion::Rapid, Point::new(100_000, a11), Role::Approach),
+            (Motion::Feed, Point::new(99_000, a11), Role::Peck(plunge(1))),
+            (Motion::Feed, Point::new(98_000, a11), Role::Peck(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, a11), Role::PlungeRetract(plunge(1))),
+            (Motion::Rapid, Point::new(100_000, step), Role::Step(plunge(2))),
+        ]
+    );
+}
+
 /// A right-angle G75.1 rough groove (IS-B, diameter): S at X100.000 Z0
 /// from X120.000 Z5.000, H−2.000, D3.000, Δi = Δk = 1.000, a pointed tool,
 /// one layer, no allowances, no retract, sharp corners. The G75.1 tests
@@ -410,7 +438,7 @@ fn a_start_between_the_crest_at_d_and_b_is_inside_the_thread() {
 fn g92_b_at_the_end_of_the_range() {
     let _serial = serial();
     use cycleref::lead::{Lead, LeadWord};
-    use cycleref::{CycleError, Field, G92Cycle, Length, Point, RunOut, StartAngle, Units, XMode};
+    use cycleref::{G92Cycle, Point, RunOut, StartAngle, Units, XMode};
     let cycle = |end_x: i64| G92Cycle {
         units: Units::IS_B_METRIC,
         x_mode: XMode::Diameter,
@@ -426,10 +454,7 @@ fn g92_b_at_the_end_of_the_range() {
     let moves: Vec<_> = cycleref::expand_g92(&cycle(999_997_999)).expect("B at the range's end").collect();
     assert_eq!(moves.first().map(|m| m.to), Some(Point::new(999_999_999, 0)), "the approach to B");
     assert_eq!(Ok(moves), cycleref_spec::g92::expand(&cycle(999_997_999)));
-    let e = CycleError::OutOfRange {
-        field: Field::PassCoordinate,
-        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
-    };
+    let e = beyond_the_range(1_000_000_000);
     assert_eq!(cycleref::expand_g92(&cycle(999_998_000)).map(|_| ()), Err(e));
     assert_eq!(cycleref_spec::g92::expand(&cycle(999_998_000)).map(|_| ()), Err(e));
 }
@@ -447,7 +472,7 @@ fn g92_b_at_the_end_of_the_range() {
 #[test]
 fn a_cycle_without_passes_checks_no_lead_in() {
     let _serial = serial();
-    use cycleref::{CycleError, Field, Length, Point, RunOut, Units};
+    use cycleref::{Point, RunOut};
     let c = |finishing_passes: u32| cycleref::G76Cycle {
         finishing_allowance: 1_000,
         finishing_passes,
@@ -457,10 +482,7 @@ fn a_cycle_without_passes_checks_no_lead_in() {
     let moves: Vec<_> = cycleref::expand_g76(&c(0)).expect("nothing to cut, nothing refused").collect();
     assert!(moves.is_empty());
     assert_eq!(cycleref_spec::g76::expand(&c(0)), Ok(moves));
-    let e = CycleError::OutOfRange {
-        field: Field::PassCoordinate,
-        value: Length::new(1_000_000_000, Units::IS_B_METRIC),
-    };
+    let e = beyond_the_range(1_000_000_000);
     g76_refused_by_both(&c(1), e);
 }
 
@@ -941,7 +963,7 @@ fn each_layer_is_counted_over_its_own_plunges() {
 /// and checks them in order) reports the same.
 #[test]
 fn the_first_peck_beyond_the_range_is_reported() {
-    use cycleref::{CycleError, Field, G75Cycle, Length, Point, Units};
+    use cycleref::{G75Cycle, Point};
     let _serial = serial();
     let cycle = |(x, z): (i64, i64), peck: i64, layer: Option<i64>| G75Cycle {
         from: Point::new(999_990_000, 5_000),
@@ -962,10 +984,7 @@ fn the_first_peck_beyond_the_range_is_reported() {
         ("layer 3 of 4, S at the Z limit", (999_999_974, 999_999_999), 4, Some(10), 1_000_000_002),
     ];
     for (name, s, peck, layer, beyond) in cases {
-        let beyond = CycleError::OutOfRange {
-            field: Field::PassCoordinate,
-            value: Length::new(beyond, Units::IS_B_METRIC),
-        };
+        let beyond = beyond_the_range(beyond);
         g75_refused_by_both(&cycle(s, peck, layer), beyond, name);
     }
 }
@@ -996,7 +1015,7 @@ fn the_first_peck_beyond_the_range_is_reported() {
 ///   hand: a later move, at u = 2000, is reported, Z 1 000 001 499).
 #[test]
 fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
-    use cycleref::{CycleError, Field, G75Cycle, Length, Motion, Plunge, Point, Role, Units};
+    use cycleref::{G75Cycle, Point};
     let _serial = serial();
     let cycle = |z: i64| G75Cycle {
         from: Point::new(110_000, z),
@@ -1004,27 +1023,9 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
         tool_width: Some(1_000),
         ..square_groove()
     };
-    let c = cycle(-1_000);
-    let reference = cycleref_spec::g75::expand(&c).expect("the reference expands it");
-    let first: Vec<_> = reference.iter().take(5).map(|m| (m.motion, m.to, m.role)).collect();
-    let plunge = |number: u32| Plunge { layer: 1, number };
-    assert_eq!(
-        first,
-        [
-            (Motion::Rapid, Point::new(100_000, -1_000), Role::Approach),
-            (Motion::Feed, Point::new(99_000, -1_000), Role::Peck(plunge(1))),
-            (Motion::Feed, Point::new(98_000, -1_000), Role::Peck(plunge(1))),
-            (Motion::Rapid, Point::new(100_000, -1_000), Role::PlungeRetract(plunge(1))),
-            (Motion::Rapid, Point::new(100_000, 0), Role::Step(plunge(2))),
-        ]
-    );
-    let engine: Vec<_> = cycleref::expand_g75(&c).expect("S at Z−1.000 is valid").collect();
-    assert_eq!(engine, reference);
+    assert_first_plunge(&cycle(-1_000), -1_000, 0);
     let c = cycle(999_999_499);
-    let beyond = CycleError::OutOfRange {
-        field: Field::PassCoordinate,
-        value: Length::new(1_000_000_499, Units::IS_B_METRIC),
-    };
+    let beyond = beyond_the_range(1_000_000_499);
     g75_refused_by_both(&c, beyond, "S beyond");
 }
 
@@ -1048,7 +1049,7 @@ fn a_step_beyond_the_z_range_is_reported_wherever_s_is() {
 ///   1 000 001 899.
 #[test]
 fn a_step_beyond_the_z_range_is_counted_from_the_first_plunge() {
-    use cycleref::{CycleError, Field, G75Cycle, Length, Motion, Plunge, Point, Role, Units};
+    use cycleref::{G75Cycle, Point};
     let _serial = serial();
     let cycle = |z: i64| G75Cycle {
         from: Point::new(110_000, z),
@@ -1058,24 +1059,9 @@ fn a_step_beyond_the_z_range_is_counted_from_the_first_plunge() {
         tool_width: Some(1_000),
         ..square_groove()
     };
-    let moves = g75_reference_moves(&cycle(-3_000));
-    let plunge = |number: u32| Plunge { layer: 1, number };
-    let first: Vec<_> = moves.iter().take(5).map(|m| (m.motion, m.to, m.role)).collect();
-    assert_eq!(
-        first,
-        [
-            (Motion::Rapid, Point::new(100_000, -2_500), Role::Approach),
-            (Motion::Feed, Point::new(99_000, -2_500), Role::Peck(plunge(1))),
-            (Motion::Feed, Point::new(98_000, -2_500), Role::Peck(plunge(1))),
-            (Motion::Rapid, Point::new(100_000, -2_500), Role::PlungeRetract(plunge(1))),
-            (Motion::Rapid, Point::new(100_000, -1_500), Role::Step(plunge(2))),
-        ]
-    );
+    assert_first_plunge(&cycle(-3_000), -2_500, -1_500);
     let c = cycle(999_999_399);
-    let beyond = CycleError::OutOfRange {
-        field: Field::PassCoordinate,
-        value: Length::new(1_000_000_899, Units::IS_B_METRIC),
-    };
+    let beyond = beyond_the_range(1_000_000_899);
     g75_refused_by_both(&c, beyond, "S beyond");
 }
 
