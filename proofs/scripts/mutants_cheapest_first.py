@@ -4,10 +4,12 @@
 cargo-mutants runs the test binaries in name order, so with the G75.1
 harness binaries every mutant waits about 110 s for `g75_exact` before
 `survivors` (under a second) runs. This script tests the same mutants with
-the same binaries, in the order given, and stops at the first binary that
-fails, as `cargo test` does. The verdicts are cargo-mutants' own:
+the same binaries, in the order given, building each just before it
+runs, and stops at the first binary that fails, as `cargo test` does. The verdicts are cargo-mutants' own:
 
-- UNVIABLE: the mutated tree does not build;
+- UNVIABLE: the mutated tree does not build (a mutation inside a
+  function body builds for every binary or for none, so the first
+  binary's build decides it);
 - CAUGHT: a binary fails (the failing tests are listed);
 - TIMEOUT: a binary runs past its limit (180 s for the binaries that take
   seconds, the given limit for the others); a hang, or a slow test;
@@ -63,14 +65,14 @@ with open(out, 'a') as log:
             log.write(f"PATCHFAIL\t{name}\n")
             log.flush()
             continue
-        tests = ' '.join('--test=' + b for b in BINS)
-        status, _ = run(f'cargo test -p cycleref-proofs {tests} --no-run', 1800)
-        if status != 0:
-            log.write(f"UNVIABLE\t{name}\t\t{int(time.time() - start)}s\n")
-            log.flush()
-            continue
         verdict, by = 'MISSED', ''
         for b in BINS:
+            # Each binary is built just before it runs: a mutant caught by
+            # the first binary never waits for the others to build.
+            status, _ = run(f'cargo test -p cycleref-proofs --test {b} --no-run', 1800)
+            if status != 0:
+                verdict, by = 'UNVIABLE', b
+                break
             status, output = run(f'cargo test -q -p cycleref-proofs --test {b}', FAST.get(b, limit))
             if status is None:
                 verdict, by = 'TIMEOUT', b
