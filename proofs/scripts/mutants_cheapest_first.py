@@ -58,6 +58,9 @@ with open(out, 'a') as log:
     for name in names:
         start = time.time()
         subprocess.run(['git', 'checkout', '-q', '.'], cwd=wt)
+        # A failing proptest leaves its seed in a regressions file, which
+        # would be replayed against every later mutant: not the tree's test.
+        subprocess.run(['git', 'clean', '-fq', '--', '*.proptest-regressions'], cwd=wt)
         m = mutants[name]
         patch = subprocess.run(['patch', '-s', '-p0', m['file']], input=m['diff'], text=True, cwd=wt,
                                capture_output=True)
