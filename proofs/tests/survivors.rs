@@ -1269,3 +1269,57 @@ fn chords_meeting_the_flanks_at_the_layer_top_add_no_vertex() {
         ]
     );
 }
+
+/// R-G32LONG: a G32 move whose X displacement as a radius equals its Z
+/// displacement has X as its long axis (seed 002, "反之，X 轴为长轴"), so its
+/// run-out starts K before the end along X and ends J along Z.
+///
+/// By hand, diameter X, IS-B metric: from X20.000 Z0 to X40.000 Z-10.000,
+/// ΔX = 20.000 (10.000 as a radius) and ΔZ = -10.000. With K 3.000 the
+/// run-out starts at X 40.000 − 2·3.000 = 34.000, on the line at Z 0 +
+/// (−10.000)·(34.000 − 20.000)/20.000 = −7.000, and ends at Z −10.000 +
+/// J 2.000 = −8.000, X 40.000. Taking Z as the long axis at the tie (the
+/// `>` → `>=` mutant of `long_axis`) would end it at X 40.000 + 2·2.000,
+/// Z −10.000.
+#[test]
+fn a_g32_move_at_45_degrees_has_x_as_its_long_axis() {
+    let _serial = serial();
+    use cycleref::lead::{Lead, LeadWord};
+    use cycleref::{G32Block, G32RunOut, Motion, Point, Role, StartAngle, Units, XMode};
+    use cycleref_spec::g76::LongAxis;
+
+    let block = G32Block {
+        units: Units::IS_B_METRIC,
+        x_mode: XMode::Diameter,
+        start: Point::new(20_000, 0),
+        end: Point::new(40_000, -10_000),
+        lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
+        run_out: G32RunOut::Amounts { short: 2_000, long: 3_000 },
+        start_angle: StartAngle::ZERO,
+        sync: true,
+    };
+    assert_eq!(cycleref_spec::g32::long_axis(&block), LongAxis::X);
+    let reference = cycleref_spec::g32::expand(&block).expect("the reference expands it");
+    let engine: Vec<_> = cycleref::expand_g32(&block).expect("the engine expands it").collect();
+    assert_eq!(engine, reference);
+    let path: Vec<_> = reference.iter().map(|m| (m.to, m.role)).collect();
+    assert_eq!(path, [(Point::new(34_000, -7_000), Role::Cut), (Point::new(40_000, -8_000), Role::RunOut)]);
+    assert!(reference.iter().all(|m| matches!(m.motion, Motion::Thread { .. })));
+}
+
+/// `engine/real.rs` 196:23 (`k = i + b.len()` → `i * b.len()` in
+/// `limbs_mul`): the carry out of row `i` of a schoolbook product belongs
+/// in limb `i + len(b)`, just above the row. A row carries only when the
+/// other factor's top limb is not 0, an integer part of 2^64 or more, so
+/// no harness value reaches it. By hand, at the 128-bit precision (limbs
+/// least significant first, two of fraction): 0.5 is [0, 2^63, 0, 0] and
+/// 3·2^64 is [0, 0, 0, 3]; row 1 gives 2^63·3 = 2^64 + 2^63, so limb 4 is
+/// 2^63 and the carry 1 goes to limb 5: the product is 3·2^63, exactly.
+/// The mutant adds the carry to limb 4 and gives 2^63 + 1.
+#[test]
+fn a_product_carries_into_the_limb_above_its_row() {
+    use cycleref::engine::real::{Interval, FAST};
+    let half = Interval::<FAST>::int(1).div(&Interval::int(2));
+    assert_eq!(half.mul(&Interval::int(3 << 64)), Interval::int(3 << 63));
+    assert_eq!(Interval::<FAST>::int(3 << 64).mul(&half), Interval::int(3 << 63));
+}
