@@ -23,6 +23,10 @@ restores it with `git checkout .` before each mutant):
         python3 proofs/scripts/mutants_cheapest_first.py \\
         WORKTREE mutants.json NAMES OUT [LIMIT_SECONDS]
 
+A name `lib:PACKAGE` in BINS stands for that package's own unit tests
+(`cargo test -p PACKAGE --lib`), for instance `lib:cycleref` for the
+kernels' tests beside `engine/real.rs`.
+
 NAMES is a file of mutant names (one a line, as cargo-mutants prints
 them); OUT gets one tab-separated line a mutant, appended as it is
 decided. Builds and tests run under `nice -n 19` with one build job.
@@ -72,11 +76,13 @@ with open(out, 'a') as log:
         for b in BINS:
             # Each binary is built just before it runs: a mutant caught by
             # the first binary never waits for the others to build.
-            status, _ = run(f'cargo test -p cycleref-proofs --test {b} --no-run', 1800)
+            # `lib:PACKAGE` is that package's own unit tests.
+            target = f'-p {b[4:]} --lib' if b.startswith('lib:') else f'-p cycleref-proofs --test {b}'
+            status, _ = run(f'cargo test {target} --no-run', 1800)
             if status != 0:
                 verdict, by = 'UNVIABLE', b
                 break
-            status, output = run(f'cargo test -q -p cycleref-proofs --test {b}', FAST.get(b, limit))
+            status, output = run(f'cargo test -q {target}', FAST.get(b, limit))
             if status is None:
                 verdict, by = 'TIMEOUT', b
                 break
