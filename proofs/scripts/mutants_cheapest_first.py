@@ -11,8 +11,8 @@ runs, and stops at the first binary that fails, as `cargo test` does. The verdic
   function body builds for every binary or for none, so the first
   binary's build decides it);
 - CAUGHT: a binary fails (the failing tests are listed);
-- TIMEOUT: a binary runs past its limit (180 s for the binaries that take
-  seconds, the given limit for the others); a hang, or a slow test;
+- TIMEOUT: a binary runs past its limit (60 s for the binaries that take
+  under a second, the given limit for the others); a hang, or a slow test;
 - MISSED: every binary passes.
 
 Usage, from a clean worktree of its own (it mutates the tree in place and
@@ -44,8 +44,8 @@ names = [line.strip() for line in open(names_file) if line.strip()]
 BINS = os.environ.get('BINS', 'survivors g75_mutants g75_harnesses unwind g75_exact').split()
 ENV = 'CARGO_BUILD_JOBS=1 nice -n 19 '
 # A hang in a binary that takes seconds is known long before the others' limit.
-FAST = {'survivors': 180, 'boundaries': 180, 'g75_golden': 180, 'kani_covers': 180, 'no_alloc': 180,
-        'contracts': 180}
+FAST = {'survivors': 60, 'boundaries': 60, 'g75_golden': 60, 'kani_covers': 60, 'no_alloc': 60,
+        'contracts': 60, 'lib:cycleref': 60}
 
 
 def run(cmd, seconds=None):
