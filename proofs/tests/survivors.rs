@@ -1323,3 +1323,22 @@ fn a_product_carries_into_the_limb_above_its_row() {
     assert_eq!(half.mul(&Interval::int(3 << 64)), Interval::int(3 << 63));
     assert_eq!(Interval::<FAST>::int(3 << 64).mul(&half), Interval::int(3 << 63));
 }
+
+/// `engine/real.rs` 458:39 (`64 * (N − 2)` → `64 + (N − 2)` in
+/// `Fixed::FRACTION_BITS`): the public count of fraction bits, which no
+/// engine path reads. By the module's documentation, P = 64·(N − 2): 128
+/// bits at the fast precision (4 limbs), 512 at the slow one (10 limbs);
+/// and one ulp is 2^−P, so 2^P ulps make 1.
+#[test]
+fn the_fraction_bits_are_64_per_fraction_limb() {
+    use cycleref::engine::real::{Fixed, Interval, FAST, SLOW};
+    assert_eq!(Fixed::<FAST>::FRACTION_BITS, 128);
+    assert_eq!(Fixed::<SLOW>::FRACTION_BITS, 512);
+    // 2^63 ulps doubled FRACTION_BITS − 63 times is 2^P ulps (saturating,
+    // so that a wrong count fails here rather than at compile time).
+    let mut x = Interval::<FAST>::point(Fixed::from_ulps(1 << 63));
+    for _ in 0..Fixed::<FAST>::FRACTION_BITS.saturating_sub(63) {
+        x = x.mul_int(2);
+    }
+    assert_eq!(x, Interval::int(1));
+}
