@@ -1342,3 +1342,33 @@ fn the_fraction_bits_are_64_per_fraction_limb() {
     }
     assert_eq!(x, Interval::int(1));
 }
+
+/// `engine/real.rs` 648:35 and 650:35 (`2 * N - 2` → `2 * N + 2` in
+/// `Fixed::div_round`, the dividend's and the quotient's lengths): the
+/// scratch buffers hold `2 · MAX_LIMBS` limbs, so the longer slices exist
+/// up to 13 limbs and the mutants change nothing there; at `MAX_LIMBS` =
+/// 14 limbs, the most the type admits, they do not, and every quotient
+/// would be poisoned. So each precision from the least (3 limbs) to the
+/// most divides, by hand: 7 / 2 = 3.5 exactly; 1 / 3 lies between
+/// floor(2^P / 3) and one ulp more, and 2^P / 3 = 0.0101…b, so every
+/// fraction limb of the lower end is 0x5555555555555555 and the upper
+/// end's lowest limb is 0x5555555555555556.
+#[test]
+fn every_precision_divides() {
+    use cycleref::engine::real::{Interval, FAST, MAX_LIMBS, SLOW};
+    fn check<const N: usize>() {
+        let three_and_a_half = Interval::<N>::int(3).add(&Interval::half());
+        assert_eq!(Interval::<N>::int(7).div(&Interval::int(2)), three_and_a_half, "{N} limbs");
+        let third = Interval::<N>::int(1).div(&Interval::int(3));
+        let fives = 0x5555_5555_5555_5555;
+        let mut lower = [0_u64; N];
+        lower[..N - 2].fill(fives);
+        let mut upper = lower;
+        upper[0] = fives + 1;
+        assert_eq!((third.lower().limbs(), third.upper().limbs()), (&lower, &upper), "{N} limbs");
+    }
+    check::<3>();
+    check::<FAST>();
+    check::<SLOW>();
+    check::<MAX_LIMBS>();
+}
