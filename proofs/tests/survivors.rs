@@ -1372,3 +1372,19 @@ fn every_precision_divides() {
     check::<SLOW>();
     check::<MAX_LIMBS>();
 }
+
+/// `engine/real.rs` 666:29 (`k < 0` → `k == 0`) and 667:38 (`neg &&
+/// !zero` → `neg && zero`) in `Fixed::mul_int`: the sign of a product by
+/// an integer is the product of the signs, and a zero product has none.
+/// The harnesses multiply by positive integers only. By hand: 3·(−2) =
+/// −6, (−3)·2 = −6, (−3)·(−2) = 6, (−3)·0 = 0, and −2.5·4 = −10.
+#[test]
+fn products_by_an_integer_take_both_signs() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let int = Fixed::<FAST>::from_int;
+    for (x, k, product) in [(3, -2, -6), (-3, 2, -6), (-3, -2, 6), (-3, 0, 0), (3, 2, 6)] {
+        assert_eq!(int(x).mul_int(k), Some(int(product)), "{x}·{k}");
+    }
+    let minus_two_and_a_half = Interval::<FAST>::int(-3).add(&Interval::half());
+    assert_eq!(minus_two_and_a_half.mul_int(4), Interval::int(-10));
+}
