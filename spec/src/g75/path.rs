@@ -138,3 +138,35 @@ pub(super) fn rough_moves(g: &Groove, path: &mut Path, layers: &[Layer], a11: Lo
     path.rapid_y(y_top, Role::Approach);
     path.rapid_u(a11.u, Role::Approach);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// R-G75RANGE: a coordinate beyond the range is reported with its
+    /// value, saturated to `i64` on its own side. The groove of
+    /// `G75_SLOPE` has H < 0 (`sx` = −1) and D < 0 (`sz` = −1) and S at
+    /// X80.000 Z0, so a local depth of −2^64 is X 80 000 + 2^64 (beyond
+    /// `i64::MAX`, reported as it), a depth of 2^64 is X 80 000 − 2^64
+    /// (reported as `i64::MIN`), and the same along Z from u. Mutants of
+    /// `absolute` that read the sign wrongly (cargo-mutants 83:57 `v < 0`
+    /// → `v == 0`, `v > 0`) report the other end.
+    #[test]
+    fn a_coordinate_beyond_i64_is_reported_saturated_on_its_side() {
+        let g = groove(&cycleref::examples::G75_SLOPE);
+        assert_eq!((g.sx, g.sz), (-1, -1));
+        let beyond = |value: i64| {
+            Err(CycleError::OutOfRange {
+                field: Field::PassCoordinate,
+                value: Length::new(value, cycleref::Units::IS_B_METRIC),
+            })
+        };
+        let big = 1_i128 << 64;
+        assert_eq!(absolute(&g, LocalPoint::new(0, -big)), beyond(i64::MAX));
+        assert_eq!(absolute(&g, LocalPoint::new(0, big)), beyond(i64::MIN));
+        assert_eq!(absolute(&g, LocalPoint::new(-big, 0)), beyond(i64::MAX));
+        assert_eq!(absolute(&g, LocalPoint::new(big, 0)), beyond(i64::MIN));
+        // Within i64 but beyond the range: the value itself.
+        assert_eq!(absolute(&g, LocalPoint::new(0, -1_000_000_000)), beyond(1_000_080_000));
+    }
+}
