@@ -1388,3 +1388,45 @@ fn products_by_an_integer_take_both_signs() {
     let minus_two_and_a_half = Interval::<FAST>::int(-3).add(&Interval::half());
     assert_eq!(minus_two_and_a_half.mul_int(4), Interval::int(-10));
 }
+
+/// `engine/real.rs` 804:86, 810:86, 822:22, 863:22, 909:80 and 915:80
+/// (`self.ok && o.ok` → `||` in `Interval::add`, `sub`, `mul`, `div`,
+/// `max`, `min`): a poisoned operand (an overflow, a division by an
+/// interval holding 0, a series that did not converge) poisons the result,
+/// on either side, so that every decision on it stays undecided
+/// (`UndecidedRounding`) instead of reading a value that means nothing.
+/// No validated cycle poisons an interval, so no harness sees it.
+#[test]
+fn a_poisoned_operand_poisons_every_result() {
+    use cycleref::engine::real::{Interval, Rounding, FAST};
+    let poison = Interval::<FAST>::poison();
+    let two = Interval::<FAST>::int(2);
+    let operations: [(&str, fn(&Interval<FAST>, &Interval<FAST>) -> Interval<FAST>); 6] = [
+        ("add", Interval::add),
+        ("sub", Interval::sub),
+        ("mul", Interval::mul),
+        ("div", Interval::div),
+        ("max", Interval::max),
+        ("min", Interval::min),
+    ];
+    for (name, op) in operations {
+        assert!(op(&two, &two).is_valid(), "{name} of 2 and 2");
+        assert!(!op(&poison, &two).is_valid(), "{name} of poison and 2");
+        assert!(!op(&two, &poison).is_valid(), "{name} of 2 and poison");
+        assert_eq!(op(&two, &poison).round(Rounding::Floor), None, "{name}");
+    }
+    // A division by an interval holding 0 poisons too.
+    assert!(!two.div(&Interval::int(0)).is_valid());
+}
+
+/// `engine/real.rs` 889:14 (`k < 0` → `k == 0` in `Interval::mul_int`): a
+/// negative factor swaps the ends. By hand: [1, 2]·(−3) = [−6, −3]; the
+/// mutant keeps them in place, [−3, −6], an interval upside down.
+#[test]
+fn an_interval_times_a_negative_integer_swaps_its_ends() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
+    assert_eq!(iv(1, 2).mul_int(-3), iv(-6, -3));
+    assert_eq!(iv(-1, 2).mul_int(-3), iv(-6, 3));
+    assert_eq!(iv(1, 2).mul_int(0), iv(0, 0));
+}
