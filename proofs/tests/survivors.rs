@@ -1430,3 +1430,27 @@ fn an_interval_times_a_negative_integer_swaps_its_ends() {
     assert_eq!(iv(-1, 2).mul_int(-3), iv(-6, 3));
     assert_eq!(iv(1, 2).mul_int(0), iv(0, 0));
 }
+
+/// `engine/real.rs` 954:37 (`lo == 0 && hi == 0` → `||` in
+/// `Interval::sign`): an interval that touches 0 at one end holds 0 and
+/// numbers of one sign, so its sign is undecided; only [0, 0] is 0. By
+/// hand: [1, 2] > 0, [−2, −1] < 0, [0, 0] = 0, and [0, 1], [−1, 0],
+/// [−1, 1] undecided (`sign_tie`, R-G75TIE, takes each of those as 0).
+#[test]
+fn an_interval_touching_zero_has_no_sign() {
+    use core::cmp::Ordering;
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
+    let cases = [
+        ((1, 2), Some(Ordering::Greater)),
+        ((-2, -1), Some(Ordering::Less)),
+        ((0, 0), Some(Ordering::Equal)),
+        ((0, 1), None),
+        ((-1, 0), None),
+        ((-1, 1), None),
+    ];
+    for ((lo, hi), sign) in cases {
+        assert_eq!(iv(lo, hi).sign(), sign, "[{lo}, {hi}]");
+        assert_eq!(iv(lo, hi).sign_tie(), Some(sign.unwrap_or(Ordering::Equal)), "[{lo}, {hi}]");
+    }
+}
