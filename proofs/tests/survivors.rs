@@ -1454,3 +1454,36 @@ fn an_interval_touching_zero_has_no_sign() {
         assert_eq!(iv(lo, hi).sign_tie(), Some(sign.unwrap_or(Ordering::Equal)), "[{lo}, {hi}]");
     }
 }
+
+/// `spec/src/g75/roughing.rs` 169:33 (`range > tool` → `>=` in
+/// `check_ridges`), R-G75RIDGE: roughing in layers with a step wider than
+/// the tool is refused only when layer 1's plunge range is wider than the
+/// tool, since two plunges one tool width apart leave no ridge. By hand,
+/// `square_groove()` (D 3.000, right-angle flanks: every layer's plunges
+/// run from u = 0 to D − w) in two layers (H −2.000 and V 1.000 in
+/// diameter), Q 1.600:
+///
+/// * I 1.500: the range is 0 to 1.500, as wide as the tool: admitted, each
+///   layer plunges at Z0 and (0 + 1.600 is beyond 1.500) Z1.500;
+/// * I 1.499: the range is 0 to 1.501, wider than the tool: refused.
+#[test]
+fn a_plunge_range_as_wide_as_the_tool_leaves_no_ridge() {
+    use cycleref::{CycleError, Length, Plunge, Point, Role, Units};
+    let _serial = serial();
+    let layered = |tool: i64| cycleref::G75Cycle {
+        step: 1_600,
+        layer: Some(1_000),
+        tool_width: Some(tool),
+        ..square_groove()
+    };
+    let moves = g75_reference_moves(&layered(1_500));
+    let steps: Vec<_> =
+        moves.iter().filter(|m| matches!(m.role, Role::Step(_))).map(|m| (m.role, m.to)).collect();
+    let step = |layer: u32| Role::Step(Plunge { layer, number: 2 });
+    assert_eq!(steps, [(step(1), Point::new(100_000, 1_500)), (step(2), Point::new(99_000, 1_500))]);
+    let ridges = CycleError::RidgesInLayers {
+        step: Length::new(1_600, Units::IS_B_METRIC),
+        tool_width: Length::new(1_499, Units::IS_B_METRIC),
+    };
+    g75_refused_by_both(&layered(1_499), ridges, "I 1.499");
+}
