@@ -1487,3 +1487,36 @@ fn a_plunge_range_as_wide_as_the_tool_leaves_no_ridge() {
     };
     g75_refused_by_both(&layered(1_499), ridges, "I 1.499");
 }
+
+/// `engine/real.rs` 1023:13 (`frac > PI_FRACTION.len()` → `==`, `>=` in
+/// `pi`): π is held to 640 fraction bits (10 limbs), so it is enclosed at
+/// every precision up to 12 limbs and poisoned beyond. The digits are π's
+/// hexadecimal expansion, 3.243F6A88 85A308D3 13198A2E 03707344 …, which
+/// Blowfish's P-array and first S-box hold (an independent source): at 12
+/// limbs the lower end is those 10 limbs and 3, the upper end one ulp
+/// more; at 13 and 14 limbs π is poisoned.
+#[test]
+fn pi_is_enclosed_up_to_640_fraction_bits() {
+    use cycleref::engine::real::pi;
+    let lower: [u64; 12] = [
+        0xD131_0BA6_98DF_B5AC,
+        0x9216_D5D9_8979_FB1B,
+        0x3F84_D5B5_B547_0917,
+        0xC0AC_29B7_C97C_50DD,
+        0xBE54_66CF_34E9_0C6C,
+        0x4528_21E6_38D0_1377,
+        0x082E_FA98_EC4E_6C89,
+        0xA409_3822_299F_31D0,
+        0x1319_8A2E_0370_7344,
+        0x243F_6A88_85A3_08D3,
+        3,
+        0,
+    ];
+    let mut upper = lower;
+    upper[0] += 1;
+    let at_12 = pi::<12>();
+    assert!(at_12.is_valid());
+    assert_eq!((at_12.lower().limbs(), at_12.upper().limbs()), (&lower, &upper));
+    assert!(!pi::<13>().is_valid());
+    assert!(!pi::<14>().is_valid());
+}
