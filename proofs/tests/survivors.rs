@@ -1520,3 +1520,33 @@ fn pi_is_enclosed_up_to_640_fraction_bits() {
     assert!(!pi::<13>().is_valid());
     assert!(!pi::<14>().is_valid());
 }
+
+/// `engine/real.rs` 1108:14 and 1108:16 (the guard `k > RIGHT` of `sin`
+/// made false or `k == RIGHT`) and their kin in `cos`, `sin_cos`, `tan_of`
+/// and `cot_of`: the trigonometry is defined on 0° to 90° (`docs/G75.md`
+/// §6; `validate()` keeps every angle there), and an angle beyond is
+/// poisoned, never a series evaluated outside the range its truncation
+/// bound was argued for. So are tan 90° and cot 0°. In the engine's units,
+/// k·0.00005°: RIGHT = 1 800 000.
+#[test]
+fn angles_beyond_a_right_angle_are_poisoned() {
+    use cycleref::engine::real::{cos, cot, sin, sin_cos, tan, tan_cot, Interval, FAST, RIGHT};
+    let poisoned = |v: Interval<FAST>| !v.is_valid();
+    for k in [RIGHT + 1, RIGHT + 600_000, 2 * RIGHT, u32::MAX] {
+        let (s, c) = sin_cos::<FAST>(k);
+        let (t, ct) = tan_cot::<FAST>(k);
+        for (name, v) in [("sin", sin(k)), ("cos", cos(k)), ("tan", tan(k)), ("cot", cot(k))] {
+            assert!(poisoned(v), "{name} of {k}");
+        }
+        for (name, v) in [("sin_cos", s), ("sin_cos", c), ("tan_cot", t), ("tan_cot", ct)] {
+            assert!(poisoned(v), "{name} of {k}");
+        }
+    }
+    assert!(poisoned(tan::<FAST>(RIGHT)) && poisoned(tan_cot::<FAST>(RIGHT).0));
+    assert!(poisoned(cot::<FAST>(0)) && poisoned(tan_cot::<FAST>(0).1));
+    // At the ends of the range: the exact values.
+    assert_eq!(sin::<FAST>(RIGHT), Interval::int(1));
+    assert_eq!(cos::<FAST>(RIGHT), Interval::int(0));
+    assert_eq!(cot::<FAST>(RIGHT), Interval::int(0));
+    assert_eq!(tan::<FAST>(0), Interval::int(0));
+}
