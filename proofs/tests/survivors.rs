@@ -1549,4 +1549,10 @@ fn angles_beyond_a_right_angle_are_poisoned() {
     assert_eq!(cos::<FAST>(RIGHT), Interval::int(0));
     assert_eq!(cot::<FAST>(RIGHT), Interval::int(0));
     assert_eq!(tan::<FAST>(0), Interval::int(0));
+    // And 45° (k = 900 000), whose tangent and cotangent are exactly 1
+    // (`tan_of` and `cot_of`'s own arms: the quotient of the one enclosure
+    // `sin_cos` gives for both is not a point).
+    assert_eq!(tan::<FAST>(900_000), Interval::int(1));
+    assert_eq!(cot::<FAST>(900_000), Interval::int(1));
+    assert_eq!(tan_cot::<FAST>(900_000), (Interval::int(1), Interval::int(1)));
 }
