@@ -79,3 +79,32 @@ fn g32_run_out_exactly_the_length_of_the_move() {
         Err(CycleError::RunOutTooLong { .. })
     ));
 }
+
+/// §9 (R-G75PECK): more than 10^6 pecks are refused, 10^6 admitted, also
+/// when they are 10^6 layers of one peck each, where the layer count
+/// alone reaches the limit. The engine bounds the count in closed form
+/// (`survivors.rs`, `the_peck_count_refuses_too_many_layers_before_counting_them`);
+/// the reference counts the layers one by one, so this case takes it
+/// about 20 s. `spec/src/g75/roughing.rs` 266:14 (`count > limit` →
+/// `count == limit`, from the reference's whole-file run) refused the
+/// 10^6 layers.
+#[test]
+fn a_million_layers_of_one_peck_are_admitted_by_both() {
+    use cycleref::g75::MAX_PECKS;
+    use cycleref_proofs::groove::{any_groove, GrooveDomain};
+    use cycleref_proofs::shim::{check, Mode};
+    let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
+    // (depth Y, Δv = 1, Δi = 1): Y layers of one peck and one plunge.
+    for (depth, expected) in [(1_000_000, Ok(())), (1_000_001, Err(refused))] {
+        let domain = GrooveDomain::layers_only((depth, depth), (1, 1), (1, 1));
+        // The domain is one point: its one run makes the cycle.
+        let r = check("a million layers", Mode::Exhaustive { max_runs: 1 }, || {
+            let c = any_groove(&domain);
+            assert_eq!(cycleref::expand_g75(&c).map(|_| ()), expected, "Y {depth}: the engine");
+            let g = cycleref_spec::g75::groove(&c);
+            let layers = cycleref_spec::g75::rough_layers(&g, 0).map(|layers| layers.len());
+            assert_eq!(layers, expected.map(|()| 1_000_000), "Y {depth}: the reference");
+        });
+        assert_eq!(r.runs, 1);
+    }
+}
