@@ -1401,7 +1401,8 @@ fn a_poisoned_operand_poisons_every_result() {
     use cycleref::engine::real::{Interval, Rounding, FAST};
     let poison = Interval::<FAST>::poison();
     let two = Interval::<FAST>::int(2);
-    let operations: [(&str, fn(&Interval<FAST>, &Interval<FAST>) -> Interval<FAST>); 6] = [
+    type Operation = fn(&Interval<FAST>, &Interval<FAST>) -> Interval<FAST>;
+    let operations: [(&str, Operation); 6] = [
         ("add", Interval::add),
         ("sub", Interval::sub),
         ("mul", Interval::mul),
