@@ -1558,34 +1558,47 @@ fn angles_beyond_a_right_angle_are_poisoned() {
     assert_eq!(tan_cot::<FAST>(900_000), (Interval::int(1), Interval::int(1)));
 }
 
-/// `spec/src/g75/roughing.rs` 274:47 (`min(limit + 1)` → `min(limit − 1)`
-/// in `rough_layers`): a layer's plunge count is capped just above the
-/// limit, so that its product with the pecks cannot overflow and still
-/// exceeds the limit. §9: more than 10^6 pecks are refused. By hand, radius
-/// X, Y = 1 (one peck of Δi = 1 per plunge), a pointed tool, Δk = 1, right-
-/// angle flanks, no allowances: the plunges run from u = 0 to u = D, D + 1
-/// of them. D = 999 999: 10^6 pecks, admitted; D = 10^6: 10^6 + 1,
-/// refused (the mutant caps the count at 999 999 and admits it).
+/// `spec/src/g75/roughing.rs` 274:47 and 275:59 (`min(limit + 1)` →
+/// `min(limit − 1)`, `min(limit * 1)` in `rough_layers`): a layer's plunge
+/// and peck counts are each capped just above the limit, so that their
+/// product cannot overflow and still exceeds the limit. §9: more than 10^6
+/// pecks are refused. By hand, radius X, a pointed tool, Δi = Δk = 1,
+/// right-angle flanks, no allowances: a layer of depth Y has Y pecks a
+/// plunge, and its plunges run from u = 0 to u = D, D + 1 of them.
+///
+/// * Y = 1: D = 999 999 is 10^6 pecks, admitted; D = 10^6 is 10^6 + 1,
+///   refused (274:47 caps the plunges at 999 999 and admits it).
+/// * D = 0 (one plunge): Y = 10^6 is admitted, Y = 10^6 + 1 refused
+///   (275:59 caps the pecks at 999 999 or 10^6 and admits it).
 #[test]
-fn a_layer_of_more_plunges_than_the_limit_is_refused() {
+fn a_layer_of_more_plunges_or_pecks_than_the_limit_is_refused() {
     use cycleref::g75::MAX_PECKS;
     use cycleref::{CycleError, XMode};
     let _serial = serial();
-    let wide = |width: i64| cycleref::G75Cycle {
+    let groove = |depth: i64, width: i64| cycleref::G75Cycle {
         x_mode: XMode::Radius,
         peck: 1,
         step: 1,
-        depth: -1,
+        depth: -depth,
         width,
         ..square_groove()
     };
     let refused = CycleError::TooManyPecks { limit: MAX_PECKS };
-    for (width, plunges, expected) in [(999_999, 1_000_000, Ok(())), (1_000_000, 1_000_001, Err(refused))] {
-        let c = wide(width);
+    // (Y, D, plunges, pecks a plunge, outcome)
+    let cases = [
+        (1, 999_999, 1_000_000, 1, Ok(())),
+        (1, 1_000_000, 1_000_001, 1, Err(refused)),
+        (1_000_000, 0, 1, 1_000_000, Ok(())),
+        (1_000_001, 0, 1, 1_000_001, Err(refused)),
+    ];
+    for (depth, width, plunges, pecks, expected) in cases {
+        let c = groove(depth, width);
         let g = cycleref_spec::g75::groove(&c);
         let range = cycleref_spec::g75::plunge_range(&g, 1).expect("a right-angle groove");
         assert_eq!((range.first, range.last, range.count(1)), (0, i128::from(width), plunges));
-        assert_eq!(cycleref_spec::g75::rough_layers(&g, 0).map(|_| ()), expected, "D {width}: the reference");
-        assert_eq!(cycleref::expand_g75(&c).map(|_| ()), expected, "D {width}: the engine");
+        assert_eq!(cycleref_spec::g75::peck_count(0, i128::from(depth), 1), pecks);
+        let what = format!("Y {depth}, D {width}");
+        assert_eq!(cycleref_spec::g75::rough_layers(&g, 0).map(|_| ()), expected, "{what}: the reference");
+        assert_eq!(cycleref::expand_g75(&c).map(|_| ()), expected, "{what}: the engine");
     }
 }
