@@ -1602,3 +1602,19 @@ fn a_layer_of_more_plunges_or_pecks_than_the_limit_is_refused() {
         assert_eq!(cycleref::expand_g75(&c).map(|_| ()), expected, "{what}: the engine");
     }
 }
+
+/// `engine/real.rs` 1350:14 (`!x.ok || x.lo < 0` → `&&` in `exp`): the
+/// exponential's series is summed only over non-negative arguments (every
+/// term increasing in x, so the interval product keeps its ends), and a
+/// partly negative argument is poisoned, never summed with that argument's
+/// failing premise. LinuxCNC's depth law takes it of a logarithm of
+/// n ≥ 1 only. By hand: exp of −1, of [−1, 1] and of a poisoned interval
+/// are poisoned; exp 0 = 1 exactly.
+#[test]
+fn the_exponential_refuses_a_negative_argument() {
+    use cycleref::engine::real::{exp, Fixed, Interval, FAST};
+    assert!(!exp(&Interval::<FAST>::int(-1)).is_valid());
+    assert!(!exp(&Interval::<FAST>::new(Fixed::from_int(-1), Fixed::from_int(1))).is_valid());
+    assert!(!exp(&Interval::<FAST>::poison()).is_valid());
+    assert_eq!(exp(&Interval::<FAST>::int(0)), Interval::int(1));
+}
