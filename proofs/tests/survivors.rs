@@ -1618,3 +1618,21 @@ fn the_exponential_refuses_a_negative_argument() {
     assert!(!exp(&Interval::<FAST>::poison()).is_valid());
     assert_eq!(exp(&Interval::<FAST>::int(0)), Interval::int(1));
 }
+
+/// `engine/real.rs` 1462:15, 1462:31 and 1462:41 (an `||` of the domain
+/// guard of `power` made `&&`): n^(a/b) is defined for 1 ≤ n < 2^63 and
+/// 0 < a ≤ b (LinuxCNC's depth law, `n^(1/R)` with R ≥ 1) and poisoned
+/// outside, as documented, even where a value could be given. By hand:
+/// n = 0; n = (2^32 − 1)² ≥ 2^63, a perfect square, whose square root
+/// 2^32 − 1 the integer-root search would find; a = 0 (4^0 = 1); a > b
+/// (4^(3/2) = 8). Inside the domain, 4^(1/2) = 2 exactly.
+#[test]
+fn powers_outside_their_domain_are_poisoned() {
+    use cycleref::engine::real::{power, Interval, FAST};
+    let big_square = u64::from(u32::MAX) * u64::from(u32::MAX);
+    assert!(big_square >= 1 << 63);
+    for (n, a, b) in [(0, 1, 2), (big_square, 1, 2), (4, 0, 2), (4, 3, 2)] {
+        assert!(!power::<FAST>(n, a, b).is_valid(), "{n}^({a}/{b})");
+    }
+    assert_eq!(power::<FAST>(4, 1, 2), Interval::int(2));
+}
