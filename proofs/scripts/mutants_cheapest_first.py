@@ -5,7 +5,8 @@ cargo-mutants runs the test binaries in name order, so with the G75.1
 harness binaries every mutant waits about 110 s for `g75_exact` before
 `survivors` (under a second) runs. This script tests the same mutants with
 the same binaries, in the order given, building each just before it
-runs, and stops at the first binary that fails, as `cargo test` does. The verdicts are cargo-mutants' own:
+runs, and stops at the first binary that fails, as `cargo test` does.
+The verdicts are cargo-mutants' own:
 
 - UNVIABLE: the mutated tree does not build (a mutation inside a
   function body builds for every binary or for none, so the first
@@ -43,7 +44,8 @@ mutants = {m['name']: m for m in json.load(open(mutants_json))}
 names = [line.strip() for line in open(names_file) if line.strip()]
 BINS = os.environ.get('BINS', 'survivors g75_mutants g75_harnesses unwind g75_exact').split()
 ENV = 'CARGO_BUILD_JOBS=1 nice -n 19 '
-# A hang in a binary that takes seconds is known long before the others' limit.
+# A hang in a binary that takes under a second is known long before the
+# others' limit.
 FAST = {'survivors': 60, 'boundaries': 60, 'g75_golden': 60, 'kani_covers': 60, 'no_alloc': 60,
         'contracts': 60, 'lib:cycleref': 60}
 

@@ -95,6 +95,12 @@ fn square_groove() -> cycleref::G75Cycle {
     }
 }
 
+/// The interval [lo, hi] of two integers, at the fast precision.
+fn iv(lo: i128, hi: i128) -> cycleref::engine::real::Interval<{ cycleref::engine::real::FAST }> {
+    use cycleref::engine::real::{Fixed, Interval};
+    Interval::new(Fixed::from_int(lo), Fixed::from_int(hi))
+}
+
 /// The motion and end point of each of `moves` with role `role`.
 fn with_role(moves: &[cycleref::Move], role: cycleref::Role) -> Vec<(cycleref::Motion, cycleref::Point)> {
     moves.iter().filter(|m| m.role == role).map(|m| (m.motion, m.to)).collect()
@@ -833,8 +839,6 @@ fn a_quotient_digit_estimated_two_too_large_is_corrected() {
 /// [−3, −1]·[1, 2] the same; [−1, 2]·[3, 4] = [−4, 8].
 #[test]
 fn interval_products_take_the_ends_of_every_sign() {
-    use cycleref::engine::real::{Fixed, Interval, FAST};
-    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
     assert_eq!(iv(1, 2).mul(&iv(-3, -1)), iv(-6, -1));
     assert_eq!(iv(-3, -1).mul(&iv(1, 2)), iv(-6, -1));
     assert_eq!(iv(-1, 2).mul(&iv(3, 4)), iv(-4, 8));
@@ -1425,8 +1429,6 @@ fn a_poisoned_operand_poisons_every_result() {
 /// mutant keeps them in place, [−3, −6], an interval upside down.
 #[test]
 fn an_interval_times_a_negative_integer_swaps_its_ends() {
-    use cycleref::engine::real::{Fixed, Interval, FAST};
-    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
     assert_eq!(iv(1, 2).mul_int(-3), iv(-6, -3));
     assert_eq!(iv(-1, 2).mul_int(-3), iv(-6, 3));
     assert_eq!(iv(1, 2).mul_int(0), iv(0, 0));
@@ -1440,8 +1442,6 @@ fn an_interval_times_a_negative_integer_swaps_its_ends() {
 #[test]
 fn an_interval_touching_zero_has_no_sign() {
     use core::cmp::Ordering;
-    use cycleref::engine::real::{Fixed, Interval, FAST};
-    let iv = |lo: i128, hi: i128| Interval::<FAST>::new(Fixed::from_int(lo), Fixed::from_int(hi));
     let cases = [
         ((1, 2), Some(Ordering::Greater)),
         ((-2, -1), Some(Ordering::Less)),
@@ -1612,9 +1612,9 @@ fn a_layer_of_more_plunges_or_pecks_than_the_limit_is_refused() {
 /// are poisoned; exp 0 = 1 exactly.
 #[test]
 fn the_exponential_refuses_a_negative_argument() {
-    use cycleref::engine::real::{exp, Fixed, Interval, FAST};
+    use cycleref::engine::real::{exp, Interval, FAST};
     assert!(!exp(&Interval::<FAST>::int(-1)).is_valid());
-    assert!(!exp(&Interval::<FAST>::new(Fixed::from_int(-1), Fixed::from_int(1))).is_valid());
+    assert!(!exp(&iv(-1, 1)).is_valid());
     assert!(!exp(&Interval::<FAST>::poison()).is_valid());
     assert_eq!(exp(&Interval::<FAST>::int(0)), Interval::int(1));
 }
