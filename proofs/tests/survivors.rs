@@ -1636,3 +1636,142 @@ fn powers_outside_their_domain_are_poisoned() {
     }
     assert_eq!(power::<FAST>(4, 1, 2), Interval::int(2));
 }
+
+/// The non-negative number whose `N` limbs (two's complement, least
+/// significant first) are `limbs`, built with the public operations only:
+/// the integer part from its two top limbs, each fraction limb as ulps
+/// scaled up by 2^64 per place (two exact products by 2^32).
+fn fixed_from_limbs<const N: usize>(limbs: [u64; N]) -> cycleref::engine::real::Fixed<N> {
+    use cycleref::engine::real::Fixed;
+    let top = |i: usize| i128::from(limbs[i]);
+    let mut x = Fixed::<N>::from_int((top(N - 1) << 64) | top(N - 2));
+    for (place, &limb) in limbs.iter().take(N - 2).enumerate() {
+        let mut term = Fixed::<N>::from_ulps(limb);
+        for _ in 0..2 * place {
+            term = term.mul_int(1 << 32).expect("inside the fraction");
+        }
+        x = x.checked_add(&term).expect("below 2^127");
+    }
+    assert_eq!(x.limbs(), &limbs);
+    x
+}
+
+/// `Interval::div` of two points is the exact quotient rounded down and up:
+/// with A and B the two numbers in ulps, the ends are floor(A·2^P / B) and
+/// ceil(A·2^P / B) ulps, computed here with `num-bigint`, or the interval
+/// is poisoned when the upper end is 2^(64N − 1) ulps or more. Checked
+/// at `N` limbs on the cases given and on 4 000 more whose limbs are drawn
+/// from the values that reach the rare steps of Knuth's division (0, 1, 2,
+/// 2^63 − 1, 2^63, 2^64 − 2, 2^64 − 1, a random limb), with one to `N`
+/// limbs in each operand, and, one case in four, the dividend's top limb
+/// set to the divisor's (a quotient digit estimate above 2^64 − 1). Both
+/// operands are kept non-negative (the top bit of the top limb clear):
+/// the signs are `div_round`'s, around this magnitude division.
+fn division_is_exact<const N: usize>(cases: &[([u64; N], [u64; N])]) {
+    use cycleref::engine::real::{Fixed, Interval};
+    use num_bigint::BigUint;
+    let big = |limbs: &[u64; N]| {
+        limbs.iter().rev().fold(BigUint::from(0_u8), |acc, &limb| (acc << 64_u32) + BigUint::from(limb))
+    };
+    let check = |a: [u64; N], b: [u64; N]| {
+        let q = Interval::point(fixed_from_limbs(a)).div(&Interval::point(fixed_from_limbs(b)));
+        let (quotient, remainder) = {
+            let (x, y) = (big(&a) << Fixed::<N>::FRACTION_BITS, big(&b));
+            (&x / &y, x % y)
+        };
+        let upper = &quotient + u8::from(remainder != BigUint::from(0_u8));
+        if upper >= BigUint::from(1_u8) << (64 * N - 1) {
+            assert!(!q.is_valid(), "{a:x?} / {b:x?} overflows");
+        } else {
+            assert!(q.is_valid(), "{a:x?} / {b:x?}");
+            assert_eq!(
+                (big(q.lower().limbs()), big(q.upper().limbs())),
+                (quotient, upper),
+                "{a:x?} / {b:x?}"
+            );
+        }
+    };
+    for &(a, b) in cases {
+        check(a, b);
+    }
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let special = [0, 1, 2, (1 << 63) - 1, 1 << 63, u64::MAX - 1, u64::MAX];
+    let mut operand = |next: &mut dyn FnMut() -> u64| {
+        let length = 1 + usize::try_from(next() % N as u64).expect("small");
+        let mut limbs = [0_u64; N];
+        for limb in limbs.iter_mut().take(length) {
+            let pick = usize::try_from(next() % 8).expect("small");
+            *limb = special.get(pick).copied().unwrap_or_else(&mut *next);
+        }
+        limbs[N - 1] >>= 1;
+        limbs
+    };
+    for case in 0..4_000 {
+        let (mut a, b) = (operand(&mut next), operand(&mut next));
+        if case % 4 == 0 {
+            if let Some(top) = b.iter().rposition(|&limb| limb != 0) {
+                let at = a.iter().rposition(|&limb| limb != 0).unwrap_or(top).max(top);
+                a[at] = b[top];
+                a[N - 1] &= !(1 << 63);
+            }
+        }
+        if b.iter().any(|&limb| limb != 0) {
+            check(a, b);
+        }
+    }
+}
+
+/// `engine/real.rs`, Knuth's division `limbs_divmod`, which the engines
+/// reach only with divisors of one unit or more and quotients that need no
+/// correction, so that the harness binaries let through changes to its
+/// one-limb branch (285:29, 286:27), its digit correction (311, 314, 315)
+/// and its add-back (340 to 355), and to the shift that gives back the
+/// remainder (408:44, 408:63), whose being zero decides the upper end
+/// (`div_round`). Each case is worked by hand:
+///
+/// - 7 ulps / 2 ulps, a one-limb divisor: 7·2^P / 2 = 3.5·2^P, exact;
+///   at 128 bits, (2^64 − 1) ulps / 3 ulps = (2^64 − 1)/3 · 2^128 ulps,
+///   exact, limbs 0, 0, 0x5555555555555555, 0.
+/// - 1 ulp / (2^64 + 1) ulps at 128 bits: 2^128 = (2^64 + 1)(2^64 − 1) + 1,
+///   so the quotient is 2^64 − 1 ulps with remainder 1; the divisor's top
+///   limb is 1, normalised by a shift of 63, which puts the remainder's one
+///   bit at the top of its low limb. The enclosure is [2^64 − 1, 2^64] ulps.
+/// - 2 ulps / (2^64 + 1) ulps: 2^129 = (2^64 + 1)(2^65 − 2) + 2: [2^65 − 2,
+///   2^65 − 1] ulps, the remainder's bit now at the bottom of the second
+///   limb after the shift.
+/// - The add-back case of Hacker's Delight's `divmnu` tests, (0x8000 7fff
+///   0000 0000) / (0x8000 0000 0001) in 16-bit digits, scaled to 64-bit
+///   limbs: dividend limbs 2^63, 2^63 − 1 (its two low limbs the shift by
+///   P), divisor limbs 1, 0, 2^63; the quotient and remainder are left to
+///   the big-integer oracle.
+///
+/// Then the patterned cases of [`division_is_exact`], at 3, 4 (`FAST`), 10
+/// (`SLOW`) and 14 limbs.
+#[test]
+fn the_division_kernel_is_exact_on_every_path() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    const H: u64 = 1 << 63;
+    let ulps = |u: u64| Interval::<FAST>::point(Fixed::from_ulps(u));
+    let q = ulps(7).div(&ulps(2));
+    assert!(q.is_point());
+    assert_eq!(q.lower().limbs(), &[0, H, 3, 0]);
+    let q = ulps(u64::MAX).div(&ulps(3));
+    assert_eq!(q.lower().limbs(), &[0, 0, 0x5555_5555_5555_5555, 0]);
+    assert!(q.is_point());
+    let just_above = Interval::point(fixed_from_limbs::<FAST>([1, 1, 0, 0]));
+    let q = ulps(1).div(&just_above);
+    assert_eq!((q.lower().limbs(), q.upper().limbs()), (&[u64::MAX, 0, 0, 0], &[0, 1, 0, 0]));
+    let q = ulps(2).div(&just_above);
+    assert_eq!((q.lower().limbs(), q.upper().limbs()), (&[u64::MAX - 1, 1, 0, 0], &[u64::MAX, 1, 0, 0]));
+    let _serial = serial();
+    division_is_exact::<3>(&[]);
+    division_is_exact::<FAST>(&[([H, H - 1, 0, 0], [1, 0, H, 0])]);
+    division_is_exact::<{ cycleref::engine::real::SLOW }>(&[]);
+    division_is_exact::<14>(&[]);
+}
