@@ -1775,3 +1775,125 @@ fn the_division_kernel_is_exact_on_every_path() {
     division_is_exact::<{ cycleref::engine::real::SLOW }>(&[]);
     division_is_exact::<14>(&[]);
 }
+
+/// The edges of the interval operations that no engine reaches, each worked
+/// by hand:
+///
+/// - `engine/real.rs` 863:53 (`o.lo < 0 || o.lo = 0` → `&&` in
+///   `Interval::div`): a divisor holding a negative number poisons the
+///   quotient, as documented ("poisoned when `o` contains 0 or a negative
+///   number"): [1, 2] / [−2, −1] and [1, 2] / [−1, 1].
+/// - 833:40 (`!v.lo < 0` → `v.lo < 0` in `Interval::mul`'s test for two
+///   non-negative factors): [−3, −1]·[−2, −1] = [1, 6] (the products of the
+///   ends are 6, 3, 2 and 1); the mutant takes [lo·lo, hi·hi] = [6, 1].
+/// - 554:12 (`a != b` → `a == b` in `Fixed::checked_add`'s overflow test):
+///   −1 + 2 = 1, operands of two signs, which never overflow; 2^126 + 2^126
+///   = 2^127 does (the top bit is the sign), and −2^126 + −2^126 = −2^127
+///   does not.
+/// - 1007:21 (the guard `self.ok` → `true` in `Interval::sign_tie`): a
+///   poisoned interval has no sign, tie or not.
+#[test]
+fn the_interval_operations_keep_their_documented_edges() {
+    use cycleref::engine::real::{Fixed, Interval, FAST};
+    assert!(!iv(1, 2).div(&iv(-2, -1)).is_valid());
+    assert!(!iv(1, 2).div(&iv(-1, 1)).is_valid());
+    assert_eq!(iv(2, 4).div(&iv(1, 2)), iv(1, 4));
+    assert_eq!(iv(-3, -1).mul(&iv(-2, -1)), iv(1, 6));
+    let int = Fixed::<FAST>::from_int;
+    assert_eq!(int(-1).checked_add(&int(2)), Some(int(1)));
+    assert_eq!(int(2).checked_add(&int(-1)), Some(int(1)));
+    assert_eq!(int(1 << 126).checked_add(&int(1 << 126)), None);
+    assert_eq!(int(-(1 << 126)).checked_add(&int(-(1 << 126))), Some(int(i128::MIN)));
+    assert_eq!(Interval::<FAST>::poison().sign_tie(), None);
+    assert_eq!(iv(-1, 1).sign_tie(), Some(std::cmp::Ordering::Equal));
+}
+
+/// `engine/real.rs` 1216 to 1227 (`Fixed::at_precision`: the whole
+/// function → `None`, and the limb offsets `to − from`, `from − to` made
+/// `+` or `/`): LinuxCNC's depth law computes its power at a
+/// wider precision and narrows it (`engine/linuxcnc.rs`), and no harness
+/// window makes the narrowing's outward rounding show. By hand:
+///
+/// - 1/3 at 10 limbs (`SLOW`, 512 fraction bits) is [0x5555…5555,
+///   0x5555…5556] ulps; narrowed to 4 limbs (`FAST`, 128 bits) the lower
+///   end drops six limbs of 0x5555… (rounded down: two limbs of
+///   0x5555…5555) and the upper end rounds up (0x5555…5556 in the low
+///   limb): the tightest enclosure of 1/3 at 128 bits.
+/// - 7/4 at 128 bits (fraction limbs 0 and 0xC000…0, integer 1) widened to
+///   512 bits is the same number exactly: six zero limbs appended below.
+#[test]
+fn a_change_of_precision_appends_or_rounds_the_fraction_limbs() {
+    use cycleref::engine::real::{Interval, FAST, SLOW};
+    const FIVES: u64 = 0x5555_5555_5555_5555;
+    let third = Interval::<SLOW>::int(1).div_int(3);
+    let mut lower = [FIVES; SLOW];
+    lower[SLOW - 2..].copy_from_slice(&[0, 0]);
+    let mut upper = lower;
+    upper[0] += 1;
+    assert_eq!((third.lower().limbs(), third.upper().limbs()), (&lower, &upper));
+    let narrowed = third.at_precision::<FAST>();
+    assert_eq!(narrowed.lower().limbs(), &[FIVES, FIVES, 0, 0]);
+    assert_eq!(narrowed.upper().limbs(), &[FIVES + 1, FIVES, 0, 0]);
+    let seven_quarters = Interval::<FAST>::int(7).div_int(4);
+    assert_eq!(seven_quarters.lower().limbs(), &[0, 0xC000_0000_0000_0000, 1, 0]);
+    let widened = seven_quarters.at_precision::<SLOW>();
+    assert!(widened.is_point());
+    let mut exact = [0_u64; SLOW];
+    exact[SLOW - 3..].copy_from_slice(&[0xC000_0000_0000_0000, 1, 0]);
+    assert_eq!(widened.lower().limbs(), &exact);
+}
+
+/// The logarithm, the exponential and the power (`engine/real.rs` 1269 to
+/// 1321 in `atanh2` and `ln`, 1364 and 1390 in `exp`, 1426 `gcd_u32`),
+/// LinuxCNC's depth law `n^(1/R)`, whose harnesses see only the depths it
+/// rounds to. Each is checked against integers, not against the engine:
+///
+/// - exp(ln n) holds n and rounds to it, for n = 2, 3, 10, 1000, 2^40 + 1
+///   and 2^63 − 1 (every branch of `ln`: e = 0 never, the power of two
+///   below n, the series of (n − 2^e)/(n + 2^e) ≤ 1/3), at 4 and 10 limbs;
+/// - ln 2 is within 2^−100 at 4 limbs (the series' tail bound is 2·z^(2k+1)
+///   with its last term below 4 ulps), and holds 0.693147180559945309417232
+///   (ln 2 to 24 places, a published constant), as ln 1024 holds ten times
+///   that;
+/// - ln 1 = 0 exactly, ln 0 and ln 2^63 are poisoned (outside 1 ≤ n < 2^63);
+/// - e = exp 1 holds 2.718281828459045235360287 (published);
+/// - the power reduces its exponent before looking for an exact root:
+///   4^(10000/20000) = 2 exactly (LinuxCNC's R = 2 in ten-thousandths), as
+///   8^(2/6) = 2.
+#[test]
+fn the_logarithm_and_the_exponential_hold_their_values() {
+    use cycleref::engine::real::{exp, ln, power, Fixed, Interval, Rounding, FAST, SLOW};
+    fn exp_of_ln<const N: usize>(n: u64) {
+        let back = exp(&ln::<N>(n));
+        let n = i128::from(n);
+        let exact = Fixed::<N>::from_int(n);
+        assert!(
+            back.lower().cmp_signed(&exact).is_le() && back.upper().cmp_signed(&exact).is_ge(),
+            "exp(ln {n}) holds {n}"
+        );
+        assert_eq!(back.round(Rounding::Nearest), Some(n), "exp(ln {n})");
+    }
+    for n in [2, 3, 10, 1000, (1 << 40) + 1, (1 << 63) - 1] {
+        exp_of_ln::<FAST>(n);
+        exp_of_ln::<SLOW>(n);
+    }
+    // `digits` read as an integer over 10^places lies in the interval scaled
+    // by 10^places (exact products by 10), within one unit of the last place.
+    fn holds<const N: usize>(x: &Interval<N>, digits: i128, places: u32) {
+        let scale = |v: &Fixed<N>| (0..places).fold(*v, |v, _| v.mul_int(10).expect("small"));
+        let (lo, hi) = (scale(x.lower()), scale(x.upper()));
+        assert!(lo.floor() <= digits && hi.ceil() >= Some(digits), "{digits}e-{places}");
+    }
+    let ln2 = ln::<FAST>(2);
+    let width = ln2.upper().checked_sub(ln2.lower()).expect("narrow");
+    assert!(width.cmp_signed(&Fixed::from_ulps(1 << 28)).is_lt(), "ln 2 within 2^-100");
+    holds(&ln2, 693_147_180_559_945_309_417_232, 24);
+    holds(&ln::<FAST>(1024), 6_931_471_805_599_453_094_172_321, 24);
+    holds(&ln::<SLOW>(2), 693_147_180_559_945_309_417_232, 24);
+    assert_eq!(ln::<FAST>(1), Interval::int(0));
+    assert!(!ln::<FAST>(0).is_valid());
+    assert!(!ln::<FAST>(1 << 63).is_valid());
+    holds(&exp(&Interval::<FAST>::int(1)), 2_718_281_828_459_045_235_360_287, 24);
+    assert_eq!(power::<FAST>(4, 10_000, 20_000), Interval::int(2));
+    assert_eq!(power::<FAST>(8, 2, 6), Interval::int(2));
+}
