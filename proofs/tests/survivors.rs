@@ -1702,7 +1702,7 @@ fn division_is_exact<const N: usize>(cases: &[([u64; N], [u64; N])]) {
         state
     };
     let special = [0, 1, 2, (1 << 63) - 1, 1 << 63, u64::MAX - 1, u64::MAX];
-    let mut operand = |next: &mut dyn FnMut() -> u64| {
+    let operand = |next: &mut dyn FnMut() -> u64| {
         let length = 1 + usize::try_from(next() % N as u64).expect("small");
         let mut limbs = [0_u64; N];
         for limb in limbs.iter_mut().take(length) {
