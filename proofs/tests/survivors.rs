@@ -1745,11 +1745,12 @@ fn division_is_exact<const N: usize>(cases: &[([u64; N], [u64; N])]) {
 /// - 2 ulps / (2^64 + 1) ulps: 2^129 = (2^64 + 1)(2^65 − 2) + 2: [2^65 − 2,
 ///   2^65 − 1] ulps, the remainder's bit now at the bottom of the second
 ///   limb after the shift.
-/// - The add-back case of Hacker's Delight's `divmnu` tests, (0x8000 7fff
-///   0000 0000) / (0x8000 0000 0001) in 16-bit digits, scaled to 64-bit
-///   limbs: dividend limbs 2^63, 2^63 − 1 (its two low limbs the shift by
-///   P), divisor limbs 1, 0, 2^63; the quotient and remainder are left to
-///   the big-integer oracle.
+/// - The add-back case of Hacker's Delight's `divmnu` tests, 0x7fff 8000
+///   0000 0000 / 0x8000 0000 0001 in 16-bit digits (most significant
+///   first), scaled to 64-bit limbs: the dividend's limbs 2^63, 2^63 − 1
+///   (below them, the two zero limbs of the shift by P), the divisor's 1,
+///   0, 2^63 (least significant first); the quotient and remainder are left
+///   to the big-integer oracle.
 ///
 /// Then the patterned cases of [`division_is_exact`], at 3, 4 (`FAST`), 10
 /// (`SLOW`) and 14 limbs.
