@@ -19,7 +19,8 @@
 //! Every command is a function of this library; the binary parses the
 //! arguments and maps the outcome to an exit status: 0 success (and, for
 //! `check`, agreement), 1 `check` found a difference, 2 an error. A closed
-//! output pipe ends a command quietly with status 0.
+//! output pipe ends a command quietly with status 0, except `check`,
+//! whose status is its verdict even then.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 

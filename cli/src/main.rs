@@ -18,7 +18,8 @@ use cycleref_spec::pipeline::Engine;
 
 const EXIT_STATUS: &str = "Exit status: 0 success (check: the toolpaths agree), 1 check: they differ, \
                            2 an error (a message on stderr naming the file, line, word and rule; nothing \
-                           on stdout). A closed output pipe ends the command quietly with status 0.";
+                           on stdout). A closed output pipe ends the command quietly with status 0, \
+                           except for check, whose status is its verdict even then.";
 
 #[derive(Parser)]
 #[command(
@@ -60,6 +61,11 @@ enum Command {
         /// of moves (`.csv`; see the README for the columns).
         #[arg(long, value_name = "TRACE")]
         trace: PathBuf,
+        /// The trace's format [default: by its extension: `.csv` a CSV,
+        /// `.canon` rs274's canonical output, anything else nc]. Needed for a
+        /// CSV or canonical trace on standard input (`--trace -`).
+        #[arg(long, value_enum, value_name = "FORMAT")]
+        trace_format: Option<TraceFormatArg>,
         /// Largest difference, in least increments, still counted as equal.
         #[arg(long, default_value_t = 0)]
         tolerance: u64,
@@ -199,6 +205,16 @@ enum ReportFormat {
 }
 
 #[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
+enum TraceFormatArg {
+    /// An expanded program: plain G00/G01/G02/G03/G32 (G33) blocks.
+    Nc,
+    /// A CSV of moves with a header (see the README).
+    Csv,
+    /// LinuxCNC's canonical output (`rs274 -g`), with --profile linuxcnc.
+    Canon,
+}
+
+#[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
 enum FormatArg {
     Nc,
     Json,
@@ -211,10 +227,18 @@ fn main() -> ExitCode {
         Ok(code) => ExitCode::from(code),
         Err(Failure::BrokenPipe) => ExitCode::SUCCESS,
         Err(Failure::Message(msg)) => {
-            eprintln!("cycleref: {msg}");
+            warn(&msg);
             ExitCode::from(2)
         }
     }
+}
+
+/// Writes `cycleref: {msg}` on standard error. A standard error that
+/// cannot be written (closed, or a full disk) loses the message, never the
+/// exit status: `eprintln!` would panic (exit 101).
+fn warn(msg: &str) {
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(err, "cycleref: {msg}").and_then(|()| err.flush());
 }
 
 /// Writes `text` on standard output.
@@ -273,18 +297,31 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             std::fs::write(&output, svg)
                 .map_err(|e| Failure::msg(format!("{}: cannot write: {e}", output.display())))?;
             if let Some(note) = note {
-                eprintln!("cycleref: {note}");
+                warn(&note);
             }
             Ok(0)
         }
-        Command::Check { common, trace, tolerance, format } => {
+        Command::Check { common, trace, trace_format, tolerance, format } => {
             let job = Job::load(&common.options())?;
-            let report = check::run(&job, &trace, tolerance)?;
-            print(&match format {
+            let trace_format = trace_format.map(|f| match f {
+                TraceFormatArg::Nc => check::TraceFormat::Nc,
+                TraceFormatArg::Csv => check::TraceFormat::Csv,
+                TraceFormatArg::Canon => check::TraceFormat::Rs274,
+            });
+            let report = check::run_as(&job, &trace, trace_format, tolerance)?;
+            // The verdict is decided before the report is written, and the
+            // exit status carries it whatever becomes of the report: a
+            // closed pipe (`check … | head -1`) stops the writing quietly
+            // and keeps the status (1 for DIFFER); any other write error
+            // (a full disk) is status 2 with its message.
+            let verdict = u8::from(!report.agree());
+            match print(&match format {
                 ReportFormat::Text => report.text(),
                 ReportFormat::Json => report.json(),
-            })?;
-            Ok(u8::from(!report.agree()))
+            }) {
+                Ok(()) | Err(Failure::BrokenPipe) => Ok(verdict),
+                Err(e) => Err(e),
+            }
         }
         Command::Vectors { count, seed, out } => {
             print(&vectors::run(count, seed, &out)?)?;

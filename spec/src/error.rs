@@ -173,3 +173,34 @@ impl std::error::Error for ProgramError {
         }
     }
 }
+
+/// How a piece of the user's text is shown in a message: control bytes
+/// escaped (a NUL or an escape sequence is never printed raw), and cut to
+/// [`SHOWN_CHARS`] characters with `…` after, so that a 50 MB word does not
+/// become a 50 MB message.
+///
+/// ```
+/// use cycleref_spec::error::shown;
+/// assert_eq!(shown("G76"), "G76");
+/// assert_eq!(shown("a\0b"), "a\\u{0}b");
+/// assert_eq!(shown(&"9".repeat(100)).chars().count(), 65);
+/// ```
+#[must_use]
+pub fn shown(text: &str) -> String {
+    let mut out = String::new();
+    for (n, c) in text.chars().enumerate() {
+        if n == SHOWN_CHARS {
+            out.push('…');
+            break;
+        }
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The longest piece of the user's text a message shows whole ([`shown`]).
+pub const SHOWN_CHARS: usize = 64;

@@ -693,6 +693,17 @@ pub fn length_word(
     to_increments(units, block, w, bare)
 }
 
+/// The program's rule for a block's axis words, shared with the trace
+/// readers: X with U, or Z with W, in one block is an error naming the
+/// incremental word (absolute and incremental words for the same axis).
+///
+/// # Errors
+///
+/// Both words of one axis, or an axis word repeated.
+pub fn check_axis_words(block: &Block<'_>) -> Result<(), ProgramError> {
+    State::axis_words(block).map(|_| ())
+}
+
 fn increment_text(units: Units) -> String {
     let unit = match units.unit {
         InputUnit::Metric => "mm",

@@ -15,7 +15,9 @@
 //! X is a radius in the program's length unit (`rs274` prints the
 //! interpreter's internal radius coordinate with four decimals, also in
 //! G7), Z in the same unit; the pitch has six decimals. Every other call
-//! is skipped. Values are kept as the exact decimals printed.
+//! is either read and checked by `check`, or one of [`SKIPPED_CALLS`]
+//! (calls that cannot move the tool), or an error. Values are kept as the
+//! exact decimals printed.
 
 use cycleref::{Motion, Move, Units, XMode};
 use rust_decimal::Decimal;
@@ -76,18 +78,78 @@ pub fn read(text: &str) -> Result<Vec<CanonMove>, CanonError> {
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         match call(raw, line)? {
-            Some(CanonCall::Motion { rapid, x, z }) => {
+            Some(CanonCall::Motion { rapid, x, z, .. }) => {
                 out.push(CanonMove { rapid, x, z, pitch: if rapid { None } else { pitch }, line });
             }
             Some(CanonCall::StartSync { pitch: p }) => pitch = Some(p),
             Some(CanonCall::StopSync) => pitch = None,
-            None => {}
+            Some(CanonCall::Arc { .. }) => {
+                return Err(CanonError { line, message: "ARC_FEED: read() takes straight moves only".into() })
+            }
+            _ => {}
         }
     }
     Ok(out)
 }
 
-/// One canonical call that [`read`] uses.
+/// The length unit of a `USE_LENGTH_UNITS` call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CanonUnits {
+    /// `CANON_UNITS_MM`.
+    Mm,
+    /// `CANON_UNITS_INCHES`.
+    Inches,
+}
+
+/// The calls that cannot move the tool nor change how a printed
+/// coordinate is read, skipped on purpose (reading R-CHECKLCNC-CALLS).
+/// Each was seen in `rs274 -g` output of LinuxCNC 2.9 (Debian's
+/// `linuxcnc-uspace`). The offsets (`SET_G5X_OFFSET`, `SET_G92_OFFSET`,
+/// `USE_TOOL_LENGTH_OFFSET`) are among them because `rs274` prints every
+/// motion in the program's own frame: after `G10 L2 P1 X0.5` or `G92 X5`
+/// it still prints the programmed coordinates (checked by hand, and by
+/// `cli/tests/check_canon.rs`).
+pub const SKIPPED_CALLS: [&str; 36] = [
+    "COMMENT",
+    "MESSAGE",
+    "ON_RESET",
+    "SET_FEED_REFERENCE",
+    "SET_FEED_RATE",
+    "SET_FEED_MODE",
+    "SET_SPINDLE_SPEED",
+    "SET_SPINDLE_MODE",
+    "START_SPINDLE_CLOCKWISE",
+    "START_SPINDLE_COUNTERCLOCKWISE",
+    "STOP_SPINDLE_TURNING",
+    "ORIENT_SPINDLE",
+    "ENABLE_FEED_OVERRIDE",
+    "DISABLE_FEED_OVERRIDE",
+    "ENABLE_SPEED_OVERRIDE",
+    "DISABLE_SPEED_OVERRIDE",
+    "ENABLE_ADAPTIVE_FEED",
+    "DISABLE_ADAPTIVE_FEED",
+    "ENABLE_FEED_HOLD",
+    "DISABLE_FEED_HOLD",
+    "FLOOD_ON",
+    "FLOOD_OFF",
+    "MIST_ON",
+    "MIST_OFF",
+    "DWELL",
+    "SELECT_TOOL",
+    "START_CHANGE",
+    "CHANGE_TOOL",
+    "USE_TOOL_LENGTH_OFFSET",
+    "SET_G5X_OFFSET",
+    "SET_G92_OFFSET",
+    "SET_MOTION_CONTROL_MODE",
+    "SET_NAIVECAM_TOLERANCE",
+    "PROGRAM_STOP",
+    "OPTIONAL_PROGRAM_STOP",
+    "PROGRAM_END",
+];
+
+/// One canonical call of `rs274`'s output. Every call is one of these or
+/// an error ([`call`]): a call that could move the tool is never skipped.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CanonCall {
     /// `STRAIGHT_TRAVERSE` (rapid) or `STRAIGHT_FEED` to X (a radius) Z.
@@ -98,6 +160,26 @@ pub enum CanonCall {
         x: Decimal,
         /// Z as printed.
         z: Decimal,
+        /// Y, A, B and C as printed (a lathe's trace keeps them where they
+        /// start).
+        others: [Decimal; 4],
+    },
+    /// `ARC_FEED` in the XZ plane (LinuxCNC's G2/G3 with G18): the end
+    /// and the centre, X as radii.
+    Arc {
+        /// X of the end (the second axis of the XZ plane), as printed.
+        x: Decimal,
+        /// Z of the end (the first axis).
+        z: Decimal,
+        /// X of the centre.
+        cx: Decimal,
+        /// Z of the centre.
+        cz: Decimal,
+        /// The rotation: -1 clockwise (G2), 1 counter-clockwise (G3);
+        /// any other value is more than one turn.
+        rotation: i64,
+        /// Y (the axis end point), A, B and C as printed.
+        others: [Decimal; 4],
     },
     /// `START_SPEED_FEED_SYNC`: the following feeds are synchronised at
     /// `pitch` per revolution along the path.
@@ -107,35 +189,121 @@ pub enum CanonCall {
     },
     /// `STOP_SPEED_FEED_SYNCH`.
     StopSync,
+    /// `USE_LENGTH_UNITS`: the unit of the coordinates that follow.
+    Units(CanonUnits),
+    /// `SET_XY_ROTATION`, in degrees.
+    Rotation(Decimal),
+    /// `SELECT_PLANE`: true for `CANON_PLANE_XZ`.
+    Plane {
+        /// The XZ plane, the only one an arc is read in.
+        xz: bool,
+    },
+    /// One of [`SKIPPED_CALLS`].
+    Skipped,
 }
 
 /// The call of one line of `rs274`'s output (`line` names it in an
-/// error), or `None` for a call [`read`] skips or a line that is no call.
+/// error), or `None` for an empty line. A line is
+/// `<sequence> N<number or .....> <CALL>(<arguments>)`.
 ///
 /// # Errors
 ///
-/// A motion or synchronisation call whose arguments are not numbers.
+/// A line of another form, a call that is neither read nor one of
+/// [`SKIPPED_CALLS`], or arguments that are not what the call takes.
+///
+/// ```
+/// use cycleref_spec::rs274::{call, CanonCall};
+/// let c = call("   10 N10    STRAIGHT_TRAVERSE(5.0000, 0.0000, 1.0000, 0.0000, 0.0000, 0.0000)", 10);
+/// assert!(matches!(c, Ok(Some(CanonCall::Motion { rapid: true, .. }))));
+/// assert!(call("   11 N..... SET_XY_ROTATION(30.0000)", 11).is_ok());
+/// assert!(call("   12 N..... TELEPORT(1)", 12).is_err());
+/// assert!(call("STRAIGHT_FEED(1, 0, 1, 0, 0, 0)", 13).is_err());
+/// ```
 pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
-    let Some(call) = raw.split("N..... ").nth(1) else { return Ok(None) };
-    let (name, rest) = call.split_once('(').unwrap_or((call, ""));
-    let args = rest.split(')').next().unwrap_or("");
+    let fail = |message: String| CanonError { line, message };
+    let text = raw.trim();
+    if text.is_empty() {
+        return Ok(None);
+    }
+    // `<sequence> N<number or .....> <call>`.
+    let form = || {
+        fail(
+            "not a line of rs274's canonical output (`<sequence> N..... CALL(arguments)`, as `rs274 -g` prints \
+             it)"
+                .into(),
+        )
+    };
+    let (seq, rest) = text.split_once(char::is_whitespace).ok_or_else(form)?;
+    let rest = rest.trim_start();
+    let (n, call) = rest.split_once(char::is_whitespace).ok_or_else(form)?;
+    if seq.is_empty()
+        || !seq.bytes().all(|b| b.is_ascii_digit())
+        || !n.starts_with('N')
+        || !n[1..].bytes().all(|b| b.is_ascii_digit() || b == b'.')
+    {
+        return Err(form());
+    }
+    let call = call.trim();
+    let (name, rest) = call.split_once('(').ok_or_else(form)?;
+    let name = name.trim();
+    let args = rest.strip_suffix(')').ok_or_else(form)?;
     let numbers = || -> Result<Vec<Decimal>, CanonError> {
+        if args.trim().is_empty() {
+            return Ok(Vec::new());
+        }
         args.split(',')
             .map(|a| {
-                a.trim().parse::<Decimal>().map_err(|e| CanonError {
-                    line,
-                    message: format!("{name}: argument `{}` is not a number ({e})", a.trim()),
+                a.trim().parse::<Decimal>().map_err(|e| {
+                    fail(format!(
+                        "{name}: argument `{}` is not a number ({e})",
+                        crate::error::shown(a.trim())
+                    ))
                 })
             })
             .collect()
     };
-    Ok(match name.trim() {
+    let count = |v: &Vec<Decimal>, want: &[usize]| {
+        if want.contains(&v.len()) {
+            Ok(())
+        } else {
+            Err(fail(format!("{name}: {} arguments, the call takes {want:?}", v.len())))
+        }
+    };
+    Ok(Some(match name {
         "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" => {
             let v = numbers()?;
-            if v.len() < 3 {
-                return Err(CanonError { line, message: format!("{name}: fewer than three coordinates") });
+            // X Y Z A B C, and U V W on machines that have them.
+            count(&v, &[6, 9])?;
+            if v.len() == 9 && v[6..].iter().any(|d| !d.is_zero()) {
+                return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
             }
-            Some(CanonCall::Motion { rapid: name.trim() == "STRAIGHT_TRAVERSE", x: v[0], z: v[2] })
+            CanonCall::Motion {
+                rapid: name == "STRAIGHT_TRAVERSE",
+                x: v[0],
+                z: v[2],
+                others: [v[1], v[3], v[4], v[5]],
+            }
+        }
+        "ARC_FEED" => {
+            // first_end, second_end, first_axis, second_axis, rotation,
+            // axis_end_point, a, b, c (and u, v, w).
+            let v = numbers()?;
+            count(&v, &[9, 12])?;
+            if v.len() == 12 && v[9..].iter().any(|d| !d.is_zero()) {
+                return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
+            }
+            let rotation = i64::try_from(v[4])
+                .ok()
+                .filter(|_| v[4].fract().is_zero())
+                .ok_or_else(|| fail(format!("{name}: rotation {} is not a whole number", v[4])))?;
+            CanonCall::Arc {
+                z: v[0],
+                x: v[1],
+                cz: v[2],
+                cx: v[3],
+                rotation,
+                others: [v[5], v[6], v[7], v[8]],
+            }
         }
         "START_SPEED_FEED_SYNC" | "START_SPEED_FEED_SYNCH" => {
             // Two arguments (pitch, velocity mode), or three with the
@@ -144,13 +312,44 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             let pitch = match v.len() {
                 2 => v[0],
                 3 => v[1],
-                _ => return Err(CanonError { line, message: format!("{name}: expected 2 or 3 arguments") }),
+                _ => return Err(fail(format!("{name}: expected 2 or 3 arguments"))),
             };
-            Some(CanonCall::StartSync { pitch })
+            if v[v.len() - 1] != Decimal::ZERO {
+                // Velocity mode: the pitch per revolution of the spindle
+                // is a constant lead only without it (G33 prints 0).
+                return Err(fail(format!(
+                    "{name}: velocity mode {}: a thread is compared at a constant pitch (0)",
+                    v[v.len() - 1]
+                )));
+            }
+            CanonCall::StartSync { pitch }
         }
-        "STOP_SPEED_FEED_SYNCH" | "STOP_SPEED_FEED_SYNC" => Some(CanonCall::StopSync),
-        _ => None,
-    })
+        "STOP_SPEED_FEED_SYNCH" | "STOP_SPEED_FEED_SYNC" => CanonCall::StopSync,
+        "USE_LENGTH_UNITS" => match args.trim() {
+            "CANON_UNITS_MM" => CanonCall::Units(CanonUnits::Mm),
+            "CANON_UNITS_INCHES" => CanonCall::Units(CanonUnits::Inches),
+            other => {
+                return Err(fail(format!(
+                    "{name}: unit `{}` (CANON_UNITS_MM or CANON_UNITS_INCHES)",
+                    crate::error::shown(other)
+                )))
+            }
+        },
+        "SET_XY_ROTATION" => {
+            let v = numbers()?;
+            count(&v, &[1])?;
+            CanonCall::Rotation(v[0])
+        }
+        "SELECT_PLANE" => CanonCall::Plane { xz: args.trim() == "CANON_PLANE_XZ" },
+        skipped if SKIPPED_CALLS.contains(&skipped) => CanonCall::Skipped,
+        other => {
+            return Err(fail(format!(
+                "the call `{}` is not read by the check and is not one known to leave the tool where it is \
+                 (reading R-CHECKLCNC-CALLS)",
+                crate::error::shown(other)
+            )))
+        }
+    }))
 }
 
 /// Our moves against `rs274`'s motions, call by call: the same kind

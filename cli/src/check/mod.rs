@@ -108,6 +108,13 @@ enum Context {
     G92 { line: usize, start: u16, role: Role },
 }
 
+/// The coordinate of an axis not known yet: a move made before the
+/// position is known on both axes (no G50, and an X-only first move) is
+/// kept with this for the other axis (reading R-CHECKPARTIAL). No length
+/// within the range tables is this value, so it equals only itself and is
+/// beyond every tolerance from any known coordinate.
+pub(crate) const UNKNOWN: i64 = i64::MIN;
+
 /// One move of either toolpath.
 #[derive(Clone, Copy, Debug)]
 struct Step {
@@ -188,6 +195,19 @@ pub fn overlay(
                 .into(),
         );
     }
+    // Read twice: only a regular file gives the same bytes both times (a
+    // FIFO or /dev/stdin would hang or look empty the second time).
+    match std::fs::metadata(trace) {
+        Ok(m) if m.is_file() => {}
+        Ok(_) => {
+            return Err(format!(
+            "{}: plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
+                 give a regular file, not a pipe or a device",
+            trace.display()
+        ))
+        }
+        Err(e) => return Err(format!("{}: {e}", trace.display())),
+    }
     let (name, source) = open_trace(trace)?;
     let widened: Vec<(usize, usize)> = cycles
         .iter()
@@ -219,7 +239,7 @@ pub fn overlay(
         }
     }
     // Where they diverge: the comparison `check` makes, at tolerance 0.
-    let marks = compare_file(job, trace, units, 0)?.marks();
+    let marks = compare_file(job, trace, format_of(trace), units, 0)?.marks();
     let lines = cycles.iter().map(|&(line, _, _)| line).collect();
     Ok(crate::plot::Overlay { name, per_cycle, lines, dropped, marks })
 }
@@ -243,12 +263,29 @@ pub enum TraceFormat {
 ///
 /// The program's first error, or the trace's, with its line.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
+    run_as(job, trace, None, tolerance)
+}
+
+/// [`run`] with the trace's format given (`--trace-format`); `None`: by the
+/// file's extension (`.csv`, `.canon`, anything else an expanded program).
+/// Standard input (`-`) can be any of the three when the format is given.
+///
+/// # Errors
+///
+/// The program's first error, or the trace's, with its line.
+pub fn run_as(
+    job: &Job,
+    trace: &Path,
+    format: Option<TraceFormat>,
+    tolerance: u64,
+) -> Result<Report, String> {
     if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
         job.validate()?;
         return Err("the program and the trace cannot both come from standard input".into());
     }
     let units = job.units()?;
-    compare_file(job, trace, units, tolerance).map_err(|e| program_error_first(job, e))
+    let format = format.unwrap_or_else(|| format_of(trace));
+    compare_file(job, trace, format, units, tolerance).map_err(|e| program_error_first(job, e))
 }
 
 /// `check` in one phase (reading R-STREAM): its report is written only
@@ -267,9 +304,15 @@ fn program_error_first(job: &Job, e: String) -> String {
 }
 
 /// What [`run`] does once it has the program's `units`.
-fn compare_file(job: &Job, trace: &Path, units: Units, tolerance: u64) -> Result<Report, String> {
+fn compare_file(
+    job: &Job,
+    trace: &Path,
+    format: TraceFormat,
+    units: Units,
+    tolerance: u64,
+) -> Result<Report, String> {
     let (name, source) = open_trace(trace)?;
-    compare_streams(job, source, format_of(trace), units, tolerance).map_err(|e| match e {
+    compare_streams(job, source, format, units, tolerance).map_err(|e| match e {
         StreamError::Ours(e) => e,
         StreamError::Theirs(e) => format!("{name}: {e}"),
     })

@@ -17,7 +17,7 @@ use cycleref_spec::reader::{length_word, q_word, Item, MotionMode};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
-use super::{Context, Kind, Step};
+use super::{Context, Kind, Step, UNKNOWN};
 use crate::job::{Items, Job};
 
 /// G33's K as a lead: > 0, at most six decimals, kept with the fewest
@@ -289,13 +289,28 @@ impl<'m> Tracker<'m> {
                 }
             }
         }
+        if !self.linuxcnc {
+            // The program's own rule (one home: the reader): X with U, or Z
+            // with W, is an error, in a trace as in a program.
+            cycleref_spec::reader::check_axis_words(b).map_err(pe)?;
+        }
         let coord = |abs: char, inc: char, cur: Option<i64>| -> Result<Option<i64>, String> {
             if let Some(w) = b.get(abs).map_err(pe)? {
                 return Ok(Some(length_word(self.machine, self.units, b, w).map_err(pe)?));
             }
             if let Some(w) = b.get(inc).map_err(pe)? {
                 let d = length_word(self.machine, self.units, b, w).map_err(pe)?;
-                return Ok(cur.map(|c| c + d));
+                // An incremental word needs the position, as in a program
+                // (the reader's PositionUnknown).
+                let Some(c) = cur else {
+                    return Err(at(
+                        b,
+                        Some(w),
+                        "the trace moves by an incremental word before its start point is known: give a G50 \
+                         or a first G00 X Z",
+                    ));
+                };
+                return Ok(Some(c + d));
             }
             Ok(cur)
         };
@@ -315,13 +330,13 @@ impl<'m> Tracker<'m> {
         }
         let from = (self.x, self.z);
         (self.x, self.z) = (x, z);
-        let (Some(x), Some(z)) = (x, z) else {
-            return Ok(None);
-        };
-        if from == (Some(x), Some(z)) {
+        if from == (x, z) {
             return Ok(None);
         }
-        let to = Point::new(self.held_x(x, self.x_mode), z);
+        // A move before both axes are known is kept, with the axis not yet
+        // known as `UNKNOWN` (reading R-CHECKPARTIAL): it is compared on the
+        // axis it gives, and never dropped.
+        let to = Point::new(x.map_or(UNKNOWN, |x| self.held_x(x, self.x_mode)), z.unwrap_or(UNKNOWN));
         let from = match from {
             (Some(fx), Some(fz)) => Some(Point::new(self.held_x(fx, self.x_mode), fz)),
             _ => None,
@@ -488,16 +503,21 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                 let x0 = i128::from(c.start.x);
                 let peak = f * (x0 - sigma * i128::from(c.peak_offset.abs()));
                 let root = f * (x0 - sigma * i128::from(c.peak_offset.abs() + c.full_depth));
+                // Streamed: the span of the thread moves' Z, in constant
+                // memory whatever the number of passes.
                 let mut prev = c.start;
-                let mut zs: Vec<(i128, i128)> = Vec::new();
+                let mut span: Option<(i128, i128)> = None;
                 for m in job.expand(cycle)? {
                     if matches!(m.motion, Motion::Thread { .. }) {
-                        zs.push((peak, i128::from(prev.z)));
-                        zs.push((root, i128::from(m.to.z)));
+                        for z in [i128::from(prev.z), i128::from(m.to.z)] {
+                            span = Some(span.map_or((z, z), |(lo, hi)| (lo.min(z), hi.max(z))));
+                        }
                     }
                     prev = m.to;
                 }
-                out.extend(Region::spanning(&zs));
+                if let Some((lo, hi)) = span {
+                    out.extend(Region::spanning(&[(peak, lo), (root, hi)]));
+                }
             }
             Cycle::G76(call) => {
                 let c = &call.cycle;
@@ -509,10 +529,11 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
                 // The Z where the cut nearest D starts: the thread runs from
                 // there to D (before it the tool is in the air: ours rapids
                 // to every pass start).
-                let moves: Vec<Move> = job.expand(Cycle::G76(call))?.collect();
+                // Streamed, in constant memory (the cycle may have
+                // millions of passes across its starts).
                 let mut prev = c.start;
                 let mut zs: Option<i64> = None;
-                for m in &moves {
+                for m in job.expand(Cycle::G76(call))? {
                     if let Motion::Thread { sync: true, .. } = m.motion {
                         let nearer = zs.is_none_or(|z| (prev.z - c.end.z).abs() < (z - c.end.z).abs());
                         if nearer {
@@ -527,8 +548,7 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
             Cycle::G32(call) => {
                 // No thread height: the box the cut itself spans (a taper's).
                 let g = &call.g32;
-                let moves: Vec<Move> = job.expand(Cycle::G32(call))?.collect();
-                if let Some(cut) = moves.iter().find(|m| m.role == Role::Cut) {
+                if let Some(cut) = job.expand(Cycle::G32(call))?.find(|m| m.role == Role::Cut) {
                     let s = g.start;
                     out.extend(Region::spanning(&[
                         (i128::from(s.x), i128::from(s.z)),

@@ -134,7 +134,8 @@ impl Report {
     }
 
     fn point(&self, p: Point) -> String {
-        format!("X{} Z{}", fixed(p.x, self.units), fixed(p.z, self.units))
+        let axis = |v: i64| if v == super::UNKNOWN { "?".to_string() } else { fixed(v, self.units) };
+        format!("X{} Z{}", axis(p.x), axis(p.z))
     }
 
     fn where_ours(&self, s: &Step) -> String {
@@ -315,10 +316,12 @@ impl Report {
     }
 
     fn step_json(&self, s: &Step) -> Value {
+        // An axis not known yet (R-CHECKPARTIAL) is null.
+        let axis = |v: i64| if v == super::UNKNOWN { Value::Null } else { json!(fixed(v, self.units)) };
         let mut v = json!({
             "motion": s.kind.name(),
-            "x": fixed(s.to.x, self.units),
-            "z": fixed(s.to.z, self.units),
+            "x": axis(s.to.x),
+            "z": axis(s.to.z),
         });
         if let Some(c) = s.centre {
             v["centre"] = json!({"x": fixed(c.x, self.units), "z": fixed(c.z, self.units)});

@@ -8,9 +8,10 @@ use std::io::BufRead;
 use std::path::Path;
 
 use cycleref::units::MAX_LENGTH;
-use cycleref::{Lead, LeadWord, Point, StartAngle, Units};
+use cycleref::{InputUnit, Lead, LeadWord, Point, StartAngle, Units};
 use cycleref_spec::lex::Lexer;
 use cycleref_spec::profile::Dialect;
+use cycleref_spec::rs274::{CanonCall, CanonUnits};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
@@ -115,9 +116,19 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             if self.line == 1 {
                 text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
             }
+            // A CSV header read as a program: say how to read it as a CSV.
+            let hint = |e: String| {
+                let header =
+                    text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
+                if header {
+                    format!("{e} (this looks like a CSV header: pass --trace-format csv)")
+                } else {
+                    e
+                }
+            };
             for b in Lexer::at_line(text, self.line) {
-                let b = b.map_err(|e| e.to_string())?;
-                if let Some(s) = self.tracker.block(&b)? {
+                let b = b.map_err(|e| hint(e.to_string()))?;
+                if let Some(s) = self.tracker.block(&b).map_err(hint)? {
                     self.ready.push_back(s);
                 }
             }
@@ -412,10 +423,16 @@ pub(super) fn format_of(trace: &Path) -> TraceFormat {
 
 /// The vendor's toolpath from LinuxCNC's canonical output (reading
 /// R-CHECKLCNC): `STRAIGHT_TRAVERSE` is a rapid, `STRAIGHT_FEED` a feed,
-/// or a thread move at the pitch of the `START_SPEED_FEED_SYNC` in force;
-/// synchronisation starts at a thread move that follows no thread move
-/// (LinuxCNC's planner waits for the index only then). X is printed as a
-/// radius: the check holds it as a diameter on this profile.
+/// or a thread move at the pitch of the `START_SPEED_FEED_SYNC` in force,
+/// `ARC_FEED` an arc; synchronisation starts at a thread move that follows
+/// no thread move (LinuxCNC's planner waits for the index only then). X is
+/// printed as a radius: the check holds it as a diameter on this profile.
+///
+/// Read strictly (reading R-CHECKLCNC-CALLS): every call is read and
+/// checked, or one of `rs274::SKIPPED_CALLS`, or an error naming the line
+/// and the call. The length unit in force at a motion must be the
+/// program's, the XY rotation 0, an arc in the XZ plane, and Y, A, B and C
+/// where the first motion has them.
 struct CanonTrace<'t> {
     source: Box<dyn BufRead + 't>,
     buf: Vec<u8>,
@@ -424,9 +441,33 @@ struct CanonTrace<'t> {
     pitch: Option<Lead>,
     in_thread: bool,
     here: Option<Point>,
+    /// The unit of `USE_LENGTH_UNITS` in force (rs274 starts in mm).
+    length_units: CanonUnits,
+    /// `SET_XY_ROTATION` in force.
+    rotation: Decimal,
+    /// `SELECT_PLANE` in force is XZ.
+    plane_xz: bool,
+    /// Y, A, B, C of the first motion: every later one keeps them.
+    others: Option<[Decimal; 4]>,
 }
 
 impl CanonTrace<'_> {
+    fn new<'t>(source: Box<dyn BufRead + 't>, units: Units) -> CanonTrace<'t> {
+        CanonTrace {
+            source,
+            buf: Vec::new(),
+            line: 0,
+            units,
+            pitch: None,
+            in_thread: false,
+            here: None,
+            length_units: CanonUnits::Mm,
+            rotation: Decimal::ZERO,
+            plane_xz: true,
+            others: None,
+        }
+    }
+
     /// A printed length in increments (X doubled: a diameter).
     fn increments(&self, v: Decimal, factor: i64, what: &str) -> Result<i64, String> {
         let scaled = v
@@ -439,6 +480,53 @@ impl CanonTrace<'_> {
             .ok_or_else(|| format!("line {}: {what} {v} is beyond the range table", self.line))
     }
 
+    /// What every motion must meet: the program's unit, no rotation, and
+    /// the other axes where they started.
+    fn motion_frame(&mut self, name: &str, others: [Decimal; 4]) -> Result<(), String> {
+        let line = self.line;
+        let program = match self.units.unit {
+            InputUnit::Metric => CanonUnits::Mm,
+            InputUnit::Inch => CanonUnits::Inches,
+        };
+        if self.length_units != program {
+            let unit = |u: CanonUnits| match u {
+                CanonUnits::Mm => "CANON_UNITS_MM",
+                CanonUnits::Inches => "CANON_UNITS_INCHES",
+            };
+            return Err(format!(
+                "line {line}: {name} in {} while the program is in {}: write the trace in the program's unit \
+                 (USE_LENGTH_UNITS)",
+                unit(self.length_units),
+                unit(program)
+            ));
+        }
+        if !self.rotation.is_zero() {
+            return Err(format!(
+                "line {line}: {name} under an XY rotation of {} degrees: a trace is compared unrotated \
+                 (SET_XY_ROTATION(0))",
+                self.rotation
+            ));
+        }
+        match self.others {
+            None => self.others = Some(others),
+            Some(first) if first == others => {}
+            Some(first) => {
+                let names = ["Y", "A", "B", "C"];
+                let (i, _) = first
+                    .iter()
+                    .zip(&others)
+                    .enumerate()
+                    .find(|(_, (a, b))| a != b)
+                    .unwrap_or((0, (&first[0], &others[0])));
+                return Err(format!(
+                    "line {line}: {name} moves {} from {} to {}: a lathe trace moves X and Z only",
+                    names[i], first[i], others[i]
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn step(&mut self) -> Result<Option<Step>, String> {
         loop {
             self.line += 1;
@@ -447,8 +535,21 @@ impl CanonTrace<'_> {
                 Some(t) => t?.to_string(),
             };
             let call = cycleref_spec::rs274::call(&text, self.line).map_err(|e| e.to_string())?;
-            match call {
-                Some(cycleref_spec::rs274::CanonCall::StartSync { pitch }) => {
+            let (kind, to, centre) = match call {
+                None | Some(CanonCall::Skipped) => continue,
+                Some(CanonCall::Units(u)) => {
+                    self.length_units = u;
+                    continue;
+                }
+                Some(CanonCall::Rotation(r)) => {
+                    self.rotation = r;
+                    continue;
+                }
+                Some(CanonCall::Plane { xz }) => {
+                    self.plane_xz = xz;
+                    continue;
+                }
+                Some(CanonCall::StartSync { pitch }) => {
                     let bad =
                         || format!("line {}: pitch {pitch} is not a lead of at most 6 decimals", self.line);
                     let mut mantissa = pitch
@@ -463,36 +564,64 @@ impl CanonTrace<'_> {
                         scale -= 1;
                     }
                     self.pitch = Some(Lead { word: LeadWord::F, mantissa, scale });
+                    continue;
                 }
-                Some(cycleref_spec::rs274::CanonCall::StopSync) => self.pitch = None,
-                Some(cycleref_spec::rs274::CanonCall::Motion { rapid, x, z }) => {
+                Some(CanonCall::StopSync) => {
+                    self.pitch = None;
+                    continue;
+                }
+                Some(CanonCall::Motion { rapid, x, z, others }) => {
+                    self.motion_frame(if rapid { "STRAIGHT_TRAVERSE" } else { "STRAIGHT_FEED" }, others)?;
                     let to = Point::new(self.increments(x, 2, "X")?, self.increments(z, 1, "Z")?);
-                    let from = self.here.replace(to);
-                    if from == Some(to) {
-                        continue;
-                    }
                     let kind = match (rapid, self.pitch) {
                         (true, _) => Kind::Rapid,
                         (false, None) => Kind::Feed,
                         (false, Some(_)) => Kind::Thread,
                     };
-                    let sync = kind == Kind::Thread && !self.in_thread;
-                    self.in_thread = kind == Kind::Thread;
-                    let lead = if kind == Kind::Thread { self.pitch } else { None };
-                    let context = Context::Source { line: self.line };
-                    return Ok(Some(Step {
-                        kind,
-                        from,
-                        to,
-                        centre: None,
-                        lead,
-                        angle: StartAngle::ZERO,
-                        sync,
-                        context,
-                    }));
+                    (kind, to, None)
                 }
-                None => {}
+                Some(CanonCall::Arc { x, z, cx, cz, rotation, others }) => {
+                    self.motion_frame("ARC_FEED", others)?;
+                    if !self.plane_xz {
+                        return Err(format!(
+                            "line {}: ARC_FEED outside the XZ plane (SELECT_PLANE(CANON_PLANE_XZ), G18)",
+                            self.line
+                        ));
+                    }
+                    if self.pitch.is_some() {
+                        return Err(format!(
+                            "line {}: ARC_FEED while synchronised: a threaded arc is not a move the check reads",
+                            self.line
+                        ));
+                    }
+                    let kind = match rotation {
+                        -1 => Kind::ArcCw,
+                        1 => Kind::ArcCcw,
+                        _ => {
+                            return Err(format!(
+                            "line {}: ARC_FEED of rotation {rotation}: an arc of more than one turn (P) is \
+                                 not a move the check reads",
+                            self.line
+                        ))
+                        }
+                    };
+                    let to = Point::new(self.increments(x, 2, "X")?, self.increments(z, 1, "Z")?);
+                    let centre = Point::new(
+                        self.increments(cx, 2, "the centre's X")?,
+                        self.increments(cz, 1, "the centre's Z")?,
+                    );
+                    (kind, to, Some(centre))
+                }
+            };
+            let from = self.here.replace(to);
+            if from == Some(to) {
+                continue;
             }
+            let sync = kind == Kind::Thread && !self.in_thread;
+            self.in_thread = kind == Kind::Thread;
+            let lead = if kind == Kind::Thread { self.pitch } else { None };
+            let context = Context::Source { line: self.line };
+            return Ok(Some(Step { kind, from, to, centre, lead, angle: StartAngle::ZERO, sync, context }));
         }
     }
 }
@@ -530,15 +659,7 @@ pub(super) fn trace_steps<'t, 'm: 't>(
         if machine.profile.dialect != Dialect::LinuxCnc {
             return Err("an rs274 trace (.canon) is LinuxCNC's: compare it with --profile linuxcnc".into());
         }
-        Box::new(CanonTrace {
-            source,
-            buf: Vec::new(),
-            line: 0,
-            units,
-            pitch: None,
-            in_thread: false,
-            here: None,
-        })
+        Box::new(CanonTrace::new(source, units))
     } else if format == TraceFormat::Csv {
         Box::new(CsvTrace::new(source, machine, units)?)
     } else {

@@ -229,6 +229,10 @@ pub const MAX_MARKS: usize = 500;
 /// The most trace points drawn over one cycle.
 pub const MAX_OVERLAY_POINTS: usize = 50_000;
 
+/// The most moves a drawn cycle may have: a drawing of more is unreadable,
+/// and its moves are held while it is drawn (about 100 bytes each).
+pub const MAX_DRAWN_MOVES: usize = 200_000;
+
 /// The most cycles `plot` draws when no `--line` picks them: beyond this
 /// a drawing is no longer a picture a person can read (and its file grows
 /// with every panel). Counted: each G76 and G75.1 cycle and each G32 block.
@@ -310,6 +314,20 @@ pub fn run(
                 return Ok(());
             }
             drawn += 1;
+            // Counted first, streamed: a cycle too long to draw is refused
+            // before any of it is held (memory stays bounded whatever the
+            // number of passes and starts).
+            let count = job.expand(cycle)?.count();
+            if count > MAX_DRAWN_MOVES {
+                return Err(format!(
+                    "{}: line {}: the {} has {count} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
+                     moves (expand and check have no such limit)",
+                    job.name,
+                    cycle.line(),
+                    cycle.code()
+                )
+                .into());
+            }
             let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
             position += moves.len();

@@ -1,0 +1,288 @@
+//! `check` never says AGREE about a toolpath that differs (issue 29): each
+//! way in which it did at 6457e19 is a test here that failed there.
+//!
+//! The expected values are worked by hand:
+//!
+//! * the verdict survives a closed pipe: a trace of
+//!   `examples/gsk988-m68x6.nc` with every lead `F6.0` changed to `F6.1`
+//!   differs at every thread move (12 per pass, a report far larger than a
+//!   pipe's buffer when repeated over many cycles), and `| head -c 1`
+//!   closes the pipe after one byte;
+//! * `G00 X80.000 U3 Z10.000` names U and X on one axis: the program
+//!   reader's error ("absolute and incremental words for the same axis");
+//! * a trace `G32 X80 F2.0` / `G00 Z10` of a program `G00 X80` / `G00 Z10`:
+//!   both first moves are made before Z is known; ours is a rapid to X80,
+//!   theirs a thread to X80: a "kind of move" (the first block was dropped
+//!   from both, and the check said AGREE, 4 = 4 moves);
+//! * LinuxCNC's canonical output of `examples/linuxcnc-m20-taper.ngc`
+//!   (printed by `rs274 -g`, held in `spec/tests/data/`) with one call
+//!   changed at a time: each is an error naming the line.
+
+mod common;
+
+use common::run;
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+
+fn example(name: &str) -> String {
+    format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    common::tmp("check-verdict", name, text)
+}
+
+/// `check` of `program` (a path) against `trace` written to `name`: the exit
+/// code and stdout + stderr.
+fn check(profile: &str, program: &str, trace: &str, name: &str, extra: &[&str]) -> (i32, String) {
+    let t = tmp(name, trace);
+    let mut args = vec!["check", "--profile", profile, "--trace", t.to_str().expect("utf-8")];
+    args.extend_from_slice(extra);
+    args.push(program);
+    let out = run(&args, None);
+    (
+        out.status.code().expect("exit code"),
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr),
+    )
+}
+
+fn expand(profile: &str, program: &str) -> String {
+    let out = run(&["expand", "--profile", profile, program], None);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+#[test]
+fn differ_is_exit_1_even_when_the_report_meets_a_closed_pipe() {
+    // 100 cycles of M68x6 with the lead wrong everywhere: 100 × 12 thread
+    // moves differ, a report of about 150 KB, larger than a pipe's buffer
+    // (64 KiB), so the write is still under way when the pipe closes.
+    let mut program = String::from("G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\n");
+    for _ in 0..100 {
+        program.push_str("G76 X60.64 Z-62 P3.680 Q1.800 F6\nG00 X80 Z10\n");
+    }
+    program.push_str("M30\n");
+    let p = tmp("pipe.nc", &program);
+    let p = p.to_str().expect("utf-8");
+    let bad = expand("gsk988", p).replace("F6.0", "F6.1");
+    let t = tmp("pipe-trace.nc", &bad);
+    let mut child = Command::new(common::BIN)
+        .args(["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), p])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("runs");
+    // Read one byte and close the pipe, as `| head -c 1` does.
+    let mut out = child.stdout.take().expect("stdout");
+    let mut one = [0_u8; 1];
+    std::io::Read::read_exact(&mut out, &mut one).expect("one byte");
+    drop(out);
+    let status = child.wait_with_output().expect("waits");
+    assert_eq!(one[0], b'D', "the report starts with DIFFER");
+    assert_eq!(status.status.code(), Some(1), "{}", String::from_utf8_lossy(&status.stderr));
+    assert!(status.stderr.is_empty(), "quiet: {}", String::from_utf8_lossy(&status.stderr));
+}
+
+#[test]
+fn a_full_disk_is_exit_2_with_a_message() {
+    if !std::path::Path::new("/dev/full").exists() {
+        return;
+    }
+    let m68 = example("gsk988-m68x6.nc");
+    let t = tmp("full-trace.nc", &expand("gsk988", &m68));
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").expect("/dev/full");
+    let out = Command::new(common::BIN)
+        .args(["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), &m68])
+        .stdout(full)
+        .stderr(Stdio::piped())
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write the output"));
+}
+
+#[test]
+fn an_error_message_on_a_full_stderr_keeps_the_status() {
+    if !std::path::Path::new("/dev/full").exists() {
+        return;
+    }
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").expect("/dev/full");
+    let out = Command::new(common::BIN)
+        .args(["expand", "/nonexistent/missing.nc"])
+        .stdout(Stdio::piped())
+        .stderr(full)
+        .output()
+        .expect("runs");
+    // Was 101: `eprintln!` panicked on the full device.
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn absolute_and_incremental_words_on_one_axis_are_refused_in_a_trace() {
+    let program = tmp("ux.nc", "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM30\n");
+    let program = program.to_str().expect("utf-8");
+    for (trace, word) in [("G00 X80.000 U3 Z10.000\n", "U3"), ("U3 X80 W5 Z10\n", "U3")] {
+        let (code, out) = check("fanuc", program, trace, "ux-trace.nc", &[]);
+        assert_eq!(code, 2, "{trace}: {out}");
+        assert!(
+            out.contains(&format!("line 1, word `{word}`"))
+                && out.contains("absolute and incremental words for the same axis"),
+            "{trace}: {out}"
+        );
+    }
+}
+
+#[test]
+fn a_move_before_the_position_is_known_is_compared_not_dropped() {
+    let program = tmp("partial.nc", "G00 X80 M3 S300\nG00 Z10\nG32 Z-20 F2\nG00 X90\nZ10\nM30\n");
+    let program = program.to_str().expect("utf-8");
+    // The same first move agrees (and the expansion reads back).
+    let (code, out) = check("fanuc", program, &expand("fanuc", program), "partial-same.nc", &[]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("AGREE: 5 moves of ours, 5 of the trace"), "{out}");
+    // A thread where ours is a rapid.
+    let trace = "G32 X80 F2.0\nG00 Z10\nG32 Z-20 F2\nG00 X90\nZ10\n";
+    let (code, out) = check("fanuc", program, trace, "partial-kind.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("X80 Z?") || out.contains("X0.080 Z?"), "the unknown Z is shown as ?: {out}");
+    // Another X before Z is known.
+    let trace = "G00 X81 M3 S300\nG00 Z10\nG32 Z-20 F2\nG00 X90\nZ10\n";
+    let (code, out) = check("fanuc", program, trace, "partial-x.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    // An incremental move before the position is known is an error.
+    let trace = "G00 U3\nG00 X80 Z10\n";
+    let (code, out) = check("fanuc", program, trace, "partial-u.nc", &[]);
+    assert_eq!(code, 2, "{out}");
+    assert!(out.contains("line 1, word `U3`") && out.contains("before its start point is known"), "{out}");
+}
+
+/// rs274's canonical output of `examples/linuxcnc-m20-taper.ngc`.
+fn m20_canon() -> String {
+    std::fs::read_to_string(format!("{}/../spec/tests/data/m20-taper.canon", env!("CARGO_MANIFEST_DIR")))
+        .expect("the canonical output")
+}
+
+fn check_canon(canon: &str, name: &str) -> (i32, String) {
+    let m20 = example("linuxcnc-m20-taper.ngc");
+    check("linuxcnc", &m20, canon, name, &["--tolerance", "1"])
+}
+
+#[test]
+fn the_canonical_output_itself_agrees() {
+    let (code, out) = check_canon(&m20_canon(), "m20.canon");
+    assert_eq!(code, 0, "{out}");
+    assert!(out.starts_with("AGREE: 104 moves of ours, 104 of the trace"), "{out}");
+}
+
+#[test]
+fn every_canonical_call_is_read_or_refused() {
+    let canon = m20_canon();
+    // Each case: a change to rs274's output, and the words of the error.
+    let cases: [(&str, &str, &str); 8] = [
+        (
+            "   10 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)",
+            "   10 N..... USE_LENGTH_UNITS(CANON_UNITS_INCHES)",
+            "in CANON_UNITS_INCHES while",
+        ),
+        ("SET_XY_ROTATION(0.0000)", "SET_XY_ROTATION(30.0000)", "XY rotation of 30.0000 degrees"),
+        (
+            "STRAIGHT_FEED(9.8500, 0.0000, -18.5644, 0.0000, 0.0000, 0.0000)",
+            "STRAIGHT_FEED(9.8500, 5.0000, -18.5644, 0.0000, 0.0000, 0.0000)",
+            "moves Y from 0.0000 to 5.0000",
+        ),
+        (
+            "STRAIGHT_FEED(9.8500, 0.0000, -18.5644, 0.0000, 0.0000, 0.0000)",
+            "STRAIGHT_FEED(9.8500, 0.0000, -18.5644, 5.0000, 0.0000, 0.0000)",
+            "moves A from 0.0000 to 5.0000",
+        ),
+        ("DISABLE_FEED_OVERRIDE()", "TELEPORT_TOOL()", "the call `TELEPORT_TOOL` is not read"),
+        (
+            "   16 N..... DISABLE_FEED_OVERRIDE()",
+            "DISABLE_FEED_OVERRIDE()",
+            "not a line of rs274's canonical output",
+        ),
+        ("START_SPEED_FEED_SYNC(1.500000,0)", "START_SPEED_FEED_SYNC(1.500000,1)", "velocity mode 1"),
+        ("SELECT_PLANE(CANON_PLANE_XZ)", "STRAIGHT_FEED(1, 2)", "2 arguments"),
+    ];
+    for (from, to, words) in cases {
+        assert!(canon.contains(from), "{from}");
+        let changed = canon.replacen(from, to, 1);
+        let (code, out) = check_canon(&changed, "changed.canon");
+        assert_eq!(code, 2, "{to}: {out}");
+        assert!(out.contains(words) && out.contains("changed.canon: line "), "{to}: {out}");
+    }
+}
+
+#[test]
+fn calls_that_cannot_move_the_tool_are_skipped() {
+    // Each of these, added before the first motion, changes nothing (their
+    // list is `rs274::SKIPPED_CALLS`, every one seen in rs274's output).
+    let canon = m20_canon();
+    for call in [
+        "COMMENT(\"x\")",
+        "MESSAGE(\" hello\")",
+        "DWELL(1.0000)",
+        "FLOOD_ON()",
+        "MIST_ON()",
+        "SELECT_TOOL(1)",
+        "CHANGE_TOOL(1)",
+        "USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 12.9794, 0.0000 0.0000 0.0000, 0.0000 0.0000 0.0000)",
+        "SET_G5X_OFFSET(1, 0.2500, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "SET_G92_OFFSET(2.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 0.010000)",
+        "PROGRAM_STOP()",
+    ] {
+        let changed = canon.replacen(
+            "   13 N..... START_SPINDLE_CLOCKWISE(0)",
+            &format!("   13 N..... START_SPINDLE_CLOCKWISE(0)\n   13 N..... {call}"),
+            1,
+        );
+        let (code, out) = check_canon(&changed, "skipped.canon");
+        assert_eq!(code, 0, "{call}: {out}");
+    }
+    // A line numbered by the program's N word is read like N.....
+    let numbered = canon.replacen("   14 N..... STRAIGHT_TRAVERSE", "   14 N10    STRAIGHT_TRAVERSE", 1);
+    assert_eq!(check_canon(&numbered, "numbered.canon").0, 0);
+}
+
+#[test]
+fn a_csv_trace_is_read_by_flag_also_from_standard_input() {
+    let program = tmp("csv.nc", "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM30\n");
+    let program = program.to_str().expect("utf-8");
+    let csv = b"motion,x,z\nrapid,80.000,10.000\n";
+    let out =
+        run(&["check", "--profile", "gsk988", "--trace", "-", "--trace-format", "csv", program], Some(csv));
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    // Named .txt, without the flag: read as a program, and the message says
+    // what to pass.
+    let t = tmp("csv.txt", std::str::from_utf8(csv).expect("utf-8"));
+    let out = run(&["check", "--profile", "gsk988", "--trace", t.to_str().expect("utf-8"), program], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("pass --trace-format csv"));
+    let out = run(
+        &[
+            "check",
+            "--profile",
+            "gsk988",
+            "--trace",
+            t.to_str().expect("utf-8"),
+            "--trace-format",
+            "csv",
+            program,
+        ],
+        None,
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn plot_refuses_a_trace_that_is_not_a_regular_file() {
+    let m68 = example("gsk988-m68x6.nc");
+    let svg = std::env::temp_dir().join(format!("cycleref-verdict-{}.svg", std::process::id()));
+    let out = run(
+        &["plot", "--profile", "gsk988", "--trace", "/dev/stdin", "-o", svg.to_str().expect("utf-8"), &m68],
+        Some(b"G00 X80 Z10\n"),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("give a regular file"));
+}
