@@ -14,6 +14,7 @@ use std::fmt;
 use std::fs::File;
 use std::io::{BufReader, IsTerminal as _, Read as _};
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 use std::time::SystemTime;
 
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
@@ -321,10 +322,22 @@ enum Text {
     /// In memory: standard input, a pipe, or a library caller's bytes.
     Held(Vec<u8>),
     /// In a regular file, read again in each phase. Its length and time of
-    /// modification when the command started: a file changed between the
-    /// phases is an error, never an output that the first phase did not
-    /// check.
-    File { path: PathBuf, len: u64, modified: Option<SystemTime> },
+    /// modification when the command started, and the digests of the
+    /// pieces of the first reading that reached the end: every later
+    /// reading compares each piece with them before it reads a block of it
+    /// (reading R-CHANGED), so a file changed between or during the phases
+    /// is an error, never an output that the first phase did not check.
+    File { path: PathBuf, len: u64, modified: Option<SystemTime>, digests: OnceLock<Vec<u64>> },
+}
+
+/// The digest of one piece of a file (SipHash with fixed keys: the same
+/// bytes give the same digest in every reading of one run).
+fn piece_digest(piece: &[u8]) -> u64 {
+    use std::hash::Hasher as _;
+    #[allow(deprecated, reason = "SipHasher is SipHash-2-4 with fixed keys, the same in every reading")]
+    let mut h = std::hash::SipHasher::new();
+    h.write(piece);
+    h.finish()
 }
 
 impl Text {
@@ -339,6 +352,7 @@ impl Text {
                 path: path.to_path_buf(),
                 len: meta.len(),
                 modified: meta.modified().ok(),
+                digests: OnceLock::new(),
             });
         }
         let mut s = Vec::new();
@@ -414,6 +428,13 @@ enum Input<'j> {
         eof: bool,
         /// The piece is finished: the next item needs the next piece.
         next: bool,
+        /// The digests of the first complete reading, to compare each piece
+        /// with, or to set when this reading is the first to end.
+        recorded: &'j OnceLock<Vec<u64>>,
+        /// The digests of this reading's pieces, while none are recorded.
+        digests: Vec<u64>,
+        /// How many pieces this reading has compared.
+        pieces: usize,
     },
 }
 
@@ -464,13 +485,22 @@ impl<'j> Items<'j> {
     fn new(text: &'j Text, machine: &'j Machine) -> Result<Items<'j>, ReadError> {
         let input = match text {
             Text::Held(bytes) => Input::Held(bytes),
-            Text::File { path, len, modified } => {
+            Text::File { path, len, modified, digests } => {
                 let file = File::open(path).map_err(ReadError::Io)?;
                 let meta = file.metadata().map_err(ReadError::Io)?;
                 if meta.len() != *len || meta.modified().ok() != *modified {
                     return Err(ReadError::Changed);
                 }
-                Input::Lines { file, buf: Vec::new(), piece: 0, eof: false, next: true }
+                Input::Lines {
+                    file,
+                    buf: Vec::new(),
+                    piece: 0,
+                    eof: false,
+                    next: true,
+                    recorded: digests,
+                    digests: Vec::new(),
+                    pieces: 0,
+                }
             }
         };
         Ok(Items { reader: LineReader::new(machine), input, ended: false })
@@ -483,10 +513,41 @@ impl<'j> Items<'j> {
             return None;
         }
         loop {
-            if let Input::Lines { file, buf, piece, eof, next: next @ true } = &mut self.input {
+            if let Input::Lines { file, buf, piece, eof, next: next @ true, recorded, digests, pieces } =
+                &mut self.input
+            {
                 match next_piece(file, buf, piece, eof) {
-                    Ok(false) => return self.end(),
-                    Ok(true) => *next = false,
+                    Ok(false) => {
+                        // Reading R-CHANGED: as many pieces as recorded (a
+                        // truncated file has fewer); or this reading is the
+                        // first complete one, and its digests are recorded.
+                        let same = match recorded.get() {
+                            Some(r) => r.len() == *pieces,
+                            None => {
+                                let _ = recorded.set(std::mem::take(digests));
+                                true
+                            }
+                        };
+                        if !same {
+                            self.ended = true;
+                            return Some(Err(ReadError::Changed));
+                        }
+                        return self.end();
+                    }
+                    Ok(true) => {
+                        *next = false;
+                        let d = piece_digest(&buf[..*piece]);
+                        match recorded.get() {
+                            // The piece before any block of it is read.
+                            Some(r) if r.get(*pieces) != Some(&d) => {
+                                self.ended = true;
+                                return Some(Err(ReadError::Changed));
+                            }
+                            Some(_) => {}
+                            None => digests.push(d),
+                        }
+                        *pieces += 1;
+                    }
                     Err(e) => {
                         self.ended = true;
                         return Some(Err(ReadError::Io(e)));

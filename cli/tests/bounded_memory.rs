@@ -411,3 +411,71 @@ fn plot_refuses_a_cycle_too_long_to_draw_before_holding_it() {
     assert!(message.contains("plot draws cycles of at most 200000 moves"), "{message}");
     assert!(p < 256 * 1024, "{p} live bytes");
 }
+
+/// A writer that changes the program's file when it is first written to
+/// (so, during the second phase), by `change`.
+struct ChangingWriter {
+    out: Vec<u8>,
+    change: Option<Box<dyn FnOnce()>>,
+}
+
+impl std::io::Write for ChangingWriter {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if let Some(change) = self.change.take() {
+            change();
+        }
+        self.out.extend_from_slice(buf);
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn a_file_changed_during_the_second_phase_is_an_error() {
+    // Issue 30, found 4: a line appended during phase 2 was expanded with
+    // exit 0, and an in-place edit of the same length was caught only
+    // after 193 MB. Each piece of the second reading is now compared with
+    // the first's before a block of it is read (reading R-CHANGED): the
+    // output is a prefix of the right one, and the command fails.
+    let right = {
+        let path = program_file(3000, "during-right");
+        let job = Job::from_file(&path, Machine::new(ProfileName::Gsk988), Engine::Impl)
+            .unwrap_or_else(|e| panic!("{}", String::from(e)));
+        let mut out = Vec::new();
+        output::expand(&job, Format::Nc, &mut out).expect("expands");
+        std::fs::remove_file(&path).expect("removes the program");
+        out
+    };
+    let appended = |path: std::path::PathBuf| -> Box<dyn FnOnce()> {
+        Box::new(move || {
+            let mut f = std::fs::OpenOptions::new().append(true).open(&path).expect("opens");
+            std::io::Write::write_all(&mut f, b"G76 X60.64 Z-6 P3.680 Q1.800 F6\n").expect("appends");
+        })
+    };
+    let edited = |path: std::path::PathBuf| -> Box<dyn FnOnce()> {
+        Box::new(move || {
+            // The same length: Z-62 of the last cycle becomes Z-61.
+            let mut text = std::fs::read(&path).expect("reads");
+            let at = text.windows(4).rposition(|w| w == b"Z-62").expect("a Z-62");
+            text[at + 3] = b'1';
+            std::fs::write(&path, text).expect("rewrites");
+        })
+    };
+    for (tag, change) in [("append", appended as fn(_) -> _), ("edit", edited)] {
+        let path = program_file(3000, tag);
+        let job = Job::from_file(&path, Machine::new(ProfileName::Gsk988), Engine::Impl)
+            .unwrap_or_else(|e| panic!("{}", String::from(e)));
+        let mut w = ChangingWriter { out: Vec::new(), change: Some(change(path.clone())) };
+        let e = output::expand(&job, Format::Nc, &mut w).expect_err("the file changed");
+        std::fs::remove_file(&path).expect("removes the program");
+        let message = String::from(e);
+        assert!(message.contains("the file changed while it was read"), "{tag}: {message}");
+        assert!(
+            w.out.len() < right.len() && right.starts_with(&w.out),
+            "{tag}: a prefix of the right output"
+        );
+    }
+}

@@ -286,3 +286,46 @@ fn plot_refuses_a_trace_that_is_not_a_regular_file() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("give a regular file"));
 }
+
+#[test]
+fn a_four_line_program_of_unbounded_work_is_refused_before_a_byte() {
+    // Issue 30, found 3: 999 999 rough + 99 finishing passes × 999 starts
+    // wrote 3.3 GB in 20 s. The budget (reading R-BUDGET) refuses it before
+    // anything is written, whatever the output format.
+    let p = tmp(
+        "l999.nc",
+        "G50 X3000 Z50 M3 S300\nG00 X2200 Z10\nG76 P990000 Q0.001 R0 L999 E1\nG76 X100 Z-62 P999.999 Q0.001 F6\nM30\n",
+    );
+    let p = p.to_str().expect("utf-8");
+    for format in ["nc", "json", "jsonl"] {
+        let started = std::time::Instant::now();
+        let out = run(&["expand", "--profile", "gsk988", "--format", format, p], None);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            e.contains("line 4") && e.contains("999097902 pass paths") && e.contains("pass limit 1000000"),
+            "{e}"
+        );
+        assert!(started.elapsed() < std::time::Duration::from_secs(10), "{:?}", started.elapsed());
+    }
+    // M68x6 at 999 starts: 4 rough + 2 finishing passes a start, 5 994
+    // pass paths (the heading says so); a parameter file's pass_limit of
+    // 5 993 refuses it with that count.
+    let m = tmp(
+        "m68-l999.nc",
+        "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1 L999\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM30\n",
+    );
+    let m = m.to_str().expect("utf-8");
+    let params = tmp("limit.toml", "pass_limit = 5993\n");
+    let out = run(&["expand", "--profile", "gsk988", "--params", params.to_str().expect("utf-8"), m], None);
+    assert_eq!(out.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert!(e.contains("the cycle cuts 5994 pass paths") && e.contains("pass limit 5993"), "{e}");
+    let params = tmp("limit.toml", "pass_limit = 5994\n");
+    let out = run(&["expand", "--profile", "gsk988", "--params", params.to_str().expect("utf-8"), m], None);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("(G76 line 4: 4 rough + 2 finish passes x 999 starts)")
+    );
+}

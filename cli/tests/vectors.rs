@@ -227,6 +227,7 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::ThreadTooShort { .. } => "thread_too_short",
         CycleError::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
         CycleError::TooManyPasses { .. } => "too_many_passes",
+        CycleError::TooMuchWork { .. } => "too_much_work",
         CycleError::WordOutOfRange { .. } => "word_out_of_range",
         CycleError::AngleOutOfRange { .. } => "angle_out_of_range",
         CycleError::NoGrooveDepth => "no_groove_depth",

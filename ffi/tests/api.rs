@@ -490,6 +490,21 @@ fn program_and_cycle_errors() {
 }
 
 #[test]
+fn a_cycle_beyond_the_pass_limit_is_refused_by_the_count_only_call() {
+    // Issue 30, found 3: with capacity 0 (count only) this ran past 60 s.
+    // (999 999 rough + 99 finishing) × 999 starts = 999 097 902 pass paths
+    // (reading R-BUDGET), above the default limit of 1 000 000.
+    let o = options(CyclerefProfile::Gsk988);
+    let program = "G50 X3000 Z50 M3 S300;\nG00 X2200 Z10;\nG76 P990000 Q0.001 R0 L999 E1;\nG76 X100 Z-62 \
+                   P999.999 Q0.001 F6;\n";
+    let started = std::time::Instant::now();
+    let (status, count, _, err) = expand_with(program.as_bytes(), &o, 0);
+    assert_eq!((status, count, err.line), (CyclerefStatus::CycleError, 0, 4));
+    assert!(err.message().contains("999097902 pass paths"), "{}", err.message());
+    assert!(started.elapsed() < std::time::Duration::from_secs(10));
+}
+
+#[test]
 #[allow(unsafe_code)]
 fn invalid_arguments() {
     let text = example("gsk988-m68x6.nc");

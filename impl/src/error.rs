@@ -267,6 +267,17 @@ pub enum CycleError {
         /// The limit.
         limit: u32,
     },
+    /// More pass paths in the whole cycle than
+    /// [`crate::g76::G76Cycle::pass_limit`] (reading R-BUDGET): G76's and
+    /// G78's (rough + finishing) × starts, LinuxCNC's rough + full-depth and
+    /// spring passes. Refused before the first move, so that no program of
+    /// a few lines can make unbounded work.
+    TooMuchWork {
+        /// The pass paths the cycle would cut, exactly.
+        pass_paths: u64,
+        /// The limit.
+        limit: u32,
+    },
     /// A G75.1 word outside the manual's range for it.
     WordOutOfRange {
         /// Which word.
@@ -433,6 +444,11 @@ impl fmt::Display for CycleError {
                 let more = if exact { "" } else { "more than " };
                 write!(f, "the cycle needs {more}{passes} rough passes, above the pass limit {limit}")
             }
+            CycleError::TooMuchWork { pass_paths, limit } => write!(
+                f,
+                "the cycle cuts {pass_paths} pass paths (rough and finishing passes, times the starts), above \
+                 the pass limit {limit} (`pass_limit` in the parameter file raises it)"
+            ),
             CycleError::WordOutOfRange { field, value, rule } => {
                 write!(f, "{} = {value} is outside its range ({rule})", field.word())
             }
@@ -516,6 +532,7 @@ impl CycleError {
             Self::ThreadTooShort { .. } => "thread_too_short",
             Self::LeadInOnXLongAxis => "lead_in_on_x_long_axis",
             Self::TooManyPasses { .. } => "too_many_passes",
+            Self::TooMuchWork { .. } => "too_much_work",
             Self::WordOutOfRange { .. } => "word_out_of_range",
             Self::AngleOutOfRange { .. } => "angle_out_of_range",
             Self::NoGrooveDepth => "no_groove_depth",

@@ -151,6 +151,13 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
     }
+    // Reading R-BUDGET: (rough + finishing) × starts, in u128 (no
+    // saturation to reason about).
+    let paths = (u128::from(passes) + u128::from(c.finishing_passes)) * u128::from(c.starts.max(1));
+    if paths > u128::from(c.pass_limit) {
+        let pass_paths = u64::try_from(paths).unwrap_or(u64::MAX);
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
     Ok(())
 }
 

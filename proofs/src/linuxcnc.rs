@@ -378,7 +378,9 @@ pub fn moves_per_pass(c: &LinuxCncG76) -> u64 {
 ///
 /// * the engine refuses the cycle with `TooManyPasses` exactly when pass
 ///   `limit + 1` would still be shallower than K (`J^p·(limit + 1)^q <
-///   K^p`, R-LIMIT), and expands every other cycle of the window;
+///   K^p`, R-LIMIT), else with `TooMuchWork` exactly when its N + 1 + H
+///   pass paths exceed the limit (R-BUDGET), and expands every other cycle
+///   of the window;
 /// * the last rough pass N is shallower than K and the next would not be
 ///   (`J^p·N^q < K^p ≤ J^p·(N + 1)^q`, a tie `δ_(N+1) = K` included:
 ///   R-LCNC-TIE), N ≥ 1 (J < K);
@@ -397,6 +399,7 @@ where
         "H = -1: no pass at full depth",
         "spring passes (H ≥ 1)",
         "refused: more rough passes than the limit",
+        "refused: more pass paths than the limit (R-BUDGET)",
         "as many rough passes as the limit",
     ]);
     let drawn = any_lcnc(d);
@@ -404,8 +407,25 @@ where
     let r = Depths::of(&drawn);
     let limit = u64::from(c.pass_limit);
     let over_limit = r.below_full(limit + 1);
+    let h = u64::try_from(i64::from(c.spring_passes) + 1).unwrap_or(0);
     let moves = match engine(&c) {
         Ok(moves) => moves,
+        Err(CycleError::TooMuchWork { pass_paths, limit: l }) => {
+            // R-BUDGET: the rough passes fit the limit, the whole cycle
+            // (N + 1 + H pass paths) does not. N found from the depths:
+            // the last n with δ_n < K (N ≤ limit, as the cycle is not over
+            // it; J < K, so N ≥ 1).
+            assert!(!over_limit, "beyond the rough limit, TooManyPasses comes first");
+            let mut n = 1_u64;
+            while n <= limit && r.below_full(n + 1) {
+                n += 1;
+            }
+            assert_eq!(l, c.pass_limit);
+            assert_eq!(pass_paths, n + h, "the pass paths are N + 1 + H");
+            assert!(pass_paths > limit, "only a cycle beyond the limit is refused");
+            cover!(true, "refused: more pass paths than the limit (R-BUDGET)");
+            return;
+        }
         Err(e) => {
             assert!(
                 over_limit && matches!(e, CycleError::TooManyPasses { .. }),
@@ -449,9 +469,9 @@ where
     assert!(rough >= 1, "J < K: at least one rough pass");
     assert!(r.below_full(rough), "the last rough pass is shallower than K");
     assert!(!r.below_full(rough + 1), "the pass after the last rough pass would not be shallower than K");
-    let h = u64::try_from(i64::from(c.spring_passes) + 1).unwrap_or(0);
     assert_eq!(full, h, "1 + H passes at full depth");
     assert_eq!(passes, rough + h, "N + 1 + H passes");
+    assert!(passes <= limit, "an expanded cycle is within the limit (R-BUDGET)");
     assert_eq!(count, passes * moves_per_pass(&c) + 1, "each pass's moves and the return");
     cover!(rough == 1, "a single rough pass");
     cover!(r.at_full(rough + 1), "the next depth equals K exactly (R-LCNC-TIE)");

@@ -231,8 +231,11 @@ fn assemble(sh: &Shape) -> G76Cycle {
     let pass_limit = match (roomy, (raw[0] >> 32) % 4) {
         (true, 0) => DEFAULT_PASS_LIMIT,
         (true, 1) => u32::MAX,
-        (true, _) => u32::try_from(pick(raw[1] >> 32, 0, 600)).unwrap(),
-        (false, _) => u32::try_from(pick(raw[1] >> 32, 0, i64::from(1200 / starts))).unwrap(),
+        // Up to 600 pass paths a start (R-BUDGET counts every start).
+        (true, _) => u32::try_from(pick(raw[1] >> 32, 0, 600 * i64::from(starts))).unwrap(),
+        // The limit counts (rough + finishing) × starts (reading
+        // R-BUDGET): at most 1 200 pass paths, whatever the starts.
+        (false, _) => u32::try_from(pick(raw[1] >> 32, 0, 1200)).unwrap(),
     };
     let finishing_passes = if starts > 8 { finishing_passes.min(2) } else { finishing_passes };
     let mut c = G76Cycle {
@@ -543,8 +546,21 @@ fn pass_limit_exceeded() {
     let err = CycleError::TooManyPasses { passes: 1000, exact: true, limit: 999 };
     assert_eq!(same(&c), Err(err));
     assert_eq!(rough_pass_count(&c), Err(err));
+    // 1000 rough passes are within a limit of 1000, but with M68x6's two
+    // finishing passes the cycle cuts 1002 pass paths (reading R-BUDGET):
+    // refused, with the exact count, until the limit is 1002.
     let c = G76Cycle { pass_limit: 1000, ..c };
+    let work = CycleError::TooMuchWork { pass_paths: 1002, limit: 1000 };
+    assert_eq!(same(&c), Err(work));
+    assert_eq!(rough_pass_count(&c), Err(work));
+    let c = G76Cycle { pass_limit: 1002, ..c };
     assert_eq!(rough_pass_count(&c), Ok(1000));
+    // Three starts: 3006 pass paths.
+    let three = G76Cycle { starts: 3, ..c };
+    assert_eq!(same(&three), Err(CycleError::TooMuchWork { pass_paths: 3006, limit: 1002 }));
+    let three = G76Cycle { pass_limit: 3006, ..three };
+    assert_eq!(rough_pass_count(&three), Ok(1000));
+    let c = G76Cycle { pass_limit: 1000, ..c };
     // D2 doubles every level but the last: 1999 passes.
     let c = G76Cycle { infeed: Infeed::LeftRight, ..c };
     assert_eq!(same(&c), Err(CycleError::TooManyPasses { passes: 1999, exact: true, limit: 1000 }));
@@ -773,6 +789,8 @@ fn long_schedule_streams() {
         first_depth: 1,
         min_cut: 0,
         starts: 3,
+        // (10^6 rough + 2 finishing) × 3 starts pass paths (R-BUDGET).
+        pass_limit: 3_000_006,
         start: Point::new(3_000_000, 10_000),
         end: Point::new(0, -5_000_000),
         ..m68x6()

@@ -210,9 +210,22 @@ fn worked_cycles() {
     let moves = same(&c).unwrap();
     let rough = moves.iter().filter(|m| m.pass.is_some_and(|p| p.kind == cycleref::PassKind::Rough)).count();
     assert_eq!(rough, 7 * 6);
-    // Limits: 7 rough passes fit a limit of 7, not of 6.
-    c.pass_limit = 7;
+    // Limits: 7 rough passes and the one at full depth (H0) are 8 pass
+    // paths (reading R-BUDGET): they fit a limit of 8; 7 holds the rough
+    // passes but not the whole cycle; 6 not even the rough passes.
+    c.pass_limit = 8;
     assert!(same(&c).is_ok());
+    c.pass_limit = 7;
+    assert!(matches!(same(&c), Err(CycleError::TooMuchWork { pass_paths: 8, limit: 7 })));
+    // H = 2^31 - 1 spring passes: 7 + 2^31 pass paths, refused before a
+    // move by both (it would be unbounded work).
+    c.pass_limit = 1_000_000;
+    c.spring_passes = i32::MAX;
+    let paths = 7 + 1 + u64::try_from(i32::MAX).unwrap();
+    assert!(
+        matches!(same(&c), Err(CycleError::TooMuchWork { pass_paths, limit: 1_000_000 }) if pass_paths == paths)
+    );
+    c.spring_passes = 0;
     c.pass_limit = 6;
     assert!(matches!(same(&c), Err(CycleError::TooManyPasses { passes: 6, exact: false, limit: 6 })));
     // A cut beyond the range table.

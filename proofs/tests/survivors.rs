@@ -291,6 +291,9 @@ fn equal_steps_count_their_levels() {
         first_depth: 3,
         depth_mode: DepthMode::Equal,
         pass_limit,
+        // No finishing pass: the whole cycle's pass paths (R-BUDGET) are
+        // its rough passes, so the rough limit's edge is what is tested.
+        finishing_passes: 0,
         ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
     };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(4)), Ok(4));
@@ -360,6 +363,9 @@ fn a_law_phase_that_ends_one_level_past_the_limit_is_counted_exactly() {
         thread_height: 60,
         first_depth: 40,
         pass_limit,
+        // No finishing pass: the whole cycle's pass paths (R-BUDGET) are
+        // its rough passes, so the rough limit's edge is what is tested.
+        finishing_passes: 0,
         ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
     };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(3)), Ok(3));
@@ -383,6 +389,9 @@ fn d2_counts_both_flanks() {
         depth_mode: DepthMode::Equal,
         infeed: Infeed::LeftRight,
         pass_limit,
+        // No finishing pass: the whole cycle's pass paths (R-BUDGET) are
+        // its rough passes, so the rough limit's edge is what is tested.
+        finishing_passes: 0,
         ..g76_cycle(Point::new(50_000, 0), Point::new(40_000, -20_000), 0, RunOut::None)
     };
     assert_eq!(cycleref::engine::g76::rough_pass_count(&c(7)), Ok(7));

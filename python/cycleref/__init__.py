@@ -186,7 +186,12 @@ def expand(
     The whole program is read and checked first; any error raises
     :class:`ProgramError` (a block the reader refuses) or
     :class:`CycleError` (a cycle's alarm) with the command's message and
-    the error's ``line``, ``word`` and ``rule``.
+    the error's ``line``, ``word`` and ``rule``. It holds every move, so a
+    program whose expansion has more than 1 000 000 moves is refused with
+    :class:`Error` before any is built: use :func:`iter_moves`, which
+    streams them. Every cycle obeys the pass limit (reading R-BUDGET): a
+    cycle of more pass paths than ``pass_limit`` raises :class:`CycleError`
+    (``rule`` ``cycle:too_much_work``).
 
     >>> cycles = cycleref.expand(program, profile="gsk988")
     >>> [(c.code, c.line, len(c.moves)) for c in cycles]

@@ -52,6 +52,11 @@ create_exception!(
 /// The most moves `iter_moves` computes in one release of the GIL.
 const BATCH: usize = 1024;
 
+/// The most moves `expand()` returns: it holds every move as Python objects
+/// (about 1 KB each), so a larger program is refused before any is built,
+/// with a message that points to `iter_moves`, which has no such limit.
+const MAX_EXPAND_MOVES: usize = 1_000_000;
+
 /// The program argument: its text, or the path of its file.
 enum Program {
     Text(Vec<u8>),
@@ -255,12 +260,30 @@ fn unit_name(u: Units) -> &'static str {
     }
 }
 
+/// Why [`expand_job`] failed.
+enum ExpandFailure {
+    /// The program's own failure (the command's), with its error.
+    Run(Failure, Option<RunError>),
+    /// More moves than [`MAX_EXPAND_MOVES`]: the message.
+    TooManyMoves(String),
+}
+
+impl ExpandFailure {
+    fn into_py(self, py: Python<'_>) -> PyErr {
+        match self {
+            ExpandFailure::Run(f, e) => run_error(py, f, e),
+            ExpandFailure::TooManyMoves(message) => Error::new_err(message),
+        }
+    }
+}
+
 /// Every cycle of `job` with its moves (both phases of the command).
-fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), (Failure, Option<RunError>)> {
-    let units = job.validate_run()?.units;
+fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), ExpandFailure> {
+    let units = job.validate_run().map_err(|(f, e)| ExpandFailure::Run(f, e))?.units;
     let mut cycles = Vec::new();
+    let mut total = 0_usize;
     job.for_each_item(
-        |f| (f, None),
+        |f| ExpandFailure::Run(f, None),
         |item| {
             let Some(cycle) = Cycle::of(item) else { return Ok(()) };
             let (params_line, from, start) = match cycle {
@@ -271,7 +294,20 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), (Failure, Option<Run
                 Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
                 Cycle::G75(c) => (Some(c.params_line), Some(c.cycle.from), c.cycle.start),
             };
-            let moves = job.expand(cycle).map_err(|f| (f, None))?.collect();
+            // Counted first, streamed: a program beyond the limit is refused
+            // before its moves are held.
+            let count = job.expand(cycle).map_err(|f| ExpandFailure::Run(f, None))?.count();
+            total += count;
+            if total > MAX_EXPAND_MOVES {
+                return Err(ExpandFailure::TooManyMoves(format!(
+                    "{}: line {}: the expansion reaches {total} moves by this {}; expand() returns at most \
+                     {MAX_EXPAND_MOVES}: use iter_moves(), which streams them",
+                    job.name,
+                    cycle.line(),
+                    cycle.code()
+                )));
+            }
+            let moves = job.expand(cycle).map_err(|f| ExpandFailure::Run(f, None))?.collect();
             cycles.push(CycleData {
                 code: cycle.code(),
                 line: cycle.line(),
@@ -305,7 +341,7 @@ fn expand<'py>(
 ) -> PyResult<Bound<'py, PyTuple>> {
     let opts = options(profile, increment, inch, radius, params, engine)?;
     let job = job(program, name, &opts)?;
-    let (units, cycles) = py.detach(|| expand_job(&job)).map_err(|(f, e)| run_error(py, f, e))?;
+    let (units, cycles) = py.detach(|| expand_job(&job)).map_err(|e| e.into_py(py))?;
     let mut out = Vec::with_capacity(cycles.len());
     for c in cycles {
         let d = c.units.decimals();
@@ -379,6 +415,8 @@ impl Stream {
 struct MoveIter {
     stream: Stream,
     ready: VecDeque<(&'static str, usize, Units, Move)>,
+    /// An error met after the moves in `ready`: raised once they are taken.
+    failed: Option<String>,
 }
 
 #[pymethods]
@@ -389,8 +427,22 @@ impl MoveIter {
 
     fn __next__<'py>(&mut self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyTuple>>> {
         if self.ready.is_empty() {
-            let (stream, ready) = (&mut self.stream, &mut self.ready);
-            py.detach(|| stream.fill(ready)).map_err(|f| PyOSError::new_err(String::from(f)))?;
+            if let Some(message) = self.failed.take() {
+                // Raised once, after the moves made before it; then the
+                // iterator is exhausted.
+                return Err(Error::new_err(message));
+            }
+            if !self.stream.ended {
+                let (stream, ready) = (&mut self.stream, &mut self.ready);
+                if let Err(f) = py.detach(|| stream.fill(ready)) {
+                    self.stream.ended = true;
+                    let message = String::from(f);
+                    if self.ready.is_empty() {
+                        return Err(Error::new_err(message));
+                    }
+                    self.failed = Some(message);
+                }
+            }
         }
         match self.ready.pop_front() {
             Some((code, line, units, m)) => move_tuple(py, code, line, &m, units).map(Some),
@@ -419,7 +471,11 @@ fn iter_moves(
     let job = job(program, name, &opts)?;
     py.detach(|| job.validate_run()).map_err(|(f, e)| run_error(py, f, e))?;
     let reading = Reading::try_new(job, |j| j.items()).map_err(|f| PyOSError::new_err(String::from(f)))?;
-    Ok(MoveIter { stream: Stream { reading, cycle: None, ended: false }, ready: VecDeque::new() })
+    Ok(MoveIter {
+        stream: Stream { reading, cycle: None, ended: false },
+        ready: VecDeque::new(),
+        failed: None,
+    })
 }
 
 /// `check`: `(agree, divergences, text report, JSON report)`.

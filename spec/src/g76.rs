@@ -253,6 +253,20 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
     }
+    check_work(c, passes)
+}
+
+/// Reading R-BUDGET: every pass path the cycle cuts, (rough + finishing) ×
+/// starts, within the pass limit, checked before any move is made.
+///
+/// Twin: `impl/src/engine/g76.rs`, `check_work`.
+fn check_work(c: &G76Cycle, rough: u64) -> Result<(), CycleError> {
+    let paths = u128::from(rough) + u128::from(c.finishing_passes);
+    let paths = paths * u128::from(c.starts.max(1));
+    if paths > u128::from(c.pass_limit) {
+        let pass_paths = u64::try_from(paths).unwrap_or(u64::MAX);
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
     Ok(())
 }
 

@@ -176,6 +176,13 @@ pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
         pass(&mut moves, &d, PassKind::Rough, u32::try_from(n).unwrap_or(u32::MAX))?;
         n += 1;
     }
+    // Reading R-BUDGET: the rough passes and the 1 + H at full depth within
+    // the pass limit, before the spring passes are made.
+    let pass_paths = u128::from(n - 1) + u128::try_from(i128::from(c.spring_passes) + 1).unwrap_or(0);
+    if pass_paths > u128::from(c.pass_limit) {
+        let pass_paths = u64::try_from(pass_paths).unwrap_or(u64::MAX);
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
     // l.5783-5790: 1 + H passes at full depth (none for H = -1).
     for m in 0..=c.spring_passes {
         pass(&mut moves, &k, PassKind::Finish, u32::try_from(m + 1).unwrap_or(u32::MAX))?;

@@ -164,7 +164,23 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
     }
+    check_work(c, passes)?;
     Ok(passes)
+}
+
+/// Reading R-BUDGET: the whole cycle's pass paths, (rough + finishing) ×
+/// starts, within the pass limit, before any move.
+///
+/// Twin: `spec/src/g76.rs`, `check_work`.
+fn check_work(c: &G76Cycle, rough: u64) -> Result<(), CycleError> {
+    // rough ≤ limit < 2^32, m < 2^32, starts < 2^32: saturating is exact
+    // below u64::MAX, and u64::MAX is above every limit.
+    let pass_paths =
+        rough.saturating_add(u64::from(c.finishing_passes)).saturating_mul(u64::from(c.starts.max(1)));
+    if pass_paths > u64::from(c.pass_limit) {
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
+    Ok(())
 }
 
 /// The number of rough passes of a cycle (D2 counts both flanks of a

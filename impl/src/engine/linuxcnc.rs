@@ -528,6 +528,12 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         }
     }
     let full = u64::try_from(i64::from(c.spring_passes) + 1).unwrap_or(0);
+    // Reading R-BUDGET: the rough passes and the 1 + H at full depth
+    // within the pass limit (H up to 2^31 would otherwise be unbounded).
+    let pass_paths = (n - 1).saturating_add(full);
+    if pass_paths > limit {
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
     let full_points = if full > 0 {
         Points::of(&mut Values::new(&words, &t, Depth::Full), &words)?
     } else {
