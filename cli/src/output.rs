@@ -75,9 +75,39 @@ fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
     })
 }
 
+/// Whether an auxiliary word of a cycle block is executed after the
+/// block's motion (reading R-AUXWORDS): the program stops and ends M00,
+/// M01, M02 and M30. Every other M, and S and T, before it.
+fn after_motion(w: &cycleref_spec::lex::Word<'_>) -> bool {
+    w.letter == 'M' && matches!(w.number().integer(), Some(0 | 1 | 2 | 30))
+}
+
+/// The auxiliary words (M, S, T) of a cycle's block that run `after` its
+/// motion or before it, in the block's order, as a block of their own
+/// (reading R-AUXWORDS): a cycle is replaced by its moves, and these words
+/// are kept where the control executes them.
+fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: bool) -> io::Result<()> {
+    let mut first = true;
+    for w in block.words.iter().filter(|w| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after) {
+        if !first {
+            out.write_all(b" ")?;
+        }
+        out.write_all(w.text().as_bytes())?;
+        first = false;
+    }
+    if first {
+        Ok(())
+    } else {
+        out.write_all(b"\n")
+    }
+}
+
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let t = &mut NcText::default();
     each_item(job, |item| {
+        if !matches!(item, Item::Source(_)) {
+            nc_aux(out, item.block(), false)?;
+        }
         match item {
             Item::Source(b) => {
                 out.write_all(&b.text)?;
@@ -97,6 +127,9 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             Item::G75(call) => nc_g75(out, t, call, moves(job, Cycle::G75(call))?)?,
             Item::G92(call) => nc_g92(out, t, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
             Item::LinuxCncG76(call) => nc_linuxcnc(out, t, call, moves(job, Cycle::LinuxCnc(call))?)?,
+        }
+        if !matches!(item, Item::Source(_)) {
+            nc_aux(out, item.block(), true)?;
         }
         Ok(())
     })

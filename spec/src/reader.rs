@@ -46,6 +46,22 @@ pub enum Item<'a> {
     LinuxCncG76(LinuxCncCall<'a>),
 }
 
+impl<'a> Item<'a> {
+    /// The block the item was read from (for a cycle of two blocks, its
+    /// second; block 1 is its own item).
+    #[must_use]
+    pub fn block(&self) -> &Block<'a> {
+        match self {
+            Item::Source(b) | Item::G76Params(b) | Item::G75Params(b) => b,
+            Item::G76(c) => &c.block,
+            Item::G32(c) => &c.block,
+            Item::G75(c) => &c.block,
+            Item::G92(c) => &c.block,
+            Item::LinuxCncG76(c) => &c.block,
+        }
+    }
+}
+
 /// One LinuxCNC G76 block of a program.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LinuxCncCall<'a> {
