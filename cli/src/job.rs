@@ -441,6 +441,25 @@ enum Input<'j> {
 /// How many bytes [`Items`] reads from a file at a time.
 pub const CHUNK: usize = 1 << 16;
 
+/// The longest line a program or trace read from a file may have (reading
+/// R-LINEEND): a longer one is an error naming it, so that memory does not
+/// grow with a line (a 1 GB line held 980 MB). No control's block is
+/// anywhere near it.
+pub const MAX_LINE: usize = 1 << 20;
+
+/// The error of [`next_piece`] for a line longer than [`MAX_LINE`]; the
+/// caller names the line.
+#[derive(Debug)]
+pub struct LineTooLong;
+
+impl fmt::Display for LineTooLong {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "the line is longer than {MAX_LINE} bytes (1 MiB), the most a line may have")
+    }
+}
+
+impl std::error::Error for LineTooLong {}
+
 /// The next piece of whole lines into `buf`, after dropping the piece
 /// before it: `Ok(false)` when the source has no more. A piece is at
 /// least [`CHUNK`] bytes read (fewer at the end), cut after its last line
@@ -456,12 +475,17 @@ pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
     // The bytes before `searched` hold no line end.
     let mut searched = 0;
     loop {
-        // The piece ends after the last line end read so far.
-        if let Some(i) = memchr::memrchr(b'\n', &buf[searched..]) {
-            *piece = searched + i + 1;
+        // The piece ends after the last line end read so far (reading
+        // R-LINEEND: LF, CR LF or a lone CR; never between CR and LF).
+        if let Some(end) = cycleref_spec::lex::last_line_end(buf, searched, *eof) {
+            *piece = end;
             return Ok(true);
         }
-        searched = buf.len();
+        // A last CR may still be a line end once the next byte is known.
+        searched = buf.len() - usize::from(buf.last() == Some(&b'\r'));
+        if buf.len() > MAX_LINE {
+            return Err(std::io::Error::new(std::io::ErrorKind::InvalidData, LineTooLong));
+        }
         if *eof {
             // The last line, without a line end.
             *piece = buf.len();
@@ -547,6 +571,15 @@ impl<'j> Items<'j> {
                             None => digests.push(d),
                         }
                         *pieces += 1;
+                    }
+                    Err(e) if e.get_ref().is_some_and(|e| e.is::<LineTooLong>()) => {
+                        self.ended = true;
+                        let e = ProgramError {
+                            line: self.reader.lines_read() + 1,
+                            word: None,
+                            kind: cycleref_spec::ErrorKind::Syntax(format!("this line: {LineTooLong}")),
+                        };
+                        return Some(Err(e.into()));
                     }
                     Err(e) => {
                         self.ended = true;

@@ -98,8 +98,8 @@ enum Command {
         /// A vendor's toolpath (as for `check`) to draw over ours.
         #[arg(long, value_name = "TRACE")]
         trace: Option<PathBuf>,
-        /// Draw only the cycle whose block is at this line (a G76 or G75.1
-        /// block, or a G32 block); repeatable. Without it, the first 24
+        /// Draw only the cycle whose block is at this line (either block
+        /// of a G76, G78 or G75.1, or a G32 or G92 block); repeatable. Without it, the first 24
         /// cycles are drawn and stderr says how many were left out.
         #[arg(long = "line", value_name = "N")]
         lines: Vec<usize>,

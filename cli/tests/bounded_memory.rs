@@ -479,3 +479,55 @@ fn a_file_changed_during_the_second_phase_is_an_error() {
         );
     }
 }
+
+#[test]
+fn cr_lf_and_crlf_are_all_line_ends_across_pieces() {
+    // Issue 30, found 5: a file with CR line ends was one line ("every
+    // message says line 1"). Reading R-LINEEND: LF, CR LF and a lone CR
+    // end a line, also where a piece of the file ends between a CR and its
+    // LF. The file read in pieces gives what the held text gives, and what
+    // the LF text gives: the same output, the same line in an error.
+    let lf = String::from_utf8(program(3000)).expect("utf-8");
+    let expanded = |bytes: &[u8], file: bool| -> (Result<(), String>, Vec<u8>) {
+        let machine = Machine::new(ProfileName::Gsk988);
+        let path = std::env::temp_dir().join(format!("cycleref-bounded-{}-cr.nc", std::process::id()));
+        let job = if file {
+            std::fs::write(&path, bytes).expect("writes the program");
+            Job::from_file(&path, machine, Engine::Impl).unwrap_or_else(|e| panic!("{}", String::from(e)))
+        } else {
+            Job::new("cr.nc", bytes.to_vec(), machine, Engine::Impl)
+        };
+        let mut out = Vec::new();
+        let r = output::expand(&job, Format::Nc, &mut out).map_err(String::from);
+        if file {
+            std::fs::remove_file(&path).expect("removes the program");
+        }
+        (r, out)
+    };
+    let lines = lf.lines().count();
+    for pad in 0..4 {
+        // Shift the text by 0 to 3 bytes so that line ends fall on every
+        // side of the 64 KiB piece boundary.
+        let padded = format!("({})\n{lf}", "x".repeat(pad));
+        let (r, want) = expanded(padded.as_bytes(), false);
+        assert!(r.is_ok() && want.len() > 100_000);
+        for end in ["\r", "\r\n"] {
+            let text = padded.replace('\n', end);
+            for file in [false, true] {
+                let (r, out) = expanded(text.as_bytes(), file);
+                assert!(r.is_ok(), "{end:?} pad {pad} file {file}: {r:?}");
+                let first_difference =
+                    out.split(|&b| b == b'\n').zip(want.split(|&b| b == b'\n')).position(|(a, b)| a != b);
+                assert!(
+                    out == want,
+                    "{end:?} pad {pad} file {file}: output line {first_difference:?} differs"
+                );
+                // An error on the last line names it.
+                let bad = format!("{text}G01 X1 X2{end}");
+                let (r, _) = expanded(bad.as_bytes(), file);
+                let e = r.expect_err("a repeated X");
+                assert!(e.contains(&format!("line {}, word `X2`", lines + 2)), "{end:?} pad {pad}: {e}");
+            }
+        }
+    }
+}

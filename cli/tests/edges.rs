@@ -254,8 +254,13 @@ fn plot_line_picks_cycles() {
     let (out, svg) = plot("two", &program, &["--line", "62", "--line", "4"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(panels(&svg), [4, 62]);
-    // A line without a cycle: G00 (line 5), G76 block 1 (line 3), past the end.
-    for line in ["5", "3", "1000"] {
+    // G76 block 1 (line 3) picks the cycle of the block 2 read with it
+    // (`params_line`), line 4 (issue 30: it said there was no G76 there).
+    let (out, svg) = plot("block1", &program, &["--line", "3"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(panels(&svg), [4]);
+    // A line without a cycle: G00 (line 5), past the end.
+    for line in ["5", "1000"] {
         let (out, svg) = plot("none", &program, &["--line", line]);
         assert_eq!(out.status.code(), Some(2), "--line {line}");
         let err = String::from_utf8_lossy(&out.stderr);

@@ -105,6 +105,32 @@ pub enum Field {
 }
 
 impl Field {
+    /// True for a value written in a cycle's block 1: G76's and G78's
+    /// P(m)(r)(a), Q(Δdmin), R(d), E and L; G75.1's X, Z, P, Q, H, D, A, B
+    /// and L. An alarm about it names block 1's line (reading R-ERRLINE).
+    #[must_use]
+    pub const fn in_block_1(self) -> bool {
+        matches!(
+            self,
+            Field::MinCut
+                | Field::FinishingAllowance
+                | Field::FinishingPasses
+                | Field::Chamfer
+                | Field::ToolAngle
+                | Field::LeadIn
+                | Field::Starts
+                | Field::GrooveStartX
+                | Field::GrooveStartZ
+                | Field::Peck
+                | Field::Step
+                | Field::GrooveDepth
+                | Field::BottomWidth
+                | Field::FlankA
+                | Field::FlankB
+                | Field::Slope
+        )
+    }
+
     /// The word as the manual writes it.
     #[must_use]
     pub const fn word(self) -> &'static str {
@@ -505,6 +531,19 @@ impl fmt::Display for CycleError {
 impl core::error::Error for CycleError {}
 
 impl CycleError {
+    /// The word whose value the alarm is about, when it is about one
+    /// (a value outside its range table or its manual's range).
+    #[must_use]
+    pub const fn field(&self) -> Option<Field> {
+        match self {
+            Self::OutOfRange { field, .. }
+            | Self::CountOutOfRange { field, .. }
+            | Self::WordOutOfRange { field, .. }
+            | Self::AngleOutOfRange { field, .. } => Some(*field),
+            _ => None,
+        }
+    }
+
     /// The alarm's stable name (`min_cut_exceeds_height`), as the
     /// conformance vectors write it after `cycle:`. A name never changes
     /// meaning; a new alarm gets a new name.

@@ -116,7 +116,9 @@ impl fmt::Display for ProgramError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "line {}", self.line)?;
         if let Some(w) = &self.word {
-            write!(f, ", word `{w}`")?;
+            // Cut and escaped: a 50 MB word or a control byte is never
+            // echoed whole or raw.
+            write!(f, ", word `{}`", shown(w))?;
         }
         write!(f, ": {}", self.kind)
     }

@@ -678,22 +678,17 @@ impl<'a> Lexer<'a> {
         self.line
     }
 
-    /// The next line, without its line end (`\n` or `\r\n`).
+    /// The next line, without its line end (`\n`, `\r\n` or a lone `\r`,
+    /// reading R-LINEEND).
     fn next_line(&mut self) -> Option<Line<'a>> {
         if self.pos >= self.src.len() {
             return None;
         }
         let start = self.pos;
         let rest = &self.src[self.pos..];
-        // memchr: a line end is found many bytes a step (a byte loop here
-        // was a sixth of the reader's time).
-        let (line, advance) = match memchr::memchr(b'\n', rest) {
-            Some(i) => (&rest[..i], i + 1),
-            None => (rest, rest.len()),
-        };
+        let (bytes, advance) = split_line(rest);
         self.pos += advance;
         self.line += 1;
-        let bytes = line.strip_suffix(b"\r").unwrap_or(line);
         // No UTF-8 check of the line as a whole: `segment` checks every
         // byte outside a comment, and a word is ASCII bytes.
         Some(Line { start, bytes })
@@ -745,7 +740,10 @@ impl<'a> Lexer<'a> {
                     pos = end;
                 }
                 b if b.is_ascii() => {
-                    return Err(syntax(format!("the character `{}`", char::from(b))));
+                    return Err(syntax(format!(
+                        "the character `{}`",
+                        crate::error::shown(&char::from(b).to_string())
+                    )));
                 }
                 _ => {
                     let rest = &line[pos..];
@@ -759,7 +757,12 @@ impl<'a> Lexer<'a> {
                     }
                     match decode(rest) {
                         Some(c) if c.is_whitespace() => pos += c.len_utf8(),
-                        Some(c) => return Err(syntax(format!("the character `{c}`"))),
+                        Some(c) => {
+                            return Err(syntax(format!(
+                                "the character `{}`",
+                                crate::error::shown(&c.to_string())
+                            )))
+                        }
                         None => {
                             return Err(ProgramError {
                                 line: line_no,
@@ -772,6 +775,47 @@ impl<'a> Lexer<'a> {
             }
         }
         Ok(Segment { end: line.len(), next: None })
+    }
+}
+
+/// The first line of `rest` without its line end, and the bytes to skip
+/// to the next line: a line ends at `\n`, `\r\n` or a `\r` not followed
+/// by `\n` (reading R-LINEEND: CR, LF and CR LF are all line ends, as the
+/// controls' editors write them).
+///
+/// ```
+/// use cycleref_spec::lex::split_line;
+/// assert_eq!(split_line(b"G00 X1\r\nG01"), (&b"G00 X1"[..], 8));
+/// assert_eq!(split_line(b"G00 X1\rG01"), (&b"G00 X1"[..], 7));
+/// assert_eq!(split_line(b"G00 X1\nG01"), (&b"G00 X1"[..], 7));
+/// assert_eq!(split_line(b"G00 X1"), (&b"G00 X1"[..], 6));
+/// ```
+#[inline]
+#[must_use]
+pub fn split_line(rest: &[u8]) -> (&[u8], usize) {
+    // memchr2: a line end is found many bytes a step (a byte loop here was
+    // a sixth of the reader's time).
+    match memchr::memchr2(b'\n', b'\r', rest) {
+        Some(i) if rest[i] == b'\r' && rest.get(i + 1) == Some(&b'\n') => (&rest[..i], i + 2),
+        Some(i) => (&rest[..i], i + 1),
+        None => (rest, rest.len()),
+    }
+}
+
+/// Where a piece of whole lines may end in `buf` (the offset after its
+/// last line end at or after `from`), or `None` when none is known yet: a
+/// `\r` as the very last byte read may be the first half of a `\r\n`, so
+/// it ends a line only at the end of the text (`eof`).
+#[must_use]
+pub fn last_line_end(buf: &[u8], from: usize, eof: bool) -> Option<usize> {
+    let mut hay = buf.get(from..)?;
+    loop {
+        let i = memchr::memrchr2(b'\n', b'\r', hay)?;
+        if hay[i] == b'\r' && from + i + 1 == buf.len() && !eof {
+            hay = &hay[..i];
+            continue;
+        }
+        return Some(from + i + 1);
     }
 }
 

@@ -85,6 +85,29 @@ impl<'r, 'a> Cycle<'r, 'a> {
         }
     }
 
+    /// The line of the block 1 whose values the cycle uses (G76, G78 and
+    /// G75.1), if any.
+    #[must_use]
+    pub fn params_line(self) -> Option<usize> {
+        match self {
+            Cycle::G76(c) => c.params_line,
+            Cycle::G75(c) => Some(c.params_line),
+            Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => None,
+        }
+    }
+
+    /// The line of the block that carries the word an alarm is about
+    /// (reading R-ERRLINE): block 1's for a value written in block 1 (G76's
+    /// P(m)(r)(a), Q(Δdmin), R(d), L, E; G75.1's X Z P Q H D A B L), else
+    /// the line of the block that runs the cycle.
+    #[must_use]
+    pub fn line_of(self, error: &CycleError) -> usize {
+        match (error.field(), self.params_line()) {
+            (Some(field), Some(line)) if field.in_block_1() => line,
+            _ => self.line(),
+        }
+    }
+
     /// The units of the cycle's lengths.
     #[must_use]
     pub fn units(self) -> Units {
@@ -259,7 +282,11 @@ impl From<ProgramError> for RunError {
 ///
 /// [`RunError::Cycle`].
 pub fn expand_at(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, RunError> {
-    expand(cycle, engine).map_err(|error| RunError::Cycle { line: cycle.line(), code: cycle.code(), error })
+    expand(cycle, engine).map_err(|error| RunError::Cycle {
+        line: cycle.line_of(&error),
+        code: cycle.code(),
+        error,
+    })
 }
 
 /// What the first phase learnt of a program that reads and expands

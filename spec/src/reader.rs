@@ -419,6 +419,24 @@ fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramEr
     ProgramError { line: block.line, word: word.map(|w| w.text().into_owned()), kind }
 }
 
+/// A cycle's alarm found when its block 2 is read, placed where the value
+/// it is about was written (reading R-ERRLINE): at block 1's line
+/// (`params_line`) for a word of block 1, else at block 2 with its word
+/// when block 2 has it.
+fn cycle_err(block: &Block<'_>, params_line: Option<usize>, e: cycleref::CycleError) -> ProgramError {
+    match (e.field(), params_line) {
+        (Some(field), Some(line)) if field.in_block_1() => {
+            ProgramError { line, word: None, kind: ErrorKind::Cycle(e) }
+        }
+        (Some(field), _) => {
+            let letter = field.word().chars().next().unwrap_or(' ');
+            let word = block.all(letter).next();
+            err(block, word, ErrorKind::Cycle(e))
+        }
+        (None, _) => err(block, None, ErrorKind::Cycle(e)),
+    }
+}
+
 /// Reads `source` with `machine`, collecting every item.
 ///
 /// This holds the whole program in memory; [`Reader`] reads it one item at
@@ -579,6 +597,13 @@ impl<'m> LineReader<'m> {
     #[must_use]
     pub fn units(&self) -> Units {
         self.state.units
+    }
+
+    /// The number of the last line of the pieces finished so far (the
+    /// next piece starts at the line after it).
+    #[must_use]
+    pub fn lines_read(&self) -> usize {
+        self.line
     }
 
     /// True once the units can no longer change (reading R-UNITS: G20/G21
@@ -1734,7 +1759,7 @@ impl State<'_> {
             run_out,
             pass_limit: self.machine.pass_limit,
         };
-        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        cycle.validate().map_err(|e| cycle_err(&block, one.line, e))?;
         self.moved = true;
         Ok(G76Call { code, params_line: one.line, block, cycle, restore })
     }
@@ -1906,7 +1931,7 @@ impl State<'_> {
             path,
             corners,
         };
-        cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
+        cycle.validate().map_err(|e| cycle_err(&block, Some(first.line), e))?;
         let restore = self.restore();
         // Step 10: the tool ends where it was before the cycle.
         self.moved = true;

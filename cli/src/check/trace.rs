@@ -100,10 +100,9 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             }
             let piece = self.buf.get(..self.piece).unwrap_or_default();
             let rest = piece.get(self.at..).unwrap_or_default();
-            let (end, next) = match memchr::memchr(b'\n', rest) {
-                Some(i) => (self.at + i, self.at + i + 1),
-                None => (piece.len(), piece.len()),
-            };
+            // LF, CR LF or a lone CR (reading R-LINEEND), as in a program.
+            let (line, advance) = cycleref_spec::lex::split_line(rest);
+            let (end, next) = (self.at + line.len(), self.at + advance);
             self.line += 1;
             if let Some(bad) = self.bad.filter(|&b| b < end) {
                 // A line end is ASCII: the line's own bytes decide, as

@@ -296,8 +296,11 @@ pub fn run(
             let wanted = if lines.is_empty() {
                 drawn < MAX_CYCLES
             } else {
+                // A cycle of two blocks is picked by either line (G76 and
+                // G78 by the block 1 whose values it uses).
                 let block1 = match cycle {
                     Cycle::G75(c) => Some(c.params_line),
+                    Cycle::G76(c) => c.params_line,
                     _ => None,
                 };
                 let mut hit = false;

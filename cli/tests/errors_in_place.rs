@@ -1,0 +1,73 @@
+//! Errors at the right place, shown safely (issue 30, found 5 and 6): each
+//! case failed at 6457e19. Expected lines and words are read off the
+//! programs by hand.
+
+mod common;
+
+use common::run;
+
+fn expand(profile: &str, name: &str, text: &[u8], extra: &[&str]) -> (i32, String, usize) {
+    let p = common::tmp("errors-in-place", name, "");
+    std::fs::write(&p, text).expect("writes");
+    let mut args = vec!["expand", "--profile", profile];
+    args.extend_from_slice(extra);
+    let path = p.to_str().expect("utf-8").to_string();
+    args.push(&path);
+    let out = run(&args, None);
+    (out.status.code().expect("status"), String::from_utf8_lossy(&out.stderr).into_owned(), out.stdout.len())
+}
+
+/// The square groove of `examples/gsk980-g75-square.nc`: block 1 at line 2,
+/// block 2 at line 3.
+fn groove(block1_extra: &str, block2: &str) -> String {
+    format!(
+        "M03 S800\nG00 X40 Z5\nG75.1 X30 Z0 P2000 Q3000 H-6 D-8{block1_extra}\n{block2}\nG00 X100 Z50\nM30\n"
+    )
+}
+
+#[test]
+fn a_g75_block_1_value_is_reported_at_block_1() {
+    let block2 = "G75.1 R0.5 V4 U0.4 W0.2 I3 J1 A0.5 D0.4 E0.3 P0011";
+    for (extra, words) in
+        [(" A0", "A(∠a) (flank angle 1) = 0.0000"), (" B95", "B(∠b) (flank angle 2) = 95.0000")]
+    {
+        let (code, err, out) = expand("gsk980", "g75.nc", groove(extra, block2).as_bytes(), &[]);
+        assert_eq!((code, out), (2, 0), "{err}");
+        assert!(err.contains("g75.nc: line 3: ") && err.contains(words), "{extra}: {err}");
+    }
+    // Q0 of block 1 (the axial step).
+    let text = groove("", block2).replace("Q3000", "Q0");
+    let (code, err, _) = expand("gsk980", "g75q.nc", text.as_bytes(), &[]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 3: Q(Δk) (axial step) = 0.000 is outside its range"), "{err}");
+}
+
+#[test]
+fn cr_only_line_ends_are_line_ends() {
+    let text = b"G50 X100 Z50\rG00 X80 Z10\rG32 Z-20 F2 M03 S500\rG00 X100\rG01 X1 X2\r";
+    let (code, err, _) = expand("gsk980", "cr.nc", text, &[]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cr.nc: line 5, word `X2`: the address appears twice"), "{err}");
+}
+
+#[test]
+fn control_bytes_are_escaped_and_long_words_cut() {
+    let (code, err, _) = expand("gsk980", "nul.nc", b"G50 X100 Z50\nG00 X1 Z1\nG01 X1\x00 Z2\n", &[]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 3: cannot read the character `\\u{0}`") && !err.contains('\0'), "{err:?}");
+    let word = format!("X1{}.0", "9".repeat(5000));
+    let text = format!("G50 X100 Z50\nG00 {word} Z10\nM30\n");
+    let (code, err, _) = expand("gsk980", "word.nc", text.as_bytes(), &[]);
+    assert_eq!(code, 2);
+    // 64 characters of the word and an ellipsis.
+    assert!(err.contains(&format!("line 2, word `{}…`", &word[..64])), "{}", &err[..200.min(err.len())]);
+    assert!(err.len() < 400, "{} bytes", err.len());
+}
+
+#[test]
+fn a_line_longer_than_the_limit_is_an_error_naming_it() {
+    let text = format!("G50 X100 Z50\nG00 X80 Z10\n({})\nM30\n", "x".repeat(3 << 20));
+    let (code, err, out) = expand("gsk980", "long.nc", text.as_bytes(), &[]);
+    assert_eq!((code, out), (2, 0));
+    assert!(err.contains("long.nc: line 3: ") && err.contains("longer than 1048576 bytes"), "{err}");
+}
