@@ -124,3 +124,147 @@ fn every_accepted_case_of_the_corpus_reads_back_as_itself_and_agrees() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(accepted >= 60 && refused >= 30, "{accepted} accepted, {refused} refused");
 }
+
+/// Every way of changing one move of `nc` (an expansion), each a new text:
+/// a coordinate's or a lead's last digit changed (one increment for the
+/// expansion's numbers), the kind of a move changed, an arc's direction
+/// flipped, a move deleted, a move repeated after the next one (the tool
+/// goes back), and a word the trace reader does not model added.
+fn mutations(nc: &str) -> Vec<(String, String)> {
+    let lines: Vec<&str> = nc.lines().collect();
+    // A line that moves: a motion G code, or a modal block of X, Z, U or W.
+    let is_move = |l: &str| {
+        !l.starts_with('(')
+            && l.split(' ').any(|w| w.starts_with(['X', 'Z', 'U', 'W']))
+            && !l.split(' ').any(|w| matches!(w, "G50" | "G04" | "G4"))
+    };
+    let moves: Vec<usize> = (0..lines.len()).filter(|&i| is_move(lines[i])).collect();
+    let with = |i: usize, new: Option<String>, extra: Option<(usize, String)>| -> String {
+        let mut out = String::new();
+        for (j, l) in lines.iter().enumerate() {
+            if j == i {
+                if let Some(n) = &new {
+                    out.push_str(n);
+                    out.push('\n');
+                }
+            } else {
+                out.push_str(l);
+                out.push('\n');
+            }
+            if let Some((k, t)) = &extra {
+                if *k == j {
+                    out.push_str(t);
+                    out.push('\n');
+                }
+            }
+        }
+        out
+    };
+    // The last digit of the number after `letter` changed by one.
+    let nudge = |line: &str, letter: char| -> Option<String> {
+        let at = line.find(&format!(" {letter}"))? + 2;
+        let end = line[at..].find(' ').map_or(line.len(), |e| at + e);
+        let last = line[..end].char_indices().rev().find(|(_, c)| c.is_ascii_digit())?.0;
+        let d = line.as_bytes()[last];
+        let new = if d == b'9' { b'8' } else { d + 1 };
+        Some(format!("{}{}{}", &line[..last], char::from(new), &line[last + 1..]))
+    };
+    let mut out = Vec::new();
+    // A sample of the moves: the first 6 and every 7th.
+    for (n, &i) in moves.iter().enumerate().filter(|(n, _)| *n < 6 || n % 7 == 0) {
+        let l = lines[i];
+        let point = |l: &str| -> Vec<Option<f64>> {
+            ['X', 'Z']
+                .iter()
+                .map(|c| {
+                    let at = l.find(&format!(" {c}"))? + 2;
+                    let end = l[at..].find(' ').map_or(l.len(), |e| at + e);
+                    l[at..end].parse::<f64>().ok()
+                })
+                .collect()
+        };
+        // A move of no length (LinuxCNC's G76 ends with one): its kind and
+        // its presence do not shape the toolpath.
+        let zero = n > 0 && point(lines[moves[n - 1]]) == point(l) && point(l).iter().all(Option::is_some);
+        for letter in ['X', 'Z', 'I', 'K'] {
+            if let Some(m) = nudge(l, letter) {
+                out.push((format!("line {} {letter}±1: {m}", i + 1), with(i, Some(m), None)));
+            }
+        }
+        if l.starts_with("G32 ") {
+            if let Some(m) = nudge(l, 'F') {
+                out.push((format!("line {} lead: {m}", i + 1), with(i, Some(m), None)));
+            }
+            out.push((format!("line {} kind", i + 1), with(i, Some(l.replacen("G32 ", "G01 ", 1)), None)));
+        }
+        if l.starts_with("G00 ") && !zero {
+            out.push((format!("line {} kind", i + 1), with(i, Some(l.replacen("G00 ", "G01 ", 1)), None)));
+        }
+        for (a, b) in [("G02 ", "G03 "), ("G03 ", "G02 ")] {
+            if l.starts_with(a) {
+                out.push((format!("line {} arc", i + 1), with(i, Some(l.replacen(a, b, 1)), None)));
+            }
+        }
+        // Deleted, unless the next move goes to the same point (then the
+        // toolpath is the same: the next one makes the move).
+        if !zero && moves.get(n + 1).is_none_or(|&next| point(lines[next]) != point(l)) {
+            out.push((format!("line {} deleted", i + 1), with(i, None, None)));
+        }
+        out.push((format!("line {} A1 added", i + 1), with(i, Some(format!("{l} A1")), None)));
+        // Repeated after the next move, when that one goes elsewhere.
+        // Only between moves to whole points (X and Z absolute), so the
+        // detour is a move; and not to a corner of the next diagonal rapid,
+        // which R-CHECKSPLIT lets a trace split (the same toolpath).
+        let whole = |l: &str| point(l).iter().all(Option::is_some);
+        if let Some(&next) = moves.get(n + 1).filter(|&&k| whole(l) && whole(lines[k])) {
+            let (p, q) = (point(l), point(lines[next]));
+            let after = moves.get(n + 2).map(|&k| point(lines[k]));
+            let corner = after
+                .as_ref()
+                .is_some_and(|r| (p[0] == r[0] && p[1] == q[1]) || (p[0] == q[0] && p[1] == r[1]));
+            if p != q && after != Some(p.clone()) && !corner {
+                out.push((
+                    format!("line {} repeated after line {}", i + 1, next + 1),
+                    with(usize::MAX, None, Some((next, l.to_string()))),
+                ));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn no_single_change_of_a_move_agrees() {
+    // Issue 29: for the corpus's accepted programs and the examples, every
+    // change of one move of the expansion is a DIFFER or an error, never
+    // AGREE (tolerance 0).
+    let dir = format!("{}/../vectors", env!("CARGO_MANIFEST_DIR"));
+    let mut programs: Vec<(String, Vec<u8>, Machine)> = Vec::new();
+    for entry in std::fs::read_dir(&dir).expect("corpus") {
+        let path = entry.expect("entry").path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
+        if !name.starts_with("case-") {
+            continue;
+        }
+        let case: Value =
+            serde_json::from_str(&std::fs::read_to_string(&path).expect("reads")).expect("json");
+        let profile: ProfileName = case["profile"].as_str().expect("profile").parse().expect("a profile");
+        let mut machine = Machine::new(profile);
+        machine.apply_toml(case["machine_toml"].as_str().expect("toml")).expect("machine");
+        programs.push((name, case["program"].as_str().expect("program").as_bytes().to_vec(), machine));
+    }
+    let (mut tried, mut programs_tried) = (0, 0);
+    for (name, text, machine) in &programs {
+        let Ok(nc) = expand(name, text, machine) else { continue };
+        programs_tried += 1;
+        let job = Job::new(name, text.clone(), machine.clone(), Engine::Impl);
+        for (what, trace) in mutations(&nc) {
+            tried += 1;
+            if let Ok(report) = check::check_bytes(&job, trace.as_bytes(), false, 0) {
+                assert!(!report.agree(), "{name}: {what}: check says AGREE");
+            }
+        }
+    }
+    eprintln!("{tried} single changes of {programs_tried} programs' expansions: none agrees");
+    assert!(programs_tried >= 60 && tried >= 3000, "{programs_tried} programs, {tried} changes");
+}

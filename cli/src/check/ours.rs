@@ -472,6 +472,20 @@ impl Region {
         Some(r)
     }
 
+    /// The box with a dimension of no extent widened by one increment to
+    /// each side (the cut line of a straight or face thread).
+    fn widened_where_flat(mut self) -> Region {
+        if self.x_lo == self.x_hi {
+            self.x_lo -= 1;
+            self.x_hi += 1;
+        }
+        if self.z_lo == self.z_hi {
+            self.z_lo -= 1;
+            self.z_hi += 1;
+        }
+        self
+    }
+
     /// True when the straight path from `p` to `q` meets the open box. Only
     /// paths along one axis are decided (a split's legs are); a diagonal
     /// gives false.
@@ -548,12 +562,19 @@ fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
             Cycle::G32(call) => {
                 // No thread height: the box the cut itself spans (a taper's).
                 let g = &call.g32;
+                // A straight thread's box has no width: it is widened by
+                // one increment across the thread (to each side), so that
+                // a rapid leg along the cut line itself (a Z-first retract
+                // dragging the tool back along the thread just cut) meets
+                // it, while our approach and retract, which end on its
+                // edges, do not.
                 if let Some(cut) = job.expand(Cycle::G32(call))?.find(|m| m.role == Role::Cut) {
                     let s = g.start;
-                    out.extend(Region::spanning(&[
+                    let region = Region::spanning(&[
                         (i128::from(s.x), i128::from(s.z)),
                         (i128::from(cut.to.x), i128::from(cut.to.z)),
-                    ]));
+                    ]);
+                    out.extend(region.map(Region::widened_where_flat));
                 }
             }
             Cycle::G92(call) => {
