@@ -268,3 +268,35 @@ fn no_single_change_of_a_move_agrees() {
     eprintln!("{tried} single changes of {programs_tried} programs' expansions: none agrees");
     assert!(programs_tried >= 60 && tried >= 3000, "{programs_tried} programs, {tried} changes");
 }
+
+#[test]
+fn the_program_ends_at_m30_and_subprograms_are_refused() {
+    // Issue 30, found 2. Reading R-PROGRAMEND: blocks after M02/M30 are
+    // not run, so not expanded, not echoed and not read (an error there is
+    // no error). Reading R-SUBPROGRAM: M98/M99 are refused with their line
+    // and word until subprograms are expanded (the call was echoed and the
+    // subprogram expanded once, in its place after M30).
+    let m = Machine::new(ProfileName::Gsk988);
+    let p = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM30\nO1000\nG76 P020560 Q0.150 R0.1\n\
+             G76 X60.64 Z-62 P3.680 Q1.800 F6\nG01 X1 X2\nM99\n";
+    assert_eq!(
+        expand("end.nc", p.as_bytes(), &m).expect("expands"),
+        "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM30\n"
+    );
+    // M30 on a cycle's block: the cycle runs, then the program ends.
+    let p = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG32 Z-20 F2 M30\nG00 X1 X2\n";
+    assert_eq!(
+        expand("g32-end.nc", p.as_bytes(), &Machine::new(ProfileName::Gsk980)).expect("expands"),
+        "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG32 X80.000 Z-20.000 F2.0\nM30\n"
+    );
+    let p = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM98 P1000\nG00 X90\nM98 P1000\nM30\nO1000\n\
+             G76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM99\n";
+    let e = expand("sub.nc", p.as_bytes(), &m).expect_err("M98 is refused");
+    assert!(e.contains("sub.nc: line 3, word `M98`: not supported: a subprogram call"), "{e}");
+    // LinuxCNC's M2 ends the program too.
+    let p = "G18 G21 G7\nM3 S500\nG0 X22 Z2\nM2\nG0 X1 X2\n";
+    assert_eq!(
+        expand("m2.ngc", p.as_bytes(), &Machine::new(ProfileName::LinuxCnc)).expect("expands"),
+        "G18 G21 G7\nM3 S500\nG0 X22 Z2\nM2\n"
+    );
+}

@@ -29,6 +29,10 @@ fn rs274_output(file: &std::path::Path) -> Vec<u8> {
     let dir = std::env::temp_dir().join(format!("cycleref-rs274-cli-{}-{call}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("tmp dir");
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    // And across processes: a lock file every caller of rs274 shares
+    // (`spec/tests/linuxcnc_rs274.rs` too).
+    let lock = std::fs::File::create(std::env::temp_dir().join("cycleref-rs274.lock")).expect("lock file");
+    lock.lock().expect("lock");
     let out = Command::new("rs274")
         .arg("-g")
         .arg(file)

@@ -358,6 +358,9 @@ struct State<'m> {
     /// LinuxCNC: the previous block with words was a G33 move, so the
     /// synchronisation runs on (R-LCNC-G33).
     lcnc_thread_run: bool,
+    /// M02 or M30 has been read: the program has ended (reading
+    /// R-PROGRAMEND).
+    program_end: bool,
 }
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
@@ -413,6 +416,22 @@ struct G75Block1 {
     flank_a: u32,
     flank_b: u32,
     slope: u32,
+}
+
+/// Reading R-SUBPROGRAM: a subprogram call or return is refused, with its
+/// line and word, until subprograms are expanded: an expansion that left
+/// the call out, or read the subprogram where it stands in the file, would
+/// not be the program the control runs.
+fn subprogram(block: &Block<'_>, w: &Word<'_>) -> ProgramError {
+    err(
+        block,
+        Some(w),
+        ErrorKind::Unsupported(
+            "a subprogram call or return (M98/M99, LinuxCNC's o-words): subprograms are not expanded yet, and \
+             an expansion without them would not be the program the control runs (reading R-SUBPROGRAM)"
+                .into(),
+        ),
+    )
 }
 
 fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramError {
@@ -585,6 +604,7 @@ impl<'m> LineReader<'m> {
                 lcnc_g76: false,
                 lcnc_g33: false,
                 lcnc_thread_run: false,
+                program_end: false,
             },
             at: None,
             line: 0,
@@ -619,7 +639,9 @@ impl<'m> LineReader<'m> {
     /// next call starts the next piece). After an error the reader yields
     /// nothing more.
     pub fn next_in<'a>(&mut self, piece: &'a [u8]) -> Option<Result<Item<'a>, ProgramError>> {
-        if self.done {
+        // Reading R-PROGRAMEND: after M02 or M30 the control runs nothing
+        // more; the blocks after it are not read.
+        if self.done || self.state.program_end {
             return None;
         }
         if !self.started {
@@ -1022,6 +1044,8 @@ impl State<'_> {
             match w.integer() {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
+                Some(98 | 99) => return Err(subprogram(block, w)),
+                Some(2 | 30) => self.program_end = true,
                 _ => {}
             }
         }

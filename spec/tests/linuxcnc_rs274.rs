@@ -162,6 +162,10 @@ fn rs274(program: &str) -> String {
     let file = dir.join("case.ngc");
     std::fs::write(&file, program).unwrap();
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    // And across processes (two test runs at once spoiled each other's
+    // output, seen as an empty one): a lock file every caller shares.
+    let lock = std::fs::File::create(std::env::temp_dir().join("cycleref-rs274.lock")).unwrap();
+    lock.lock().unwrap();
     let child = Command::new("rs274")
         .arg("-g")
         .arg(&file)
@@ -204,7 +208,7 @@ fn check(what: &str, program: &str, cycle: &LinuxCncG76) -> bool {
     let engine: Vec<_> = cycleref::expand_linuxcnc(cycle).unwrap_or_else(|e| panic!("{what}: {e}")).collect();
     assert_eq!(engine, ours, "{what}: the engine differs from the reference\n{program}");
     let out = rs274(program);
-    let canon = rs274::read(&out).unwrap();
+    let canon = rs274::read(&out).unwrap_or_else(|e| panic!("{what}: rs274's output: {e}\n{program}\n{out}"));
     // The program's G0 to the start comes first; M5 and M2 add none.
     assert!(!canon.is_empty(), "{what}: rs274 printed no motion\n{program}\n{out}");
     let canon = &canon[1..];
@@ -321,7 +325,10 @@ fn generated_g33_blocks_match_rs274() {
                 ours.extend(engine);
             }
         }
-        let canon = rs274::read(&rs274(&program)).unwrap();
+        let out = rs274(&program);
+        let canon =
+            rs274::read(&out).unwrap_or_else(|e| panic!("case {n}: rs274's output: {e}\n{program}\n{out}"));
+        assert!(!canon.is_empty(), "case {n}: rs274 printed no motion\n{program}\n{out}");
         rs274::compare(&ours, &canon[1..], units, x_mode)
             .unwrap_or_else(|e| panic!("case {n} differs from rs274: {e}\n{program}"));
     }

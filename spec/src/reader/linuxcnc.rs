@@ -82,6 +82,9 @@ impl State<'_> {
             match w.number().integer() {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
+                Some(98 | 99) => return Err(super::subprogram(&block, w)),
+                // M2 and M30 end the program (reading R-PROGRAMEND).
+                Some(2 | 30) => self.program_end = true,
                 _ => {}
             }
         }
