@@ -447,7 +447,7 @@ pub const CHUNK: usize = 1 << 16;
 /// anywhere near it.
 pub const MAX_LINE: usize = 1 << 20;
 
-/// The error of [`next_piece`] for a line longer than [`MAX_LINE`]; the
+/// The error of reading a piece of a file for a line longer than [`MAX_LINE`]; the
 /// caller names the line.
 #[derive(Debug)]
 pub struct LineTooLong;

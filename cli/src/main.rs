@@ -69,6 +69,10 @@ enum Command {
         /// Largest difference, in least increments, still counted as equal.
         #[arg(long, default_value_t = 0)]
         tolerance: u64,
+        /// Compare only the moves of the program's cycles: the trace logs
+        /// a cycle's moves, not the program's own blocks.
+        #[arg(long)]
+        cycles_only: bool,
         /// Report format.
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
@@ -301,14 +305,15 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             }
             Ok(0)
         }
-        Command::Check { common, trace, trace_format, tolerance, format } => {
+        Command::Check { common, trace, trace_format, tolerance, cycles_only, format } => {
             let job = Job::load(&common.options())?;
             let trace_format = trace_format.map(|f| match f {
                 TraceFormatArg::Nc => check::TraceFormat::Nc,
                 TraceFormatArg::Csv => check::TraceFormat::Csv,
                 TraceFormatArg::Canon => check::TraceFormat::Rs274,
             });
-            let report = check::run_as(&job, &trace, trace_format, tolerance)?;
+            let options = check::CheckOptions { format: trace_format, tolerance, cycles_only };
+            let report = check::run_as(&job, &trace, &options)?;
             // The verdict is decided before the report is written, and the
             // exit status carries it whatever becomes of the report: a
             // closed pipe (`check … | head -1`) stops the writing quietly

@@ -329,3 +329,35 @@ fn a_four_line_program_of_unbounded_work_is_refused_before_a_byte() {
         String::from_utf8_lossy(&out.stdout).contains("(G76 line 4: 4 rough + 2 finish passes x 999 starts)")
     );
 }
+
+#[test]
+fn cycles_only_compares_the_cycles_moves_and_the_extra_pass_is_the_last() {
+    // The expansion of M68x6 (43 lines): 1-4 the program's comment, O, G50
+    // and G00 to A; 5-41 the cycle (heading, pass comments, 30 moves); 42
+    // the program's G00 X100 Z50; 43 M30.
+    let m68 = example("gsk988-m68x6.nc");
+    let full = expand("gsk988", &m68);
+    let lines: Vec<&str> = full.lines().collect();
+    assert_eq!(lines.len(), 43);
+    let cycle = lines[4..41].join("\n") + "\n";
+    // A log of the cycle alone: AGREE with --cycles-only (30 = 30 moves),
+    // DIFFER without (our two G00 blocks are missing from it).
+    let (code, out) = check("gsk988", &m68, &cycle, "cycle-only.nc", &["--cycles-only"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.starts_with("AGREE: 30 moves of ours, 30 of the trace"), "{out}");
+    let (code, out) = check("gsk988", &m68, &cycle, "cycle-only.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    // A wrong pass depth in it is still found.
+    let (code, out) =
+        check("gsk988", &m68, &cycle.replace("X61.764", "X61.800"), "cycle-bad.nc", &["--cycles-only"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("rough pass 3"), "{out}");
+    // A spring pass appended after the last finishing pass (lines 37-41
+    // again, at trace lines 42-46): the extra pass named is the appended
+    // one, whose cut is trace line 43 (was: 32, the first finishing pass).
+    let extra = [&lines[..41], &lines[36..41], &lines[41..]].concat().join("\n") + "\n";
+    let (code, out) = check("gsk988", &m68, &extra, "extra.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.starts_with("DIFFER: 1 divergence"), "{out}");
+    assert!(out.contains("trace line 43: extra pass (5 moves we do not make)"), "{out}");
+}

@@ -118,9 +118,10 @@ pub(super) fn compare_streams(
     format: TraceFormat,
     units: Units,
     tolerance: u64,
+    cycles_only: bool,
 ) -> Result<Report, StreamError> {
     let tol = i64::try_from(tolerance).unwrap_or(i64::MAX);
-    let mut ours = Grouper::new(OurSteps::new(job, units).map_err(StreamError::Ours)?);
+    let mut ours = Grouper::new(OurSteps::new(job, units, cycles_only).map_err(StreamError::Ours)?);
     let steps = trace_steps(trace, format, &job.machine, units).map_err(StreamError::Theirs)?;
     let mut theirs = Grouper::new(steps);
     let mut report = Report::new(units, tolerance);
@@ -308,7 +309,9 @@ fn align(
     let mut ops = Vec::new();
     // Walking back, a missing or extra group is preferred over a match of
     // equal cost: when passes repeat (finishing passes), the one reported
-    // missing is the last, where a trace that stops early stops.
+    // missing is the last, where a trace that stops early stops, and the
+    // one reported extra is the last, the one beyond the manual's count
+    // (issue 29: an appended spring pass was named at the first).
     while i > 0 || j > 0 {
         if let Some(&(p, q)) = via[i * w + j].checked_sub(1).and_then(|k| JOINS.get(usize::from(k))) {
             ops.push(Op::Join { i: i - p, p, j: j - q, q });
@@ -317,6 +320,9 @@ fn align(
         } else if i > 0 && cost[i * w + j] == cost[(i - 1) * w + j] + 1 {
             ops.push(Op::Missing(i - 1));
             i -= 1;
+        } else if j > 0 && cost[i * w + j] == cost[i * w + j - 1] + 1 {
+            ops.push(Op::Extra(j - 1));
+            j -= 1;
         } else if i > 0
             && j > 0
             && cost[i * w + j] == cost[(i - 1) * w + j - 1] + u32::from(!eq(i - 1, j - 1))

@@ -239,7 +239,7 @@ pub fn overlay(
         }
     }
     // Where they diverge: the comparison `check` makes, at tolerance 0.
-    let marks = compare_file(job, trace, format_of(trace), units, 0)?.marks();
+    let marks = compare_file(job, trace, format_of(trace), units, 0, false)?.marks();
     let lines = cycles.iter().map(|&(line, _, _)| line).collect();
     Ok(crate::plot::Overlay { name, per_cycle, lines, dropped, marks })
 }
@@ -263,29 +263,39 @@ pub enum TraceFormat {
 ///
 /// The program's first error, or the trace's, with its line.
 pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
-    run_as(job, trace, None, tolerance)
+    run_as(job, trace, &CheckOptions { tolerance, ..CheckOptions::default() })
 }
 
-/// [`run`] with the trace's format given (`--trace-format`); `None`: by the
-/// file's extension (`.csv`, `.canon`, anything else an expanded program).
-/// Standard input (`-`) can be any of the three when the format is given.
+/// How [`run_as`] reads and compares the trace.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CheckOptions {
+    /// The trace's format (`--trace-format`); `None`: by the file's
+    /// extension (`.csv`, `.canon`, anything else an expanded program).
+    /// Standard input (`-`) can be any of the three when it is given.
+    pub format: Option<TraceFormat>,
+    /// Largest difference, in least increments, still counted as equal.
+    pub tolerance: u64,
+    /// Compare only the moves inside cycles (`--cycles-only`): the
+    /// program's own blocks are followed for the position but not
+    /// expected in the trace, for a vendor who logs only a cycle's moves
+    /// (reading R-CHECKCYCLES).
+    pub cycles_only: bool,
+}
+
+/// [`run`] with its options.
 ///
 /// # Errors
 ///
 /// The program's first error, or the trace's, with its line.
-pub fn run_as(
-    job: &Job,
-    trace: &Path,
-    format: Option<TraceFormat>,
-    tolerance: u64,
-) -> Result<Report, String> {
+pub fn run_as(job: &Job, trace: &Path, options: &CheckOptions) -> Result<Report, String> {
     if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
         job.validate()?;
         return Err("the program and the trace cannot both come from standard input".into());
     }
     let units = job.units()?;
-    let format = format.unwrap_or_else(|| format_of(trace));
-    compare_file(job, trace, format, units, tolerance).map_err(|e| program_error_first(job, e))
+    let format = options.format.unwrap_or_else(|| format_of(trace));
+    compare_file(job, trace, format, units, options.tolerance, options.cycles_only)
+        .map_err(|e| program_error_first(job, e))
 }
 
 /// `check` in one phase (reading R-STREAM): its report is written only
@@ -310,9 +320,10 @@ fn compare_file(
     format: TraceFormat,
     units: Units,
     tolerance: u64,
+    cycles_only: bool,
 ) -> Result<Report, String> {
     let (name, source) = open_trace(trace)?;
-    compare_streams(job, source, format, units, tolerance).map_err(|e| match e {
+    compare_streams(job, source, format, units, tolerance, cycles_only).map_err(|e| match e {
         StreamError::Ours(e) => e,
         StreamError::Theirs(e) => format!("{name}: {e}"),
     })
@@ -343,7 +354,7 @@ pub fn check_bytes_as(
     tolerance: u64,
 ) -> Result<Report, String> {
     let units = job.units()?;
-    compare_streams(job, Box::new(bytes), format, units, tolerance)
+    compare_streams(job, Box::new(bytes), format, units, tolerance, false)
         .map_err(|e| match e {
             StreamError::Ours(e) | StreamError::Theirs(e) => e,
         })

@@ -667,10 +667,13 @@ pub(super) struct OurSteps<'j> {
     segment: u32,
     /// The regions of the latest cycles.
     pub(super) regions: VecDeque<Vec<Region>>,
+    /// Only the cycles' moves are steps (reading R-CHECKCYCLES); the
+    /// program's own blocks only move the tracker.
+    cycles_only: bool,
 }
 
 impl<'j> OurSteps<'j> {
-    pub(super) fn new(job: &'j Job, units: Units) -> Result<OurSteps<'j>, String> {
+    pub(super) fn new(job: &'j Job, units: Units, cycles_only: bool) -> Result<OurSteps<'j>, String> {
         Ok(OurSteps {
             job,
             items: job.items()?,
@@ -678,6 +681,7 @@ impl<'j> OurSteps<'j> {
             current: None,
             segment: 0,
             regions: VecDeque::new(),
+            cycles_only,
         })
     }
 
@@ -715,13 +719,14 @@ impl<'j> OurSteps<'j> {
                 self.segment += 1;
                 continue;
             }
-            let (job, tracker, segment) = (self.job, &mut self.tracker, self.segment);
+            let (job, tracker, segment, cycles_only) =
+                (self.job, &mut self.tracker, self.segment, self.cycles_only);
             let (regions, current) = (&mut self.regions, &mut self.current);
             let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, String> {
                 let Some(cycle) = Cycle::of(item) else {
                     let Item::Source(b) = item else { return Ok(None) };
                     return match tracker.block(b) {
-                        Ok(step) => Ok(step.map(|s| (s, segment))),
+                        Ok(step) => Ok(step.filter(|_| !cycles_only).map(|s| (s, segment))),
                         Err(e) => Err(format!("{}: {e}", job.name)),
                     };
                 };
