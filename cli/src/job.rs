@@ -634,6 +634,9 @@ pub fn machine(opts: &Options) -> Result<Machine, Failure> {
         let applied =
             if flag.is_some() { machine.apply_toml_keeping_profile(&t) } else { machine.apply_toml(&t) };
         applied.map_err(|e| Failure::msg(format!("{}: {e}", p.display())))?;
+        // Reading R-PARAMS: a bad value is the file's error, named by key.
+        cycleref_spec::reader::check_parameters(&machine)
+            .map_err(|e| Failure::msg(format!("{}: {}", p.display(), e.kind)))?;
     }
     if let Some(i) = opts.increment {
         machine.increment = i;

@@ -71,3 +71,21 @@ fn a_line_longer_than_the_limit_is_an_error_naming_it() {
     assert_eq!((code, out), (2, 0));
     assert!(err.contains("long.nc: line 3: ") && err.contains("longer than 1048576 bytes"), "{err}");
 }
+
+#[test]
+fn a_bad_parameter_is_the_files_error_named_by_its_key() {
+    // Issue 30, found 5: `5142 = 9223372036854775807` was reported at the
+    // program line that first used it (and not at all when the block gave
+    // P(m) itself). Reading R-PARAMS: 5142 (m) is 1..99 on the 988TA.
+    let params = common::tmp(
+        "errors-in-place",
+        "bad.toml",
+        "profile = \"gsk988\"\n[parameters]\n5142 = 9223372036854775807\n",
+    );
+    let params = params.to_str().expect("utf-8").to_string();
+    let m68 = b"G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM30\n";
+    let (code, err, out) = expand("gsk988", "m68.nc", m68, &["--params", &params]);
+    assert_eq!((code, out), (2, 0), "{err}");
+    assert!(err.contains("bad.toml: parameter: 5142 = 9223372036854775807 is outside 1..99"), "{err}");
+    assert!(!err.contains("line"), "{err}");
+}

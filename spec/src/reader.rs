@@ -438,6 +438,31 @@ fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramEr
     ProgramError { line: block.line, word: word.map(|w| w.text().into_owned()), kind }
 }
 
+/// The count parameters of `machine` (P(m), P(a), P(r), the chamfer angle,
+/// G78's infeed and depth modes), checked when the parameter file is read
+/// by the rules a cycle applies when it reads them (reading R-PARAMS), so
+/// that a bad value is reported against the file and its key, not the
+/// first program line that happens to use it. Length parameters are
+/// checked where they are used, in the program's unit then in force.
+///
+/// # Errors
+///
+/// The first parameter outside its range, named with its key and range
+/// (the error's line is 0: it belongs to no line).
+///
+/// ```
+/// use cycleref_spec::reader::check_parameters;
+/// use cycleref_spec::{Machine, ProfileName};
+/// let mut m = Machine::new(ProfileName::Gsk988);
+/// assert!(check_parameters(&m).is_ok());
+/// m.apply_toml("[parameters]\n5142 = 100\n").unwrap();
+/// let e = check_parameters(&m).unwrap_err();
+/// assert_eq!(e.kind.to_string(), "parameter: 5142 = 100 is outside 1..99");
+/// ```
+pub fn check_parameters(machine: &Machine) -> Result<(), ProgramError> {
+    LineReader::new(machine).state.check_params()
+}
+
 /// A cycle's alarm found when its block 2 is read, placed where the value
 /// it is about was written (reading R-ERRLINE): at block 1's line
 /// (`params_line`) for a word of block 1, else at block 2 with its word
@@ -709,6 +734,25 @@ impl State<'_> {
     /// G76 block it would change, and followed by G92).
     #[allow(clippy::unnecessary_wraps, clippy::unused_self)]
     fn check_machine(&self) -> Result<(), ProgramError> {
+        Ok(())
+    }
+
+    /// The count parameters a cycle reads when its block leaves a value
+    /// out, checked by the same rules as there (reading R-PARAMS).
+    fn check_params(&self) -> Result<(), ProgramError> {
+        let profile = &self.machine.profile;
+        let p = &profile.params;
+        self.param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99)?;
+        self.param_count(p.tool_angle, 0, 99)?;
+        self.param_count(p.chamfer, 0, 99)?;
+        if let Some(n) = p.chamfer_angle {
+            self.param_count(n, 0, 89)?;
+        }
+        if let Some(g78) = profile.g78 {
+            let last = i64::try_from(g78.infeeds.len()).unwrap_or(1) - 1;
+            self.param_count(g78.infeed_param, 0, last)?;
+            self.param_count(g78.depth_mode_param, 0, 1)?;
+        }
         Ok(())
     }
 
