@@ -89,3 +89,15 @@ fn a_bad_parameter_is_the_files_error_named_by_its_key() {
     assert!(err.contains("bad.toml: parameter: 5142 = 9223372036854775807 is outside 1..99"), "{err}");
     assert!(!err.contains("line"), "{err}");
 }
+
+#[test]
+fn a_lead_with_too_many_decimals_says_so() {
+    // Issue 30, found 6: F2.1234567 said only "outside the range table".
+    let text = b"G50 X100 Z50 M3 S300\nG00 X80 Z10\nG32 Z-20 F2.1234567\n";
+    let (code, err, _) = expand("gsk980", "lead.nc", text, &[]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("line 3, word `F2.1234567`: the value is outside the range table: F 0.0001..9999 mm, with at most 6 decimals (this lead has 7)"),
+        "{err}"
+    );
+}

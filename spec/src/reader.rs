@@ -993,7 +993,14 @@ impl State<'_> {
             (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
             (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
         };
-        // Finer than 10^-6 or beyond an i128: outside the table either way.
+        // Finer than 10^-6: said so (it is no range of a table that is
+        // wrong but the decimals; issue 30 found 6).
+        if scale > MAX_LEAD_SCALE {
+            return Err(out(&format!(
+                "{range}, with at most {MAX_LEAD_SCALE} decimals (this lead has {scale})"
+            )));
+        }
+        // Beyond an i128: outside the table.
         let value = n.exact(MAX_LEAD_SCALE).ok_or_else(|| out(range))?;
         if n.negative || value < lo || value > hi || scale > MAX_LEAD_SCALE {
             return Err(out(range));
