@@ -511,12 +511,8 @@ impl CanonTrace<'_> {
             Some(first) if first == others => {}
             Some(first) => {
                 let names = ["Y", "A", "B", "C"];
-                let (i, _) = first
-                    .iter()
-                    .zip(&others)
-                    .enumerate()
-                    .find(|(_, (a, b))| a != b)
-                    .unwrap_or((0, (&first[0], &others[0])));
+                // `first != others`: some axis differs.
+                let i = (0..4).find(|&i| first[i] != others[i]).unwrap_or(0);
                 return Err(format!(
                     "line {line}: {name} moves {} from {} to {}: a lathe trace moves X and Z only",
                     names[i], first[i], others[i]
