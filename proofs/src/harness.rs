@@ -299,39 +299,101 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
     }
 }
 
-/// The passes of a move stream: each pass's first move (the approach) with
-/// the pass annotation, and the pass start Bn: where the approach ends, or
-/// with a lead-in, where the screw-in from An ends.
-struct PassView {
-    kind: PassKind,
-    flank: Flank,
-    depth: i64,
-    cut: i64,
-    start: u32,
-    bn: Point,
+/// A pass of a move stream, as [`Passes`] finds it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PassView {
+    /// Rough, finishing or single.
+    pub kind: PassKind,
+    /// The pass's number among its kind.
+    pub number: u32,
+    /// The thread start.
+    pub start: u32,
+    /// The infeed position.
+    pub flank: Flank,
+    /// The annotated depth.
+    pub depth: i64,
+    /// The annotated cut.
+    pub cut: i64,
+    /// The pass start Bn: where the pass's approach (and lead-in) end, or,
+    /// when the pass has neither (an approach of no length is dropped,
+    /// R-ZERO), where the tool stood when the pass began.
+    pub bn: Point,
+    /// Whether the pass has an approach move of its own.
+    pub approached: bool,
 }
 
-fn passes<I: Iterator<Item = Move>>(moves: I) -> Vec<PassView> {
-    let mut out = Vec::new();
-    for m in moves {
-        match (m.role, m.pass) {
-            (Role::Approach, Some(p)) => out.push(PassView {
-                kind: p.kind,
-                flank: p.flank,
-                depth: p.depth,
-                cut: p.cut,
-                start: u32::from(p.start),
-                bn: m.to,
-            }),
-            (Role::LeadIn, Some(_)) => {
-                if let Some(last) = out.last_mut() {
-                    last.bn = m.to;
+/// The passes of a move stream, found by their annotation: a pass begins
+/// with the first move whose `(kind, number, start)` differs from the
+/// previous annotated move's, whatever its role, or with an approach or
+/// lead-in that follows the current pass's cut (a pass repeated with its
+/// annotation is two passes). (Finding passes by their
+/// approach lost a pass whose approach has no length and is dropped: the
+/// counterexample of issue 32, `proofs/tests/harnesses.rs`.) Streams: one
+/// pass is held while its leading approach and lead-in are read, so a
+/// harness keeps no `Vec` of moves or passes.
+pub struct Passes<I> {
+    moves: I,
+    at: Point,
+    open: Option<PassView>,
+    leading: bool,
+}
+
+impl<I: Iterator<Item = Move>> Passes<I> {
+    /// The passes of `moves`, a cycle that starts with the tool at `start`.
+    pub fn new(moves: I, start: Point) -> Self {
+        Passes { moves, at: start, open: None, leading: false }
+    }
+}
+
+impl<I: Iterator<Item = Move>> Iterator for Passes<I> {
+    type Item = PassView;
+
+    fn next(&mut self) -> Option<PassView> {
+        for m in self.moves.by_ref() {
+            let before = self.at;
+            self.at = m.to;
+            let Some(p) = m.pass else { continue };
+            // A new pass: another annotation, or an approach or lead-in
+            // after the pass has cut (the same pass cut again).
+            let leading_role = matches!(m.role, Role::Approach | Role::LeadIn);
+            let same = !(leading_role && !self.leading)
+                && self
+                    .open
+                    .is_some_and(|o| (o.kind, o.number, o.start) == (p.kind, p.number, u32::from(p.start)));
+            let mut done = None;
+            if !same {
+                done = self.open.take();
+                self.open = Some(PassView {
+                    kind: p.kind,
+                    number: p.number,
+                    start: u32::from(p.start),
+                    flank: p.flank,
+                    depth: p.depth,
+                    cut: p.cut,
+                    bn: before,
+                    approached: false,
+                });
+                self.leading = true;
+            }
+            if let Some(open) = self.open.as_mut() {
+                match m.role {
+                    Role::Approach | Role::LeadIn if self.leading => {
+                        open.bn = m.to;
+                        open.approached |= m.role == Role::Approach;
+                    }
+                    _ => self.leading = false,
                 }
             }
-            _ => {}
+            if done.is_some() {
+                return done;
+            }
         }
+        self.open.take()
     }
-    out
+}
+
+fn passes<I: Iterator<Item = Move>>(moves: I, c: &G76Cycle) -> Passes<I> {
+    Passes::new(moves, c.start)
 }
 
 fn expand_ok<E: Engine>(engine: &E, c: &G76Cycle) -> Option<E::Moves> {
@@ -353,7 +415,12 @@ fn expand_ok<E: Engine>(engine: &E, c: &G76Cycle) -> Option<E::Moves> {
 /// Δd(√n - √(n-1)) strictly decrease; rounding moves each depth by at most
 /// ½).
 pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
-    declare(&["three or more rough levels", "minimum cut in force", "a D2 left pass"]);
+    declare(&[
+        "three or more rough levels",
+        "minimum cut in force",
+        "a D2 left pass",
+        "a rough pass whose approach is dropped",
+    ]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
     let min = c.min_cut.max(1);
@@ -362,7 +429,7 @@ pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
     let mut previous_cut = i64::MAX;
     let mut previous_flank = None;
     let mut levels = 0_u64;
-    for p in passes(moves).iter().filter(|p| p.kind == PassKind::Rough && p.start == 1) {
+    for p in passes(moves, &c).filter(|p| p.kind == PassKind::Rough && p.start == 1) {
         if c.infeed == Infeed::LeftRight && p.flank == Flank::Left {
             let repeats = previous_flank == Some(Flank::Right) && levels > 0 && p.depth == previous;
             assert!(repeats, "a D2 left pass repeats its level's right pass");
@@ -372,6 +439,7 @@ pub fn depth_monotonicity<E: Engine>(d: &Domain, engine: &E) {
             continue;
         }
         levels += 1;
+        cover!(!p.approached, "a rough pass whose approach is dropped");
         assert!(p.depth > previous, "rough depths must strictly increase");
         assert_eq!(p.cut, p.depth - previous, "cut annotation");
         assert!(p.cut >= min.min(last - previous), "cut below min(Δdmin, remainder)");
@@ -405,7 +473,7 @@ pub fn termination<E: Engine>(d: &Domain, engine: &E) {
     // of D2 (no dedup, so that a repeated level counts).
     let mut f = 0_i64;
     let mut deepest = None;
-    for p in passes(moves) {
+    for p in passes(moves, &c) {
         if p.kind != PassKind::Rough
             || p.start != 1
             || c.infeed == Infeed::LeftRight && p.flank == Flank::Left
@@ -437,22 +505,38 @@ pub fn finishing<E: Engine>(d: &Domain, engine: &E) {
     declare(&["several finishing passes with d > 0"]);
     let c = any_cycle(d);
     let Some(moves) = expand_ok(engine, &c) else { return };
-    let all = passes(moves);
-    let last_rough_z = all.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.bn.z).next_back();
-    let finish: Vec<_> = all.iter().filter(|p| p.kind == PassKind::Finish).collect();
-    assert_eq!(
-        finish.len() as u64,
-        u64::from(c.finishing_passes) * u64::from(c.starts),
-        "m finishing passes per start"
-    );
-    for (i, p) in finish.iter().enumerate() {
-        let number = i as u32 / c.starts + 1;
-        assert_eq!(p.depth, c.thread_height, "finishing at depth k");
-        assert_eq!(p.cut, if number == 1 { c.finishing_allowance } else { 0 }, "finishing cut: d, then 0");
-        assert_eq!(p.bn.z, last_rough_z.unwrap_or(c.start.z), "finishing Z = last rough Z");
-        let xf = c.x_mode.factor();
-        assert_eq!(p.bn.x, c.end.x + xf * c.taper, "finishing at the thread start C");
+    // Streamed: every rough pass comes before the first finishing pass, so
+    // the last rough Z is known when the finishing passes begin.
+    let mut last_rough_z = None;
+    let mut finish = 0_u64;
+    let xf = c.x_mode.factor();
+    for p in passes(moves, &c) {
+        match p.kind {
+            PassKind::Rough => {
+                assert_eq!(finish, 0, "a rough pass after a finishing pass");
+                last_rough_z = Some(p.bn.z);
+            }
+            PassKind::Finish => {
+                let number = finish / u64::from(c.starts) + 1;
+                finish += 1;
+                assert_eq!(
+                    u64::from(p.number),
+                    number,
+                    "finishing passes numbered in order, every start in turn"
+                );
+                assert_eq!(p.depth, c.thread_height, "finishing at depth k");
+                assert_eq!(
+                    p.cut,
+                    if number == 1 { c.finishing_allowance } else { 0 },
+                    "finishing cut: d, then 0"
+                );
+                assert_eq!(p.bn.z, last_rough_z.unwrap_or(c.start.z), "finishing Z = last rough Z");
+                assert_eq!(p.bn.x, c.end.x + xf * c.taper, "finishing at the thread start C");
+            }
+            PassKind::Single => panic!("G76 has no single pass"),
+        }
     }
+    assert_eq!(finish, u64::from(c.finishing_passes) * u64::from(c.starts), "m finishing passes per start");
     cover!(c.finishing_passes >= 2 && c.finishing_allowance > 0, "several finishing passes with d > 0");
 }
 
@@ -517,7 +601,7 @@ pub fn no_overcut<E: Engine>(d: &Domain, engine: &E) {
     let room_at = |depth: i64| cycleref_spec::tan::mul_tan_round(depth, c.tool_angle).unwrap_or(0);
     let zc = room_at(c.thread_height - c.finishing_allowance);
     let mut worst = 0;
-    for p in passes(moves) {
+    for p in passes(moves, &c) {
         let shift = t * (p.bn.z - c.start.z);
         let room = room_at(c.thread_height - p.depth);
         assert!((shift - zc).abs() <= room + 1, "a pass lies outside the final form");

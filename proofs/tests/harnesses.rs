@@ -74,7 +74,16 @@ fn overflow_checks_are_on() {
 
 #[test]
 fn p1_depth_monotonicity() {
-    check("depth monotonicity", exhaustive(200_000), || harness::depth_monotonicity(&SCHEDULE, &FixedPoint));
+    // The schedule's domain has no lead-in, taper or wide tool angle, so no
+    // pass there loses its approach: that cover is required over the Kani
+    // window (`tests/kani_windows.rs`) and by the counterexample below; the
+    // others are required here.
+    let r = check("depth monotonicity", Mode::Enumerate { max_runs: 200_000 }, || {
+        harness::depth_monotonicity(&SCHEDULE, &FixedPoint);
+    });
+    let missed: Vec<_> =
+        r.covers.iter().filter(|(m, n)| **n == 0 && !m.contains("approach is dropped")).collect();
+    assert!(missed.is_empty(), "covers never satisfied: {missed:?}");
     check("depth monotonicity (sampled)", SAMPLE, || harness::depth_monotonicity(&WIDE, &FixedPoint));
 }
 
@@ -216,4 +225,71 @@ fn p4_kani_window_reaches_every_cover() {
         assert!(*hits > 0, "{name} is not reached in P4's Kani window");
     }
     assert!(r.covers.get("run-out with X long").is_some_and(|&n| n > 0), "{:?}", r.covers);
+}
+
+/// The counterexample of issue 32 to P1 over its own Kani window: k = 6,
+/// Δd = 2, Δdmin = 1, d = 2, m = 1, a = 95, centre infeed, equal depths,
+/// towards +Z, taper 3, |W| = 32, run-out J0 K4, E = 3, lead I2540, IS-B
+/// inch radius X. The first pass's approach has no length and is dropped
+/// (R-ZERO), so a pass finder keyed on the approach lost pass 1 and P1
+/// failed on "cut annotation" (2 against 4). Every harness that walks the
+/// passes runs on it.
+const APPROACH_DROPPED: Domain = Domain {
+    height: (6, 6),
+    first_depth: (2, 2),
+    min_cut: (1, 1),
+    allowance: (2, 2),
+    tool_angle: (95, 95),
+    finishing: (1, 1),
+    infeed: (3, 3),
+    depth_mode: (0, 0),
+    starts: (1, 1),
+    internal: (0, 0),
+    positive_z: (1, 1),
+    taper: (3, 3),
+    length: (32, 32),
+    run_out_kind: (1, 1),
+    run_out: (0, 4),
+    units: (6, 6),
+    pass_limit: 16,
+    lead_in: (3, 3),
+    lead: (3, 3),
+    ..Domain::POINT
+};
+
+#[test]
+fn a_pass_whose_approach_is_dropped_is_still_a_pass() {
+    use cycleref::{PassKind, Role};
+    // The cycle itself, by hand: J0 K4 is the one draw of (short, long)
+    // = (0, 4) of the run-out range.
+    let c = cycleref_proofs::shim::check("the counterexample", Mode::Enumerate { max_runs: 100 }, || {
+        let c = harness::any_cycle(&APPROACH_DROPPED);
+        if let cycleref::RunOut::Amounts { short: 0, long: 4 } = c.run_out {
+            let moves: Vec<_> = cycleref::engine::expand_g76(&c).expect("expands").collect();
+            // Pass 1 (rough, depth 2 = Δd·1 of the equal steps) has no
+            // approach: the tool is already at its start.
+            let first = moves.first().expect("moves");
+            assert_eq!(first.pass.map(|p| (p.kind, p.number, p.depth)), Some((PassKind::Rough, 1, 2)));
+            assert_ne!(first.role, Role::Approach, "the first pass's approach is dropped");
+            let roughs = moves
+                .iter()
+                .filter(|m| m.role == Role::Cut && m.pass.is_some_and(|p| p.kind == PassKind::Rough))
+                .count();
+            assert_eq!(roughs, 2, "two rough levels: 2 and 4 = k - d");
+        }
+    });
+    assert!(c.runs > 1);
+    let r = check("P1", Mode::Enumerate { max_runs: 100 }, || {
+        harness::depth_monotonicity(&APPROACH_DROPPED, &FixedPoint);
+    });
+    assert!(r.covers["a rough pass whose approach is dropped"] > 0);
+    for (name, body) in [
+        ("P2", harness::termination as fn(&Domain, &FixedPoint)),
+        ("P3", harness::finishing),
+        ("P5", harness::no_overcut),
+    ] {
+        cycleref_proofs::shim::check(name, Mode::Enumerate { max_runs: 100 }, || {
+            body(&APPROACH_DROPPED, &FixedPoint)
+        });
+    }
 }
