@@ -356,7 +356,7 @@ impl<I: Iterator<Item = Move>> Iterator for Passes<I> {
             // A new pass: another annotation, or an approach or lead-in
             // after the pass has cut (the same pass cut again).
             let leading_role = matches!(m.role, Role::Approach | Role::LeadIn);
-            let same = !(leading_role && !self.leading)
+            let same = (self.leading || !leading_role)
                 && self
                     .open
                     .is_some_and(|o| (o.kind, o.number, o.start) == (p.kind, p.number, u32::from(p.start)));
