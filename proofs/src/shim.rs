@@ -46,6 +46,18 @@ pub enum Mode {
         /// Largest number of runs allowed.
         max_runs: u64,
     },
+    /// This many runs in which every choice is drawn near an edge of its
+    /// range: within 16 of its low end, within 16 of its high end, or, when
+    /// the range holds 0, within 16 of 0, each a third of the time, from a
+    /// fixed seed. The window's corners (every choice at an end) and its
+    /// small values (where ties and exact cases live), which uniform
+    /// samples of a wide range almost never draw.
+    Edges {
+        /// Number of runs.
+        runs: u64,
+        /// Seed of the generator.
+        seed: u64,
+    },
     /// This many runs with random choices from a fixed seed.
     Sample {
         /// Number of runs.
@@ -64,6 +76,10 @@ pub struct Report {
     pub pruned: u64,
     /// Each cover message and how many runs satisfied it.
     pub covers: BTreeMap<&'static str, u64>,
+    /// The most choices of more than one value that one run made: the
+    /// symbolic words of the harness under Kani (a range of one value is a
+    /// constant there, `verify::any_in`).
+    pub symbolic: u64,
 }
 
 struct Choice {
@@ -80,6 +96,9 @@ struct State {
     /// Position in `trail` of the next choice.
     next: usize,
     rng: u64,
+    edges: bool,
+    /// Choices of more than one value in the current run.
+    symbolic: u64,
     covers: BTreeMap<&'static str, u64>,
 }
 
@@ -99,10 +118,16 @@ fn splitmix(state: &mut u64) -> u64 {
 }
 
 /// A value in `lo..=hi` (as `u64` offsets): the next choice of the run.
-fn choose(span: u64) -> u64 {
+/// `zero` is the offset of the value 0 when the range holds it (for
+/// [`Mode::Edges`]); `word` is false for the low half of a 128-bit value,
+/// which is one symbolic word with its high half.
+fn choose(span: u64, zero: Option<u64>, word: bool) -> u64 {
     STATE.with(|s| {
         let mut s = s.borrow_mut();
         assert!(s.active, "shim::any_in called outside shim::check");
+        if span > 0 && word {
+            s.symbolic += 1;
+        }
         if s.exhaustive {
             let i = s.next;
             s.next += 1;
@@ -113,7 +138,24 @@ fn choose(span: u64) -> u64 {
                 0
             }
         } else {
-            let v = if span == u64::MAX { splitmix(&mut s.rng) } else { splitmix(&mut s.rng) % (span + 1) };
+            let v = if s.edges {
+                let r = splitmix(&mut s.rng);
+                let near = (r >> 8) % 17;
+                match r % 3 {
+                    0 => near.min(span),
+                    1 => span - near.min(span),
+                    // Near 0, as an offset from the low end, when 0 is in
+                    // range (the zero's offset is in `s.zero`), else uniform.
+                    _ => match zero {
+                        Some(z) => z.saturating_add(near).saturating_sub(8).min(span),
+                        None => splitmix(&mut s.rng) % span.saturating_add(1).max(1),
+                    },
+                }
+            } else if span == u64::MAX {
+                splitmix(&mut s.rng)
+            } else {
+                splitmix(&mut s.rng) % (span + 1)
+            };
             // Recorded so that a failure can report the run's choices.
             s.trail.push(Choice { value: v, hi: span });
             v
@@ -126,7 +168,8 @@ fn choose(span: u64) -> u64 {
 pub fn any_in(lo: i64, hi: i64) -> i64 {
     assert!(lo <= hi, "empty range {lo}..={hi}");
     let span = hi.abs_diff(lo);
-    let off = choose(span);
+    let zero = (lo <= 0 && 0 <= hi).then(|| lo.unsigned_abs());
+    let off = choose(span, zero, true);
     // off <= span = hi - lo, so lo + off <= hi fits in i64.
     lo.wrapping_add_unsigned(off)
 }
@@ -136,27 +179,33 @@ pub fn any_in(lo: i64, hi: i64) -> i64 {
 /// 64 bits), the values beyond the span pruned (as by `assume`).
 pub fn any_u128_in(lo: u128, hi: u128) -> u128 {
     assert!(lo <= hi, "empty range {lo}..={hi}");
-    let span = hi - lo;
-    let off = if let Ok(span) = u64::try_from(span) {
-        u128::from(choose(span))
+    lo + offset_u128(hi - lo, (lo == 0).then_some(0))
+}
+
+/// An offset in `0..=span`, `zero` the offset of the value 0 if in range.
+fn offset_u128(span: u128, zero: Option<u128>) -> u128 {
+    if let Ok(span) = u64::try_from(span) {
+        u128::from(choose(span, zero.and_then(|z| u64::try_from(z).ok()), true))
     } else {
-        let high = u128::from(choose(u64::try_from(span >> 64).unwrap_or(u64::MAX)));
-        let off = high << 64 | u128::from(choose(u64::MAX));
+        #[allow(clippy::cast_possible_truncation)] // the low 64 bits, on purpose
+        let (zero_high, zero_low) = (zero.map(|z| (z >> 64) as u64), zero.map(|z| z as u64));
+        let high = u128::from(choose(u64::try_from(span >> 64).unwrap_or(u64::MAX), zero_high, true));
+        let off = high << 64 | u128::from(choose(u64::MAX, zero_low, false));
         assume(off <= span);
         off
-    };
-    lo + off
+    }
 }
 
 /// A value of `lo..=hi` over `i128` ([`any_u128_in`] on the offsets).
 pub fn any_i128_in(lo: i128, hi: i128) -> i128 {
     assert!(lo <= hi, "empty range {lo}..={hi}");
-    lo.wrapping_add_unsigned(any_u128_in(0, hi.abs_diff(lo)))
+    let zero = (lo <= 0 && 0 <= hi).then(|| lo.unsigned_abs());
+    lo.wrapping_add_unsigned(offset_u128(hi.abs_diff(lo), zero))
 }
 
 /// A `bool`.
 pub fn any_bool() -> bool {
-    choose(1) == 1
+    choose(1, Some(0), true) == 1
 }
 
 /// Abandons the run when `cond` is false (`kani::assume`).
@@ -232,8 +281,9 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
         *s.borrow_mut() = State {
             active: true,
             exhaustive: matches!(mode, Mode::Exhaustive { .. } | Mode::Enumerate { .. }),
+            edges: matches!(mode, Mode::Edges { .. }),
             rng: match mode {
-                Mode::Sample { seed, .. } => seed,
+                Mode::Sample { seed, .. } | Mode::Edges { seed, .. } => seed,
                 Mode::Exhaustive { .. } | Mode::Enumerate { .. } => 0,
             },
             ..State::default()
@@ -244,12 +294,14 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
         STATE.with(|s| {
             let mut s = s.borrow_mut();
             s.next = 0;
+            s.symbolic = 0;
             if !s.exhaustive {
                 s.trail.clear();
             }
         });
         let run = catch_unwind(AssertUnwindSafe(&body));
         report.runs += 1;
+        report.symbolic = report.symbolic.max(STATE.with(|s| s.borrow().symbolic));
         if let Err(payload) = run {
             if payload.downcast_ref::<Pruned>().is_some() {
                 report.pruned += 1;
@@ -260,7 +312,7 @@ pub fn check(name: &str, mode: Mode, body: impl Fn()) -> Report {
             }
         }
         let more = match mode {
-            Mode::Sample { runs, .. } => report.runs < runs,
+            Mode::Sample { runs, .. } | Mode::Edges { runs, .. } => report.runs < runs,
             Mode::Exhaustive { max_runs } | Mode::Enumerate { max_runs } => {
                 let advanced = STATE.with(|s| {
                     let mut s = s.borrow_mut();
@@ -445,6 +497,27 @@ mod tests {
             message(failure.as_ref()),
             "fails: the harness failed at run 16 with choices [7, 1]: seven and one together"
         );
+    }
+
+    #[test]
+    fn edges_draw_near_the_ends_and_zero_and_words_are_counted() {
+        let seen = RefCell::new(std::collections::BTreeSet::new());
+        let r = check("edges", Mode::Edges { runs: 3_000, seed: 3 }, || {
+            let a = any_in(-1_000, 1_000);
+            let fixed = any_in(4, 4);
+            let b = any_i128_in(i128::MIN, i128::MAX);
+            seen.borrow_mut().insert((a, fixed, b));
+        });
+        let seen = seen.into_inner();
+        let a: std::collections::BTreeSet<i64> = seen.iter().map(|v| v.0).collect();
+        // Within 16 of -1 000, of 0 and of 1 000, the ends themselves too.
+        assert!(a.iter().all(|v| (v + 1_000) <= 16 || v.abs() <= 16 || 1_000 - v <= 16), "{a:?}");
+        assert!(a.contains(&-1_000) && a.contains(&0) && a.contains(&1_000), "{a:?}");
+        assert!(seen.iter().all(|v| v.1 == 4));
+        assert!(seen.iter().any(|v| v.2 == i128::MIN) && seen.iter().any(|v| v.2 == 0));
+        // Two ranges of more than one value, the 128-bit one drawn in two
+        // halves: two symbolic words.
+        assert_eq!(r.symbolic, 2);
     }
 
     #[test]

@@ -1,9 +1,9 @@
-//! The Kani windows and unwind bounds of `proofs/src/kani_proofs.rs`, outside
-//! `cfg(kani)` so that `proofs/tests/unwind.rs` can measure, under `cargo
-//! test`, the loop counts each harness reaches in its window and check them
-//! against its bound (Kani needs `#[kani::unwind(N)]` with N above the
-//! largest iteration count of every loop it unrolls). That test also reads
-//! the attributes in `kani_proofs.rs` and checks they equal the bounds here.
+//! The Kani windows of `proofs/src/kani_proofs.rs`, outside `cfg(kani)` so
+//! that the shim runs the same bodies over them (`proofs/tests/kani_windows.rs`)
+//! and `proofs/tests/unwind.rs` measures the loop counts each harness
+//! reaches in its window against its bound in `crate::catalogue` (Kani
+//! needs `#[kani::unwind(N)]` with N above the largest iteration count of
+//! every loop it unrolls).
 
 use crate::groove::GrooveDomain;
 use crate::harness::Domain;
@@ -52,6 +52,50 @@ pub const NO_RAPID_WINDOW: Domain = Domain { length: (1, 40), ..G76_WINDOW };
 /// start), k ≤ 4.
 pub const FINISHING_WINDOW: Domain =
     Domain { height: (1, 4), first_depth: (1, 4), allowance: (0, 4), starts: (1, 2), ..G76_WINDOW };
+
+/// The infeed modes of the split G76 harnesses, by their code in
+/// [`Domain::infeed`], with the suffix of each harness's name: G76's D0, D1,
+/// D2 and G78's centre, left flank and alternating flanks.
+pub const INFEED_MODES: [(i64, &str); 6] =
+    [(0, "d0"), (1, "d1"), (2, "d2"), (3, "centre"), (4, "left_flank"), (5, "alternating")];
+
+/// [`G76_WINDOW`] with one infeed mode and the chamfer (r = 5 tenths of the
+/// lead at 45°) fixed: the window of P1 and P2 for that mode. The depth
+/// schedule does not read the chamfer; the tool angle, side, direction,
+/// taper, lengths, run-out kind and amounts, unit code, lead and lead-in
+/// stay symbolic, since they decide which moves are dropped as empty (the
+/// counterexample of issue 32 needed a = 95°, a lead-in, a taper, an I lead
+/// and inch radius together; with a = 60° no pass of the window loses its
+/// approach: `tests/kani_windows.rs` found the cover unreachable).
+#[must_use]
+pub const fn depth_window(infeed: i64) -> Domain {
+    Domain { infeed: (infeed, infeed), chamfer: (5, 5), chamfer_angle: (45, 45), ..G76_WINDOW }
+}
+
+/// `base` with one infeed mode and the chamfer fixed (r = 5 tenths at 45°),
+/// the tool angle left symbolic: the windows of P5 (`no_overcut`) and of
+/// `no_rapid_in_thread`, whose passes move along the flanks.
+#[must_use]
+pub const fn flank_window(base: Domain, infeed: i64) -> Domain {
+    Domain { infeed: (infeed, infeed), chamfer: (5, 5), chamfer_angle: (45, 45), ..base }
+}
+
+/// P6's window with one infeed mode ([`EQUIVALENCE_WINDOW`] fixes the
+/// chamfer, the units and the lead already).
+#[must_use]
+pub const fn equivalence_window(infeed: i64) -> Domain {
+    Domain { infeed: (infeed, infeed), ..EQUIVALENCE_WINDOW }
+}
+
+/// P3's Kani window: [`FINISHING_WINDOW`] with the tool angle (60°) and
+/// the chamfer (5 tenths at 45°) fixed, which the finishing passes do not
+/// read.
+pub const FINISHING_KANI_WINDOW: Domain =
+    Domain { tool_angle: (60, 60), chamfer: (5, 5), chamfer_angle: (45, 45), ..FINISHING_WINDOW };
+
+/// P4's Kani window: [`NO_RAPID_WINDOW`] with the tool angle fixed (60°);
+/// the chamfer stays symbolic (a chamfered run-out is what P4 checks).
+pub const RUN_OUT_KANI_WINDOW: Domain = Domain { tool_angle: (60, 60), ..NO_RAPID_WINDOW };
 
 /// P6's window: k, Δd ≤ 8, straight and small tapers, one start, m = 1.
 pub const EQUIVALENCE_WINDOW: Domain = Domain {
@@ -262,45 +306,14 @@ pub const LCNC_PASS_WINDOW: LcncDomain = LcncDomain {
     pass_limit: 8,
 };
 
-/// Each Kani harness and its `#[kani::unwind(N)]`.
-pub const UNWIND: [(&str, u32); 30] = [
-    ("depth_monotonicity", 79),
-    ("termination", 79),
-    ("finishing", 109),
-    ("run_out_direction", 79),
-    ("no_overcut", 79),
-    ("equivalence", 81),
-    ("no_panic", 34),
-    ("isqrt_rounds", 8),
-    ("isqrt_floor_contract", 8),
-    ("round_div_contract", 2),
-    ("saturate_i64_contract", 2),
-    ("floor_div_contract", 2),
-    ("ceil_div_contract", 2),
-    ("mul_tan_round_contract", 2),
-    ("g32_run_out", 5),
-    ("no_rapid_in_thread", 79),
-    ("g32_no_rapid", 5),
-    ("g92_pass", 12),
-    ("groove_pecks_and_steps", 66),
-    ("groove_layers", 66),
-    ("groove_inside", 66),
-    ("groove_finish_is_profile", 66),
-    ("groove_material", 66),
-    ("groove_no_panic", GROOVE_NO_PANIC_UNWIND),
-    ("groove_equivalence", 54),
-    ("schedule_step", 7),
-    ("lcnc_depth_monotonicity", 256),
-    ("lcnc_termination", 256),
-    ("lcnc_spring_passes", 256),
-    ("lcnc_pass_moves", 256),
-];
-
-/// The bound of harness `name` in [`UNWIND`].
+/// The unwind bound of harness `name`, or of a family of harnesses split
+/// per infeed mode (`crate::catalogue::unwind`, where the bounds live).
 ///
 /// # Panics
 ///
-/// When `name` is not a Kani harness.
+/// When `name` is not a Kani harness or family.
+#[cfg(not(kani))]
+#[must_use]
 pub fn unwind(name: &str) -> u32 {
-    UNWIND.iter().find(|(n, _)| *n == name).map(|(_, u)| *u).expect("a Kani harness")
+    crate::catalogue::unwind(name)
 }

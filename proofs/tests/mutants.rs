@@ -41,21 +41,6 @@ fn caught<M>(
     eprintln!("control: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
 }
 
-/// [`caught`] with the control enumerated: its covers are reported, not
-/// required (P1's "a rough pass whose approach is dropped" is out of the
-/// schedule's domain and required over the Kani window instead).
-fn caught_enumerated<M>(
-    max_runs: u64,
-    body: impl Fn(&dyn Fn(&G76Cycle) -> Result<Moves, CycleError>),
-    mutant: M,
-    expected: &str,
-) where
-    M: Fn(&G76Cycle) -> Result<Moves, CycleError>,
-{
-    let r = shim::caught(Mode::Enumerate { max_runs }, || body(&control), || body(&mutant), expected);
-    eprintln!("control: {} runs, {} pruned, covers {:?}", r.runs, r.pruned, r.covers);
-}
-
 /// The small schedule domain of `harnesses.rs`.
 const SCHEDULE: Domain = Domain::SCHEDULE;
 
@@ -104,7 +89,7 @@ fn repeated_level(c: &G76Cycle) -> Result<Moves, CycleError> {
 
 #[test]
 fn a_repeated_level_is_caught_by_p1_in_every_mode() {
-    caught_enumerated(
+    caught(
         200_000,
         |e| harness::depth_monotonicity(&SCHEDULE, &e),
         repeated_level,
@@ -123,7 +108,7 @@ fn a_d2_left_pass_off_its_level_is_caught_by_p1() {
         }
         m
     });
-    caught_enumerated(
+    caught(
         200_000,
         |e| harness::depth_monotonicity(&SCHEDULE, &e),
         e,

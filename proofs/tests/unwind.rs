@@ -233,7 +233,7 @@ fn groove_loops_stay_below_the_unwind_bounds() {
         units: (0, 0),
         ..w
     };
-    let material = GrooveDomain { tool_width: (1, 2), path: (0, 1), ..w };
+    let material = cycleref_proofs::bodies::GROOVE_MATERIAL_WINDOW;
     type Body = fn(&GrooveDomain, &CountedGroove);
     let harnesses: [(&str, GrooveDomain, Body); 5] = [
         ("groove_pecks_and_steps", w, groove::groove_pecks_and_steps),
@@ -247,7 +247,20 @@ fn groove_loops_stay_below_the_unwind_bounds() {
         let e = CountedGroove(Cell::new(0));
         let r = shim::check(name, SAMPLE, || body(&window, &e));
         eprintln!("  {name} (sampled window): {} runs, {} pruned", r.runs, r.pruned);
-        let worst = GrooveDomain { tool_width: window.tool_width, path: window.path, ..worst };
+        let worst = GrooveDomain {
+            depth: (window.depth.1, window.depth.1),
+            width: (window.width.1, window.width.1),
+            peck: (window.peck.0, window.peck.0),
+            step: (window.step.0, window.step.0),
+            tool_width: window.tool_width,
+            path: window.path,
+            layer: window.layer,
+            allowance_x: window.allowance_x,
+            allowance_z: window.allowance_z,
+            corner: window.corner,
+            units: window.units,
+            ..worst
+        };
         let r = shim::check(name, Mode::Enumerate { max_runs: 1_000_000 }, || body(&worst, &e));
         eprintln!("  {name} (worst cases): {} runs, {} pruned", r.runs, r.pruned);
         let mut m = Maxima::default();
@@ -552,14 +565,16 @@ fn the_kani_attributes_are_the_bounds_checked_here() {
             found.insert(name.to_owned(), pending.take());
         }
     }
-    for (name, bound) in windows::UNWIND {
-        assert_eq!(found.get(name), Some(&Some(bound)), "{name}: #[kani::unwind] in kani_proofs.rs");
+    let all = cycleref_proofs::catalogue::harnesses();
+    for h in &all {
+        assert_eq!(
+            found.get(&h.name),
+            Some(&Some(h.unwind)),
+            "{}: #[kani::unwind] in kani_proofs.rs",
+            h.name
+        );
     }
-    assert_eq!(
-        found.len(),
-        windows::UNWIND.len(),
-        "every Kani harness has its bound in windows::UNWIND: {found:?}"
-    );
+    assert_eq!(found.len(), all.len(), "every Kani harness is in the catalogue: {found:?}");
 }
 
 /// The one-step schedule harness: its only loop is Newton's, in the law's
