@@ -22,6 +22,7 @@ use crate::verify::{any_i128_in, any_in, any_u128_in, assume, declare};
 pub fn isqrt_floor(lo: u128, hi: u128, f: fn(u128) -> u128) {
     declare(&["isqrt_floor: a perfect square", "isqrt_floor: between squares"]);
     let x = any_u128_in(lo, hi);
+    assume(c::sqrt_requires(x));
     let s = f(x);
     assert!(c::isqrt_floor_ensures(x, s), "isqrt_floor: s² ≤ x < (s + 1)²");
     cover!(s * s == x, "isqrt_floor: a perfect square");

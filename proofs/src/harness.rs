@@ -698,12 +698,14 @@ pub fn no_panic<E: Engine>(d: &Domain, engine: &E, max_moves: usize) {
 /// Property 8, the contract of `round_sqrt` (its `proof_for_contract`
 /// under Kani): the integer square root rounds to nearest exactly, s =
 /// round(√x) satisfies (2s - 1)² <= 4x < (2s + 1)², on the domain `x in
-/// lo..=hi` (under Kani every `u128`). The contract's predicate
+/// lo..=hi` within the contract's range `x < 2^62` (under Kani
+/// `windows::ISQRT_WINDOW`, that whole range). The contract's predicate
 /// (`cycleref::engine::contracts::round_sqrt_ensures`) is asserted, and
 /// the property restated here independently where it fits `u128`.
 pub fn isqrt_rounds(lo: u128, hi: u128, sqrt: fn(u128) -> u128) {
     declare(&["rounded up", "rounded down"]);
     let x = any_u128_in(lo, hi);
+    assume(cycleref::engine::contracts::sqrt_requires(x));
     let s = sqrt(x);
     assert!(cycleref::engine::contracts::round_sqrt_ensures(x, s), "round(√x): the contract of round_sqrt");
     if x < 1 << 124 {
@@ -773,22 +775,26 @@ where
         assume(false);
         return;
     };
-    let moves: Vec<Move> = moves.collect();
+    // Streamed (no `Vec` under Kani): the count, the first and the last end.
     let xf = b.x_mode.factor();
     let (dx, dz) = (b.end.x - b.start.x, b.end.z - b.start.z);
     let z_long = xf * dz.abs() > dx.abs();
-    for (i, m) in moves.iter().enumerate() {
+    let (mut count, mut first, mut last) = (0_usize, None, None);
+    for m in moves {
         let Motion::Thread { sync, .. } = m.motion else { panic!("G32 moves are thread moves") };
-        assert_eq!(sync, b.sync && i == 0, "only the first move may synchronise");
+        assert_eq!(sync, b.sync && count == 0, "only the first move may synchronise");
+        first = first.or(Some(m.to));
+        last = Some(m.to);
+        count += 1;
     }
     match b.run_out {
         G32RunOut::None => {
-            assert_eq!(moves.len(), 1);
-            assert_eq!(moves.first().map(|m| m.to), Some(b.end));
+            assert_eq!(count, 1);
+            assert_eq!(first, Some(b.end));
         }
         G32RunOut::Amounts { short, long } => {
-            let last = moves.last().expect("a run-out").to;
-            let run_start = if moves.len() == 2 { moves[0].to } else { b.start };
+            let last = last.expect("a run-out");
+            let run_start = if count == 2 { first.expect("a cut") } else { b.start };
             if z_long {
                 assert_eq!(last, Point::new(b.end.x + xf * short, b.end.z), "run-out end: J along X");
                 assert_eq!(run_start.z, b.end.z - dz.signum() * long, "run-out start: K before the end");

@@ -431,7 +431,7 @@ fn no_panic() {
 /// `ISQRT_WINDOW`.
 #[kani::proof_for_contract(cycleref::engine::arith::round_sqrt)]
 #[kani::stub_verified(cycleref::engine::arith::isqrt_floor)]
-#[kani::unwind(8)]
+#[kani::unwind(7)]
 #[kani::solver(cadical)]
 fn isqrt_rounds() {
     crate::bodies::isqrt_rounds();
@@ -439,7 +439,7 @@ fn isqrt_rounds() {
 
 /// The contract of isqrt_floor: s² ≤ x < (s + 1)². Window: `ISQRT_WINDOW`.
 #[kani::proof_for_contract(cycleref::engine::arith::isqrt_floor)]
-#[kani::unwind(8)]
+#[kani::unwind(7)]
 #[kani::solver(cadical)]
 fn isqrt_floor_contract() {
     crate::bodies::isqrt_floor_contract();

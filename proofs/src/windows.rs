@@ -121,20 +121,24 @@ pub const NO_PANIC_WINDOW: Domain = Domain { pass_limit: 32, ..Domain::FULL };
 pub const NO_PANIC_MOVES: usize = 12;
 
 /// P8's window (the contract of `round_sqrt`) and the window of the
-/// contract of `isqrt_floor`: every `x` in `u128`.
-pub const ISQRT_WINDOW: (u128, u128) = (0, u128::MAX);
+/// contract of `isqrt_floor`: their precondition, `x < 2^62`
+/// (`cycleref::engine::contracts::SQRT_LIMIT`). Until issue 32 every
+/// `u128`, which CBMC does not finish.
+pub const ISQRT_WINDOW: (u128, u128) = (0, (1 << 62) - 1);
 
-/// The contract of `round_div`: numerators and divisors below `2^126` in
-/// magnitude (its precondition; the divisor non-zero).
+/// The contract of `round_div`: its precondition, numerators below `2^67`
+/// and divisors below `2^34` in magnitude (the divisor non-zero). Until
+/// issue 32 both below `2^126`.
 pub const ROUND_DIV_WINDOW: ((i128, i128), (i128, i128)) =
-    ((-(1 << 126) + 1, (1 << 126) - 1), (-(1 << 126) + 1, (1 << 126) - 1));
+    ((-(1 << 67) + 1, (1 << 67) - 1), (-(1 << 34) + 1, (1 << 34) - 1));
 
 /// The contract of `saturate_i64`: every `i128`.
 pub const SATURATE_WINDOW: (i128, i128) = (i128::MIN, i128::MAX);
 
-/// The contracts of `floor_div` and `ceil_div`: dividends below `2^120` in
-/// magnitude, every positive divisor (their precondition).
-pub const DIV_WINDOW: ((i128, i128), (i128, i128)) = ((-(1 << 120) + 1, (1 << 120) - 1), (1, i128::MAX));
+/// The contracts of `floor_div` and `ceil_div`: their precondition,
+/// dividends below `2^72` in magnitude and divisors from 1 to `2^34 − 1`.
+/// Until issue 32 dividends below `2^120` and every positive divisor.
+pub const DIV_WINDOW: ((i128, i128), (i128, i128)) = ((-(1 << 72) + 1, (1 << 72) - 1), (1, (1 << 34) - 1));
 
 /// The contract of `mul_tan_round`: every `i64` value, every half-degree
 /// code `0..=u32::MAX` (beyond 179 refused).

@@ -144,11 +144,15 @@ fn p7_no_panic() {
 fn p8_isqrt_rounds() {
     let sqrt = cycleref::engine::round_sqrt;
     check("isqrt (exhaustive 0..=2^20)", exhaustive(1 << 21), || harness::isqrt_rounds(0, 1 << 20, sqrt));
-    check("isqrt (sampled)", Mode::Sample { runs: 200_000, seed: 3 }, || {
-        harness::isqrt_rounds(0, u128::MAX, sqrt)
+    // The contract's range, x < 2^62 (`windows::ISQRT_WINDOW`): every call
+    // the engine makes (the depth law's Δd²·n), checked at each call in
+    // these tests (feature `contract-checks`).
+    let (lo, hi) = windows::ISQRT_WINDOW;
+    check("isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 3 }, || {
+        harness::isqrt_rounds(lo, hi, sqrt)
     });
-    check("isqrt (sampled below 2^94, the engine's range)", Mode::Sample { runs: 200_000, seed: 4 }, || {
-        harness::isqrt_rounds(0, 1 << 94, sqrt)
+    check("isqrt (window edges)", Mode::Edges { runs: 200_000, seed: 4 }, || {
+        harness::isqrt_rounds(lo, hi, sqrt)
     });
 }
 

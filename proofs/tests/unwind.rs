@@ -459,27 +459,23 @@ fn counting_floor(x: u128) -> u128 {
     cycleref::engine::isqrt_floor(x)
 }
 
-/// The Newton loop of `isqrt_floor` over every `u128` (the window of the
-/// `proof_for_contract` harnesses of `isqrt_floor`, and of `round_sqrt`
-/// without its stub): sampled; every `x < 2^16`; and every `x` within 2 of
-/// each power of two, where Newton's start `2^ceil(bits/2)` is farthest
-/// from the root, up to the top of `u128`.
+/// The Newton loop of `isqrt_floor` over the contracts' window, `x < 2^62`
+/// (`windows::ISQRT_WINDOW`, the window of the `proof_for_contract`
+/// harnesses of `isqrt_floor`, and of `round_sqrt` without its stub):
+/// sampled and at the edges; every `x < 2^16`; every `x` within 2 of each
+/// power of two, where Newton's start `2^ceil(bits/2)` is farthest from
+/// the root; and the top of the window.
 fn newton_maxima(body: fn(u128, u128, fn(u128) -> u128), f: fn(u128) -> u128) -> Maxima {
+    let (lo, hi) = windows::ISQRT_WINDOW;
     let mut m = Maxima::default();
-    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| {
-        body(0, u128::MAX, f)
-    });
-    measure(&mut m, "isqrt (sampled below 2^94)", Mode::Sample { runs: 200_000, seed: 6 }, |_| {
-        body(0, 1 << 94, f);
-    });
+    measure(&mut m, "isqrt (sampled window)", Mode::Sample { runs: 200_000, seed: 5 }, |_| body(lo, hi, f));
+    measure(&mut m, "isqrt (window edges)", Mode::Edges { runs: 200_000, seed: 6 }, |_| body(lo, hi, f));
     measure(&mut m, "isqrt (x < 2^16)", Mode::Enumerate { max_runs: 1 << 17 }, |_| body(0, (1 << 16) - 1, f));
-    for bits in 17..128 {
+    for bits in 17..62 {
         let p = 1_u128 << bits;
         measure(&mut m, "isqrt (near 2^bits)", Mode::Enumerate { max_runs: 16 }, |_| body(p - 2, p + 2, f));
     }
-    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| {
-        body(u128::MAX - 4, u128::MAX, f)
-    });
+    measure(&mut m, "isqrt (at the top)", Mode::Enumerate { max_runs: 16 }, |_| body(hi - 4, hi, f));
     m
 }
 

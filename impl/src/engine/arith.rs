@@ -26,9 +26,16 @@
 /// From a start `g ≥ ⌊√x⌋` the iteration `g ← ⌊(g + ⌊x/g⌋)/2⌋` decreases
 /// strictly while `g > ⌊√x⌋` and never goes below `⌊√x⌋` (AM-GM), so it stops
 /// exactly there, after about `log2(bits)` + 1 steps (7 for `u128`).
+///
+/// Contract: [`sqrt_requires`](super::contracts::sqrt_requires) (`x <
+/// 2^62`, the range its callers use; the function computes every `u128`'s
+/// root), [`isqrt_floor_ensures`](super::contracts::isqrt_floor_ensures).
 #[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::sqrt_requires(x)))]
 #[cfg_attr(kani, kani::ensures(|s: &u128| crate::engine::contracts::isqrt_floor_ensures(x, *s)))]
 pub const fn isqrt_floor(x: u128) -> u128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::sqrt_requires(x), "isqrt_floor: requires");
     let s = isqrt_floor_counted(x).0;
     #[cfg(feature = "contract-checks")]
     assert!(super::contracts::isqrt_floor_ensures(x, s), "isqrt_floor: ensures");
@@ -99,9 +106,15 @@ pub fn record_isqrt(x: u128) {
 ///
 /// `round(√x) = s + 1` where `s = ⌊√x⌋` exactly when `√x ≥ s + ½`, i.e.
 /// `x ≥ s² + s + ¼`, i.e. `x - s² > s` for integers.
+///
+/// Contract: [`sqrt_requires`](super::contracts::sqrt_requires),
+/// [`round_sqrt_ensures`](super::contracts::round_sqrt_ensures).
 #[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::sqrt_requires(x)))]
 #[cfg_attr(kani, kani::ensures(|r: &u128| crate::engine::contracts::round_sqrt_ensures(x, *r)))]
 pub const fn round_sqrt(x: u128) -> u128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::sqrt_requires(x), "round_sqrt: requires");
     let s = isqrt_floor(x);
     // s² ≤ x, so neither the product nor the difference overflows, and
     // s + 1 ≤ 2^64.
@@ -116,7 +129,8 @@ pub const fn round_sqrt(x: u128) -> u128 {
 /// caller passes. Twin: `spec/src/exact.rs`, `round_div`.
 ///
 /// Contract: [`round_div_requires`](super::contracts::round_div_requires)
-/// (a non-zero divisor, magnitudes below `2^126`),
+/// (a non-zero divisor below `2^34`, a numerator below `2^67`: the ranges
+/// its callers use),
 /// [`round_div_ensures`](super::contracts::round_div_ensures).
 #[must_use]
 #[cfg_attr(kani, kani::requires(crate::engine::contracts::round_div_requires(num, den)))]

@@ -18,7 +18,24 @@
 //! precision: a harness that holds with the kernels holds with the stubs.
 //! The predicates never overflow or panic (checked or widened arithmetic).
 
-/// `isqrt_floor(x) = s`: `s² ≤ x < (s + 1)²`. Total (no precondition).
+/// The arguments `isqrt_floor` and `round_sqrt` are proved for: `x <
+/// 2^62`. Their one caller in the engine, the depth law
+/// (`engine::schedule`), takes `round(√(Δd²·n))` only in the law's phase,
+/// where `Δd·√n ≤ k − d + Δd < 2^31` (Δd and k below 10^9), so `x = Δd²·n
+/// < 2^62`. The kernels compute the root of every `u128` (their Newton
+/// loops on `u64` and `u128`); the contract states the range the callers
+/// use, which Kani proves and the stubs assume (issue 32: a contract over
+/// every `u128` leaves CBMC 128-bit products and divisions it does not
+/// finish). With the feature `contract-checks`, every call checks it.
+pub const SQRT_LIMIT: u128 = 1 << 62;
+
+/// `x < 2^62` ([`SQRT_LIMIT`]).
+#[must_use]
+pub const fn sqrt_requires(x: u128) -> bool {
+    x < SQRT_LIMIT
+}
+
+/// `isqrt_floor(x) = s`: `s² ≤ x < (s + 1)²`.
 #[must_use]
 pub const fn isqrt_floor_ensures(x: u128, s: u128) -> bool {
     // s² ≤ x: the square must not overflow (then it exceeds x).
@@ -63,12 +80,17 @@ pub const fn round_sqrt_ensures(x: u128, s: u128) -> bool {
     lower && upper && (s != 0 || x == 0)
 }
 
-/// The arguments `round_div` admits: a non-zero divisor, and both
-/// magnitudes below `2^126` (every caller: numerators below `2^67`,
-/// divisors below `2^34`).
+/// The arguments `round_div` is proved for: a non-zero divisor below
+/// `2^34` and a numerator below `2^67` in magnitude. Its callers divide a
+/// product of two coordinate differences (each below `2^32`: coordinates
+/// within ±999 999 999 increments, doubled in diameter) by a third, plus
+/// half of it: `|num| < 2^64 + 2^32 < 2^67`, `|den| < 2^32 < 2^34`
+/// (`engine::pass`, the taper's X at the run-out; `engine::g32`, the
+/// run-out's start). With the feature `contract-checks` every call checks
+/// it; the kernel computes every quotient of `i128`s but `den = 0`.
 #[must_use]
 pub const fn round_div_requires(num: i128, den: i128) -> bool {
-    den != 0 && num.unsigned_abs() < 1 << 126 && den.unsigned_abs() < 1 << 126
+    den != 0 && num.unsigned_abs() < 1 << 67 && den.unsigned_abs() < 1 << 34
 }
 
 /// `round_div(num, den) = r`, the integer nearest to `num / den`, ties
@@ -103,11 +125,16 @@ pub const fn saturate_i64_ensures(v: i128, r: i64) -> bool {
     }
 }
 
-/// The arguments `floor_div` and `ceil_div` admit: a positive divisor, and
-/// a dividend below `2^120` in magnitude (every caller: below `2^72`).
+/// The arguments `floor_div` and `ceil_div` are proved for: a positive
+/// divisor below `2^34` and a dividend below `2^72` in magnitude. Their
+/// callers (`engine::g75::roughing`) divide differences of groove depths
+/// and positions (below `2^32`, scaled by at most `2^40` in the exact
+/// roughing limits) by a peck Δi, a step Δk or a layer Δv, each at most
+/// 99 999 999 increments doubled (`< 2^28`). With the feature
+/// `contract-checks` every call checks it.
 #[must_use]
 pub const fn div_requires(a: i128, b: i128) -> bool {
-    b > 0 && a.unsigned_abs() < 1 << 120
+    b > 0 && b < 1 << 34 && a.unsigned_abs() < 1 << 72
 }
 
 /// `floor_div(a, b) = q` for `b > 0`: `q b ≤ a < (q + 1) b`, i.e. `0 ≤ a -
