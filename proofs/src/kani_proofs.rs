@@ -18,7 +18,7 @@
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn depth_monotonicity_d0() {
     crate::bodies::depth_monotonicity_d0();
 }
@@ -31,7 +31,7 @@ fn depth_monotonicity_d0() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn depth_monotonicity_d1() {
     crate::bodies::depth_monotonicity_d1();
 }
@@ -57,7 +57,7 @@ fn depth_monotonicity_d2() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn depth_monotonicity_centre() {
     crate::bodies::depth_monotonicity_centre();
 }
@@ -70,7 +70,7 @@ fn depth_monotonicity_centre() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn depth_monotonicity_left_flank() {
     crate::bodies::depth_monotonicity_left_flank();
 }
@@ -83,7 +83,7 @@ fn depth_monotonicity_left_flank() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn depth_monotonicity_alternating() {
     crate::bodies::depth_monotonicity_alternating();
 }
@@ -95,7 +95,7 @@ fn depth_monotonicity_alternating() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn termination_d0() {
     crate::bodies::termination_d0();
 }
@@ -107,7 +107,7 @@ fn termination_d0() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn termination_d1() {
     crate::bodies::termination_d1();
 }
@@ -131,7 +131,7 @@ fn termination_d2() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn termination_centre() {
     crate::bodies::termination_centre();
 }
@@ -143,7 +143,7 @@ fn termination_centre() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn termination_left_flank() {
     crate::bodies::termination_left_flank();
 }
@@ -155,7 +155,7 @@ fn termination_left_flank() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn termination_alternating() {
     crate::bodies::termination_alternating();
 }
@@ -167,7 +167,7 @@ fn termination_alternating() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(109)]
+#[kani::unwind(97)]
 fn finishing() {
     crate::bodies::finishing();
 }
@@ -191,7 +191,7 @@ fn run_out_direction() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_overcut_d0() {
     crate::bodies::no_overcut_d0();
 }
@@ -203,7 +203,7 @@ fn no_overcut_d0() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_overcut_d1() {
     crate::bodies::no_overcut_d1();
 }
@@ -227,7 +227,7 @@ fn no_overcut_d2() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_overcut_centre() {
     crate::bodies::no_overcut_centre();
 }
@@ -239,7 +239,7 @@ fn no_overcut_centre() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_overcut_left_flank() {
     crate::bodies::no_overcut_left_flank();
 }
@@ -251,7 +251,7 @@ fn no_overcut_left_flank() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_overcut_alternating() {
     crate::bodies::no_overcut_alternating();
 }
@@ -263,7 +263,7 @@ fn no_overcut_alternating() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_rapid_in_thread_d0() {
     crate::bodies::no_rapid_in_thread_d0();
 }
@@ -275,7 +275,7 @@ fn no_rapid_in_thread_d0() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_rapid_in_thread_d1() {
     crate::bodies::no_rapid_in_thread_d1();
 }
@@ -299,7 +299,7 @@ fn no_rapid_in_thread_d2() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_rapid_in_thread_centre() {
     crate::bodies::no_rapid_in_thread_centre();
 }
@@ -311,7 +311,7 @@ fn no_rapid_in_thread_centre() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_rapid_in_thread_left_flank() {
     crate::bodies::no_rapid_in_thread_left_flank();
 }
@@ -323,7 +323,7 @@ fn no_rapid_in_thread_left_flank() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(79)]
+#[kani::unwind(49)]
 fn no_rapid_in_thread_alternating() {
     crate::bodies::no_rapid_in_thread_alternating();
 }
@@ -336,7 +336,7 @@ fn no_rapid_in_thread_alternating() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(81)]
+#[kani::unwind(46)]
 #[kani::solver(cadical)]
 fn equivalence_d0() {
     crate::bodies::equivalence_d0();
@@ -350,7 +350,7 @@ fn equivalence_d0() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(81)]
+#[kani::unwind(46)]
 #[kani::solver(cadical)]
 fn equivalence_d1() {
     crate::bodies::equivalence_d1();
@@ -378,7 +378,7 @@ fn equivalence_d2() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(81)]
+#[kani::unwind(46)]
 #[kani::solver(cadical)]
 fn equivalence_centre() {
     crate::bodies::equivalence_centre();
@@ -392,7 +392,7 @@ fn equivalence_centre() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(81)]
+#[kani::unwind(46)]
 #[kani::solver(cadical)]
 fn equivalence_left_flank() {
     crate::bodies::equivalence_left_flank();
@@ -406,7 +406,7 @@ fn equivalence_left_flank() {
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
-#[kani::unwind(81)]
+#[kani::unwind(46)]
 #[kani::solver(cadical)]
 fn equivalence_alternating() {
     crate::bodies::equivalence_alternating();

@@ -310,12 +310,12 @@ pub const LCNC_PASS_WINDOW: LcncDomain = LcncDomain {
     pass_limit: 8,
 };
 
-/// The unwind bound of harness `name`, or of a family of harnesses split
-/// per infeed mode (`crate::catalogue::unwind`, where the bounds live).
+/// The unwind bound of harness `name` (`crate::catalogue::unwind`, where
+/// the bounds live).
 ///
 /// # Panics
 ///
-/// When `name` is not a Kani harness or family.
+/// When `name` is not a Kani harness.
 #[cfg(not(kani))]
 #[must_use]
 pub fn unwind(name: &str) -> u32 {
