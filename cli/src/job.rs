@@ -28,12 +28,32 @@ use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 pub enum Failure {
     /// An error for the user: printed on stderr, exit status 2.
     Message(String),
+    /// An error of the program read (the reader's or a cycle's alarm):
+    /// printed as `error[KIND]: MESSAGE`, exit status 2. `kind` is the
+    /// stable kind the conformance vectors, Python and C name
+    /// (`cycle:too_many_passes`, `syntax`).
+    Program(Box<ProgramFailure>),
     /// The reader of the output went away (a closed pipe): the command
     /// stops quietly with exit status 0, as Unix filters do.
     BrokenPipe,
 }
 
+/// An error of the program read, with its stable kind ([`Failure::Program`]).
+#[derive(Debug)]
+pub struct ProgramFailure {
+    /// The stable kind ([`cycleref_spec::RunError::stable_kind`]).
+    pub kind: String,
+    /// The message, naming the file, line and word.
+    pub message: String,
+}
+
 impl Failure {
+    /// A failure of the program read: its stable kind and message.
+    #[must_use]
+    pub fn program(kind: String, message: String) -> Failure {
+        Failure::Program(Box::new(ProgramFailure { kind, message }))
+    }
+
     /// A failure with `message`.
     pub fn msg(message: impl Into<String>) -> Failure {
         Failure::Message(message.into())
@@ -54,6 +74,7 @@ impl From<Failure> for String {
     fn from(f: Failure) -> String {
         match f {
             Failure::Message(m) => m,
+            Failure::Program(p) => p.message,
             Failure::BrokenPipe => "the output pipe was closed".to_string(),
         }
     }
@@ -197,7 +218,10 @@ impl Job {
     /// `e` as a failure naming the file.
     #[must_use]
     pub fn read_failure(&self, e: &ReadError) -> Failure {
-        Failure::Message(format!("{}: {e}", self.name))
+        match e {
+            ReadError::Run(run) => self.fail(run),
+            _ => Failure::Message(format!("{}: {e}", self.name)),
+        }
     }
 
     /// The first phase: reads every block and checks every cycle.
@@ -247,7 +271,7 @@ impl Job {
             Ok(summary) => Ok(summary),
             Err(ReadError::Run(e)) => Err((
                 match self.other_increment_hint(&e) {
-                    Some(hint) => Failure::Message(format!("{}: {e}; {hint}", self.name)),
+                    Some(hint) => Failure::program(e.stable_kind(), format!("{}: {e}; {hint}", self.name)),
                     None => self.fail(&e),
                 },
                 Some(e),
@@ -295,7 +319,7 @@ impl Job {
     /// `e` as a failure naming the file.
     #[must_use]
     pub fn fail(&self, e: &RunError) -> Failure {
-        Failure::Message(format!("{}: {e}", self.name))
+        Failure::program(e.stable_kind(), format!("{}: {e}", self.name))
     }
 }
 

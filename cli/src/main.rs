@@ -234,6 +234,12 @@ fn main() -> ExitCode {
             warn(&msg);
             ExitCode::from(2)
         }
+        // The stable kind first, as a compiler names its error codes, so
+        // that a vendor's script matches it with the vectors' kinds.
+        Err(Failure::Program(p)) => {
+            warn(&format!("error[{}]: {}", p.kind, p.message));
+            ExitCode::from(2)
+        }
     }
 }
 

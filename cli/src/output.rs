@@ -61,6 +61,7 @@ fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Resul
     job.for_each_item(
         |failure| match failure {
             Failure::Message(m) => phase_two(m),
+            Failure::Program(p) => phase_two(p.message),
             Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
         },
         f,
@@ -71,6 +72,7 @@ fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Resul
 fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
     job.expand(cycle).map_err(|f| match f {
         Failure::Message(m) => phase_two(m),
+        Failure::Program(p) => phase_two(p.message),
         Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
     })
 }

@@ -140,7 +140,8 @@ fn standard_input_is_named_stdin() {
     // In errors.
     let out = run(&["passes", "-"], Some(b"G00 X80 N10\n"));
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).starts_with("cycleref: <stdin>: line 1, word `N10`"));
+    assert!(String::from_utf8_lossy(&out.stderr)
+        .starts_with("cycleref: error[misplaced]: <stdin>: line 1, word `N10`"));
     // In plot titles (escaped in the SVG).
     let svg = scratch("stdin.svg");
     let out = run(&["plot", "-o", svg.to_str().expect("utf-8 path"), "-"], Some(&program));
@@ -171,8 +172,8 @@ fn a_bom_is_not_echoed_and_gbk_comments_are() {
     assert!(out.stdout.is_empty());
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
-        "cycleref: <stdin>: line 2: byte 0xB6 at byte column 7 is not UTF-8 text (only a comment may hold \
-         text in another encoding, such as GBK)\n"
+        "cycleref: error[encoding]: <stdin>: line 2: byte 0xB6 at byte column 7 is not UTF-8 text (only a \
+         comment may hold text in another encoding, such as GBK)\n"
     );
 }
 

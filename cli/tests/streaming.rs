@@ -70,7 +70,8 @@ fn the_last_of_100_000_cycles_invalid_writes_nothing() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.starts_with(&format!(
-            "cycleref: <stdin>: line {q_line}: Q(Δdmin) = 1.500 is larger than the thread height"
+            "cycleref: error[cycle:min_cut_exceeds_height]: <stdin>: line {q_line}: Q(Δdmin) = 1.500 is larger \
+             than the thread height"
         )),
         "{err}"
     );

@@ -6,7 +6,7 @@
 //! its body in [`crate::bodies`]), the CI matrix in
 //! `.github/workflows/kani.yml` (one job per harness) and the table of
 //! `proofs/README.md`; `proofs/tests/catalogue.rs` fails when any of them
-//! differs from what [`kani_source`], [`workflow_matrix`] and
+//! differs from what [`kani_source`], [`workflow`] and
 //! [`readme_table`] produce (`CYCLEREF_BLESS=1` rewrites them), and
 //! `proofs/tests/kani_windows.rs` runs every body over its window.
 

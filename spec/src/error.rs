@@ -110,6 +110,26 @@ impl ErrorKind {
             ErrorKind::Cycle(_) => "cycle",
         }
     }
+
+    /// The stable kind of the error, as the conformance vectors write it
+    /// (`expect.error.kind`) and the command prints it (`error[KIND]`):
+    /// [`ErrorKind::name`], and for a cycle's alarm `cycle:` and
+    /// [`CycleError::name`](cycleref::CycleError::name)
+    /// (`cycle:too_many_passes`).
+    ///
+    /// ```
+    /// use cycleref_spec::ErrorKind;
+    /// assert_eq!(ErrorKind::Duplicate.stable_kind(), "duplicate");
+    /// let alarm = ErrorKind::Cycle(cycleref::CycleError::StartInsideThread);
+    /// assert_eq!(alarm.stable_kind(), "cycle:start_inside_thread");
+    /// ```
+    #[must_use]
+    pub fn stable_kind(&self) -> String {
+        match self {
+            ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
+            k => k.name().to_string(),
+        }
+    }
 }
 
 impl fmt::Display for ProgramError {

@@ -261,6 +261,18 @@ impl fmt::Display for RunError {
     }
 }
 
+impl RunError {
+    /// The stable kind of the error ([`crate::ErrorKind::stable_kind`]): the
+    /// reader's, or `cycle:` and the alarm's name.
+    #[must_use]
+    pub fn stable_kind(&self) -> String {
+        match self {
+            RunError::Program(e) => e.kind.stable_kind(),
+            RunError::Cycle { error, .. } => format!("cycle:{}", error.name()),
+        }
+    }
+}
+
 impl std::error::Error for RunError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {

@@ -163,10 +163,7 @@ fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
 /// `expect.error.kind` field: [`ErrorKind::name`], and for a cycle alarm
 /// `cycle:` and [`CycleError::name`](cycleref::CycleError::name).
 pub fn kind_name(kind: &ErrorKind) -> String {
-    match kind {
-        ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
-        k => k.name().to_string(),
-    }
+    kind.stable_kind()
 }
 
 // ---- the pseudo-random stream ----
