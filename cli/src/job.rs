@@ -270,8 +270,8 @@ impl Job {
         match validate(&self.text, &self.machine, self.engine) {
             Ok(summary) => Ok(summary),
             Err(ReadError::Run(e)) => Err((
-                match self.other_increment_hint(&e) {
-                    Some(hint) => Failure::program(e.stable_kind(), format!("{}: {e}; {hint}", self.name)),
+                match self.other_increment_hint(&e).or_else(|| self.other_profile_hint(&e)) {
+                    Some(hint) => Failure::program(e.stable_kind(), format!("{}; {hint}", self.message(&e))),
                     None => self.fail(&e),
                 },
                 Some(e),
@@ -307,6 +307,42 @@ impl Job {
         })
     }
 
+    /// When a cycle's alarm refuses the program and another profile reads
+    /// the whole program without error (a FANUC program run with the
+    /// default `gsk988`, whose G76 P reads P920 as 920 mm), a hint naming
+    /// the profiles that accept it. The other GSK and FANUC profiles are
+    /// tried with the job's increment system, unit and X mode, LinuxCNC
+    /// with its own; only on this error path, one reading each.
+    fn other_profile_hint(&self, e: &RunError) -> Option<String> {
+        if !is_cycle_alarm(e) {
+            return None;
+        }
+        let current = self.machine.profile.name;
+        let accepting: Vec<String> =
+            [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc]
+                .into_iter()
+                .filter(|&name| name != current)
+                .filter(|&name| {
+                    let mut other = Machine::new(name);
+                    if name != ProfileName::LinuxCnc && current != ProfileName::LinuxCnc {
+                        other.increment = self.machine.increment;
+                        other.unit = self.machine.unit;
+                        other.x_mode = self.machine.x_mode;
+                        other.calculator_input = self.machine.calculator_input;
+                    }
+                    other.pass_limit = self.machine.pass_limit;
+                    validate(&self.text, &other, self.engine).is_ok()
+                })
+                .map(|name| format!("--profile {name}"))
+                .collect();
+        (!accepting.is_empty()).then(|| {
+            format!(
+                "the program reads without error with {} (the profile decides how the cycle's words are read)",
+                accepting.join(" or ")
+            )
+        })
+    }
+
     /// The moves of `cycle` by the job's engine.
     ///
     /// # Errors
@@ -319,8 +355,26 @@ impl Job {
     /// `e` as a failure naming the file.
     #[must_use]
     pub fn fail(&self, e: &RunError) -> Failure {
-        Failure::program(e.stable_kind(), format!("{}: {e}", self.name))
+        Failure::program(e.stable_kind(), self.message(e))
     }
+
+    /// The message of `e`: the file, the error, and for a cycle's alarm
+    /// the profile in force (an alarm depends on how the profile reads the
+    /// cycle's words).
+    fn message(&self, e: &RunError) -> String {
+        if is_cycle_alarm(e) {
+            format!("{}: {e} (profile {})", self.name, self.machine.profile.name)
+        } else {
+            format!("{}: {e}", self.name)
+        }
+    }
+}
+
+/// Whether `e` is a cycle's alarm (while the cycle was expanded, or as the
+/// reader checked the cycle's words).
+fn is_cycle_alarm(e: &RunError) -> bool {
+    matches!(e, RunError::Cycle { .. })
+        || matches!(e, RunError::Program(p) if matches!(p.kind, cycleref_spec::ErrorKind::Cycle(_)))
 }
 
 /// The first phase over `text` with `machine` and `engine`.

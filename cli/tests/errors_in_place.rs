@@ -101,3 +101,36 @@ fn a_lead_with_too_many_decimals_says_so() {
         "{err}"
     );
 }
+
+/// Seed 004's first FANUC example (`examples/fanuc-external.nc`), run
+/// with the 988TA's profile (the default): the 988TA reads G76's words its
+/// own way, and the start point then lies inside the thread. The alarm
+/// names the profile in force and the profiles that read the program
+/// without error (issue 35: "the default profile surprises").
+#[test]
+fn a_cycle_alarm_names_the_profile_and_the_profiles_that_accept_the_program() {
+    let program = b"O5018;\nN10 G99 G21;\nN20 M03 S400;\nN30 T0303;\nN40 G00 X26.0 Z3.0;\n\
+                    N460 G76 P020560 Q100 R0.1;\nN60 G76 X21.4 Z-26.0 R0 P1300 Q400 F2.0;\n\
+                    N70 G00 X100.0;\nN80 Z200.0;\nN90 M30;\n";
+    let (code, err, out) = expand("gsk988", "fanuc-under-gsk988", program, &[]);
+    assert_eq!((code, out), (2, 0));
+    assert!(err.starts_with("cycleref: error[cycle:start_inside_thread]: "), "{err}");
+    assert!(err.contains(": line 7, G76: the start point A lies inside the thread"), "{err}");
+    assert!(
+        err.trim_end().ends_with(
+            "(profile gsk988); the program reads without error with --profile fanuc or --profile gsk980 \
+             (the profile decides how the cycle's words are read)"
+        ),
+        "{err}"
+    );
+    // And it does: both expand it.
+    for profile in ["fanuc", "gsk980"] {
+        let (code, err, out) = expand(profile, &format!("fanuc-under-{profile}"), program, &[]);
+        assert_eq!(code, 0, "{profile}: {err}");
+        assert!(out > 0);
+    }
+    // A reader error (not a cycle's alarm) names no profile and tries none.
+    let (code, err, _) = expand("gsk988", "reader-error", b"G00 X10 N10\n", &[]);
+    assert_eq!(code, 2);
+    assert!(!err.contains("profile"), "{err}");
+}

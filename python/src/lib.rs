@@ -134,19 +134,19 @@ fn job(program: Program, name: &str, opts: &Options) -> PyResult<Job> {
 fn run_error(py: Python<'_>, failure: Failure, error: Option<RunError>) -> PyErr {
     let message = String::from(failure);
     let Some(error) = error else { return PyOSError::new_err(message) };
-    let (err, line, word, rule) = match &error {
+    // The stable kind the command prints as `error[KIND]` and the vectors
+    // write.
+    let rule = error.stable_kind();
+    let (err, line, word) = match &error {
         RunError::Program(p) => {
-            let rule = cycleref_cli::vectors::kind_name(&p.kind);
             let err = if matches!(p.kind, ErrorKind::Cycle(_)) {
                 CycleError::new_err(message)
             } else {
                 ProgramError::new_err(message)
             };
-            (err, p.line, p.word.clone(), rule)
+            (err, p.line, p.word.clone())
         }
-        RunError::Cycle { line, error, .. } => {
-            (CycleError::new_err(message), *line, None, format!("cycle:{}", error.name()))
-        }
+        RunError::Cycle { line, .. } => (CycleError::new_err(message), *line, None),
     };
     let value = err.value(py);
     let set = value

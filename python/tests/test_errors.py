@@ -62,4 +62,5 @@ def test_the_message_is_the_commands(name, args):
     assert out.returncode == 2
     with pytest.raises(cycleref.ProgramError) as e:
         cycleref.expand(EXAMPLES / name, profile="gsk980")
-    assert out.stderr == f"cycleref: {e.value}\n"
+    # The command prints the stable kind (the exception's `rule`) first.
+    assert out.stderr == f"cycleref: error[{e.value.rule}]: {e.value}\n"
