@@ -14,6 +14,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+/** The version of cycleref this header belongs to. */
+#define CYCLEREF_VERSION "0.2.0"
+
 /**
  * Size of `CyclerefError.message` in bytes, the terminating NUL included.
  */

@@ -37,3 +37,12 @@ fn header_is_up_to_date() {
         );
     }
 }
+
+/// The header's `CYCLEREF_VERSION` is the crate's version (issue 35: one
+/// version across the crates, Python and C).
+#[test]
+fn the_header_names_the_crate_version() {
+    let header = include_str!("../include/cycleref.h");
+    let want = format!("#define CYCLEREF_VERSION \"{}\"", env!("CARGO_PKG_VERSION"));
+    assert!(header.contains(&want), "include/cycleref.h lacks `{want}` (ffi/cbindgen.toml's after_includes)");
+}

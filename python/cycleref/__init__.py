@@ -38,6 +38,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 from . import _cycleref
 from ._cycleref import CycleError, Error, ProgramError
+from ._cycleref import __version__
 
 __all__ = [
     "Cycle",

@@ -519,6 +519,8 @@ fn vector_case(py: Python<'_>, seed: u64, index: u32) -> PyResult<String> {
 #[pymodule]
 fn _cycleref(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    // The package's version: the crates' (0.2.0), one number for all.
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("Error", py.get_type::<Error>())?;
     m.add("ProgramError", py.get_type::<ProgramError>())?;
     m.add("CycleError", py.get_type::<CycleError>())?;

@@ -64,3 +64,13 @@ def test_the_message_is_the_commands(name, args):
         cycleref.expand(EXAMPLES / name, profile="gsk980")
     # The command prints the stable kind (the exception's `rule`) first.
     assert out.stderr == f"cycleref: error[{e.value.rule}]: {e.value}\n"
+
+
+def test_the_version_is_the_crates():
+    # One version across the crates, the package and the C header (issue 35).
+    import pathlib
+    import re
+
+    cargo = (pathlib.Path(__file__).parents[2] / "Cargo.toml").read_text()
+    (version,) = re.findall(r'^\[workspace\.package\]\nversion = "([^"]+)"', cargo, re.M)
+    assert cycleref.__version__ == version == "0.2.0"
