@@ -216,7 +216,11 @@ pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
     for m in moves {
         let Move { motion, to, role, .. } = m;
         if motion == Motion::Rapid {
-            if region.x_long && after_run_out {
+            // Only the retract that follows the run-out is left out: when
+            // a retract of no length is dropped (R-ZERO), the next rapid
+            // (the return) is checked (issue 32: no exemption by position
+            // alone).
+            if region.x_long && after_run_out && role == Role::Retract {
                 // R-XRUNOUT: only a run-out above its pass's cut line.
                 assert!(region.s * i128::from(c.taper) < 0, "an X-long run-out ends in the work");
                 left_out = true;
