@@ -318,23 +318,22 @@ impl Job {
             return None;
         }
         let current = self.machine.profile.name;
-        let accepting: Vec<String> =
-            [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc]
-                .into_iter()
-                .filter(|&name| name != current)
-                .filter(|&name| {
-                    let mut other = Machine::new(name);
-                    if name != ProfileName::LinuxCnc && current != ProfileName::LinuxCnc {
-                        other.increment = self.machine.increment;
-                        other.unit = self.machine.unit;
-                        other.x_mode = self.machine.x_mode;
-                        other.calculator_input = self.machine.calculator_input;
-                    }
-                    other.pass_limit = self.machine.pass_limit;
-                    validate(&self.text, &other, self.engine).is_ok()
-                })
-                .map(|name| format!("--profile {name}"))
-                .collect();
+        let accepting: Vec<String> = ProfileName::ALL
+            .into_iter()
+            .filter(|&name| name != current)
+            .filter(|&name| {
+                let mut other = Machine::new(name);
+                if name != ProfileName::LinuxCnc && current != ProfileName::LinuxCnc {
+                    other.increment = self.machine.increment;
+                    other.unit = self.machine.unit;
+                    other.x_mode = self.machine.x_mode;
+                    other.calculator_input = self.machine.calculator_input;
+                }
+                other.pass_limit = self.machine.pass_limit;
+                validate(&self.text, &other, self.engine).is_ok()
+            })
+            .map(|name| format!("--profile {name}"))
+            .collect();
         (!accepting.is_empty()).then(|| {
             format!(
                 "the program reads without error with {} (the profile decides how the cycle's words are read)",

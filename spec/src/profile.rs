@@ -31,6 +31,12 @@ pub enum ProfileName {
     LinuxCnc,
 }
 
+impl ProfileName {
+    /// Every profile, in the order the command lists them.
+    pub const ALL: [ProfileName; 4] =
+        [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::LinuxCnc];
+}
+
 impl FromStr for ProfileName {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {

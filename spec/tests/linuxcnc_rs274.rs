@@ -30,6 +30,11 @@ use std::cmp::Ordering;
 use std::io::Write;
 use std::process::{Command, Stdio};
 
+// The one copy of the skip rule, shared with cli/tests/linuxcnc.rs.
+#[path = "support/rs274_installed.rs"]
+mod rs274_installed;
+use rs274_installed::rs274_installed;
+
 use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE};
 use cycleref::{IncrementSystem, InputUnit, Lead, LeadWord, Point, Units, XMode};
 use cycleref_spec::linuxcnc::expand;
@@ -147,39 +152,6 @@ fn case(g: &mut Gen) -> (String, LinuxCncG76) {
         l,
     );
     (program, cycle)
-}
-
-/// Whether LinuxCNC's interpreter `rs274` can run here. When it cannot, a
-/// test that compares with it is skipped with one line on the terminal
-/// (written to the standard error handle, which the test harness does not
-/// capture), unless `CYCLEREF_REQUIRE_RS274=1` (set by `.ci/run` after it
-/// installs it), which makes a missing `rs274` a failure.
-fn rs274_installed() -> bool {
-    use std::io::Write as _;
-    static FOUND: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-    let found = *FOUND.get_or_init(|| {
-        Command::new("rs274")
-            .arg("-h")
-            .stdin(Stdio::null())
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .status()
-            .is_ok()
-    });
-    let install =
-        "apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
-                   linuxcnc-uspace";
-    if !found {
-        assert!(
-            std::env::var_os("CYCLEREF_REQUIRE_RS274").is_none_or(|v| v != "1"),
-            "CYCLEREF_REQUIRE_RS274=1 and `rs274` cannot be run: install LinuxCNC's interpreter with `{install}`"
-        );
-        let _ = writeln!(
-            std::io::stderr(),
-            "skipped: this test compares with LinuxCNC's `rs274`, which is not installed (`{install}`)"
-        );
-    }
-    found
 }
 
 fn rs274(program: &str) -> String {
