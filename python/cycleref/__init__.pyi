@@ -59,7 +59,7 @@ class Plunge:
 
 @dataclass(frozen=True)
 class Move:
-    cycle: Literal["G76", "G78", "G32", "G75.1", "G92"]
+    cycle: Literal["G76", "G78", "G32", "G33", "G75.1", "G92"]
     line: int
     motion: _MotionName
     x: Decimal
@@ -76,7 +76,7 @@ class Move:
 
 @dataclass(frozen=True)
 class Cycle:
-    code: Literal["G76", "G78", "G32", "G75.1", "G92"]
+    code: Literal["G76", "G78", "G32", "G33", "G75.1", "G92"]
     line: int
     params_line: Optional[int]
     from_: Optional[Point]

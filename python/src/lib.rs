@@ -120,12 +120,45 @@ fn options(
 
 /// The job of `program` with `opts` (a text is named `name` in messages).
 fn job(program: Program, name: &str, opts: &Options) -> PyResult<Job> {
+    if let Some(p) = &opts.params {
+        opened(p)?;
+    }
     let machine = cycleref_cli::job::machine(opts).map_err(|f| PyValueError::new_err(String::from(f)))?;
     match program {
         Program::Text(t) => Ok(Job::new(name, t, machine, opts.engine)),
         Program::File(p) => {
+            opened(&p)?;
             Job::from_file(&p, machine, opts.engine).map_err(|f| PyOSError::new_err(String::from(f)))
         }
+    }
+}
+
+/// A file that cannot be read as a program raises the `OSError` subclass of
+/// its cause, with `errno`, `strerror` and `filename` set, as `open()` does
+/// (`FileNotFoundError`, `PermissionError`, `IsADirectoryError`); an error
+/// in what the file holds is a `ProgramError`.
+fn opened(path: &std::path::Path) -> PyResult<()> {
+    let os_error = |errno: i32, strerror: String| {
+        PyOSError::new_err((errno, strerror, path.to_string_lossy().into_owned()))
+    };
+    let file = std::fs::File::open(path).map_err(|e| match e.raw_os_error() {
+        Some(errno) => os_error(errno, strip_os_code(&e)),
+        None => PyOSError::new_err(format!("{}: {e}", path.display())),
+    })?;
+    match file.metadata() {
+        // EISDIR, as reading it would give.
+        Ok(m) if m.is_dir() => Err(os_error(21, "Is a directory".to_owned())),
+        _ => Ok(()),
+    }
+}
+
+/// An I/O error's text without Rust's " (os error N)" suffix (Python
+/// gives the number as `errno`).
+fn strip_os_code(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.rfind(" (os error ") {
+        Some(i) => text[..i].to_owned(),
+        None => text,
     }
 }
 
@@ -294,20 +327,22 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), ExpandFailure> {
                 Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
                 Cycle::G75(c) => (Some(c.params_line), Some(c.cycle.from), c.cycle.start),
             };
-            // Counted first, streamed: a program beyond the limit is refused
-            // before its moves are held.
-            let count = job.expand(cycle).map_err(|f| ExpandFailure::Run(f, None))?.count();
-            total += count;
-            if total > MAX_EXPAND_MOVES {
-                return Err(ExpandFailure::TooManyMoves(format!(
-                    "{}: line {}: the expansion reaches {total} moves by this {}; expand() returns at most \
-                     {MAX_EXPAND_MOVES}: use iter_moves(), which streams them",
-                    job.name,
-                    cycle.line(),
-                    cycle.code()
-                )));
+            // Expanded once, and held only up to the limit: a program beyond
+            // it is refused once the move past the limit is reached.
+            let mut moves = Vec::new();
+            for m in job.expand(cycle).map_err(|f| ExpandFailure::Run(f, None))? {
+                total += 1;
+                if total > MAX_EXPAND_MOVES {
+                    return Err(ExpandFailure::TooManyMoves(format!(
+                        "{}: line {}: the expansion exceeds {MAX_EXPAND_MOVES} moves by this {}; expand() \
+                         returns at most {MAX_EXPAND_MOVES}: use iter_moves(), which streams them",
+                        job.name,
+                        cycle.line(),
+                        cycle.code()
+                    )));
+                }
+                moves.push(m);
             }
-            let moves = job.expand(cycle).map_err(|f| ExpandFailure::Run(f, None))?.collect();
             cycles.push(CycleData {
                 code: cycle.code(),
                 line: cycle.line(),
@@ -500,6 +535,9 @@ fn check(
     let job = job(program, name, &opts)?;
     // The program's own errors are raised with their line, word and rule.
     py.detach(|| job.validate_run()).map_err(|(f, e)| run_error(py, f, e))?;
+    if let Program::File(path) = &trace {
+        opened(path)?;
+    }
     let report = py
         .detach(|| match &trace {
             Program::Text(bytes) => cycleref_cli::check::check_bytes(&job, bytes, csv, tolerance),

@@ -4,6 +4,7 @@ cycle's alarm, with `line`, `word`, `rule` and the command's message."""
 from __future__ import annotations
 
 import subprocess
+from decimal import Decimal
 
 import pytest
 
@@ -74,3 +75,42 @@ def test_the_version_is_the_crates():
     cargo = (pathlib.Path(__file__).parents[2] / "Cargo.toml").read_text()
     (version,) = re.findall(r'^\[workspace\.package\]\nversion = "([^"]+)"', cargo, re.M)
     assert cycleref.__version__ == version == "0.2.0"
+
+
+def test_a_file_that_cannot_be_read_raises_the_oserror_of_its_cause(tmp_path):
+    # As open() does: the subclass of the errno, with errno, strerror and
+    # filename set (not a bare OSError with only a message).
+    missing = tmp_path / "missing.nc"
+    calls = (
+        lambda: cycleref.expand(missing),
+        lambda: cycleref.iter_moves(missing),
+        lambda: cycleref.check(missing, missing),
+        lambda: cycleref.check(EXAMPLES / "fanuc-external.nc", missing, profile="fanuc"),
+        lambda: cycleref.expand("G00 X10 Z10\n", params=missing),
+    )
+    for call in calls:
+        with pytest.raises(FileNotFoundError) as e:
+            call()
+        assert (e.value.errno, e.value.filename) == (2, str(missing))
+        assert e.value.strerror == "No such file or directory"
+    with pytest.raises(IsADirectoryError) as e:
+        cycleref.expand(tmp_path)
+    assert (e.value.errno, e.value.filename) == (21, str(tmp_path))
+
+
+def test_expand_holds_at_most_a_million_moves():
+    # 1354 rough + 1 finishing passes x 250 starts, 4 moves a pass: 1 355 000
+    # moves (the command's header and jsonl count say so). expand() refuses
+    # it once the move past the limit is reached, having expanded the cycle
+    # once; iter_moves() streams it.
+    program = (
+        "G50 X100 Z50 M3 S300\nG00 X75 Z10\nG76 P010060 Q0.001 R0 L250\n"
+        "G76 X60.64 Z-62 P3.68 Q0.1 F6\nM30\n"
+    )
+    with pytest.raises(cycleref.Error) as e:
+        cycleref.expand(program, name="big.nc")
+    assert str(e.value).startswith("big.nc: line 4: the expansion exceeds 1000000 moves by this G76")
+    assert "use iter_moves()" in str(e.value)
+    moves = cycleref.iter_moves(program)
+    first = next(moves)
+    assert (first.motion, first.x, first.z) == ("rapid", Decimal("67.800"), Decimal("9.942"))

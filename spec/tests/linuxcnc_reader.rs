@@ -163,3 +163,18 @@ fn g33_blocks() {
     assert_eq!(e.line, 5);
     assert!(e.to_string().contains("K word missing"), "{e}");
 }
+
+#[test]
+fn a_g76_of_no_length_is_refused_at_its_z() {
+    // Z is the current Z (written, or omitted): rs274 cuts G33 moves of no
+    // length, which our reader refuses as G33 blocks (R-LCNC-G33), so the
+    // cycle is refused where its expansion could not be read back.
+    for (g76, word) in [("G76 P2 Z1 I-1 J0.5 K1", Some("Z1")), ("G76 P2 I-1 J0.5 K1", None)] {
+        let e = error(&format!("{HEAD}{g76}\n"));
+        assert_eq!(e.line, 4, "{e}");
+        assert_eq!(e.word.as_deref(), word, "{e}");
+        assert!(e.to_string().contains("a thread of no length"), "{e}");
+    }
+    // One increment of Z is a thread.
+    assert_eq!(cycles(&format!("{HEAD}G76 P2 Z0.9999 I-1 J0.5 K1\n")).len(), 1);
+}

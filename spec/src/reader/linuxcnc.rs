@@ -290,6 +290,17 @@ impl State<'_> {
             Some(w) => self.length(&block, w)?,
             None => z0,
         };
+        if end_z == z0 {
+            // Beyond the interpreter (R-LCNC-G33): a thread of no length,
+            // whose passes would be G33 moves our reader refuses.
+            return Err(err(
+                &block,
+                block.get('Z')?,
+                ErrorKind::OutOfRange {
+                    range: "a Z other than the current Z (a thread of no length, reading R-LCNC-G33)".into(),
+                },
+            ));
+        }
         let peak_offset = self.length(&block, i)?;
         let initial_depth = self.length(&block, j)?;
         let full_depth = self.length(&block, k)?;
