@@ -361,3 +361,46 @@ fn cycles_only_compares_the_cycles_moves_and_the_extra_pass_is_the_last() {
     assert!(out.starts_with("DIFFER: 1 divergence"), "{out}");
     assert!(out.contains("trace line 43: extra pass (5 moves we do not make)"), "{out}");
 }
+
+#[test]
+fn a_g92_pass_missing_or_repeated_is_one_divergence() {
+    // O0012's expansion: lines 1-3 the program's O, M3/G0 and G0 to X65
+    // Z5; then the four G92 blocks, 6 lines each (heading, approach, cut,
+    // run-out, retract, return) at lines 4-9, 10-15, 16-21 and 22-27; then
+    // M30. The pass of line 4 starts at X58.7.
+    let o12 = example("gsk980-g92-o0012.nc");
+    let full = expand("gsk980", &o12);
+    let lines: Vec<&str> = full.lines().collect();
+    let heads: Vec<usize> =
+        lines.iter().enumerate().filter(|(_, l)| l.starts_with("(G92 line")).map(|(i, _)| i).collect();
+    assert_eq!(heads, [3, 9, 15, 21], "{full}");
+    assert_eq!(lines[4], "G00 X58.700 Z5.000");
+    // Without a pass: one divergence, the 5 moves of that pass (approach,
+    // cut, run-out, retract, return), named at its cut; no follow-on
+    // divergence at the next pass's rapids (was: the retract end compared
+    // with the program's G00 X150 Z50).
+    for (gone, line, first) in [(0, 4, "X58.700 Z-27.000"), (2, 6, "X57.000 Z-27.000")] {
+        let h = heads[gone];
+        let trace = [&lines[..h], &lines[h + 6..]].concat().join("\n") + "\n";
+        let (code, out) = check("gsk980", &o12, &trace, "g92-missing.nc", &[]);
+        assert_eq!(code, 1, "{out}");
+        assert!(
+            out.starts_with("DIFFER: 1 divergence (tolerance 0 increments; 22 moves of ours, 17 of"),
+            "{out}"
+        );
+        assert!(
+            out.contains(&format!("G92 at line {line}, start 1: missing pass (5 moves not in the trace), first: end of cut (run-out start) {first}")),
+            "{out}"
+        );
+    }
+    // The pass of line 5 cut twice: one extra pass of 5 moves.
+    let h = heads[1];
+    let trace = [&lines[..h + 6], &lines[h + 1..]].concat().join("\n") + "\n";
+    let (code, out) = check("gsk980", &o12, &trace, "g92-extra.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.starts_with("DIFFER: 1 divergence (tolerance 0 increments; 22 moves of ours, 27 of"),
+        "{out}"
+    );
+    assert!(out.contains("extra pass (5 moves we do not make)"), "{out}");
+}

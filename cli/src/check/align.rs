@@ -130,6 +130,9 @@ pub(super) fn compare_streams(
     // Reused from window to window, as the groups are.
     let mut window = Vec::new();
     let mut regions: Vec<Region> = Vec::new();
+    // A missing group at the end of a window, held until the next window
+    // shows whether the pass it begins is missing whole (see `align`).
+    let mut carry: Option<Group> = None;
     loop {
         // Our next window: the groups of one owner.
         let mut owner = None;
@@ -161,7 +164,8 @@ pub(super) fn compare_streams(
         regions.clear();
         regions.extend(ours.steps.regions.iter().flatten().copied());
         let next = lookahead.as_ref().map(|(g, _)| g);
-        let (divergences, taken) = align(&window, pending.make_contiguous(), tol, units, &regions, next);
+        let (divergences, taken) =
+            align(&window, pending.make_contiguous(), tol, units, &regions, next, &mut carry);
         for g in pending.drain(..taken) {
             theirs.recycle(g);
         }
@@ -169,6 +173,9 @@ pub(super) fn compare_streams(
             ours.recycle(g);
         }
         report.add(divergences);
+    }
+    if let Some(g) = carry.take() {
+        report.add(vec![missing(&g)]);
     }
     // What the trace has beyond our last move.
     for g in pending.drain(..) {
@@ -231,13 +238,14 @@ fn align(
     units: Units,
     regions: &[Region],
     next: Option<&Group>,
+    carry: &mut Option<Group>,
 ) -> (Vec<Divergence>, usize) {
     let free_end = next.is_some();
     let (n, m) = (a.len(), b.len());
     let cmp = |x: &Group, y: &Group| compare(x, y, tol, units, regions);
     // Beyond this size the table is too big: compare in order.
     if (n + 1).saturating_mul(m + 1) > MAX_CELLS {
-        let mut out = Vec::new();
+        let mut out: Vec<Divergence> = carry.take().map(|g| missing(&g)).into_iter().collect();
         let end = if free_end { n.min(m) } else { m };
         for i in 0..n.max(end) {
             match (a.get(i), b.get(i).filter(|_| i < end)) {
@@ -258,7 +266,7 @@ fn align(
             None => n == m,
         };
     if in_order {
-        return (Vec::new(), n);
+        return (carry.take().map(|g| missing(&g)).into_iter().collect(), n);
     }
     let w = m + 1;
     let equal: Vec<bool> =
@@ -336,20 +344,92 @@ fn align(
         }
     }
     ops.reverse();
+    // A pass is its approach, its cuts and the rapids after them (retract,
+    // return), but a group is a run of rapids and the cuts after it: a pass
+    // missing from the trace leaves our group i unmatched *and* the rapids
+    // that lead our group i + 1 (retract and return of pass i) different
+    // from theirs. When the rest of the pair matches once pass i's moves
+    // are taken out, the two are one missing pass; likewise an extra pass
+    // of theirs (issue 29).
     let mut out = Vec::new();
-    for op in ops {
-        match op {
-            Op::Pair(x, y) => out.extend(cmp(&a[x], &b[y])),
-            Op::Join { i, p, j, q } => out.extend(cmp(&joined(&a[i..i + p]), &joined(&b[j..j + q]))),
-            Op::Missing(x) => out.push(missing(&a[x])),
-            Op::Extra(y) => out.push(extra(&b[y])),
+    let mut k = 0;
+    if let Some(g) = carry.take() {
+        match ops.first() {
+            Some(&Op::Pair(0, y)) if !eq(0, y) && without_pass(&g, &a[0], &b[y], &cmp) => {
+                out.push(missing_pass(&g, &a[0]));
+                k = 1;
+            }
+            _ => out.push(missing(&g)),
         }
+    }
+    while k < ops.len() {
+        match (ops[k], ops.get(k + 1).copied()) {
+            (Op::Missing(x), Some(Op::Pair(x1, y)))
+                if x1 == x + 1 && !eq(x1, y) && without_pass(&a[x], &a[x1], &b[y], &cmp) =>
+            {
+                out.push(missing_pass(&a[x], &a[x1]));
+                k += 2;
+                continue;
+            }
+            (Op::Extra(y), Some(Op::Pair(x, y1)))
+                if y1 == y + 1 && !eq(x, y1) && without_pass(&b[y], &b[y1], &a[x], &|t, o| cmp(o, t)) =>
+            {
+                out.push(extra_pass(&b[y], &b[y1]));
+                k += 2;
+                continue;
+            }
+            // Our window's last group, missing, with a next window to come:
+            // held, to be judged with that window's first pair.
+            (Op::Missing(x), None) if free_end && x + 1 == n => *carry = Some(a[x].clone()),
+            (Op::Pair(x, y), _) => out.extend(cmp(&a[x], &b[y])),
+            (Op::Join { i, p, j, q }, _) => out.extend(cmp(&joined(&a[i..i + p]), &joined(&b[j..j + q]))),
+            (Op::Missing(x), _) => out.push(missing(&a[x])),
+            (Op::Extra(y), _) => out.push(extra(&b[y])),
+        }
+        k += 1;
     }
     (out, end)
 }
 
 fn first_step(g: &Group) -> Option<Step> {
     g.cuts.first().or(g.rapids.last()).copied()
+}
+
+/// True when `other` is `next` without the pass that `gone` begins: the
+/// rapids of `gone` up to its approach, then the approach of `next`, then
+/// the cuts of `next`, compared by `cmp` as equal. The rapids of `next`
+/// before its approach are the retract and return of the pass of `gone`.
+fn without_pass(
+    gone: &Group,
+    next: &Group,
+    other: &Group,
+    cmp: &dyn Fn(&Group, &Group) -> Vec<Divergence>,
+) -> bool {
+    let (Some((_, lead)), Some(approach)) = (gone.rapids.split_last(), next.rapids.last()) else {
+        return false;
+    };
+    let mut rapids = lead.to_vec();
+    let mut approach = *approach;
+    approach.from = lead.last().map(|s| s.to).or(gone.rapids.last().and_then(|s| s.from));
+    rapids.push(approach);
+    let shifted = Group { rapids, cuts: next.cuts.clone() };
+    cmp(&shifted, other).is_empty()
+}
+
+/// The moves of the pass `gone` begins and `next` ends: its approach, its
+/// cuts, and the rapids of `next` before its approach.
+fn pass_moves(gone: &Group, next: &Group) -> usize {
+    1 + gone.cuts.len() + next.rapids.len().saturating_sub(1)
+}
+
+/// A pass of ours missing whole from the trace (see [`without_pass`]).
+fn missing_pass(gone: &Group, next: &Group) -> Divergence {
+    Divergence { moves: pass_moves(gone, next), ..missing(gone) }
+}
+
+/// A pass of theirs that we do not cut (see [`without_pass`]).
+fn extra_pass(extra_group: &Group, next: &Group) -> Divergence {
+    Divergence { moves: pass_moves(extra_group, next), ..extra(extra_group) }
 }
 
 fn missing(g: &Group) -> Divergence {
@@ -376,10 +456,10 @@ mod tests {
         let ours = [pass(100), pass(90), pass(80)];
         let theirs = [pass(100), pass(90), pass(80), pass(70)];
         // Our next group is theirs after the three: they agree, three taken.
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&pass(70)));
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&pass(70)), &mut None);
         assert_eq!((whats(&d), taken), (vec![], 3));
         // Without a next group, all of theirs is taken: one extra pass.
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None, &mut None);
         assert_eq!((whats(&d), taken), (vec!["extra pass"], 4));
     }
 
@@ -387,7 +467,7 @@ mod tests {
     fn a_missing_pass_is_one_divergence_not_a_shift() {
         let ours = [pass(100), pass(90), pass(80), pass(70)];
         let theirs = [pass(100), pass(80), pass(70)];
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None);
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None, &mut None);
         assert_eq!((whats(&d), taken), (vec!["missing pass"], 3));
         assert_eq!(d[0].ours.map(|s| s.to), Some(Point::new(90, -30)));
     }
@@ -397,12 +477,19 @@ mod tests {
         // Our window's last pass is missing from the trace, which goes on
         // with our next window's first pass: the window takes two groups and
         // reports the missing pass, instead of pairing it with the next
-        // window's pass (a substitution, then an extra pass later).
+        // window's pass (a substitution, then an extra pass later). The
+        // missing pass is held until the next window, whose first pair
+        // shows whether it is missing whole; it is reported there.
         let ours = [pass(100), pass(90), pass(80)];
         let next = pass(500);
         let theirs = [pass(100), pass(90), pass(500), pass(490)];
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&next));
+        let mut carry = None;
+        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&next), &mut carry);
+        assert_eq!((whats(&d), taken), (vec![], 2));
+        assert_eq!(carry.as_ref().and_then(|g| g.cuts.first()).map(|s| s.to), Some(Point::new(80, -30)));
+        let (d, taken) = align(&[next, pass(490)], &theirs[2..], 0, MM, &[], None, &mut carry);
         assert_eq!((whats(&d), taken), (vec!["missing pass"], 2));
+        assert!(carry.is_none());
     }
 
     #[test]
@@ -410,9 +497,9 @@ mod tests {
         let ours = [pass(100)];
         let mut moved = pass(100);
         moved.cuts[0].to = Point::new(100, -31);
-        let (d, _) = align(&ours, std::slice::from_ref(&moved), 0, MM, &[], None);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 0, MM, &[], None, &mut None);
         assert_eq!(whats(&d), vec!["end point"]);
-        let (d, _) = align(&ours, std::slice::from_ref(&moved), 1, MM, &[], None);
+        let (d, _) = align(&ours, std::slice::from_ref(&moved), 1, MM, &[], None, &mut None);
         assert!(d.is_empty());
     }
 
