@@ -166,7 +166,7 @@ mod tests {
                 Item::G75(_) => g75 += 1,
                 Item::G92(_) => panic!("the generated programs have no G92"),
                 Item::LinuxCncG76(_) => panic!("the generated programs have no LinuxCNC G76"),
-                Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
+                Item::Source(_) | Item::Move(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
         }
         assert_eq!((g76, g32, g75), (g.g76, g.g32, g.g75));
@@ -179,7 +179,7 @@ mod tests {
         let g = program(10_000, false);
         assert_eq!(g.cycles(), 0);
         let m = machine();
-        assert!(Reader::new(g.text.as_bytes(), &m).all(|i| matches!(i, Ok(Item::Source(_)))));
+        assert!(Reader::new(g.text.as_bytes(), &m).all(|i| matches!(i, Ok(Item::Source(_) | Item::Move(_)))));
         assert_eq!(program(10_000, false).text, g.text);
     }
 }

@@ -14,7 +14,7 @@ use std::io::{self, Write};
 use cycleref::{Motion, Move, PassKind, PathType, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, Restore};
+use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, PlainMove, Restore};
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
 use crate::job::{Failure, Job};
@@ -107,11 +107,11 @@ fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: b
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let t = &mut NcText::default();
     each_item(job, |item| {
-        if !matches!(item, Item::Source(_)) {
+        if !matches!(item, Item::Source(_) | Item::Move(_)) {
             nc_aux(out, item.block(), false)?;
         }
         match item {
-            Item::Source(b) => {
+            Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => {
                 out.write_all(&b.text)?;
                 out.write_all(b"\n")?;
             }
@@ -130,7 +130,7 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             Item::G92(call) => nc_g92(out, t, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
             Item::LinuxCncG76(call) => nc_linuxcnc(out, t, call, moves(job, Cycle::LinuxCnc(call))?)?,
         }
-        if !matches!(item, Item::Source(_)) {
+        if !matches!(item, Item::Source(_) | Item::Move(_)) {
             nc_aux(out, item.block(), true)?;
         }
         Ok(())

@@ -14,7 +14,7 @@ use cycleref::lead::Ratio;
 use cycleref::{Motion, Point, StartAngle};
 use cycleref_cli::{output, Format, Job};
 use cycleref_spec::pipeline::{expand, Cycle, Engine};
-use cycleref_spec::reader::length_word;
+use cycleref_spec::reader::{length_word, PlainMove};
 use cycleref_spec::{Item, Machine, ProfileName, Reader};
 use proptest::prelude::*;
 
@@ -65,7 +65,10 @@ fn toolpath(text: &str, machine: &Machine) -> Result<Vec<(usize, Step)>, String>
             }
             continue;
         }
-        let Item::Source(b) = item else { continue };
+        let b = match item {
+            Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => b,
+            _ => continue,
+        };
         let mut set_only = false;
         for g in b.all('G') {
             match g.number().integer() {

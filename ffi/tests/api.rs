@@ -91,6 +91,7 @@ fn engine_moves(program: &str, machine: &Machine) -> Vec<CyclerefMove> {
             }
             // Named, not `_`: a new kind of item must be added here.
             cycleref_spec::Item::Source(_)
+            | cycleref_spec::Item::Move(_)
             | cycleref_spec::Item::G76Params(_)
             | cycleref_spec::Item::G75Params(_) => {}
         }

@@ -13,7 +13,9 @@
 
 use std::fmt;
 
-use cycleref::{CycleError, G32Moves, G75Moves, G76Moves, G92Moves, LinuxCncMoves, Move, Point, Units};
+use cycleref::{
+    CycleError, G32Moves, G75Moves, G76Moves, G92Moves, LinuxCncMoves, Move, Point, Units, XMode,
+};
 
 use crate::error::ProgramError;
 use crate::profile::Machine;
@@ -56,7 +58,7 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Item::G75(c) => Some(Cycle::G75(c)),
             Item::G92(c) => Some(Cycle::G92(c)),
             Item::LinuxCncG76(c) => Some(Cycle::LinuxCnc(c)),
-            Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => None,
+            Item::Source(_) | Item::Move(_) | Item::G76Params(_) | Item::G75Params(_) => None,
         }
     }
 
@@ -117,6 +119,18 @@ impl<'r, 'a> Cycle<'r, 'a> {
             Cycle::G75(c) => c.cycle.units,
             Cycle::G92(c) => c.cycle.units,
             Cycle::LinuxCnc(c) => c.cycle.units,
+        }
+    }
+
+    /// The X mode of the cycle's lengths (and of its moves).
+    #[must_use]
+    pub fn x_mode(self) -> XMode {
+        match self {
+            Cycle::G76(c) => c.cycle.x_mode,
+            Cycle::G32(c) => c.g32.x_mode,
+            Cycle::G75(c) => c.cycle.x_mode,
+            Cycle::G92(c) => c.cycle.x_mode,
+            Cycle::LinuxCnc(c) => c.cycle.x_mode,
         }
     }
 

@@ -23,12 +23,17 @@ use crate::lex::{letter_bit, Block, Lexer, Position, Word};
 use crate::profile::{Dialect, G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
 mod linuxcnc;
+mod trace;
 
 /// What the reader found in a program, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Item<'a> {
-    /// A block that is not part of a cycle: echoed as written.
+    /// A block that is not part of a cycle and commands no motion: echoed
+    /// as written.
     Source(Block<'a>),
+    /// A block of plain motion (G00-G03 with X, Z, U or W): echoed as
+    /// written; the move it commands, from the reader's own modal state.
+    Move(PlainMove<'a>),
     /// G76 block 1 (P Q R ...): sets modal values, produces no motion.
     G76Params(Block<'a>),
     /// G76 block 2: a cycle to expand.
@@ -53,6 +58,7 @@ impl<'a> Item<'a> {
     pub fn block(&self) -> &Block<'a> {
         match self {
             Item::Source(b) | Item::G76Params(b) | Item::G75Params(b) => b,
+            Item::Move(m) => &m.block,
             Item::G76(c) => &c.block,
             Item::G32(c) => &c.block,
             Item::G75(c) => &c.block,
@@ -60,6 +66,28 @@ impl<'a> Item<'a> {
             Item::LinuxCncG76(c) => &c.block,
         }
     }
+}
+
+/// A block of plain motion as the reader resolves it: the one model of a
+/// G00-G03 move, for `expand`'s echo, `check` (our program and a trace
+/// alike) and `plot`.
+///
+/// An axis is `None` while no block has given it (reading R-CHECKPARTIAL:
+/// a move before both axes are known moves along the one it gives).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlainMove<'a> {
+    /// The block.
+    pub block: Block<'a>,
+    /// G00, G01, G02 or G03 (modal: the mode in force).
+    pub motion: MotionMode,
+    /// X and Z before the block (increments, in `x_mode`).
+    pub from: (Option<i64>, Option<i64>),
+    /// X and Z after it: the absolute words, or the incremental ones added
+    /// to `from`.
+    pub to: (Option<i64>, Option<i64>),
+    /// The X mode in force (the machine's, switched by G7/G8 on the
+    /// linuxcnc profile).
+    pub x_mode: XMode,
 }
 
 /// One LinuxCNC G76 block of a program.
@@ -361,6 +389,8 @@ struct State<'m> {
     /// M02 or M30 has been read: the program has ended (reading
     /// R-PROGRAMEND).
     program_end: bool,
+    /// Reading a trace ([`LineReader::for_trace`]): its rules as well.
+    trace: bool,
 }
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
@@ -386,6 +416,9 @@ struct G92Modal {
 enum Next {
     /// A block echoed as written: read in full.
     Source,
+    /// A block of plain motion, read in full: the position it starts from
+    /// (the state holds where it ends).
+    Move((Option<i64>, Option<i64>)),
     /// A block of the LinuxCNC dialect (read by `linuxcnc_block`).
     LinuxCnc,
     /// G75.1 block 1: read in full, pending.
@@ -630,6 +663,7 @@ impl<'m> LineReader<'m> {
                 lcnc_g33: false,
                 lcnc_thread_run: false,
                 program_end: false,
+                trace: false,
             },
             at: None,
             line: 0,
@@ -704,6 +738,7 @@ impl<'m> LineReader<'m> {
         let item = match self.state.scan(&block) {
             // The usual block: it moves once, into the item returned.
             Ok(Next::Source) => return Some(Ok(Item::Source(block))),
+            Ok(Next::Move(from)) => return Some(Ok(Item::Move(self.state.plain_move(block, from)))),
             Ok(next) => self.state.item(next, block),
             Err(e) => Err(e),
         };
@@ -1014,6 +1049,7 @@ impl State<'_> {
     fn item<'a>(&mut self, next: Next, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
         match next {
             Next::Source => Ok(Item::Source(block)),
+            Next::Move(from) => Ok(Item::Move(self.plain_move(block, from))),
             Next::LinuxCnc => self.linuxcnc_block(block),
             Next::G75Params => Ok(Item::G75Params(block)),
             Next::G75(first) => self.g75_block2(first, block).map(Item::G75),
@@ -1037,8 +1073,13 @@ impl State<'_> {
         let mut g50 = false;
         let mut g04 = false;
         let mut motion = None;
+        // The G word of a canned cycle (refused in a trace).
+        let mut cycle_word = None;
         for w in block.all('G') {
             let whole = w.integer();
+            if matches!(whole, Some(76 | 78 | 92)) || (whole.is_none() && w.number().exact(1) == Some(751)) {
+                cycle_word = cycle_word.or(Some(w));
+            }
             match whole {
                 Some(c @ 0..=3) => motion = MotionMode::plain(c),
                 Some(32) => motion = Some(MotionMode::G32),
@@ -1096,9 +1137,14 @@ impl State<'_> {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
                 Some(98 | 99) => return Err(subprogram(block, w)),
-                Some(2 | 30) => self.program_end = true,
+                // A trace goes on after it: its moves are compared.
+                Some(2 | 30) => self.program_end = !self.trace,
                 _ => {}
             }
+        }
+        if self.trace {
+            let m = motion.unwrap_or(self.motion);
+            self.trace_block(block, cycle_word, m, m == MotionMode::G32, g04)?;
         }
         if let Some(s) = block.get('S')? {
             // Reading R-SPINDLE: `G50 S` alone clamps the spindle speed; with X/Z
@@ -1205,11 +1251,19 @@ impl State<'_> {
             }
             self.g32_j = None;
             self.g32_k = None;
+            let from = (self.x, self.z);
             self.x = self.axis(block, xw, uw, self.x)?;
             self.z = self.axis(block, zw, ww, self.z)?;
             self.moved = true;
+            return Ok(Next::Move(from));
         }
         Ok(Next::Source)
+    }
+
+    /// The move of a plain block from `from` to where the state now holds
+    /// the tool.
+    fn plain_move<'a>(&self, block: Block<'a>, from: (Option<i64>, Option<i64>)) -> PlainMove<'a> {
+        PlainMove { block, motion: self.motion, from, to: (self.x, self.z), x_mode: self.x_mode }
     }
 
     /// True once the unit can no longer change (reading R-UNITS): after
@@ -1221,6 +1275,9 @@ impl State<'_> {
     /// G20/G21 (reading R-UNITS): the unit may change only before the
     /// first motion.
     fn set_unit(&mut self, block: &Block<'_>, w: &Word<'_>, unit: InputUnit) -> Result<(), ProgramError> {
+        if self.trace {
+            return self.trace_unit(block, w, unit);
+        }
         if unit != self.units.unit {
             if self.units_settled() {
                 return Err(err(block, Some(w), ErrorKind::UnitChangeAfterMotion));
@@ -1295,7 +1352,8 @@ impl State<'_> {
     }
 
     fn check_spindle(&self, block: &Block<'_>) -> Result<(), ProgramError> {
-        if self.speed && self.spindle_on {
+        // A trace is a log of moves: it need not hold the spindle's words.
+        if self.trace || (self.speed && self.spindle_on) {
             Ok(())
         } else {
             Err(err(block, None, ErrorKind::NoSpindleSpeed))

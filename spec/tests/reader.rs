@@ -46,7 +46,8 @@ fn awkward_but_legal_text() {
     let texts: Vec<_> = p
         .items
         .iter()
-        .filter_map(|i| if let Item::Source(b) = i { Some(b.text_lossy().into_owned()) } else { None })
+        .filter(|i| matches!(i, Item::Source(_) | Item::Move(_)))
+        .map(|i| i.block().text_lossy().into_owned())
         .collect();
     assert!(texts.iter().any(|t| t == "/G00 Z+10 X 80 （起点）"), "{texts:?}");
 }

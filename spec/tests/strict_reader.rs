@@ -5,7 +5,7 @@
 use std::borrow::Cow;
 
 use cycleref_spec::pipeline::{expand, Cycle, Engine};
-use cycleref_spec::reader::Item;
+use cycleref_spec::reader::{Item, PlainMove};
 use cycleref_spec::{ErrorKind, LineReader, Machine, ProfileName, ProgramError, Reader};
 use proptest::prelude::*;
 
@@ -85,7 +85,7 @@ fn n_only_at_the_start_of_a_block() {
         ["N10 G00 X80\n", "/N10 G00 X80\n", "/ N10 G00 X80\n", "G00 X90; N10 G00 X80\n", "n10 g00 x80\n"]
     {
         let items = read_bytes(src.as_bytes(), &m).unwrap_or_else(|e| panic!("{src:?}: {e}"));
-        let Some(Item::Source(b)) = items.last() else { panic!("{src:?}: {items:?}") };
+        let Some(Item::Move(PlainMove { block: b, .. })) = items.last() else { panic!("{src:?}: {items:?}") };
         // The N word is not one of the block's words; its text is echoed.
         assert!(!b.has('N'), "{src:?}");
         assert_eq!(b.get('X').expect("one X").map(|w| w.number().integer()), Some(Some(80)), "{src:?}");
@@ -162,10 +162,11 @@ fn gbk_comments_are_kept_byte_for_byte() {
     let items = read_bytes(src, &m).unwrap_or_else(|e| panic!("{e}"));
     let texts: Vec<&[u8]> = items
         .iter()
-        .filter_map(|i| if let Item::Source(b) = i { Some(b.text.as_ref()) } else { None })
+        .filter(|i| matches!(i, Item::Source(_) | Item::Move(_)))
+        .map(|i| i.block().text.as_ref())
         .collect();
     assert_eq!(texts, [&b"(\xB6\xA8\xCE\xBB)"[..], b"M03 S500", b"G00 X80 Z10 (\xC2\xDD\xCE\xC6)"]);
-    let Item::Source(b) = &items[2] else { panic!() };
+    let Item::Move(PlainMove { block: b, .. }) = &items[2] else { panic!() };
     // Borrowed from the source, not re-encoded.
     assert!(matches!(b.text, Cow::Borrowed(_)));
     assert_eq!(b.text_lossy(), "G00 X80 Z10 (\u{FFFD}\u{FFFD}\u{FFFD}\u{FFFD})");

@@ -28,11 +28,12 @@
 //! Two streams of steps meet in the alignment, a window at a time, and
 //! only the divergences are kept:
 //!
-//! * `ours`: our steps, from the program's motion blocks (`Tracker`, which
-//!   also reads an expanded program given as the trace) and its expanded
-//!   cycles, each annotated, and the regions the cycles cut;
+//! * `ours`: our steps, from the program's plain moves as the program
+//!   reader resolves them (`Follow`) and its expanded cycles, each
+//!   annotated, and the regions the cycles cut;
 //! * `trace`: their steps, read as they are taken from an expanded
-//!   program, a CSV or LinuxCNC's canonical output;
+//!   program (by the program reader in its trace mode, and `Follow`), a CSV
+//!   or LinuxCNC's canonical output;
 //! * `align`: both streams made into groups (passes), and our groups
 //!   aligned a window at a time with theirs by edit distance
 //!   (`compare_streams` drives the whole comparison);

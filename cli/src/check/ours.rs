@@ -1,67 +1,28 @@
-//! Our toolpath as a stream of steps: the program's own motion blocks,
-//! read by `Tracker` (which reads an expanded program given as the trace
-//! too, strictly), and its cycles' expanded moves, each annotated with the
-//! cycle, pass and point it is. Also the regions the cycles cut, against
+//! Our toolpath as a stream of steps: the program's own motion blocks, as
+//! the program reader resolves them (`Follow`, which makes the steps of a
+//! trace read by the same reader in its trace mode too), and its cycles'
+//! expanded moves, each annotated with the cycle, pass and point it is. Also the regions the cycles cut, against
 //! which a split rapid is judged (reading R-CHECKSPLIT).
 
 use std::collections::VecDeque;
 
 use cycleref::units::MAX_LENGTH;
-use cycleref::{
-    InputUnit, Lead, LeadWord, Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units, XMode,
-};
+use cycleref::{Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units, XMode};
 use cycleref_spec::lex::{Block, Word};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::Dialect;
-use cycleref_spec::reader::{length_word, q_word, Item, MotionMode};
+use cycleref_spec::reader::{length_word, G32Call, Item, MotionMode, PlainMove};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
 use super::{Context, Kind, Step, UNKNOWN};
 use crate::job::{Items, Job};
 
-/// G33's K as a lead: > 0, at most six decimals, kept with the fewest
-/// decimals (as the reader keeps it).
-fn k_lead(b: &Block, w: &Word) -> Result<Lead, String> {
-    let bad = || at(b, Some(w), "K of G33 must be > 0 with at most 6 decimals");
-    let d = w.number().decimal().ok_or_else(bad)?;
-    let scaled = d.checked_mul(Decimal::from(1_000_000)).filter(|s| s.fract().is_zero()).ok_or_else(bad)?;
-    let mut mantissa = u64::try_from(scaled).ok().filter(|m| *m > 0).ok_or_else(bad)?;
-    let mut scale = 6;
-    while scale > 0 && mantissa % 10 == 0 {
-        mantissa /= 10;
-        scale -= 1;
-    }
-    Ok(Lead { word: LeadWord::F, mantissa, scale })
-}
-
 /// A message naming a block's line and, when there is one, its word.
 fn at(b: &Block, w: Option<&Word>, msg: &str) -> String {
     match w {
         Some(w) => format!("line {}, word `{}`: {msg}", b.line, w.text()),
         None => format!("line {}: {msg}", b.line),
-    }
-}
-
-/// The lead of an F or I word, exactly as written.
-fn lead_of(b: &Block, w: &Word, word: LeadWord) -> Result<Lead, String> {
-    let bad =
-        || at(b, Some(w), "the lead is outside every range table (F up to 9999, I from 0.0001 to 2540)");
-    if w.number().negative {
-        return Err(bad());
-    }
-    let n = w.number();
-    let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
-    let mut mantissa: u64 = 0;
-    for b in n.int_digits().bytes().chain(frac.bytes()) {
-        mantissa =
-            mantissa.checked_mul(10).and_then(|m| m.checked_add(u64::from(b - b'0'))).ok_or_else(bad)?;
-    }
-    let lead = Lead { word, mantissa, scale: u32::try_from(frac.len()).map_err(|_| bad())? };
-    if lead.in_range() {
-        Ok(lead)
-    } else {
-        Err(bad())
     }
 }
 
@@ -94,46 +55,26 @@ fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, St
     Ok(dx)
 }
 
-/// Reads a trace or our own program's motion blocks: modal motion,
-/// absolute/incremental words, the modal lead.
-pub(super) struct Tracker<'m> {
+/// Steps of the moves the program reader resolves, for our program and for
+/// a trace alike (one reader, one model of a move: the reader's
+/// [`PlainMove`] and [`G32Call`], and the engine's moves of our cycles).
+/// It holds only where the tool is, as the check holds it: X as written on
+/// the FANUC-style profiles, a diameter on the linuxcnc profile, whose
+/// programs switch between G7 and G8 (reading R-CHECKLCNC).
+pub(super) struct Follow<'m> {
     machine: &'m Machine,
     units: Units,
-    x: Option<i64>,
-    z: Option<i64>,
-    motion: Kind,
-    lead: Option<Lead>,
-    /// The previous move was a thread move (a continuous thread).
-    in_thread: bool,
-    /// Reading a vendor's trace: every word must be one of a plain move.
-    strict: bool,
-    /// The linuxcnc profile: G7/G8 switch the X mode, G33 K is a thread,
-    /// U and W are no incremental words, and X is held as a diameter
-    /// (reading R-CHECKLCNC).
     linuxcnc: bool,
-    /// The X mode in force (G7/G8 on the linuxcnc profile).
-    x_mode: XMode,
+    /// The end of the latest step (or a cycle's start), as held.
+    at: (Option<i64>, Option<i64>),
 }
 
-impl<'m> Tracker<'m> {
-    pub(super) fn new(machine: &'m Machine, units: Units, strict: bool) -> Tracker<'m> {
-        Tracker {
-            machine,
-            units,
-            x: None,
-            z: None,
-            motion: Kind::Rapid,
-            lead: None,
-            in_thread: false,
-            strict,
-            linuxcnc: machine.profile.dialect == Dialect::LinuxCnc,
-            x_mode: machine.x_mode,
-        }
+impl<'m> Follow<'m> {
+    pub(super) fn new(machine: &'m Machine, units: Units) -> Follow<'m> {
+        Follow { machine, units, linuxcnc: machine.profile.dialect == Dialect::LinuxCnc, at: (None, None) }
     }
 
-    /// X as the check holds it: as written on the FANUC-style profiles; a
-    /// diameter on the linuxcnc profile, whose programs switch between
-    /// G7 and G8 (a radius doubles, exactly).
+    /// X as the check holds it (a radius doubles, exactly, on linuxcnc).
     fn held_x(&self, x: i64, mode: XMode) -> i64 {
         if self.linuxcnc && mode == XMode::Radius {
             x.saturating_mul(2)
@@ -142,226 +83,66 @@ impl<'m> Tracker<'m> {
         }
     }
 
-    /// G7/G8 on the linuxcnc profile: the position kept in the old mode
-    /// converts (an odd diameter has no radius in increments).
-    fn switch_x_mode(&mut self, b: &Block, w: &Word, to: XMode) -> Result<(), String> {
-        if to == self.x_mode {
-            return Ok(());
-        }
-        if let Some(x) = self.x {
-            self.x = Some(match to {
-                XMode::Diameter => x.saturating_mul(2),
-                XMode::Radius if x % 2 == 0 => x / 2,
-                XMode::Radius => {
-                    return Err(at(b, Some(w), "G8 after an odd diameter: its radius is no increment"))
-                }
-            });
-        }
-        self.x_mode = to;
-        Ok(())
+    fn held(&self, (x, z): (Option<i64>, Option<i64>), mode: XMode) -> (Option<i64>, Option<i64>) {
+        (x.map(|x| self.held_x(x, mode)), z)
     }
 
-    /// A G word of a trace: one of a plain move (`plain`, the profile's list
-    /// `moves` naming them), and no change of the input unit.
-    fn trace_g(&self, b: &Block, w: &Word, g: Option<i64>, plain: bool, moves: &str) -> Result<bool, String> {
-        if !plain {
-            return Err(at(
-                b,
-                Some(w),
-                &format!("a trace holds plain {moves} blocks, not canned cycles or other modes"),
-            ));
-        }
-        let unit = match self.units.unit {
-            InputUnit::Metric => 21,
-            InputUnit::Inch => 20,
-        };
-        if matches!(g, Some(20 | 21)) && g != Some(unit) {
-            return Err(at(b, Some(w), "the trace changes the input unit; write it in the program's unit"));
-        }
-        Ok(true)
-    }
-
-    /// A trace's words that the check does not read are refused: they might
-    /// shape the part (reading R-CHECKWORDS).
-    fn strict_words(&self, b: &Block, motion: Kind) -> Result<(), String> {
-        let dwell = b.all('G').any(|g| g.number().integer() == Some(4));
-        for w in &b.words {
-            let ok = match w.letter {
-                'G' if self.linuxcnc => {
-                    // `integer` is None for a code that is not whole.
-                    let g = w.number().integer();
-                    let plain = matches!(g, Some(0..=4 | 7 | 8 | 18 | 20 | 21 | 33 | 40 | 54..=59 | 61 | 64 | 90 | 94..=97));
-                    self.trace_g(b, w, g, plain, "G0/G1/G2/G3/G33")?
-                }
-                'U' | 'W' | 'Q' | 'I' | 'J' if self.linuxcnc && motion == Kind::Thread => false,
-                'U' | 'W' if self.linuxcnc => false,
-                'F' if self.linuxcnc && motion == Kind::Thread => {
-                    return Err(at(b, Some(w), "F in a G33 block (LinuxCNC: \"F word used with a g33/g33.1\")"))
-                }
-                'K' if self.linuxcnc && motion == Kind::Thread => true,
-                'G' => {
-                    let g = w.number().integer();
-                    let plain = matches!(g, Some(0..=4 | 18 | 20 | 21 | 32 | 40 | 50 | 54..=59 | 96..=99));
-                    self.trace_g(b, w, g, plain, "G00/G01/G02/G03/G32")?
-                }
-                'M' => {
-                    if matches!(w.number().integer(), Some(98 | 99)) {
-                        return Err(at(b, Some(w), "a trace holds plain moves, not subprogram calls"));
-                    }
-                    true
-                }
-                'X' | 'U' => true,
-                'Z' | 'W' | 'F' | 'S' | 'T' => true,
-                'P' => dwell,
-                'Q' => motion == Kind::Thread,
-                'I' => motion.is_arc() || motion == Kind::Thread,
-                'J' | 'K' if motion == Kind::Thread => {
-                    return Err(at(b, Some(w), "a trace holds plain moves; write the run-out as its own block"))
-                }
-                'K' => motion.is_arc(),
-                'R' if motion.is_arc() => {
-                    return Err(at(
-                        b,
-                        Some(w),
-                        "an arc in a trace gives its centre as I and K: the centre R implies is in general not a \
-                         point of the increment grid, so it cannot be compared exactly (reading R-CHECKARC)",
-                    ))
-                }
-                _ => false,
-            };
-            if !ok {
-                return Err(at(
-                    b,
-                    Some(w),
-                    &format!("not a word of a plain {} move in a trace", motion.name()),
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// The move of a block, if it moves.
-    pub(super) fn block(&mut self, b: &Block<'_>) -> Result<Option<Step>, String> {
-        let pe = |e: cycleref_spec::ProgramError| e.to_string();
-        if b.words.is_empty() {
+    /// The step of a block of plain motion; `None` for a block to where the
+    /// tool is. A move before both axes are known is kept, with the axis
+    /// not yet known as `UNKNOWN` (reading R-CHECKPARTIAL): it is compared
+    /// on the axis it gives, and never dropped.
+    pub(super) fn plain(&mut self, m: &PlainMove<'_>) -> Result<Option<Step>, String> {
+        let (from, to) = (self.held(m.from, m.x_mode), self.held(m.to, m.x_mode));
+        self.at = to;
+        if from == to {
             return Ok(None);
         }
-        let mut g50 = false;
-        let mut dwell = false;
-        for w in b.all('G') {
-            match w.number().integer() {
-                Some(0) => self.motion = Kind::Rapid,
-                Some(1) => self.motion = Kind::Feed,
-                Some(2) => self.motion = Kind::ArcCw,
-                Some(3) => self.motion = Kind::ArcCcw,
-                Some(32) if !self.linuxcnc => self.motion = Kind::Thread,
-                Some(33) if self.linuxcnc => self.motion = Kind::Thread,
-                Some(7) if self.linuxcnc => self.switch_x_mode(b, w, XMode::Diameter)?,
-                Some(8) if self.linuxcnc => self.switch_x_mode(b, w, XMode::Radius)?,
-                Some(50) if !self.linuxcnc => g50 = true,
-                Some(4) => dwell = true,
-                _ => {}
-            }
-        }
-        if self.strict {
-            self.strict_words(b, self.motion)?;
-        }
-        if self.linuxcnc && self.motion == Kind::Thread {
-            // G33's K: the distance per revolution along the move; every
-            // G33 block gives it (LinuxCNC: "K word missing with g33/g33.1").
-            let k = b.get('K').map_err(pe)?.ok_or_else(|| at(b, None, "a G33 block without K"))?;
-            self.lead = Some(k_lead(b, k)?);
-        }
-        for letter in ['F', 'I'] {
-            if self.linuxcnc && self.motion == Kind::Thread {
-                break;
-            }
-            if let Some(w) = b.get(letter).map_err(pe)? {
-                // I is an arc centre outside G32; F is shared with the feed.
-                if letter == 'F' || self.motion == Kind::Thread {
-                    let word = if letter == 'F' { LeadWord::F } else { LeadWord::I };
-                    match lead_of(b, w, word) {
-                        Ok(l) => self.lead = Some(l),
-                        Err(e) if self.motion == Kind::Thread => return Err(e),
-                        // A feed rate is not a lead; a thread later needs its own F.
-                        Err(_) => self.lead = None,
-                    }
-                }
-            }
-        }
-        if !self.linuxcnc {
-            // The program's own rule (one home: the reader): X with U, or Z
-            // with W, is an error, in a trace as in a program.
-            cycleref_spec::reader::check_axis_words(b).map_err(pe)?;
-        }
-        let coord = |abs: char, inc: char, cur: Option<i64>| -> Result<Option<i64>, String> {
-            if let Some(w) = b.get(abs).map_err(pe)? {
-                return Ok(Some(length_word(self.machine, self.units, b, w).map_err(pe)?));
-            }
-            if let Some(w) = b.get(inc).map_err(pe)? {
-                let d = length_word(self.machine, self.units, b, w).map_err(pe)?;
-                // An incremental word needs the position, as in a program
-                // (the reader's PositionUnknown).
-                let Some(c) = cur else {
-                    return Err(at(
-                        b,
-                        Some(w),
-                        "the trace moves by an incremental word before its start point is known: give a G50 \
-                         or a first G00 X Z",
-                    ));
-                };
-                return Ok(Some(c + d));
-            }
-            Ok(cur)
-        };
-        let moved = ['X', 'Z', 'U', 'W'].iter().any(|&c| b.has(c));
-        if dwell || !moved {
-            if b.words.iter().any(|w| w.letter != 'F' && w.letter != 'G') {
-                self.in_thread = false;
-            }
-            return Ok(None);
-        }
-        let (u, w) = if self.linuxcnc { ('\0', '\0') } else { ('U', 'W') };
-        let x = coord('X', u, self.x)?;
-        let z = coord('Z', w, self.z)?;
-        if g50 {
-            (self.x, self.z) = (x, z);
-            return Ok(None);
-        }
-        let from = (self.x, self.z);
-        (self.x, self.z) = (x, z);
-        if from == (x, z) {
-            return Ok(None);
-        }
-        // A move before both axes are known is kept, with the axis not yet
-        // known as `UNKNOWN` (reading R-CHECKPARTIAL): it is compared on the
-        // axis it gives, and never dropped.
-        let to = Point::new(x.map_or(UNKNOWN, |x| self.held_x(x, self.x_mode)), z.unwrap_or(UNKNOWN));
         let from = match from {
-            (Some(fx), Some(fz)) => Some(Point::new(self.held_x(fx, self.x_mode), fz)),
+            (Some(x), Some(z)) => Some(Point::new(x, z)),
             _ => None,
         };
-        let kind = self.motion;
-        let centre = if kind.is_arc() { Some(self.centre(b, from)?) } else { None };
-        let sync = kind == Kind::Thread && !self.in_thread;
-        let angle = match (kind, b.get('Q').map_err(pe)?) {
-            (Kind::Thread, Some(w)) if sync && !self.linuxcnc => {
-                q_word(self.machine, self.units, b, w).map_err(pe)?
-            }
-            _ => StartAngle::ZERO,
+        let kind = match m.motion {
+            MotionMode::G01 => Kind::Feed,
+            MotionMode::G02 => Kind::ArcCw,
+            MotionMode::G03 => Kind::ArcCcw,
+            // G32 and G92 blocks are the reader's cycles, never plain.
+            MotionMode::G00 | MotionMode::G32 | MotionMode::G92 => Kind::Rapid,
         };
-        self.in_thread = kind == Kind::Thread;
-        let lead = if kind == Kind::Thread { self.lead } else { None };
+        let centre = if kind.is_arc() { Some(self.centre(&m.block, from)?) } else { None };
         Ok(Some(Step {
             kind,
             from,
-            to,
+            to: Point::new(to.0.unwrap_or(UNKNOWN), to.1.unwrap_or(UNKNOWN)),
             centre,
-            lead,
-            angle,
-            sync,
-            context: Context::Source { line: b.line },
+            lead: None,
+            angle: StartAngle::ZERO,
+            sync: false,
+            context: Context::Source { line: m.block.line },
         }))
+    }
+
+    /// The step of a thread block of a trace (a G32 or G33 without
+    /// run-out: the reader's trace mode refuses J and K).
+    pub(super) fn thread(&mut self, call: &G32Call<'_>) -> Step {
+        let g = &call.g32;
+        let (from, to) = (g.start, g.end);
+        let to = Point::new(self.held_x(to.x, g.x_mode), to.z);
+        self.at = (Some(to.x), Some(to.z));
+        Step {
+            kind: Kind::Thread,
+            from: Some(Point::new(self.held_x(from.x, g.x_mode), from.z)),
+            to,
+            centre: None,
+            lead: Some(g.lead),
+            angle: if g.sync { g.start_angle } else { StartAngle::ZERO },
+            sync: g.sync,
+            context: Context::Source { line: call.block.line },
+        }
+    }
+
+    /// A cycle of ours starts at `from` (its block's start).
+    fn start_cycle(&mut self, from: Point, x_mode: XMode) {
+        self.at = (Some(self.held_x(from.x, x_mode)), Some(from.z));
     }
 
     /// An arc's centre from its I and K (an omitted one is 0); R is refused
@@ -399,18 +180,19 @@ impl<'m> Tracker<'m> {
         Ok(Point::new(from.x + dx, from.z + dz))
     }
 
-    /// One of our expanded moves: the tracker follows it.
-    fn inject(&mut self, m: &Move, context: Context, x_mode: XMode) -> Step {
-        let from = match (self.x, self.z) {
-            (Some(x), Some(z)) => Some(Point::new(self.held_x(x, self.x_mode), z)),
+    /// One of our expanded moves, in the X mode of its cycle's block;
+    /// `None` for a move to where the tool is (LinuxCNC's G76 ends with a
+    /// rapid of no length when X is not programmed).
+    fn cycle_move(&mut self, m: &Move, context: Context, x_mode: XMode) -> Option<Step> {
+        let to = Point::new(self.held_x(m.to.x, x_mode), m.to.z);
+        let from = match self.at {
+            (Some(x), Some(z)) => Some(Point::new(x, z)),
             _ => None,
         };
-        // The cycle's moves are in the X mode of its block, which is the
-        // one in force.
-        self.x_mode = x_mode;
-        self.x = Some(m.to.x);
-        self.z = Some(m.to.z);
-        let to = Point::new(self.held_x(m.to.x, x_mode), m.to.z);
+        if from == Some(to) {
+            return None;
+        }
+        self.at = (Some(to.x), Some(to.z));
         let centre_of = |c: Point| Point::new(self.held_x(c.x, x_mode), c.z);
         let (kind, lead, angle, sync, centre) = match m.motion {
             Motion::Rapid => (Kind::Rapid, None, StartAngle::ZERO, false, None),
@@ -426,26 +208,7 @@ impl<'m> Tracker<'m> {
                 Some(centre_of(centre)),
             ),
         };
-        self.motion = kind;
-        self.in_thread = kind == Kind::Thread;
-        if let Some(l) = lead {
-            self.lead = Some(l);
-        }
-        Step { kind, from, to, centre, lead, angle, sync, context }
-    }
-
-    /// The motion mode in force again after a one-shot cycle.
-    fn restore(&mut self, motion: Option<MotionMode>) {
-        self.motion = match motion {
-            Some(MotionMode::G01) => Kind::Feed,
-            Some(MotionMode::G02) => Kind::ArcCw,
-            Some(MotionMode::G03) => Kind::ArcCcw,
-            Some(MotionMode::G32) => Kind::Thread,
-            // Never restored (every G92 block is expanded); G00 is what the
-            // expansion leaves.
-            Some(MotionMode::G92) => Kind::Rapid,
-            Some(MotionMode::G00) | None => Kind::Rapid,
-        };
+        Some(Step { kind, from, to, centre, lead, angle, sync, context })
     }
 }
 
@@ -642,9 +405,6 @@ struct Running {
     kind: RunningKind,
     /// The X mode of the cycle's moves.
     x_mode: XMode,
-    /// For a one-shot cycle (G76, G75.1), the motion mode in force again
-    /// after it; `None` for G32, which leaves its own mode.
-    restore: Option<Option<MotionMode>>,
 }
 
 #[derive(Clone, Copy)]
@@ -662,13 +422,13 @@ enum RunningKind {
 pub(super) struct OurSteps<'j> {
     job: &'j Job,
     items: Items<'j>,
-    tracker: Tracker<'j>,
+    follow: Follow<'j>,
     current: Option<Running>,
     segment: u32,
     /// The regions of the latest cycles.
     pub(super) regions: VecDeque<Vec<Region>>,
     /// Only the cycles' moves are steps (reading R-CHECKCYCLES); the
-    /// program's own blocks only move the tracker.
+    /// program's own blocks only move the tool.
     cycles_only: bool,
 }
 
@@ -677,7 +437,7 @@ impl<'j> OurSteps<'j> {
         Ok(OurSteps {
             job,
             items: job.items()?,
-            tracker: Tracker::new(&job.machine, units, false),
+            follow: Follow::new(&job.machine, units),
             current: None,
             segment: 0,
             regions: VecDeque::new(),
@@ -689,13 +449,6 @@ impl<'j> OurSteps<'j> {
         loop {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
-                    // A move to where the tool is, is no move, in our
-                    // toolpath as in a trace (LinuxCNC's G76 ends with a
-                    // rapid of no length when X is not programmed).
-                    let t = &self.tracker;
-                    if t.x_mode == run.x_mode && (t.x, t.z) == (Some(m.to.x), Some(m.to.z)) {
-                        continue;
-                    }
                     let (line, role) = (run.line, m.role);
                     let context = match run.kind {
                         RunningKind::G76 => {
@@ -708,30 +461,31 @@ impl<'j> OurSteps<'j> {
                         RunningKind::G92 => Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role },
                         RunningKind::G75 => Context::G75 { line, role },
                     };
-                    return Some(Ok((self.tracker.inject(&m, context, run.x_mode), self.segment)));
-                }
-                // G76 and G75.1 are one-shot: the motion mode before them is
-                // in force again.
-                if let Some(motion) = run.restore {
-                    self.tracker.restore(motion);
+                    // A move to where the tool is, is no move, in our
+                    // toolpath as in a trace.
+                    match self.follow.cycle_move(&m, context, run.x_mode) {
+                        Some(step) => return Some(Ok((step, self.segment))),
+                        None => continue,
+                    }
                 }
                 self.current = None;
                 self.segment += 1;
                 continue;
             }
-            let (job, tracker, segment, cycles_only) =
-                (self.job, &mut self.tracker, self.segment, self.cycles_only);
+            let (job, follow, segment, cycles_only) =
+                (self.job, &mut self.follow, self.segment, self.cycles_only);
             let (regions, current) = (&mut self.regions, &mut self.current);
             let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, String> {
                 let Some(cycle) = Cycle::of(item) else {
-                    let Item::Source(b) = item else { return Ok(None) };
-                    return match tracker.block(b) {
+                    let Item::Move(m) = item else { return Ok(None) };
+                    return match follow.plain(m) {
                         Ok(step) => Ok(step.filter(|_| !cycles_only).map(|s| (s, segment))),
                         Err(e) => Err(format!("{}: {e}", job.name)),
                     };
                 };
                 let started = regions_of(job, cycle)?;
                 let moves = job.expand(cycle)?;
+                follow.start_cycle(cycle.from(), cycle.x_mode());
                 if regions.len() == REGION_CYCLES {
                     regions.pop_front();
                 }
@@ -740,13 +494,7 @@ impl<'j> OurSteps<'j> {
                     moves,
                     code: cycle.code(),
                     line: cycle.line(),
-                    x_mode: match cycle {
-                        Cycle::G76(c) => c.cycle.x_mode,
-                        Cycle::G32(c) => c.g32.x_mode,
-                        Cycle::G75(c) => c.cycle.x_mode,
-                        Cycle::G92(c) => c.cycle.x_mode,
-                        Cycle::LinuxCnc(c) => c.cycle.x_mode,
-                    },
+                    x_mode: cycle.x_mode(),
                     kind: match cycle {
                         Cycle::G76(_) => RunningKind::G76,
                         Cycle::G32(_) => RunningKind::G32,
@@ -754,7 +502,6 @@ impl<'j> OurSteps<'j> {
                         Cycle::G92(_) => RunningKind::G92,
                         Cycle::LinuxCnc(_) => RunningKind::LinuxCnc,
                     },
-                    restore: (!matches!(cycle, Cycle::G32(_))).then(|| cycle.restore().motion),
                 });
                 Ok(None)
             });

@@ -9,13 +9,13 @@ use std::path::Path;
 
 use cycleref::units::MAX_LENGTH;
 use cycleref::{InputUnit, Lead, LeadWord, Point, StartAngle, Units};
-use cycleref_spec::lex::Lexer;
 use cycleref_spec::profile::Dialect;
+use cycleref_spec::reader::{Item, LineReader};
 use cycleref_spec::rs274::{CanonCall, CanonUnits};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
-use super::ours::Tracker;
+use super::ours::Follow;
 use super::{Context, Kind, Step, TraceFormat};
 
 /// The error of a trace's line `line` whose byte at offset `at` (from 0)
@@ -64,13 +64,16 @@ struct NcTrace<'t, 'm> {
     /// the lines above it are read as they would be without it).
     bad: Option<usize>,
     line: usize,
-    tracker: Tracker<'m>,
+    /// The program reader in its trace mode (reading R-CHECKWORDS): one
+    /// reader and one set of rules for programs and traces.
+    reader: LineReader<'m>,
+    follow: Follow<'m>,
     /// The steps of the current line (a line may hold several blocks).
     ready: VecDeque<Step>,
 }
 
 impl<'t, 'm> NcTrace<'t, 'm> {
-    fn new(source: Box<dyn BufRead + 't>, tracker: Tracker<'m>) -> NcTrace<'t, 'm> {
+    fn new(source: Box<dyn BufRead + 't>, machine: &'m Machine, units: Units) -> NcTrace<'t, 'm> {
         NcTrace {
             source,
             buf: Vec::new(),
@@ -79,7 +82,8 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             eof: false,
             bad: None,
             line: 0,
-            tracker,
+            reader: LineReader::for_trace(machine, units),
+            follow: Follow::new(machine, units),
             ready: VecDeque::new(),
         }
     }
@@ -125,11 +129,23 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                     e
                 }
             };
-            for b in Lexer::at_line(text, self.line) {
-                let b = b.map_err(|e| hint(e.to_string()))?;
-                if let Some(s) = self.tracker.block(&b).map_err(hint)? {
-                    self.ready.push_back(s);
-                }
+            // The line is one piece of the reader's, so that its numbers
+            // are the trace's.
+            while let Some(item) = self.reader.next_in(text) {
+                let step = match item.map_err(|e| hint(e.to_string()))? {
+                    Item::Move(m) => self.follow.plain(&m).map_err(hint)?,
+                    Item::G32(call) => Some(self.follow.thread(&call)),
+                    Item::Source(_) => None,
+                    // The trace mode refuses every cycle's block; were one
+                    // read, it is refused here rather than passed over.
+                    other => {
+                        return Err(format!(
+                            "line {}: a trace holds plain moves, not canned cycles",
+                            other.block().line
+                        ))
+                    }
+                };
+                self.ready.extend(step);
             }
         }
         Ok(true)
@@ -658,6 +674,6 @@ pub(super) fn trace_steps<'t, 'm: 't>(
     } else if format == TraceFormat::Csv {
         Box::new(CsvTrace::new(source, machine, units)?)
     } else {
-        Box::new(NcTrace::new(source, Tracker::new(machine, units, true)))
+        Box::new(NcTrace::new(source, machine, units))
     })
 }

@@ -284,11 +284,11 @@ pub fn run(
         |f| f,
         |item| {
             let Some(cycle) = Cycle::of(item) else {
-                // A block that moves is one move of the toolpath (as `check`
-                // counts them; approximately: a block to where the tool is
-                // counts too, which the overlay's slack absorbs).
-                if let Item::Source(b) = item {
-                    position += usize::from(['X', 'Z', 'U', 'W'].iter().any(|&c| b.has(c)));
+                // A block that moves is one move of the toolpath, as `check`
+                // counts them (the reader's plain move; a block to where
+                // the tool is, is none).
+                if let Item::Move(m) = item {
+                    position += usize::from(m.from != m.to);
                 }
                 return Ok(());
             };
@@ -348,7 +348,7 @@ pub fn run(
                     let moves = as_diameter(moves, call.cycle.x_mode);
                     lcncs.push((call.detached(), moves));
                 }
-                Item::Source(_) | Item::G76Params(_) | Item::G75Params(_) => {}
+                Item::Source(_) | Item::Move(_) | Item::G76Params(_) | Item::G75Params(_) => {}
             }
             Ok(())
         },

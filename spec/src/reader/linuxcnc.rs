@@ -32,18 +32,24 @@ impl State<'_> {
         let mut g76 = false;
         let mut g33 = false;
         let mut mode = None;
+        let mut cycle_word = None;
+        let mut dwell = false;
         for w in block.all('G') {
             // A whole code: `integer` gives None for any other.
             let whole = w.number().integer();
             match whole {
                 Some(c @ 0..=3) => motion = MotionMode::plain(c),
-                Some(76) => g76 = true,
+                Some(76) => {
+                    g76 = true;
+                    cycle_word = cycle_word.or(Some(w));
+                }
                 Some(33) => g33 = true,
                 Some(7) => mode = Some(XMode::Diameter),
                 Some(8) => mode = Some(XMode::Radius),
                 Some(20) => self.set_unit(&block, w, InputUnit::Inch)?,
                 Some(21) => self.set_unit(&block, w, InputUnit::Metric)?,
-                Some(4 | 18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
+                Some(4) => dwell = true,
+                Some(18 | 40 | 54..=59 | 61 | 64 | 80 | 90 | 94 | 95 | 96 | 97) => {}
                 Some(41 | 42) => {
                     return Err(err(
                         &block,
@@ -83,10 +89,16 @@ impl State<'_> {
                 Some(3 | 4) => self.spindle_on = true,
                 Some(5) => self.spindle_on = false,
                 Some(98 | 99) => return Err(super::subprogram(&block, w)),
-                // M2 and M30 end the program (reading R-PROGRAMEND).
-                Some(2 | 30) => self.program_end = true,
+                // M2 and M30 end the program (reading R-PROGRAMEND); a
+                // trace goes on after them.
+                Some(2 | 30) => self.program_end = !self.trace,
                 _ => {}
             }
+        }
+        if self.trace {
+            let m = motion.unwrap_or(self.motion);
+            let thread = g33 || (self.lcnc_g33 && motion.is_none() && !g76);
+            self.trace_block(&block, cycle_word, m, thread, dwell)?;
         }
         if let Some(m) = mode {
             if g76 && m != self.x_mode {
@@ -125,10 +137,12 @@ impl State<'_> {
         if g33 || (self.lcnc_g33 && axes) {
             return self.linuxcnc_g33(block, continuing).map(Item::G32);
         }
-        if axes && !block.all('G').any(|w| w.number().integer() == Some(4)) {
+        if axes && !dwell {
+            let from = (self.x, self.z);
             self.x = self.axis(&block, block.get('X')?, None, self.x)?;
             self.z = self.axis(&block, block.get('Z')?, None, self.z)?;
             self.moved = true;
+            return Ok(Item::Move(self.plain_move(block, from)));
         }
         Ok(Item::Source(block))
     }
@@ -237,7 +251,8 @@ impl State<'_> {
     /// speed may be 0, as `convert_motion` does not check it; `rule` is the
     /// interpreter's message for the block) and the position be known.
     fn turning_at(&self, block: &Block<'_>, rule: &'static str) -> Result<(i64, i64), ProgramError> {
-        if !self.spindle_on {
+        // A trace is a log of moves: it need not hold the spindle's words.
+        if !self.spindle_on && !self.trace {
             return Err(err(block, None, ErrorKind::Missing { what: "M3 or M4 (a turning spindle)", rule }));
         }
         match (self.x, self.z) {
