@@ -410,3 +410,32 @@ fn a_g92_pass_missing_or_repeated_is_one_divergence() {
     );
     assert!(out.contains("extra pass (5 moves we do not make)"), "{out}");
 }
+
+#[test]
+fn a_seven_start_thread_agrees_with_its_own_expansion_at_the_q_words_resolution() {
+    // L7: the starts are 360°/7 = 51.428571…° apart, which a Q word writes
+    // as Q51.429 (thousandths, the nearest). The expansion agrees with its
+    // program (it was 36 `start angle` divergences); a Q one thousandth off
+    // on start 2 of each of the 6 passes (5 rough + 1 finishing: 6 × 7
+    // passes, 211 moves) does not.
+    let text = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1 L7\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM30\n";
+    let program = tmp("seven.nc", text);
+    let program = program.to_str().expect("utf-8");
+    let nc = expand("gsk988", program);
+    assert_eq!(nc.matches(" Q51.429").count(), 6, "{nc}");
+    let (code, out) = check("gsk988", program, &nc, "seven-same.nc", &[]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.starts_with("AGREE: 211 moves of ours, 211 of the trace"), "{out}");
+    let (code, out) = check("gsk988", program, &nc.replace(" Q51.429", " Q51.428"), "seven-off.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.starts_with("DIFFER: 6 divergences"), "{out}");
+    assert!(out.contains("(start angle)"), "{out}");
+    // A whole number of thousandths (L8: 45°) is compared exactly as ever.
+    let eight = tmp("eight.nc", &text.replace("L7", "L8"));
+    let eight = eight.to_str().expect("utf-8");
+    let nc = expand("gsk988", eight);
+    let (code, _) = check("gsk988", eight, &nc, "eight-same.nc", &[]);
+    assert_eq!(code, 0);
+    let (code, out) = check("gsk988", eight, &nc.replace(" Q45.000", " Q45.001"), "eight-off.nc", &[]);
+    assert_eq!(code, 1, "{out}");
+}

@@ -4,7 +4,8 @@
 //! split into an X and a Z move outside the regions the cycles cut
 //! (reading R-CHECKSPLIT).
 
-use cycleref::{Lead, Point, Units};
+use cycleref::angle::FULL_TURN_MILLIDEGREES;
+use cycleref::{Lead, Point, StartAngle, Units};
 
 use super::ours::Region;
 use super::{Divergence, Group, Kind, Step};
@@ -20,6 +21,18 @@ fn same_lead(a: Option<Lead>, b: Option<Lead>, units: Units) -> bool {
         (None, None) => true,
         _ => false,
     }
+}
+
+/// True when a trace's start angle `theirs` is our `ours`: the same angle,
+/// or ours rounded to the nearest thousandth of a degree when theirs is a
+/// whole number of thousandths and ours is not (reading R-CHECKQ: a `Q`
+/// word writes thousandths, and the starts of an L-start thread are
+/// 360°/L apart, which for L = 7 is no whole number of them).
+fn same_angle(ours: StartAngle, theirs: StartAngle) -> bool {
+    ours == theirs
+        || (ours.den > 1
+            && theirs.den == 1
+            && u64::from(theirs.num) == ours.rounded_millidegrees() % FULL_TURN_MILLIDEGREES)
 }
 
 /// The two corners of a rapid from `p` to `q` split into an X and a Z move.
@@ -121,7 +134,7 @@ pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: &[R
             }
             if c.sync != t.sync {
                 out.push(div("synchronisation", c, t));
-            } else if c.sync && c.angle != t.angle {
+            } else if c.sync && !same_angle(c.angle, t.angle) {
                 out.push(div("start angle", c, t));
             }
         }
