@@ -34,7 +34,7 @@ use cycleref::Units;
 use rust_decimal::Decimal;
 
 use crate::exact::{ceil_div, from_increments, quantize, round_div, round_sqrt, to_increments};
-use crate::pass::{pass_path, PassFrame};
+use crate::pass::{pass_path, PassFrame, PassStream};
 
 /// Which axis is the long axis (长轴) of the thread.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -484,6 +484,17 @@ fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
 ///
 /// Twin: `impl/src/engine/g76.rs`, `expand_g76` and `Frame::path`.
 pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
+    Ok(moves(c)?.collect())
+}
+
+/// The moves of [`expand`], made a pass and a start at a time (memory of
+/// one pass, whatever the number of starts): every alarm is raised before
+/// the first move.
+///
+/// # Errors
+///
+/// As [`expand`].
+pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send + Sync + 'static, CycleError> {
     c.validate()?;
     let u = c.units;
     let g = geometry(c)?;
@@ -559,12 +570,17 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
         lead: c.lead,
         units: u,
     };
-    let mut moves = Vec::new();
-    for planned in &plan {
-        for start in 0..c.starts {
+    let starts = c.starts;
+    let (mut index, mut start) = (0_usize, 0_u32);
+    Ok(PassStream::new(move |moves: &mut Vec<Move>| {
+        if start == starts {
+            (index, start) = (index + 1, 0);
+        }
+        let Some(planned) = plan.get(index) else { return false };
+        {
             let mut pass = planned.pass;
             pass.start = u16::try_from(start + 1).expect("L <= 999 (validate)");
-            let angle = StartAngle::of_start(start, c.starts);
+            let angle = StartAngle::of_start(start, starts);
             let depth = from_increments(pass.depth, u);
             // Seed 000 "进刀点实际坐标位置计算": X = X 终点 + 锥度 R(i) ∓ 牙高 P(k)
             // ± X 轴切深; Z = Z 起点 ± Z 轴切深.
@@ -572,8 +588,9 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
             // Reading R-END: the cut ends on the line D–E, X having moved i.
             let end = (g.d.0 + s * xf * (k - depth), g.d.1);
             let lead_in_start = lead_in.map(|lz| (bn.0 + s * xf * e, bn.1 - t * lz));
-            pass_path(&mut moves, &frame, bn, end, lead_in_start, pass, angle);
+            pass_path(moves, &frame, bn, end, lead_in_start, pass, angle);
         }
-    }
-    Ok(moves)
+        start += 1;
+        true
+    }))
 }

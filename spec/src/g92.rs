@@ -26,7 +26,7 @@ use rust_decimal::Decimal;
 
 use crate::exact::{from_increments, to_increments};
 use crate::g76::{run_out_amounts, LongAxis};
-use crate::pass::{pass_path, PassFrame};
+use crate::pass::{pass_path, PassFrame, PassStream};
 
 /// Expands a G92 block into moves: for each start (reading R-STARTS; the
 /// first at Q, the others 360°/L apart), the path of 980TDi "循环过程":
@@ -48,6 +48,17 @@ use crate::pass::{pass_path, PassFrame};
 ///
 /// Twin: `impl/src/engine/g92.rs`, `expand_g92`.
 pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
+    Ok(moves(c)?.collect())
+}
+
+/// The moves of [`expand`], made a start at a time (memory of one pass,
+/// whatever the number of starts): every alarm is raised before the first
+/// move.
+///
+/// # Errors
+///
+/// As [`expand`].
+pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send + Sync + 'static, CycleError> {
     c.validate()?;
     let u = c.units;
     let len = |v: Decimal| Length::new(to_increments(v, u), u);
@@ -115,8 +126,12 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
         lead: c.lead,
         units: u,
     };
-    let mut moves = Vec::new();
-    for start in 0..c.starts {
+    let (starts, first_angle) = (c.starts, c.start_angle);
+    let mut start = 0_u32;
+    Ok(PassStream::new(move |moves: &mut Vec<Move>| {
+        if start == starts {
+            return false;
+        }
         let pass = Pass {
             kind: PassKind::Single,
             number: 1,
@@ -125,8 +140,9 @@ pub fn expand(c: &G92Cycle) -> Result<Vec<Move>, CycleError> {
             cut: 0,
             flank: Flank::Centre,
         };
-        let angle = c.start_angle.plus(StartAngle::of_start(start, c.starts));
-        pass_path(&mut moves, &frame, b, cut_end, None, pass, angle);
-    }
-    Ok(moves)
+        let angle = first_angle.plus(StartAngle::of_start(start, starts));
+        pass_path(moves, &frame, b, cut_end, None, pass, angle);
+        start += 1;
+        true
+    }))
 }

@@ -59,6 +59,42 @@ pub struct PassFrame {
     pub units: Units,
 }
 
+/// A cycle's moves made a pass at a time: `next_pass` appends the moves of
+/// the next pass (and start) to the buffer it is given, empty, and says
+/// false when there is none. The reference's stream: its memory is that of
+/// one pass, whatever the number of passes and starts.
+#[derive(Clone)]
+pub struct PassStream<F> {
+    next_pass: F,
+    buf: Vec<Move>,
+    at: usize,
+}
+
+impl<F: FnMut(&mut Vec<Move>) -> bool> PassStream<F> {
+    /// The stream of the passes `next_pass` makes.
+    pub fn new(next_pass: F) -> PassStream<F> {
+        PassStream { next_pass, buf: Vec::new(), at: 0 }
+    }
+}
+
+impl<F: FnMut(&mut Vec<Move>) -> bool> Iterator for PassStream<F> {
+    type Item = Move;
+
+    fn next(&mut self) -> Option<Move> {
+        loop {
+            if let Some(m) = self.buf.get(self.at) {
+                self.at += 1;
+                return Some(*m);
+            }
+            self.buf.clear();
+            self.at = 0;
+            if !(self.next_pass)(&mut self.buf) {
+                return None;
+            }
+        }
+    }
+}
+
 /// Appends to `moves` the moves of one pass of one start: from A to `bn`
 /// (by the lead-in start `lead_in_start` when there is one), along the
 /// thread to the end line at `end`, the run-out, the retract to the X of A

@@ -177,7 +177,33 @@ enum Inner {
     G75(Box<G75Moves>),
     G92(G92Moves),
     LinuxCnc(LinuxCncMoves),
-    Reference(std::vec::IntoIter<Move>),
+    /// The exact-decimal reference: a pass at a time (G76, G78, G92) or
+    /// the cycle's moves held (G32, G75.1, LinuxCNC's G76).
+    Reference(Box<dyn ReferenceMoves>),
+}
+
+/// The reference's moves, boxed: a stream that can be cloned (as every
+/// [`Moves`] can) whatever its type.
+trait ReferenceMoves: Iterator<Item = Move> + Send + Sync {
+    fn boxed_clone(&self) -> Box<dyn ReferenceMoves>;
+}
+
+impl<T: Iterator<Item = Move> + Clone + Send + Sync + 'static> ReferenceMoves for T {
+    fn boxed_clone(&self) -> Box<dyn ReferenceMoves> {
+        Box::new(self.clone())
+    }
+}
+
+impl Clone for Box<dyn ReferenceMoves> {
+    fn clone(&self) -> Self {
+        self.boxed_clone()
+    }
+}
+
+impl fmt::Debug for dyn ReferenceMoves {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("ReferenceMoves")
+    }
 }
 
 impl Iterator for Moves {
@@ -237,13 +263,15 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         (Engine::Impl, Cycle::G32(c)) => Inner::G32(cycleref::expand_g32(&c.g32)?),
         (Engine::Impl, Cycle::G75(c)) => Inner::G75(Box::new(cycleref::expand_g75(&c.cycle)?)),
         (Engine::Impl, Cycle::G92(c)) => Inner::G92(cycleref::expand_g92(&c.cycle)?),
-        (Engine::Spec, Cycle::G76(c)) => Inner::Reference(crate::g76::expand(&c.cycle)?.into_iter()),
-        (Engine::Spec, Cycle::G32(c)) => Inner::Reference(crate::g32::expand(&c.g32)?.into_iter()),
-        (Engine::Spec, Cycle::G75(c)) => Inner::Reference(crate::g75::expand(&c.cycle)?.into_iter()),
-        (Engine::Spec, Cycle::G92(c)) => Inner::Reference(crate::g92::expand(&c.cycle)?.into_iter()),
+        (Engine::Spec, Cycle::G76(c)) => Inner::Reference(Box::new(crate::g76::moves(&c.cycle)?)),
+        (Engine::Spec, Cycle::G32(c)) => Inner::Reference(Box::new(crate::g32::expand(&c.g32)?.into_iter())),
+        (Engine::Spec, Cycle::G75(c)) => {
+            Inner::Reference(Box::new(crate::g75::expand(&c.cycle)?.into_iter()))
+        }
+        (Engine::Spec, Cycle::G92(c)) => Inner::Reference(Box::new(crate::g92::moves(&c.cycle)?)),
         (Engine::Impl, Cycle::LinuxCnc(c)) => Inner::LinuxCnc(cycleref::expand_linuxcnc(&c.cycle)?),
         (Engine::Spec, Cycle::LinuxCnc(c)) => {
-            Inner::Reference(crate::linuxcnc::expand(&c.cycle)?.into_iter())
+            Inner::Reference(Box::new(crate::linuxcnc::expand(&c.cycle)?.into_iter()))
         }
     };
     Ok(Moves(inner))
