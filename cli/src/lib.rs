@@ -14,7 +14,8 @@
 //! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
 //! * [`plot`]: `plot`, the SVG drawing (one module per cycle over a shared
 //!   canvas);
-//! * [`vectors`]: the generator of conformance vectors.
+//! * [`vectors`]: the generator of conformance vectors;
+//! * [`conform`]: a vendor's outputs run against a corpus of them.
 //!
 //! Every command is a function of this library; the binary parses the
 //! arguments and maps the outcome to an exit status: 0 success (and, for
@@ -25,6 +26,7 @@
 #![deny(missing_docs)]
 
 pub mod check;
+pub mod conform;
 pub mod format;
 pub mod job;
 pub mod json;

@@ -91,6 +91,48 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Run a vendor's outputs against a corpus of conformance vectors: one
+    /// verdict per case (its trace agrees with the expected moves, or the
+    /// expected refusal was made), a summary, and JUnit XML for CI. Exit 0
+    /// when every case passes, 1 when one does not.
+    #[command(after_help = EXIT_STATUS)]
+    Conform {
+        /// The corpus directory (`case-NNNN.json`, written by `cycleref
+        /// vectors`).
+        corpus: PathBuf,
+        /// The vendor's outcomes: `case-NNNN.nc`, `.csv` or `.canon` (a
+        /// trace) or `case-NNNN.error` (a refusal, holding its message).
+        #[arg(long, value_name = "DIR", required_unless_present = "run", conflicts_with = "run")]
+        traces: Option<PathBuf>,
+        /// A shell command run per case: `{program}` (the case's program
+        /// file), `{params}` (its machine as a parameter file), `{profile}`
+        /// and `{trace}` (where to write the trace) are replaced; exit
+        /// status 0 gives a trace, any other a refusal. E.g. `--run
+        /// 'my-sim --profile {profile} {program} > {trace}'`.
+        #[arg(long, value_name = "TEMPLATE")]
+        run: Option<String>,
+        /// The format of the traces a --run command writes [default: nc]
+        /// (a directory's traces go by their extension).
+        #[arg(long, value_enum, value_name = "FORMAT")]
+        trace_format: Option<TraceFormatArg>,
+        /// Largest difference, in least increments, still counted as equal.
+        #[arg(long, default_value_t = 0)]
+        tolerance: u64,
+        /// Compare only the moves of the cycles (as `check --cycles-only`).
+        #[arg(long)]
+        cycles_only: bool,
+        /// Threads [default: the number of cores].
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
+        /// Run part I of N of the corpus: the cases whose index is I modulo
+        /// N (1-based), so that N machines share a corpus with no
+        /// coordination.
+        #[arg(long, value_name = "I/N", default_value = "1/1")]
+        shard: String,
+        /// Write JUnit XML (one testcase per case) to FILE.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+    },
     /// Draw the toolpath of the program's cycles in the XZ plane as SVG.
     #[command(after_help = EXIT_STATUS)]
     Plot {
@@ -333,6 +375,39 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 Ok(()) | Err(Failure::BrokenPipe) => Ok(verdict),
                 Err(e) => Err(e),
             }
+        }
+        Command::Conform {
+            corpus,
+            traces,
+            run,
+            trace_format,
+            tolerance,
+            cycles_only,
+            jobs,
+            shard,
+            junit,
+        } => {
+            let outcomes = match (traces, run) {
+                (Some(dir), _) => cycleref_cli::conform::Outcomes::Dir(dir),
+                (None, Some(template)) => cycleref_cli::conform::Outcomes::Run(template),
+                (None, None) => return Err(Failure::msg("give --traces DIR or --run TEMPLATE")),
+            };
+            let options = cycleref_cli::conform::ConformOptions {
+                corpus,
+                outcomes,
+                trace_format: trace_format.map(|f| match f {
+                    TraceFormatArg::Nc => check::TraceFormat::Nc,
+                    TraceFormatArg::Csv => check::TraceFormat::Csv,
+                    TraceFormatArg::Canon => check::TraceFormat::Rs274,
+                }),
+                tolerance,
+                cycles_only,
+                shard: cycleref_cli::conform::Shard::parse(&shard).map_err(Failure::msg)?,
+                jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
+                junit,
+            };
+            let summary = cycleref_cli::conform::run(&options, &mut std::io::stdout().lock())?;
+            Ok(u8::from(!summary.all_passed()))
         }
         Command::Vectors { count, seed, out } => {
             print(&vectors::run(count, seed, &out)?)?;

@@ -5,7 +5,7 @@
 //!
 //! ```text
 //! cargo build -p cycleref-cli
-//! for s in "" expand passes check vectors plot completions man; do
+//! for s in "" expand passes check vectors conform plot completions man; do
 //!   target/debug/cycleref man $s > cli/man/cycleref${s:+-$s}.1
 //! done
 //! ```
@@ -13,7 +13,8 @@
 use std::process::Command;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
-const SUBCOMMANDS: [&str; 7] = ["expand", "passes", "check", "vectors", "plot", "completions", "man"];
+const SUBCOMMANDS: [&str; 8] =
+    ["expand", "passes", "check", "vectors", "conform", "plot", "completions", "man"];
 
 fn stdout(args: &[&str]) -> String {
     let out = Command::new(BIN).args(args).output().expect("runs");

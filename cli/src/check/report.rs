@@ -272,6 +272,16 @@ impl Report {
         }
     }
 
+    /// The first divergence as the text report describes it (`None` when
+    /// the toolpaths agree).
+    #[must_use]
+    pub fn first_divergence(&self) -> Option<String> {
+        let d = self.divergences.first()?;
+        let mut out = String::new();
+        self.describe(d, &mut out);
+        Some(out.trim_end().to_owned())
+    }
+
     /// The text report.
     pub fn text(&self) -> String {
         let mut out = String::new();

@@ -1,0 +1,629 @@
+//! `cycleref conform`: a vendor's outputs run against a corpus of
+//! conformance vectors (`cycleref vectors`), one verdict per case, with a
+//! summary and JUnit XML for CI systems.
+//!
+//! Each case (`case-NNNN.json`, schema `cycleref-vector/1`) holds a
+//! program, its machine and what must happen: its moves, or a refusal.
+//! The vendor's outcome for a case is either a trace (an expanded program,
+//! a CSV or LinuxCNC's canonical output, compared with ours as `check`
+//! compares it) or a refusal:
+//!
+//! * `--traces DIR`: the trace is `DIR/case-NNNN.nc`, `.csv` or `.canon`;
+//!   a file `DIR/case-NNNN.error` (holding the vendor's message) says the
+//!   vendor refused the program;
+//! * `--run TEMPLATE`: a shell command run per case, with the placeholders
+//!   `{program}` (the case's program, written to a file), `{params}` (its
+//!   machine as a parameter file), `{profile}` and `{trace}` (where the
+//!   command writes its trace); exit status 0 gives a trace, any other a
+//!   refusal (its standard error is the message).
+//!
+//! A case passes when the trace agrees with the expected moves, or when a
+//! refusal was expected and made. Case `i` depends only on the corpus, so
+//! `--shard I/N` (the cases whose index is I modulo N, 1-based) splits a
+//! corpus across machines with no coordination, and `--jobs` runs the
+//! cases of a shard on that many threads. Memory does not grow with the
+//! number of cases: verdicts are written as they come, in case order, and
+//! the JUnit body goes to a file beside the report until the counts for
+//! its header are known.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::fs;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::time::Instant;
+
+use cycleref_spec::pipeline::Engine;
+use cycleref_spec::{Machine, ProfileName};
+use serde_json::Value;
+
+use crate::check::{self, CheckOptions, TraceFormat};
+use crate::job::{Failure, Job};
+
+/// Where the vendor's outcome of each case comes from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcomes {
+    /// A directory of `case-NNNN.nc|csv|canon` traces and
+    /// `case-NNNN.error` refusals.
+    Dir(PathBuf),
+    /// A shell command run per case (the placeholders `{program}`,
+    /// `{params}`, `{profile}`, `{trace}`).
+    Run(String),
+}
+
+/// One part of a corpus split across machines: the cases whose 1-based
+/// index `i` has `(i - 1) % count == index - 1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Shard {
+    /// Which part, from 1.
+    pub index: u32,
+    /// How many parts.
+    pub count: u32,
+}
+
+impl Shard {
+    /// The whole corpus.
+    pub const ALL: Shard = Shard { index: 1, count: 1 };
+
+    /// Reads `I/N` (1 ≤ I ≤ N).
+    ///
+    /// # Errors
+    ///
+    /// A text that is not `I/N` with 1 ≤ I ≤ N.
+    pub fn parse(text: &str) -> Result<Shard, String> {
+        let bad = || format!("--shard {text:?}: give I/N with 1 <= I <= N, e.g. 2/4");
+        let (i, n) = text.split_once('/').ok_or_else(bad)?;
+        let (index, count) =
+            (i.trim().parse::<u32>().map_err(|_| bad())?, n.trim().parse::<u32>().map_err(|_| bad())?);
+        if index == 0 || index > count {
+            return Err(bad());
+        }
+        Ok(Shard { index, count })
+    }
+
+    fn holds(self, case: u32) -> bool {
+        case >= 1 && (case - 1) % self.count == self.index - 1
+    }
+}
+
+/// What [`run`] does.
+#[derive(Clone, Debug)]
+pub struct ConformOptions {
+    /// The corpus directory (`case-NNNN.json` files).
+    pub corpus: PathBuf,
+    /// The vendor's outcomes.
+    pub outcomes: Outcomes,
+    /// The format of the traces a `--run` command writes (`None`: an
+    /// expanded program, or by the file's extension in a directory).
+    pub trace_format: Option<TraceFormat>,
+    /// Largest difference, in least increments, still counted as equal.
+    pub tolerance: u64,
+    /// Compare only the moves inside cycles (as `check --cycles-only`).
+    pub cycles_only: bool,
+    /// The part of the corpus to run.
+    pub shard: Shard,
+    /// Threads (at least 1).
+    pub jobs: usize,
+    /// Where to write JUnit XML, if anywhere.
+    pub junit: Option<PathBuf>,
+}
+
+/// The counts of a run. It passed when every case passed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Summary {
+    /// Cases run.
+    pub cases: usize,
+    /// The trace agreed, or the expected refusal was made.
+    pub passed: usize,
+    /// The trace differs from the expected moves.
+    pub failed: usize,
+    /// A refusal was expected, and a trace was given.
+    pub refusal_missing: usize,
+    /// A trace was expected, and the vendor refused the program.
+    pub refusal_unexpected: usize,
+    /// The case could not be run: no trace, an unreadable trace or case,
+    /// a command that could not start.
+    pub errors: usize,
+}
+
+impl Summary {
+    /// True when every case passed.
+    #[must_use]
+    pub fn all_passed(&self) -> bool {
+        self.passed == self.cases
+    }
+}
+
+/// The verdict of one case.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Verdict {
+    Pass,
+    /// The first lines of the report and its first divergence.
+    Differ(String),
+    /// The expected error kind.
+    RefusalMissing(String),
+    /// The vendor's message.
+    RefusalUnexpected(String),
+    Error(String),
+}
+
+struct CaseResult {
+    id: String,
+    description: String,
+    verdict: Verdict,
+    seconds: f64,
+}
+
+/// A case file of the corpus.
+struct Case {
+    index: u32,
+    path: PathBuf,
+}
+
+/// The corpus's cases in `shard`, by index.
+fn cases(corpus: &Path, shard: Shard) -> Result<Vec<Case>, String> {
+    let entries = fs::read_dir(corpus).map_err(|e| format!("{}: {e}", corpus.display()))?;
+    let mut out = Vec::new();
+    for entry in entries {
+        let entry = entry.map_err(|e| format!("{}: {e}", corpus.display()))?;
+        let name = entry.file_name();
+        let Some(name) = name.to_str() else { continue };
+        let Some(digits) = name.strip_prefix("case-").and_then(|n| n.strip_suffix(".json")) else {
+            continue;
+        };
+        let Ok(index) = digits.parse::<u32>() else { continue };
+        if shard.holds(index) {
+            out.push(Case { index, path: entry.path() });
+        }
+    }
+    out.sort_by_key(|c| c.index);
+    if out.is_empty() && shard == Shard::ALL {
+        return Err(format!(
+            "{}: no case-NNNN.json files (write a corpus with `cycleref vectors`)",
+            corpus.display()
+        ));
+    }
+    Ok(out)
+}
+
+/// A case as read from its file.
+struct Vector {
+    id: String,
+    description: String,
+    profile: String,
+    machine_toml: String,
+    program: String,
+    /// The expected refusal's kind, or `None` for expected moves.
+    refusal: Option<String>,
+}
+
+fn read_vector(path: &Path) -> Result<Vector, String> {
+    let text = fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let field = |name: &str| -> Result<String, String> {
+        v.get(name)
+            .and_then(Value::as_str)
+            .map(str::to_owned)
+            .ok_or_else(|| format!("{}: no text field `{name}` (a cycleref-vector/1 case?)", path.display()))
+    };
+    if v.get("schema").and_then(Value::as_str) != Some("cycleref-vector/1") {
+        return Err(format!("{}: not a cycleref-vector/1 case", path.display()));
+    }
+    let refusal = v.pointer("/expect/error/kind").and_then(Value::as_str).map(str::to_owned);
+    if refusal.is_none() && v.pointer("/expect/moves").is_none() {
+        return Err(format!("{}: `expect` holds neither moves nor an error", path.display()));
+    }
+    Ok(Vector {
+        id: field("id")?,
+        description: field("description")?,
+        profile: field("profile")?,
+        machine_toml: field("machine_toml")?,
+        program: field("program")?,
+        refusal,
+    })
+}
+
+/// The vendor's outcome of a case.
+enum Outcome {
+    Trace(PathBuf, Option<TraceFormat>),
+    Refused(String),
+}
+
+/// At most this much of a vendor's message is kept.
+const MESSAGE_CHARS: usize = 400;
+
+/// A vendor's message on one line: its first line that is not blank, cut
+/// to [`MESSAGE_CHARS`], `…` marking what was left out.
+fn short(text: &str) -> String {
+    let text = text.trim();
+    let first = text.lines().map(str::trim).find(|l| !l.is_empty()).unwrap_or_default();
+    let mut out: String = first.chars().take(MESSAGE_CHARS).collect();
+    if out.len() < text.len() {
+        out.push('…');
+    }
+    out
+}
+
+/// A path as one word of a POSIX shell command.
+fn quoted(path: &Path) -> String {
+    format!("'{}'", path.display().to_string().replace('\'', r"'\''"))
+}
+
+/// The case's outcome from the vendor: `work` is a directory for this
+/// case's files (`--run`).
+fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome, String> {
+    match &options.outcomes {
+        Outcomes::Dir(dir) => {
+            let error = dir.join(format!("{}.error", v.id));
+            let traces: Vec<(PathBuf, TraceFormat)> =
+                [("nc", TraceFormat::Nc), ("csv", TraceFormat::Csv), ("canon", TraceFormat::Rs274)]
+                    .into_iter()
+                    .map(|(ext, f)| (dir.join(format!("{}.{ext}", v.id)), f))
+                    .filter(|(p, _)| p.exists())
+                    .collect();
+            match (error.exists(), traces.as_slice()) {
+                (true, []) => {
+                    let message =
+                        fs::read_to_string(&error).map_err(|e| format!("{}: {e}", error.display()))?;
+                    Ok(Outcome::Refused(short(&message)))
+                }
+                (false, [(p, f)]) => Ok(Outcome::Trace(p.clone(), Some(*f))),
+                (false, []) => Err(format!(
+                    "no outcome: none of {id}.nc, {id}.csv, {id}.canon or {id}.error in {}",
+                    dir.display(),
+                    id = v.id
+                )),
+                _ => Err(format!("more than one outcome for {} in {}", v.id, dir.display())),
+            }
+        }
+        Outcomes::Run(template) => {
+            let ext = if v.profile == "linuxcnc" { "ngc" } else { "nc" };
+            let program = work.join(format!("{}.{ext}", v.id));
+            let params = work.join(format!("{}.toml", v.id));
+            let trace = work.join(format!("{}-trace.{}", v.id, trace_extension(options.trace_format)));
+            fs::write(&program, &v.program).map_err(|e| format!("{}: {e}", program.display()))?;
+            fs::write(&params, &v.machine_toml).map_err(|e| format!("{}: {e}", params.display()))?;
+            let command = template
+                .replace("{program}", &quoted(&program))
+                .replace("{params}", &quoted(&params))
+                .replace("{profile}", &v.profile)
+                .replace("{trace}", &quoted(&trace));
+            let out = Command::new("sh")
+                .arg("-c")
+                .arg(&command)
+                .stdin(Stdio::null())
+                .stdout(Stdio::null())
+                .stderr(Stdio::piped())
+                .output()
+                .map_err(|e| format!("cannot run `sh -c {command}`: {e}"))?;
+            if out.status.success() {
+                if !trace.exists() {
+                    return Err(format!("the command exited 0 but wrote no trace to {{trace}}: {command}"));
+                }
+                Ok(Outcome::Trace(trace, options.trace_format))
+            } else {
+                let code = out.status.code().map_or_else(|| "a signal".to_owned(), |c| format!("status {c}"));
+                Ok(Outcome::Refused(short(&format!("({code}) {}", String::from_utf8_lossy(&out.stderr)))))
+            }
+        }
+    }
+}
+
+fn trace_extension(format: Option<TraceFormat>) -> &'static str {
+    match format {
+        Some(TraceFormat::Csv) => "csv",
+        Some(TraceFormat::Rs274) => "canon",
+        Some(TraceFormat::Nc) | None => "nc",
+    }
+}
+
+/// The machine of a case: its profile, then its parameter file.
+fn machine(v: &Vector) -> Result<Machine, String> {
+    let profile = ProfileName::ALL
+        .into_iter()
+        .find(|p| p.to_string() == v.profile)
+        .ok_or_else(|| format!("profile {:?} is none of cycleref's", v.profile))?;
+    let mut m = Machine::new(profile);
+    m.apply_toml(&v.machine_toml).map_err(|e| format!("machine_toml: {e}"))?;
+    Ok(m)
+}
+
+/// Runs one case.
+fn run_case(options: &ConformOptions, case: &Case, work: &Path) -> CaseResult {
+    let started = Instant::now();
+    let (id, description, verdict) = match read_vector(&case.path) {
+        Err(e) => (format!("case-{:04}", case.index), String::new(), Verdict::Error(e)),
+        Ok(v) => {
+            let verdict = judge(options, &v, work);
+            (v.id, v.description, verdict)
+        }
+    };
+    CaseResult { id, description, verdict, seconds: started.elapsed().as_secs_f64() }
+}
+
+fn judge(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
+    let outcome = match outcome(options, v, work) {
+        Ok(o) => o,
+        Err(e) => return Verdict::Error(e),
+    };
+    let trace = match (outcome, &v.refusal) {
+        (Outcome::Refused(_), Some(_)) => return Verdict::Pass,
+        (Outcome::Refused(message), None) => return Verdict::RefusalUnexpected(message),
+        (Outcome::Trace(..), Some(kind)) => return Verdict::RefusalMissing(kind.clone()),
+        (Outcome::Trace(path, format), None) => (path, format),
+    };
+    let machine = match machine(v) {
+        Ok(m) => m,
+        Err(e) => return Verdict::Error(format!("{}: {e}", v.id)),
+    };
+    let job = Job::new(&format!("{}.nc", v.id), v.program.clone().into_bytes(), machine, Engine::Impl);
+    let check =
+        CheckOptions { format: trace.1, tolerance: options.tolerance, cycles_only: options.cycles_only };
+    let verdict = match check::run_as(&job, &trace.0, &check) {
+        Ok(report) if report.agree() => Verdict::Pass,
+        Ok(report) => {
+            let head = report.text().lines().next().unwrap_or_default().to_owned();
+            Verdict::Differ(match report.first_divergence() {
+                Some(first) => format!("{head}; first: {}", first.replace('\n', " ")),
+                None => head,
+            })
+        }
+        Err(e) => Verdict::Error(e),
+    };
+    if matches!(options.outcomes, Outcomes::Run(_)) {
+        let _ = fs::remove_file(&trace.0);
+    }
+    verdict
+}
+
+/// Text as XML character data or an attribute value: escaped, with the
+/// control characters XML 1.0 cannot hold left out.
+fn xml(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\n' => out.push_str("&#10;"),
+            '\t' => out.push_str("&#9;"),
+            c if c.is_control() => {}
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// The JUnit `<testcase>` of a result.
+fn testcase(r: &CaseResult) -> String {
+    let mut out = format!(
+        "    <testcase classname=\"cycleref.conform\" name=\"{}\" time=\"{:.6}\"",
+        xml(&r.id),
+        r.seconds
+    );
+    let inner = match &r.verdict {
+        Verdict::Pass => None,
+        Verdict::Differ(m) => Some(("failure", "differ", m.clone())),
+        Verdict::RefusalMissing(kind) => Some((
+            "failure",
+            "refusal-missing",
+            format!("the program must be refused ({kind}), and a trace was given"),
+        )),
+        Verdict::RefusalUnexpected(m) => {
+            Some(("failure", "refusal-unexpected", format!("a valid program was refused: {m}")))
+        }
+        Verdict::Error(m) => Some(("error", "error", m.clone())),
+    };
+    match inner {
+        None => out.push_str("/>\n"),
+        Some((tag, kind, message)) => {
+            let _ = write!(
+                out,
+                ">\n      <{tag} type=\"{kind}\" message=\"{}\">{}</{tag}>\n    </testcase>\n",
+                xml(&message),
+                xml(&r.description)
+            );
+        }
+    }
+    out
+}
+
+/// The line of the summary for a case that did not pass.
+fn failure_line(r: &CaseResult) -> Option<String> {
+    let what = match &r.verdict {
+        Verdict::Pass => return None,
+        Verdict::Differ(m) => format!("FAIL {}: {m}", r.id),
+        Verdict::RefusalMissing(kind) => {
+            format!("FAIL {}: the program must be refused ({kind}), and a trace was given", r.id)
+        }
+        Verdict::RefusalUnexpected(m) => format!("FAIL {}: a valid program was refused: {m}", r.id),
+        Verdict::Error(m) => format!("ERROR {}: {m}", r.id),
+    };
+    Some(format!("{what} ({})", r.description))
+}
+
+/// Runs the cases of `options.shard`, writing each case that does not pass
+/// to `out` as it is decided (in case order) and then the summary line;
+/// writes the JUnit XML file when asked.
+///
+/// # Errors
+///
+/// The corpus cannot be listed, the work directory or the JUnit file
+/// cannot be written, or `out` fails (not a closed pipe: the writing
+/// stops, the run goes on).
+///
+/// ```
+/// use cycleref_cli::conform::{run, ConformOptions, Outcomes, Shard};
+///
+/// let dir = std::env::temp_dir().join(format!("cycleref-conform-doc-{}", std::process::id()));
+/// let corpus = dir.join("corpus");
+/// cycleref_cli::vectors::run(5, 1, &corpus)?;
+/// // A vendor with no outcomes yet: every case is an error.
+/// std::fs::create_dir_all(dir.join("traces"))?;
+/// let options = ConformOptions {
+///     corpus,
+///     outcomes: Outcomes::Dir(dir.join("traces")),
+///     trace_format: None,
+///     tolerance: 0,
+///     cycles_only: false,
+///     shard: Shard::ALL,
+///     jobs: 2,
+///     junit: None,
+/// };
+/// let mut out = Vec::new();
+/// let summary = run(&options, &mut out).map_err(String::from)?;
+/// assert_eq!((summary.cases, summary.errors, summary.passed), (5, 5, 0));
+/// assert!(!summary.all_passed());
+/// assert!(String::from_utf8(out)?.starts_with("ERROR case-0001: no outcome"));
+/// std::fs::remove_dir_all(&dir)?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Failure> {
+    let cases = cases(&options.corpus, options.shard).map_err(Failure::msg)?;
+    let work = std::env::temp_dir().join(format!("cycleref-conform-{}", std::process::id()));
+    if matches!(options.outcomes, Outcomes::Run(_)) {
+        fs::create_dir_all(&work).map_err(|e| Failure::msg(format!("{}: {e}", work.display())))?;
+    }
+    let body_path = options.junit.as_ref().map(|p| p.with_extension("cycleref-part"));
+    let mut body = match &body_path {
+        Some(p) => Some(BufWriter::new(
+            fs::File::create(p).map_err(|e| Failure::msg(format!("{}: {e}", p.display())))?,
+        )),
+        None => None,
+    };
+    let mut summary = Summary::default();
+    // The verdict is the exit status: a closed output pipe stops the
+    // writing, not the run (nothing may turn a failure into status 0).
+    let mut closed = false;
+    let next = AtomicUsize::new(0);
+    let jobs = options.jobs.max(1).min(cases.len().max(1));
+    let result = std::thread::scope(|scope| -> Result<(), Failure> {
+        let (send, receive) = mpsc::channel::<(usize, CaseResult)>();
+        for _ in 0..jobs {
+            let send = send.clone();
+            let (next, cases, work) = (&next, &cases, &work);
+            scope.spawn(move || loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(case) = cases.get(i) else { break };
+                if send.send((i, run_case(options, case, work))).is_err() {
+                    break;
+                }
+            });
+        }
+        drop(send);
+        // Results arrive in any order; they are written in case order, so
+        // only those ahead of the next one wait (at most about `jobs`).
+        let mut waiting = BTreeMap::new();
+        let mut due = 0_usize;
+        for (i, r) in receive {
+            waiting.insert(i, r);
+            while let Some(r) = waiting.remove(&due) {
+                due += 1;
+                summary.cases += 1;
+                match r.verdict {
+                    Verdict::Pass => summary.passed += 1,
+                    Verdict::Differ(_) => summary.failed += 1,
+                    Verdict::RefusalMissing(_) => summary.refusal_missing += 1,
+                    Verdict::RefusalUnexpected(_) => summary.refusal_unexpected += 1,
+                    Verdict::Error(_) => summary.errors += 1,
+                }
+                if let Some(line) = failure_line(&r) {
+                    say(&mut *out, &mut closed, &line)?;
+                }
+                if let Some(b) = &mut body {
+                    b.write_all(testcase(&r).as_bytes())
+                        .map_err(|e| Failure::msg(format!("the JUnit file: {e}")))?;
+                }
+            }
+        }
+        Ok(())
+    });
+    if matches!(options.outcomes, Outcomes::Run(_)) {
+        let _ = fs::remove_dir_all(&work);
+    }
+    result?;
+    if let (Some(path), Some(part), Some(b)) = (&options.junit, &body_path, body) {
+        write_junit(path, part, b, &summary, &options.corpus)
+            .map_err(|e| Failure::msg(format!("{}: {e}", path.display())))?;
+    }
+    let shard = if options.shard == Shard::ALL {
+        String::new()
+    } else {
+        format!(" (shard {}/{})", options.shard.index, options.shard.count)
+    };
+    let line = format!(
+        "conform: {} cases{shard}: {} passed, {} failed, {} refusal{} expected but not made, {} refusal{} not \
+         expected, {} error{}",
+        summary.cases,
+        summary.passed,
+        summary.failed,
+        summary.refusal_missing,
+        if summary.refusal_missing == 1 { "" } else { "s" },
+        summary.refusal_unexpected,
+        if summary.refusal_unexpected == 1 { "" } else { "s" },
+        summary.errors,
+        if summary.errors == 1 { "" } else { "s" },
+    );
+    say(out, &mut closed, &line)?;
+    if !closed {
+        out.flush()
+            .or_else(|e| if e.kind() == io::ErrorKind::BrokenPipe { Ok(()) } else { Err(e) })
+            .map_err(|e| Failure::output(&e))?;
+    }
+    Ok(summary)
+}
+
+/// Writes `line` unless the output was closed; a closed pipe is noted in
+/// `closed`, any other error is the command's.
+fn say(out: &mut dyn Write, closed: &mut bool, line: &str) -> Result<(), Failure> {
+    if *closed {
+        return Ok(());
+    }
+    match writeln!(out, "{line}") {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
+            *closed = true;
+            Ok(())
+        }
+        Err(e) => Err(Failure::output(&e)),
+    }
+}
+
+/// The JUnit file: its header with the counts, the body written as the
+/// cases were decided, its end; written beside it and renamed, so a
+/// reader never sees half a file.
+fn write_junit(
+    path: &Path,
+    part: &Path,
+    body: BufWriter<fs::File>,
+    s: &Summary,
+    corpus: &Path,
+) -> io::Result<()> {
+    body.into_inner().map_err(io::IntoInnerError::into_error)?.sync_all()?;
+    let failures = s.failed + s.refusal_missing + s.refusal_unexpected;
+    let tmp = path.with_extension("cycleref-tmp");
+    let mut f = BufWriter::new(fs::File::create(&tmp)?);
+    writeln!(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>")?;
+    writeln!(
+        f,
+        "<testsuites name=\"cycleref conform\" tests=\"{}\" failures=\"{failures}\" errors=\"{}\">",
+        s.cases, s.errors
+    )?;
+    writeln!(
+        f,
+        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"{}\" skipped=\"0\">",
+        xml(&corpus.display().to_string()),
+        s.cases,
+        s.errors
+    )?;
+    io::copy(&mut fs::File::open(part)?, &mut f)?;
+    writeln!(f, "  </testsuite>\n</testsuites>")?;
+    f.into_inner().map_err(io::IntoInnerError::into_error)?.sync_all()?;
+    fs::remove_file(part)?;
+    fs::rename(&tmp, path)
+}
