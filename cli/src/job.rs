@@ -165,6 +165,19 @@ impl Job {
     }
 
     /// A job over `source`, held in memory (for tests and library users).
+    ///
+    /// ```
+    /// use cycleref_cli::Job;
+    /// use cycleref_spec::pipeline::Engine;
+    /// use cycleref_spec::{Machine, ProfileName};
+    ///
+    /// let text = b"M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+    /// let job = Job::new("m68.nc", text.to_vec(), Machine::new(ProfileName::Gsk988), Engine::Impl);
+    /// // Both phases' reading: the whole program checked, its units known.
+    /// let summary = job.validate().map_err(String::from)?;
+    /// assert_eq!(summary.units.decimals(), 3);
+    /// # Ok::<(), String>(())
+    /// ```
     #[must_use]
     pub fn new(name: &str, source: Vec<u8>, machine: Machine, engine: Engine) -> Job {
         Job::with_text(name.to_string(), Text::Held(source), machine, engine)

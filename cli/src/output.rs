@@ -38,6 +38,24 @@ pub enum Format {
 /// # Errors
 ///
 /// The program's first error (nothing written), or a failure to write.
+///
+/// ```
+/// use cycleref_cli::{output, Format, Job};
+/// use cycleref_spec::pipeline::Engine;
+/// use cycleref_spec::{Machine, ProfileName};
+///
+/// let text = b"M03 S500\nG00 X80 Z10\nG32 Z-20 F2\nG00 X90\n";
+/// let job = Job::new("g32.nc", text.to_vec(), Machine::new(ProfileName::Gsk980), Engine::Impl);
+/// let mut nc = Vec::new();
+/// output::expand(&job, Format::Nc, &mut nc).map_err(String::from)?;
+/// assert_eq!(String::from_utf8(nc).unwrap(), "M03 S500\nG00 X80 Z10\nG32 X80.000 Z-20.000 F2.0\nG00 X90\n");
+/// // A program the reader refuses writes nothing.
+/// let bad = Job::new("bad.nc", b"G32 Z-20 F2\n".to_vec(), Machine::new(ProfileName::Gsk980), Engine::Impl);
+/// let mut nc = Vec::new();
+/// assert!(output::expand(&bad, Format::Nc, &mut nc).is_err());
+/// assert!(nc.is_empty());
+/// # Ok::<(), String>(())
+/// ```
 pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure> {
     let summary = job.validate()?;
     let mut out = io::BufWriter::with_capacity(1 << 16, out);

@@ -337,6 +337,22 @@ fn compare_file(
 /// # Errors
 ///
 /// Our expansion's error, or the trace's, with its line.
+///
+/// ```
+/// use cycleref_cli::{check, Job};
+/// use cycleref_spec::pipeline::Engine;
+/// use cycleref_spec::{Machine, ProfileName};
+///
+/// let text = b"M03 S500\nG00 X80 Z10\nG32 Z-20 F2\nG00 X90\n";
+/// let job = Job::new("g32.nc", text.to_vec(), Machine::new(ProfileName::Gsk980), Engine::Impl);
+/// let same = check::check_bytes(&job, b"G00 X80 Z10\nG32 Z-20 F2\nG00 X90\n", false, 0)?;
+/// assert!(same.agree());
+/// // The thread cut at another lead.
+/// let lead = check::check_bytes(&job, b"G00 X80 Z10\nG32 Z-20 F2.1\nG00 X90\n", false, 0)?;
+/// assert_eq!((lead.agree(), lead.divergences()), (false, 1));
+/// assert!(lead.first_divergence().unwrap().contains("(lead)"));
+/// # Ok::<(), String>(())
+/// ```
 pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
     let format = if is_csv { TraceFormat::Csv } else { TraceFormat::Nc };
     check_bytes_as(job, bytes, format, tolerance)

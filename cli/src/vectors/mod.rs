@@ -137,6 +137,14 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
 ///
 /// As [`run`]: the engine and the reference model disagree on the case,
 /// or no draft of its template fits.
+///
+/// ```
+/// // Case 2 of every seed is a program that must be refused.
+/// let case: serde_json::Value = serde_json::from_str(&cycleref_cli::vectors::case_text(1, 2)?).unwrap();
+/// assert_eq!(case["id"], "case-0002");
+/// assert!(case["expect"]["error"]["kind"].is_string());
+/// # Ok::<(), String>(())
+/// ```
 pub fn case_text(seed: u64, index: u32) -> Result<String, String> {
     Ok(to_text(&make_case(seed, index)?.json))
 }
