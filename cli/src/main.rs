@@ -299,6 +299,138 @@ fn print(text: &str) -> Result<(), Failure> {
     out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| Failure::output(&e))
 }
 
+/// A manual page: clap's sections (name, synopsis, description, options,
+/// subcommands, version) with the command's own between them: EXIT
+/// STATUS, and the page's sections of [`MAN_SECTIONS`] (trace formats,
+/// examples).
+fn man_page(page: clap::Command, subcommand: Option<&str>) -> std::io::Result<Vec<u8>> {
+    let has_args = page.get_arguments().any(|a| !a.is_hide_set());
+    let has_subcommands = page.get_subcommands().next().is_some();
+    let man = clap_mangen::Man::new(page);
+    let mut out = Vec::new();
+    man.render_title(&mut out)?;
+    man.render_name_section(&mut out)?;
+    man.render_synopsis_section(&mut out)?;
+    man.render_description_section(&mut out)?;
+    if has_args {
+        man.render_options_section(&mut out)?;
+    }
+    if has_subcommands {
+        man.render_subcommands_section(&mut out)?;
+    }
+    let sections = std::iter::once(("EXIT STATUS", EXIT_STATUS)).chain(
+        MAN_SECTIONS.iter().filter(|(page, _, _)| *page == subcommand.unwrap_or("")).map(|&(_, h, t)| (h, t)),
+    );
+    for (heading, text) in sections {
+        writeln!(out, ".SH \"{heading}\"")?;
+        for paragraph in text.split("\n\n") {
+            // A paragraph of lines starting with `$ ` is an example:
+            // shown as written, one line each.
+            if paragraph.starts_with("$ ") {
+                writeln!(out, ".PP\n.nf\n.RS 4")?;
+                for line in paragraph.lines() {
+                    writeln!(out, "{}", roff_text(line))?;
+                }
+                writeln!(out, ".RE\n.fi")?;
+            } else {
+                writeln!(out, ".PP\n{}", roff_text(&paragraph.replace('\n', " ")))?;
+            }
+        }
+    }
+    man.render_version_section(&mut out)?;
+    Ok(out)
+}
+
+/// Text as roff: backslashes and hyphens escaped, a line that would start
+/// with a control character guarded.
+fn roff_text(line: &str) -> String {
+    let text = line.replace('\\', "\\e").replace('-', "\\-");
+    if text.starts_with('.') || text.starts_with('\'') {
+        format!("\\&{text}")
+    } else {
+        text
+    }
+}
+
+/// The sections of the manual pages beyond clap's: (page, heading, text),
+/// the page `""` for `cycleref` itself. Paragraphs are separated by a blank
+/// line; a paragraph of `$ ` lines is an example.
+const MAN_SECTIONS: &[(&str, &str, &str)] = &[
+    (
+        "",
+        "EXAMPLES",
+        "$ cycleref expand --profile gsk988 examples/gsk988-m68x6.nc\n\
+         $ cycleref check --profile gsk988 --trace vendor.nc examples/gsk988-m68x6.nc\n\
+         $ cycleref vectors --count 500 --seed 7 --out corpus\n\
+         $ cycleref conform corpus --run 'my-sim {program} > {trace}' --junit conform.xml\n\n\
+         See cycleref-expand(1), cycleref-check(1), cycleref-conform(1) and the README for the nc and json \
+         contracts, the profiles and the parameter file.",
+    ),
+    (
+        "expand",
+        "EXAMPLES",
+        "$ cycleref expand --profile gsk988 examples/gsk988-m68x6.nc > m68.nc\n\
+         $ cycleref expand --profile fanuc --format json prog.nc | jq '.cycles[0].moves | length'\n\
+         $ cycleref expand --profile linuxcnc --format jsonl part.ngc\n\
+         $ cat prog.nc | cycleref expand --params machine.toml -\n\n\
+         The nc output is the program with every cycle replaced by plain blocks, each pass headed by a \
+         comment; it reads back as itself (expand of the expansion is the expansion).",
+    ),
+    ("passes", "EXAMPLES", "$ cycleref passes --profile gsk980 examples/gsk980-g78.nc"),
+    (
+        "check",
+        "TRACE FORMATS",
+        "nc (any extension but .csv and .canon): an expanded program, plain G00/G01/G02/G03 and G32 (G33 on \
+         linuxcnc) blocks, read by the program reader in its trace mode: arcs give their centre as I and K, \
+         a thread's lead as F or I and its start angle as Q; a canned cycle, R, G41/G42, a J or K on a \
+         thread move, or any word that is not part of a plain move is an error naming the line and word.\n\n\
+         csv (.csv, or --trace-format csv): a header row naming the columns, then one move a row: motion \
+         (rapid, feed, thread, arc-cw, arc-ccw), x, z, and as needed lead, q, i and k (or cx and cz); see \
+         the README.\n\n\
+         canon (.canon, or --trace-format canon, with --profile linuxcnc): LinuxCNC's canonical output, \
+         rs274 -g FILE < /dev/null; every call is read or refused by name.\n\n\
+         The moves outside the cycles (the program's own G00 blocks) are compared too, unless \
+         --cycles-only.",
+    ),
+    (
+        "check",
+        "EXAMPLES",
+        "$ cycleref check --profile gsk988 --trace vendor.nc examples/gsk988-m68x6.nc\n\
+         $ cycleref check --profile gsk980 --trace log.csv --format json prog.nc > report.json\n\
+         $ rs274 -g part.ngc < /dev/null > part.canon\n\
+         $ cycleref check --profile linuxcnc --trace part.canon --tolerance 1 part.ngc\n\
+         $ my-logger | cycleref check --trace - --trace-format csv --cycles-only prog.nc",
+    ),
+    (
+        "conform",
+        "OUTCOMES",
+        "With --traces DIR, case-NNNN.nc, .csv or .canon is the vendor's trace of case NNNN and \
+         case-NNNN.error (holding the message) its refusal. With --run, the command's exit status 0 gives \
+         the trace it wrote to {trace}, any other a refusal. A case passes when the trace agrees with the \
+         expected moves or the expected refusal was made.",
+    ),
+    (
+        "conform",
+        "EXAMPLES",
+        "$ cycleref vectors --count 10000 --seed 42 --out corpus\n\
+         $ cycleref conform corpus --traces outputs --junit conform.xml\n\
+         $ cycleref conform corpus --run 'my-sim --profile {profile} {program} > {trace}' --shard 2/4",
+    ),
+    ("vectors", "EXAMPLES", "$ cycleref vectors --count 125 --seed 1 --out vectors"),
+    (
+        "plot",
+        "EXAMPLES",
+        "$ cycleref plot --profile gsk988 examples/gsk988-m68x6.nc -o m68.svg\n\
+         $ cycleref plot --profile gsk988 --trace vendor.nc --line 5 prog.nc -o overlay.svg",
+    ),
+    (
+        "completions",
+        "EXAMPLES",
+        "$ cycleref completions bash > ~/.local/share/bash-completion/completions/cycleref",
+    ),
+    ("man", "EXAMPLES", "$ cycleref man check | man -l -"),
+];
+
 /// Runs a command: its exit status, or a failure.
 fn run(cli: Cli) -> Result<u8, Failure> {
     match cli.command {
@@ -332,9 +464,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                     sub.name(title.clone()).bin_name(title).version(env!("CARGO_PKG_VERSION"))
                 }
             };
-            let mut text = Vec::new();
-            clap_mangen::Man::new(page)
-                .render(&mut text)
+            let text = man_page(page, subcommand.as_deref())
                 .map_err(|e| Failure::msg(format!("cannot render the manual page: {e}")))?;
             print(&String::from_utf8_lossy(&text))?;
             Ok(0)
