@@ -403,7 +403,7 @@ fn lead_units(c: &G76Cycle) -> f64 {
     let value = to_f64(i64::try_from(c.lead.mantissa).unwrap_or(i64::MAX))
         / 10_f64.powi(i32::try_from(c.lead.scale).unwrap_or(0));
     match (c.lead.word, c.units.unit) {
-        (LeadWord::F, _) => value,
+        (LeadWord::F | LeadWord::K, _) => value,
         (LeadWord::I, InputUnit::Metric) => 25.4 / value,
         (LeadWord::I, InputUnit::Inch) => 1.0 / value,
     }

@@ -206,6 +206,7 @@ impl LeadText {
         buf[start] = match lead.word {
             LeadWord::F => b'F',
             LeadWord::I => b'I',
+            LeadWord::K => b'K',
         };
         &buf[start..]
     }

@@ -225,7 +225,8 @@ fn check_names_where_a_grblhal_style_tapered_thread_differs() {
     let first = text.split("all divergences").next().unwrap_or_default();
     assert!(first.contains("rough pass 1") && first.contains("ours   rapid X23.5400 Z1.9151"), "{text}");
     assert!(first.contains("theirs rapid X22.0000 Z2.4356"), "{text}");
-    assert!(text.contains("F2.038235") && text.contains("(lead)"), "{text}");
+    // The lead as LinuxCNC writes it: K.
+    assert!(text.contains("K2.038235") && text.contains("(lead)"), "{text}");
 }
 
 #[test]

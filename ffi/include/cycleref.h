@@ -232,6 +232,11 @@ enum CyclerefLeadWord
      * `I`: threads per inch.
      */
     CYCLEREF_LEAD_WORD_I = 1,
+    /**
+     * `K`: LinuxCNC's pitch (`G33 K`), mm (inch) per revolution along
+     * the move.
+     */
+    CYCLEREF_LEAD_WORD_K = 2,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

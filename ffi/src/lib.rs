@@ -132,6 +132,35 @@
 //! The same functions are callable from Rust through the `rlib`, which the
 //! tests use; Rust programs should use `cycleref` and `cycleref-spec`
 //! directly.
+//!
+//! ## From Rust
+//!
+//! The same calls as from C (`cycleref_expand`, sized with a capacity of 0
+//! first):
+//!
+//! ```
+//! use cycleref_ffi::{cycleref_expand, cycleref_options_default, CyclerefError, CyclerefMove, CyclerefStatus};
+//!
+//! // The M68x6 example of the 988TA manual (examples/gsk988-m68x6.nc).
+//! let program = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\n";
+//! let opts = cycleref_options_default();
+//! let (mut count, mut err) = (0_usize, CyclerefError::default());
+//! // Capacity 0: only the count.
+//! // SAFETY: the program is `program.len()` readable bytes; `count` and
+//! // `err` are valid for writes; no buffer with capacity 0.
+//! let status = unsafe {
+//!     cycleref_expand(program.as_ptr().cast(), program.len(), &opts, std::ptr::null_mut(), 0, &mut count, &mut err)
+//! };
+//! assert_eq!((status, count), (CyclerefStatus::BufferTooSmall, 30));
+//! let mut moves = vec![CyclerefMove::default(); count];
+//! // SAFETY: as above, and `moves` holds `count` writable moves.
+//! let status = unsafe {
+//!     cycleref_expand(program.as_ptr().cast(), program.len(), &opts, moves.as_mut_ptr(), count, &mut count, &mut err)
+//! };
+//! assert_eq!(status, CyclerefStatus::Ok);
+//! // The second move is the first cut, to X64.400 Z-59.000 (IS-B: 0.001 mm).
+//! assert_eq!((moves[1].x, moves[1].z), (64_400, -59_000));
+//! ```
 #![deny(unsafe_code)]
 #![deny(unsafe_op_in_unsafe_fn)]
 #![deny(missing_docs)]
@@ -452,32 +481,6 @@ pub extern "C" fn cycleref_status_name(status: i32) -> *const c_char {
 /// not 0, must be valid for writes of `capacity` moves; `count` must be
 /// valid for a write; `err` must be NULL or valid for a write. None of the
 /// memory read may be written by another thread during the call.
-///
-/// From Rust (from C the same calls, with the header):
-///
-/// ```
-/// use cycleref_ffi::{cycleref_expand, cycleref_options_default, CyclerefError, CyclerefMove, CyclerefStatus};
-///
-/// // The M68x6 example of the 988TA manual (examples/gsk988-m68x6.nc).
-/// let program = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\n";
-/// let opts = cycleref_options_default();
-/// let (mut count, mut err) = (0_usize, CyclerefError::default());
-/// // Capacity 0: only the count.
-/// // SAFETY: the program is `program.len()` readable bytes; `count` and
-/// // `err` are valid for writes; no buffer with capacity 0.
-/// let status = unsafe {
-///     cycleref_expand(program.as_ptr().cast(), program.len(), &opts, std::ptr::null_mut(), 0, &mut count, &mut err)
-/// };
-/// assert_eq!((status, count), (CyclerefStatus::BufferTooSmall, 30));
-/// let mut moves = vec![CyclerefMove::default(); count];
-/// // SAFETY: as above, and `moves` holds `count` writable moves.
-/// let status = unsafe {
-///     cycleref_expand(program.as_ptr().cast(), program.len(), &opts, moves.as_mut_ptr(), count, &mut count, &mut err)
-/// };
-/// assert_eq!(status, CyclerefStatus::Ok);
-/// // The second move is the first cut, to X64.400 Z-59.000 (IS-B: 0.001 mm).
-/// assert_eq!((moves[1].x, moves[1].z), (64_400, -59_000));
-/// ```
 #[allow(unsafe_code)]
 #[no_mangle]
 pub unsafe extern "C" fn cycleref_expand(

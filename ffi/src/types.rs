@@ -170,6 +170,9 @@ pub enum CyclerefLeadWord {
     F = 0,
     /// `I`: threads per inch.
     I = 1,
+    /// `K`: LinuxCNC's pitch (`G33 K`), mm (inch) per revolution along
+    /// the move.
+    K = 2,
 }
 
 /// The infeed mode, the `D` word of the extended G76
@@ -394,6 +397,7 @@ impl CyclerefMove {
                 out.lead_word = match lead.word {
                     LeadWord::F => CyclerefLeadWord::F,
                     LeadWord::I => CyclerefLeadWord::I,
+                    LeadWord::K => CyclerefLeadWord::K,
                 };
                 out.lead_mantissa = lead.mantissa;
                 out.lead_scale = lead.scale;
@@ -538,6 +542,7 @@ impl CyclerefG76Params {
             lead_word: match c.lead.word {
                 LeadWord::F => CyclerefLeadWord::F as u32,
                 LeadWord::I => CyclerefLeadWord::I as u32,
+                LeadWord::K => CyclerefLeadWord::K as u32,
             },
             lead_scale: c.lead.scale,
             pass_limit: c.pass_limit,
@@ -658,6 +663,7 @@ fn lead_of(word: u32, mantissa: u64, scale: u32) -> Result<Lead, String> {
     let word = match word {
         0 => LeadWord::F,
         1 => LeadWord::I,
+        2 => LeadWord::K,
         v => return Err(format!("lead_word = {v} is not a CyclerefLeadWord")),
     };
     Ok(Lead { word, mantissa, scale })

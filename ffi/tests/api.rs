@@ -622,7 +622,7 @@ fn the_step_api_yields_the_cycle() {
         assert_eq!((err.status, err.line), (CyclerefStatus::CycleError, 0));
         for bad in [
             CyclerefG76Params { run_out_kind: 3, ..params },
-            CyclerefG76Params { lead_word: 2, ..params },
+            CyclerefG76Params { lead_word: 3, ..params },
             CyclerefG76Params { increment: 3, ..params },
             CyclerefG76Params { infeed: 6, ..params },
             CyclerefG76Params { depth_mode: 2, ..params },

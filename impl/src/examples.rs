@@ -113,7 +113,7 @@ pub const LINUXCNC_TAPER: LinuxCncG76 = LinuxCncG76 {
     x_mode: XMode::Radius,
     start: Point::new(140_000, 20_000),
     end: Point::new(140_000, -200_000),
-    pitch: Lead { word: LeadWord::F, mantissa: 15, scale: 1 },
+    pitch: Lead { word: LeadWord::K, mantissa: 15, scale: 1 },
     peak_offset: -10_000,
     initial_depth: 2_000,
     degression: 15_000,

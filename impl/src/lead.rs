@@ -15,12 +15,16 @@ pub enum LeadWord {
     F,
     /// `I`: threads per inch along the long axis.
     I,
+    /// `K`: LinuxCNC's pitch, the distance per revolution along the move
+    /// (`G33 K`, and the G76 pitch `P` its passes are cut with): read as
+    /// `F` is, and written as LinuxCNC writes it.
+    K,
 }
 
 /// A programmed lead: `mantissa / 10^scale` of the word [`LeadWord`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Lead {
-    /// `F` or `I`.
+    /// `F`, `I` or (LinuxCNC) `K`.
     pub word: LeadWord,
     /// Digits of the programmed value without the decimal point.
     pub mantissa: u64,
@@ -54,7 +58,7 @@ impl Lead {
         let sc = 10_u128.pow(self.scale.min(MAX_LEAD_SCALE));
         let m = u128::from(self.mantissa);
         match (self.word, units.unit) {
-            (LeadWord::F, _) => Ratio { num: m * inc, den: sc },
+            (LeadWord::F | LeadWord::K, _) => Ratio { num: m * inc, den: sc },
             (LeadWord::I, InputUnit::Metric) => Ratio { num: 254 * inc * sc, den: 10 * m },
             (LeadWord::I, InputUnit::Inch) => Ratio { num: inc * sc, den: m },
         }
@@ -78,7 +82,7 @@ impl Lead {
         }
         let one = 10_u64.pow(self.scale);
         match self.word {
-            LeadWord::F => self.mantissa <= 9999 * one,
+            LeadWord::F | LeadWord::K => self.mantissa <= 9999 * one,
             // I >= 0.0001 and I <= 2540.
             LeadWord::I => self.mantissa as u128 * 10_000 >= one as u128 && self.mantissa <= 2540 * one,
         }

@@ -56,7 +56,7 @@ use crate::verify::{any_in, assume, declare};
 pub const ANGLES: [i32; 4] = [0, 295_000, -295_000, 450_000];
 
 /// The pitch of every drawn cycle: P1.5.
-pub const PITCH: Lead = Lead { word: LeadWord::F, mantissa: 15, scale: 1 };
+pub const PITCH: Lead = Lead { word: LeadWord::K, mantissa: 15, scale: 1 };
 
 /// The inputs of a LinuxCNC harness: inclusive ranges of the words.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -592,7 +592,7 @@ where
 /// 1)B)²` with `A` = P in 10⁻⁶, `S = ξ²E² + K²`, `B = ξE` (R-LCNC-SYNC).
 #[must_use]
 pub fn is_taper_pitch(c: &LinuxCncG76, lead: Lead) -> bool {
-    if lead.word != LeadWord::F || lead.scale != 6 {
+    if lead.word != c.pitch.word || lead.scale != 6 {
         return false;
     }
     let xf = u128::from(c.x_mode.factor().unsigned_abs());

@@ -100,7 +100,8 @@ class Move:
     ``centre`` the arc's absolute centre ``(x, z)`` (arcs only); ``role``
     what the move does in its pass (``"approach"``, ``"cut"``,
     ``"run-out"``, ``"peck"``, ...); ``lead`` the lead as programmed
-    (``"F6.0"``, thread moves only); ``start_angle_millidegrees`` and
+    (``"F6.0"``, ``"I20.0"``, ``"K2.5"`` on the linuxcnc profile; thread
+    moves only); ``start_angle_millidegrees`` and
     ``sync`` where the spindle synchronisation starts (thread moves only);
     ``pass_`` the G76 pass, ``plunge`` the G75.1 plunge.
 

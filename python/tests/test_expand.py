@@ -284,7 +284,8 @@ def test_linuxcnc_profile():
     assert (cycle.code, cycle.line, cycle.decimals) == ("G76", 6, 4)
     assert len(cycle.moves) == 17 * 6 + 1
     assert rendered(cycle)[:2] == [("rapid", D("23.5400"), D("1.9151")), ("thread", D("21.5400"), D("1.9151"))]
-    assert cycle.moves[1].lead == "F2.038235"
+    # The lead as LinuxCNC writes it (G33 K).
+    assert cycle.moves[1].lead == "K2.038235"
     # The reference model gives the same moves.
     (ref,) = cycleref.expand(example("linuxcnc-m20-taper.ngc"), profile="linuxcnc", engine="spec")
     assert rendered(ref) == rendered(cycle)

@@ -34,7 +34,7 @@ use std::cmp::Ordering;
 
 use cycleref::angle::StartAngle;
 use cycleref::error::CycleError;
-use cycleref::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
+use cycleref::lead::{Lead, MAX_LEAD_SCALE};
 use cycleref::linuxcnc::{LinuxCncG76, DEGRESSION_ONE};
 use cycleref::moves::{Flank, Motion, Move, Pass, PassKind, Role};
 use cycleref::units::{Point, MAX_LENGTH};
@@ -82,7 +82,8 @@ pub fn taper_pitch(c: &LinuxCncG76) -> Lead {
     // round(A·√S / B) = floor((⌊√(4A²S)⌋ + B) / (2B)), ties away from zero.
     let root = (BigInt::from(4) * &a * &a * &s).sqrt();
     let v: BigInt = (root + &b) / (BigInt::from(2) * &b);
-    Lead { word: LeadWord::F, mantissa: v.to_u64().unwrap_or(u64::MAX), scale }
+    // The word of the pitch (K, as LinuxCNC writes a G33's).
+    Lead { word: c.pitch.word, mantissa: v.to_u64().unwrap_or(u64::MAX), scale }
 }
 
 /// Expands a LinuxCNC G76 cycle into moves, as the interpreter does

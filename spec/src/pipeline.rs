@@ -196,7 +196,9 @@ impl<T: Iterator<Item = Move> + Clone + Send + Sync + 'static> ReferenceMoves fo
 
 impl Clone for Box<dyn ReferenceMoves> {
     fn clone(&self) -> Self {
-        self.boxed_clone()
+        // The stream inside the box: `self.boxed_clone()` would find the
+        // box itself (it is a `ReferenceMoves` too) and recurse.
+        (**self).boxed_clone()
     }
 }
 

@@ -1023,8 +1023,9 @@ impl State<'_> {
         // I 0.0001..254 (metric) / 0.0001..100 (inch).
         // The bounds in units of 10^-MAX_LEAD_SCALE (6 decimals).
         let (lo, hi, range) = match (word, self.units.unit) {
-            (LeadWord::F, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
-            (LeadWord::F, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
+            // K is LinuxCNC's and never read here (`word` is F or I).
+            (LeadWord::F | LeadWord::K, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
+            (LeadWord::F | LeadWord::K, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
             (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
             (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
         };

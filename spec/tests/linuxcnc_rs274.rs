@@ -83,7 +83,7 @@ fn case(g: &mut Gen) -> (String, LinuxCncG76) {
     let length = s(g.range(20_000, 400_000));
     let z_end = if towards_plus { z0 + length } else { z0 - length };
     let mut pitch = Lead {
-        word: LeadWord::F,
+        word: LeadWord::K,
         mantissa: u64::try_from(g.range(25, 400)).unwrap(),
         scale: if inch { 3 } else { 2 },
     };

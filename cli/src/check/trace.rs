@@ -413,6 +413,7 @@ fn parse_lead(s: &str) -> Option<Lead> {
     let (word, v) = match s.chars().next()? {
         'F' | 'f' => (LeadWord::F, &s[1..]),
         'I' | 'i' => (LeadWord::I, &s[1..]),
+        'K' | 'k' => (LeadWord::K, &s[1..]),
         _ => (LeadWord::F, s),
     };
     let (int, frac) = v.split_once('.').unwrap_or((v, ""));
@@ -574,7 +575,7 @@ impl CanonTrace<'_> {
                         mantissa /= 10;
                         scale -= 1;
                     }
-                    self.pitch = Some(Lead { word: LeadWord::F, mantissa, scale });
+                    self.pitch = Some(Lead { word: LeadWord::K, mantissa, scale });
                     continue;
                 }
                 Some(CanonCall::StopSync) => {

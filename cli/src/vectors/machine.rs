@@ -156,10 +156,12 @@ impl MachineStyle {
     pub(super) fn lead(&self, rng: &mut Rng, word: Option<LeadWord>) -> (String, i64) {
         let word = word.unwrap_or(if rng.chance(20) { LeadWord::I } else { LeadWord::F });
         let text = match (word, self.unit) {
-            (LeadWord::F, InputUnit::Metric) => {
+            (LeadWord::F | LeadWord::K, InputUnit::Metric) => {
                 rng.pick(&["1", "1.25", "1.5", "1.75", "2", "2.5", "3", "4", "6"])
             }
-            (LeadWord::F, InputUnit::Inch) => rng.pick(&["0.04", "0.05", "0.0625", "0.08", "0.1", "0.125"]),
+            (LeadWord::F | LeadWord::K, InputUnit::Inch) => {
+                rng.pick(&["0.04", "0.05", "0.0625", "0.08", "0.1", "0.125"])
+            }
             (LeadWord::I, _) => rng.pick(&["8", "10", "11.5", "12", "14", "16", "20"]),
         };
         let (int, frac) = text.split_once('.').unwrap_or((text, ""));
@@ -167,12 +169,16 @@ impl MachineStyle {
         let scale = 10_i64.pow(u32::try_from(frac.len()).unwrap_or(0));
         let per = self.units().per_unit();
         let inc = match (word, self.unit) {
-            (LeadWord::F, _) => mantissa * per / scale,
+            (LeadWord::F | LeadWord::K, _) => mantissa * per / scale,
             (LeadWord::I, InputUnit::Metric) => 254 * per * scale / (10 * mantissa),
             (LeadWord::I, InputUnit::Inch) => per * scale / mantissa,
         };
         let point = if self.profile == ProfileName::Fanuc && frac.is_empty() { ".0" } else { "" };
-        let letter = if word == LeadWord::F { 'F' } else { 'I' };
+        let letter = match word {
+            LeadWord::F => 'F',
+            LeadWord::I => 'I',
+            LeadWord::K => 'K',
+        };
         (format!("{letter}{text}{point}"), inc)
     }
 

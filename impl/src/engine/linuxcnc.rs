@@ -66,7 +66,7 @@ use core::iter::FusedIterator;
 use crate::angle::StartAngle;
 use crate::engine::real::{power, tan, Interval, Rounding, FAST, SLOW};
 use crate::error::{CycleError, Field};
-use crate::lead::{Lead, LeadWord, MAX_LEAD_SCALE};
+use crate::lead::{Lead, MAX_LEAD_SCALE};
 use crate::linuxcnc::{LinuxCncG76, DEGRESSION_ONE};
 use crate::moves::{Flank, Motion, Move, Pass, PassKind, Role};
 use crate::units::{Length, Point, MAX_LENGTH};
@@ -396,7 +396,8 @@ fn taper_pitch_valid(c: &LinuxCncG76) -> Option<Lead> {
     let (hi, lo) = mul_wide(a.checked_mul(a)?.checked_mul(4)?, s);
     let root = isqrt_wide(hi, lo)?;
     let v = root.checked_add(b)? / b.checked_mul(2)?;
-    Some(Lead { word: LeadWord::F, mantissa: u64::try_from(v).unwrap_or(u64::MAX), scale })
+    // The word of the pitch (K, as LinuxCNC writes a G33's).
+    Some(Lead { word: c.pitch.word, mantissa: u64::try_from(v).unwrap_or(u64::MAX), scale })
 }
 
 /// The full product `x·y` of two `u128` as (high, low) halves.
@@ -700,7 +701,7 @@ mod tests {
         let mut c = cycle();
         // The largest pitch over the shortest taper and the deepest thread:
         // 9999·√(1 + 999 999 999²) ≈ 9.999e12 mm, still a u64 in 10⁻⁶.
-        c.pitch = Lead { word: LeadWord::F, mantissa: 9999, scale: 0 };
+        c.pitch = Lead { word: crate::lead::LeadWord::K, mantissa: 9999, scale: 0 };
         c.taper_distance = 1;
         c.initial_depth = 1;
         c.full_depth = MAX_LENGTH;

@@ -274,7 +274,8 @@ impl State<'_> {
             mantissa /= 10;
             scale -= 1;
         }
-        Ok(Lead { word: LeadWord::F, mantissa, scale })
+        // LinuxCNC's pitch, written K as a G33 writes it.
+        Ok(Lead { word: LeadWord::K, mantissa, scale })
     }
 
     /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle.

@@ -12,7 +12,7 @@ pub const STRAIGHT_RADIUS: LinuxCncG76 = LinuxCncG76 {
     x_mode: XMode::Radius,
     start: Point::new(100_000, 10_000),
     end: Point::new(100_000, -100_000),
-    pitch: Lead { word: LeadWord::F, mantissa: 1, scale: 0 },
+    pitch: Lead { word: LeadWord::K, mantissa: 1, scale: 0 },
     peak_offset: -5_000,
     initial_depth: 1_000,
     degression: 10_000,
