@@ -182,21 +182,14 @@ impl CycleJson {
     #[must_use]
     pub fn new(cycle: Cycle<'_, '_>, moves: Moves) -> CycleJson {
         let u = cycle.units();
-        let (params_line, from, start) = match cycle {
-            Cycle::G76(c) => (Some(c.params_line), None, c.cycle.start),
-            Cycle::G32(c) => (None, None, c.g32.start),
-            Cycle::G92(c) => (None, None, c.cycle.start),
-            Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
-            Cycle::G75(c) => {
-                (Some(Some(c.params_line)), Some(PointJson::new(c.cycle.from, u)), c.cycle.start)
-            }
-        };
         CycleJson {
             cycle: cycle.code(),
             line: cycle.line(),
-            params_line,
-            from,
-            start: PointJson::new(start, u),
+            // Present (null when block 1 came from the parameters) for the
+            // cycles of two blocks only.
+            params_line: cycle.has_params_block().then(|| cycle.params_line()),
+            from: cycle.tool_before_start().map(|p| PointJson::new(p, u)),
+            start: PointJson::new(cycle.start(), u),
             moves: MovesJson { moves: RefCell::new(Some(moves)), units: u },
         }
     }

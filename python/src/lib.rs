@@ -319,14 +319,7 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), ExpandFailure> {
         |f| ExpandFailure::Run(f, None),
         |item| {
             let Some(cycle) = Cycle::of(item) else { return Ok(()) };
-            let (params_line, from, start) = match cycle {
-                Cycle::G76(c) => (c.params_line, None, c.cycle.start),
-                Cycle::G32(c) => (None, None, c.g32.start),
-                Cycle::G92(c) => (None, None, c.cycle.start),
-                // Not selectable from Python yet (issue 15).
-                Cycle::LinuxCnc(c) => (None, None, c.cycle.start),
-                Cycle::G75(c) => (Some(c.params_line), Some(c.cycle.from), c.cycle.start),
-            };
+            let (params_line, from, start) = (cycle.params_line(), cycle.tool_before_start(), cycle.start());
             // Expanded once, and held only up to the limit: a program beyond
             // it is refused once the move past the limit is reached.
             let mut moves = Vec::new();

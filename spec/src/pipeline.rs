@@ -98,6 +98,38 @@ impl<'r, 'a> Cycle<'r, 'a> {
         }
     }
 
+    /// True for the cycles of two blocks (G76 and G78 of the FANUC-style
+    /// profiles, G75.1), whose block 1 [`params_line`](Cycle::params_line)
+    /// names (a G76 whose block 1 came from the parameters has none).
+    #[must_use]
+    pub fn has_params_block(self) -> bool {
+        matches!(self, Cycle::G76(_) | Cycle::G75(_))
+    }
+
+    /// The cycle's start point (A of G76, G78 and G92; the G32 block's
+    /// start; A of G75.1).
+    #[must_use]
+    pub fn start(self) -> Point {
+        match self {
+            Cycle::G76(c) => c.cycle.start,
+            Cycle::G32(c) => c.g32.start,
+            Cycle::G75(c) => c.cycle.start,
+            Cycle::G92(c) => c.cycle.start,
+            Cycle::LinuxCnc(c) => c.cycle.start,
+        }
+    }
+
+    /// Where the tool is before the cycle when that is not its start
+    /// point: G75.1's S, from which it rapids to A. `None` for the others,
+    /// which start where the tool is.
+    #[must_use]
+    pub fn tool_before_start(self) -> Option<Point> {
+        match self {
+            Cycle::G75(c) => Some(c.cycle.from),
+            Cycle::G76(_) | Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => None,
+        }
+    }
+
     /// The line of the block that carries the word an alarm is about
     /// (reading R-ERRLINE): block 1's for a value written in block 1 (G76's
     /// P(m)(r)(a), Q(Δdmin), R(d), L, E; G75.1's X Z P Q H D A B L), else

@@ -298,11 +298,7 @@ pub fn run(
             } else {
                 // A cycle of two blocks is picked by either line (G76 and
                 // G78 by the block 1 whose values it uses).
-                let block1 = match cycle {
-                    Cycle::G75(c) => Some(c.params_line),
-                    Cycle::G76(c) => c.params_line,
-                    _ => None,
-                };
+                let block1 = cycle.params_line();
                 let mut hit = false;
                 for l in [Some(cycle.line()), block1].into_iter().flatten() {
                     if lines.contains(&l) {
