@@ -334,19 +334,17 @@ pub fn markdown(f: &Figures, date: &str, commit: &str) -> String {
     let max_f64 = f.cases.iter().map(CaseFigures::engine_over_f64).fold(0.0, f64::max);
     let spread = f.flat.iter().map(|x| (x.1 / base - 1.0).abs()).fold(0.0, f64::max);
     let mark = |ok: bool| if ok { "met" } else { "**missed**" };
-    let _ = writeln!(s, "\nTargets:\n");
+    let _ = writeln!(s, "\nTargets (issue 33):\n");
     let _ = writeln!(
         s,
-        "* engine ≥ 100× faster than the reference: {} (smallest reference/engine {:.1}×)",
-        mark(min_speedup >= 100.0),
-        min_speedup
-    );
-    let _ = writeln!(
-        s,
-        "* engine ≤ 1.5× the f64 baseline per pass: {} (largest engine/f64 {:.2}×)",
-        mark(max_f64 <= 1.5),
+        "* engine at or under the f64 loop on every case (engine/f64 ≤ 1.0): {} (largest engine/f64 {:.2}×)",
+        mark(max_f64 <= 1.0),
         max_f64
     );
+    // Retired target (≥ 100× faster than the reference): the exact-decimal
+    // reference is a specification, not a peer; the ratio is printed for
+    // the record only.
+    let _ = writeln!(s, "* for the record: smallest reference/engine {min_speedup:.1}×");
     let _ = writeln!(
         s,
         "* engine per pass flat within 20% from 10 to 100 000 passes: {} (100 000 / 10 = {:.3}, \
