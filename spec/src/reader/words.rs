@@ -1,0 +1,318 @@
+//! The words of a block as numbers: lengths in increments (with the
+//! profile's rules for bare values and the range tables), counts, leads,
+//! the G32 Q word.
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+
+/// A length word in least increments of `units`, under `machine`'s
+/// decimal-point rule (reading R-POINT): with a decimal point, or without
+/// one on a GSK profile, the value is in mm (inch) and must be a whole
+/// number of increments; without one on FANUC (unless calculator-type
+/// input), it is the number of increments. The one home of the rule, used
+/// by the program reader and by trace readers.
+///
+/// # Errors
+///
+/// A value finer than the increment or beyond the range tables.
+#[inline]
+pub fn length_word(
+    machine: &Machine,
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+) -> Result<i64, ProgramError> {
+    let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
+    to_increments(units, block, w, bare)
+}
+
+/// The program's rule for a block's axis words, shared with the trace
+/// readers: X with U, or Z with W, in one block is an error naming the
+/// incremental word (absolute and incremental words for the same axis).
+///
+/// # Errors
+///
+/// Both words of one axis, or an axis word repeated.
+pub fn check_axis_words(block: &Block<'_>) -> Result<(), ProgramError> {
+    State::axis_words(block).map(|_| ())
+}
+
+pub(super) fn increment_text(units: Units) -> String {
+    let unit = match units.unit {
+        InputUnit::Metric => "mm",
+        InputUnit::Inch => "inch",
+    };
+    let mut s = String::from("0.");
+    for _ in 1..units.decimals() {
+        s.push('0');
+    }
+    s.push('1');
+    format!("{s} {unit}")
+}
+
+pub(super) fn range_err(units: Units, signed: bool) -> ErrorKind {
+    let mut max = String::new();
+    let _ = cycleref::units::write_fixed(&mut max, i128::from(MAX_LENGTH), units.decimals());
+    ErrorKind::OutOfRange { range: if signed { format!("-{max}..{max}") } else { format!("0..{max}") } }
+}
+
+/// The bits ([`letter_bit`]) of the upper-case letters of `letters`.
+pub(super) fn letter_mask(letters: &str) -> u32 {
+    letters.chars().fold(0, |m, c| m | letter_bit(c))
+}
+
+/// A length word in increments. `bare_increments` says what a value
+/// without a decimal point means.
+#[inline]
+pub(super) fn to_increments(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
+    // The usual word (inlined): a value in increments within range.
+    if !bare_increments || w.has_point() {
+        if let Some(Some(v)) = w.scaled(units.decimals()) {
+            if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() {
+                return Ok(v);
+            }
+        }
+    }
+    increments_slow(units, block, w, bare_increments)
+}
+
+/// [`to_increments`] of every word, errors included.
+#[inline(never)]
+pub(super) fn increments_slow(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
+    let n = &w.number();
+    let not_in_increments = || NotInIncrements { increment: increment_text(units) };
+    // A value too large for any range table gets the range message, even
+    // where it is too large for the arithmetic too; a value finer than the
+    // increment gets the increment's.
+    let v = if !n.has_point() && bare_increments {
+        n.integer().ok_or_else(|| range_err(units, true))
+    } else if let Some(v) = n.scaled(units.decimals()) {
+        v.ok_or_else(not_in_increments)
+    } else {
+        match n.decimal() {
+            // checked: a 28-digit value times 10^5 overflows a Decimal.
+            Some(d) => match d.checked_mul(Decimal::from(units.per_unit())) {
+                Some(scaled) if !scaled.fract().is_zero() => Err(not_in_increments()),
+                Some(scaled) => i64::try_from(scaled.trunc()).map_err(|_| range_err(units, true)),
+                None => Err(range_err(units, true)),
+            },
+            None => {
+                let frac = n.frac_digits().unwrap_or_default().trim_end_matches('0');
+                if frac.len() > units.decimals() as usize {
+                    Err(not_in_increments())
+                } else {
+                    Err(range_err(units, true))
+                }
+            }
+        }
+    };
+    let v = v.map_err(|kind| err(block, Some(w), kind))?;
+    if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+        return Err(err(block, Some(w), range_err(units, true)));
+    }
+    Ok(v)
+}
+
+impl State<'_> {
+    pub(super) fn to_increments(
+        &self,
+        block: &Block<'_>,
+        w: &Word<'_>,
+        bare_increments: bool,
+    ) -> Result<i64, ProgramError> {
+        to_increments(self.units, block, w, bare_increments)
+    }
+
+    pub(super) fn range_err(&self, signed: bool) -> ErrorKind {
+        range_err(self.units, signed)
+    }
+
+    /// A length word (reading R-POINT: FANUC bare values are increments).
+    #[inline(always)]
+    pub(super) fn length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
+        length_word(self.machine, self.units, block, w)
+    }
+
+    pub(super) fn unsigned_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
+        let v = self.length(block, w)?;
+        if v < 0 {
+            return Err(err(block, Some(w), self.range_err(false)));
+        }
+        Ok(v)
+    }
+
+    /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
+    pub(super) fn pq_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
+        let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
+        let v = match self.machine.profile.pq_unit(bit) {
+            PqUnit::IncrementsNoPoint => {
+                if w.number().has_point() {
+                    return Err(err(
+                        block,
+                        Some(w),
+                        ErrorKind::DecimalPointNotAllowed {
+                            rule: "P(k), Q(Δd) and Q(Δdmin) of G76 are given in least increments",
+                        },
+                    ));
+                }
+                self.to_increments(block, w, true)?
+            }
+            PqUnit::Increments => {
+                let v = w.number().integer().ok_or_else(|| {
+                    err(
+                        block,
+                        Some(w),
+                        ErrorKind::NotInIncrements {
+                            increment: "the state parameter selects least increments for P and Q".into(),
+                        },
+                    )
+                })?;
+                if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+                    return Err(err(block, Some(w), self.range_err(false)));
+                }
+                v
+            }
+            PqUnit::Length => self.to_increments(block, w, false)?,
+        };
+        if v < 0 {
+            return Err(err(block, Some(w), self.range_err(false)));
+        }
+        Ok(v)
+    }
+
+    pub(super) fn count(block: &Block<'_>, w: &Word<'_>, lo: i64, hi: i64) -> Result<u32, ProgramError> {
+        match w.number().integer() {
+            Some(v) if (lo..=hi).contains(&v) && !w.number().has_point() => {
+                Ok(u32::try_from(v).unwrap_or(u32::MAX))
+            }
+            _ => {
+                Err(err(block, Some(w), ErrorKind::OutOfRange { range: format!("whole number {lo}..{hi}") }))
+            }
+        }
+    }
+
+    pub(super) fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
+        let n = &w.number();
+        let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
+        let mut frac = n.frac_bytes().unwrap_or_default();
+        while let [rest @ .., b'0'] = frac {
+            frac = rest;
+        }
+        let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
+        let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+        // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
+        // I 0.0001..254 (metric) / 0.0001..100 (inch).
+        // The bounds in units of 10^-MAX_LEAD_SCALE (6 decimals).
+        let (lo, hi, range) = match (word, self.units.unit) {
+            // K is LinuxCNC's and never read here (`word` is F or I).
+            (LeadWord::F | LeadWord::K, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
+            (LeadWord::F | LeadWord::K, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
+            (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
+            (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
+        };
+        // Finer than 10^-6: said so (it is no range of a table that is
+        // wrong but the decimals; issue 30 found 6).
+        if scale > MAX_LEAD_SCALE {
+            return Err(out(&format!(
+                "{range}, with at most {MAX_LEAD_SCALE} decimals (this lead has {scale})"
+            )));
+        }
+        // Beyond an i128: outside the table.
+        let value = n.exact(MAX_LEAD_SCALE).ok_or_else(|| out(range))?;
+        if n.negative || value < lo || value > hi || scale > MAX_LEAD_SCALE {
+            return Err(out(range));
+        }
+        // Within the range table and MAX_LEAD_SCALE, the digits fit a u64.
+        let mantissa = n.int_bytes().iter().chain(frac).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
+        Ok(Lead { word, mantissa, scale })
+    }
+}
+
+/// G32's Q as a start angle, in the profile's unit (reading R-G32Q): the one
+/// home of the rule, used by the program reader and by trace readers.
+///
+/// # Errors
+///
+/// A value outside 0..360°, finer than the unit, or a decimal point where
+/// the profile forbids one.
+pub fn q_word(
+    machine: &Machine,
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+) -> Result<StartAngle, ProgramError> {
+    let bit = machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p));
+    let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
+    if w.number().negative {
+        return Err(out("0..360 degrees"));
+    }
+    match machine.profile.q_unit(bit) {
+        QUnit::Millidegrees { no_point } => {
+            if no_point && w.number().has_point() {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::DecimalPointNotAllowed { rule: "Q of G32 is given in 0.001 degree" },
+                ));
+            }
+            match w.number().integer() {
+                Some(v) if (0..=360_000).contains(&v) => {
+                    Ok(StartAngle::from_millidegrees(u64::try_from(v).unwrap_or(0)))
+                }
+                _ => Err(out("0..360000 thousandths of a degree, whole")),
+            }
+        }
+        QUnit::Degrees { wrap } => {
+            let d = w.number().decimal().ok_or_else(|| out("0..360 degrees"))?;
+            let decimals = match units.system {
+                cycleref::IncrementSystem::IsB => 3,
+                cycleref::IncrementSystem::IsC => 4,
+            };
+            let ten_thousandths =
+                d.checked_mul(Decimal::from(10_000)).ok_or_else(|| out("0..360 degrees"))?;
+            if d.scale() > decimals || !ten_thousandths.fract().is_zero() {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::NotInIncrements {
+                        increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
+                    },
+                ));
+            }
+            let mut t: u64 = u64::try_from(ten_thousandths.trunc()).map_err(|_| out("0..360 degrees"))?;
+            if t > 3_600_000 {
+                if wrap {
+                    t %= 3_600_000;
+                } else {
+                    return Err(out("0..360 degrees"));
+                }
+            }
+            // t / 10 thousandths of a degree, in lowest terms.
+            Ok(if t % 10 == 0 {
+                StartAngle::from_millidegrees(t / 10)
+            } else {
+                StartAngle { num: u32::try_from(t).unwrap_or(u32::MAX), den: 10 }
+            })
+        }
+    }
+}
+
+/// G78's depth mode from its digit (980TDi P(m), 988TA D, parameters No.061
+/// and 5145): 0 equal steps (等距离进刀), 1 decreasing (递减式进刀).
+pub(super) fn depth_mode(v: u32) -> DepthMode {
+    if v == 0 {
+        DepthMode::Equal
+    } else {
+        DepthMode::Decreasing
+    }
+}
