@@ -534,3 +534,27 @@ fn cr_lf_and_crlf_are_all_line_ends_across_pieces() {
         }
     }
 }
+
+#[test]
+fn the_reference_makes_a_linuxcnc_g76_a_pass_at_a_time() {
+    // LinuxCNC's G76 with H spring passes: 20 and 2 000 passes at full
+    // depth (about 4 and 400 KB of moves, were they held). The reference
+    // (`--engine spec`) makes them a pass at a time: the same peak.
+    let measure = |spring: u32| {
+        let text = format!("G18 G21 G8\nM3 S500\nG0 X10 Z1\nG76 P1 Z-10 I-0.5 J0.1 K0.3 H{spring}\nM2\n");
+        let machine = Machine::new(ProfileName::LinuxCnc);
+        let program = cycleref_spec::read(&text, &machine).expect("reads");
+        let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+        let mut count = 0;
+        let p = peak(|| {
+            count = cycleref_spec::pipeline::expand(cycle, Engine::Spec).expect("expands").count();
+        });
+        (count, p)
+    };
+    let ((few, small), (many, large)) = (measure(20), measure(2_000));
+    eprintln!("reference, LinuxCNC G76: peak live bytes {small} for {few} moves, {large} for {many}");
+    // R1: depths n·J = 0.1, 0.2 below K = 0.3, so 2 rough passes; then
+    // 1 + H at full depth; 4 moves a pass, and the return.
+    assert_eq!((few, many), ((2 + 21) * 4 + 1, (2 + 2_001) * 4 + 1));
+    assert!(large * 10 <= small * 11 + 4_096, "{small} -> {large}");
+}

@@ -42,6 +42,7 @@ use cycleref::Length;
 use num_bigint::BigInt;
 use num_traits::ToPrimitive;
 
+use crate::pass::PassStream;
 use crate::real::Real;
 
 /// `x` rounded to the nearest integer, ties away from zero, decided
@@ -100,7 +101,101 @@ pub fn taper_pitch(c: &LinuxCncG76) -> Lead {
 /// Twin: `impl/src/engine/linuxcnc.rs`, `expand_linuxcnc` (the passes:
 /// `Words::values`, `Points::of`, `LinuxCncMoves::pass_move`).
 pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
+    Ok(moves(c)?.collect())
+}
+
+/// The moves of [`expand`], made a pass at a time (memory of one pass,
+/// whatever the number of passes): every pass is computed once to raise
+/// any alarm before the first move, then again as it is taken (the
+/// reference is a specification: it spends the time, not the memory).
+///
+/// # Errors
+///
+/// As [`expand`].
+pub fn moves(
+    c: &LinuxCncG76,
+) -> Result<impl Iterator<Item = Move> + Clone + Send + Sync + 'static, CycleError> {
     c.validate()?;
+    let k = Real::int(c.full_depth);
+    // Reading R-LIMIT for LinuxCNC: refuse before a move is made when pass
+    // limit + 1 would still be shallower than K.
+    let limit = u64::from(c.pass_limit);
+    if (&depth(c, limit + 1) - &k).sign()? == Ordering::Less {
+        return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
+    }
+    // l.5775-5781: rough passes while the depth is below K; each is made
+    // once here, so that its alarm (a coordinate beyond the range table)
+    // comes before the first move.
+    let mut buf = Vec::new();
+    let mut last_depth = 0_i64;
+    let mut n = 1_u64;
+    loop {
+        let d = depth(c, n);
+        if (&d - &k).sign()? != Ordering::Less {
+            break;
+        }
+        buf.clear();
+        last_depth =
+            pass(c, &mut buf, &d, last_depth, PassKind::Rough, u32::try_from(n).unwrap_or(u32::MAX))?;
+        n += 1;
+    }
+    let rough = n - 1;
+    // Reading R-BUDGET: the rough passes and the 1 + H at full depth within
+    // the pass limit, before the spring passes are made.
+    let pass_paths = u128::from(rough) + u128::try_from(i128::from(c.spring_passes) + 1).unwrap_or(0);
+    if pass_paths > u128::from(c.pass_limit) {
+        let pass_paths = u64::try_from(pass_paths).unwrap_or(u64::MAX);
+        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
+    }
+    // l.5783-5790: 1 + H passes at full depth (none for H = -1): their
+    // values are all the same, made once here.
+    if c.spring_passes >= 0 {
+        buf.clear();
+        pass(c, &mut buf, &k, last_depth, PassKind::Finish, 1)?;
+    }
+    let c = *c;
+    let spring = u64::try_from(i64::from(c.spring_passes) + 1).unwrap_or(0);
+    let (mut next, mut last_depth, mut ended) = (1_u64, 0_i64, false);
+    Ok(PassStream::new(move |moves: &mut Vec<Move>| {
+        if ended {
+            return false;
+        }
+        let made = if next <= rough {
+            let number = u32::try_from(next).unwrap_or(u32::MAX);
+            pass(&c, moves, &depth(&c, next), last_depth, PassKind::Rough, number)
+        } else if next <= rough + spring {
+            let number = u32::try_from(next - rough).unwrap_or(u32::MAX);
+            pass(&c, moves, &Real::int(c.full_depth), last_depth, PassKind::Finish, number)
+        } else {
+            // l.5791: to the end point.
+            moves.push(Move { motion: Motion::Rapid, to: c.end, role: Role::Return, pass: None });
+            ended = true;
+            return true;
+        };
+        // Each pass was made without an error above, from the same exact
+        // values: making it again gives the same moves.
+        last_depth = made.expect("a pass made once without an alarm is made again without one");
+        next += 1;
+        true
+    }))
+}
+
+/// δ_n = J·n^(1/R) = J·n^(10000/R'), R' = R in ten-thousandths.
+fn depth(c: &LinuxCncG76, n: u64) -> Real {
+    &Real::int(c.initial_depth) * &Real::power(n, DEGRESSION_ONE, c.degression)
+}
+
+/// Appends the moves of the pass at depth `d` (`kind` `number`) to `moves`;
+/// `last_depth` is the previous pass's depth (radius increments). Returns
+/// this pass's depth.
+fn pass(
+    c: &LinuxCncG76,
+    moves: &mut Vec<Move>,
+    d: &Real,
+    last_depth: i64,
+    kind: PassKind,
+    number: u32,
+) -> Result<i64, CycleError> {
     let xf = Real::int(c.x_mode.factor());
     let sigma: i64 = c.sigma();
     let towards_plus = c.end.z > c.start.z;
@@ -113,7 +208,6 @@ pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
     let tapered = c.taper_distance > 0;
     let taper_lead = if tapered { taper_pitch(c) } else { c.pitch };
     let k = Real::int(c.full_depth);
-    let j = Real::int(c.initial_depth);
     let i_abs = c.peak_offset.abs();
     let x0 = c.start.x;
     let flank = match q.cmp(&0) {
@@ -121,74 +215,36 @@ pub fn expand(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
         _ if c.compound_angle > 0 => Flank::Right,
         _ => Flank::Left,
     };
-    // δ_n = J·n^(1/R) = J·n^(10000/R'), R' = R in ten-thousandths.
-    let depth = |n: u64| -> Real { &j * &Real::power(n, DEGRESSION_ONE, c.degression) };
-    // Reading R-LIMIT for LinuxCNC: refuse before a move is made when pass
-    // limit + 1 would still be shallower than K.
-    let limit = u64::from(c.pass_limit);
-    if (&depth(limit + 1) - &k).sign()? == Ordering::Less {
-        return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
-    }
-
-    let mut moves = Vec::new();
-    let mut last_depth = 0_i64;
-    let mut pass = |moves: &mut Vec<Move>, d: &Real, kind: PassKind, number: u32| -> Result<(), CycleError> {
-        let zeta = &(d / &xf) * &tan;
-        let s = Real::int(sigma);
-        let x_back = round_away(&(&Real::int(x0) + &(&s * &(&k - d))))?;
-        let x_cut = round_away(&(&Real::int(x0 - sigma * i_abs) - &(&s * d)))?;
-        let x_rise = x_cut + sigma * c.full_depth;
-        let z_start = round_away(&(&Real::int(c.start.z) - &zeta))?;
-        let z_end = round_away(&(&(&Real::int(c.end.z) + &(&(&k / &xf) * &tan)) - &zeta))?;
-        let d_radius = round_away(&(d / &xf))?;
-        let info = Some(Pass { kind, number, start: 1, depth: d_radius, cut: d_radius - last_depth, flank });
-        last_depth = d_radius;
-        let mut add = |motion, to: Point, role| moves.push(Move { motion, to, role, pass: info });
-        let thread = |lead, sync| Motion::Thread { lead, start_angle: StartAngle::ZERO, sync };
-        add(Motion::Rapid, Point::new(x_back, z_start), Role::Approach);
-        if tapered && c.entry_taper {
-            add(thread(taper_lead, true), Point::new(x_rise, z_start), Role::LeadIn);
-            add(thread(taper_lead, false), Point::new(x_cut, z_start - taper), Role::LeadIn);
-            if !(tapered && c.exit_taper) {
-                add(thread(c.pitch, false), Point::new(x_cut, z_end), Role::Cut);
-            } else {
-                add(thread(c.pitch, false), Point::new(x_cut, z_end + taper), Role::Cut);
-                add(thread(taper_lead, false), Point::new(x_rise, z_end), Role::RunOut);
-            }
+    let zeta = &(d / &xf) * &tan;
+    let s = Real::int(sigma);
+    let x_back = round_away(&(&Real::int(x0) + &(&s * &(&k - d))))?;
+    let x_cut = round_away(&(&Real::int(x0 - sigma * i_abs) - &(&s * d)))?;
+    let x_rise = x_cut + sigma * c.full_depth;
+    let z_start = round_away(&(&Real::int(c.start.z) - &zeta))?;
+    let z_end = round_away(&(&(&Real::int(c.end.z) + &(&(&k / &xf) * &tan)) - &zeta))?;
+    let d_radius = round_away(&(d / &xf))?;
+    let info = Some(Pass { kind, number, start: 1, depth: d_radius, cut: d_radius - last_depth, flank });
+    let mut add = |motion, to: Point, role| moves.push(Move { motion, to, role, pass: info });
+    let thread = |lead, sync| Motion::Thread { lead, start_angle: StartAngle::ZERO, sync };
+    add(Motion::Rapid, Point::new(x_back, z_start), Role::Approach);
+    if tapered && c.entry_taper {
+        add(thread(taper_lead, true), Point::new(x_rise, z_start), Role::LeadIn);
+        add(thread(taper_lead, false), Point::new(x_cut, z_start - taper), Role::LeadIn);
+        if !(tapered && c.exit_taper) {
+            add(thread(c.pitch, false), Point::new(x_cut, z_end), Role::Cut);
         } else {
-            add(Motion::Rapid, Point::new(x_cut, z_start), Role::Approach);
-            if tapered && c.exit_taper {
-                add(thread(c.pitch, true), Point::new(x_cut, z_end + taper), Role::Cut);
-                add(thread(taper_lead, false), Point::new(x_rise, z_end), Role::RunOut);
-            } else {
-                add(thread(c.pitch, true), Point::new(x_cut, z_end), Role::Cut);
-            }
+            add(thread(c.pitch, false), Point::new(x_cut, z_end + taper), Role::Cut);
+            add(thread(taper_lead, false), Point::new(x_rise, z_end), Role::RunOut);
         }
-        add(Motion::Rapid, Point::new(x_back, z_end), Role::Retract);
-        Ok(())
-    };
-    // l.5775-5781: rough passes while the depth is below K.
-    let mut n = 1_u64;
-    loop {
-        let d = depth(n);
-        if (&d - &k).sign()? != Ordering::Less {
-            break;
+    } else {
+        add(Motion::Rapid, Point::new(x_cut, z_start), Role::Approach);
+        if tapered && c.exit_taper {
+            add(thread(c.pitch, true), Point::new(x_cut, z_end + taper), Role::Cut);
+            add(thread(taper_lead, false), Point::new(x_rise, z_end), Role::RunOut);
+        } else {
+            add(thread(c.pitch, true), Point::new(x_cut, z_end), Role::Cut);
         }
-        pass(&mut moves, &d, PassKind::Rough, u32::try_from(n).unwrap_or(u32::MAX))?;
-        n += 1;
     }
-    // Reading R-BUDGET: the rough passes and the 1 + H at full depth within
-    // the pass limit, before the spring passes are made.
-    let pass_paths = u128::from(n - 1) + u128::try_from(i128::from(c.spring_passes) + 1).unwrap_or(0);
-    if pass_paths > u128::from(c.pass_limit) {
-        let pass_paths = u64::try_from(pass_paths).unwrap_or(u64::MAX);
-        return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
-    }
-    // l.5783-5790: 1 + H passes at full depth (none for H = -1).
-    for m in 0..=c.spring_passes {
-        pass(&mut moves, &k, PassKind::Finish, u32::try_from(m + 1).unwrap_or(u32::MAX))?;
-    }
-    // l.5791: to the end point.
-    moves.push(Move { motion: Motion::Rapid, to: c.end, role: Role::Return, pass: None });
-    Ok(moves)
+    add(Motion::Rapid, Point::new(x_back, z_end), Role::Retract);
+    Ok(d_radius)
 }

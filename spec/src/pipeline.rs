@@ -304,9 +304,7 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         }
         (Engine::Spec, Cycle::G92(c)) => Inner::Reference(Box::new(crate::g92::moves(&c.cycle)?)),
         (Engine::Impl, Cycle::LinuxCnc(c)) => Inner::LinuxCnc(cycleref::expand_linuxcnc(&c.cycle)?),
-        (Engine::Spec, Cycle::LinuxCnc(c)) => {
-            Inner::Reference(Box::new(crate::linuxcnc::expand(&c.cycle)?.into_iter()))
-        }
+        (Engine::Spec, Cycle::LinuxCnc(c)) => Inner::Reference(Box::new(crate::linuxcnc::moves(&c.cycle)?)),
     };
     Ok(Moves(inner))
 }
