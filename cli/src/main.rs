@@ -66,13 +66,8 @@ enum Command {
         /// CSV or canonical trace on standard input (`--trace -`).
         #[arg(long, value_enum, value_name = "FORMAT")]
         trace_format: Option<TraceFormatArg>,
-        /// Largest difference, in least increments, still counted as equal.
-        #[arg(long, default_value_t = 0)]
-        tolerance: u64,
-        /// Compare only the moves of the program's cycles: the trace logs
-        /// a cycle's moves, not the program's own blocks.
-        #[arg(long)]
-        cycles_only: bool,
+        #[command(flatten)]
+        compare: Compare,
         /// Report format.
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
@@ -115,12 +110,8 @@ enum Command {
         /// (a directory's traces go by their extension).
         #[arg(long, value_enum, value_name = "FORMAT")]
         trace_format: Option<TraceFormatArg>,
-        /// Largest difference, in least increments, still counted as equal.
-        #[arg(long, default_value_t = 0)]
-        tolerance: u64,
-        /// Compare only the moves of the cycles (as `check --cycles-only`).
-        #[arg(long)]
-        cycles_only: bool,
+        #[command(flatten)]
+        compare: Compare,
         /// Threads [default: the number of cores].
         #[arg(long, value_name = "N")]
         jobs: Option<usize>,
@@ -248,6 +239,28 @@ enum EngineArg {
 enum ReportFormat {
     Text,
     Json,
+}
+
+/// How `check` and `conform` compare a trace with ours.
+#[derive(Args)]
+struct Compare {
+    /// Largest difference, in least increments, still counted as equal.
+    #[arg(long, default_value_t = 0)]
+    tolerance: u64,
+    /// Compare only the moves of the program's cycles: the trace logs a
+    /// cycle's moves, not the program's own blocks.
+    #[arg(long)]
+    cycles_only: bool,
+}
+
+impl From<TraceFormatArg> for check::TraceFormat {
+    fn from(f: TraceFormatArg) -> check::TraceFormat {
+        match f {
+            TraceFormatArg::Nc => check::TraceFormat::Nc,
+            TraceFormatArg::Csv => check::TraceFormat::Csv,
+            TraceFormatArg::Canon => check::TraceFormat::Rs274,
+        }
+    }
 }
 
 #[derive(Clone, Copy, ValueEnum, PartialEq, Eq)]
@@ -483,14 +496,13 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             }
             Ok(0)
         }
-        Command::Check { common, trace, trace_format, tolerance, cycles_only, format } => {
+        Command::Check { common, trace, trace_format, compare, format } => {
             let job = Job::load(&common.options())?;
-            let trace_format = trace_format.map(|f| match f {
-                TraceFormatArg::Nc => check::TraceFormat::Nc,
-                TraceFormatArg::Csv => check::TraceFormat::Csv,
-                TraceFormatArg::Canon => check::TraceFormat::Rs274,
-            });
-            let options = check::CheckOptions { format: trace_format, tolerance, cycles_only };
+            let options = check::CheckOptions {
+                format: trace_format.map(Into::into),
+                tolerance: compare.tolerance,
+                cycles_only: compare.cycles_only,
+            };
             let report = check::run_as(&job, &trace, &options)?;
             // The verdict is decided before the report is written, and the
             // exit status carries it whatever becomes of the report: a
@@ -506,17 +518,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 Err(e) => Err(e),
             }
         }
-        Command::Conform {
-            corpus,
-            traces,
-            run,
-            trace_format,
-            tolerance,
-            cycles_only,
-            jobs,
-            shard,
-            junit,
-        } => {
+        Command::Conform { corpus, traces, run, trace_format, compare, jobs, shard, junit } => {
             let outcomes = match (traces, run) {
                 (Some(dir), _) => cycleref_cli::conform::Outcomes::Dir(dir),
                 (None, Some(template)) => cycleref_cli::conform::Outcomes::Run(template),
@@ -525,13 +527,9 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             let options = cycleref_cli::conform::ConformOptions {
                 corpus,
                 outcomes,
-                trace_format: trace_format.map(|f| match f {
-                    TraceFormatArg::Nc => check::TraceFormat::Nc,
-                    TraceFormatArg::Csv => check::TraceFormat::Csv,
-                    TraceFormatArg::Canon => check::TraceFormat::Rs274,
-                }),
-                tolerance,
-                cycles_only,
+                trace_format: trace_format.map(Into::into),
+                tolerance: compare.tolerance,
+                cycles_only: compare.cycles_only,
                 shard: cycleref_cli::conform::Shard::parse(&shard).map_err(Failure::msg)?,
                 jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
                 junit,
