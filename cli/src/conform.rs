@@ -297,8 +297,12 @@ fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome,
                 .stdin(Stdio::null())
                 .stdout(Stdio::null())
                 .stderr(Stdio::piped())
-                .output()
-                .map_err(|e| format!("cannot run `sh -c {command}`: {e}"))?;
+                .output();
+            // The case's files go once the command is done: the work
+            // directory holds the cases in progress, not the corpus.
+            let _ = fs::remove_file(&program);
+            let _ = fs::remove_file(&params);
+            let out = out.map_err(|e| format!("cannot run `sh -c {command}`: {e}"))?;
             if out.status.success() {
                 if !trace.exists() {
                     return Err(format!("the command exited 0 but wrote no trace to {{trace}}: {command}"));

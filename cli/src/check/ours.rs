@@ -1,8 +1,9 @@
 //! Our toolpath as a stream of steps: the program's own motion blocks, as
 //! the program reader resolves them (`Follow`, which makes the steps of a
 //! trace read by the same reader in its trace mode too), and its cycles'
-//! expanded moves, each annotated with the cycle, pass and point it is. Also the regions the cycles cut, against
-//! which a split rapid is judged (reading R-CHECKSPLIT).
+//! expanded moves, each annotated with the cycle, pass and point it is.
+//! Also the regions the cycles cut, against which a split rapid is judged
+//! (reading R-CHECKSPLIT).
 
 use std::collections::VecDeque;
 
@@ -102,11 +103,16 @@ impl<'m> Follow<'m> {
             _ => None,
         };
         let kind = match m.motion {
+            MotionMode::G00 => Kind::Rapid,
             MotionMode::G01 => Kind::Feed,
             MotionMode::G02 => Kind::ArcCw,
             MotionMode::G03 => Kind::ArcCcw,
-            // G32 and G92 blocks are the reader's cycles, never plain.
-            MotionMode::G00 | MotionMode::G32 | MotionMode::G92 => Kind::Rapid,
+            // The reader makes G32 and G92 blocks cycles, never plain
+            // moves; were one given, it is refused, not compared as
+            // something else.
+            MotionMode::G32 | MotionMode::G92 => {
+                return Err(at(&m.block, None, "a thread block is no plain move"));
+            }
         };
         let centre = if kind.is_arc() { Some(self.centre(&m.block, from)?) } else { None };
         Ok(Some(Step {
