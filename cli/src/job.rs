@@ -20,7 +20,7 @@ use std::time::SystemTime;
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary, Validation};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::Item;
+use cycleref_spec::reader::{Item, MainEnd, Step, Subprograms, MAX_SUBPROGRAM_TEXT};
 use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 
 /// How a command ends when it does not succeed.
@@ -417,7 +417,16 @@ enum Text {
     /// reading compares each piece with them before it reads a block of it
     /// (reading R-CHANGED), so a file changed between or during the phases
     /// is an error, never an output that the first phase did not check.
-    File { path: PathBuf, len: u64, modified: Option<SystemTime>, digests: OnceLock<Vec<u64>> },
+    File {
+        path: PathBuf,
+        len: u64,
+        modified: Option<SystemTime>,
+        digests: OnceLock<Vec<u64>>,
+        /// The digest of the subprograms' text (reading R-SUBPROGRAM) as
+        /// the first reading to need it read it: a later reading compares
+        /// it before it runs a block of a subprogram.
+        subprograms: OnceLock<u64>,
+    },
 }
 
 /// The digest of one piece of a file (SipHash with fixed keys: the same
@@ -443,6 +452,7 @@ impl Text {
                 len: meta.len(),
                 modified: meta.modified().ok(),
                 digests: OnceLock::new(),
+                subprograms: OnceLock::new(),
             });
         }
         let mut s = Vec::new();
@@ -502,13 +512,36 @@ impl From<ProgramError> for ReadError {
 pub struct Items<'j> {
     reader: LineReader<'j>,
     input: Input<'j>,
+    /// The subprograms' text and the number of its first line, once a
+    /// call has run (reading R-SUBPROGRAM): held, at most
+    /// [`MAX_SUBPROGRAM_TEXT`] bytes.
+    subprograms: Option<(Held<'j>, usize)>,
     ended: bool,
+}
+
+/// Bytes borrowed from a held program, or read from its file.
+enum Held<'j> {
+    Borrowed(&'j [u8]),
+    Owned(Vec<u8>),
+}
+
+impl Held<'_> {
+    fn bytes(&self) -> &[u8] {
+        match self {
+            Held::Borrowed(b) => b,
+            Held::Owned(v) => v,
+        }
+    }
 }
 
 enum Input<'j> {
     Held(&'j [u8]),
     Lines {
         file: File,
+        /// The file's path, to read its subprograms.
+        path: &'j Path,
+        /// The digest of its subprograms, to compare or to set.
+        subprograms: &'j OnceLock<u64>,
         /// The bytes read from the file and not yet consumed: the piece
         /// (whole lines) first, then the start of the next line.
         buf: Vec<u8>,
@@ -595,11 +628,21 @@ pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
     }
 }
 
+/// The error of [`next_piece`] reading line `line` (the first not yet
+/// read): a line too long names it; any other is the file's.
+fn piece_error(e: std::io::Error, line: usize) -> ReadError {
+    if e.get_ref().is_some_and(|e| e.is::<LineTooLong>()) {
+        let kind = cycleref_spec::ErrorKind::Syntax(format!("this line: {LineTooLong}"));
+        return ProgramError { line, word: None, kind }.into();
+    }
+    ReadError::Io(e)
+}
+
 impl<'j> Items<'j> {
     fn new(text: &'j Text, machine: &'j Machine) -> Result<Items<'j>, ReadError> {
         let input = match text {
             Text::Held(bytes) => Input::Held(bytes),
-            Text::File { path, len, modified, digests } => {
+            Text::File { path, len, modified, digests, subprograms } => {
                 let file = File::open(path).map_err(ReadError::Io)?;
                 let meta = file.metadata().map_err(ReadError::Io)?;
                 if meta.len() != *len || meta.modified().ok() != *modified {
@@ -607,6 +650,8 @@ impl<'j> Items<'j> {
                 }
                 Input::Lines {
                     file,
+                    path,
+                    subprograms,
                     buf: Vec::new(),
                     piece: 0,
                     eof: false,
@@ -617,7 +662,7 @@ impl<'j> Items<'j> {
                 }
             }
         };
-        Ok(Items { reader: LineReader::new(machine), input, ended: false })
+        Ok(Items { reader: LineReader::new(machine), input, subprograms: None, ended: false })
     }
 
     /// The next item, made into what the caller keeps by `f`; `None` after
@@ -627,8 +672,9 @@ impl<'j> Items<'j> {
             return None;
         }
         loop {
-            if let Input::Lines { file, buf, piece, eof, next: next @ true, recorded, digests, pieces } =
-                &mut self.input
+            if let Input::Lines {
+                file, buf, piece, eof, next: next @ true, recorded, digests, pieces, ..
+            } = &mut self.input
             {
                 match next_piece(file, buf, piece, eof) {
                     Ok(false) => {
@@ -662,18 +708,9 @@ impl<'j> Items<'j> {
                         }
                         *pieces += 1;
                     }
-                    Err(e) if e.get_ref().is_some_and(|e| e.is::<LineTooLong>()) => {
-                        self.ended = true;
-                        let e = ProgramError {
-                            line: self.reader.lines_read() + 1,
-                            word: None,
-                            kind: cycleref_spec::ErrorKind::Syntax(format!("this line: {LineTooLong}")),
-                        };
-                        return Some(Err(e.into()));
-                    }
                     Err(e) => {
                         self.ended = true;
-                        return Some(Err(ReadError::Io(e)));
+                        return Some(Err(piece_error(e, self.reader.lines_read() + 1)));
                     }
                 }
             }
@@ -681,14 +718,29 @@ impl<'j> Items<'j> {
                 Input::Held(bytes) => bytes,
                 Input::Lines { buf, piece, .. } => &buf[..*piece],
             };
+            let subs = self
+                .subprograms
+                .as_ref()
+                .map(|(t, first_line)| Subprograms { text: t.bytes(), first_line: *first_line });
             // The item is lent where it was returned: it does not move.
-            match self.reader.next_in(piece) {
-                Some(Ok(ref item)) => return Some(Ok(f(item))),
-                Some(Err(e)) => {
+            let wants_subprograms = match self.reader.step(piece, subs) {
+                Ok(Step::Item(ref item)) => return Some(Ok(f(item))),
+                Ok(Step::Subprograms) => true,
+                Ok(Step::Piece) => false,
+                Err(e) => {
                     self.ended = true;
                     return Some(Err(e.into()));
                 }
-                None => {}
+            };
+            if wants_subprograms {
+                match self.load_subprograms() {
+                    Ok(s) => self.subprograms = Some(s),
+                    Err(e) => {
+                        self.ended = true;
+                        return Some(Err(e));
+                    }
+                }
+                continue;
             }
             // The piece is finished.
             match &mut self.input {
@@ -696,6 +748,44 @@ impl<'j> Items<'j> {
                 Input::Lines { next, .. } => *next = true,
             }
         }
+    }
+
+    /// The subprograms of the program (reading R-SUBPROGRAM): the text
+    /// after the main program's end, from the held bytes or read from the
+    /// file again, from its start (a second handle: the reading in
+    /// progress keeps its place), and at most [`MAX_SUBPROGRAM_TEXT`]
+    /// bytes of it (one more, to tell a longer text). A file's text must
+    /// be the same bytes in every reading (reading R-CHANGED).
+    fn load_subprograms(&self) -> Result<(Held<'j>, usize), ReadError> {
+        let (path, recorded) = match &self.input {
+            Input::Held(bytes) => {
+                let s = Subprograms::in_text(bytes)?;
+                return Ok((Held::Borrowed(s.text), s.first_line));
+            }
+            Input::Lines { path, subprograms, .. } => (*path, *subprograms),
+        };
+        let mut file = File::open(path).map_err(ReadError::Io)?;
+        let (mut buf, mut piece, mut eof) = (Vec::new(), 0, false);
+        let mut end = MainEnd::new();
+        let (text, first_line) = loop {
+            match next_piece(&mut file, &mut buf, &mut piece, &mut eof) {
+                Ok(true) => {}
+                Ok(false) => break (Vec::new(), end.line + 1),
+                Err(e) => return Err(piece_error(e, end.line + 1)),
+            }
+            if let Some(at) = end.feed(&buf[..piece])? {
+                let mut text = buf.split_off(at);
+                let more = (MAX_SUBPROGRAM_TEXT + 1).saturating_sub(text.len());
+                (&mut file).take(more as u64).read_to_end(&mut text).map_err(ReadError::Io)?;
+                break (text, end.line + 1);
+            }
+        };
+        Subprograms { text: &text, first_line }.check_length()?;
+        let digest = piece_digest(&text);
+        if *recorded.get_or_init(|| digest) != digest {
+            return Err(ReadError::Changed);
+        }
+        Ok((Held::Owned(text), first_line))
     }
 
     /// The end of the text.

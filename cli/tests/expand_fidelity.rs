@@ -264,12 +264,12 @@ fn no_single_change_of_a_move_agrees() {
 }
 
 #[test]
-fn the_program_ends_at_m30_and_subprograms_are_refused() {
+fn the_program_ends_at_m30_and_subprograms_run_where_they_are_called() {
     // Issue 30, found 2. Reading R-PROGRAMEND: blocks after M02/M30 are
     // not run, so not expanded, not echoed and not read (an error there is
-    // no error). Reading R-SUBPROGRAM: M98/M99 are refused with their line
-    // and word until subprograms are expanded (the call was echoed and the
-    // subprogram expanded once, in its place after M30).
+    // no error). Reading R-SUBPROGRAM: a call is replaced by the
+    // subprogram's blocks (the call was echoed and the subprogram expanded
+    // once, in its place after M30).
     let m = Machine::new(ProfileName::Gsk988);
     let p = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM30\nO1000\nG76 P020560 Q0.150 R0.1\n\
              G76 X60.64 Z-62 P3.680 Q1.800 F6\nG01 X1 X2\nM99\n";
@@ -283,10 +283,45 @@ fn the_program_ends_at_m30_and_subprograms_are_refused() {
         expand("g32-end.nc", p.as_bytes(), &Machine::new(ProfileName::Gsk980)).expect("expands"),
         "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG32 X80.000 Z-20.000 F2.0\nM30\n"
     );
-    let p = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM98 P1000\nG00 X90\nM98 P1000\nM30\nO1000\n\
-             G76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM99\n";
-    let e = expand("sub.nc", p.as_bytes(), &m).expect_err("M98 is refused");
-    assert!(e.contains("sub.nc: line 3, word `M98`: not supported: a subprogram call"), "{e}");
+    // The issue's program: the control cuts the thread twice, from X80 and
+    // from X90; its expansion is that of the program written out by hand
+    // (but for the header comments, which name the cycle's line in the
+    // file: line 9 both times with the call).
+    let with_calls = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM98 P1000\nG00 X90\nM98 P1000\nM30\nO1000\n\
+                      G76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM99\n";
+    let written_out = "G50 X100 Z50 M3 S300\nG00 X80 Z10\nG76 P020560 Q0.150 R0.1\n\
+                       G76 X60.64 Z-62 P3.680 Q1.800 F6\nG00 X90\nG76 P020560 Q0.150 R0.1\n\
+                       G76 X60.64 Z-62 P3.680 Q1.800 F6\nM30\n";
+    let ours = expand("sub.nc", with_calls.as_bytes(), &m).expect("expands");
+    let theirs = expand("inline.nc", written_out.as_bytes(), &m).expect("expands");
+    let headers =
+        |s: &str| s.lines().filter(|l| l.starts_with("(G76 line")).map(str::to_string).collect::<Vec<_>>();
+    let body = |s: &str| s.lines().filter(|l| !l.starts_with("(G76 line")).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(&ours), body(&theirs));
+    assert_eq!(
+        headers(&ours),
+        [
+            "(G76 line 9: 4 rough + 2 finish passes x 1 start)",
+            "(G76 line 9: 4 rough + 2 finish passes x 1 start)"
+        ]
+    );
+    assert_eq!(ours.matches("G00 X90.000 Z10.000").count(), 6, "{ours}");
+    // The expansion reads back as itself (no call is left in it), and a
+    // check of the program against it agrees.
+    assert_eq!(expand("again.nc", ours.as_bytes(), &m).expect("expands"), ours);
+    let job = Job::new("sub.nc", with_calls.as_bytes().to_vec(), m.clone(), Engine::Impl);
+    assert!(check::check_bytes(&job, ours.as_bytes(), false, 0).expect("checks").agree());
+    // From a file (read a piece at a time, the subprograms read again from
+    // its start) as from memory.
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("subprograms-sub.nc");
+    std::fs::write(&path, with_calls).expect("write");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
+        .args(["expand", "--profile", "gsk988"])
+        .arg(&path)
+        .output()
+        .expect("runs");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), ours);
     // LinuxCNC's M2 ends the program too.
     let p = "G18 G21 G7\nM3 S500\nG0 X22 Z2\nM2\nG0 X1 X2\n";
     assert_eq!(

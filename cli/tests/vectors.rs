@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use cycleref::CycleError;
-use cycleref_spec::reader::Item;
+use cycleref_spec::reader::{Item, SubprogramError};
 use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
 use serde_json::Value;
 
@@ -256,6 +256,21 @@ fn kind(k: &ErrorKind) -> String {
         ErrorKind::UnitChangeAfterMotion => "unit_change_after_motion".into(),
         ErrorKind::Parameter(_) => "parameter".into(),
         ErrorKind::Cycle(e) => format!("cycle:{}", cycle(e)),
+        ErrorKind::Subprogram(e) => format!(
+            "subprogram:{}",
+            match e {
+                SubprogramError::NotFound { .. } => "not_found",
+                SubprogramError::DefinedTwice { .. } => "defined_twice",
+                SubprogramError::TooDeep { .. } => "too_deep",
+                SubprogramError::ReturnOutsideSubprogram => "return_outside_subprogram",
+                SubprogramError::NoReturn { .. } => "no_return",
+                SubprogramError::EndInSubprogram { .. } => "end_in_subprogram",
+                SubprogramError::TooManyBlocks { .. } => "too_many_blocks",
+                SubprogramError::TextTooLong { .. } => "text_too_long",
+                SubprogramError::BadCall(_) => "bad_call",
+                SubprogramError::WordBeside { .. } => "word_beside",
+            }
+        ),
     }
 }
 

@@ -79,6 +79,9 @@ pub enum ErrorKind {
     Parameter(String),
     /// The cycle's own alarm.
     Cycle(CycleError),
+    /// A subprogram call or return that cannot run (reading
+    /// R-SUBPROGRAM).
+    Subprogram(crate::reader::SubprogramError),
 }
 
 impl ErrorKind {
@@ -108,6 +111,7 @@ impl ErrorKind {
             ErrorKind::UnitChangeAfterMotion => "unit_change_after_motion",
             ErrorKind::Parameter(_) => "parameter",
             ErrorKind::Cycle(_) => "cycle",
+            ErrorKind::Subprogram(_) => "subprogram",
         }
     }
 
@@ -115,7 +119,9 @@ impl ErrorKind {
     /// (`expect.error.kind`) and the command prints it (`error[KIND]`):
     /// [`ErrorKind::name`], and for a cycle's alarm `cycle:` and
     /// [`CycleError::name`](cycleref::CycleError::name)
-    /// (`cycle:too_many_passes`).
+    /// (`cycle:too_many_passes`), and for a subprogram's error `subprogram:`
+    /// and [`SubprogramError::name`](crate::reader::SubprogramError::name)
+    /// (`subprogram:not_found`).
     ///
     /// ```
     /// use cycleref_spec::ErrorKind;
@@ -127,6 +133,7 @@ impl ErrorKind {
     pub fn stable_kind(&self) -> String {
         match self {
             ErrorKind::Cycle(e) => format!("cycle:{}", e.name()),
+            ErrorKind::Subprogram(e) => format!("subprogram:{}", e.name()),
             k => k.name().to_string(),
         }
     }
@@ -183,6 +190,7 @@ impl fmt::Display for ErrorKind {
             }
             ErrorKind::Parameter(s) => write!(f, "parameter: {s}"),
             ErrorKind::Cycle(e) => write!(f, "{e}"),
+            ErrorKind::Subprogram(e) => write!(f, "{e}"),
         }
     }
 }

@@ -622,6 +622,13 @@ pub(crate) struct Position {
     done: bool,
 }
 
+impl Position {
+    /// The offset of the line after the current one.
+    pub(crate) fn next_line_offset(&self) -> usize {
+        self.pos
+    }
+}
+
 const BOM: &[u8] = b"\xEF\xBB\xBF";
 /// Where `%` may stand (reading R-SEQNUM).
 const MARK_RULE: &str = "`%` marks the start or the end of a program, on a line of its own";
@@ -671,6 +678,14 @@ impl<'a> Lexer<'a> {
             Some((Line { start, bytes }, next))
         });
         Lexer { src, pos: at.pos, line: at.line, current, done: at.done }
+    }
+
+    /// After an error, goes on at the next line: the index of
+    /// subprograms passes over a line it cannot read (only a block that
+    /// runs reports its error).
+    pub(crate) fn skip_line(&mut self) {
+        self.current = None;
+        self.done = false;
     }
 
     /// The number of the line read last (0 before the first).

@@ -488,6 +488,15 @@ pub struct Machine {
     pub calculator_input: bool,
     /// Largest number of rough passes a G76 may have.
     pub pass_limit: u32,
+    /// How deep subprogram calls may nest (reading R-SUBPROGRAM): 1 to
+    /// [`MAX_SUBPROGRAM_NESTING`](crate::reader::MAX_SUBPROGRAM_NESTING),
+    /// [`DEFAULT_SUBPROGRAM_NESTING`](crate::reader::DEFAULT_SUBPROGRAM_NESTING)
+    /// unless the parameter file's `subprogram_nesting` says otherwise.
+    pub subprogram_nesting: u8,
+    /// The most blocks that may run inside subprograms in one program,
+    /// counting every repeat (reading R-SUBPROGRAM: the work of a program
+    /// with calls is bounded before anything is written).
+    pub subprogram_block_limit: u64,
     /// Parameter values by number (the profile's numbering).
     pub params: BTreeMap<String, ParamValue>,
 }
@@ -509,6 +518,8 @@ impl Machine {
             x_mode: if linuxcnc { XMode::Radius } else { XMode::Diameter },
             calculator_input: false,
             pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+            subprogram_nesting: crate::reader::DEFAULT_SUBPROGRAM_NESTING,
+            subprogram_block_limit: crate::reader::DEFAULT_SUBPROGRAM_BLOCK_LIMIT,
             params,
         }
     }
@@ -548,6 +559,8 @@ impl Machine {
     /// x = "diameter"            # diameter | radius
     /// calculator_input = false  # FANUC 3401#0
     /// pass_limit = 1000000
+    /// subprogram_nesting = 4    # 1..10
+    /// subprogram_block_limit = 1000000
     /// [parameters]
     /// 5142 = 2                  # integers for counts, angles and bits
     /// 5140 = "0.15"             # lengths as strings, in mm (inch), exact
@@ -578,9 +591,12 @@ impl Machine {
             let name: ProfileName = v.as_str().ok_or("`profile` must be a string")?.parse()?;
             if name != self.profile.name && !keep_profile {
                 // The new profile's defaults, then the file's other keys.
-                let pass_limit = self.pass_limit;
+                let (pass_limit, nesting, blocks) =
+                    (self.pass_limit, self.subprogram_nesting, self.subprogram_block_limit);
                 *self = Machine::new(name);
                 self.pass_limit = pass_limit;
+                self.subprogram_nesting = nesting;
+                self.subprogram_block_limit = blocks;
             }
         }
         for (key, value) in &table {
@@ -617,6 +633,20 @@ impl Machine {
                         .ok()
                         .filter(|v| *v >= 1)
                         .ok_or("`pass_limit` must be between 1 and 4294967295")?;
+                }
+                "subprogram_nesting" => {
+                    let v = value.as_integer().ok_or("`subprogram_nesting` must be an integer")?;
+                    self.subprogram_nesting = u8::try_from(v)
+                        .ok()
+                        .filter(|v| (1..=crate::reader::MAX_SUBPROGRAM_NESTING).contains(v))
+                        .ok_or("`subprogram_nesting` must be between 1 and 10")?;
+                }
+                "subprogram_block_limit" => {
+                    let v = value.as_integer().ok_or("`subprogram_block_limit` must be an integer")?;
+                    self.subprogram_block_limit = u64::try_from(v)
+                        .ok()
+                        .filter(|v| *v >= 1)
+                        .ok_or("`subprogram_block_limit` must be at least 1")?;
                 }
                 "parameters" => {
                     let t = value.as_table().ok_or("`parameters` must be a table")?;

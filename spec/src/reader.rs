@@ -22,6 +22,7 @@ use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{letter_bit, Block, Lexer, Position, Word};
 use crate::profile::{Dialect, G32Rules, Machine, PSplit, PqUnit, QUnit, RunOutRules};
 
+mod calls;
 mod g75;
 mod g76;
 mod items;
@@ -30,6 +31,11 @@ mod threads;
 mod trace;
 mod words;
 
+use calls::{Calls, Flow};
+pub use calls::{
+    MainEnd, SubprogramError, Subprograms, DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING,
+    MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
+};
 pub use g76::resolve_run_out;
 pub use items::{
     G32Call, G75Call, G76Call, G92Call, Item, LinuxCncCall, MotionMode, Multipass, PlainMove, Program,
@@ -39,6 +45,22 @@ pub use threads::resolve_g32_run_out;
 pub use words::{check_axis_words, length_word, q_word};
 #[allow(clippy::wildcard_imports)]
 use {g75::*, g76::*, threads::*, words::*};
+
+/// What [`LineReader::step`] gives.
+#[derive(Debug)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "an item is returned by value, as `next_in`'s Option<Result<Item>> is"
+)]
+pub enum Step<'a> {
+    /// The next item.
+    Item(Item<'a>),
+    /// The piece has no more: the next step needs the next piece.
+    Piece,
+    /// A subprogram call runs: the next step needs the program's
+    /// [`Subprograms`].
+    Subprograms,
+}
 
 /// X, Z, U and W of a block.
 type AxisWords<'b, 'a> =
@@ -121,8 +143,9 @@ fn subprogram(block: &Block<'_>, w: &Word<'_>) -> ProgramError {
         block,
         Some(w),
         ErrorKind::Unsupported(
-            "a subprogram call or return (M98/M99, LinuxCNC's o-words): subprograms are not expanded yet, and \
-             an expansion without them would not be the program the control runs (reading R-SUBPROGRAM)"
+            "a subprogram call or return (M98/M99) where no call is followed: a trace holds the moves as \
+             the control ran them, and LinuxCNC calls subroutines with o-words, which are not followed yet \
+             (reading R-SUBPROGRAM)"
                 .into(),
         ),
     )
@@ -221,6 +244,8 @@ pub fn read<'a>(source: &'a str, machine: &Machine) -> Result<Program<'a>, Progr
 pub struct Reader<'a, 'm> {
     source: &'a [u8],
     reader: LineReader<'m>,
+    /// The program's subprograms, found when the first call runs.
+    subprograms: Option<Subprograms<'a>>,
     finished: bool,
 }
 
@@ -228,7 +253,7 @@ impl<'a, 'm> Reader<'a, 'm> {
     /// A reader of `source` (the program's bytes) with `machine`.
     #[must_use]
     pub fn new(source: &'a [u8], machine: &'m Machine) -> Reader<'a, 'm> {
-        Reader { source, reader: LineReader::new(machine), finished: false }
+        Reader { source, reader: LineReader::new(machine), subprograms: None, finished: false }
     }
 
     /// The units in force (fixed before the first motion, reading R-UNITS).
@@ -242,8 +267,25 @@ impl<'a> Iterator for Reader<'a, '_> {
     type Item = Result<Item<'a>, ProgramError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if let Some(item) = self.reader.next_in(self.source) {
-            return Some(item);
+        if self.finished {
+            return None;
+        }
+        loop {
+            match self.reader.step(self.source, self.subprograms) {
+                Ok(Step::Item(item)) => return Some(Ok(item)),
+                Ok(Step::Piece) => break,
+                Ok(Step::Subprograms) => match Subprograms::in_text(self.source) {
+                    Ok(subs) => self.subprograms = Some(subs),
+                    Err(e) => {
+                        self.finished = true;
+                        return Some(Err(e));
+                    }
+                },
+                Err(e) => {
+                    self.finished = true;
+                    return Some(Err(e));
+                }
+            }
         }
         if self.finished {
             return None;
@@ -289,6 +331,8 @@ impl<'a> Iterator for Reader<'a, '_> {
 #[derive(Debug)]
 pub struct LineReader<'m> {
     state: State<'m>,
+    /// The subprogram calls in progress (reading R-SUBPROGRAM).
+    calls: Calls,
     /// Where the lexer stands in the current piece; `None` between pieces.
     at: Option<Position>,
     /// The number of the last line of the pieces finished so far.
@@ -302,6 +346,7 @@ impl<'m> LineReader<'m> {
     #[must_use]
     pub fn new(machine: &'m Machine) -> LineReader<'m> {
         LineReader {
+            calls: Calls::default(),
             state: State {
                 machine,
                 units: machine.units(),
@@ -358,53 +403,176 @@ impl<'m> LineReader<'m> {
     /// The next item of `piece`, or `None` when the piece has no more (the
     /// next call starts the next piece). After an error the reader yields
     /// nothing more.
+    ///
+    /// This reader is given no subprograms: a call (`M98`) is an error
+    /// naming it. [`LineReader::step`] follows calls.
     pub fn next_in<'a>(&mut self, piece: &'a [u8]) -> Option<Result<Item<'a>, ProgramError>> {
+        match self.step(piece, None) {
+            Ok(Step::Item(item)) => Some(Ok(item)),
+            Ok(Step::Piece) => None,
+            Ok(Step::Subprograms) => {
+                self.done = true;
+                let at = self.at.take();
+                let mut lexer = match at {
+                    Some(at) => Lexer::resume(piece, at),
+                    None => Lexer::at_line(piece, self.line + 1),
+                };
+                let mut block = Block::empty();
+                let line = match lexer.next_into(&mut block) {
+                    Some(Ok(())) => block.line,
+                    _ => self.line + 1,
+                };
+                Some(Err(ProgramError {
+                    line,
+                    word: Some("M98".into()),
+                    kind: ErrorKind::Unsupported(
+                        "a subprogram call read without the program's subprograms (LineReader::next_in; \
+                         LineReader::step follows calls)"
+                            .into(),
+                    ),
+                }))
+            }
+            Err(e) => Some(Err(e)),
+        }
+    }
+
+    /// The next step of reading `piece`, following subprogram calls
+    /// (reading R-SUBPROGRAM): an item, the end of the piece
+    /// ([`Step::Piece`]: call again with the next piece), or
+    /// [`Step::Subprograms`] when a call runs and `subprograms` is `None`:
+    /// call again with the same piece and the program's
+    /// [`Subprograms`] (found once, with [`Subprograms::in_text`] or
+    /// [`MainEnd`]), and with them on every later call. While a subprogram
+    /// runs, the reader reads the subprograms' text and keeps its place in
+    /// `piece`, which must be the same bytes until the step that returns
+    /// [`Step::Piece`]. After an error the reader yields nothing more
+    /// ([`Step::Piece`]).
+    ///
+    /// ```
+    /// use cycleref_spec::reader::{Item, LineReader, Step, Subprograms};
+    /// use cycleref_spec::{Machine, ProfileName};
+    ///
+    /// let program = b"G00 X80 Z5\nM98 P21000\nM30\nO1000\nG00 U-2\nM99\n";
+    /// let machine = Machine::new(ProfileName::Gsk980);
+    /// let mut reader = LineReader::new(&machine);
+    /// let mut subs = None;
+    /// let mut lines = Vec::new();
+    /// loop {
+    ///     match reader.step(program, subs)? {
+    ///         Step::Item(Item::Move(m)) => lines.push((m.block.line, m.to.0)),
+    ///         Step::Item(_) => {}
+    ///         Step::Subprograms => subs = Some(Subprograms::in_text(program)?),
+    ///         Step::Piece => break,
+    ///     }
+    /// }
+    /// reader.finish()?;
+    /// // Line 5 runs twice: X80 (diameter, IS-B) less 2 mm, twice.
+    /// assert_eq!(lines, [(1, Some(80_000)), (5, Some(78_000)), (5, Some(76_000))]);
+    /// # Ok::<(), cycleref_spec::ProgramError>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// The first [`ProgramError`], in the order the control runs the
+    /// blocks.
+    pub fn step<'a>(
+        &mut self,
+        piece: &'a [u8],
+        subprograms: Option<Subprograms<'a>>,
+    ) -> Result<Step<'a>, ProgramError> {
         // Reading R-PROGRAMEND: after M02 or M30 the control runs nothing
         // more; the blocks after it are not read.
         if self.done || self.state.program_end {
-            return None;
+            return Ok(Step::Piece);
         }
         if !self.started {
             self.started = true;
             if let Err(e) = self.state.check_machine() {
-                self.done = true;
-                return Some(Err(e));
+                return Err(self.fail(e));
             }
         }
-        let mut lexer = match self.at.take() {
-            Some(at) => Lexer::resume(piece, at),
-            None => Lexer::at_line(piece, self.line + 1),
-        };
-        // The block is read where it stays until it moves into its item.
-        let mut block = Block::empty();
-        match lexer.next_into(&mut block) {
-            Some(Ok(())) => {}
-            Some(Err(e)) => {
-                self.done = true;
-                return Some(Err(e));
+        loop {
+            // The block is read where it stays until it moves into its item.
+            let mut block = Block::empty();
+            let before = self.at;
+            if self.calls.running() {
+                let text = subprograms.map_or(&[][..], |s| s.text);
+                let mut lexer = match self.calls.position() {
+                    Some(at) => Lexer::resume(text, at),
+                    None => Lexer::at_line(text, subprograms.map_or(1, |s| s.first_line)),
+                };
+                match lexer.next_into(&mut block) {
+                    Some(Ok(())) => {}
+                    Some(Err(e)) => return Err(self.fail(e)),
+                    None => {
+                        let e = self.calls.no_return(lexer.line());
+                        return Err(self.fail(e));
+                    }
+                }
+                self.calls.set_position(lexer.position());
+                if let Err(e) = self.calls.check_block(&block, self.state.machine) {
+                    return Err(self.fail(e));
+                }
+            } else {
+                let mut lexer = match self.at.take() {
+                    Some(at) => Lexer::resume(piece, at),
+                    None => Lexer::at_line(piece, self.line + 1),
+                };
+                match lexer.next_into(&mut block) {
+                    Some(Ok(())) => {}
+                    Some(Err(e)) => return Err(self.fail(e)),
+                    None => {
+                        self.line = lexer.line();
+                        return Ok(Step::Piece);
+                    }
+                }
+                self.at = Some(lexer.position());
             }
-            None => {
-                self.line = lexer.line();
-                return None;
+            if let Some(first) = &self.state.g75_pending {
+                // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
+                if !block.words.is_empty() && !is_g75_1(&block) {
+                    let e = lone_g75(first.line);
+                    return Err(self.fail(e));
+                }
             }
+            if self.state.follows_calls() {
+                if !self.calls.has_index() && block.all('M').any(|w| w.integer() == Some(98)) {
+                    let Some(subs) = subprograms else {
+                        // Read again once the caller has the subprograms.
+                        self.at = before;
+                        return Ok(Step::Subprograms);
+                    };
+                    if let Err(e) = self.calls.read_index(subs) {
+                        return Err(self.fail(e));
+                    }
+                }
+                match self.calls.flow(&block, self.state.machine, self.at) {
+                    None => {}
+                    Some(Ok(Flow::Called | Flow::Returned { main: None })) => continue,
+                    Some(Ok(Flow::Returned { main: Some(at) })) => {
+                        self.at = at;
+                        continue;
+                    }
+                    Some(Err(e)) => return Err(self.fail(e)),
+                }
+            }
+            let item = match self.state.scan(&block) {
+                // The usual block: it moves once, into the item returned.
+                Ok(Next::Source) => return Ok(Step::Item(Item::Source(block))),
+                Ok(Next::Move(from)) => {
+                    return Ok(Step::Item(Item::Move(self.state.plain_move(block, from))))
+                }
+                Ok(next) => self.state.item(next, block),
+                Err(e) => Err(e),
+            };
+            return item.map(Step::Item).map_err(|e| self.fail(e));
         }
-        self.at = Some(lexer.position());
-        if let Some(first) = &self.state.g75_pending {
-            // Note 3: "必须有两行 G75.1 代码" — block 2 must follow block 1.
-            if !block.words.is_empty() && !is_g75_1(&block) {
-                self.done = true;
-                return Some(Err(lone_g75(first.line)));
-            }
-        }
-        let item = match self.state.scan(&block) {
-            // The usual block: it moves once, into the item returned.
-            Ok(Next::Source) => return Some(Ok(Item::Source(block))),
-            Ok(Next::Move(from)) => return Some(Ok(Item::Move(self.state.plain_move(block, from)))),
-            Ok(next) => self.state.item(next, block),
-            Err(e) => Err(e),
-        };
-        self.done = item.is_err();
-        Some(item)
+    }
+
+    /// Ends the reading at error `e`.
+    fn fail(&mut self, e: ProgramError) -> ProgramError {
+        self.done = true;
+        e
     }
 
     /// The end of the program, after its last piece.
@@ -425,6 +593,13 @@ impl<'m> LineReader<'m> {
 }
 
 impl State<'_> {
+    /// True when the reader follows subprogram calls: a program of the
+    /// FANUC and GSK dialect (a trace holds no calls, and LinuxCNC calls
+    /// with o-words, which are not followed yet).
+    fn follows_calls(&self) -> bool {
+        !self.trace && self.machine.profile.dialect != Dialect::LinuxCnc
+    }
+
     /// The machine's settings that no program can use (none at present:
     /// 5129 = 1, the 988TA's high-speed threading mode, is refused by the
     /// G76 block it would change, and followed by G92).

@@ -1,0 +1,572 @@
+//! Subprograms: `M98` calls and `M99` returns, followed as the control runs
+//! them (reading R-SUBPROGRAM).
+//!
+//! The file holds the main program from its first block to its end (the
+//! first block with M02 or M30, reading R-PROGRAMEND), then its
+//! subprograms, each an `O` block, its blocks and an `M99`, as the FANUC
+//! and GSK manuals lay a program and its subprograms out. A call replaces
+//! itself with the subprogram's blocks, repeated; a return goes on after
+//! the call. Only what runs is read: a subprogram no call reaches is
+//! neither read nor checked.
+//!
+//! The text of the subprograms ([`Subprograms`]) is found when the first
+//! call runs: a program without a call pays nothing. It is held whole (at
+//! most [`MAX_SUBPROGRAM_TEXT`] bytes, whatever the main program's length);
+//! the main program is still read a piece at a time, and a call keeps only
+//! the place to return to (at most the machine's nesting depth of them).
+//! The work is bounded: at most [`Machine::subprogram_block_limit`] blocks
+//! run inside subprograms, counted as they run, so that the first phase
+//! refuses a program whose calls repeat without end (or nearly) before
+//! anything is written.
+
+use arrayvec::ArrayVec;
+
+use crate::error::{ErrorKind, ProgramError};
+use crate::lex::{Block, Lexer, Position, Word};
+use crate::profile::Machine;
+
+/// The most bytes the subprograms of a program (the text after the main
+/// program's end) may have: they are held in memory while the program
+/// runs. A longer text is an error naming where it starts.
+pub const MAX_SUBPROGRAM_TEXT: usize = 1 << 20;
+
+/// The default nesting depth: a subprogram called from the main program is
+/// level 1, one it calls level 2, and so on to 4 (FANUC and GSK; some
+/// FANUC models allow 10: `subprogram_nesting` in the parameter file).
+pub const DEFAULT_SUBPROGRAM_NESTING: u8 = 4;
+
+/// The deepest nesting the parameter file may set.
+pub const MAX_SUBPROGRAM_NESTING: u8 = 10;
+
+/// The default of [`Machine::subprogram_block_limit`].
+pub const DEFAULT_SUBPROGRAM_BLOCK_LIMIT: u64 = 1_000_000;
+
+/// The text of a program's subprograms: the lines after the line that
+/// holds the main program's end, and the number of the first of them.
+#[derive(Clone, Copy, Debug)]
+pub struct Subprograms<'a> {
+    /// The bytes from the start of the line after the main program's end.
+    pub text: &'a [u8],
+    /// The number of the first line of `text` in the whole program.
+    pub first_line: usize,
+}
+
+impl<'a> Subprograms<'a> {
+    /// The subprograms of the program `source`, held whole.
+    ///
+    /// # Errors
+    ///
+    /// A block before the main program's end that cannot be read, or
+    /// subprograms longer than [`MAX_SUBPROGRAM_TEXT`].
+    ///
+    /// ```
+    /// use cycleref_spec::reader::Subprograms;
+    /// let program = b"M98 P1000\nM30\nO1000\nG00 X1\nM99\n";
+    /// let subs = Subprograms::in_text(program)?;
+    /// assert_eq!(subs.text, b"O1000\nG00 X1\nM99\n");
+    /// assert_eq!(subs.first_line, 3);
+    /// # Ok::<(), cycleref_spec::ProgramError>(())
+    /// ```
+    pub fn in_text(source: &'a [u8]) -> Result<Subprograms<'a>, ProgramError> {
+        let mut end = MainEnd::new();
+        let sub = match end.feed(source)? {
+            Some(at) => Subprograms { text: &source[at..], first_line: end.line + 1 },
+            None => Subprograms { text: &[], first_line: end.line + 1 },
+        };
+        sub.check_length()?;
+        Ok(sub)
+    }
+
+    /// The error of subprograms longer than [`MAX_SUBPROGRAM_TEXT`].
+    ///
+    /// # Errors
+    ///
+    /// When `text` is longer.
+    pub fn check_length(&self) -> Result<(), ProgramError> {
+        if self.text.len() > MAX_SUBPROGRAM_TEXT {
+            return Err(ProgramError {
+                line: self.first_line,
+                word: None,
+                kind: ErrorKind::Subprogram(SubprogramError::TextTooLong { limit: MAX_SUBPROGRAM_TEXT }),
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Finds where the main program ends, fed the program a piece (of whole
+/// lines) at a time from its start: the first block with M02 or M30, as
+/// the reader ends the program there (reading R-PROGRAMEND).
+#[derive(Debug, Default)]
+pub struct MainEnd {
+    /// The number of the last line read.
+    pub line: usize,
+}
+
+impl MainEnd {
+    /// Before the first piece.
+    #[must_use]
+    pub fn new() -> MainEnd {
+        MainEnd::default()
+    }
+
+    /// Reads `piece`: the offset in it where the subprograms start (the
+    /// line after the one holding the main program's end), or `None` when
+    /// the end is not in this piece. After `Some`, [`MainEnd::line`] is
+    /// the number of the line before that offset.
+    ///
+    /// # Errors
+    ///
+    /// A block that cannot be read.
+    pub fn feed(&mut self, piece: &[u8]) -> Result<Option<usize>, ProgramError> {
+        let mut lexer = Lexer::at_line(piece, self.line + 1);
+        let mut block = Block::empty();
+        while let Some(r) = lexer.next_into(&mut block) {
+            r?;
+            if ends_program(&block) {
+                self.line = lexer.line();
+                return Ok(Some(lexer.position().next_line_offset()));
+            }
+        }
+        self.line = lexer.line();
+        Ok(None)
+    }
+}
+
+/// True when `block` ends the program (M02 or M30).
+pub(crate) fn ends_program(block: &Block<'_>) -> bool {
+    block.all('M').any(|w| matches!(w.integer(), Some(2 | 30)))
+}
+
+/// What is wrong with a subprogram call or return.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SubprogramError {
+    /// `M98` names a program that is not among the subprograms.
+    NotFound {
+        /// The program number.
+        program: u32,
+    },
+    /// The same program number twice among the subprograms.
+    DefinedTwice {
+        /// The program number.
+        program: u32,
+        /// The line of its first definition.
+        first: usize,
+    },
+    /// A call deeper than the nesting depth.
+    TooDeep {
+        /// The deepest nesting allowed.
+        limit: u8,
+    },
+    /// `M99` in the main program.
+    ReturnOutsideSubprogram,
+    /// A subprogram that runs to the end of the file, or into the next
+    /// program, without `M99`.
+    NoReturn {
+        /// The program number.
+        program: u32,
+        /// The line of its `O` block.
+        line: usize,
+    },
+    /// M02 or M30 inside a subprogram.
+    EndInSubprogram {
+        /// The program number.
+        program: u32,
+    },
+    /// More blocks run inside subprograms than the limit.
+    TooManyBlocks {
+        /// The limit (`subprogram_block_limit`).
+        limit: u64,
+    },
+    /// The subprograms' text is longer than [`MAX_SUBPROGRAM_TEXT`].
+    TextTooLong {
+        /// The limit in bytes.
+        limit: usize,
+    },
+    /// `M98` without `P`, or a `P` that is not a call's.
+    BadCall(&'static str),
+    /// A word beside `M98` or `M99` that the reader does not follow.
+    WordBeside {
+        /// `M98` or `M99`.
+        code: &'static str,
+    },
+}
+
+impl SubprogramError {
+    /// The stable name of the error (`not_found`).
+    #[must_use]
+    pub const fn name(&self) -> &'static str {
+        match self {
+            SubprogramError::NotFound { .. } => "not_found",
+            SubprogramError::DefinedTwice { .. } => "defined_twice",
+            SubprogramError::TooDeep { .. } => "too_deep",
+            SubprogramError::ReturnOutsideSubprogram => "return_outside_subprogram",
+            SubprogramError::NoReturn { .. } => "no_return",
+            SubprogramError::EndInSubprogram { .. } => "end_in_subprogram",
+            SubprogramError::TooManyBlocks { .. } => "too_many_blocks",
+            SubprogramError::TextTooLong { .. } => "text_too_long",
+            SubprogramError::BadCall(_) => "bad_call",
+            SubprogramError::WordBeside { .. } => "word_beside",
+        }
+    }
+}
+
+impl std::fmt::Display for SubprogramError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SubprogramError::NotFound { program } => write!(
+                f,
+                "program O{program:04} is not in the file (subprograms follow the main program's M02/M30, \
+                 each from its O block to its M99; reading R-SUBPROGRAM)"
+            ),
+            SubprogramError::DefinedTwice { program, first } => {
+                write!(f, "program O{program:04} is defined twice (first at line {first})")
+            }
+            SubprogramError::TooDeep { limit } => write!(
+                f,
+                "this call nests subprograms deeper than {limit} levels (the control's limit; \
+                 `subprogram_nesting` in the parameter file)"
+            ),
+            SubprogramError::ReturnOutsideSubprogram => f.write_str(
+                "M99 outside a subprogram: the main program runs from the file's first block to its \
+                 M02/M30 (reading R-SUBPROGRAM)",
+            ),
+            SubprogramError::NoReturn { program, line } => write!(
+                f,
+                "subprogram O{program:04} (line {line}) ends without M99 (it runs to here: the end of the \
+                 file or the next program)"
+            ),
+            SubprogramError::EndInSubprogram { program } => write!(
+                f,
+                "M02/M30 inside subprogram O{program:04}: a subprogram returns with M99 (reading \
+                 R-SUBPROGRAM)"
+            ),
+            SubprogramError::TooManyBlocks { limit } => write!(
+                f,
+                "the subprogram calls run more than {limit} blocks (`subprogram_block_limit` in the \
+                 parameter file raises the limit)"
+            ),
+            SubprogramError::TextTooLong { limit } => write!(
+                f,
+                "the subprograms after the main program's end are longer than {limit} bytes, the most \
+                 that is held while the program runs"
+            ),
+            SubprogramError::BadCall(rule) => write!(f, "not a subprogram call: {rule}"),
+            SubprogramError::WordBeside { code } => write!(
+                f,
+                "a word beside {code}: a call (M98 P) or a return (M99) stands in a block of its own \
+                 (reading R-SUBPROGRAM: M98 L and Q, M99 P and a move with a call are not followed)"
+            ),
+        }
+    }
+}
+
+/// The number of the program an `O` block starts, if `block` is one (the
+/// lexer has checked that `O` stands alone at the block's start).
+/// `Some(None)` for an `O` block whose number no call can name.
+fn program_block(block: &Block<'_>) -> Option<Option<u32>> {
+    if !block.words.is_empty() {
+        return None;
+    }
+    let text = &block.text[..];
+    let mut i = 0;
+    // Before the O: spaces, a block delete, comments.
+    loop {
+        match text.get(i) {
+            Some(b' ' | b'\t' | b'/') => i += 1,
+            Some(b'(') => i += text[i..].iter().position(|&b| b == b')')? + 1,
+            Some(b'O' | b'o') => break,
+            _ => return None,
+        }
+    }
+    i += 1;
+    while matches!(text.get(i), Some(b' ' | b'\t')) {
+        i += 1;
+    }
+    let digits = text[i..].iter().take_while(|b| b.is_ascii_digit()).count();
+    let n = std::str::from_utf8(&text[i..i + digits]).ok()?;
+    let after = text.get(i + digits);
+    let number = n.parse::<u32>().ok().filter(|n| (1..=9999).contains(n) && after != Some(&b'.'));
+    Some(number)
+}
+
+/// A subprogram's entry in the index: where its first block after the
+/// `O` block starts.
+#[derive(Clone, Copy, Debug)]
+struct Entry {
+    program: u32,
+    /// The line of the `O` block.
+    line: usize,
+    /// Where the lexer stands after the `O` block.
+    at: Position,
+}
+
+/// Where a return goes.
+#[derive(Clone, Copy, Debug)]
+enum Return {
+    /// Into the main program, which the caller's piece holds: after the
+    /// call (the reader's own position in the piece).
+    Main(Option<Position>),
+    /// Into the calling subprogram, after the call.
+    Sub(Position),
+}
+
+/// One subprogram running.
+#[derive(Clone, Copy, Debug)]
+struct Frame {
+    entry: Entry,
+    /// The runs still to start after this one.
+    repeats: u32,
+    back: Return,
+}
+
+/// The calls in progress and the index of the subprograms: the reader's
+/// part of R-SUBPROGRAM.
+#[derive(Debug, Default)]
+pub(crate) struct Calls {
+    /// Sorted by program number; read when the first call runs.
+    index: Option<Vec<Entry>>,
+    frames: ArrayVec<Frame, { MAX_SUBPROGRAM_NESTING as usize }>,
+    /// Where the reader stands in the subprograms' text, while one runs.
+    at: Option<Position>,
+    /// Blocks run inside subprograms so far.
+    blocks: u64,
+}
+
+/// What a call or return did.
+pub(crate) enum Flow {
+    /// The block was `M98`: the reader goes on in the subprogram.
+    Called,
+    /// The block was `M99`: the reader goes on after the call (or at the
+    /// subprogram's start again), and in the main program when `main`
+    /// holds the position to go on at there.
+    Returned { main: Option<Option<Position>> },
+}
+
+fn sub_err(block: &Block<'_>, word: Option<&Word<'_>>, e: SubprogramError) -> ProgramError {
+    ProgramError {
+        line: block.line,
+        word: word.map(|w| w.text().into_owned()),
+        kind: ErrorKind::Subprogram(e),
+    }
+}
+
+impl Calls {
+    /// True while a subprogram runs.
+    pub(crate) fn running(&self) -> bool {
+        !self.frames.is_empty()
+    }
+
+    /// True once the subprograms' index is read.
+    pub(crate) fn has_index(&self) -> bool {
+        self.index.is_some()
+    }
+
+    /// Where the reader stands in the subprograms' text.
+    pub(crate) fn position(&self) -> Option<Position> {
+        self.at
+    }
+
+    /// Sets where the reader stands in the subprograms' text.
+    pub(crate) fn set_position(&mut self, at: Position) {
+        self.at = Some(at);
+    }
+
+    /// Reads the index of `subs`: every `O` block and where its program
+    /// starts. A line that cannot be read is passed over: only a block
+    /// that runs reports its error.
+    pub(crate) fn read_index(&mut self, subs: Subprograms<'_>) -> Result<(), ProgramError> {
+        let mut index: Vec<Entry> = Vec::new();
+        let mut lexer = Lexer::at_line(subs.text, subs.first_line);
+        let mut block = Block::empty();
+        loop {
+            match lexer.next_into(&mut block) {
+                None => break,
+                Some(Err(_)) => lexer.skip_line(),
+                Some(Ok(())) => {
+                    if let Some(Some(program)) = program_block(&block) {
+                        match index.binary_search_by_key(&program, |e| e.program) {
+                            Ok(i) => {
+                                return Err(ProgramError {
+                                    line: block.line,
+                                    word: None,
+                                    kind: ErrorKind::Subprogram(SubprogramError::DefinedTwice {
+                                        program,
+                                        first: index[i].line,
+                                    }),
+                                })
+                            }
+                            Err(i) => {
+                                index.insert(i, Entry { program, line: block.line, at: lexer.position() })
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        self.index = Some(index);
+        Ok(())
+    }
+
+    /// The checks of a block read inside a subprogram, before it is read
+    /// as any other: the count of blocks run, and the end of the
+    /// subprogram's text.
+    pub(crate) fn check_block(&mut self, block: &Block<'_>, machine: &Machine) -> Result<(), ProgramError> {
+        let Some(frame) = self.frames.last() else { return Ok(()) };
+        let entry = frame.entry;
+        self.blocks += 1;
+        if self.blocks > machine.subprogram_block_limit {
+            return Err(sub_err(
+                block,
+                None,
+                SubprogramError::TooManyBlocks { limit: machine.subprogram_block_limit },
+            ));
+        }
+        if program_block(block).is_some() {
+            return Err(sub_err(
+                block,
+                None,
+                SubprogramError::NoReturn { program: entry.program, line: entry.line },
+            ));
+        }
+        if ends_program(block) && !is_return(block) {
+            let word = block.all('M').find(|w| matches!(w.integer(), Some(2 | 30)));
+            return Err(sub_err(block, word, SubprogramError::EndInSubprogram { program: entry.program }));
+        }
+        Ok(())
+    }
+
+    /// The error of a subprogram whose text ends before its `M99`, at
+    /// the last line (`line`).
+    pub(crate) fn no_return(&self, line: usize) -> ProgramError {
+        let entry = self.frames.last().map(|f| f.entry);
+        ProgramError {
+            line,
+            word: None,
+            kind: ErrorKind::Subprogram(SubprogramError::NoReturn {
+                program: entry.map_or(0, |e| e.program),
+                line: entry.map_or(0, |e| e.line),
+            }),
+        }
+    }
+
+    /// Runs `block` if it is a call or a return (`None` if it is neither).
+    /// `main` is the reader's position in the main program, kept by a call
+    /// from it.
+    pub(crate) fn flow(
+        &mut self,
+        block: &Block<'_>,
+        machine: &Machine,
+        main: Option<Position>,
+    ) -> Option<Result<Flow, ProgramError>> {
+        let call = block.all('M').find(|w| w.integer() == Some(98));
+        let ret = block.all('M').find(|w| w.integer() == Some(99));
+        match (call, ret) {
+            (None, None) => None,
+            (Some(_), Some(w)) => {
+                Some(Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M98" })))
+            }
+            (Some(m), None) => Some(self.call(block, m, machine, main).map(|()| Flow::Called)),
+            (None, Some(m)) => Some(self.ret(block, m).map(|main| Flow::Returned { main })),
+        }
+    }
+
+    fn call(
+        &mut self,
+        block: &Block<'_>,
+        m98: &Word<'_>,
+        machine: &Machine,
+        main: Option<Position>,
+    ) -> Result<(), ProgramError> {
+        if let Some(w) = block.words.iter().find(|w| w.letter != 'P' && !std::ptr::eq(*w, m98)) {
+            return Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M98" }));
+        }
+        let Some(p) = block.get('P')? else {
+            return Err(sub_err(
+                block,
+                Some(m98),
+                SubprogramError::BadCall("M98 needs P, the program to call"),
+            ));
+        };
+        let (program, repeats) =
+            call_number(p).map_err(|rule| sub_err(block, Some(p), SubprogramError::BadCall(rule)))?;
+        let index = self.index.as_deref().unwrap_or_default();
+        let Ok(i) = index.binary_search_by_key(&program, |e| e.program) else {
+            return Err(sub_err(block, Some(p), SubprogramError::NotFound { program }));
+        };
+        let entry = index[i];
+        if self.frames.len() >= usize::from(machine.subprogram_nesting) {
+            return Err(sub_err(
+                block,
+                Some(p),
+                SubprogramError::TooDeep { limit: machine.subprogram_nesting },
+            ));
+        }
+        let back = match self.at {
+            Some(at) if self.running() => Return::Sub(at),
+            _ => Return::Main(main),
+        };
+        self.frames.push(Frame { entry, repeats: repeats - 1, back });
+        self.at = Some(entry.at);
+        Ok(())
+    }
+
+    fn ret(&mut self, block: &Block<'_>, m99: &Word<'_>) -> Result<Option<Option<Position>>, ProgramError> {
+        if let Some(w) = block.words.iter().find(|w| !std::ptr::eq(*w, m99)) {
+            return Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M99" }));
+        }
+        let Some(frame) = self.frames.last_mut() else {
+            return Err(sub_err(block, Some(m99), SubprogramError::ReturnOutsideSubprogram));
+        };
+        if frame.repeats > 0 {
+            frame.repeats -= 1;
+            self.at = Some(frame.entry.at);
+            return Ok(None);
+        }
+        let back = frame.back;
+        self.frames.pop();
+        match back {
+            Return::Sub(at) => {
+                self.at = Some(at);
+                Ok(None)
+            }
+            Return::Main(at) => {
+                self.at = None;
+                Ok(Some(at))
+            }
+        }
+    }
+}
+
+/// True when `block` returns (M99).
+fn is_return(block: &Block<'_>) -> bool {
+    block.all('M').any(|w| w.integer() == Some(99))
+}
+
+/// The program and the number of runs of `M98 P`: as the FANUC and GSK
+/// manuals write it, the last four digits are the program's number and
+/// the digits before them (at most four) the number of runs, 1 when there
+/// are none.
+fn call_number(p: &Word<'_>) -> Result<(u32, u32), &'static str> {
+    const RULE: &str = "P is the program number (four digits at most), after the number of runs \
+                        (four digits at most): P31000 runs O1000 three times";
+    let n = p.number();
+    if n.negative || n.has_point() {
+        return Err(RULE);
+    }
+    let digits = n.int_digits().as_bytes();
+    if digits.is_empty() || digits.len() > 8 {
+        return Err(RULE);
+    }
+    let split = digits.len().saturating_sub(4);
+    let parse = |d: &[u8]| d.iter().fold(0u32, |v, &b| v * 10 + u32::from(b - b'0'));
+    let program = parse(&digits[split..]);
+    let repeats = if split == 0 { 1 } else { parse(&digits[..split]) };
+    if program == 0 {
+        return Err("O0000 is not a program number (P names a program from 1 to 9999)");
+    }
+    if repeats == 0 {
+        return Err("the number of runs before the program number is 0 (P01000 runs O1000 no times)");
+    }
+    Ok((program, repeats))
+}
