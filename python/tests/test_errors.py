@@ -114,3 +114,25 @@ def test_expand_holds_at_most_a_million_moves():
     moves = cycleref.iter_moves(program)
     first = next(moves)
     assert (first.motion, first.x, first.z) == ("rapid", Decimal("67.800"), Decimal("9.942"))
+
+
+SUBPROGRAMS = (
+    "G50 X100 Z50 M3 S300\nG00 X80 Z10\nM98 P1000\nG00 X90\nM98 P1000\nM30\nO1000\n"
+    "G76 P020560 Q0.150 R0.1\nG76 X60.64 Z-62 P3.680 Q1.800 F6\nM99\n"
+)
+
+
+def test_a_subprogram_runs_where_it_is_called():
+    # Reading R-SUBPROGRAM (issue 30, found 2): the thread is cut twice,
+    # from X80 and from X90, both cycles on line 9 of the file.
+    cycles = cycleref.expand(SUBPROGRAMS)
+    assert [(c.line, c.moves[-1].x) for c in cycles] == [(9, Decimal("80.000")), (9, Decimal("90.000"))]
+    # 4 rough + 2 finishing passes, 5 moves each (approach, cut, run-out,
+    # retract, return), in each run.
+    assert [len(c.moves) for c in cycles] == [30, 30]
+
+
+def test_a_call_to_a_missing_subprogram_names_its_line_and_word():
+    with pytest.raises(cycleref.ProgramError) as e:
+        cycleref.expand(SUBPROGRAMS.replace("M98 P1000\nG00 X90", "M98 P1001\nG00 X90"))
+    assert (e.value.line, e.value.word, e.value.rule) == (3, "P1001", "subprogram:not_found")
