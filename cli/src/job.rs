@@ -20,7 +20,9 @@ use std::time::SystemTime;
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary, Validation};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{Item, MainEnd, Step, Subprograms, MAX_SUBPROGRAM_TEXT};
+use cycleref_spec::reader::{
+    may_hold_return, Item, MainEnd, MainStart, MainStartFinder, Step, Subprograms, MAX_SUBPROGRAM_TEXT,
+};
 use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 
 /// How a command ends when it does not succeed.
@@ -426,6 +428,9 @@ enum Text {
         /// the first reading to need it read it: a later reading compares
         /// it before it runs a block of a subprogram.
         subprograms: OnceLock<u64>,
+        /// Where the main program starts (reading R-SUBPROGRAM), found by
+        /// the first reading.
+        main: OnceLock<MainStart>,
     },
 }
 
@@ -453,6 +458,7 @@ impl Text {
                 modified: meta.modified().ok(),
                 digests: OnceLock::new(),
                 subprograms: OnceLock::new(),
+                main: OnceLock::new(),
             });
         }
         let mut s = Vec::new();
@@ -512,10 +518,12 @@ impl From<ProgramError> for ReadError {
 pub struct Items<'j> {
     reader: LineReader<'j>,
     input: Input<'j>,
-    /// The subprograms' text and the number of its first line, once a
-    /// call has run (reading R-SUBPROGRAM): held, at most
-    /// [`MAX_SUBPROGRAM_TEXT`] bytes.
-    subprograms: Option<(Held<'j>, usize)>,
+    /// Where the main program starts (reading R-SUBPROGRAM).
+    main: MainStart,
+    /// The subprograms' text before the main program and after it, and
+    /// the number of the first line after it, once a call has run (reading
+    /// R-SUBPROGRAM): held, at most [`MAX_SUBPROGRAM_TEXT`] bytes.
+    subprograms: Option<(Held<'j>, Held<'j>, usize)>,
     ended: bool,
 }
 
@@ -638,17 +646,66 @@ fn piece_error(e: std::io::Error, line: usize) -> ReadError {
     ReadError::Io(e)
 }
 
+/// Where the main program of the file at `path` starts (reading
+/// R-SUBPROGRAM): a byte search for `M99` over the file first, and only
+/// where one may be, the reader's rules over it again.
+fn main_start_of_file(path: &Path) -> Result<MainStart, ReadError> {
+    let (mut buf, mut piece, mut eof) = (Vec::new(), 0, false);
+    let mut file = File::open(path).map_err(ReadError::Io)?;
+    loop {
+        match next_piece(&mut file, &mut buf, &mut piece, &mut eof) {
+            Ok(true) if may_hold_return(&buf[..piece]) => break,
+            Ok(true) => {}
+            Ok(false) => return Ok(MainStart::default()),
+            // The reading reports the line, with its number.
+            Err(e) if e.get_ref().is_some_and(|e| e.is::<LineTooLong>()) => return Ok(MainStart::default()),
+            Err(e) => return Err(ReadError::Io(e)),
+        }
+    }
+    let mut file = File::open(path).map_err(ReadError::Io)?;
+    let (mut buf, mut piece, mut eof) = (Vec::new(), 0, false);
+    let mut finder = MainStartFinder::default();
+    loop {
+        match next_piece(&mut file, &mut buf, &mut piece, &mut eof) {
+            Ok(true) => {
+                if let Some(main) = finder.feed(&buf[..piece]) {
+                    return Ok(main);
+                }
+            }
+            Ok(false) => return Ok(finder.finish()),
+            Err(e) if e.get_ref().is_some_and(|e| e.is::<LineTooLong>()) => return Ok(finder.finish()),
+            Err(e) => return Err(ReadError::Io(e)),
+        }
+    }
+}
+
 impl<'j> Items<'j> {
     fn new(text: &'j Text, machine: &'j Machine) -> Result<Items<'j>, ReadError> {
-        let input = match text {
-            Text::Held(bytes) => Input::Held(bytes),
-            Text::File { path, len, modified, digests, subprograms } => {
-                let file = File::open(path).map_err(ReadError::Io)?;
+        let mut reader = LineReader::new(machine);
+        let follows = reader.follows_calls();
+        let (input, main) = match text {
+            Text::Held(bytes) => {
+                (Input::Held(bytes), if follows { MainStart::of_text(bytes) } else { MainStart::default() })
+            }
+            Text::File { path, len, modified, digests, subprograms, main } => {
+                let mut file = File::open(path).map_err(ReadError::Io)?;
                 let meta = file.metadata().map_err(ReadError::Io)?;
                 if meta.len() != *len || meta.modified().ok() != *modified {
                     return Err(ReadError::Changed);
                 }
-                Input::Lines {
+                let main = match main.get() {
+                    Some(m) => *m,
+                    None if follows => {
+                        let found = main_start_of_file(path)?;
+                        *main.get_or_init(|| found)
+                    }
+                    None => MainStart::default(),
+                };
+                if main.offset > 0 {
+                    use std::io::Seek as _;
+                    file.seek(std::io::SeekFrom::Start(main.offset as u64)).map_err(ReadError::Io)?;
+                }
+                let input = Input::Lines {
                     file,
                     path,
                     subprograms,
@@ -659,10 +716,12 @@ impl<'j> Items<'j> {
                     recorded: digests,
                     digests: Vec::new(),
                     pieces: 0,
-                }
+                };
+                (input, main)
             }
         };
-        Ok(Items { reader: LineReader::new(machine), input, subprograms: None, ended: false })
+        reader.start_at(main);
+        Ok(Items { reader, input, main, subprograms: None, ended: false })
     }
 
     /// The next item, made into what the caller keeps by `f`; `None` after
@@ -715,13 +774,14 @@ impl<'j> Items<'j> {
                 }
             }
             let piece: &[u8] = match &self.input {
-                Input::Held(bytes) => bytes,
+                Input::Held(bytes) => &bytes[self.main.offset..],
                 Input::Lines { buf, piece, .. } => &buf[..*piece],
             };
-            let subs = self
-                .subprograms
-                .as_ref()
-                .map(|(t, first_line)| Subprograms { text: t.bytes(), first_line: *first_line });
+            let subs = self.subprograms.as_ref().map(|(before, after, after_line)| Subprograms {
+                before: before.bytes(),
+                after: after.bytes(),
+                after_line: *after_line,
+            });
             // The item is lent where it was returned: it does not move.
             let wants_subprograms = match self.reader.step(piece, subs) {
                 Ok(Step::Item(ref item)) => return Some(Ok(f(item))),
@@ -751,23 +811,37 @@ impl<'j> Items<'j> {
     }
 
     /// The subprograms of the program (reading R-SUBPROGRAM): the text
-    /// after the main program's end, from the held bytes or read from the
-    /// file again, from its start (a second handle: the reading in
-    /// progress keeps its place), and at most [`MAX_SUBPROGRAM_TEXT`]
-    /// bytes of it (one more, to tell a longer text). A file's text must
-    /// be the same bytes in every reading (reading R-CHANGED).
-    fn load_subprograms(&self) -> Result<(Held<'j>, usize), ReadError> {
+    /// before the main program's start and after its end, from the held
+    /// bytes, or read from the file again (a second handle: the reading in
+    /// progress keeps its place), at most [`MAX_SUBPROGRAM_TEXT`] bytes of
+    /// it (one more, to tell a longer text). A file's text must be the
+    /// same bytes in every reading (reading R-CHANGED).
+    #[allow(clippy::type_complexity, reason = "the fields of Items::subprograms, filled once")]
+    fn load_subprograms(&self) -> Result<(Held<'j>, Held<'j>, usize), ReadError> {
+        let main = self.main;
         let (path, recorded) = match &self.input {
             Input::Held(bytes) => {
-                let s = Subprograms::in_text(bytes)?;
-                return Ok((Held::Borrowed(s.text), s.first_line));
+                let s = Subprograms::in_text(bytes, main)?;
+                return Ok((Held::Borrowed(s.before), Held::Borrowed(s.after), s.after_line));
             }
             Input::Lines { path, subprograms, .. } => (*path, *subprograms),
         };
         let mut file = File::open(path).map_err(ReadError::Io)?;
+        let mut before = Vec::new();
+        (&mut file)
+            .take(main.offset.min(MAX_SUBPROGRAM_TEXT + 1) as u64)
+            .read_to_end(&mut before)
+            .map_err(ReadError::Io)?;
+        if main.offset > MAX_SUBPROGRAM_TEXT {
+            Subprograms { before: &before, ..Subprograms::default() }.check_length()?;
+        }
+        {
+            use std::io::Seek as _;
+            file.seek(std::io::SeekFrom::Start(main.offset as u64)).map_err(ReadError::Io)?;
+        }
         let (mut buf, mut piece, mut eof) = (Vec::new(), 0, false);
-        let mut end = MainEnd::new();
-        let (text, first_line) = loop {
+        let mut end = MainEnd::after(main.lines_before);
+        let (after, after_line) = loop {
             match next_piece(&mut file, &mut buf, &mut piece, &mut eof) {
                 Ok(true) => {}
                 Ok(false) => break (Vec::new(), end.line + 1),
@@ -775,17 +849,17 @@ impl<'j> Items<'j> {
             }
             if let Some(at) = end.feed(&buf[..piece])? {
                 let mut text = buf.split_off(at);
-                let more = (MAX_SUBPROGRAM_TEXT + 1).saturating_sub(text.len());
+                let more = (MAX_SUBPROGRAM_TEXT + 1).saturating_sub(text.len() + before.len());
                 (&mut file).take(more as u64).read_to_end(&mut text).map_err(ReadError::Io)?;
                 break (text, end.line + 1);
             }
         };
-        Subprograms { text: &text, first_line }.check_length()?;
-        let digest = piece_digest(&text);
+        Subprograms { before: &before, after: &after, after_line }.check_length()?;
+        let digest = piece_digest(&before) ^ piece_digest(&after).rotate_left(1);
         if *recorded.get_or_init(|| digest) != digest {
             return Err(ReadError::Changed);
         }
-        Ok((Held::Owned(text), first_line))
+        Ok((Held::Owned(before), Held::Owned(after), after_line))
     }
 
     /// The end of the text.

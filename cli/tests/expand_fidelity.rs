@@ -322,6 +322,23 @@ fn the_program_ends_at_m30_and_subprograms_run_where_they_are_called() {
         .expect("runs");
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert_eq!(String::from_utf8_lossy(&out.stdout), ours);
+    // Subprograms before the main program (called, not run as it) and
+    // after it, from a file (the main program's start found by a second
+    // reading, the file read from there) and from memory: the executed
+    // blocks, echoed, worked out by hand.
+    let before_and_after = "%\nO1000\nG00 U-2\nM98 P2000\nM99\nO2000\nG00 W-1\nM99\nO0001\nG50 X100 Z10\n\
+                            M03 S500\nG00 X80 Z5\nM98 P1000\nG00 X90\nM98 P3000\nM30\nO3000\nG00 U-4\nM99\n%\n";
+    let want = "O0001\nG50 X100 Z10\nM03 S500\nG00 X80 Z5\nG00 U-2\nG00 W-1\nG00 X90\nG00 U-4\nM30\n";
+    let gsk980 = Machine::new(ProfileName::Gsk980);
+    assert_eq!(expand("before.nc", before_and_after.as_bytes(), &gsk980).expect("expands"), want);
+    std::fs::write(&path, before_and_after).expect("write");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
+        .args(["expand", "--profile", "gsk980"])
+        .arg(&path)
+        .output()
+        .expect("runs");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), want);
     // LinuxCNC's M2 ends the program too.
     let p = "G18 G21 G7\nM3 S500\nG0 X22 Z2\nM2\nG0 X1 X2\n";
     assert_eq!(

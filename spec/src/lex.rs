@@ -601,6 +601,8 @@ pub struct Lexer<'a> {
     pos: usize,
     /// Number of the next line (1-based).
     line: usize,
+    /// Byte offset of the line read last.
+    line_start: usize,
     /// The current line and where in it the next block starts.
     current: Option<(Line<'a>, usize)>,
     done: bool,
@@ -642,7 +644,7 @@ impl<'a> Lexer<'a> {
     #[must_use]
     pub fn new(src: &'a [u8]) -> Lexer<'a> {
         let pos = if src.starts_with(BOM) { BOM.len() } else { 0 };
-        Lexer { src, pos, line: 0, current: None, done: false }
+        Lexer { src, pos, line: 0, line_start: pos, current: None, done: false }
     }
 
     /// A lexer over one piece of a program (a line read from a stream,
@@ -654,7 +656,7 @@ impl<'a> Lexer<'a> {
         let mut lexer = if first_line <= 1 {
             Lexer::new(src)
         } else {
-            Lexer { src, pos: 0, line: 0, current: None, done: false }
+            Lexer { src, pos: 0, line: 0, line_start: 0, current: None, done: false }
         };
         lexer.line = first_line.saturating_sub(1);
         lexer
@@ -677,7 +679,8 @@ impl<'a> Lexer<'a> {
             let bytes = src.get(start..end)?;
             Some((Line { start, bytes }, next))
         });
-        Lexer { src, pos: at.pos, line: at.line, current, done: at.done }
+        let line_start = current.map_or(at.pos, |(l, _)| l.start);
+        Lexer { src, pos: at.pos, line: at.line, line_start, current, done: at.done }
     }
 
     /// After an error, goes on at the next line: the index of
@@ -686,6 +689,11 @@ impl<'a> Lexer<'a> {
     pub(crate) fn skip_line(&mut self) {
         self.current = None;
         self.done = false;
+    }
+
+    /// The byte offset of the line read last (of the last block's line).
+    pub(crate) fn line_start(&self) -> usize {
+        self.line_start
     }
 
     /// The number of the line read last (0 before the first).
@@ -704,6 +712,7 @@ impl<'a> Lexer<'a> {
         let (bytes, advance) = split_line(rest);
         self.pos += advance;
         self.line += 1;
+        self.line_start = start;
         // No UTF-8 check of the line as a whole: `segment` checks every
         // byte outside a comment, and a word is ASCII bytes.
         Some(Line { start, bytes })

@@ -31,11 +31,11 @@ mod threads;
 mod trace;
 mod words;
 
-use calls::{Calls, Flow};
 pub use calls::{
-    MainEnd, SubprogramError, Subprograms, DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING,
-    MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
+    may_hold_return, MainEnd, MainStart, MainStartFinder, SubprogramError, Subprograms,
+    DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
 };
+use calls::{Calls, Flow};
 pub use g76::resolve_run_out;
 pub use items::{
     G32Call, G75Call, G76Call, G92Call, Item, LinuxCncCall, MotionMode, Multipass, PlainMove, Program,
@@ -244,6 +244,8 @@ pub fn read<'a>(source: &'a str, machine: &Machine) -> Result<Program<'a>, Progr
 pub struct Reader<'a, 'm> {
     source: &'a [u8],
     reader: LineReader<'m>,
+    /// Where the main program starts, found before its first block.
+    main: Option<MainStart>,
     /// The program's subprograms, found when the first call runs.
     subprograms: Option<Subprograms<'a>>,
     finished: bool,
@@ -253,7 +255,7 @@ impl<'a, 'm> Reader<'a, 'm> {
     /// A reader of `source` (the program's bytes) with `machine`.
     #[must_use]
     pub fn new(source: &'a [u8], machine: &'m Machine) -> Reader<'a, 'm> {
-        Reader { source, reader: LineReader::new(machine), subprograms: None, finished: false }
+        Reader { source, reader: LineReader::new(machine), main: None, subprograms: None, finished: false }
     }
 
     /// The units in force (fixed before the first motion, reading R-UNITS).
@@ -270,11 +272,21 @@ impl<'a> Iterator for Reader<'a, '_> {
         if self.finished {
             return None;
         }
+        let main = *self.main.get_or_insert_with(|| {
+            let main = if self.reader.follows_calls() {
+                MainStart::of_text(self.source)
+            } else {
+                MainStart::default()
+            };
+            self.reader.start_at(main);
+            main
+        });
+        let piece = &self.source[main.offset..];
         loop {
-            match self.reader.step(self.source, self.subprograms) {
+            match self.reader.step(piece, self.subprograms) {
                 Ok(Step::Item(item)) => return Some(Ok(item)),
                 Ok(Step::Piece) => break,
-                Ok(Step::Subprograms) => match Subprograms::in_text(self.source) {
+                Ok(Step::Subprograms) => match Subprograms::in_text(self.source, main) {
                     Ok(subs) => self.subprograms = Some(subs),
                     Err(e) => {
                         self.finished = true;
@@ -384,6 +396,22 @@ impl<'m> LineReader<'m> {
         self.state.units
     }
 
+    /// True when this reader follows subprogram calls (reading
+    /// R-SUBPROGRAM): a program of the FANUC and GSK dialect, not a trace.
+    /// Its caller then finds where the main program starts
+    /// ([`MainStart`]) and starts the reader there ([`LineReader::start_at`]).
+    #[must_use]
+    pub fn follows_calls(&self) -> bool {
+        self.state.follows_calls()
+    }
+
+    /// Starts the reading at the main program's start `main`: the first
+    /// piece is the text from [`MainStart::offset`], its first line
+    /// numbered after [`MainStart::lines_before`]. Before the first piece.
+    pub fn start_at(&mut self, main: MainStart) {
+        self.line = main.lines_before;
+    }
+
     /// The number of the last line of the pieces finished so far (the
     /// next piece starts at the line after it).
     #[must_use]
@@ -441,15 +469,17 @@ impl<'m> LineReader<'m> {
     /// ([`Step::Piece`]: call again with the next piece), or
     /// [`Step::Subprograms`] when a call runs and `subprograms` is `None`:
     /// call again with the same piece and the program's
-    /// [`Subprograms`] (found once, with [`Subprograms::in_text`] or
-    /// [`MainEnd`]), and with them on every later call. While a subprogram
+    /// [`Subprograms`] (found once, with [`Subprograms::in_text`], or with
+    /// [`MainEnd`] over a file), and with them on every later call. A
+    /// program whose subprograms come before it starts after them
+    /// ([`LineReader::start_at`]). While a subprogram
     /// runs, the reader reads the subprograms' text and keeps its place in
     /// `piece`, which must be the same bytes until the step that returns
     /// [`Step::Piece`]. After an error the reader yields nothing more
     /// ([`Step::Piece`]).
     ///
     /// ```
-    /// use cycleref_spec::reader::{Item, LineReader, Step, Subprograms};
+    /// use cycleref_spec::reader::{Item, LineReader, MainStart, Step, Subprograms};
     /// use cycleref_spec::{Machine, ProfileName};
     ///
     /// let program = b"G00 X80 Z5\nM98 P21000\nM30\nO1000\nG00 U-2\nM99\n";
@@ -461,7 +491,7 @@ impl<'m> LineReader<'m> {
     ///     match reader.step(program, subs)? {
     ///         Step::Item(Item::Move(m)) => lines.push((m.block.line, m.to.0)),
     ///         Step::Item(_) => {}
-    ///         Step::Subprograms => subs = Some(Subprograms::in_text(program)?),
+    ///         Step::Subprograms => subs = Some(Subprograms::in_text(program, MainStart::of_text(program))?),
     ///         Step::Piece => break,
     ///     }
     /// }
@@ -496,10 +526,10 @@ impl<'m> LineReader<'m> {
             let mut block = Block::empty();
             let before = self.at;
             if self.calls.running() {
-                let text = subprograms.map_or(&[][..], |s| s.text);
-                let mut lexer = match self.calls.position() {
+                let (text, at) = self.calls.position(subprograms);
+                let mut lexer = match at {
                     Some(at) => Lexer::resume(text, at),
-                    None => Lexer::at_line(text, subprograms.map_or(1, |s| s.first_line)),
+                    None => Lexer::at_line(text, 1),
                 };
                 match lexer.next_into(&mut block) {
                     Some(Ok(())) => {}

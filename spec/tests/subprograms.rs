@@ -189,3 +189,76 @@ fn the_line_fed_reader_without_subprograms_names_the_call() {
     let e = last.unwrap().unwrap_err();
     assert_eq!((e.line, e.word.as_deref(), kind(&e).as_str()), (2, Some("M98"), "unsupported"));
 }
+
+/// Subprograms before the main program and after it (reading
+/// R-SUBPROGRAM: the main program is the first that does not end with
+/// M99). Executed by hand: O0001 from line 9 (its O block echoed), the
+/// calls into O1000 (lines 3, then O2000's 7) and O3000 (line 18, after
+/// the main program's M30).
+const BEFORE_AND_AFTER: &str = "%
+O1000
+G00 U-2
+M98 P2000
+M99
+O2000 (second level)
+G00 W-1
+M99
+O0001
+G50 X100 Z10
+M03 S500
+G00 X80 Z5
+M98 P1000
+G00 X90
+M98 P3000
+M30
+O3000
+G00 U-4
+M99
+%
+";
+
+#[test]
+fn subprograms_before_the_main_program_are_called_not_run() {
+    use cycleref_spec::reader::MainStart;
+    assert_eq!(MainStart::of_text(BEFORE_AND_AFTER.as_bytes()), MainStart { offset: 63, lines_before: 8 });
+    assert!(BEFORE_AND_AFTER[63..].starts_with("O0001\n"));
+    let got = run(BEFORE_AND_AFTER, &gsk980()).unwrap();
+    let want = vec![
+        (9, None, None),
+        (10, None, None),
+        (11, None, None),
+        (12, Some(80_000), Some(5_000)),
+        (3, Some(78_000), Some(5_000)),
+        (7, Some(78_000), Some(4_000)),
+        (14, Some(90_000), Some(4_000)),
+        (18, Some(86_000), Some(4_000)),
+        (16, None, None),
+    ];
+    assert_eq!(got, want);
+}
+
+#[test]
+fn the_main_program_starts_where_the_first_program_without_m99_starts() {
+    use cycleref_spec::reader::MainStart;
+    fn at(p: &str) -> (usize, &str) {
+        let m = MainStart::of_text(p.as_bytes());
+        (m.lines_before, &p[m.offset..])
+    }
+    // No O number: the main program starts after the subprograms' M99.
+    let p = "O1000\nG00 U-2\nM99\nG50 X100 Z10\nM98 P1000\nM30\n";
+    assert_eq!(at(p), (3, "G50 X100 Z10\nM98 P1000\nM30\n"));
+    assert_eq!(run(p, &gsk980()).unwrap().iter().map(|r| r.0).collect::<Vec<_>>(), [4, 2, 6]);
+    // A main program first, with or without an O number, subprograms after.
+    assert_eq!(at("O0001\nG00 X1\nM98 P1000\nM30\nO1000\nM99\n").0, 0);
+    assert_eq!(at("G00 X1\nM98 P1000\nM30\nO1000\nM99\n").0, 0);
+    // A first program that runs into the next one without M99 or M30 is
+    // the main program.
+    assert_eq!(at("O0001\nG00 X1\nO1000\nM99\n").0, 0);
+    // Only subprograms: no block runs.
+    let p = "O1000\nG00 U-2\nM99\n";
+    assert_eq!(at(p), (3, ""));
+    assert!(run(p, &gsk980()).unwrap().is_empty());
+    // M99 in a comment is no return (the byte search sees it; the reader
+    // does not).
+    assert_eq!(at("O0001\n(M99)\nG00 X1\nM30\n").0, 0);
+}

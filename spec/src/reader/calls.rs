@@ -41,38 +41,175 @@ pub const MAX_SUBPROGRAM_NESTING: u8 = 10;
 /// The default of [`Machine::subprogram_block_limit`].
 pub const DEFAULT_SUBPROGRAM_BLOCK_LIMIT: u64 = 1_000_000;
 
-/// The text of a program's subprograms: the lines after the line that
-/// holds the main program's end, and the number of the first of them.
-#[derive(Clone, Copy, Debug)]
+/// Where the main program starts (reading R-SUBPROGRAM): at the file's
+/// start, or after the subprograms written before it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MainStart {
+    /// The byte offset of its first line.
+    pub offset: usize,
+    /// The number of lines before it.
+    pub lines_before: usize,
+}
+
+impl MainStart {
+    /// Where the main program of `source` starts: [`may_hold_return`]
+    /// first (no `M99`, no subprogram before the main program), then
+    /// [`MainStartFinder`] over the text.
+    ///
+    /// ```
+    /// use cycleref_spec::reader::MainStart;
+    /// let p = b"O1000\nG00 U-2\nM99\nO0001\nG50 X100 Z10\nM98 P1000\nM30\n";
+    /// assert_eq!(MainStart::of_text(p), MainStart { offset: 18, lines_before: 3 });
+    /// assert!(p[18..].starts_with(b"O0001"));
+    /// assert_eq!(MainStart::of_text(b"O0001\nG00 X1\nM30\n"), MainStart::default());
+    /// ```
+    #[must_use]
+    pub fn of_text(source: &[u8]) -> MainStart {
+        if !may_hold_return(source) {
+            return MainStart::default();
+        }
+        let mut finder = MainStartFinder::default();
+        finder.feed(source).unwrap_or_else(|| finder.finish())
+    }
+}
+
+/// True when `bytes` may hold an `M99` (an `M`, perhaps spaces and zeros,
+/// `99`, and no digit or point after): a test at the speed of a byte
+/// search ahead of the reader's. False means that no block of `bytes` is
+/// a return.
+///
+/// ```
+/// use cycleref_spec::reader::may_hold_return;
+/// assert!(may_hold_return(b"G00 X1\nM99\n"));
+/// assert!(may_hold_return(b"m 099"));
+/// assert!(!may_hold_return(b"G00 X99\nM999\nM98 P9901\n"));
+/// ```
+#[must_use]
+pub fn may_hold_return(bytes: &[u8]) -> bool {
+    memchr::memmem::find_iter(bytes, b"99").any(|i| {
+        if matches!(bytes.get(i + 2), Some(b'0'..=b'9' | b'.')) {
+            return false;
+        }
+        let mut j = i;
+        while j > 0 && matches!(bytes[j - 1], b'0' | b' ' | b'\t') {
+            j -= 1;
+        }
+        j > 0 && matches!(bytes[j - 1], b'M' | b'm')
+    })
+}
+
+/// Finds where the main program starts, fed the program a piece (of whole
+/// lines) at a time from its start. The main program is the first program
+/// that does not end with `M99`: a block with words before any `O` block
+/// starts it at the file's start; a program (an `O` block and what
+/// follows) that reaches `M99` before M02, M30 or the next `O` block is a
+/// subprogram; any other is the main program. A line the reader cannot
+/// read is passed over here (it is reported if it runs).
+#[derive(Debug, Default)]
+pub struct MainStartFinder {
+    /// The bytes and lines of the pieces fed so far.
+    offset: usize,
+    line: usize,
+    /// Where the program being read starts, while it is not known to be
+    /// a subprogram.
+    current: Option<MainStart>,
+    /// A subprogram has been read.
+    subprograms: bool,
+}
+
+impl MainStartFinder {
+    /// Reads `piece`: where the main program starts, once that is known.
+    pub fn feed(&mut self, piece: &[u8]) -> Option<MainStart> {
+        let mut lexer = Lexer::at_line(piece, self.line + 1);
+        let mut block = Block::empty();
+        loop {
+            match lexer.next_into(&mut block) {
+                None => break,
+                Some(Err(_)) => lexer.skip_line(),
+                Some(Ok(())) => {
+                    let here =
+                        MainStart { offset: self.offset + lexer.line_start(), lines_before: block.line - 1 };
+                    if program_block(&block).is_some() {
+                        if self.current.is_some() {
+                            // The program before runs into this one: it is the main program.
+                            return self.current;
+                        }
+                        self.current = Some(here);
+                    } else if !block.words.is_empty() {
+                        match self.current {
+                            // Before any program: the main program starts
+                            // at the file's start; after subprograms, here.
+                            None if self.subprograms => return Some(here),
+                            None => return Some(MainStart::default()),
+                            Some(_) if is_return(&block) => {
+                                self.current = None;
+                                self.subprograms = true;
+                            }
+                            Some(start) if ends_program(&block) => return Some(start),
+                            Some(_) => {}
+                        }
+                    }
+                }
+            }
+        }
+        self.offset += piece.len();
+        self.line = lexer.line();
+        None
+    }
+
+    /// At the end of the program: the program being read is the main
+    /// program; or no block has words (the main program starts at the
+    /// file's start); or every program returned, and the main program is
+    /// empty and starts at the end.
+    #[must_use]
+    pub fn finish(&self) -> MainStart {
+        match self.current {
+            Some(start) => start,
+            None if self.subprograms => MainStart { offset: self.offset, lines_before: self.line },
+            None => MainStart::default(),
+        }
+    }
+}
+
+/// The text of a program's subprograms (reading R-SUBPROGRAM): the lines
+/// before the main program's start, and the lines after the line that
+/// holds its end.
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Subprograms<'a> {
+    /// The bytes before the main program's start (from line 1).
+    pub before: &'a [u8],
     /// The bytes from the start of the line after the main program's end.
-    pub text: &'a [u8],
-    /// The number of the first line of `text` in the whole program.
-    pub first_line: usize,
+    pub after: &'a [u8],
+    /// The number of the first line of `after` in the whole program.
+    pub after_line: usize,
 }
 
 impl<'a> Subprograms<'a> {
-    /// The subprograms of the program `source`, held whole.
+    /// The subprograms of the program `source` whose main program starts
+    /// at `main`, borrowed from it.
     ///
     /// # Errors
     ///
-    /// A block before the main program's end that cannot be read, or
+    /// A block of the main program before its end that cannot be read, or
     /// subprograms longer than [`MAX_SUBPROGRAM_TEXT`].
     ///
     /// ```
-    /// use cycleref_spec::reader::Subprograms;
+    /// use cycleref_spec::reader::{MainStart, Subprograms};
     /// let program = b"M98 P1000\nM30\nO1000\nG00 X1\nM99\n";
-    /// let subs = Subprograms::in_text(program)?;
-    /// assert_eq!(subs.text, b"O1000\nG00 X1\nM99\n");
-    /// assert_eq!(subs.first_line, 3);
+    /// let subs = Subprograms::in_text(program, MainStart::of_text(program))?;
+    /// assert_eq!((subs.before, subs.after), (&b""[..], &b"O1000\nG00 X1\nM99\n"[..]));
+    /// assert_eq!(subs.after_line, 3);
     /// # Ok::<(), cycleref_spec::ProgramError>(())
     /// ```
-    pub fn in_text(source: &'a [u8]) -> Result<Subprograms<'a>, ProgramError> {
-        let mut end = MainEnd::new();
-        let sub = match end.feed(source)? {
-            Some(at) => Subprograms { text: &source[at..], first_line: end.line + 1 },
-            None => Subprograms { text: &[], first_line: end.line + 1 },
+    pub fn in_text(source: &'a [u8], main: MainStart) -> Result<Subprograms<'a>, ProgramError> {
+        let before = &source[..main.offset];
+        let rest = &source[main.offset..];
+        let mut end = MainEnd::after(main.lines_before);
+        let (after, after_line) = match end.feed(rest)? {
+            Some(at) => (&rest[at..], end.line + 1),
+            None => (&[][..], end.line + 1),
         };
+        let sub = Subprograms { before, after, after_line };
         sub.check_length()?;
         Ok(sub)
     }
@@ -81,22 +218,32 @@ impl<'a> Subprograms<'a> {
     ///
     /// # Errors
     ///
-    /// When `text` is longer.
+    /// When `before` and `after` together are longer.
     pub fn check_length(&self) -> Result<(), ProgramError> {
-        if self.text.len() > MAX_SUBPROGRAM_TEXT {
+        if self.before.len() + self.after.len() > MAX_SUBPROGRAM_TEXT {
+            let line = if self.after.is_empty() { 1 } else { self.after_line };
             return Err(ProgramError {
-                line: self.first_line,
+                line,
                 word: None,
                 kind: ErrorKind::Subprogram(SubprogramError::TextTooLong { limit: MAX_SUBPROGRAM_TEXT }),
             });
         }
         Ok(())
     }
+
+    /// The text of region `r` (0 before the main program, 1 after).
+    fn region(&self, r: u8) -> &'a [u8] {
+        if r == 0 {
+            self.before
+        } else {
+            self.after
+        }
+    }
 }
 
-/// Finds where the main program ends, fed the program a piece (of whole
-/// lines) at a time from its start: the first block with M02 or M30, as
-/// the reader ends the program there (reading R-PROGRAMEND).
+/// Finds where the main program ends, fed the main program a piece (of
+/// whole lines) at a time from its start: the first block with M02 or
+/// M30, as the reader ends the program there (reading R-PROGRAMEND).
 #[derive(Debug, Default)]
 pub struct MainEnd {
     /// The number of the last line read.
@@ -104,10 +251,11 @@ pub struct MainEnd {
 }
 
 impl MainEnd {
-    /// Before the first piece.
+    /// Before the main program's first piece, which starts after line
+    /// `lines_before` ([`MainStart::lines_before`]).
     #[must_use]
-    pub fn new() -> MainEnd {
-        MainEnd::default()
+    pub fn after(lines_before: usize) -> MainEnd {
+        MainEnd { line: lines_before }
     }
 
     /// Reads `piece`: the offset in it where the subprograms start (the
@@ -295,6 +443,9 @@ fn program_block(block: &Block<'_>) -> Option<Option<u32>> {
 #[derive(Clone, Copy, Debug)]
 struct Entry {
     program: u32,
+    /// The region of [`Subprograms`] it is in (0 before the main program,
+    /// 1 after).
+    region: u8,
     /// The line of the `O` block.
     line: usize,
     /// Where the lexer stands after the `O` block.
@@ -308,7 +459,7 @@ enum Return {
     /// call (the reader's own position in the piece).
     Main(Option<Position>),
     /// Into the calling subprogram, after the call.
-    Sub(Position),
+    Sub((u8, Position)),
 }
 
 /// One subprogram running.
@@ -327,8 +478,9 @@ pub(crate) struct Calls {
     /// Sorted by program number; read when the first call runs.
     index: Option<Vec<Entry>>,
     frames: ArrayVec<Frame, { MAX_SUBPROGRAM_NESTING as usize }>,
-    /// Where the reader stands in the subprograms' text, while one runs.
-    at: Option<Position>,
+    /// Where the reader stands in the subprograms' text (region and
+    /// place), while one runs.
+    at: Option<(u8, Position)>,
     /// Blocks run inside subprograms so far.
     blocks: u64,
 }
@@ -362,14 +514,20 @@ impl Calls {
         self.index.is_some()
     }
 
-    /// Where the reader stands in the subprograms' text.
-    pub(crate) fn position(&self) -> Option<Position> {
-        self.at
+    /// Where the reader stands in the subprograms' text: the region's
+    /// text in `subs`, and the place in it.
+    pub(crate) fn position<'a>(&self, subs: Option<Subprograms<'a>>) -> (&'a [u8], Option<Position>) {
+        match (self.at, subs) {
+            (Some((r, at)), Some(subs)) => (subs.region(r), Some(at)),
+            _ => (&[], None),
+        }
     }
 
-    /// Sets where the reader stands in the subprograms' text.
+    /// Sets where the reader stands in the region it reads.
     pub(crate) fn set_position(&mut self, at: Position) {
-        self.at = Some(at);
+        if let Some((_, p)) = &mut self.at {
+            *p = at;
+        }
     }
 
     /// Reads the index of `subs`: every `O` block and where its program
@@ -377,14 +535,15 @@ impl Calls {
     /// that runs reports its error.
     pub(crate) fn read_index(&mut self, subs: Subprograms<'_>) -> Result<(), ProgramError> {
         let mut index: Vec<Entry> = Vec::new();
-        let mut lexer = Lexer::at_line(subs.text, subs.first_line);
-        let mut block = Block::empty();
-        loop {
-            match lexer.next_into(&mut block) {
-                None => break,
-                Some(Err(_)) => lexer.skip_line(),
-                Some(Ok(())) => {
-                    if let Some(Some(program)) = program_block(&block) {
+        for (region, text, first_line) in [(0, subs.before, 1), (1, subs.after, subs.after_line)] {
+            let mut lexer = Lexer::at_line(text, first_line);
+            let mut block = Block::empty();
+            loop {
+                match lexer.next_into(&mut block) {
+                    None => break,
+                    Some(Err(_)) => lexer.skip_line(),
+                    Some(Ok(())) => {
+                        let Some(Some(program)) = program_block(&block) else { continue };
                         match index.binary_search_by_key(&program, |e| e.program) {
                             Ok(i) => {
                                 return Err(ProgramError {
@@ -397,7 +556,8 @@ impl Calls {
                                 })
                             }
                             Err(i) => {
-                                index.insert(i, Entry { program, line: block.line, at: lexer.position() })
+                                let entry = Entry { program, region, line: block.line, at: lexer.position() };
+                                index.insert(i, entry);
                             }
                         }
                     }
@@ -507,7 +667,7 @@ impl Calls {
             _ => Return::Main(main),
         };
         self.frames.push(Frame { entry, repeats: repeats - 1, back });
-        self.at = Some(entry.at);
+        self.at = Some((entry.region, entry.at));
         Ok(())
     }
 
@@ -520,7 +680,7 @@ impl Calls {
         };
         if frame.repeats > 0 {
             frame.repeats -= 1;
-            self.at = Some(frame.entry.at);
+            self.at = Some((frame.entry.region, frame.entry.at));
             return Ok(None);
         }
         let back = frame.back;
