@@ -144,6 +144,56 @@ pub fn program(bytes: usize, cycles: bool) -> Generated {
     g
 }
 
+/// The command-line options of [`linuxcnc_program`].
+pub const LINUXCNC_ARGS: [&str; 2] = ["--profile", "linuxcnc"];
+
+/// A LinuxCNC program of `cycles` G76 cycles for the peer benchmark
+/// (`pipeline`: `rs274 -g` against `cycleref expand|check --profile
+/// linuxcnc`): the cycle of `examples/linuxcnc-m20-taper.ngc` (M20x1.5,
+/// entry and exit tapers, diameter mode), each after a `G0 X22 Z2` to its
+/// start, with its Z over −20 … −30 mm (41 values) and its thread depth K
+/// over 1.84 … 1.92 mm (9 values), so that no two neighbours are alike.
+#[must_use]
+pub fn linuxcnc_program(cycles: usize) -> String {
+    let mut s = String::with_capacity(80 * cycles + 256);
+    let _ = writeln!(s, "({cycles} LinuxCNC G76 cycles: examples/linuxcnc-m20-taper.ngc's, Z and K varied)");
+    s.push_str("G18 G21 G7\nM3 S500\n");
+    for i in 0..cycles {
+        let z = 2000 + (i % 41) * 25; // hundredths of a mm
+        let k = 184 + i % 9;
+        let _ = writeln!(
+            s,
+            "G0 X22 Z2\nG76 P1.5 Z-{}.{:02} I-2 J0.3 R1.5 K{}.{:02} Q29.5 H1 E1 L3",
+            z / 100,
+            z % 100,
+            k / 100,
+            k % 100
+        );
+    }
+    s.push_str("G0 X30 Z5\nM5\nM2\n");
+    s
+}
+
+/// A G75.1-heavy program for the GSK 980TDi ([`PROFILE_ARGS`]): `grooves`
+/// of seed 001's groove at IS-B (the mixed program's, `I4 J1`), each after
+/// a `G00` to its start point, the groove and its start shifted in Z by
+/// 0 … −9.75 mm (40 values); nothing else between them.
+#[must_use]
+pub fn g75_program(grooves: usize) -> String {
+    let mut s = String::with_capacity(110 * grooves + 64);
+    s.push_str("O0200;\nG50 X100 Z50;\nM03 S500;\n");
+    for i in 0..grooves {
+        let z = 3000 - (i % 40) * 25; // hundredths of a mm
+        let (zi, zf) = (z / 100, z % 100);
+        let _ = writeln!(
+            s,
+            "G00 X60 Z{zi}.{zf:02};\nG75.1 X50 Z{zi}.{zf:02} P3000 Q5000 H-20 D-10 A45 B30;\nG75.1 R0.5 I4 J1;"
+        );
+    }
+    s.push_str("G00 X100 Z50;\nM30;\n");
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -181,5 +231,41 @@ mod tests {
         let m = machine();
         assert!(Reader::new(g.text.as_bytes(), &m).all(|i| matches!(i, Ok(Item::Source(_) | Item::Move(_)))));
         assert_eq!(program(10_000, false).text, g.text);
+    }
+
+    /// Every cycle of a program, read and expanded by the engine; their
+    /// count.
+    fn cycles_of(text: &str, machine: &Machine) -> usize {
+        use cycleref_spec::pipeline::{expand, Cycle, Engine};
+        let mut n = 0;
+        for item in Reader::new(text.as_bytes(), machine) {
+            let item = item.expect("the generated program reads");
+            if let Some(c) = Cycle::of(&item) {
+                assert!(expand(c, Engine::Impl).expect("a valid cycle").count() > 0);
+                n += 1;
+            }
+        }
+        n
+    }
+
+    #[test]
+    fn linuxcnc_program_reads_and_expands() {
+        let text = linuxcnc_program(12);
+        assert!(text.contains("G76 P1.5 Z-20.00 I-2 J0.3 R1.5 K1.84 Q29.5 H1 E1 L3"));
+        assert!(text.contains("Z-22.00 I-2 J0.3 R1.5 K1.92 "));
+        let m = Machine::new(ProfileName::LinuxCnc);
+        assert_eq!(cycles_of(&text, &m), 12);
+        assert!(Reader::new(text.as_bytes(), &m).all(|i| !matches!(i, Ok(Item::G76(_)))));
+        assert_eq!(LINUXCNC_ARGS[1], "linuxcnc");
+    }
+
+    #[test]
+    fn g75_program_reads_and_expands() {
+        let text = g75_program(41);
+        let m = machine();
+        assert_eq!(cycles_of(&text, &m), 41);
+        let g75 = Reader::new(text.as_bytes(), &m).filter(|i| matches!(i, Ok(Item::G75(_)))).count();
+        assert_eq!(g75, 41);
+        assert!(text.contains("G75.1 X50 Z20.25 P3000"));
     }
 }

@@ -1,6 +1,6 @@
-//! Benchmarks for cycleref: the cases, the `f64` baseline and the
-//! history tracking behind `cargo bench -p cycleref-benches --bench g76`
-//! and `cargo run -p cycleref-benches --release --bin track`.
+//! Benchmarks for cycleref: the cases, the `f64` baseline, the generated
+//! programs, the bytes-out floor and the history files behind `cargo bench
+//! -p cycleref-benches` and the `track` and `pipeline` binaries.
 //!
 //! See `benches/README.md` for the groups and how to read the figures.
 
@@ -9,4 +9,6 @@
 pub mod cases;
 pub mod corpus;
 pub mod float;
+pub mod floor;
+pub mod pipeline_history;
 pub mod track;
