@@ -7,7 +7,10 @@
 //!
 //! * runs `cargo bench -p cycleref-benches --bench g76` (unless
 //!   `--skip-bench`, which reuses `target/criterion`);
-//! * reads the medians, prints the markdown table of the latest figures;
+//! * reads the medians, prints the markdown table of the latest figures and
+//!   issue 33's targets (engine/f64 ≤ 1.0 on m68x6, passes_1000 and
+//!   8_start), met or missed, one line per case (the exit status is the
+//!   regression check's, not the targets');
 //! * compares the ratios with the last row of each case of the committed
 //!   `benches/history.csv` (`git show HEAD:…`; the working copy when the
 //!   file is not committed yet);
@@ -117,6 +120,18 @@ fn run(skip_bench: bool, append: bool) -> Result<Vec<String>, String> {
     let date = track::utc_now();
     let commit = commit();
     println!("{}", track::markdown(&figures, &date, &commit));
+    let targets = track::engine_targets(&figures);
+    let met = targets.iter().filter(|t| t.met).count();
+    eprintln!(
+        "track: issue 33's engine targets (engine/f64 <= {:.1}): {met} of {} met{}",
+        track::ENGINE_OVER_F64_TARGET,
+        targets.len(),
+        targets
+            .iter()
+            .filter(|t| !t.met)
+            .map(|t| format!("; {} {:.2}x", t.case, t.engine_over_f64))
+            .collect::<String>()
+    );
 
     let history = crate_dir().join("history.csv");
     let (baseline, source) = match git(&["show", "HEAD:./history.csv"]) {
