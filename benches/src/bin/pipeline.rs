@@ -928,6 +928,9 @@ fn extra_table(
     for n in notes {
         let _ = writeln!(s, "* {n}");
     }
+    if extra.is_empty() && floors.is_empty() {
+        return s;
+    }
     if !notes.is_empty() {
         s.push('\n');
     }
@@ -969,6 +972,9 @@ fn extra_table(
 /// `check` 5× faster than `rs274 -g`, the G75.1-heavy program 5× faster
 /// than the baseline. Met when both the wall and the CPU ratio are.
 fn targets_33(entries: &[Entry], peer: &[Entry], g75: &[Entry], base: bool) -> String {
+    if entries.is_empty() && peer.is_empty() && g75.is_empty() {
+        return String::new();
+    }
     let mut s = String::from("\nTargets (issue 33):\n\n");
     let verdict = |ok: bool| if ok { "met" } else { "**missed**" };
     let mut line = |what: String, r: Option<&Ratio>, ok: &dyn Fn(f64) -> bool, want: &str| {
