@@ -21,7 +21,8 @@ use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::pipeline::{expand_at, Cycle, Engine, Moves, RunError, Summary, Validation};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{
-    may_hold_return, Item, MainEnd, MainStart, MainStartFinder, Step, Subprograms, MAX_SUBPROGRAM_TEXT,
+    may_hold_return, Item, MainEnd, MainStart, MainStartFinder, Step, SubprogramText, Subprograms,
+    MAX_SUBPROGRAM_TEXT,
 };
 use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 
@@ -682,7 +683,7 @@ fn main_start_of_file(path: &Path) -> Result<MainStart, ReadError> {
 impl<'j> Items<'j> {
     fn new(text: &'j Text, machine: &'j Machine) -> Result<Items<'j>, ReadError> {
         let mut reader = LineReader::new(machine);
-        let follows = reader.follows_calls();
+        let follows = reader.subprogram_text() == SubprogramText::AroundMain;
         let (input, main) = match text {
             Text::Held(bytes) => {
                 (Input::Held(bytes), if follows { MainStart::of_text(bytes) } else { MainStart::default() })
@@ -821,12 +822,26 @@ impl<'j> Items<'j> {
         let main = self.main;
         let (path, recorded) = match &self.input {
             Input::Held(bytes) => {
-                let s = Subprograms::in_text(bytes, main)?;
+                let s = self.reader.subprograms_in(bytes, main)?;
                 return Ok((Held::Borrowed(s.before), Held::Borrowed(s.after), s.after_line));
             }
             Input::Lines { path, subprograms, .. } => (*path, *subprograms),
         };
         let mut file = File::open(path).map_err(ReadError::Io)?;
+        if self.reader.subprogram_text() == SubprogramText::WholeProgram {
+            // LinuxCNC: the whole program, whose definitions stand anywhere.
+            let mut whole = Vec::new();
+            (&mut file)
+                .take(MAX_SUBPROGRAM_TEXT as u64 + 1)
+                .read_to_end(&mut whole)
+                .map_err(ReadError::Io)?;
+            Subprograms::whole(&whole)?;
+            let digest = piece_digest(&whole);
+            if *recorded.get_or_init(|| digest) != digest {
+                return Err(ReadError::Changed);
+            }
+            return Ok((Held::Owned(whole), Held::Owned(Vec::new()), 0));
+        }
         let mut before = Vec::new();
         (&mut file)
             .take(main.offset.min(MAX_SUBPROGRAM_TEXT + 1) as u64)

@@ -334,3 +334,63 @@ fn every_linuxcnc_example_is_what_linuxcnc_cuts() {
         }
     }
 }
+
+/// LinuxCNC's numbered and named subroutines (reading R-SUBPROGRAM), each
+/// program checked against `rs274`: `check` of the program against
+/// LinuxCNC's own canonical output agrees, and the motions counted by
+/// hand. The thread is the example's cycle (105 motions with the
+/// program's own G0s; its G76 alone is 17 passes × 6 motions + 1 = 103).
+#[test]
+fn subroutines_run_as_linuxcnc_runs_them() {
+    if !rs274_installed() {
+        return;
+    }
+    let thread = "G76 P1.5 Z-20 I-2 J0.3 R1.5 K1.84 Q29.5 H1 E1 L3";
+    let programs: Vec<(&str, String, usize)> = vec![
+        // Defined first, called twice from two starts: 2 × 103 + 3 G0.
+        (
+            "before",
+            format!("o100 sub\n{thread}\no100 endsub\nG18 G21 G7\nM3 S500\nG0 X22 Z2\no100 call\nG0 X24 Z2\no100 call\nG0 X30 Z5\nM5\nM2\n"),
+            2 * 103 + 3,
+        ),
+        // Defined after M2 (rs274 seeks forward), named, mixed case.
+        (
+            "after-named",
+            format!("G18 G21 G7\nM3 S500\nG0 X22 Z2\no<Thread> call\nG0 X30 Z5\nM5\nM2\no<thread> sub\n{thread}\no<THREAD> endsub\n"),
+            103 + 2,
+        ),
+        // Nested, with an early return (the G0 X1 after it never runs).
+        (
+            "nested",
+            format!(
+                "o1 sub\nG0 X22 Z2\no2 call\no1 endsub\no2 sub\n{thread}\no2 return\nG0 X1\no2 endsub\n\
+                 G18 G21 G7\nM3 S500\no0001 call\nG0 X30 Z5\nM5\nM2\n"
+            ),
+            1 + 103 + 1,
+        ),
+    ];
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-subs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    for (name, program, motions) in programs {
+        let file = dir.join(format!("{name}.ngc"));
+        std::fs::write(&file, &program).expect("write");
+        let canon = dir.join(format!("{name}.canon"));
+        std::fs::write(&canon, rs274_output(&file)).expect("write");
+        assert_eq!(rs274_motions(&file).len(), motions, "{name}: rs274's motions");
+        let f = file.to_string_lossy();
+        let c = canon.to_string_lossy();
+        // Within one increment (R-LCNC-EXACT, as the example's check).
+        let out = run(&["check", "--profile", "linuxcnc", "--tolerance", "1", &f, "--trace", &c], None);
+        let report = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{name}: {report}{}", String::from_utf8_lossy(&out.stderr));
+        assert!(report.starts_with("AGREE: "), "{name}: {report}");
+        // Our expansion has the motions counted by hand too.
+        let nc = stdout(&["expand", "--profile", "linuxcnc", &f]);
+        let ours = nc
+            .lines()
+            .filter(|l| l.starts_with("G0 ") || l.starts_with("G00 ") || l.starts_with("G33 "))
+            .count();
+        assert_eq!(ours, motions, "{name}: our motions\n{nc}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -265,6 +265,8 @@ fn kind(k: &ErrorKind) -> String {
                 SubprogramError::ReturnOutsideSubprogram => "return_outside_subprogram",
                 SubprogramError::NoReturn { .. } => "no_return",
                 SubprogramError::EndInSubprogram { .. } => "end_in_subprogram",
+                SubprogramError::MisplacedDefinition { .. } => "misplaced_definition",
+                SubprogramError::Unfollowed => "unfollowed",
                 SubprogramError::TooManyBlocks { .. } => "too_many_blocks",
                 SubprogramError::TextTooLong { .. } => "text_too_long",
                 SubprogramError::BadCall(_) => "bad_call",

@@ -606,6 +606,9 @@ pub struct Lexer<'a> {
     /// The current line and where in it the next block starts.
     current: Option<(Line<'a>, usize)>,
     done: bool,
+    /// LinuxCNC's o-word lines are blocks of their own, not read as words
+    /// ([`oword`]).
+    owords: bool,
 }
 
 /// Where a [`Lexer`] stands in its source, kept while the lexer itself is
@@ -644,7 +647,7 @@ impl<'a> Lexer<'a> {
     #[must_use]
     pub fn new(src: &'a [u8]) -> Lexer<'a> {
         let pos = if src.starts_with(BOM) { BOM.len() } else { 0 };
-        Lexer { src, pos, line: 0, line_start: pos, current: None, done: false }
+        Lexer { src, pos, line: 0, line_start: pos, current: None, done: false, owords: false }
     }
 
     /// A lexer over one piece of a program (a line read from a stream,
@@ -656,7 +659,7 @@ impl<'a> Lexer<'a> {
         let mut lexer = if first_line <= 1 {
             Lexer::new(src)
         } else {
-            Lexer { src, pos: 0, line: 0, line_start: 0, current: None, done: false }
+            Lexer { src, pos: 0, line: 0, line_start: 0, current: None, done: false, owords: false }
         };
         lexer.line = first_line.saturating_sub(1);
         lexer
@@ -680,7 +683,16 @@ impl<'a> Lexer<'a> {
             Some((Line { start, bytes }, next))
         });
         let line_start = current.map_or(at.pos, |(l, _)| l.start);
-        Lexer { src, pos: at.pos, line: at.line, line_start, current, done: at.done }
+        Lexer { src, pos: at.pos, line: at.line, line_start, current, done: at.done, owords: false }
+    }
+
+    /// The lexer reading LinuxCNC's o-word lines (`o100 call`) as blocks
+    /// of their own, without words, their text the line: the reader reads
+    /// them ([`oword`]).
+    #[must_use]
+    pub(crate) fn with_owords(mut self, on: bool) -> Lexer<'a> {
+        self.owords = on;
+        self
     }
 
     /// After an error, goes on at the next line: the index of
@@ -802,6 +814,58 @@ impl<'a> Lexer<'a> {
     }
 }
 
+/// A LinuxCNC o-word line (reading R-SUBPROGRAM): `o` and a number or a
+/// `<name>`, then its keyword (`sub`, `endsub`, `call`, `return`, …) and
+/// the rest of the line, spaces before them skipped. The number is as
+/// written (`0100` and `100` are one label, as `rs274` reads them); the
+/// name is lower case (`rs274` reads `o<MySub>` and `o<mysub>` alike).
+#[must_use]
+pub fn oword(line: &[u8]) -> Option<(OLabel, &[u8], &[u8])> {
+    let skip = |b: &[u8]| -> usize { b.iter().take_while(|c| matches!(c, b' ' | b'\t')).count() };
+    let mut i = skip(line);
+    if !matches!(line.get(i), Some(b'o' | b'O')) {
+        return None;
+    }
+    i += 1;
+    i += skip(&line[i..]);
+    let label = match line.get(i) {
+        Some(b'<') => {
+            let end = i + 1 + line[i + 1..].iter().position(|&b| b == b'>')?;
+            let name = std::str::from_utf8(&line[i + 1..end]).ok()?.to_ascii_lowercase();
+            i = end + 1;
+            OLabel::Name(name)
+        }
+        Some(b'0'..=b'9') => {
+            let n = line[i..].iter().take_while(|b| b.is_ascii_digit()).count();
+            let number = std::str::from_utf8(&line[i..i + n]).ok()?.parse::<u64>().ok()?;
+            i += n;
+            OLabel::Number(number)
+        }
+        _ => return None,
+    };
+    i += skip(&line[i..]);
+    let k = line[i..].iter().take_while(|b| b.is_ascii_alphabetic()).count();
+    Some((label, &line[i..i + k], &line[i + k..]))
+}
+
+/// The label of a LinuxCNC o-word.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum OLabel {
+    /// `o100`.
+    Number(u64),
+    /// `o<name>`, lower case.
+    Name(String),
+}
+
+impl std::fmt::Display for OLabel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            OLabel::Number(n) => write!(f, "o{n}"),
+            OLabel::Name(s) => write!(f, "o<{s}>"),
+        }
+    }
+}
+
 /// The first line of `rest` without its line end, and the bytes to skip
 /// to the next line: a line ends at `\n`, `\r\n` or a `\r` not followed
 /// by `\n` (reading R-LINEEND: CR, LF and CR LF are all line ends, as the
@@ -893,6 +957,11 @@ impl<'a> Lexer<'a> {
                 None => (self.next_line()?, 0),
             };
             block.words = Words::new();
+            if self.owords && start == 0 && oword(line.bytes).is_some() {
+                block.line = self.line;
+                block.text = Cow::Borrowed(trim(line.bytes));
+                return Some(Ok(()));
+            }
             let seg = match self.segment(line, start, &mut block.words) {
                 Ok(s) => s,
                 Err(e) => return Some(Err(e)),

@@ -518,7 +518,11 @@ impl Machine {
             x_mode: if linuxcnc { XMode::Radius } else { XMode::Diameter },
             calculator_input: false,
             pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
-            subprogram_nesting: crate::reader::DEFAULT_SUBPROGRAM_NESTING,
+            subprogram_nesting: if linuxcnc {
+                crate::reader::LINUXCNC_SUBPROGRAM_NESTING
+            } else {
+                crate::reader::DEFAULT_SUBPROGRAM_NESTING
+            },
             subprogram_block_limit: crate::reader::DEFAULT_SUBPROGRAM_BLOCK_LIMIT,
             params,
         }

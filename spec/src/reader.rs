@@ -33,7 +33,8 @@ mod words;
 
 pub use calls::{
     may_hold_return, MainEnd, MainStart, MainStartFinder, SubprogramError, Subprograms,
-    DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
+    DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING, LINUXCNC_SUBPROGRAM_NESTING,
+    MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
 };
 use calls::{Calls, Flow};
 pub use g76::resolve_run_out;
@@ -45,6 +46,17 @@ pub use threads::resolve_g32_run_out;
 pub use words::{check_axis_words, length_word, q_word};
 #[allow(clippy::wildcard_imports)]
 use {g75::*, g76::*, threads::*, words::*};
+
+/// Where a reader's subprograms are ([`LineReader::subprogram_text`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SubprogramText {
+    /// The reader follows no call (a trace).
+    None,
+    /// Before the main program's start and after its end (FANUC, GSK).
+    AroundMain,
+    /// Anywhere in the program (LinuxCNC's definitions).
+    WholeProgram,
+}
 
 /// What [`LineReader::step`] gives.
 #[derive(Debug)]
@@ -149,6 +161,19 @@ fn subprogram(block: &Block<'_>, w: &Word<'_>) -> ProgramError {
                 .into(),
         ),
     )
+}
+
+/// A LinuxCNC o-word where no call is followed (a trace).
+fn subprogram_oword(block: &Block<'_>) -> ProgramError {
+    let text = String::from_utf8_lossy(&block.text);
+    ProgramError {
+        line: block.line,
+        word: text.split_whitespace().next().map(str::to_string),
+        kind: ErrorKind::Unsupported(
+            "an o-word in a trace: a trace holds the moves as the control ran them (reading R-SUBPROGRAM)"
+                .into(),
+        ),
+    }
 }
 
 fn err(block: &Block<'_>, word: Option<&Word<'_>>, kind: ErrorKind) -> ProgramError {
@@ -273,10 +298,9 @@ impl<'a> Iterator for Reader<'a, '_> {
             return None;
         }
         let main = *self.main.get_or_insert_with(|| {
-            let main = if self.reader.follows_calls() {
-                MainStart::of_text(self.source)
-            } else {
-                MainStart::default()
+            let main = match self.reader.subprogram_text() {
+                SubprogramText::AroundMain => MainStart::of_text(self.source),
+                SubprogramText::None | SubprogramText::WholeProgram => MainStart::default(),
             };
             self.reader.start_at(main);
             main
@@ -286,7 +310,7 @@ impl<'a> Iterator for Reader<'a, '_> {
             match self.reader.step(piece, self.subprograms) {
                 Ok(Step::Item(item)) => return Some(Ok(item)),
                 Ok(Step::Piece) => break,
-                Ok(Step::Subprograms) => match Subprograms::in_text(self.source, main) {
+                Ok(Step::Subprograms) => match self.reader.subprograms_in(self.source, main) {
                     Ok(subs) => self.subprograms = Some(subs),
                     Err(e) => {
                         self.finished = true;
@@ -396,13 +420,39 @@ impl<'m> LineReader<'m> {
         self.state.units
     }
 
-    /// True when this reader follows subprogram calls (reading
-    /// R-SUBPROGRAM): a program of the FANUC and GSK dialect, not a trace.
-    /// Its caller then finds where the main program starts
-    /// ([`MainStart`]) and starts the reader there ([`LineReader::start_at`]).
+    /// Where this reader's subprograms are (reading R-SUBPROGRAM): none
+    /// (a trace), around the main program (FANUC and GSK: its caller then
+    /// finds where the main program starts, [`MainStart`], and starts the
+    /// reader there, [`LineReader::start_at`]), or anywhere in the program
+    /// (LinuxCNC's `sub` … `endsub`).
     #[must_use]
-    pub fn follows_calls(&self) -> bool {
-        self.state.follows_calls()
+    pub fn subprogram_text(&self) -> SubprogramText {
+        if !self.state.follows_calls() {
+            SubprogramText::None
+        } else if self.state.machine.profile.dialect == Dialect::LinuxCnc {
+            SubprogramText::WholeProgram
+        } else {
+            SubprogramText::AroundMain
+        }
+    }
+
+    /// The subprograms of the program `source`, whose main program
+    /// starts at `main`, as [`LineReader::step`] asks for them: its text
+    /// around the main program ([`Subprograms::in_text`]) or, for
+    /// LinuxCNC, all of it ([`Subprograms::whole`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`Subprograms::in_text`] and [`Subprograms::whole`].
+    pub fn subprograms_in<'a>(
+        &self,
+        source: &'a [u8],
+        main: MainStart,
+    ) -> Result<Subprograms<'a>, ProgramError> {
+        match self.subprogram_text() {
+            SubprogramText::WholeProgram => Subprograms::whole(source),
+            SubprogramText::AroundMain | SubprogramText::None => Subprograms::in_text(source, main),
+        }
     }
 
     /// Starts the reading at the main program's start `main`: the first
@@ -525,17 +575,19 @@ impl<'m> LineReader<'m> {
             // The block is read where it stays until it moves into its item.
             let mut block = Block::empty();
             let before = self.at;
+            let lcnc = self.state.machine.profile.dialect == Dialect::LinuxCnc;
             if self.calls.running() {
                 let (text, at) = self.calls.position(subprograms);
                 let mut lexer = match at {
                     Some(at) => Lexer::resume(text, at),
                     None => Lexer::at_line(text, 1),
-                };
+                }
+                .with_owords(lcnc);
                 match lexer.next_into(&mut block) {
                     Some(Ok(())) => {}
                     Some(Err(e)) => return Err(self.fail(e)),
                     None => {
-                        let e = self.calls.no_return(lexer.line());
+                        let e = self.calls.no_return(lexer.line(), lcnc);
                         return Err(self.fail(e));
                     }
                 }
@@ -547,9 +599,17 @@ impl<'m> LineReader<'m> {
                 let mut lexer = match self.at.take() {
                     Some(at) => Lexer::resume(piece, at),
                     None => Lexer::at_line(piece, self.line + 1),
-                };
+                }
+                .with_owords(lcnc);
                 match lexer.next_into(&mut block) {
                     Some(Ok(())) => {}
+                    // A line of a definition the path passes over is not
+                    // read (LinuxCNC).
+                    Some(Err(_)) if self.calls.skipping() => {
+                        lexer.skip_line();
+                        self.at = Some(lexer.position());
+                        continue;
+                    }
                     Some(Err(e)) => return Err(self.fail(e)),
                     None => {
                         self.line = lexer.line();
@@ -566,25 +626,27 @@ impl<'m> LineReader<'m> {
                 }
             }
             if self.state.follows_calls() {
-                if !self.calls.has_index() && block.all('M').any(|w| w.integer() == Some(98)) {
+                if !self.calls.skipping() && self.calls.needs_index(&block, lcnc) {
                     let Some(subs) = subprograms else {
                         // Read again once the caller has the subprograms.
                         self.at = before;
                         return Ok(Step::Subprograms);
                     };
-                    if let Err(e) = self.calls.read_index(subs) {
+                    if let Err(e) = self.calls.read_index(subs, lcnc, block.line) {
                         return Err(self.fail(e));
                     }
                 }
                 match self.calls.flow(&block, self.state.machine, self.at) {
                     None => {}
-                    Some(Ok(Flow::Called | Flow::Returned { main: None })) => continue,
+                    Some(Ok(Flow::Called | Flow::Skipped | Flow::Returned { main: None })) => continue,
                     Some(Ok(Flow::Returned { main: Some(at) })) => {
                         self.at = at;
                         continue;
                     }
                     Some(Err(e)) => return Err(self.fail(e)),
                 }
+            } else if lcnc && calls::block_oword(&block).is_some() {
+                return Err(self.fail(subprogram_oword(&block)));
             }
             let item = match self.state.scan(&block) {
                 // The usual block: it moves once, into the item returned.
@@ -615,6 +677,9 @@ impl<'m> LineReader<'m> {
             return Ok(());
         }
         self.done = true;
+        if let Some(e) = self.calls.unfinished() {
+            return Err(e);
+        }
         match self.state.g75_pending.take() {
             Some(first) => Err(lone_g75(first.line)),
             None => Ok(()),
@@ -623,11 +688,10 @@ impl<'m> LineReader<'m> {
 }
 
 impl State<'_> {
-    /// True when the reader follows subprogram calls: a program of the
-    /// FANUC and GSK dialect (a trace holds no calls, and LinuxCNC calls
-    /// with o-words, which are not followed yet).
+    /// True when the reader follows subprogram calls: a program, not a
+    /// trace (which holds no calls).
     fn follows_calls(&self) -> bool {
-        !self.trace && self.machine.profile.dialect != Dialect::LinuxCnc
+        !self.trace
     }
 
     /// The machine's settings that no program can use (none at present:

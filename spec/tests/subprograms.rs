@@ -262,3 +262,85 @@ fn the_main_program_starts_where_the_first_program_without_m99_starts() {
     // does not).
     assert_eq!(at("O0001\n(M99)\nG00 X1\nM30\n").0, 0);
 }
+
+fn linuxcnc() -> Machine {
+    Machine::new(ProfileName::LinuxCnc)
+}
+
+/// LinuxCNC's o-word subroutines: each refusal where LinuxCNC 2.9's
+/// `rs274` refuses (its message quoted), and the ones not followed here.
+#[test]
+fn linuxcnc_subroutines_refused_where_rs274_refuses_them() {
+    let m = linuxcnc();
+    let cases: &[(&str, usize, &str, &str)] = &[
+        // rs274: "not in a subroutine definition: 'o100 endsub'".
+        (
+            "G18 G21 G7\nG0 X10 Z2\no100 endsub\nM2\n",
+            3,
+            "o100 endsub",
+            "subprogram:return_outside_subprogram",
+        ),
+        // rs274: "Nested subroutine definition".
+        (
+            "o100 sub\no200 sub\no200 endsub\no100 endsub\nG18\nM2\n",
+            2,
+            "o200 sub",
+            "subprogram:misplaced_definition",
+        ),
+        // rs274: "EOF in file ... seeking o-word: o<100>".
+        ("G18 G21 G7\nG0 X10 Z2\no100 call\nM2\n", 3, "o100 call", "subprogram:not_found"),
+        // rs274: "sub: o|100| found in illegal location" (called before
+        // its definition, which the path then reaches).
+        (
+            "G18 G21 G7\nG0 X10 Z2\no100 call\nG0 X20\no100 sub\nG0 X5\no100 endsub\nM2\n",
+            5,
+            "o100 sub",
+            "subprogram:misplaced_definition",
+        ),
+        // Not followed here: control flow, arguments, return values.
+        ("G18\no100 if [1]\nG0 X1\no100 endif\nM2\n", 2, "o100 if", "subprogram:unfollowed"),
+        ("G18\no100 call [2]\nM2\no100 sub\no100 endsub\n", 2, "o100 call", "subprogram:word_beside"),
+        // A definition the file ends inside.
+        ("G18\no100 sub\nG0 X1\n", 2, "o100 sub", "subprogram:no_return"),
+    ];
+    for &(program, line, word, want) in cases {
+        let e = error(program, &m);
+        assert_eq!(
+            (e.line, e.word.as_deref(), kind(&e).as_str()),
+            (line, Some(word), want),
+            "{program:?}: {e}"
+        );
+    }
+}
+
+/// `n` subroutines, each calling the next; the last moves.
+fn nested(n: usize) -> String {
+    let mut p = String::new();
+    for i in 1..=n {
+        p += &format!("o{i} sub\n");
+        p += &if i < n { format!("o{} call\n", i + 1) } else { "G0 X1\n".into() };
+        p += &format!("o{i} endsub\n");
+    }
+    p + "G18 G21 G7\nG0 X10 Z2\no1 call\nM2\n"
+}
+
+#[test]
+fn linuxcnc_nests_nine_calls_as_rs274_does() {
+    // rs274 2.9 runs 9 nested calls and refuses the 10th: "Too many
+    // subroutine levels".
+    let m = linuxcnc();
+    let lines: Vec<usize> = run(&nested(9), &m).unwrap().iter().map(|r| r.0).collect();
+    // 27 lines of definitions (o9's G0 X1 on line 26), then G18, G0, the call, M2.
+    assert_eq!(lines, [28, 29, 26, 31]);
+    let e = error(&nested(10), &m);
+    // The 10th call is o9's `o10 call`, line 3 × 9 - 1.
+    assert_eq!((e.line, kind(&e).as_str()), (26, "subprogram:too_deep"));
+}
+
+#[test]
+fn linuxcnc_m2_in_a_subroutine_ends_the_program() {
+    // rs274: PROGRAM_END after the subroutine's G0 X1; G0 X30 never runs.
+    let p = "o100 sub\nG0 X1\nM2\no100 endsub\nG18 G21 G7\nG0 X10 Z2\no100 call\nG0 X30\nM2\n";
+    let lines: Vec<usize> = run(p, &linuxcnc()).unwrap().iter().map(|r| r.0).collect();
+    assert_eq!(lines, [5, 6, 2, 3]);
+}

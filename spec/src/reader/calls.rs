@@ -19,11 +19,9 @@
 //! refuses a program whose calls repeat without end (or nearly) before
 //! anything is written.
 
-use arrayvec::ArrayVec;
-
 use crate::error::{ErrorKind, ProgramError};
-use crate::lex::{Block, Lexer, Position, Word};
-use crate::profile::Machine;
+use crate::lex::{oword, Block, Lexer, OLabel, Position, Word};
+use crate::profile::{Dialect, Machine};
 
 /// The most bytes the subprograms of a program (the text after the main
 /// program's end) may have: they are held in memory while the program
@@ -34,6 +32,10 @@ pub const MAX_SUBPROGRAM_TEXT: usize = 1 << 20;
 /// level 1, one it calls level 2, and so on to 4 (FANUC and GSK; some
 /// FANUC models allow 10: `subprogram_nesting` in the parameter file).
 pub const DEFAULT_SUBPROGRAM_NESTING: u8 = 4;
+
+/// The nesting depth of the linuxcnc profile: LinuxCNC 2.9's `rs274` runs
+/// 9 nested `call`s and refuses a 10th ("Too many subroutine levels").
+pub const LINUXCNC_SUBPROGRAM_NESTING: u8 = 9;
 
 /// The deepest nesting the parameter file may set.
 pub const MAX_SUBPROGRAM_NESTING: u8 = 10;
@@ -214,6 +216,19 @@ impl<'a> Subprograms<'a> {
         Ok(sub)
     }
 
+    /// The subprograms of a LinuxCNC program `source`: the whole of it
+    /// (its definitions may stand anywhere), at most
+    /// [`MAX_SUBPROGRAM_TEXT`] bytes.
+    ///
+    /// # Errors
+    ///
+    /// A program longer than [`MAX_SUBPROGRAM_TEXT`].
+    pub fn whole(source: &'a [u8]) -> Result<Subprograms<'a>, ProgramError> {
+        let sub = Subprograms { before: source, after: &[], after_line: 0 };
+        sub.check_length()?;
+        Ok(sub)
+    }
+
     /// The error of subprograms longer than [`MAX_SUBPROGRAM_TEXT`].
     ///
     /// # Errors
@@ -289,15 +304,16 @@ pub(crate) fn ends_program(block: &Block<'_>) -> bool {
 /// What is wrong with a subprogram call or return.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SubprogramError {
-    /// `M98` names a program that is not among the subprograms.
+    /// A call names a program that is not among the subprograms.
     NotFound {
-        /// The program number.
-        program: u32,
+        /// The program as the dialect writes it (`O1000`, `o100`,
+        /// `o<name>`).
+        program: String,
     },
-    /// The same program number twice among the subprograms.
+    /// The same program twice among the subprograms.
     DefinedTwice {
-        /// The program number.
-        program: u32,
+        /// The program.
+        program: String,
         /// The line of its first definition.
         first: usize,
     },
@@ -306,20 +322,27 @@ pub enum SubprogramError {
         /// The deepest nesting allowed.
         limit: u8,
     },
-    /// `M99` in the main program.
+    /// `M99` in the main program, or LinuxCNC's `endsub`/`return`
+    /// outside the subroutine it names.
     ReturnOutsideSubprogram,
     /// A subprogram that runs to the end of the file, or into the next
-    /// program, without `M99`.
+    /// program, without `M99` (LinuxCNC: a definition without `endsub`).
     NoReturn {
-        /// The program number.
-        program: u32,
-        /// The line of its `O` block.
+        /// The program.
+        program: String,
+        /// The line of its `O` block (`sub` line).
         line: usize,
     },
-    /// M02 or M30 inside a subprogram.
+    /// M02 or M30 inside a FANUC or GSK subprogram.
     EndInSubprogram {
-        /// The program number.
-        program: u32,
+        /// The program.
+        program: String,
+    },
+    /// A LinuxCNC subroutine defined inside another, or where `rs274`
+    /// refuses it (after the program called it before its definition).
+    MisplacedDefinition {
+        /// The subroutine.
+        program: String,
     },
     /// More blocks run inside subprograms than the limit.
     TooManyBlocks {
@@ -333,11 +356,15 @@ pub enum SubprogramError {
     },
     /// `M98` without `P`, or a `P` that is not a call's.
     BadCall(&'static str),
-    /// A word beside `M98` or `M99` that the reader does not follow.
+    /// A word beside `M98` or `M99`, or after a LinuxCNC o-word, that the
+    /// reader does not follow.
     WordBeside {
-        /// `M98` or `M99`.
+        /// `M98`, `M99` or the o-word's keyword.
         code: &'static str,
     },
+    /// A LinuxCNC o-word other than `sub`, `endsub`, `return` and `call`
+    /// (`if`, `while`, `repeat`, …): control flow is not followed.
+    Unfollowed,
 }
 
 impl SubprogramError {
@@ -351,10 +378,12 @@ impl SubprogramError {
             SubprogramError::ReturnOutsideSubprogram => "return_outside_subprogram",
             SubprogramError::NoReturn { .. } => "no_return",
             SubprogramError::EndInSubprogram { .. } => "end_in_subprogram",
+            SubprogramError::MisplacedDefinition { .. } => "misplaced_definition",
             SubprogramError::TooManyBlocks { .. } => "too_many_blocks",
             SubprogramError::TextTooLong { .. } => "text_too_long",
             SubprogramError::BadCall(_) => "bad_call",
             SubprogramError::WordBeside { .. } => "word_beside",
+            SubprogramError::Unfollowed => "unfollowed",
         }
     }
 }
@@ -364,11 +393,12 @@ impl std::fmt::Display for SubprogramError {
         match self {
             SubprogramError::NotFound { program } => write!(
                 f,
-                "program O{program:04} is not in the file (subprograms follow the main program's M02/M30, \
-                 each from its O block to its M99; reading R-SUBPROGRAM)"
+                "program {program} is not in the file (FANUC and GSK: subprograms stand before the main \
+                 program or after its M02/M30, each from its O block to its M99; LinuxCNC: `{program} sub` \
+                 … `{program} endsub`; reading R-SUBPROGRAM)"
             ),
             SubprogramError::DefinedTwice { program, first } => {
-                write!(f, "program O{program:04} is defined twice (first at line {first})")
+                write!(f, "program {program} is defined twice (first at line {first})")
             }
             SubprogramError::TooDeep { limit } => write!(
                 f,
@@ -376,18 +406,23 @@ impl std::fmt::Display for SubprogramError {
                  `subprogram_nesting` in the parameter file)"
             ),
             SubprogramError::ReturnOutsideSubprogram => f.write_str(
-                "M99 outside a subprogram: the main program runs from the file's first block to its \
-                 M02/M30 (reading R-SUBPROGRAM)",
+                "a return outside the subprogram it ends: M99 in the main program (which runs from its \
+                 first block to its M02/M30), or an `endsub`/`return` not in a subroutine called by that \
+                 name (reading R-SUBPROGRAM)",
             ),
             SubprogramError::NoReturn { program, line } => write!(
                 f,
-                "subprogram O{program:04} (line {line}) ends without M99 (it runs to here: the end of the \
-                 file or the next program)"
+                "subprogram {program} (line {line}) ends without its return (M99, `endsub`): it runs to \
+                 here, the end of the file or the next program"
             ),
             SubprogramError::EndInSubprogram { program } => write!(
                 f,
-                "M02/M30 inside subprogram O{program:04}: a subprogram returns with M99 (reading \
-                 R-SUBPROGRAM)"
+                "M02/M30 inside subprogram {program}: a subprogram returns with M99 (reading R-SUBPROGRAM)"
+            ),
+            SubprogramError::MisplacedDefinition { program } => write!(
+                f,
+                "the definition of {program} stands where LinuxCNC refuses it: inside another definition, \
+                 or in the program's path after a call to it (rs274: \"found in illegal location\")"
             ),
             SubprogramError::TooManyBlocks { limit } => write!(
                 f,
@@ -396,14 +431,19 @@ impl std::fmt::Display for SubprogramError {
             ),
             SubprogramError::TextTooLong { limit } => write!(
                 f,
-                "the subprograms after the main program's end are longer than {limit} bytes, the most \
-                 that is held while the program runs"
+                "the subprograms' text is longer than {limit} bytes, the most that is held while the \
+                 program runs (FANUC, GSK: the text around the main program; LinuxCNC: the whole program)"
             ),
             SubprogramError::BadCall(rule) => write!(f, "not a subprogram call: {rule}"),
             SubprogramError::WordBeside { code } => write!(
                 f,
-                "a word beside {code}: a call (M98 P) or a return (M99) stands in a block of its own \
-                 (reading R-SUBPROGRAM: M98 L and Q, M99 P and a move with a call are not followed)"
+                "a word beside {code}: a call or a return stands in a block of its own (reading \
+                 R-SUBPROGRAM: M98 L and Q, M99 P, a move with a call, LinuxCNC's arguments and return \
+                 values are not followed)"
+            ),
+            SubprogramError::Unfollowed => f.write_str(
+                "LinuxCNC's o-word control flow (if, while, do, repeat, break, continue) is not followed \
+                 (reading R-SUBPROGRAM: sub, endsub, return and call are)",
             ),
         }
     }
@@ -438,18 +478,44 @@ fn program_block(block: &Block<'_>) -> Option<Option<u32>> {
     Some(number)
 }
 
+/// A LinuxCNC o-word of `block` (the lexer gives an o-word line as a
+/// block without words): its label, its keyword in lower case, and
+/// whether anything but a comment follows the keyword.
+pub(crate) fn block_oword(block: &Block<'_>) -> Option<(OLabel, String, bool)> {
+    if !block.words.is_empty() {
+        return None;
+    }
+    let (label, keyword, rest) = oword(&block.text)?;
+    let rest = rest.trim_ascii_start();
+    let more = !(rest.is_empty() || rest.starts_with(b"(") || rest.starts_with(b";"));
+    Some((label, String::from_utf8_lossy(keyword).to_ascii_lowercase(), more))
+}
+
 /// A subprogram's entry in the index: where its first block after the
-/// `O` block starts.
-#[derive(Clone, Copy, Debug)]
+/// `O` block (`sub` line) starts.
+#[derive(Clone, Debug)]
 struct Entry {
-    program: u32,
+    label: OLabel,
     /// The region of [`Subprograms`] it is in (0 before the main program,
     /// 1 after).
     region: u8,
-    /// The line of the `O` block.
+    /// The line of the `O` block (`sub` line).
     line: usize,
-    /// Where the lexer stands after the `O` block.
+    /// Where the lexer stands after it.
     at: Position,
+    /// LinuxCNC: the program's path has passed its definition.
+    passed: bool,
+    /// LinuxCNC: called before the path passed its definition (`rs274`
+    /// then refuses the definition when the path reaches it).
+    forward: bool,
+}
+
+/// How the dialect writes a program's label.
+fn shown_label(label: &OLabel, lcnc: bool) -> String {
+    match label {
+        OLabel::Number(n) if !lcnc => format!("O{n:04}"),
+        l => l.to_string(),
+    }
 }
 
 /// Where a return goes.
@@ -463,9 +529,10 @@ enum Return {
 }
 
 /// One subprogram running.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 struct Frame {
-    entry: Entry,
+    /// Its index in [`Calls::index`].
+    entry: usize,
     /// The runs still to start after this one.
     repeats: u32,
     back: Return,
@@ -475,24 +542,29 @@ struct Frame {
 /// part of R-SUBPROGRAM.
 #[derive(Debug, Default)]
 pub(crate) struct Calls {
-    /// Sorted by program number; read when the first call runs.
+    /// Sorted by label; read when the first call runs.
     index: Option<Vec<Entry>>,
-    frames: ArrayVec<Frame, { MAX_SUBPROGRAM_NESTING as usize }>,
+    frames: Vec<Frame>,
     /// Where the reader stands in the subprograms' text (region and
     /// place), while one runs.
     at: Option<(u8, Position)>,
     /// Blocks run inside subprograms so far.
     blocks: u64,
+    /// LinuxCNC: the definition the main program's path is passing over,
+    /// and the line of its `sub`.
+    skipping: Option<(OLabel, usize)>,
 }
 
 /// What a call or return did.
 pub(crate) enum Flow {
-    /// The block was `M98`: the reader goes on in the subprogram.
+    /// A call: the reader goes on in the subprogram.
     Called,
-    /// The block was `M99`: the reader goes on after the call (or at the
+    /// A return: the reader goes on after the call (or at the
     /// subprogram's start again), and in the main program when `main`
     /// holds the position to go on at there.
     Returned { main: Option<Option<Position>> },
+    /// LinuxCNC: the block is part of a definition the path passes over.
+    Skipped,
 }
 
 fn sub_err(block: &Block<'_>, word: Option<&Word<'_>>, e: SubprogramError) -> ProgramError {
@@ -503,10 +575,36 @@ fn sub_err(block: &Block<'_>, word: Option<&Word<'_>>, e: SubprogramError) -> Pr
     }
 }
 
+/// The error of `block`, naming the block's o-word (its text to the
+/// keyword).
+fn oword_err(block: &Block<'_>, e: SubprogramError) -> ProgramError {
+    let text = String::from_utf8_lossy(&block.text);
+    let word = text.split_whitespace().take(2).collect::<Vec<_>>().join(" ");
+    ProgramError { line: block.line, word: Some(word), kind: ErrorKind::Subprogram(e) }
+}
+
 impl Calls {
     /// True while a subprogram runs.
     pub(crate) fn running(&self) -> bool {
         !self.frames.is_empty()
+    }
+
+    /// True while the main program's path passes over a LinuxCNC
+    /// definition.
+    pub(crate) fn skipping(&self) -> bool {
+        self.skipping.is_some()
+    }
+
+    /// The error of a definition the program ends inside (LinuxCNC).
+    pub(crate) fn unfinished(&self) -> Option<ProgramError> {
+        self.skipping.as_ref().map(|(label, line)| ProgramError {
+            line: *line,
+            word: Some(format!("{label} sub")),
+            kind: ErrorKind::Subprogram(SubprogramError::NoReturn {
+                program: label.to_string(),
+                line: *line,
+            }),
+        })
     }
 
     /// True once the subprograms' index is read.
@@ -530,33 +628,55 @@ impl Calls {
         }
     }
 
-    /// Reads the index of `subs`: every `O` block and where its program
-    /// starts. A line that cannot be read is passed over: only a block
-    /// that runs reports its error.
-    pub(crate) fn read_index(&mut self, subs: Subprograms<'_>) -> Result<(), ProgramError> {
+    /// Reads the index of `subs`: every `O` block (LinuxCNC: `sub` line)
+    /// and where its program starts. A line that cannot be read is passed
+    /// over: only a block that runs reports its error. `line` is the line
+    /// of the first call, which the path has reached.
+    pub(crate) fn read_index(
+        &mut self,
+        subs: Subprograms<'_>,
+        lcnc: bool,
+        line: usize,
+    ) -> Result<(), ProgramError> {
         let mut index: Vec<Entry> = Vec::new();
         for (region, text, first_line) in [(0, subs.before, 1), (1, subs.after, subs.after_line)] {
-            let mut lexer = Lexer::at_line(text, first_line);
+            let mut lexer = Lexer::at_line(text, first_line).with_owords(lcnc);
             let mut block = Block::empty();
             loop {
                 match lexer.next_into(&mut block) {
                     None => break,
                     Some(Err(_)) => lexer.skip_line(),
                     Some(Ok(())) => {
-                        let Some(Some(program)) = program_block(&block) else { continue };
-                        match index.binary_search_by_key(&program, |e| e.program) {
+                        let label = if lcnc {
+                            match block_oword(&block) {
+                                Some((label, keyword, _)) if keyword == "sub" => label,
+                                _ => continue,
+                            }
+                        } else {
+                            let Some(Some(program)) = program_block(&block) else { continue };
+                            OLabel::Number(u64::from(program))
+                        };
+                        match index.binary_search_by(|e| e.label.cmp(&label)) {
                             Ok(i) => {
                                 return Err(ProgramError {
                                     line: block.line,
                                     word: None,
                                     kind: ErrorKind::Subprogram(SubprogramError::DefinedTwice {
-                                        program,
+                                        program: shown_label(&label, lcnc),
                                         first: index[i].line,
                                     }),
                                 })
                             }
                             Err(i) => {
-                                let entry = Entry { program, region, line: block.line, at: lexer.position() };
+                                let passed = block.line < line;
+                                let entry = Entry {
+                                    label,
+                                    region,
+                                    line: block.line,
+                                    at: lexer.position(),
+                                    passed,
+                                    forward: false,
+                                };
                                 index.insert(i, entry);
                             }
                         }
@@ -573,52 +693,64 @@ impl Calls {
     /// subprogram's text.
     pub(crate) fn check_block(&mut self, block: &Block<'_>, machine: &Machine) -> Result<(), ProgramError> {
         let Some(frame) = self.frames.last() else { return Ok(()) };
-        let entry = frame.entry;
+        let entry = self.index.as_ref().and_then(|i| i.get(frame.entry));
+        let (program, line) = entry.map_or((String::new(), 0), |e| (shown_label(&e.label, false), e.line));
         self.blocks += 1;
         if self.blocks > machine.subprogram_block_limit {
-            return Err(sub_err(
-                block,
-                None,
-                SubprogramError::TooManyBlocks { limit: machine.subprogram_block_limit },
-            ));
+            let limit = machine.subprogram_block_limit;
+            return Err(sub_err(block, None, SubprogramError::TooManyBlocks { limit }));
+        }
+        if machine.profile.dialect == Dialect::LinuxCnc {
+            // rs274: M2 in a subroutine ends the program.
+            return Ok(());
         }
         if program_block(block).is_some() {
-            return Err(sub_err(
-                block,
-                None,
-                SubprogramError::NoReturn { program: entry.program, line: entry.line },
-            ));
+            return Err(sub_err(block, None, SubprogramError::NoReturn { program, line }));
         }
         if ends_program(block) && !is_return(block) {
             let word = block.all('M').find(|w| matches!(w.integer(), Some(2 | 30)));
-            return Err(sub_err(block, word, SubprogramError::EndInSubprogram { program: entry.program }));
+            return Err(sub_err(block, word, SubprogramError::EndInSubprogram { program }));
         }
         Ok(())
     }
 
-    /// The error of a subprogram whose text ends before its `M99`, at
+    /// The error of a subprogram whose text ends before its return, at
     /// the last line (`line`).
-    pub(crate) fn no_return(&self, line: usize) -> ProgramError {
-        let entry = self.frames.last().map(|f| f.entry);
+    pub(crate) fn no_return(&self, line: usize, lcnc: bool) -> ProgramError {
+        let entry = self.frames.last().and_then(|f| self.index.as_ref()?.get(f.entry));
         ProgramError {
             line,
             word: None,
             kind: ErrorKind::Subprogram(SubprogramError::NoReturn {
-                program: entry.map_or(0, |e| e.program),
+                program: entry.map_or_else(String::new, |e| shown_label(&e.label, lcnc)),
                 line: entry.map_or(0, |e| e.line),
             }),
         }
     }
 
-    /// Runs `block` if it is a call or a return (`None` if it is neither).
-    /// `main` is the reader's position in the main program, kept by a call
-    /// from it.
+    /// True when `block` needs the index before it runs: a call.
+    pub(crate) fn needs_index(&self, block: &Block<'_>, lcnc: bool) -> bool {
+        !self.has_index()
+            && if lcnc {
+                block_oword(block).is_some_and(|(_, k, _)| k == "call")
+            } else {
+                block.all('M').any(|w| w.integer() == Some(98))
+            }
+    }
+
+    /// Runs `block` if it is a call or a return, or (LinuxCNC) part of a
+    /// definition the path passes over (`None` if it is none of these).
+    /// `main` is the reader's position in the main program, kept by a
+    /// call from it.
     pub(crate) fn flow(
         &mut self,
         block: &Block<'_>,
         machine: &Machine,
         main: Option<Position>,
     ) -> Option<Result<Flow, ProgramError>> {
+        if machine.profile.dialect == Dialect::LinuxCnc {
+            return self.oword_flow(block, machine, main);
+        }
         let call = block.all('M').find(|w| w.integer() == Some(98));
         let ret = block.all('M').find(|w| w.integer() == Some(99));
         match (call, ret) {
@@ -626,12 +758,74 @@ impl Calls {
             (Some(_), Some(w)) => {
                 Some(Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M98" })))
             }
-            (Some(m), None) => Some(self.call(block, m, machine, main).map(|()| Flow::Called)),
-            (None, Some(m)) => Some(self.ret(block, m).map(|main| Flow::Returned { main })),
+            (Some(m), None) => Some(self.m98(block, m, machine, main).map(|()| Flow::Called)),
+            (None, Some(m)) => Some(self.m99(block, m).map(|main| Flow::Returned { main })),
         }
     }
 
-    fn call(
+    /// The LinuxCNC o-words: `sub` … `endsub` passed over on the path,
+    /// `call`, `endsub` and `return` run; the others refused.
+    fn oword_flow(
+        &mut self,
+        block: &Block<'_>,
+        machine: &Machine,
+        main: Option<Position>,
+    ) -> Option<Result<Flow, ProgramError>> {
+        let oword = block_oword(block);
+        if let Some((skipped, _)) = &self.skipping {
+            return Some(match oword {
+                Some((label, k, _)) if k == "endsub" && label == *skipped => {
+                    self.skipping = None;
+                    Ok(Flow::Skipped)
+                }
+                Some((label, k, _)) if k == "sub" => {
+                    Err(oword_err(block, SubprogramError::MisplacedDefinition { program: label.to_string() }))
+                }
+                _ => Ok(Flow::Skipped),
+            });
+        }
+        let (label, keyword, more) = oword?;
+        Some(match keyword.as_str() {
+            "sub" if self.running() => {
+                Err(oword_err(block, SubprogramError::MisplacedDefinition { program: label.to_string() }))
+            }
+            "sub" => {
+                let entry = self.entry_mut(&label);
+                if entry.as_ref().is_some_and(|e| e.forward) {
+                    return Some(Err(oword_err(
+                        block,
+                        SubprogramError::MisplacedDefinition { program: label.to_string() },
+                    )));
+                }
+                if let Some(e) = entry {
+                    e.passed = true;
+                }
+                self.skipping = Some((label, block.line));
+                Ok(Flow::Skipped)
+            }
+            "call" | "endsub" | "return" if more => {
+                Err(oword_err(block, SubprogramError::WordBeside { code: "an o-word" }))
+            }
+            "call" => self.call(block, &label, 1, machine, main, true).map(|()| Flow::Called),
+            "endsub" | "return" => {
+                let runs =
+                    self.frames.last().and_then(|f| self.index.as_ref()?.get(f.entry)).map(|e| &e.label);
+                if runs != Some(&label) {
+                    return Some(Err(oword_err(block, SubprogramError::ReturnOutsideSubprogram)));
+                }
+                Ok(Flow::Returned { main: self.ret() })
+            }
+            _ => Err(oword_err(block, SubprogramError::Unfollowed)),
+        })
+    }
+
+    fn entry_mut(&mut self, label: &OLabel) -> Option<&mut Entry> {
+        let index = self.index.as_mut()?;
+        let i = index.binary_search_by(|e| e.label.cmp(label)).ok()?;
+        index.get_mut(i)
+    }
+
+    fn m98(
         &mut self,
         block: &Block<'_>,
         m98: &Word<'_>,
@@ -650,49 +844,77 @@ impl Calls {
         };
         let (program, repeats) =
             call_number(p).map_err(|rule| sub_err(block, Some(p), SubprogramError::BadCall(rule)))?;
+        self.call(block, &OLabel::Number(u64::from(program)), repeats, machine, main, false).map_err(
+            |mut e| {
+                e.word = Some(p.text().into_owned());
+                e
+            },
+        )
+    }
+
+    /// Calls `label`, `repeats` times.
+    fn call(
+        &mut self,
+        block: &Block<'_>,
+        label: &OLabel,
+        repeats: u32,
+        machine: &Machine,
+        main: Option<Position>,
+        lcnc: bool,
+    ) -> Result<(), ProgramError> {
         let index = self.index.as_deref().unwrap_or_default();
-        let Ok(i) = index.binary_search_by_key(&program, |e| e.program) else {
-            return Err(sub_err(block, Some(p), SubprogramError::NotFound { program }));
+        let Ok(i) = index.binary_search_by(|e| e.label.cmp(label)) else {
+            return Err(oword_err(block, SubprogramError::NotFound { program: shown_label(label, lcnc) }));
         };
-        let entry = index[i];
         if self.frames.len() >= usize::from(machine.subprogram_nesting) {
-            return Err(sub_err(
-                block,
-                Some(p),
-                SubprogramError::TooDeep { limit: machine.subprogram_nesting },
-            ));
+            return Err(oword_err(block, SubprogramError::TooDeep { limit: machine.subprogram_nesting }));
         }
         let back = match self.at {
             Some(at) if self.running() => Return::Sub(at),
             _ => Return::Main(main),
         };
-        self.frames.push(Frame { entry, repeats: repeats - 1, back });
+        let Some(entry) = self.index.as_mut().and_then(|x| x.get_mut(i)) else {
+            return Err(oword_err(block, SubprogramError::NotFound { program: shown_label(label, lcnc) }));
+        };
+        if lcnc && !entry.passed {
+            entry.forward = true;
+        }
         self.at = Some((entry.region, entry.at));
+        self.frames.push(Frame { entry: i, repeats: repeats - 1, back });
         Ok(())
     }
 
-    fn ret(&mut self, block: &Block<'_>, m99: &Word<'_>) -> Result<Option<Option<Position>>, ProgramError> {
+    fn m99(&mut self, block: &Block<'_>, m99: &Word<'_>) -> Result<Option<Option<Position>>, ProgramError> {
         if let Some(w) = block.words.iter().find(|w| !std::ptr::eq(*w, m99)) {
             return Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M99" }));
         }
-        let Some(frame) = self.frames.last_mut() else {
+        if !self.running() {
             return Err(sub_err(block, Some(m99), SubprogramError::ReturnOutsideSubprogram));
-        };
+        }
+        Ok(self.ret())
+    }
+
+    /// The return of the subprogram running: its next run, or back to
+    /// its caller (`Some` with the main program's position, when the
+    /// caller is the main program).
+    fn ret(&mut self) -> Option<Option<Position>> {
+        let frame = self.frames.last_mut()?;
         if frame.repeats > 0 {
             frame.repeats -= 1;
-            self.at = Some((frame.entry.region, frame.entry.at));
-            return Ok(None);
+            let entry = self.index.as_ref()?.get(frame.entry)?;
+            self.at = Some((entry.region, entry.at));
+            return None;
         }
         let back = frame.back;
         self.frames.pop();
         match back {
             Return::Sub(at) => {
                 self.at = Some(at);
-                Ok(None)
+                None
             }
             Return::Main(at) => {
                 self.at = None;
-                Ok(Some(at))
+                Some(at)
             }
         }
     }
