@@ -53,7 +53,27 @@ M99
 
 #[test]
 fn calls_run_the_subprogram_in_their_place_repeated_and_nested() {
-    let got = run(NESTED, &gsk980()).unwrap();
+    // The same call rules on every FANUC and GSK profile (FANUC reads a
+    // length without a point in increments: written with points there).
+    for (profile, program) in [
+        (ProfileName::Gsk980, NESTED.to_string()),
+        (ProfileName::Gsk988, NESTED.to_string()),
+        (
+            ProfileName::Fanuc,
+            NESTED
+                .replace("X100 Z10", "X100. Z10.")
+                .replace("X80 Z5", "X80. Z5.")
+                .replace("X90", "X90.")
+                .replace("U-2", "U-2.")
+                .replace("W-1", "W-1."),
+        ),
+    ] {
+        let got = run(&program, &Machine::new(profile)).unwrap();
+        assert_eq!(got, nested_want(), "{profile:?}");
+    }
+}
+
+fn nested_want() -> Vec<Run> {
     let want = vec![
         (1, None, None), // G50 sets the position: a block echoed, not a move
         (2, None, None),
@@ -67,7 +87,7 @@ fn calls_run_the_subprogram_in_their_place_repeated_and_nested() {
         (13, Some(86_000), Some(2_000)),
         (7, None, None),
     ];
-    assert_eq!(got, want);
+    want
 }
 
 #[test]
