@@ -558,3 +558,41 @@ fn the_reference_makes_a_linuxcnc_g76_a_pass_at_a_time() {
     assert_eq!((few, many), ((2 + 21) * 4 + 1, (2 + 2_001) * 4 + 1));
     assert!(large * 10 <= small * 11 + 4_096, "{small} -> {large}");
 }
+
+#[test]
+fn the_reference_makes_a_g75_1_a_peck_at_a_time() {
+    // Issue 29 (R-G75RANGE): the reference (`--engine spec`) held a
+    // G75.1's moves to check their range; it now checks them as it makes
+    // them, keeps none, and makes them again as they are taken. A groove
+    // of a few pecks and one of thousands: the same peak, and the same
+    // moves as the engine's (an independent implementation).
+    let measure = |depth: u32, width: u32| {
+        let text = format!(
+            "M03 S800\nG00 X210 Z5\nG75.1 X200 Z0 P2000 Q3000 H-{depth} D-{width}\nG75.1 R0.5 U0.4 W0.2 I3 J1\nM30\n"
+        );
+        let machine = Machine::new(ProfileName::Gsk980);
+        let program = cycleref_spec::read(&text, &machine).expect("reads");
+        let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+        let engine: Vec<_> = cycleref_spec::pipeline::expand(cycle, Engine::Impl).expect("expands").collect();
+        let mut reference = Vec::new();
+        let p = peak(|| {
+            let mut moves = cycleref_spec::pipeline::expand(cycle, Engine::Spec).expect("expands");
+            // Compared as they come, none kept.
+            for (i, m) in engine.iter().enumerate() {
+                if moves.next().as_ref() != Some(m) {
+                    reference.push(i);
+                    break;
+                }
+            }
+            if moves.next().is_some() {
+                reference.push(engine.len());
+            }
+        });
+        assert!(reference.is_empty(), "the reference differs from the engine at move {reference:?}");
+        (engine.len(), p)
+    };
+    let ((few, small), (many, large)) = (measure(6, 8), measure(60, 400));
+    eprintln!("reference, G75.1: peak live bytes {small} for {few} moves, {large} for {many}");
+    assert!(many > 50 * few, "{few} -> {many} moves");
+    assert!(large * 10 <= small * 11 + 4_096, "{small} -> {large}");
+}

@@ -345,7 +345,7 @@ impl Path {
     }
 }
 
-/// Twin: `spec/src/g75/path.rs`, `rough_moves` (steps ②–⑧) and
+/// Twin: `spec/src/g75/mod.rs`, `Cursor::step` (steps ②–⑧) and
 /// `spec/src/g75/roughing.rs`, `pecks` (R-G75PECK: peck j to `min(top +
 /// j·Δi, bottom)`, a retract to `max(top, end − e_x)` after each one that
 /// did not reach the bottom, none when e = 0).
@@ -502,7 +502,7 @@ fn local_of(g: &Square, p: Point) -> At {
     (g.sz * (p.z - s.z), g.sx * (p.x - s.x))
 }
 
-/// Twin: `spec/src/g75/path.rs`, `absolute` (R-G75RANGE: X checked before
+/// Twin: `spec/src/g75/path.rs`, `LocalFrame::absolute` (R-G75RANGE: X checked before
 /// Z; no value here lies beyond `i64`, so none is saturated).
 fn absolute(g: &Square, p: At) -> Result<Point, CycleError> {
     let s = g.cycle.start;

@@ -299,9 +299,7 @@ pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError>
         (Engine::Impl, Cycle::G92(c)) => Inner::G92(cycleref::expand_g92(&c.cycle)?),
         (Engine::Spec, Cycle::G76(c)) => Inner::Reference(Box::new(crate::g76::moves(&c.cycle)?)),
         (Engine::Spec, Cycle::G32(c)) => Inner::Reference(Box::new(crate::g32::expand(&c.g32)?.into_iter())),
-        (Engine::Spec, Cycle::G75(c)) => {
-            Inner::Reference(Box::new(crate::g75::expand(&c.cycle)?.into_iter()))
-        }
+        (Engine::Spec, Cycle::G75(c)) => Inner::Reference(Box::new(crate::g75::moves(&c.cycle)?)),
         (Engine::Spec, Cycle::G92(c)) => Inner::Reference(Box::new(crate::g92::moves(&c.cycle)?)),
         (Engine::Impl, Cycle::LinuxCnc(c)) => Inner::LinuxCnc(cycleref::expand_linuxcnc(&c.cycle)?),
         (Engine::Spec, Cycle::LinuxCnc(c)) => Inner::Reference(Box::new(crate::linuxcnc::moves(&c.cycle)?)),

@@ -63,8 +63,8 @@ pub use region::*;
 pub use roughing::*;
 pub use rounding::*;
 
-/// Expands a G75.1 cycle into its moves (`docs/G75.md` §8), in absolute
-/// X/Z, every move with `pass: None`:
+/// The moves of a G75.1 cycle (`docs/G75.md` §8), in absolute X/Z, every
+/// move with `pass: None`, one at a time:
 ///
 /// 1. `Approach`: rapid to A11 = `(A_11, y_top)` (step ① "刀具从当前起点定位到
 ///    粗加工起点 A11"), whatever J is;
@@ -97,12 +97,83 @@ pub use rounding::*;
 /// R-G75RANGE: the coordinates are checked after the moves are made, in
 /// move order, each move's end X then Z, then an arc's centre X then Z.
 ///
+/// Validate, then stream: every value is decided and every move made and
+/// checked once, keeping none, so that any alarm comes before the first
+/// move; then the moves are made again as they are taken, a plunge's peck
+/// at a time. Memory is the plan's (the contours' few points), whatever
+/// the number of layers, plunges and pecks.
+///
 /// # Errors
 ///
 /// The manual's alarms, as [`CycleError`].
 ///
 /// Twin: `impl/src/engine/g75/mod.rs`, `expand_g75`.
+pub fn moves(c: &G75Cycle) -> Result<impl Iterator<Item = Move> + Clone, CycleError> {
+    let plan = plan(c)?;
+    // Every move made and its coordinates checked, in move order; none kept.
+    let mut check = Cursor::new(plan);
+    let mut chunk = Vec::new();
+    while check.next_chunk(&mut chunk) {
+        for m in chunk.drain(..) {
+            absolute_move(&check.plan.frame, &m)?;
+        }
+    }
+    let mut cursor = Cursor::new(check.plan);
+    let mut local = Vec::new();
+    Ok(crate::pass::PassStream::new(move |out: &mut Vec<Move>| {
+        local.clear();
+        let more = cursor.next_chunk(&mut local);
+        // Checked above: the same moves, so the same coordinates.
+        out.extend(local.iter().filter_map(|m| absolute_move(&cursor.plan.frame, m).ok()));
+        more
+    }))
+}
+
+/// The moves of a G75.1 cycle, collected: [`moves`] for a caller that
+/// keeps them all (tests, and the differential comparisons).
+///
+/// # Errors
+///
+/// As [`moves`].
 pub fn expand(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
+    Ok(moves(c)?.collect())
+}
+
+/// `m` in absolute X/Z (R-G75RANGE: its end X then Z, then an arc's
+/// centre X then Z).
+fn absolute_move(frame: &LocalFrame, m: &LocalMove) -> Result<Move, CycleError> {
+    let to = frame.absolute(m.to)?;
+    let motion = match m.motion {
+        LocalMotion::Rapid => Motion::Rapid,
+        LocalMotion::Feed => Motion::Feed,
+        LocalMotion::Arc { centre, clockwise } => Motion::Arc { centre: frame.absolute(centre)?, clockwise },
+    };
+    Ok(Move { motion, to, role: m.role, pass: None })
+}
+
+/// Every value of a cycle decided, in the order of R-G75DECIDE: what the
+/// moves are made from, in integers (the groove's exact values are made
+/// again from the cycle for each batch of layers: they are not `Send`).
+#[derive(Clone, Debug)]
+struct Plan {
+    cycle: G75Cycle,
+    frame: LocalFrame,
+    /// `Δk`, `Δi` and `e_x` (`Groove::step`, `::peck`, `::retract`).
+    step: i128,
+    peck: i128,
+    retract: i128,
+    y_top: i128,
+    /// The layers (J0, J1; 0 for J2), each checked ([`check_layers`]).
+    layers: i128,
+    a11: LocalPoint,
+    /// The rough contour's points (J0, J1).
+    contour: Vec<LocalPoint>,
+    /// The finishing contour's start and moves (J1, J2).
+    finish: Option<(LocalPoint, Vec<ContourMove>)>,
+    from: LocalPoint,
+}
+
+fn plan(c: &G75Cycle) -> Result<Plan, CycleError> {
     c.validate()?;
     let g = groove(c);
     // R-G75DECIDE: values are decided in this order (corners, last layer,
@@ -111,49 +182,227 @@ pub fn expand(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
     check_tool_fits(&g)?;
     check_ridges(&g)?;
     let y_top = y_top(&g)?;
-    let layers = if c.path.roughs() { rough_layers(&g, y_top)? } else { Vec::new() };
-    let a11 = match layers.first() {
-        Some(layer) => LocalPoint::new(layer.range.first, y_top),
-        None => LocalPoint::new(plunge_range(&g, 1)?.first, y_top),
+    let layers = if c.path.roughs() { check_layers(&g, y_top)? } else { 0 };
+    let a11 = if layers >= 1 {
+        LocalPoint::new(layer(&g, 1, y_top)?.range.first, y_top)
+    } else {
+        LocalPoint::new(plunge_range(&g, 1)?.first, y_top)
     };
-    let mut path = Path { at: local_of(&g, c.from), moves: Vec::new() };
-    path.rapid(a11, Role::Approach);
-    if c.path.roughs() {
-        rough_moves(&g, &mut path, &layers, a11, y_top);
-        let contour = rough_contour(&g, y_top)?;
-        let mut points = contour.iter();
-        if let Some(r0) = points.next() {
-            path.rapid_u(r0.u, Role::RoughContour);
+    let contour = if c.path.roughs() { rough_contour(&g, y_top)? } else { Vec::new() };
+    let finish = if c.path.finishes() { Some(finish_contour(&g)?) } else { None };
+    let from = local_of(&g, c.from);
+    let frame = LocalFrame::of(&g);
+    Ok(Plan {
+        cycle: *c,
+        frame,
+        step: g.step,
+        peck: g.peck,
+        retract: g.retract,
+        y_top,
+        layers,
+        a11,
+        contour,
+        finish,
+        from,
+    })
+}
+
+/// Where the moves have got to.
+#[derive(Clone, Copy, Debug)]
+enum Stage {
+    Approach,
+    /// Layer `m` next (its change of layer, then its plunges).
+    Layer(i128),
+    /// Plunge `n` of `layer` next.
+    Plunge(Layer, i128),
+    /// Peck `j` of plunge `n` (at `a`) of `layer` next.
+    Peck(Layer, i128, i128, i128),
+    /// The end of the roughing: back to A11, the rough contour.
+    RoughContour,
+    Finish,
+    Return,
+    Done,
+}
+
+/// The moves of a [`Plan`], made a few at a time: steps 1 to 10 of
+/// `docs/G75.md` §8.
+///
+/// The roughing moves (steps ②–⑧):
+/// For each layer m: from layer 2 on, `LayerChange(m)` rapids along Z to
+/// `(A_m1, top of layer m−1)` and along X to `(A_m1, y_(m−1))` (step ⑧
+/// "Z 轴快速定位到下一层起点 Z 轴处 Cmf，执行②" and ② "刀具定位到层起点 Am1");
+/// then each plunge: its pecks (steps ③–⑤: `Peck` feeds, `PeckRetract`
+/// rapids), `PlungeRetract` to `(A_mn, top)` (step ⑥ "径向(X 轴)快速移动退刀至
+/// Amn 点"), and, before every plunge but the first, the `Step` rapid along Z
+/// (step ⑦ "轴向(Z 轴)快速移动进刀 … Δk"). After the last layer, `Approach`
+/// rapids along X to `y_top` and along Z to A11 (step ⑧ "径向(X 轴)快速移动到
+/// 粗加工起点；然后回到粗加工起点 A11").
+///
+/// R-G75ROLES: `Step(p)` and the pecks carry the plunge they belong to or
+/// move to; `LayerChange(m)` the layer it moves to.
+///
+///
+/// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`.
+#[derive(Clone, Debug)]
+struct Cursor {
+    plan: Plan,
+    path: Path,
+    stage: Stage,
+    /// Layers `first..first + len` (at most [`LAYER_BATCH`]).
+    layers: Vec<Layer>,
+    first: i128,
+}
+
+/// How many layers a stream decides at a time (from the groove made again
+/// for them).
+const LAYER_BATCH: i128 = 1024;
+
+impl Cursor {
+    fn new(plan: Plan) -> Cursor {
+        let at = plan.from;
+        Cursor {
+            plan,
+            path: Path { at, moves: Vec::new() },
+            stage: Stage::Approach,
+            layers: Vec::new(),
+            first: 1,
         }
-        for p in points {
-            path.go(LocalMotion::Feed, *p, Role::RoughContour);
-        }
-        path.rapid_u(a11.u, Role::RoughContour);
     }
-    if c.path.finishes() {
-        let (start, moves) = finish_contour(&g)?;
-        path.rapid_u(start.u, Role::FinishContour);
-        path.rapid_y(start.y, Role::FinishContour);
-        for m in &moves {
-            path.go(m.motion, m.to, Role::FinishContour);
+
+    /// Layer `m`, from the batch that holds it (decided by `plan` already,
+    /// so never an error here: `None` would end the moves).
+    fn layer(&mut self, m: i128) -> Option<Layer> {
+        let held = usize::try_from(m - self.first).ok().and_then(|i| self.layers.get(i));
+        if let Some(layer) = held {
+            return Some(*layer);
         }
-        path.rapid_y(y_top.min(path.at.y), Role::Return);
-        path.rapid_u(0, Role::Return);
-        path.rapid_y(0, Role::Return);
+        let g = groove(&self.plan.cycle);
+        self.layers.clear();
+        self.first = m;
+        for k in m..=(m + LAYER_BATCH - 1).min(self.plan.layers) {
+            self.layers.push(layer(&g, k, self.plan.y_top).ok()?);
+        }
+        self.layers.first().copied()
     }
-    path.rapid(local_of(&g, c.from), Role::Return);
-    // R-G75RANGE: checked in move order, end point then arc centre.
-    let mut out = Vec::with_capacity(path.moves.len());
-    for m in &path.moves {
-        let to = absolute(&g, m.to)?;
-        let motion = match m.motion {
-            LocalMotion::Rapid => Motion::Rapid,
-            LocalMotion::Feed => Motion::Feed,
-            LocalMotion::Arc { centre, clockwise } => {
-                Motion::Arc { centre: absolute(&g, centre)?, clockwise }
+
+    /// Appends the next few moves (those of one peck, at most) to `out`;
+    /// false once there are none.
+    fn next_chunk(&mut self, out: &mut Vec<LocalMove>) -> bool {
+        loop {
+            self.step();
+            if !self.path.moves.is_empty() {
+                out.append(&mut self.path.moves);
+                return true;
             }
-        };
-        out.push(Move { motion, to, role: m.role, pass: None });
+            if matches!(self.stage, Stage::Done) {
+                return false;
+            }
+        }
     }
-    Ok(out)
+
+    /// Makes the moves of the current stage and moves to the next.
+    #[allow(clippy::too_many_lines, reason = "one arm a stage of docs/G75.md §8, in path order")]
+    fn step(&mut self) {
+        let fetched = match self.stage {
+            Stage::Layer(m) if m <= self.plan.layers => self.layer(m),
+            _ => None,
+        };
+        let (p, path) = (&self.plan, &mut self.path);
+        self.stage = match self.stage {
+            Stage::Approach => {
+                path.rapid(p.a11, Role::Approach);
+                if p.layers >= 1 {
+                    Stage::Layer(1)
+                } else if !p.contour.is_empty() {
+                    Stage::RoughContour
+                } else {
+                    Stage::Finish
+                }
+            }
+            Stage::Layer(m) if m > p.layers => {
+                path.rapid_y(p.y_top, Role::Approach);
+                path.rapid_u(p.a11.u, Role::Approach);
+                Stage::RoughContour
+            }
+            Stage::Layer(m) => {
+                // Decided by `plan` (check_layers): never missing here.
+                let Some(layer) = fetched else {
+                    self.stage = Stage::Done;
+                    return;
+                };
+                let m32 = u32::try_from(m).unwrap_or(u32::MAX);
+                // R-G75ROLES: LayerChange(m) names the layer it moves to.
+                if m >= 2 {
+                    path.rapid_u(layer.range.first, Role::LayerChange(m32));
+                    path.rapid_y(layer.top, Role::LayerChange(m32));
+                }
+                Stage::Plunge(layer, 1)
+            }
+            Stage::Plunge(layer, n) if n > layer.range.count(p.step) => Stage::Layer(layer.number + 1),
+            Stage::Plunge(layer, n) => {
+                let a = layer.range.position(p.step, n);
+                if n >= 2 {
+                    path.rapid_u(a, Role::Step(plunge(&layer, n)));
+                }
+                Stage::Peck(layer, n, a, 1)
+            }
+            Stage::Peck(layer, n, a, j) => {
+                // R-G75PECK: peck j feeds to min(top + j·Δi, bottom); after a
+                // peck short of the bottom the tool retracts to
+                // max(top, end − e) (none when e = 0).
+                let role = plunge(&layer, n);
+                let to = (layer.top + j * p.peck).min(layer.bottom);
+                path.go(LocalMotion::Feed, LocalPoint::new(a, to), Role::Peck(role));
+                if to >= layer.bottom {
+                    path.rapid(LocalPoint::new(a, layer.top), Role::PlungeRetract(role));
+                    Stage::Plunge(layer, n + 1)
+                } else {
+                    if p.retract > 0 {
+                        path.rapid(
+                            LocalPoint::new(a, layer.top.max(to - p.retract)),
+                            Role::PeckRetract(role),
+                        );
+                    }
+                    Stage::Peck(layer, n, a, j + 1)
+                }
+            }
+            Stage::RoughContour => {
+                let mut points = p.contour.iter();
+                if let Some(r0) = points.next() {
+                    path.rapid_u(r0.u, Role::RoughContour);
+                    for q in points {
+                        path.go(LocalMotion::Feed, *q, Role::RoughContour);
+                    }
+                    path.rapid_u(p.a11.u, Role::RoughContour);
+                }
+                Stage::Finish
+            }
+            Stage::Finish => {
+                if let Some((start, moves)) = &p.finish {
+                    path.rapid_u(start.u, Role::FinishContour);
+                    path.rapid_y(start.y, Role::FinishContour);
+                    for m in moves {
+                        path.go(m.motion, m.to, Role::FinishContour);
+                    }
+                    path.rapid_y(p.y_top.min(path.at.y), Role::Return);
+                    path.rapid_u(0, Role::Return);
+                    path.rapid_y(0, Role::Return);
+                }
+                Stage::Return
+            }
+            Stage::Return => {
+                path.rapid(p.from, Role::Return);
+                Stage::Done
+            }
+            Stage::Done => Stage::Done,
+        };
+    }
+}
+
+/// R-G75ROLES: plunge `n` of `layer`, as the roles name it.
+fn plunge(layer: &Layer, n: i128) -> cycleref::moves::Plunge {
+    cycleref::moves::Plunge {
+        layer: u32::try_from(layer.number).unwrap_or(u32::MAX),
+        number: u32::try_from(n).unwrap_or(u32::MAX),
+    }
 }

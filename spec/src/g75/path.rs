@@ -10,7 +10,7 @@
 //! `proofs/src/g75_exact.rs` (each there names its twin here).
 
 use cycleref::error::{CycleError, Field};
-use cycleref::moves::{Plunge, Role};
+use cycleref::moves::Role;
 use cycleref::units::{Length, Point, MAX_LENGTH};
 
 use super::*;
@@ -24,6 +24,7 @@ pub(super) struct LocalMove {
 }
 
 /// The tool path being built: the current position and the moves.
+#[derive(Clone, Debug)]
 pub(super) struct Path {
     pub(super) at: LocalPoint,
     pub(super) moves: Vec<LocalMove>,
@@ -73,70 +74,47 @@ pub(super) fn local_of(g: &Groove, p: Point) -> LocalPoint {
 /// (saturated to the `i64` range if it lies beyond it).
 ///
 /// Twin: `impl/src/engine/g75/frame.rs`, `Frame::point`.
+#[cfg(test)]
 pub(super) fn absolute(g: &Groove, p: LocalPoint) -> Result<Point, CycleError> {
-    let s = g.cycle.start;
-    let x = i128::from(s.x).saturating_add(g.sx.saturating_mul(p.y));
-    let z = i128::from(s.z).saturating_add(g.sz.saturating_mul(p.u));
-    // R-G75RANGE: X before Z; the value saturates to i64.
-    let checked = |v: i128| -> Result<i64, CycleError> {
-        if v.abs() > i128::from(MAX_LENGTH) {
-            let value = i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX });
-            return Err(CycleError::OutOfRange {
-                field: Field::PassCoordinate,
-                value: Length::new(value, g.cycle.units),
-            });
-        }
-        Ok(i64::try_from(v).unwrap_or_default())
-    };
-    let x = checked(x)?;
-    let z = checked(z)?;
-    Ok(Point::new(x, z))
+    LocalFrame::of(g).absolute(p)
 }
 
-/// The roughing moves (steps ②–⑧) of the planned layers.
-///
-/// For each layer m: from layer 2 on, `LayerChange(m)` rapids along Z to
-/// `(A_m1, top of layer m−1)` and along X to `(A_m1, y_(m−1))` (step ⑧
-/// "Z 轴快速定位到下一层起点 Z 轴处 Cmf，执行②" and ② "刀具定位到层起点 Am1");
-/// then each plunge: its pecks (steps ③–⑤: `Peck` feeds, `PeckRetract`
-/// rapids), `PlungeRetract` to `(A_mn, top)` (step ⑥ "径向(X 轴)快速移动退刀至
-/// Amn 点"), and, before every plunge but the first, the `Step` rapid along Z
-/// (step ⑦ "轴向(Z 轴)快速移动进刀 … Δk"). After the last layer, `Approach`
-/// rapids along X to `y_top` and along Z to A11 (step ⑧ "径向(X 轴)快速移动到
-/// 粗加工起点；然后回到粗加工起点 A11").
-///
-/// R-G75ROLES: `Step(p)` and the pecks carry the plunge they belong to or
-/// move to; `LayerChange(m)` the layer it moves to.
-///
-/// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`.
-pub(super) fn rough_moves(g: &Groove, path: &mut Path, layers: &[Layer], a11: LocalPoint, y_top: i128) {
-    for layer in layers {
-        let m = layer.number;
-        let m32 = u32::try_from(m).unwrap_or(u32::MAX);
-        // R-G75ROLES: LayerChange(m) names the layer it moves to, Step the
-        // plunge it moves to, the pecks and retracts their own plunge.
-        if m >= 2 {
-            path.rapid_u(layer.range.first, Role::LayerChange(m32));
-            path.rapid_y(layer.top, Role::LayerChange(m32));
-        }
-        let plunges = layer.range.count(g.step);
-        for n in 1..=plunges {
-            let plunge = Plunge { layer: m32, number: u32::try_from(n).unwrap_or(u32::MAX) };
-            let a = layer.range.position(g.step, n);
-            if n >= 2 {
-                path.rapid_u(a, Role::Step(plunge));
-            }
-            for peck in pecks(g, layer.top, layer.bottom) {
-                path.go(LocalMotion::Feed, LocalPoint::new(a, peck.to), Role::Peck(plunge));
-                if let Some(r) = peck.retract {
-                    path.rapid(LocalPoint::new(a, r), Role::PeckRetract(plunge));
-                }
-            }
-            path.rapid(LocalPoint::new(a, layer.top), Role::PlungeRetract(plunge));
-        }
+/// What the map to absolute X/Z needs of a groove: S, the signs and the units, in
+/// integers (a stream keeps it; the groove's exact values stay behind).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct LocalFrame {
+    start: Point,
+    sx: i128,
+    sz: i128,
+    units: cycleref::Units,
+}
+
+impl LocalFrame {
+    pub(super) fn of(g: &Groove) -> LocalFrame {
+        LocalFrame { start: g.cycle.start, sx: g.sx, sz: g.sz, units: g.cycle.units }
     }
-    path.rapid_y(y_top, Role::Approach);
-    path.rapid_u(a11.u, Role::Approach);
+
+    /// `p` in absolute X/Z (`docs/G75.md` §2: `Z = Z_S + sz·u`, `X = X_S
+    /// + sx·y`), X checked first, then Z (R-G75RANGE).
+    pub(super) fn absolute(&self, p: LocalPoint) -> Result<Point, CycleError> {
+        let s = self.start;
+        let x = i128::from(s.x).saturating_add(self.sx.saturating_mul(p.y));
+        let z = i128::from(s.z).saturating_add(self.sz.saturating_mul(p.u));
+        // R-G75RANGE: X before Z; the value saturates to i64.
+        let checked = |v: i128| -> Result<i64, CycleError> {
+            if v.abs() > i128::from(MAX_LENGTH) {
+                let value = i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX });
+                return Err(CycleError::OutOfRange {
+                    field: Field::PassCoordinate,
+                    value: Length::new(value, self.units),
+                });
+            }
+            Ok(i64::try_from(v).unwrap_or_default())
+        };
+        let x = checked(x)?;
+        let z = checked(z)?;
+        Ok(Point::new(x, z))
+    }
 }
 
 #[cfg(test)]

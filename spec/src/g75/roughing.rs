@@ -242,10 +242,36 @@ pub struct Layer {
     pub range: PlungeRange,
 }
 
-/// The roughing layers, after the closed-form count of their pecks
-/// (`docs/G75.md` §9): `Σ_m (plunges of m) × ceil((y_m − top_m)/Δi)`,
+/// The roughing layers, collected ([`check_layers`], then [`layer`] for
+/// each): for tests; the moves take them one at a time.
+///
+/// # Errors
+///
+/// As [`check_layers`].
+pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
+    let count = check_layers(g, y_top)?;
+    (1..=count).map(|m| layer(g, m, y_top)).collect()
+}
+
+/// Layer `m` (1-based): its top, its bottom and its plunges.
+///
+/// # Errors
+///
+/// [`CycleError::UndecidedRounding`] (from its plunge range).
+pub fn layer(g: &Groove, m: i128, y_top: i128) -> Result<Layer, CycleError> {
+    Ok(Layer {
+        number: m,
+        top: layer_top(g, m, y_top),
+        bottom: layer_bottom(g, m),
+        range: plunge_range(g, m)?,
+    })
+}
+
+/// The number of roughing layers, after the closed-form count of their
+/// pecks (`docs/G75.md` §9): `Σ_m (plunges of m) × ceil((y_m − top_m)/Δi)`,
 /// refused when above [`MAX_PECKS`]. Every layer has at least one peck, so
-/// more layers than the limit are refused at once.
+/// more layers than the limit are refused at once. Every layer's plunge
+/// range is decided here, in layer order; none is kept.
 ///
 /// R-G75PECKJ2: only a cycle that roughs (J0, J1) makes pecks; J2 has none
 /// and is never refused for them (and this is not called for it).
@@ -257,7 +283,7 @@ pub struct Layer {
 /// Twin: `impl/src/engine/g75/roughing.rs`, `check_peck_count`.
 ///
 /// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `rough_layers`.
-pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
+pub fn check_layers(g: &Groove, y_top: i128) -> Result<i128, CycleError> {
     let too_many = CycleError::TooManyPecks { limit: MAX_PECKS };
     let count = layer_count(g);
     let limit = i128::from(MAX_PECKS);
@@ -267,7 +293,6 @@ pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
         return Err(too_many);
     }
     let mut total = 0_i128;
-    let mut layers = Vec::new();
     for m in 1..=count {
         let (top, bottom) = (layer_top(g, m, y_top), layer_bottom(g, m));
         let range = plunge_range(g, m)?;
@@ -277,7 +302,6 @@ pub fn rough_layers(g: &Groove, y_top: i128) -> Result<Vec<Layer>, CycleError> {
         if total > limit {
             return Err(too_many);
         }
-        layers.push(Layer { number: m, top, bottom, range });
     }
-    Ok(layers)
+    Ok(count)
 }

@@ -5,8 +5,8 @@
 //!
 //! Twins: `spec/src/g75/roughing.rs` (`layer_count`, `layer_bottom`,
 //! `plunge_range`, `peck_count`, `pecks`, `rough_layers`) and
-//! `spec/src/g75/path.rs`, `rough_moves`, which build the same moves as
-//! whole lists.
+//! `spec/src/g75/mod.rs`, `Cursor::step`, which makes the same moves a
+//! peck at a time.
 
 use super::exact::{plunges_at, Evaluator, Geometry};
 use super::frame::Frame;
@@ -229,7 +229,7 @@ impl G75Moves {
 
     /// The next roughing move, or `None` at the end of the roughing.
     ///
-    /// Twin: `spec/src/g75/path.rs`, `rough_moves` (with
+    /// Twin: `spec/src/g75/mod.rs`, `Cursor::step` (with
     /// `spec/src/g75/roughing.rs`, `pecks`).
     pub(super) fn next_rough(&mut self) -> Option<Move> {
         let mut loops = crate::loop_counters::count!(G75_ROUGH_NEXT);
