@@ -313,15 +313,19 @@ fn the_program_ends_at_m30_and_subprograms_run_where_they_are_called() {
     assert!(check::check_bytes(&job, ours.as_bytes(), false, 0).expect("checks").agree());
     // From a file (read a piece at a time, the subprograms read again from
     // its start) as from memory.
-    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("subprograms-sub.nc");
-    std::fs::write(&path, with_calls).expect("write");
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
-        .args(["expand", "--profile", "gsk988"])
-        .arg(&path)
-        .output()
-        .expect("runs");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert_eq!(String::from_utf8_lossy(&out.stdout), ours);
+    let from_file = |program: &str, profile: &str| -> String {
+        let path =
+            std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("subprograms-{profile}.nc"));
+        std::fs::write(&path, program).expect("write");
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
+            .args(["expand", "--profile", profile])
+            .arg(&path)
+            .output()
+            .expect("runs");
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    assert_eq!(from_file(with_calls, "gsk988"), ours);
     // Subprograms before the main program (called, not run as it) and
     // after it, from a file (the main program's start found by a second
     // reading, the file read from there) and from memory: the executed
@@ -331,14 +335,7 @@ fn the_program_ends_at_m30_and_subprograms_run_where_they_are_called() {
     let want = "O0001\nG50 X100 Z10\nM03 S500\nG00 X80 Z5\nG00 U-2\nG00 W-1\nG00 X90\nG00 U-4\nM30\n";
     let gsk980 = Machine::new(ProfileName::Gsk980);
     assert_eq!(expand("before.nc", before_and_after.as_bytes(), &gsk980).expect("expands"), want);
-    std::fs::write(&path, before_and_after).expect("write");
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cycleref"))
-        .args(["expand", "--profile", "gsk980"])
-        .arg(&path)
-        .output()
-        .expect("runs");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert_eq!(String::from_utf8_lossy(&out.stdout), want);
+    assert_eq!(from_file(before_and_after, "gsk980"), want);
     // LinuxCNC's M2 ends the program too.
     let p = "G18 G21 G7\nM3 S500\nG0 X22 Z2\nM2\nG0 X1 X2\n";
     assert_eq!(

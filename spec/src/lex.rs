@@ -708,6 +708,21 @@ impl<'a> Lexer<'a> {
         self.line_start
     }
 
+    /// The next block of a line the lexer can read, passing over the
+    /// others ([`skip_line`](Lexer::skip_line)): for the readers that look
+    /// ahead for the subprograms, which report nothing of a line that does
+    /// not run.
+    pub(crate) fn next_readable(&mut self) -> Option<Block<'a>> {
+        let mut block = Block::empty();
+        loop {
+            match self.next_into(&mut block) {
+                None => return None,
+                Some(Err(_)) => self.skip_line(),
+                Some(Ok(())) => return Some(block),
+            }
+        }
+    }
+
     /// The number of the line read last (0 before the first).
     pub(crate) fn line(&self) -> usize {
         self.line

@@ -123,34 +123,26 @@ impl MainStartFinder {
     /// Reads `piece`: where the main program starts, once that is known.
     pub fn feed(&mut self, piece: &[u8]) -> Option<MainStart> {
         let mut lexer = Lexer::at_line(piece, self.line + 1);
-        let mut block = Block::empty();
-        loop {
-            match lexer.next_into(&mut block) {
-                None => break,
-                Some(Err(_)) => lexer.skip_line(),
-                Some(Ok(())) => {
-                    let here =
-                        MainStart { offset: self.offset + lexer.line_start(), lines_before: block.line - 1 };
-                    if program_block(&block).is_some() {
-                        if self.current.is_some() {
-                            // The program before runs into this one: it is the main program.
-                            return self.current;
-                        }
-                        self.current = Some(here);
-                    } else if !block.words.is_empty() {
-                        match self.current {
-                            // Before any program: the main program starts
-                            // at the file's start; after subprograms, here.
-                            None if self.subprograms => return Some(here),
-                            None => return Some(MainStart::default()),
-                            Some(_) if is_return(&block) => {
-                                self.current = None;
-                                self.subprograms = true;
-                            }
-                            Some(start) if ends_program(&block) => return Some(start),
-                            Some(_) => {}
-                        }
+        while let Some(block) = lexer.next_readable() {
+            let here = MainStart { offset: self.offset + lexer.line_start(), lines_before: block.line - 1 };
+            if program_block(&block).is_some() {
+                if self.current.is_some() {
+                    // The program before runs into this one: it is the main program.
+                    return self.current;
+                }
+                self.current = Some(here);
+            } else if !block.words.is_empty() {
+                match self.current {
+                    // Before any program: the main program starts at the
+                    // file's start; after subprograms, here.
+                    None if self.subprograms => return Some(here),
+                    None => return Some(MainStart::default()),
+                    Some(_) if is_return(&block) => {
+                        self.current = None;
+                        self.subprograms = true;
                     }
+                    Some(start) if ends_program(&block) => return Some(start),
+                    Some(_) => {}
                 }
             }
         }
@@ -641,45 +633,32 @@ impl Calls {
         let mut index: Vec<Entry> = Vec::new();
         for (region, text, first_line) in [(0, subs.before, 1), (1, subs.after, subs.after_line)] {
             let mut lexer = Lexer::at_line(text, first_line).with_owords(lcnc);
-            let mut block = Block::empty();
-            loop {
-                match lexer.next_into(&mut block) {
-                    None => break,
-                    Some(Err(_)) => lexer.skip_line(),
-                    Some(Ok(())) => {
-                        let label = if lcnc {
-                            match block_oword(&block) {
-                                Some((label, keyword, _)) if keyword == "sub" => label,
-                                _ => continue,
-                            }
-                        } else {
-                            let Some(Some(program)) = program_block(&block) else { continue };
-                            OLabel::Number(u64::from(program))
-                        };
-                        match index.binary_search_by(|e| e.label.cmp(&label)) {
-                            Ok(i) => {
-                                return Err(ProgramError {
-                                    line: block.line,
-                                    word: None,
-                                    kind: ErrorKind::Subprogram(SubprogramError::DefinedTwice {
-                                        program: shown_label(&label, lcnc),
-                                        first: index[i].line,
-                                    }),
-                                })
-                            }
-                            Err(i) => {
-                                let passed = block.line < line;
-                                let entry = Entry {
-                                    label,
-                                    region,
-                                    line: block.line,
-                                    at: lexer.position(),
-                                    passed,
-                                    forward: false,
-                                };
-                                index.insert(i, entry);
-                            }
-                        }
+            while let Some(block) = lexer.next_readable() {
+                let label = if lcnc {
+                    match block_oword(&block) {
+                        Some((label, keyword, _)) if keyword == "sub" => label,
+                        _ => continue,
+                    }
+                } else {
+                    let Some(Some(program)) = program_block(&block) else { continue };
+                    OLabel::Number(u64::from(program))
+                };
+                match index.binary_search_by(|e| e.label.cmp(&label)) {
+                    Ok(i) => {
+                        return Err(ProgramError {
+                            line: block.line,
+                            word: None,
+                            kind: ErrorKind::Subprogram(SubprogramError::DefinedTwice {
+                                program: shown_label(&label, lcnc),
+                                first: index[i].line,
+                            }),
+                        })
+                    }
+                    Err(i) => {
+                        let passed = block.line < line;
+                        let at = lexer.position();
+                        index
+                            .insert(i, Entry { label, region, line: block.line, at, passed, forward: false });
                     }
                 }
             }
