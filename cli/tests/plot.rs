@@ -305,3 +305,179 @@ fn groove_and_thread_panels_have_a_legend_and_a_scale_note() {
         assert!(has(s), "{s}: {:?}", parsed.texts);
     }
 }
+
+/// A text element's box: where it is drawn and how wide it may be.
+struct TextBox {
+    text: String,
+    left: f64,
+    right: f64,
+    top: f64,
+    bottom: f64,
+}
+
+/// The boxes of every `text` element of `doc`, and the document's width and
+/// height. A text's width is taken as 0.62 em a character (DejaVu Sans,
+/// the first font the plots name, averages under 0.6 em for these labels:
+/// an upper bound), its height 1 em above the baseline and 0.35 em below
+/// (more with `dy`); a `rotate(-90 cx cy)` text stands on its side.
+fn text_boxes(doc: &str) -> (Vec<TextBox>, f64, f64) {
+    let (mut width, mut height) = (0.0, 0.0);
+    let mut boxes = Vec::new();
+    let mut open: Option<std::collections::HashMap<String, String>> = None;
+    let num = |a: &std::collections::HashMap<String, String>, k: &str| -> f64 {
+        a.get(k).and_then(|v| v.trim_end_matches("em").parse().ok()).unwrap_or(0.0)
+    };
+    for event in svg::read(doc).expect("parser") {
+        match event {
+            Event::Tag("svg", Type::Start, attrs) => {
+                width = attrs.get("width").and_then(|v| v.parse().ok()).expect("width");
+                height = attrs.get("height").and_then(|v| v.parse().ok()).expect("height");
+            }
+            Event::Tag("text", Type::Start, attrs) => {
+                open = Some(attrs.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect());
+            }
+            Event::Tag("text", Type::End, _) => open = None,
+            Event::Text(t) => {
+                let Some(a) = &open else { continue };
+                let text = t.trim().to_string();
+                let size = num(a, "font-size");
+                let w = 0.62 * size * text.chars().count() as f64;
+                let (x, y) = (num(a, "x"), num(a, "y") + num(a, "dy") * size);
+                let (left, right) = match a.get("text-anchor").map(String::as_str) {
+                    Some("middle") => (x - w / 2.0, x + w / 2.0),
+                    Some("end") => (x - w, x),
+                    _ => (x, x + w),
+                };
+                let b = if a.get("transform").is_some_and(|t| t.starts_with("rotate(-90")) {
+                    // On its side about (x, y): the length runs along y.
+                    let (top, bottom) = match a.get("text-anchor").map(String::as_str) {
+                        Some("middle") => (y - w / 2.0, y + w / 2.0),
+                        Some("end") => (y, y + w),
+                        _ => (y - w, y),
+                    };
+                    TextBox { text, left: x - size, right: x + 0.35 * size, top, bottom }
+                } else {
+                    TextBox { text, left, right, top: y - size, bottom: y + 0.35 * size }
+                };
+                boxes.push(b);
+            }
+            _ => {}
+        }
+    }
+    (boxes, width, height)
+}
+
+#[test]
+fn no_text_leaves_the_frame_on_any_kind_of_panel() {
+    // Issue 35: every kind of panel (G76 external and internal, G78, G92,
+    // G32, G75.1 square and slope, LinuxCNC's G76, several cycles, and a
+    // trace's divergence with its zoom): every label inside the picture.
+    let ex = |f: &str| format!("{}/../examples/{f}", env!("CARGO_MANIFEST_DIR"));
+    let mut docs = vec![];
+    for (profile, file) in [
+        ("gsk988", "gsk988-m68x6.nc"),
+        ("gsk980", "gsk980-m68x6.nc"),
+        ("fanuc", "fanuc-internal.nc"),
+        ("fanuc", "fanuc-external.nc"),
+        ("gsk980", "gsk980-g78.nc"),
+        ("gsk988", "gsk988-g78.nc"),
+        ("gsk980", "gsk980-g92-o0012.nc"),
+        ("gsk980", "gsk980-g32-runout.nc"),
+        ("gsk980", "gsk980-g75-square.nc"),
+        ("gsk980", "gsk980-g75-slope.nc"),
+        ("gsk980", "gsk980-g75-seed.nc"),
+        ("linuxcnc", "linuxcnc-m20-taper.ngc"),
+        ("linuxcnc", "linuxcnc-internal-inch.ngc"),
+    ] {
+        let out = scratch(&format!("frame-{file}.svg"));
+        let run = Command::new(BIN)
+            .args(["plot", "--profile", profile, &ex(file), "-o"])
+            .arg(&out)
+            .output()
+            .expect("runs");
+        if run.status.success() {
+            docs.push((file.to_string(), std::fs::read_to_string(&out).expect("svg")));
+        } else {
+            // An example written for another increment system (say so in
+            // its header) is not a panel kind of its own.
+            eprintln!("{file}: {}", String::from_utf8_lossy(&run.stderr));
+        }
+    }
+    let trace = trace_with("gsk988", M68, "G32 X61.764 Z-59.000", "G32 X61.728 Z-59.000", "frame-m68-36.nc");
+    let (run, svg) = plot_trace("gsk988", M68, &trace, "frame-m68-36.svg");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    docs.push(("m68 with a divergence".into(), svg));
+    assert!(docs.len() >= 10, "{} panels drawn", docs.len());
+    let mut outside = Vec::new();
+    for (name, doc) in &docs {
+        let (boxes, width, height) = text_boxes(doc);
+        assert!(!boxes.is_empty(), "{name}: no text");
+        for b in boxes {
+            if b.left < 0.0 || b.top < 0.0 || b.right > width || b.bottom > height {
+                let TextBox { text, left, right, top, bottom } = b;
+                outside.push(format!("{name}: `{text}` spans x {left:.0}..{right:.0}, y {top:.0}..{bottom:.0} in {width} x {height}"));
+            }
+        }
+    }
+    assert!(outside.is_empty(), "text outside the picture:\n{}", outside.join("\n"));
+}
+
+/// The points of the first trace polyline (`stroke="#d6278a"`, a `d` of
+/// `M x y L x y …`) in `svg`.
+fn trace_points(svg: &str) -> Vec<(f64, f64)> {
+    for event in svg::read(svg).expect("parser") {
+        if let Event::Tag("path", _, attrs) = event {
+            if attrs.get("stroke").map(|v| v.to_string()).as_deref() == Some("#d6278a") {
+                let d = attrs.get("d").expect("d").to_string();
+                let nums: Vec<f64> = d.split(['M', 'L', ' ']).filter_map(|t| t.parse().ok()).collect();
+                return nums.chunks(2).map(|c| (c[0], c[1])).collect();
+            }
+        }
+    }
+    Vec::new()
+}
+
+/// The Z tick labels of the first panel (the texts on its Z axis, in
+/// order, up to the first that does not grow: the next panel's).
+fn z_ticks(svg: &str) -> Vec<f64> {
+    let mut out: Vec<f64> = Vec::new();
+    for t in svg.split("<text ").filter(|t| t.contains("text-anchor=\"middle\"") && t.contains("y=\"499\"")) {
+        let label = t.split('>').nth(1).and_then(|l| l.split('<').next()).map(str::trim).unwrap_or_default();
+        let Ok(v) = label.parse::<f64>() else { continue };
+        if out.last().is_some_and(|&last| v <= last) {
+            break;
+        }
+        out.push(v);
+    }
+    out
+}
+
+#[test]
+fn the_frame_grows_to_hold_a_trace_that_strays_not_one_that_runs_away() {
+    // Issue 35. M68x6 spans Z10 to Z-62 (72 mm): a trace whose rough pass 3
+    // cuts on to Z-70 strays 8 mm beyond it, and the frame holds all of it
+    // (every point of the trace inside the plot area, 90..880 × 72..480);
+    // one that cuts to Z-900 runs away, and the frame keeps the scale it
+    // has for a trace that does not differ (the same Z ticks), the rest
+    // clipped.
+    let strays = trace_with("gsk988", M68, "G32 X61.764 Z-59.000", "G32 X61.764 Z-70.000", "m68-strays.nc");
+    let (run, svg) = plot_trace("gsk988", M68, &strays, "m68-strays.svg");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let points = trace_points(&svg);
+    assert!(points.len() > 20, "{points:?}");
+    for (x, y) in &points {
+        assert!((90.0..=880.0).contains(x) && (72.0..=480.0).contains(y), "({x}, {y}) outside the plot area");
+    }
+    let away = trace_with("gsk988", M68, "G32 X61.764 Z-59.000", "G32 X61.764 Z-900.000", "m68-away.nc");
+    let (run, svg) = plot_trace("gsk988", M68, &away, "m68-away.svg");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let same = trace_with("gsk988", M68, "G32 X61.764 Z-59.000", "G32 X61.764 Z-59.000", "m68-same.nc");
+    let (run, agrees) = plot_trace("gsk988", M68, &same, "m68-same.svg");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(z_ticks(&agrees).len() >= 5, "{:?}", z_ticks(&agrees));
+    assert_eq!(z_ticks(&svg), z_ticks(&agrees));
+    assert!(
+        trace_points(&svg).iter().any(|(x, _)| *x < 90.0),
+        "the run-away point lies beyond the frame, clipped"
+    );
+}

@@ -22,6 +22,51 @@ pub(super) const PLOT_TOP: f64 = 72.0;
 pub(super) const PLOT_BOTTOM: f64 = 480.0;
 /// Left edge of the legend.
 pub(super) const LEGEND_LEFT: f64 = 905.0;
+/// The width of a panel (px).
+pub(super) const PANEL_WIDTH: f64 = 1200.0;
+
+/// How many characters of `size`-px text fit between `x` and the panel's
+/// right edge (less a 6 px margin), at 0.62 em a character: an upper bound
+/// for the fonts the panels name (DejaVu Sans averages under 0.6 em), so
+/// that a wrapped label never leaves the picture.
+pub(super) fn chars_to_edge(x: f64, size: f64) -> usize {
+    let fit = ((PANEL_WIDTH - 6.0 - x) / (0.62 * size)).floor().max(8.0);
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, reason = "between 8 and a few hundred")]
+    let n = fit as usize;
+    n
+}
+
+/// `line` cut at spaces into pieces of at most `width` characters (a word
+/// longer than that is cut too); continuation lines are indented.
+pub(super) fn wrap(line: &str, width: usize) -> Vec<String> {
+    let indent = line.len() - line.trim_start().len();
+    let mut out = Vec::new();
+    let mut current = " ".repeat(indent);
+    let mut empty = true;
+    let pieces = line.split_whitespace().flat_map(|word| {
+        let chars: Vec<char> = word.chars().collect();
+        chars
+            .chunks(width.saturating_sub(indent + 2).max(1))
+            .map(|c| c.iter().collect::<String>())
+            .collect::<Vec<_>>()
+    });
+    for word in pieces {
+        let word = word.as_str();
+        if !empty && current.chars().count() + 1 + word.chars().count() > width {
+            out.push(std::mem::replace(&mut current, " ".repeat(indent + 2)));
+            empty = true;
+        }
+        if !empty {
+            current.push(' ');
+        }
+        current.push_str(word);
+        empty = false;
+    }
+    if !empty {
+        out.push(current);
+    }
+    out
+}
 
 /// Rapids (G00), dashed with [`RAPID_DASH`].
 pub(super) const RAPID: &str = "#8c8c8c";
@@ -168,6 +213,25 @@ impl Mapping {
         let (z_lo, z_hi) = padded(units_of(z_min, per_unit), units_of(z_max, per_unit), 0.07);
         let (x_lo, x_hi) = padded(units_of(x_min, per_unit), units_of(x_max, per_unit), 0.08);
         Mapping { per_unit, z_lo, z_hi, x_lo, x_hi }
+    }
+
+    /// The mapping around `ours` and the points of a `trace` that stray
+    /// from them by no more than their larger extent (X or Z) each way
+    /// (issue 35: the frame grows to hold both paths; a trace that runs
+    /// away is clipped at the frame, not allowed to shrink our path to a
+    /// dot).
+    pub(super) fn around_both(ours: &[Point], trace: &[Point], per_unit: i64) -> Mapping {
+        let (mut x_min, mut x_max, mut z_min, mut z_max) = (i64::MAX, i64::MIN, i64::MAX, i64::MIN);
+        for p in ours {
+            (x_min, x_max, z_min, z_max) = (x_min.min(p.x), x_max.max(p.x), z_min.min(p.z), z_max.max(p.z));
+        }
+        let reach = x_max.saturating_sub(x_min).max(z_max.saturating_sub(z_min)).max(1);
+        let (dx, dz) = (reach, reach);
+        let near = |p: &&Point| {
+            (x_min.saturating_sub(dx)..=x_max.saturating_add(dx)).contains(&p.x)
+                && (z_min.saturating_sub(dz)..=z_max.saturating_add(dz)).contains(&p.z)
+        };
+        Mapping::around(ours.iter().chain(trace.iter().filter(near)).copied(), per_unit)
     }
 
     fn px_z(&self, z: f64) -> f64 {
@@ -390,20 +454,26 @@ pub(super) fn legend(mut g: Group, entries: &[(Swatch<'_>, String, Option<String
             ),
             Swatch::None => g,
         };
-        g = g.add(
-            Text::new(text.as_str()).set("x", tx).set("y", num(y)).set("dy", "0.35em").set("font-size", 12),
-        );
-        y += 16.0;
+        // Each label wrapped to the panel's edge (issue 35: no text leaves
+        // the picture).
+        for line in wrap(text, chars_to_edge(tx, 12.0)) {
+            g = g.add(Text::new(line).set("x", tx).set("y", num(y)).set("dy", "0.35em").set("font-size", 12));
+            y += 15.0;
+        }
+        y += 1.0;
         if let Some(note) = note {
-            g = g.add(
-                Text::new(note.as_str())
-                    .set("x", tx)
-                    .set("y", num(y))
-                    .set("dy", "0.35em")
-                    .set("font-size", 11)
-                    .set("fill", "#555555"),
-            );
-            y += 16.0;
+            for line in wrap(note, chars_to_edge(tx, 11.0)) {
+                g = g.add(
+                    Text::new(line)
+                        .set("x", tx)
+                        .set("y", num(y))
+                        .set("dy", "0.35em")
+                        .set("font-size", 11)
+                        .set("fill", "#555555"),
+                );
+                y += 14.0;
+            }
+            y += 2.0;
         }
         y += 4.0;
     }
@@ -475,5 +545,16 @@ mod tests {
         assert_eq!(num(-0.01), "0");
         assert_eq!(num(12.345), "12.3");
         assert_eq!(num(7.0), "7");
+    }
+
+    #[test]
+    fn wraps_at_spaces_and_indents_continuations() {
+        assert_eq!(
+            wrap("  ours   thread X61.764 Z-59.000", 16),
+            ["  ours thread", "    X61.764", "    Z-59.000"]
+        );
+        assert_eq!(wrap("short", 44), ["short"]);
+        // A word longer than the width is cut (a long file name).
+        assert_eq!(wrap("trace: /a/very/long/name.nc", 12), ["trace:", "  /a/very/lo", "  ng/name.nc"]);
     }
 }

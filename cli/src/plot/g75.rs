@@ -73,14 +73,17 @@ impl<'a> Groove<'a> {
         Ok(Groove { call, moves, profile: profile_from_contour(&contour), rough })
     }
 
-    /// The panel's mapping: every point of the moves and the profile.
-    pub(super) fn map(&self) -> Mapping {
+    /// The panel's mapping: every point of the moves and the profile, and
+    /// those of the trace `trace` that stray no further than their extent
+    /// ([`Mapping::around_both`]).
+    pub(super) fn map(&self, trace: &[Point]) -> Mapping {
         let c = &self.call.cycle;
-        let points = std::iter::once(c.from)
+        let ours: Vec<Point> = std::iter::once(c.from)
             .chain(std::iter::once(c.start))
             .chain(self.moves.iter().map(|m| m.to))
-            .chain(self.profile.iter().map(|m| m.to));
-        Mapping::around(points, c.units.per_unit())
+            .chain(self.profile.iter().map(|m| m.to))
+            .collect();
+        Mapping::around_both(&ours, trace, c.units.per_unit())
     }
 
     /// The line of block 2, where the cycle runs.
@@ -97,10 +100,16 @@ impl<'a> Groove<'a> {
 
     /// The panel's drawing, with the divergences `marks` of a trace in
     /// this cycle marked (`first`: the first of them is the report's first).
-    pub(super) fn draw(&self, name: &str, marks: &[&crate::check::Mark], first: bool) -> Group {
+    pub(super) fn draw(
+        &self,
+        name: &str,
+        marks: &[&crate::check::Mark],
+        first: bool,
+        trace: &[Point],
+    ) -> Group {
         let c = &self.call.cycle;
         let u = c.units;
-        let map = self.map();
+        let map = self.map(trace);
         let tool = match c.tool_width {
             Some(w) => format!("grooving tool I{}", fixed(w, u)),
             None => "pointed tool (no I)".to_string(),

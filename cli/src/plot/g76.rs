@@ -104,7 +104,14 @@ pub(super) struct Panel<'a> {
 
 impl<'a> Panel<'a> {
     /// The panel of `call` and its `moves`, for the program `name`.
-    pub(super) fn new(name: &'a str, call: &'a G76Call<'a>, moves: &[Move]) -> Result<Panel<'a>, String> {
+    /// `trace`: the points of a trace over this cycle, which the frame
+    /// grows to hold (within reason: [`Mapping::around_both`]).
+    pub(super) fn new(
+        name: &'a str,
+        call: &'a G76Call<'a>,
+        moves: &[Move],
+        trace: &[Point],
+    ) -> Result<Panel<'a>, String> {
         let c: &G76Cycle = &call.cycle;
         let line = call.block.line;
         let g = cycleref_spec::g76::geometry(c).map_err(|e| format!("{name}: line {line}, G76: {e}"))?;
@@ -115,7 +122,8 @@ impl<'a> Panel<'a> {
         let points = [c.start, Point::new(b_x, c.start.z), Point::new(c_x, c.start.z), c.end];
         let per_unit = c.units.per_unit();
 
-        let map = Mapping::around(points.iter().copied().chain(moves.iter().map(|m| m.to)), per_unit);
+        let ours: Vec<Point> = points.iter().copied().chain(moves.iter().map(|m| m.to)).collect();
+        let map = Mapping::around_both(&ours, trace, per_unit);
 
         let mut panel = Panel {
             name,

@@ -121,7 +121,8 @@ fn svg(
         .set("font-family", "DejaVu Sans, Helvetica, Arial, sans-serif")
         .add(Rectangle::new().set("width", "100%").set("height", "100%").set("fill", "#ffffff"));
     for (index, (call, moves)) in cycles.iter().enumerate() {
-        let panel = g76::Panel::new(name, call, moves)?;
+        let trace = overlay.map_or(&[][..], |o| o.points_for(call.block.line));
+        let panel = g76::Panel::new(name, call, moves, trace)?;
         let mut group = panel.draw();
         if let Some(o) = overlay {
             group = panel.draw_overlay(group, o.short_name(), o.points_for(call.block.line), index);
@@ -151,11 +152,11 @@ fn svg(
         let line = Some(groove.line());
         let here: Vec<&crate::check::Mark> =
             marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
-        let mut group = groove.draw(name, &here, first_line == line);
+        let trace = overlay.map_or(&[][..], |o| o.points_for(groove.line()));
+        let mut group = groove.draw(name, &here, first_line == line, trace);
         if let Some(o) = overlay {
             let clip = format!("groove-area-{i}");
-            group =
-                canvas::draw_trace(group, &groove.map(), o.short_name(), o.points_for(groove.line()), &clip);
+            group = canvas::draw_trace(group, &groove.map(trace), o.short_name(), trace, &clip);
         }
         doc = place(doc, group, before + i, true);
     }

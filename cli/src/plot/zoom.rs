@@ -14,8 +14,8 @@ use cycleref::{Motion, Move, Point, Units, XMode};
 use svg::node::element::{ClipPath, Group, Path, Rectangle, Text};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, num, unit_name, x_kind, Mapping, LEGEND_LEFT, PLOT_BOTTOM, PLOT_LEFT,
-    PLOT_RIGHT, PLOT_TOP, POINT, RAPID, RAPID_DASH, TRACE,
+    chars_to_edge, draw_axes, draw_marks, heading, num, unit_name, wrap, x_kind, Mapping, LEGEND_LEFT,
+    PLOT_BOTTOM, PLOT_LEFT, PLOT_RIGHT, PLOT_TOP, POINT, RAPID, RAPID_DASH, TRACE,
 };
 use crate::check::Mark;
 
@@ -134,10 +134,17 @@ pub(super) fn panel(
         (format!("trace: {trace_name}"), TRACE),
         ("\u{25cb} ours  \u{d7} theirs  (1: the first divergence)".to_string(), TRACE),
     ] {
-        g = g.add(
-            Text::new(text).set("x", LEGEND_LEFT).set("y", num(y)).set("font-size", 12).set("fill", colour),
-        );
-        y += 18.0;
+        for line in wrap(&text, chars_to_edge(LEGEND_LEFT, 12.0)) {
+            g = g.add(
+                Text::new(line)
+                    .set("x", LEGEND_LEFT)
+                    .set("y", num(y))
+                    .set("font-size", 12)
+                    .set("fill", colour),
+            );
+            y += 15.0;
+        }
+        y += 3.0;
     }
     y += 10.0;
     for line in first.text.iter().flat_map(|l| wrap(l, WRAP)) {
@@ -156,42 +163,4 @@ pub(super) fn panel(
         }
     }
     Some(g)
-}
-
-/// `line` cut at spaces into pieces of at most `width` characters (a word
-/// longer than that stands alone); continuation lines are indented.
-fn wrap(line: &str, width: usize) -> Vec<String> {
-    let indent = line.len() - line.trim_start().len();
-    let mut out = Vec::new();
-    let mut current = " ".repeat(indent);
-    let mut empty = true;
-    for word in line.split_whitespace() {
-        if !empty && current.chars().count() + 1 + word.chars().count() > width {
-            out.push(std::mem::replace(&mut current, " ".repeat(indent + 2)));
-            empty = true;
-        }
-        if !empty {
-            current.push(' ');
-        }
-        current.push_str(word);
-        empty = false;
-    }
-    if !empty {
-        out.push(current);
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::wrap;
-
-    #[test]
-    fn wraps_at_spaces_and_indents_continuations() {
-        assert_eq!(
-            wrap("  ours   thread X61.764 Z-59.000", 16),
-            ["  ours thread", "    X61.764", "    Z-59.000"]
-        );
-        assert_eq!(wrap("short", 44), ["short"]);
-    }
 }
