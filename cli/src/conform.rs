@@ -17,6 +17,11 @@
 //!   command writes its trace); exit status 0 gives a trace, any other a
 //!   refusal (its standard error is the message).
 //!
+//! * `--pairs`: the corpus is a list of programs and their traces, one
+//!   pair a line (`PROGRAM TRACE [PROFILE]`, tab- or space-separated, `#`
+//!   comments): a batch `check`, each program expected to read and each
+//!   trace to agree with its expansion.
+//!
 //! A case passes when the trace agrees with the expected moves, or when a
 //! refusal was expected and made. Case `i` depends only on the corpus, so
 //! `--shard I/N` (the cases whose index is I modulo N, 1-based) splits a
@@ -52,6 +57,14 @@ pub enum Outcomes {
     /// A shell command run per case (the placeholders `{program}`,
     /// `{params}`, `{profile}`, `{trace}`).
     Run(String),
+    /// The corpus is a list of program and trace pairs (a batch `check`):
+    /// each program is read with the pair's profile (its defaults), or
+    /// with `machine`, and must agree with its trace.
+    Pairs {
+        /// The machine of a pair that names no profile (the command's
+        /// `--profile` and `--params`).
+        machine: Box<Machine>,
+    },
 }
 
 /// One part of a corpus split across machines: the cases whose 1-based
@@ -92,7 +105,8 @@ impl Shard {
 /// What [`run`] does.
 #[derive(Clone, Debug)]
 pub struct ConformOptions {
-    /// The corpus directory (`case-NNNN.json` files).
+    /// The corpus directory (`case-NNNN.json` files), or with
+    /// [`Outcomes::Pairs`] the list of pairs.
     pub corpus: PathBuf,
     /// The vendor's outcomes.
     pub outcomes: Outcomes,
@@ -157,10 +171,61 @@ struct CaseResult {
     seconds: f64,
 }
 
-/// A case file of the corpus.
+/// A case of the corpus.
 struct Case {
     index: u32,
-    path: PathBuf,
+    source: Source,
+}
+
+/// Where a case is.
+enum Source {
+    /// A vector's file.
+    Vector(PathBuf),
+    /// A program, its trace, and perhaps a profile (a line of a list of
+    /// pairs).
+    Pair { program: PathBuf, trace: PathBuf, profile: Option<ProfileName> },
+}
+
+/// The cases of a list of pairs in `shard`, by line (case `i` is the
+/// list's `i`-th pair). Paths are taken relative to the list's directory.
+fn pairs(list: &Path, shard: Shard) -> Result<Vec<Case>, String> {
+    let text = fs::read_to_string(list).map_err(|e| format!("{}: {e}", list.display()))?;
+    let dir = list.parent().unwrap_or(Path::new("."));
+    let mut out = Vec::new();
+    let mut index = 0_u32;
+    for (n, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or_default().trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = if line.contains('\t') {
+            line.split('\t').map(str::trim).collect()
+        } else {
+            line.split_whitespace().collect()
+        };
+        let bad =
+            |why: &str| format!("{}: line {}: {why} (`PROGRAM TRACE [PROFILE]`)", list.display(), n + 1);
+        let (program, trace, profile) = match fields.as_slice() {
+            [p, t] => (p, t, None),
+            [p, t, profile] => {
+                let name = ProfileName::ALL
+                    .into_iter()
+                    .find(|x| x.to_string() == *profile)
+                    .ok_or_else(|| bad(&format!("{profile:?} is none of cycleref's profiles")))?;
+                (p, t, Some(name))
+            }
+            _ => return Err(bad("a pair is two or three fields")),
+        };
+        index += 1;
+        if shard.holds(index) {
+            let source = Source::Pair { program: dir.join(program), trace: dir.join(trace), profile };
+            out.push(Case { index, source });
+        }
+    }
+    if index == 0 {
+        return Err(format!("{}: no pairs (`PROGRAM TRACE [PROFILE]` a line)", list.display()));
+    }
+    Ok(out)
 }
 
 /// The corpus's cases in `shard`, by index.
@@ -176,7 +241,7 @@ fn cases(corpus: &Path, shard: Shard) -> Result<Vec<Case>, String> {
         };
         let Ok(index) = digits.parse::<u32>() else { continue };
         if shard.holds(index) {
-            out.push(Case { index, path: entry.path() });
+            out.push(Case { index, source: Source::Vector(entry.path()) });
         }
     }
     out.sort_by_key(|c| c.index);
@@ -256,6 +321,7 @@ fn quoted(path: &Path) -> String {
 /// case's files (`--run`).
 fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome, String> {
     match &options.outcomes {
+        Outcomes::Pairs { .. } => Err(format!("{}: a vector in a run of pairs", v.id)),
         Outcomes::Dir(dir) => {
             let error = dir.join(format!("{}.error", v.id));
             let traces: Vec<(PathBuf, TraceFormat)> =
@@ -338,17 +404,31 @@ fn machine(v: &Vector) -> Result<Machine, String> {
 /// Runs one case.
 fn run_case(options: &ConformOptions, case: &Case, work: &Path) -> CaseResult {
     let started = Instant::now();
-    let (id, description, verdict) = match read_vector(&case.path) {
-        Err(e) => (format!("case-{:04}", case.index), String::new(), Verdict::Error(e)),
-        Ok(v) => {
-            let verdict = judge(options, &v, work);
-            (v.id, v.description, verdict)
+    let (id, description, verdict) = match &case.source {
+        Source::Vector(path) => match read_vector(path) {
+            Err(e) => (format!("case-{:04}", case.index), String::new(), Verdict::Error(e)),
+            Ok(v) => {
+                let verdict = judge_vector(options, &v, work);
+                (v.id, v.description, verdict)
+            }
+        },
+        Source::Pair { program, trace, profile } => {
+            let machine = match (profile, &options.outcomes) {
+                (Some(p), _) => Machine::new(*p),
+                (None, Outcomes::Pairs { machine }) => (**machine).clone(),
+                (None, _) => Machine::new(ProfileName::Gsk988),
+            };
+            let verdict = match Job::from_file(program, machine, Engine::Impl) {
+                Ok(job) => judge(options, &job, (trace.clone(), options.trace_format)),
+                Err(e) => Verdict::Error(String::from(e)),
+            };
+            (program.display().to_string(), format!("trace {}", trace.display()), verdict)
         }
     };
     CaseResult { id, description, verdict, seconds: started.elapsed().as_secs_f64() }
 }
 
-fn judge(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
+fn judge_vector(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
     let outcome = match outcome(options, v, work) {
         Ok(o) => o,
         Err(e) => return Verdict::Error(e),
@@ -364,9 +444,19 @@ fn judge(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
         Err(e) => return Verdict::Error(format!("{}: {e}", v.id)),
     };
     let job = Job::new(&format!("{}.nc", v.id), v.program.clone().into_bytes(), machine, Engine::Impl);
+    let verdict = judge(options, &job, (trace.0.clone(), trace.1));
+    if matches!(options.outcomes, Outcomes::Run(_)) {
+        let _ = fs::remove_file(&trace.0);
+    }
+    verdict
+}
+
+/// The verdict of `job`'s program against the trace at `trace` (in its
+/// format, or by its extension).
+fn judge(options: &ConformOptions, job: &Job, trace: (PathBuf, Option<TraceFormat>)) -> Verdict {
     let check =
         CheckOptions { format: trace.1, tolerance: options.tolerance, cycles_only: options.cycles_only };
-    let verdict = match check::run_as(&job, &trace.0, &check) {
+    match check::run_as(job, &trace.0, &check) {
         Ok(report) if report.agree() => Verdict::Pass,
         Ok(report) => {
             let head = report.text().lines().next().unwrap_or_default().to_owned();
@@ -376,11 +466,7 @@ fn judge(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
             })
         }
         Err(e) => Verdict::Error(e),
-    };
-    if matches!(options.outcomes, Outcomes::Run(_)) {
-        let _ = fs::remove_file(&trace.0);
     }
-    verdict
 }
 
 /// Text as XML character data or an attribute value: escaped, with the
@@ -488,7 +574,10 @@ fn failure_line(r: &CaseResult) -> Option<String> {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Failure> {
-    let cases = cases(&options.corpus, options.shard).map_err(Failure::msg)?;
+    let pairs_run = matches!(options.outcomes, Outcomes::Pairs { .. });
+    let cases =
+        if pairs_run { pairs(&options.corpus, options.shard) } else { cases(&options.corpus, options.shard) }
+            .map_err(Failure::msg)?;
     let work = std::env::temp_dir().join(format!("cycleref-conform-{}", std::process::id()));
     if matches!(options.outcomes, Outcomes::Run(_)) {
         fs::create_dir_all(&work).map_err(|e| Failure::msg(format!("{}: {e}", work.display())))?;
@@ -561,8 +650,9 @@ pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Fai
         format!(" (shard {}/{})", options.shard.index, options.shard.count)
     };
     let line = format!(
-        "conform: {} cases{shard}: {} passed, {} failed, {} refusal{} expected but not made, {} refusal{} not \
+        "{}: {} cases{shard}: {} passed, {} failed, {} refusal{} expected but not made, {} refusal{} not \
          expected, {} error{}",
+        if pairs_run { "conform --pairs" } else { "conform" },
         summary.cases,
         summary.passed,
         summary.failed,

@@ -93,12 +93,26 @@ enum Command {
     #[command(after_help = EXIT_STATUS)]
     Conform {
         /// The corpus directory (`case-NNNN.json`, written by `cycleref
-        /// vectors`).
+        /// vectors`), or with --pairs the list of pairs.
         corpus: PathBuf,
         /// The vendor's outcomes: `case-NNNN.nc`, `.csv` or `.canon` (a
         /// trace) or `case-NNNN.error` (a refusal, holding its message).
-        #[arg(long, value_name = "DIR", required_unless_present = "run", conflicts_with = "run")]
+        #[arg(long, value_name = "DIR", required_unless_present_any = ["run", "pairs"], conflicts_with_all = ["run", "pairs"])]
         traces: Option<PathBuf>,
+        /// A batch `check`: CORPUS is a list of programs and their traces,
+        /// `PROGRAM TRACE [PROFILE]` a line (tab- or space-separated, paths
+        /// relative to the list, `#` comments); each program must agree
+        /// with its trace. A pair without a profile is read with --profile
+        /// and --params.
+        #[arg(long, conflicts_with = "run")]
+        pairs: bool,
+        /// With --pairs: the profile of a pair that names none [default:
+        /// the parameter file's, else gsk988].
+        #[arg(long, value_enum, requires = "pairs")]
+        profile: Option<ProfileArg>,
+        /// With --pairs: a parameter file for the pairs that name no profile.
+        #[arg(long, value_name = "FILE", requires = "pairs")]
+        params: Option<PathBuf>,
         /// A shell command run per case: `{program}` (the case's program
         /// file), `{params}` (its machine as a parameter file), `{profile}`
         /// and `{trace}` (where to write the trace) are replaced; exit
@@ -427,7 +441,8 @@ const MAN_SECTIONS: &[(&str, &str, &str)] = &[
         "EXAMPLES",
         "$ cycleref vectors --count 10000 --seed 42 --out corpus\n\
          $ cycleref conform corpus --traces outputs --junit conform.xml\n\
-         $ cycleref conform corpus --run 'my-sim --profile {profile} {program} > {trace}' --shard 2/4",
+         $ cycleref conform corpus --run 'my-sim --profile {profile} {program} > {trace}' --shard 2/4\n\
+         $ cycleref conform pairs.txt --pairs --profile fanuc --junit check.xml",
     ),
     ("vectors", "EXAMPLES", "$ cycleref vectors --count 125 --seed 1 --out vectors"),
     (
@@ -518,11 +533,39 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 Err(e) => Err(e),
             }
         }
-        Command::Conform { corpus, traces, run, trace_format, compare, jobs, shard, junit } => {
-            let outcomes = match (traces, run) {
-                (Some(dir), _) => cycleref_cli::conform::Outcomes::Dir(dir),
-                (None, Some(template)) => cycleref_cli::conform::Outcomes::Run(template),
-                (None, None) => return Err(Failure::msg("give --traces DIR or --run TEMPLATE")),
+        Command::Conform {
+            corpus,
+            traces,
+            run,
+            pairs,
+            profile,
+            params,
+            trace_format,
+            compare,
+            jobs,
+            shard,
+            junit,
+        } => {
+            let outcomes = match (traces, run, pairs) {
+                (_, _, true) => {
+                    let common = Common {
+                        profile,
+                        increment: None,
+                        inch: false,
+                        radius: false,
+                        params,
+                        engine: EngineArg::Impl,
+                        file: None,
+                    };
+                    cycleref_cli::conform::Outcomes::Pairs {
+                        machine: Box::new(cycleref_cli::job::machine(&common.options())?),
+                    }
+                }
+                (Some(dir), _, false) => cycleref_cli::conform::Outcomes::Dir(dir),
+                (None, Some(template), false) => cycleref_cli::conform::Outcomes::Run(template),
+                (None, None, false) => {
+                    return Err(Failure::msg("give --traces DIR, --run TEMPLATE or --pairs"))
+                }
             };
             let options = cycleref_cli::conform::ConformOptions {
                 corpus,
