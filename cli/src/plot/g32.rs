@@ -99,7 +99,7 @@ pub(super) fn panel(
     let g92 = code == "G92" || code == "G76 (LinuxCNC)";
     let first_blue = ramp(1, total.max(2));
     let mut entries = vec![
-        (Swatch::Line(&first_blue, 1.8, None), format!("thread, {code}: one blue per block"), ramp_note),
+        (Swatch::Line(&first_blue, 1.8, None), format!("thread ({code}), one blue per block"), ramp_note),
         (
             Swatch::Line(RUN_OUT, 3.0, None),
             if g92 && code != "G92" { "exit taper (E, L bit 2)" } else { "run-out (J, K)" }.into(),
