@@ -14,7 +14,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use common::{run, BIN};
+use common::{conform, run, BIN};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("cycleref-conform-test-{}-{name}", std::process::id()));
@@ -55,15 +55,6 @@ fn outcomes(corpus: &Path, dir: &Path) -> PathBuf {
         }
     }
     traces
-}
-
-fn conform(args: &[&str]) -> (i32, String, String) {
-    let o = run(&[&["conform"], args].concat(), None);
-    (
-        o.status.code().expect("exit code"),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
 }
 
 fn testcases(junit: &Path) -> Vec<String> {

@@ -8,22 +8,13 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::run;
+use common::{conform, run};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("cycleref-conform-pairs-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir
-}
-
-fn conform(args: &[&str]) -> (i32, String, String) {
-    let o = run(&[&["conform"], args].concat(), None);
-    (
-        o.status.code().expect("exit code"),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
 }
 
 fn testcases(junit: &Path) -> usize {

@@ -626,7 +626,8 @@ impl<'m> LineReader<'m> {
                 }
             }
             if self.state.follows_calls() {
-                if !self.calls.skipping() && self.calls.needs_index(&block, lcnc) {
+                let mut flow = self.calls.flow(&block, self.state.machine, self.at);
+                if matches!(flow, Some(Ok(Flow::NeedsIndex))) {
                     let Some(subs) = subprograms else {
                         // Read again once the caller has the subprograms.
                         self.at = before;
@@ -635,14 +636,17 @@ impl<'m> LineReader<'m> {
                     if let Err(e) = self.calls.read_index(subs, lcnc, block.line) {
                         return Err(self.fail(e));
                     }
+                    flow = self.calls.flow(&block, self.state.machine, self.at);
                 }
-                match self.calls.flow(&block, self.state.machine, self.at) {
+                match flow {
                     None => {}
                     Some(Ok(Flow::Called | Flow::Skipped | Flow::Returned { main: None })) => continue,
                     Some(Ok(Flow::Returned { main: Some(at) })) => {
                         self.at = at;
                         continue;
                     }
+                    // Read above: the index is there.
+                    Some(Ok(Flow::NeedsIndex)) => continue,
                     Some(Err(e)) => return Err(self.fail(e)),
                 }
             } else if lcnc && calls::block_oword(&block).is_some() {

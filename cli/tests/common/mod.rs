@@ -63,3 +63,14 @@ pub fn jsonl_cycles(profile: &str, file: &str, counts: (u64, u64)) -> Vec<serde_
     assert_eq!((summary["cycles"].as_u64(), summary["moves"].as_u64()), (Some(counts.0), Some(counts.1)));
     lines
 }
+
+/// `cycleref conform ARGS`: its exit code, stdout and stderr.
+#[allow(dead_code, reason = "not every test binary that includes `common` calls it")]
+pub fn conform(args: &[&str]) -> (i32, String, String) {
+    let o = run(&[&["conform"], args].concat(), None);
+    (
+        o.status.code().expect("exit code"),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}

@@ -557,6 +557,9 @@ pub(crate) enum Flow {
     Returned { main: Option<Option<Position>> },
     /// LinuxCNC: the block is part of a definition the path passes over.
     Skipped,
+    /// A call, before the subprograms' index is read: read it
+    /// ([`Calls::read_index`]) and run the block again.
+    NeedsIndex,
 }
 
 fn sub_err(block: &Block<'_>, word: Option<&Word<'_>>, e: SubprogramError) -> ProgramError {
@@ -600,7 +603,7 @@ impl Calls {
     }
 
     /// True once the subprograms' index is read.
-    pub(crate) fn has_index(&self) -> bool {
+    fn has_index(&self) -> bool {
         self.index.is_some()
     }
 
@@ -671,9 +674,9 @@ impl Calls {
     /// as any other: the count of blocks run, and the end of the
     /// subprogram's text.
     pub(crate) fn check_block(&mut self, block: &Block<'_>, machine: &Machine) -> Result<(), ProgramError> {
-        let Some(frame) = self.frames.last() else { return Ok(()) };
-        let entry = self.index.as_ref().and_then(|i| i.get(frame.entry));
-        let (program, line) = entry.map_or((String::new(), 0), |e| (shown_label(&e.label, false), e.line));
+        if !self.running() {
+            return Ok(());
+        }
         self.blocks += 1;
         if self.blocks > machine.subprogram_block_limit {
             let limit = machine.subprogram_block_limit;
@@ -684,37 +687,33 @@ impl Calls {
             return Ok(());
         }
         if program_block(block).is_some() {
+            let (program, line) = self.running_program(false);
             return Err(sub_err(block, None, SubprogramError::NoReturn { program, line }));
         }
         if ends_program(block) && !is_return(block) {
             let word = block.all('M').find(|w| matches!(w.integer(), Some(2 | 30)));
+            let (program, _) = self.running_program(false);
             return Err(sub_err(block, word, SubprogramError::EndInSubprogram { program }));
         }
         Ok(())
     }
 
+    /// The subprogram running, as the dialect writes it, and the line of
+    /// its `O` block (`sub` line): for messages.
+    fn running_program(&self, lcnc: bool) -> (String, usize) {
+        let entry = self.frames.last().and_then(|f| self.index.as_ref()?.get(f.entry));
+        entry.map_or((String::new(), 0), |e| (shown_label(&e.label, lcnc), e.line))
+    }
+
     /// The error of a subprogram whose text ends before its return, at
     /// the last line (`line`).
     pub(crate) fn no_return(&self, line: usize, lcnc: bool) -> ProgramError {
-        let entry = self.frames.last().and_then(|f| self.index.as_ref()?.get(f.entry));
+        let (program, at) = self.running_program(lcnc);
         ProgramError {
             line,
             word: None,
-            kind: ErrorKind::Subprogram(SubprogramError::NoReturn {
-                program: entry.map_or_else(String::new, |e| shown_label(&e.label, lcnc)),
-                line: entry.map_or(0, |e| e.line),
-            }),
+            kind: ErrorKind::Subprogram(SubprogramError::NoReturn { program, line: at }),
         }
-    }
-
-    /// True when `block` needs the index before it runs: a call.
-    pub(crate) fn needs_index(&self, block: &Block<'_>, lcnc: bool) -> bool {
-        !self.has_index()
-            && if lcnc {
-                block_oword(block).is_some_and(|(_, k, _)| k == "call")
-            } else {
-                block.all('M').any(|w| w.integer() == Some(98))
-            }
     }
 
     /// Runs `block` if it is a call or a return, or (LinuxCNC) part of a
@@ -730,13 +729,22 @@ impl Calls {
         if machine.profile.dialect == Dialect::LinuxCnc {
             return self.oword_flow(block, machine, main);
         }
-        let call = block.all('M').find(|w| w.integer() == Some(98));
-        let ret = block.all('M').find(|w| w.integer() == Some(99));
+        // One pass over the block's M words (every block of a program
+        // comes here).
+        let (mut call, mut ret) = (None, None);
+        for w in block.all('M') {
+            match w.integer() {
+                Some(98) => call = call.or(Some(w)),
+                Some(99) => ret = ret.or(Some(w)),
+                _ => {}
+            }
+        }
         match (call, ret) {
             (None, None) => None,
             (Some(_), Some(w)) => {
                 Some(Err(sub_err(block, Some(w), SubprogramError::WordBeside { code: "M98" })))
             }
+            (Some(_), None) if !self.has_index() => Some(Ok(Flow::NeedsIndex)),
             (Some(m), None) => Some(self.m98(block, m, machine, main).map(|()| Flow::Called)),
             (None, Some(m)) => Some(self.m99(block, m).map(|main| Flow::Returned { main })),
         }
@@ -785,6 +793,7 @@ impl Calls {
             "call" | "endsub" | "return" if more => {
                 Err(oword_err(block, SubprogramError::WordBeside { code: "an o-word" }))
             }
+            "call" if !self.has_index() => Ok(Flow::NeedsIndex),
             "call" => self.call(block, &label, 1, machine, main, true).map(|()| Flow::Called),
             "endsub" | "return" => {
                 let runs =
