@@ -11,10 +11,11 @@
 use std::cell::RefCell;
 use std::io::{self, Write};
 
-use cycleref::{Motion, Move, PassKind, PathType, Point, Role, Units};
+use cycleref::{Motion, Move, PassKind, Point, Role, Units};
+use cycleref_spec::cycles::{MoveWords, PassComment, PassTable};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
-use cycleref_spec::reader::{G75Call, G76Call, G92Call, Item, LinuxCncCall, PlainMove, Restore};
+use cycleref_spec::reader::{Item, PlainMove, Restore};
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
 use crate::job::{Failure, Job};
@@ -125,61 +126,114 @@ fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: b
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let t = &mut NcText::default();
     each_item(job, |item| {
-        if !matches!(item, Item::Source(_) | Item::Move(_)) {
-            nc_aux(out, item.block(), false)?;
-        }
+        let cycle = Cycle::of(item);
         match item {
             Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => {
                 out.write_all(&b.text)?;
-                out.write_all(b"\n")?;
+                return out.write_all(b"\n");
             }
-            Item::G76Params(_) | Item::G75Params(_) => {}
-            Item::G76(call) => nc_g76(out, t, call, moves(job, Cycle::G76(call))?, job.q_unit)?,
-            Item::G32(call) => {
-                for m in moves(job, Cycle::G32(call))? {
-                    if call.code == "G33" {
-                        nc_g33_move(out, t, &m, call.g32.units)?;
-                    } else {
-                        nc_move(out, t, &m, call.g32.units, job.q_unit)?;
-                    }
-                }
-            }
-            Item::G75(call) => nc_g75(out, t, call, moves(job, Cycle::G75(call))?)?,
-            Item::G92(call) => nc_g92(out, t, call, moves(job, Cycle::G92(call))?, job.q_unit)?,
-            Item::LinuxCncG76(call) => nc_linuxcnc(out, t, call, moves(job, Cycle::LinuxCnc(call))?)?,
+            _ => nc_aux(out, item.block(), false)?,
         }
-        if !matches!(item, Item::Source(_) | Item::Move(_)) {
-            nc_aux(out, item.block(), true)?;
+        if let Some(cycle) = cycle {
+            nc_cycle(out, t, cycle, moves(job, cycle)?, job.q_unit)?;
         }
-        Ok(())
+        nc_aux(out, item.block(), true)
     })
 }
 
-/// The NC blocks of one LinuxCNC G76, in LinuxCNC's words so that its
-/// interpreter reads them back: a heading, a comment before each pass,
-/// `G0 X Z` for a rapid and `G33 X Z K` for a synchronised move (K the
-/// distance per revolution along the move, reading R-LCNC-SYNC). X is in
-/// the X mode of the block (G7 diameter, G8 radius).
-fn nc_linuxcnc<W: Write>(
+/// The NC blocks of one cycle (the `nc` format contract, in the README):
+/// its heading, its moves in its words ([`MoveWords`]), each pass, start,
+/// plunge and contour announced by a comment as the cycle's style asks
+/// ([`NcStyle`]), then what restores the modal state the cycle changed.
+fn nc_cycle<W: Write>(
     out: &mut W,
     t: &mut NcText,
-    call: &LinuxCncCall<'_>,
+    cycle: Cycle<'_, '_>,
     moves: Moves,
+    q: QUnit,
 ) -> io::Result<()> {
-    let u = call.cycle.units;
-    writeln!(out, "(G76 line {}: LinuxCNC threading cycle)", call.block.line)?;
-    let mut current = None;
+    let u = cycle.units();
+    let style = cycle.nc_style();
+    if let Some(heading) = cycle.heading(&moves) {
+        writeln!(out, "({heading})")?;
+    }
+    let x_factor = cycle.x_mode().factor();
+    let (mut pass, mut plunge, mut contour) = (None, None, None);
+    let mut at = cycle.from();
     for m in moves {
         if let Some(p) = m.pass {
-            if current != Some((p.kind, p.number)) {
-                current = Some((p.kind, p.number));
-                let kind = if p.kind == PassKind::Rough { "pass" } else { "full depth" };
-                writeln!(out, "({kind} {})", p.number)?;
+            nc_pass_comment(out, style.passes, p, &mut pass, u)?;
+        }
+        if style.plunges {
+            if let Role::Peck(p) = m.role {
+                if plunge != Some(p) {
+                    plunge = Some(p);
+                    writeln!(out, "(layer {} plunge {})", p.layer, p.number)?;
+                }
             }
         }
-        nc_g33_move(out, t, &m, u)?;
+        if style.contours {
+            let name = match m.role {
+                Role::RoughContour => Some("rough contour"),
+                Role::FinishContour => Some("finishing contour"),
+                _ => None,
+            };
+            if let Some(n) = name.filter(|_| name != contour) {
+                writeln!(out, "({n})")?;
+            }
+            contour = name;
+        }
+        match style.words {
+            MoveWords::Fanuc => nc_move(out, t, &m, u, q)?,
+            MoveWords::LinuxCnc => nc_g33_move(out, t, &m, u)?,
+            MoveWords::Groove => nc_groove_move(out, t, &m, at, x_factor, u)?,
+        }
+        at = m.to;
     }
-    Ok(())
+    restore(out, cycle.restore())
+}
+
+/// The comment before the first move of a pass, in `style`, when the pass
+/// differs from `last` (the pass of the previous comment).
+fn nc_pass_comment<W: Write>(
+    out: &mut W,
+    style: PassComment,
+    p: cycleref::Pass,
+    last: &mut Option<(PassKind, u32, u16)>,
+    u: Units,
+) -> io::Result<()> {
+    let key = match style {
+        PassComment::None => return Ok(()),
+        PassComment::Full => (p.kind, p.number, p.start),
+        PassComment::Numbered => (p.kind, p.number, 0),
+        PassComment::Starts => (PassKind::Rough, 0, p.start),
+    };
+    if *last == Some(key) {
+        return Ok(());
+    }
+    *last = Some(key);
+    match style {
+        PassComment::None => Ok(()),
+        PassComment::Full => {
+            // `(rough 1 start 1 depth 1.800 cut 1.800)`
+            out.write_all(b"(")?;
+            out.write_all(kind_name(p.kind).as_bytes())?;
+            out.write_all(b" ")?;
+            write_number(out, u64::from(p.number))?;
+            out.write_all(b" start ")?;
+            write_number(out, u64::from(p.start))?;
+            out.write_all(b" depth ")?;
+            write_fixed(out, Fixed::new(p.depth, u))?;
+            out.write_all(b" cut ")?;
+            write_fixed(out, Fixed::new(p.cut, u))?;
+            out.write_all(b")\n")
+        }
+        PassComment::Numbered => {
+            let kind = if p.kind == PassKind::Rough { "pass" } else { "full depth" };
+            writeln!(out, "({kind} {})", p.number)
+        }
+        PassComment::Starts => writeln!(out, "(start {})", p.start),
+    }
 }
 
 /// One move in LinuxCNC's words: `G33 X Z K` for a synchronised move (K
@@ -195,146 +249,6 @@ fn nc_g33_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units) -> io:
     out.write_all(b" K")?;
     out.write_all(&text[1..])?;
     out.write_all(b"\n")
-}
-
-/// The NC blocks of one G92 block: a heading, a comment before each start
-/// of a multi-start thread, the moves (the `nc` format contract, in the
-/// README).
-fn nc_g92<W: Write>(
-    out: &mut W,
-    t: &mut NcText,
-    call: &G92Call<'_>,
-    moves: Moves,
-    q: QUnit,
-) -> io::Result<()> {
-    let u = call.cycle.units;
-    let starts = call.cycle.starts;
-    writeln!(
-        out,
-        "(G92 line {}: 1 pass x {} start{})",
-        call.block.line,
-        starts,
-        if starts == 1 { "" } else { "s" }
-    )?;
-    let mut current = None;
-    for m in moves {
-        if let Some(p) = m.pass.filter(|_| starts > 1) {
-            if current != Some(p.start) {
-                current = Some(p.start);
-                writeln!(out, "(start {})", p.start)?;
-            }
-        }
-        nc_move(out, t, &m, u, q)?;
-    }
-    Ok(())
-}
-
-/// The NC blocks of one G76 cycle: a heading, a comment before each pass
-/// and start, the moves (the `nc` format contract, in the README).
-fn nc_g76<W: Write>(
-    out: &mut W,
-    t: &mut NcText,
-    call: &G76Call<'_>,
-    moves: Moves,
-    q: QUnit,
-) -> io::Result<()> {
-    let u = call.cycle.units;
-    // The heading counts the rough passes, found before any move (reading
-    // R-LIMIT) as both engines find it: the engine's iterator keeps its
-    // count, the reference's is counted again; the cycle expanded, so it
-    // has a count.
-    let rough_passes = match moves.rough_passes() {
-        Some(n) => n,
-        None => cycleref::engine::rough_pass_count(&call.cycle).unwrap_or(0),
-    };
-    let starts = call.cycle.starts;
-    writeln!(
-        out,
-        "({} line {}: {} rough + {} finish passes x {} start{})",
-        call.code.code(),
-        call.block.line,
-        rough_passes,
-        call.cycle.finishing_passes,
-        starts,
-        if starts == 1 { "" } else { "s" }
-    )?;
-    let mut current = None;
-    for m in moves {
-        if let Some(p) = m.pass {
-            let key = (p.kind, p.number, p.start);
-            if current != Some(key) {
-                current = Some(key);
-                // `(rough 1 start 1 depth 1.800 cut 1.800)`
-                out.write_all(b"(")?;
-                out.write_all(kind_name(p.kind).as_bytes())?;
-                out.write_all(b" ")?;
-                write_number(out, u64::from(p.number))?;
-                out.write_all(b" start ")?;
-                write_number(out, u64::from(p.start))?;
-                out.write_all(b" depth ")?;
-                write_fixed(out, Fixed::new(p.depth, u))?;
-                out.write_all(b" cut ")?;
-                write_fixed(out, Fixed::new(p.cut, u))?;
-                out.write_all(b")\n")?;
-            }
-        }
-        nc_move(out, t, &m, u, q)?;
-    }
-    restore(out, call.restore)
-}
-
-/// The NC blocks of one G75.1 cycle: a heading, a comment per layer and
-/// plunge and before each contour, the moves.
-fn nc_g75<W: Write>(out: &mut W, t: &mut NcText, call: &G75Call<'_>, moves: Moves) -> io::Result<()> {
-    let c = &call.cycle;
-    let u = c.units;
-    let (mut layers, mut plunges) = (0, 0);
-    for m in moves.clone() {
-        if let Some(p) = crate::format::plunge_of(m.role) {
-            layers = layers.max(p.layer);
-        }
-        plunges += usize::from(matches!(m.role, Role::PlungeRetract(_)));
-    }
-    let path = match c.path {
-        PathType::Rough => "J0 rough",
-        PathType::RoughAndFinish => "J1 rough + finish",
-        PathType::Finish => "J2 finish",
-    };
-    write!(
-        out,
-        "(G75.1 lines {}-{}: {path}, {layers} layer{} {plunges} plunge{}, tool ",
-        call.params_line,
-        call.block.line,
-        if layers == 1 { "," } else { "s," },
-        if plunges == 1 { "" } else { "s" },
-    )?;
-    match c.tool_width {
-        Some(w) => writeln!(out, "width I{})", Fixed::new(w, u))?,
-        None => writeln!(out, "pointed)")?,
-    }
-    let mut current = None;
-    let mut contour = None;
-    let mut at = c.from;
-    for m in moves {
-        if let Role::Peck(p) = m.role {
-            if current != Some(p) {
-                current = Some(p);
-                writeln!(out, "(layer {} plunge {})", p.layer, p.number)?;
-            }
-        }
-        let name = match m.role {
-            Role::RoughContour => Some("rough contour"),
-            Role::FinishContour => Some("finishing contour"),
-            _ => None,
-        };
-        if let Some(n) = name.filter(|_| name != contour) {
-            writeln!(out, "({n})")?;
-        }
-        contour = name;
-        nc_groove_move(out, t, &m, at, c.x_mode.factor(), u)?;
-        at = m.to;
-    }
-    restore(out, call.restore)
 }
 
 /// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
@@ -484,169 +398,175 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     ser.finish()
 }
 
-/// Writes the pass tables of `job`: every G76 cycle, then every G75.1
-/// cycle, then one table of the G32 blocks and one of the G92 blocks (each
-/// a pass over the program).
+/// Writes the pass tables of `job`, reading the program once: each cycle's
+/// table in program order, and the consecutive single-block threads of one
+/// kind (G32, G33, G92) as the rows of one table ([`PassTable`]).
 ///
 /// # Errors
 ///
 /// The program's first error (nothing written), or a failure to write.
 pub fn passes<W: Write>(job: &Job, out: W) -> Result<(), Failure> {
-    let summary = job.validate()?;
+    job.validate()?;
     let mut out = io::BufWriter::with_capacity(1 << 16, out);
-    // One reading of the program per kind of table, and none for a kind
-    // the program does not have.
-    let table =
-        |n: usize, f: fn(&Job, &mut io::BufWriter<W>) -> io::Result<()>, out: &mut io::BufWriter<W>| {
-            if n > 0 {
-                f(job, out)
-            } else {
-                Ok(())
-            }
+    // The title of the table of single-block threads being written.
+    let mut rows: Option<&'static str> = None;
+    let written = each_item(job, |item| {
+        let Some(cycle) = Cycle::of(item) else { return Ok(()) };
+        let table = cycle.pass_table();
+        let title = match table {
+            PassTable::Row { title, .. } => Some(title),
+            _ => None,
         };
-    let written = table(summary.g76, g76_tables, &mut out)
-        .and_then(|()| table(summary.g75, groove_tables, &mut out))
-        .and_then(|()| table(summary.g32, thread_table, &mut out))
-        .and_then(|()| table(summary.g92, g92_table, &mut out))
-        .and_then(|()| table(summary.linuxcnc, linuxcnc_tables, &mut out))
-        .and_then(|()| out.flush());
+        if rows.is_some() && rows != title {
+            out.write_all(b"\n")?;
+        }
+        let moves = moves(job, cycle)?;
+        match table {
+            PassTable::Passes => pass_rows(&mut out, job, cycle, moves),
+            PassTable::LinuxCncPasses => linuxcnc_rows(&mut out, job, cycle, moves),
+            PassTable::Plunges => plunge_rows(&mut out, job, cycle, moves),
+            PassTable::Row { title, columns, sync } => {
+                if rows != Some(title) {
+                    thread_heading(&mut out, title, &job.name, columns)?;
+                }
+                thread_rows(&mut out, cycle, moves, sync)
+            }
+        }?;
+        rows = title;
+        Ok(())
+    })
+    .and_then(|()| if rows.is_some() { out.write_all(b"\n") } else { Ok(()) })
+    .and_then(|()| out.flush());
     written.map_err(|e| Failure::output(&e))
 }
 
 const PASS_ROW: [&str; 8] = ["pass", "kind", "start", "flank", "depth", "cut", "X", "Z"];
 
-fn g76_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    each_item(job, |item| {
-        let Item::G76(call) = item else { return Ok(()) };
-        let u = call.cycle.units;
-        writeln!(out, "{} at line {} ({}):", call.code.code(), call.block.line, job.name)?;
-        let [a, b, c, d, e, f, g, h] = PASS_ROW;
-        writeln!(out, "{a:>6} {b:>6} {c:>5} {d:>6} {e:>12} {f:>12} {g:>14} {h:>14}")?;
-        let mut moves = moves(job, Cycle::G76(call))?.peekable();
-        while let Some(m) = moves.next() {
-            if m.role != Role::Approach {
-                continue;
-            }
-            let Some(p) = m.pass else { continue };
-            // The pass start Bn is where the approach ends, unless a
-            // lead-in of the same pass follows: then where that ends.
-            let bn =
-                moves.peek().filter(|n| n.role == Role::LeadIn && n.pass == Some(p)).map_or(m.to, |n| n.to);
+/// The table of a cycle's passes ([`PassTable::Passes`]: G76, G78).
+fn pass_rows<W: Write>(out: &mut W, job: &Job, cycle: Cycle<'_, '_>, moves: Moves) -> io::Result<()> {
+    let u = cycle.units();
+    writeln!(out, "{} at line {} ({}):", cycle.code(), cycle.line(), job.name)?;
+    let [a, b, c, d, e, f, g, h] = PASS_ROW;
+    writeln!(out, "{a:>6} {b:>6} {c:>5} {d:>6} {e:>12} {f:>12} {g:>14} {h:>14}")?;
+    let mut moves = moves.peekable();
+    while let Some(m) = moves.next() {
+        if m.role != Role::Approach {
+            continue;
+        }
+        let Some(p) = m.pass else { continue };
+        // The pass start Bn is where the approach ends, unless a lead-in
+        // of the same pass follows: then where that ends.
+        let bn = moves.peek().filter(|n| n.role == Role::LeadIn && n.pass == Some(p)).map_or(m.to, |n| n.to);
+        writeln!(
+            out,
+            "{:>6} {:>6} {:>5} {:>6} {:>12} {:>12} {:>14} {:>14}",
+            p.number,
+            kind_name(p.kind),
+            p.start,
+            flank_name(p.flank),
+            Fixed::new(p.depth, u),
+            Fixed::new(p.cut, u),
+            Fixed::new(bn.x, u),
+            Fixed::new(bn.z, u)
+        )?;
+    }
+    out.write_all(b"\n")
+}
+
+/// The passes of a LinuxCNC G76 ([`PassTable::LinuxCncPasses`]): one row
+/// per pass with its depth below the peak and its cut (radius), the X of
+/// the cut, and the Z where the pass starts and ends (both shifted by the
+/// compound angle, reading R-LCNC-PASS).
+fn linuxcnc_rows<W: Write>(out: &mut W, job: &Job, cycle: Cycle<'_, '_>, moves: Moves) -> io::Result<()> {
+    let u = cycle.units();
+    writeln!(out, "{} (LinuxCNC) at line {} ({}):", cycle.code(), cycle.line(), job.name)?;
+    let heading = ["pass", "kind", "flank", "depth", "cut", "X", "Z from", "Z to"];
+    let [a, b, c, d, e, f, g, h] = heading;
+    writeln!(out, "{a:>6} {b:>6} {c:>6} {d:>12} {e:>12} {f:>14} {g:>14} {h:>14}")?;
+    // (pass, Z of its first move, X of its cut)
+    let mut open: Option<(cycleref::Pass, i64, i64)> = None;
+    for m in moves {
+        let Some(p) = m.pass else { continue };
+        let entry = open.get_or_insert((p, m.to.z, m.to.x));
+        if m.role == Role::Cut {
+            entry.2 = m.to.x;
+        }
+        if m.role == Role::Retract {
             writeln!(
                 out,
-                "{:>6} {:>6} {:>5} {:>6} {:>12} {:>12} {:>14} {:>14}",
+                "{:>6} {:>6} {:>6} {:>12} {:>12} {:>14} {:>14} {:>14}",
                 p.number,
-                kind_name(p.kind),
-                p.start,
+                if p.kind == PassKind::Rough { "rough" } else { "full" },
                 flank_name(p.flank),
                 Fixed::new(p.depth, u),
                 Fixed::new(p.cut, u),
-                Fixed::new(bn.x, u),
-                Fixed::new(bn.z, u)
+                Fixed::new(entry.2, u),
+                Fixed::new(entry.1, u),
+                Fixed::new(m.to.z, u)
+            )?;
+            open = None;
+        }
+    }
+    out.write_all(b"\n")
+}
+
+/// The layers and plunges of a G75.1 cycle ([`PassTable::Plunges`]): one
+/// row per plunge with its Z, the X it starts from (Amn), the X it reaches
+/// (Bmn) and its pecks.
+fn plunge_rows<W: Write>(out: &mut W, job: &Job, cycle: Cycle<'_, '_>, moves: Moves) -> io::Result<()> {
+    let u = cycle.units();
+    let first = cycle.params_line().unwrap_or(cycle.line());
+    writeln!(out, "{} at lines {}-{} ({}):", cycle.code(), first, cycle.line(), job.name)?;
+    writeln!(
+        out,
+        "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+        "layer", "plunge", "Z", "from X (Amn)", "to X (Bmn)", "pecks"
+    )?;
+    let row = |out: &mut W, r: &Option<(cycleref::Plunge, Point, Point, u32)>| -> io::Result<()> {
+        if let Some((p, start, bottom, pecks)) = r {
+            writeln!(
+                out,
+                "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
+                p.layer,
+                p.number,
+                Fixed::new(start.z, u),
+                Fixed::new(start.x, u),
+                Fixed::new(bottom.x, u),
+                pecks
             )?;
         }
-        out.write_all(b"\n")
-    })
-}
-
-/// The passes of each LinuxCNC G76: one row per pass with its depth below
-/// the peak and its cut (radius), the X of the cut, and the Z where the
-/// pass starts and ends (both shifted by the compound angle, reading
-/// R-LCNC-PASS).
-fn linuxcnc_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    each_item(job, |item| {
-        let Item::LinuxCncG76(call) = item else { return Ok(()) };
-        let u = call.cycle.units;
-        writeln!(out, "G76 (LinuxCNC) at line {} ({}):", call.block.line, job.name)?;
-        let heading = ["pass", "kind", "flank", "depth", "cut", "X", "Z from", "Z to"];
-        let [a, b, c, d, e, f, g, h] = heading;
-        writeln!(out, "{a:>6} {b:>6} {c:>6} {d:>12} {e:>12} {f:>14} {g:>14} {h:>14}")?;
-        // (pass, Z of its first move, X of its cut)
-        let mut open: Option<(cycleref::Pass, i64, i64)> = None;
-        for m in moves(job, Cycle::LinuxCnc(call))? {
-            let Some(p) = m.pass else { continue };
-            let entry = open.get_or_insert((p, m.to.z, m.to.x));
-            if m.role == Role::Cut {
-                entry.2 = m.to.x;
-            }
-            if m.role == Role::Retract {
-                writeln!(
-                    out,
-                    "{:>6} {:>6} {:>6} {:>12} {:>12} {:>14} {:>14} {:>14}",
-                    p.number,
-                    if p.kind == PassKind::Rough { "rough" } else { "full" },
-                    flank_name(p.flank),
-                    Fixed::new(p.depth, u),
-                    Fixed::new(p.cut, u),
-                    Fixed::new(entry.2, u),
-                    Fixed::new(entry.1, u),
-                    Fixed::new(m.to.z, u)
-                )?;
-                open = None;
-            }
-        }
-        out.write_all(b"\n")
-    })
-}
-
-/// The layers and plunges of each G75.1 cycle: one row per plunge with its
-/// Z, the X it starts from (Amn), the X it reaches (Bmn) and its pecks.
-fn groove_tables<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    each_item(job, |item| {
-        let Item::G75(call) = item else { return Ok(()) };
-        let u = call.cycle.units;
-        writeln!(out, "G75.1 at lines {}-{} ({}):", call.params_line, call.block.line, job.name)?;
-        writeln!(
-            out,
-            "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
-            "layer", "plunge", "Z", "from X (Amn)", "to X (Bmn)", "pecks"
-        )?;
-        let row = |out: &mut W, r: &Option<(cycleref::Plunge, Point, Point, u32)>| -> io::Result<()> {
-            if let Some((p, start, bottom, pecks)) = r {
-                writeln!(
-                    out,
-                    "{:>6} {:>7} {:>14} {:>14} {:>14} {:>6}",
-                    p.layer,
-                    p.number,
-                    Fixed::new(start.z, u),
-                    Fixed::new(start.x, u),
-                    Fixed::new(bottom.x, u),
-                    pecks
-                )?;
-            }
-            Ok(())
-        };
-        let mut at = call.cycle.from;
-        let mut current: Option<(cycleref::Plunge, Point, Point, u32)> = None;
-        let (mut rough, mut finish) = (0, 0);
-        for m in moves(job, Cycle::G75(call))? {
-            if let Role::Peck(p) = m.role {
-                match &mut current {
-                    Some((q, _, bottom, pecks)) if *q == p => {
-                        *bottom = m.to;
-                        *pecks += 1;
-                    }
-                    _ => {
-                        row(out, &current)?;
-                        current = Some((p, at, m.to, 1));
-                    }
+        Ok(())
+    };
+    let mut at = cycle.from();
+    let mut current: Option<(cycleref::Plunge, Point, Point, u32)> = None;
+    let (mut rough, mut finish) = (0, 0);
+    for m in moves {
+        if let Role::Peck(p) = m.role {
+            match &mut current {
+                Some((q, _, bottom, pecks)) if *q == p => {
+                    *bottom = m.to;
+                    *pecks += 1;
+                }
+                _ => {
+                    row(out, &current)?;
+                    current = Some((p, at, m.to, 1));
                 }
             }
-            if m.motion != Motion::Rapid {
-                rough += usize::from(m.role == Role::RoughContour);
-                finish += usize::from(m.role == Role::FinishContour);
-            }
-            at = m.to;
         }
-        row(out, &current)?;
-        if rough > 0 {
-            writeln!(out, "rough contour (step 9): {rough} cutting moves")?;
+        if m.motion != Motion::Rapid {
+            rough += usize::from(m.role == Role::RoughContour);
+            finish += usize::from(m.role == Role::FinishContour);
         }
-        if finish > 0 {
-            writeln!(out, "finishing contour (step 10): {finish} cutting moves")?;
-        }
-        out.write_all(b"\n")
-    })
+        at = m.to;
+    }
+    row(out, &current)?;
+    if rough > 0 {
+        writeln!(out, "rough contour (step 9): {rough} cutting moves")?;
+    }
+    if finish > 0 {
+        writeln!(out, "finishing contour (step 10): {finish} cutting moves")?;
+    }
+    out.write_all(b"\n")
 }
 
 /// One row of a single-block thread table (G32, G92): the block's line, a
@@ -681,78 +601,47 @@ fn thread_heading<W: Write>(out: &mut W, title: &str, name: &str, columns: [&str
     writeln!(out, "{a:>6} {b:>5} {c:>14} {d:>14} {e:>14} {f:>14} {g:>14} {h:>14}")
 }
 
-/// One table of the program's G32 blocks: synchronisation, where the cut
-/// ends and where the run-out ends.
-fn thread_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    let mut any = false;
-    each_item(job, |item| {
-        let Item::G32(call) = item else { return Ok(()) };
-        if !any {
-            any = true;
-            let columns =
-                ["line", "sync", "from X", "from Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];
-            thread_heading(out, &format!("{} blocks", call.code), &job.name, columns)?;
-        }
-        let u = call.g32.units;
-        let (mut cut, mut run_out) = (None, None);
-        for m in moves(job, Cycle::G32(call))? {
-            match m.role {
-                Role::Cut if cut.is_none() => cut = Some(m.to),
-                Role::RunOut if run_out.is_none() => run_out = Some(m.to),
-                _ => {}
-            }
-        }
-        let cut = cut.unwrap_or(call.g32.start);
-        let sync = if call.g32.sync { "yes" } else { "no" };
-        thread_row(out, call.block.line, sync, [call.g32.start, cut], run_out, u)
-    })?;
-    if any {
-        out.write_all(b"\n")?;
-    }
-    Ok(())
-}
-
-/// One table of the program's G92 blocks, a row per block and start: the
-/// cut start B, where the cut ends and where the run-out ends.
-fn g92_table<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    let mut any = false;
-    each_item(job, |item| {
-        let Item::G92(call) = item else { return Ok(()) };
-        if !any {
-            any = true;
-            let columns = ["line", "start", "B X", "B Z", "cut to X", "cut to Z", "run-out X", "run-out Z"];
-            thread_heading(out, "G92 blocks", &job.name, columns)?;
-        }
-        let c = &call.cycle;
-        let u = c.units;
-        // B is the end of the approach, or A itself when B is A (R-ZERO).
-        let mut row = |start: u16, b: Point, cut: Point, run_out: Option<Point>| {
-            thread_row(out, call.block.line, &start.to_string(), [b, cut], run_out, u)
+/// The rows of one single-block thread ([`PassTable::Row`]), a row per
+/// start: where the cut starts (the end of the approach, or the cycle's
+/// start when it has none), where the cut ends and where the run-out ends;
+/// the second column is the block's synchronisation when `sync` gives it,
+/// else the start's number.
+fn thread_rows<W: Write>(
+    out: &mut W,
+    cycle: Cycle<'_, '_>,
+    moves: Moves,
+    sync: Option<bool>,
+) -> io::Result<()> {
+    let (line, u, a) = (cycle.line(), cycle.units(), cycle.start());
+    let mut row = |start: u16, b: Point, cut: Point, run_out: Option<Point>| {
+        let second = match sync {
+            Some(true) => "yes".to_string(),
+            Some(false) => "no".to_string(),
+            None => start.to_string(),
         };
-        // (start, B, end of the cut, end of the run-out); a cut left out
-        // (K = |W|: the whole thread is run-out) ends at B.
-        let mut current: Option<(u16, Point, Option<Point>, Option<Point>)> = None;
-        for m in moves(job, Cycle::G92(call))? {
-            let start = m.pass.map_or(1, |p| p.start);
-            if let Some((s, b, cut, r)) = current.filter(|(s, ..)| *s != start) {
-                row(s, b, cut.unwrap_or(b), r)?;
-                current = None;
-            }
-            let entry = current.get_or_insert((start, c.start, None, None));
-            match m.role {
-                Role::Approach => entry.1 = m.to,
-                Role::Cut => entry.2 = Some(m.to),
-                Role::RunOut => entry.3 = Some(m.to),
-                _ => {}
-            }
-        }
-        if let Some((s, b, cut, r)) = current {
+        thread_row(out, line, &second, [b, cut], run_out, u)
+    };
+    // (start, B, end of the first cut, end of the first run-out); a cut
+    // left out (K = |W|: the whole thread is run-out) ends at B.
+    let mut current: Option<(u16, Point, Option<Point>, Option<Point>)> = None;
+    for m in moves {
+        let start = m.pass.map_or(1, |p| p.start);
+        if let Some((s, b, cut, r)) = current.filter(|(s, ..)| *s != start) {
             row(s, b, cut.unwrap_or(b), r)?;
+            current = None;
         }
-        Ok(())
-    })?;
-    if any {
-        out.write_all(b"\n")?;
+        let entry = current.get_or_insert((start, a, None, None));
+        match m.role {
+            Role::Approach => entry.1 = m.to,
+            Role::Cut if entry.2.is_none() => entry.2 = Some(m.to),
+            Role::RunOut if entry.3.is_none() => entry.3 = Some(m.to),
+            _ => {}
+        }
     }
-    Ok(())
+    match current {
+        Some((s, b, cut, r)) => row(s, b, cut.unwrap_or(b), r),
+        // A G32 block without moves: its row still stands.
+        None if sync.is_some() => row(1, a, a, None),
+        None => Ok(()),
+    }
 }

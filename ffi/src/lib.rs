@@ -174,7 +174,6 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use cycleref::{expand_g76, expand_g92, G76Moves, G92Moves, InputUnit, Move, XMode};
 use cycleref_spec::pipeline::{self, Engine};
-use cycleref_spec::reader::Multipass;
 use cycleref_spec::{Cycle, Machine, Moves, ProfileName, ProgramError, Reader, RunError};
 
 pub use cursor::CyclerefCursor;
@@ -327,18 +326,15 @@ impl CycleMoves {
     /// The cycle's alarm, `CYCLE_ERROR` with the cycle's line.
     pub(crate) fn new(cycle: Cycle<'_, '_>) -> Result<CycleMoves, Failure> {
         let moves = pipeline::expand_at(cycle, Engine::Impl).map_err(run_failure)?;
-        // The C names of the pipeline's cycles.
-        let kind = match cycle {
-            Cycle::G76(c) => match c.code {
-                Multipass::G76 => CyclerefCycle::G76,
-                Multipass::G78 => CyclerefCycle::G78,
-            },
-            Cycle::G32(_) => CyclerefCycle::G32,
-            Cycle::G75(_) => CyclerefCycle::G75,
-            Cycle::G92(_) => CyclerefCycle::G92,
-            // LinuxCNC's G76 (the linuxcnc profile) is a G76.
-            Cycle::LinuxCnc(_) => CyclerefCycle::G76,
-        };
+        // The C name of the cycle's G code (LinuxCNC's G76 is a G76, its
+        // G33 a G32).
+        let kind = CyclerefCycle::of_code(cycle.code()).ok_or_else(|| {
+            Failure::new(
+                CyclerefStatus::Panic,
+                cycle.line(),
+                format!("{}: a cycle without a C name", cycle.code()),
+            )
+        })?;
         Ok(CycleMoves { moves, cycle: kind, line: cycle.line(), decimals: cycle.units().decimals() })
     }
 }

@@ -89,6 +89,24 @@ pub enum CyclerefCycle {
     G78 = 4,
 }
 
+impl CyclerefCycle {
+    /// The C name of a cycle's G code ([`cycleref_spec::Cycle::code`]):
+    /// LinuxCNC's G76 is a G76 and its G33 a G32. `None` for a code without
+    /// one (a cycle added to the registry needs its C name here; a test
+    /// holds every registered cycle to it).
+    #[must_use]
+    pub fn of_code(code: &str) -> Option<CyclerefCycle> {
+        Some(match code {
+            "G76" => CyclerefCycle::G76,
+            "G32" | "G33" => CyclerefCycle::G32,
+            "G75.1" => CyclerefCycle::G75,
+            "G92" => CyclerefCycle::G92,
+            "G78" => CyclerefCycle::G78,
+            _ => return None,
+        })
+    }
+}
+
 /// How the tool moves to the end point of a move.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

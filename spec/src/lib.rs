@@ -51,6 +51,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod cycles;
 pub mod differ;
 pub mod error;
 pub mod exact;

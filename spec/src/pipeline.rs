@@ -2,9 +2,11 @@
 //! chosen engine.
 //!
 //! Every consumer (the command's writers, `passes`, `plot`, `check`,
-//! `vectors`, the C interface) goes through [`Cycle`] and [`expand`]: a new
-//! cycle adds one variant here, one front end in the [reader](crate::reader),
-//! one engine, one reference and one formatter entry, nothing else.
+//! `vectors`, the C interface, Python) goes through [`Cycle`] and
+//! [`expand`]. A cycle is defined in one module of [`crate::cycles`] and
+//! registered by one line of the `registry!` table below, which makes
+//! [`Cycle`], its forwarding methods and [`Moves`]; what else adding a cycle
+//! takes is listed in [`crate::cycles`].
 //!
 //! Data flows one way: text → [`Reader`] → [`Item`] → [`Cycle`] →
 //! [`expand`] → [`Moves`]. Nothing here holds more than one cycle: the
@@ -16,6 +18,9 @@ use std::fmt;
 use cycleref::{
     CycleError, G32Moves, G75Moves, G76Moves, G92Moves, LinuxCncMoves, Move, Point, Units, XMode,
 };
+
+use crate::cycles::{Annotations, CycleCall, Heading, NcStyle, PassTable, ReferenceMoves, Region};
+use crate::lex::Block;
 
 use crate::error::ProgramError;
 use crate::profile::Machine;
@@ -32,102 +37,191 @@ pub enum Engine {
     Spec,
 }
 
-/// A cycle of a program, borrowed from the item the reader produced.
-#[derive(Clone, Copy, Debug)]
-pub enum Cycle<'r, 'a> {
-    /// A G76 multiple thread-cutting cycle, or a G78 (its code in the call:
-    /// the same cycle, another front end).
-    G76(&'r G76Call<'a>),
-    /// A G32 thread-cutting block.
-    G32(&'r G32Call<'a>),
-    /// A G75.1 groove cycle.
-    G75(&'r G75Call<'a>),
-    /// A G92 thread-cutting cycle block.
-    G92(&'r G92Call<'a>),
-    /// LinuxCNC's G76 (the `linuxcnc` profile).
-    LinuxCnc(&'r LinuxCncCall<'a>),
+/// The registry: one line per cycle, `Variant: Item::Variant(Call) =>
+/// EngineMoves`. It makes [`Cycle`] (the cycle an [`Item`] calls), its
+/// methods, each forwarding to the cycle's module in [`crate::cycles`],
+/// and [`Moves`] (the stream of either engine).
+macro_rules! registry {
+    ($($(#[$doc:meta])* $variant:ident: $item:ident($call:ident) => $engine:ty;)*) => {
+        /// A cycle of a program, borrowed from the item the reader
+        /// produced. Its methods are those of [`CycleCall`], implemented
+        /// in the cycle's module of [`crate::cycles`].
+        #[derive(Clone, Copy, Debug)]
+        pub enum Cycle<'r, 'a> {
+            $($(#[$doc])* $variant(&'r $call<'a>),)*
+        }
+
+        /// The number of cycles in the registry.
+        pub const CYCLE_KINDS: usize = [$(stringify!($variant)),*].len();
+
+        impl<'r, 'a> Cycle<'r, 'a> {
+            /// The cycle an item calls, if it calls one.
+            #[must_use]
+            pub fn of(item: &'r Item<'a>) -> Option<Cycle<'r, 'a>> {
+                match item {
+                    $(Item::$item(c) => Some(Cycle::$variant(c)),)*
+                    _ => None,
+                }
+            }
+
+            /// The cycle's place in the registry, `0..CYCLE_KINDS`.
+            #[must_use]
+            pub fn index(self) -> usize {
+                let mut i = 0;
+                $(
+                    if let Cycle::$variant(_) = self {
+                        return i;
+                    }
+                    i += 1;
+                )*
+                i
+            }
+
+            /// The moves of the cycle by `engine`.
+            fn moves(self, engine: Engine) -> Result<Moves, CycleError> {
+                Ok(Moves(match (self, engine) {
+                    $(
+                        (Cycle::$variant(c), Engine::Impl) => Inner::$variant(c.engine()?),
+                        (Cycle::$variant(c), Engine::Spec) => Inner::Reference(c.reference()?),
+                    )*
+                }))
+            }
+
+            /// The `nc` heading ([`CycleCall::heading`]).
+            #[must_use]
+            pub fn heading(self, moves: &Moves) -> Option<Heading> {
+                match self {
+                    $(Cycle::$variant(c) => c.heading(moves),)*
+                }
+            }
+
+            /// The regions the cycle cuts, for `check` ([`CycleCall::regions`]).
+            ///
+            /// # Errors
+            ///
+            /// The cycle's alarm.
+            pub fn regions(self, engine: Engine, out: &mut Vec<Region>) -> Result<(), CycleError> {
+                match self {
+                    $(Cycle::$variant(c) => c.regions(engine, out),)*
+                }
+            }
+
+            /// The features the conformance vectors tag the cycle with
+            /// ([`CycleCall::tags`]).
+            pub fn tags(self, moves: &[Move], tag: &mut dyn FnMut(&'static str)) {
+                match self {
+                    $(Cycle::$variant(c) => c.tags(moves, tag),)*
+                }
+            }
+
+            registry!(@forward [$($variant)*]
+                /// The G code, as the manuals write it (`G76`, `G78`, `G32`,
+                /// `G33`, `G75.1`, `G92`).
+                code -> &'static str;
+                /// The block that runs the cycle (G76 and G75.1: block 2).
+                block -> &'r Block<'a>;
+                /// The line of the block 1 whose values the cycle uses (G76,
+                /// G78 and G75.1), if any.
+                params_line -> Option<usize>;
+                /// True for the cycles of two blocks (G76 and G78 of the
+                /// FANUC-style profiles, G75.1), whose block 1
+                /// [`params_line`](Cycle::params_line) names (a G76 whose
+                /// block 1 came from the parameters has none).
+                has_params_block -> bool;
+                /// The cycle's start point (A of G76, G78 and G92; the G32
+                /// block's start; A of G75.1).
+                start -> Point;
+                /// Where the tool is before the cycle when that is not its
+                /// start point: G75.1's S, from which it rapids to A. `None`
+                /// for the others, which start where the tool is.
+                tool_before_start -> Option<Point>;
+                /// The units of the cycle's lengths.
+                units -> Units;
+                /// The X mode of the cycle's lengths (and of its moves).
+                x_mode -> XMode;
+                /// The modal state to program after the cycle's moves (G76
+                /// and G75.1 are one-shot codes whose expansion ends in G00).
+                restore -> Restore;
+                /// The annotations the cycle's moves carry.
+                annotations -> Annotations;
+                /// How the `nc` writer writes the cycle's moves.
+                nc_style -> NcStyle;
+                /// The cycle's `passes` table.
+                pass_table -> PassTable;
+            );
+        }
+
+        // Unboxed on purpose: one cycle's iterator lives on the stack,
+        // taken move by move in the hot loop (G75.1's, the largest, is
+        // boxed).
+        #[allow(clippy::large_enum_variant)]
+        #[derive(Clone, Debug)]
+        enum Inner {
+            $($variant($engine),)*
+            /// The exact-decimal reference: a pass at a time (G76, G78,
+            /// G92) or the cycle's moves held (G32, G75.1, LinuxCNC's G76).
+            Reference(Box<dyn ReferenceMoves>),
+        }
+
+        impl Iterator for Moves {
+            type Item = Move;
+
+            #[inline]
+            fn next(&mut self) -> Option<Move> {
+                match &mut self.0 {
+                    $(Inner::$variant(m) => m.next(),)*
+                    Inner::Reference(m) => m.next(),
+                }
+            }
+        }
+
+        impl Moves {
+            /// The number of rough passes of a G76 or G78 cycle (reading
+            /// R-LIMIT), when the engine counted them before its first move
+            /// (the fixed-point engine does); `None` for the other cycles
+            /// and for the reference, whose count
+            /// [`cycleref::engine::rough_pass_count`] gives.
+            #[must_use]
+            pub fn rough_passes(&self) -> Option<u64> {
+                match &self.0 {
+                    $(Inner::$variant(m) => <$call<'_> as CycleCall<'_>>::rough_passes(m),)*
+                    Inner::Reference(_) => None,
+                }
+            }
+        }
+    };
+    (@forward [$($variant:ident)*]) => {};
+    (@forward [$($variant:ident)*] $(#[$doc:meta])* $name:ident -> $ty:ty; $($rest:tt)*) => {
+        $(#[$doc])*
+        #[must_use]
+        pub fn $name(self) -> $ty {
+            match self {
+                $(Cycle::$variant(c) => c.$name(),)*
+            }
+        }
+        registry!(@forward [$($variant)*] $($rest)*);
+    };
 }
 
-impl<'r, 'a> Cycle<'r, 'a> {
-    /// The cycle an item calls, if it calls one.
-    #[must_use]
-    pub fn of(item: &'r Item<'a>) -> Option<Cycle<'r, 'a>> {
-        match item {
-            Item::G76(c) => Some(Cycle::G76(c)),
-            Item::G32(c) => Some(Cycle::G32(c)),
-            Item::G75(c) => Some(Cycle::G75(c)),
-            Item::G92(c) => Some(Cycle::G92(c)),
-            Item::LinuxCncG76(c) => Some(Cycle::LinuxCnc(c)),
-            Item::Source(_) | Item::Move(_) | Item::G76Params(_) | Item::G75Params(_) => None,
-        }
-    }
+registry! {
+    /// A G76 multiple thread-cutting cycle, or a G78 (its code in the
+    /// call: the same cycle, another front end).
+    G76: G76(G76Call) => G76Moves;
+    /// A G32 thread-cutting block (or LinuxCNC's G33).
+    G32: G32(G32Call) => G32Moves;
+    /// A G75.1 groove cycle.
+    G75: G75(G75Call) => Box<G75Moves>;
+    /// A G92 thread-cutting cycle block.
+    G92: G92(G92Call) => G92Moves;
+    /// LinuxCNC's G76 (the `linuxcnc` profile).
+    LinuxCnc: LinuxCncG76(LinuxCncCall) => LinuxCncMoves;
+}
 
-    /// The G code, as the manuals write it (`G76`, `G78`, `G32`, `G75.1`,
-    /// `G92`).
-    #[must_use]
-    pub fn code(self) -> &'static str {
-        match self {
-            Cycle::G76(c) => c.code.code(),
-            Cycle::G32(c) => c.code,
-            Cycle::G75(_) => "G75.1",
-            Cycle::G92(_) => "G92",
-            Cycle::LinuxCnc(_) => "G76",
-        }
-    }
-
+impl Cycle<'_, '_> {
     /// The line of the block that runs the cycle (G76 and G75.1: block 2).
     #[must_use]
     pub fn line(self) -> usize {
-        match self {
-            Cycle::G76(c) => c.block.line,
-            Cycle::G32(c) => c.block.line,
-            Cycle::G75(c) => c.block.line,
-            Cycle::G92(c) => c.block.line,
-            Cycle::LinuxCnc(c) => c.block.line,
-        }
-    }
-
-    /// The line of the block 1 whose values the cycle uses (G76, G78 and
-    /// G75.1), if any.
-    #[must_use]
-    pub fn params_line(self) -> Option<usize> {
-        match self {
-            Cycle::G76(c) => c.params_line,
-            Cycle::G75(c) => Some(c.params_line),
-            Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => None,
-        }
-    }
-
-    /// True for the cycles of two blocks (G76 and G78 of the FANUC-style
-    /// profiles, G75.1), whose block 1 [`params_line`](Cycle::params_line)
-    /// names (a G76 whose block 1 came from the parameters has none).
-    #[must_use]
-    pub fn has_params_block(self) -> bool {
-        matches!(self, Cycle::G76(_) | Cycle::G75(_))
-    }
-
-    /// The cycle's start point (A of G76, G78 and G92; the G32 block's
-    /// start; A of G75.1).
-    #[must_use]
-    pub fn start(self) -> Point {
-        match self {
-            Cycle::G76(c) => c.cycle.start,
-            Cycle::G32(c) => c.g32.start,
-            Cycle::G75(c) => c.cycle.start,
-            Cycle::G92(c) => c.cycle.start,
-            Cycle::LinuxCnc(c) => c.cycle.start,
-        }
-    }
-
-    /// Where the tool is before the cycle when that is not its start
-    /// point: G75.1's S, from which it rapids to A. `None` for the others,
-    /// which start where the tool is.
-    #[must_use]
-    pub fn tool_before_start(self) -> Option<Point> {
-        match self {
-            Cycle::G75(c) => Some(c.cycle.from),
-            Cycle::G76(_) | Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => None,
-        }
+        self.block().line
     }
 
     /// The line of the block that carries the word an alarm is about
@@ -142,133 +236,16 @@ impl<'r, 'a> Cycle<'r, 'a> {
         }
     }
 
-    /// The units of the cycle's lengths.
-    #[must_use]
-    pub fn units(self) -> Units {
-        match self {
-            Cycle::G76(c) => c.cycle.units,
-            Cycle::G32(c) => c.g32.units,
-            Cycle::G75(c) => c.cycle.units,
-            Cycle::G92(c) => c.cycle.units,
-            Cycle::LinuxCnc(c) => c.cycle.units,
-        }
-    }
-
-    /// The X mode of the cycle's lengths (and of its moves).
-    #[must_use]
-    pub fn x_mode(self) -> XMode {
-        match self {
-            Cycle::G76(c) => c.cycle.x_mode,
-            Cycle::G32(c) => c.g32.x_mode,
-            Cycle::G75(c) => c.cycle.x_mode,
-            Cycle::G92(c) => c.cycle.x_mode,
-            Cycle::LinuxCnc(c) => c.cycle.x_mode,
-        }
-    }
-
     /// Where the tool is when the cycle starts.
     #[must_use]
     pub fn from(self) -> Point {
-        match self {
-            Cycle::G76(c) => c.cycle.start,
-            Cycle::G32(c) => c.g32.start,
-            Cycle::G75(c) => c.cycle.from,
-            Cycle::G92(c) => c.cycle.start,
-            Cycle::LinuxCnc(c) => c.cycle.start,
-        }
-    }
-
-    /// The modal state to program after the cycle's moves (G76 and G75.1
-    /// are one-shot codes whose expansion ends in G00).
-    #[must_use]
-    pub fn restore(self) -> Restore {
-        match self {
-            Cycle::G76(c) => c.restore,
-            Cycle::G75(c) => c.restore,
-            // G32 and G92 are modal: the mode in force is theirs, and every
-            // G92 block is expanded (reading R-G92MODAL). LinuxCNC's G76 is
-            // modal too, but a later block that would repeat it is refused
-            // by the reader (its words are needed again), so the expansion's
-            // G0 is what the following blocks see.
-            Cycle::G32(_) | Cycle::G92(_) | Cycle::LinuxCnc(_) => Restore::default(),
-        }
+        self.tool_before_start().unwrap_or(self.start())
     }
 }
 
 /// The moves of one cycle, in order.
 #[derive(Clone, Debug)]
 pub struct Moves(Inner);
-
-// Unboxed on purpose: one cycle's iterator lives on the stack, taken move by
-// move in the hot loop (G75.1's, the largest, is boxed).
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Debug)]
-enum Inner {
-    G76(G76Moves),
-    G32(G32Moves),
-    G75(Box<G75Moves>),
-    G92(G92Moves),
-    LinuxCnc(LinuxCncMoves),
-    /// The exact-decimal reference: a pass at a time (G76, G78, G92) or
-    /// the cycle's moves held (G32, G75.1, LinuxCNC's G76).
-    Reference(Box<dyn ReferenceMoves>),
-}
-
-/// The reference's moves, boxed: a stream that can be cloned (as every
-/// [`Moves`] can) whatever its type.
-trait ReferenceMoves: Iterator<Item = Move> + Send + Sync {
-    fn boxed_clone(&self) -> Box<dyn ReferenceMoves>;
-}
-
-impl<T: Iterator<Item = Move> + Clone + Send + Sync + 'static> ReferenceMoves for T {
-    fn boxed_clone(&self) -> Box<dyn ReferenceMoves> {
-        Box::new(self.clone())
-    }
-}
-
-impl Clone for Box<dyn ReferenceMoves> {
-    fn clone(&self) -> Self {
-        // The stream inside the box: `self.boxed_clone()` would find the
-        // box itself (it is a `ReferenceMoves` too) and recurse.
-        (**self).boxed_clone()
-    }
-}
-
-impl fmt::Debug for dyn ReferenceMoves {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("ReferenceMoves")
-    }
-}
-
-impl Iterator for Moves {
-    type Item = Move;
-
-    #[inline]
-    fn next(&mut self) -> Option<Move> {
-        match &mut self.0 {
-            Inner::G76(m) => m.next(),
-            Inner::G32(m) => m.next(),
-            Inner::G75(m) => m.next(),
-            Inner::G92(m) => m.next(),
-            Inner::LinuxCnc(m) => m.next(),
-            Inner::Reference(m) => m.next(),
-        }
-    }
-}
-
-impl Moves {
-    /// The number of rough passes of a G76 or G78 cycle (reading R-LIMIT),
-    /// when the engine counted them before its first move (the fixed-point
-    /// engine does); `None` for the other cycles and for the reference,
-    /// whose count [`cycleref::engine::rough_pass_count`] gives.
-    #[must_use]
-    pub fn rough_passes(&self) -> Option<u64> {
-        match &self.0 {
-            Inner::G76(m) => Some(m.rough_passes()),
-            _ => None,
-        }
-    }
-}
 
 /// The moves of `cycle` by `engine`.
 ///
@@ -292,19 +269,7 @@ impl Moves {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn expand(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, CycleError> {
-    let inner = match (engine, cycle) {
-        (Engine::Impl, Cycle::G76(c)) => Inner::G76(cycleref::expand_g76(&c.cycle)?),
-        (Engine::Impl, Cycle::G32(c)) => Inner::G32(cycleref::expand_g32(&c.g32)?),
-        (Engine::Impl, Cycle::G75(c)) => Inner::G75(Box::new(cycleref::expand_g75(&c.cycle)?)),
-        (Engine::Impl, Cycle::G92(c)) => Inner::G92(cycleref::expand_g92(&c.cycle)?),
-        (Engine::Spec, Cycle::G76(c)) => Inner::Reference(Box::new(crate::g76::moves(&c.cycle)?)),
-        (Engine::Spec, Cycle::G32(c)) => Inner::Reference(Box::new(crate::g32::expand(&c.g32)?.into_iter())),
-        (Engine::Spec, Cycle::G75(c)) => Inner::Reference(Box::new(crate::g75::moves(&c.cycle)?)),
-        (Engine::Spec, Cycle::G92(c)) => Inner::Reference(Box::new(crate::g92::moves(&c.cycle)?)),
-        (Engine::Impl, Cycle::LinuxCnc(c)) => Inner::LinuxCnc(cycleref::expand_linuxcnc(&c.cycle)?),
-        (Engine::Spec, Cycle::LinuxCnc(c)) => Inner::Reference(Box::new(crate::linuxcnc::moves(&c.cycle)?)),
-    };
-    Ok(Moves(inner))
+    cycle.moves(engine)
 }
 
 /// Why a program cannot be expanded: the reader refused a block, or a
@@ -420,14 +385,14 @@ pub struct Validation {
     engine: Engine,
     items: usize,
     /// Cycles by kind: G76, G32, G75.1, G92, LinuxCNC G76.
-    cycles: [usize; 5],
+    cycles: [usize; CYCLE_KINDS],
 }
 
 impl Validation {
     /// Nothing checked yet; cycles will be expanded with `engine`.
     #[must_use]
     pub fn new(engine: Engine) -> Validation {
-        Validation { engine, items: 0, cycles: [0; 5] }
+        Validation { engine, items: 0, cycles: [0; CYCLE_KINDS] }
     }
 
     /// Checks the next item of the program.
@@ -438,13 +403,7 @@ impl Validation {
     pub fn item(&mut self, item: &Item<'_>) -> Result<(), RunError> {
         self.items += 1;
         if let Some(cycle) = Cycle::of(item) {
-            self.cycles[match cycle {
-                Cycle::G76(_) => 0,
-                Cycle::G32(_) => 1,
-                Cycle::G75(_) => 2,
-                Cycle::G92(_) => 3,
-                Cycle::LinuxCnc(_) => 4,
-            }] += 1;
+            self.cycles[cycle.index()] += 1;
             // Every alarm is raised before the first move: the moves are
             // not taken.
             expand_at(cycle, self.engine)?;

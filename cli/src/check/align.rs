@@ -9,7 +9,9 @@ use std::io::BufRead;
 use cycleref::Units;
 
 use super::compare::{compare, only_kinds};
-use super::ours::{OurSteps, Region};
+use cycleref_spec::cycles::Region;
+
+use super::ours::OurSteps;
 use super::report::Report;
 use super::trace::trace_steps;
 use super::{Divergence, Group, Kind, Step, TraceFormat};

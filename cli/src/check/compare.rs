@@ -7,8 +7,8 @@
 use cycleref::angle::FULL_TURN_MILLIDEGREES;
 use cycleref::{Lead, Point, StartAngle, Units};
 
-use super::ours::Region;
 use super::{Divergence, Group, Kind, Step};
+use cycleref_spec::cycles::Region;
 
 /// True when two leads are the same rate (F6 and F6.000; an F and an I of
 /// the same value).

@@ -8,9 +8,10 @@
 use std::collections::VecDeque;
 
 use cycleref::units::MAX_LENGTH;
-use cycleref::{Motion, Move, Pass, PassKind, Point, Role, StartAngle, Units, XMode};
+use cycleref::{Motion, Move, Pass, PassKind, Point, StartAngle, Units, XMode};
+use cycleref_spec::cycles::{Annotations, Region};
 use cycleref_spec::lex::{Block, Word};
-use cycleref_spec::pipeline::{Cycle, Moves};
+use cycleref_spec::pipeline::{Cycle, Moves, RunError};
 use cycleref_spec::profile::Dialect;
 use cycleref_spec::reader::{length_word, G32Call, Item, MotionMode, PlainMove};
 use cycleref_spec::Machine;
@@ -218,181 +219,6 @@ impl<'m> Follow<'m> {
     }
 }
 
-/// An open box `x_lo < x < x_hi`, `z_lo < z < z_hi` holding a region a
-/// cycle cuts (reading R-CHECKSPLIT): a rapid must not pass through it.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Region {
-    x_lo: i128,
-    x_hi: i128,
-    z_lo: i128,
-    z_hi: i128,
-}
-
-impl Region {
-    pub(super) fn spanning(points: &[(i128, i128)]) -> Option<Region> {
-        let (&(x0, z0), rest) = points.split_first()?;
-        let mut r = Region { x_lo: x0, x_hi: x0, z_lo: z0, z_hi: z0 };
-        for &(x, z) in rest {
-            r.x_lo = r.x_lo.min(x);
-            r.x_hi = r.x_hi.max(x);
-            r.z_lo = r.z_lo.min(z);
-            r.z_hi = r.z_hi.max(z);
-        }
-        Some(r)
-    }
-
-    /// The box with a dimension of no extent widened by one increment to
-    /// each side (the cut line of a straight or face thread).
-    fn widened_where_flat(mut self) -> Region {
-        if self.x_lo == self.x_hi {
-            self.x_lo -= 1;
-            self.x_hi += 1;
-        }
-        if self.z_lo == self.z_hi {
-            self.z_lo -= 1;
-            self.z_hi += 1;
-        }
-        self
-    }
-
-    /// True when the straight path from `p` to `q` meets the open box. Only
-    /// paths along one axis are decided (a split's legs are); a diagonal
-    /// gives false.
-    pub(super) fn crossed_by(&self, p: Point, q: Point) -> bool {
-        let (px, pz, qx, qz) = (i128::from(p.x), i128::from(p.z), i128::from(q.x), i128::from(q.z));
-        if px == qx {
-            self.x_lo < px && px < self.x_hi && pz.min(qz) < self.z_hi && pz.max(qz) > self.z_lo
-        } else if pz == qz {
-            self.z_lo < pz && pz < self.z_hi && px.min(qx) < self.x_hi && px.max(qx) > self.x_lo
-        } else {
-            false
-        }
-    }
-}
-
-/// The regions a cycle cuts (reading R-CHECKSPLIT).
-fn regions_of(job: &Job, cycle: Cycle<'_, '_>) -> Result<Vec<Region>, String> {
-    let mut out = Vec::new();
-    {
-        match cycle {
-            Cycle::LinuxCnc(call) => {
-                // The thread space (reading R-CHECKLCNC): between the peak
-                // line X₀ − σ|I| and the full-depth cut, over the Z the
-                // synchronised moves span; X as the check holds it on this
-                // profile, a diameter.
-                let c = &call.cycle;
-                let f = i128::from(if c.x_mode == XMode::Radius { 2 } else { 1 });
-                let sigma = i128::from(c.sigma());
-                let x0 = i128::from(c.start.x);
-                let peak = f * (x0 - sigma * i128::from(c.peak_offset.abs()));
-                let root = f * (x0 - sigma * i128::from(c.peak_offset.abs() + c.full_depth));
-                // Streamed: the span of the thread moves' Z, in constant
-                // memory whatever the number of passes.
-                let mut prev = c.start;
-                let mut span: Option<(i128, i128)> = None;
-                for m in job.expand(cycle)? {
-                    if matches!(m.motion, Motion::Thread { .. }) {
-                        for z in [i128::from(prev.z), i128::from(m.to.z)] {
-                            span = Some(span.map_or((z, z), |(lo, hi)| (lo.min(z), hi.max(z))));
-                        }
-                    }
-                    prev = m.to;
-                }
-                if let Some((lo, hi)) = span {
-                    out.extend(Region::spanning(&[(peak, lo), (root, hi)]));
-                }
-            }
-            Cycle::G76(call) => {
-                let c = &call.cycle;
-                let f = i128::from(c.x_mode.factor());
-                let (dx, dz) = (i128::from(c.end.x), i128::from(c.end.z));
-                let cx = dx + f * i128::from(c.taper);
-                let side = if i128::from(c.start.x) >= cx { 1 } else { -1 };
-                let crest = side * f * i128::from(c.thread_height);
-                // The Z where the cut nearest D starts: the thread runs from
-                // there to D (before it the tool is in the air: ours rapids
-                // to every pass start).
-                // Streamed, in constant memory (the cycle may have
-                // millions of passes across its starts).
-                let mut prev = c.start;
-                let mut zs: Option<i64> = None;
-                for m in job.expand(Cycle::G76(call))? {
-                    if let Motion::Thread { sync: true, .. } = m.motion {
-                        let nearer = zs.is_none_or(|z| (prev.z - c.end.z).abs() < (z - c.end.z).abs());
-                        if nearer {
-                            zs = Some(prev.z);
-                        }
-                    }
-                    prev = m.to;
-                }
-                let zs = i128::from(zs.unwrap_or(c.start.z));
-                out.extend(Region::spanning(&[(dx, dz), (cx, zs), (dx + crest, dz), (cx + crest, zs)]));
-            }
-            Cycle::G32(call) => {
-                // No thread height: the box the cut itself spans (a taper's).
-                let g = &call.g32;
-                // A straight thread's box has no width: it is widened by
-                // one increment across the thread (to each side), so that
-                // a rapid leg along the cut line itself (a Z-first retract
-                // dragging the tool back along the thread just cut) meets
-                // it, while our approach and retract, which end on its
-                // edges, do not.
-                if let Some(cut) = job.expand(Cycle::G32(call))?.find(|m| m.role == Role::Cut) {
-                    let s = g.start;
-                    let region = Region::spanning(&[
-                        (i128::from(s.x), i128::from(s.z)),
-                        (i128::from(cut.to.x), i128::from(cut.to.z)),
-                    ]);
-                    out.extend(region.map(Region::widened_where_flat));
-                }
-            }
-            Cycle::G92(call) => {
-                // No thread height either: the thread's crests stand above
-                // the cut line, so the box runs from A's short-axis
-                // coordinate (open: our approach, retract and return run on
-                // its edges) through the cut line into the work, along the
-                // thread between A's and C's long-axis coordinates. A face
-                // thread (P1) is the same with X and Z exchanged.
-                let c = &call.cycle;
-                let far = 4 * i128::from(cycleref::units::MAX_LENGTH);
-                let (a, e) = (c.start, c.end);
-                let (a_short, a_long, c_short, c_long) =
-                    if c.face { (a.z, a.x, e.z, e.x) } else { (a.x, a.z, e.x, e.z) };
-                let a_short = i128::from(a_short);
-                let short = if a_short > i128::from(c_short) { (-far, a_short) } else { (a_short, far) };
-                let (la, lc) = (i128::from(a_long), i128::from(c_long));
-                let long = (la.min(lc), la.max(lc));
-                let (x, z) = if c.face { (long, short) } else { (short, long) };
-                out.push(Region { x_lo: x.0, x_hi: x.1, z_lo: z.0, z_hi: z.1 });
-            }
-            Cycle::G75(call) => {
-                let c = &call.cycle;
-                let p = cycleref::groove_profile(c)
-                    .map_err(|e| format!("{}: line {}, G75.1: {e}", job.name, call.block.line))?;
-                let f = i128::from(c.x_mode.factor());
-                let mut pts = vec![(i128::from(c.start.x), i128::from(c.start.z))];
-                let mut prev = c.start;
-                for q in p.finishing() {
-                    pts.push((i128::from(q.at.x), i128::from(q.at.z)));
-                    if let cycleref::ProfileSegment::Arc { centre, .. } = q.segment {
-                        // The round lies in its circle's box; the radius is
-                        // at most |dx|/f + |dz| (rounded up).
-                        let dx = (i128::from(prev.x) - i128::from(centre.x)).abs();
-                        let dz = (i128::from(prev.z) - i128::from(centre.z)).abs();
-                        let r = (dx + f - 1) / f + dz;
-                        let (ox, oz) = (i128::from(centre.x), i128::from(centre.z));
-                        pts.push((ox - f * r, oz - r));
-                        pts.push((ox + f * r, oz + r));
-                    }
-                    prev = q.at;
-                }
-                out.extend(Region::spanning(&pts));
-            }
-        }
-    }
-    Ok(out)
-}
-
 /// The pass of a cycle's move that belongs to no pass (the return).
 const NO_PASS: Pass =
     Pass { kind: PassKind::Rough, number: 0, start: 0, depth: 0, cut: 0, flank: cycleref::Flank::Right };
@@ -407,19 +233,10 @@ struct Running {
     /// The cycle's G code.
     code: &'static str,
     line: usize,
-    /// G76 (annotated with its passes), G32, or G75.1.
-    kind: RunningKind,
+    /// What the cycle's moves carry besides their role.
+    annotations: Annotations,
     /// The X mode of the cycle's moves.
     x_mode: XMode,
-}
-
-#[derive(Clone, Copy)]
-enum RunningKind {
-    G76,
-    G32,
-    G75,
-    G92,
-    LinuxCnc,
 }
 
 /// Our toolpath, a step at a time: the program's motion blocks and its
@@ -456,16 +273,18 @@ impl<'j> OurSteps<'j> {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
                     let (line, role) = (run.line, m.role);
-                    let context = match run.kind {
-                        RunningKind::G76 => {
+                    let context = match run.annotations {
+                        Annotations::Passes => {
                             Context::G76 { code: run.code, line, pass: m.pass.unwrap_or(NO_PASS), role }
                         }
-                        RunningKind::G32 => Context::G32 { code: run.code, line, role },
-                        RunningKind::LinuxCnc => {
+                        Annotations::Roles => Context::G32 { code: run.code, line, role },
+                        Annotations::LinuxCncPasses => {
                             Context::LinuxCnc { line, pass: m.pass.unwrap_or(NO_PASS), role }
                         }
-                        RunningKind::G92 => Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role },
-                        RunningKind::G75 => Context::G75 { line, role },
+                        Annotations::Starts => {
+                            Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role }
+                        }
+                        Annotations::Plunges => Context::G75 { line, role },
                     };
                     // A move to where the tool is, is no move, in our
                     // toolpath as in a trace.
@@ -489,7 +308,14 @@ impl<'j> OurSteps<'j> {
                         Err(e) => Err(format!("{}: {e}", job.name)),
                     };
                 };
-                let started = regions_of(job, cycle)?;
+                let mut started = Vec::new();
+                cycle.regions(job.engine, &mut started).map_err(|e| {
+                    String::from(job.fail(&RunError::Cycle {
+                        line: cycle.line_of(&e),
+                        code: cycle.code(),
+                        error: e,
+                    }))
+                })?;
                 let moves = job.expand(cycle)?;
                 follow.start_cycle(cycle.from(), cycle.x_mode());
                 if regions.len() == REGION_CYCLES {
@@ -501,13 +327,7 @@ impl<'j> OurSteps<'j> {
                     code: cycle.code(),
                     line: cycle.line(),
                     x_mode: cycle.x_mode(),
-                    kind: match cycle {
-                        Cycle::G76(_) => RunningKind::G76,
-                        Cycle::G32(_) => RunningKind::G32,
-                        Cycle::G75(_) => RunningKind::G75,
-                        Cycle::G92(_) => RunningKind::G92,
-                        Cycle::LinuxCnc(_) => RunningKind::LinuxCnc,
-                    },
+                    annotations: cycle.annotations(),
                 });
                 Ok(None)
             });

@@ -7,15 +7,12 @@
 //! continuous thread of several blocks; [`tags`] reads back what each
 //! expanded block shows.
 
-use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use cycleref::{G32RunOut, LeadWord, Move};
-use cycleref_spec::reader::G32Call;
 use cycleref_spec::ProfileName;
 
 use super::machine::{any_profile, head, MachineStyle};
-use super::{tag, Draft, Expected, Rng, Template};
+use super::{Draft, Expected, Rng, Template};
 
 /// A G32 block.
 pub(super) fn g32(ctx: &MachineStyle, x: Option<i64>, z: Option<i64>, words: &[String]) -> String {
@@ -344,35 +341,3 @@ fn continuous(rng: &mut Rng) -> Draft {
 }
 
 // ---- what a G32 block shows ----
-
-/// The features a valid G32 block shows.
-pub(super) fn tags(call: &G32Call, moves: &[Move], tags: &mut BTreeSet<String>) {
-    let b = &call.g32;
-    tag(tags, "g32");
-    let (dx, dz) = (b.end.x - b.start.x, b.end.z - b.start.z);
-    tag(
-        tags,
-        if dx == 0 {
-            "g32:straight"
-        } else if dz == 0 {
-            "g32:face"
-        } else {
-            "g32:taper"
-        },
-    );
-    if dx != 0 && dz != 0 && dz.abs() * b.x_mode.factor() <= dx.abs() {
-        tag(tags, "g32:x-long");
-    }
-    tag(tags, if b.lead.word == LeadWord::F { "lead:F" } else { "lead:I" });
-    match b.run_out {
-        G32RunOut::None => {}
-        G32RunOut::Amounts { long: 0, .. } => tag(tags, "g32:pull-out"),
-        G32RunOut::Amounts { .. } => tag(tags, "g32:run-out"),
-    }
-    if !b.sync {
-        tag(tags, "g32:continuous");
-    }
-    if b.sync && !b.start_angle.is_zero() && !moves.is_empty() {
-        tag(tags, "g32:q");
-    }
-}

@@ -7,16 +7,13 @@
 //! path type its feature needs. [`tags`] reads back what the expanded
 //! cycle shows.
 
-use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use cycleref::g75::RIGHT_ANGLE;
-use cycleref::{CornerKind, IncrementSystem, Motion, Move, PathType, Role};
-use cycleref_spec::reader::G75Call;
+use cycleref::IncrementSystem;
 use cycleref_spec::ProfileName;
 
 use super::machine::{head, MachineStyle};
-use super::{tag, Draft, Expected, Rng, Template};
+use super::{Draft, Expected, Rng, Template};
 
 /// One G75.1 cycle as written, in increments: X, P(Δi), H, V and U in
 /// X-word units, R and the corner sizes radius values, the rest along Z.
@@ -392,46 +389,3 @@ fn internal(rng: &mut Rng) -> Draft {
 }
 
 // ---- what a G75.1 shows ----
-
-/// The features a valid G75.1 shows, read from the cycle and its moves.
-pub(super) fn tags(call: &G75Call, moves: &[Move], tags: &mut BTreeSet<String>) {
-    let c = &call.cycle;
-    tag(tags, "g75");
-    tag(tags, if c.depth < 0 { "g75:-x" } else { "g75:+x" });
-    tag(tags, if c.width < 0 { "g75:-z" } else { "g75:+z" });
-    if c.flank_a != RIGHT_ANGLE || c.flank_b != RIGHT_ANGLE {
-        tag(tags, "g75:angled");
-    }
-    if c.slope > 0 {
-        tag(tags, "g75:slope");
-    }
-    tag(
-        tags,
-        match c.path {
-            PathType::Rough => "g75:j0",
-            PathType::RoughAndFinish => "g75:j1",
-            PathType::Finish => "g75:j2",
-        },
-    );
-    if c.allowance_x > 0 || c.allowance_z > 0 {
-        tag(tags, "g75:allowances");
-    }
-    if c.tool_width.is_some_and(|w| w > 0) {
-        tag(tags, "g75:tool-width");
-    }
-    if moves.iter().any(|m| matches!(m.role, Role::LayerChange(_))) {
-        tag(tags, "g75:layers");
-    }
-    if moves.iter().any(|m| matches!(m.role, Role::PeckRetract(_))) {
-        tag(tags, "g75:pecking");
-    }
-    if c.corners.iter().any(|k| k.size > 0) {
-        tag(tags, "g75:corners");
-    }
-    if c.path.finishes() && c.corners.iter().any(|k| k.size > 0 && k.kind == CornerKind::Chamfer) {
-        tag(tags, "g75:chamfers");
-    }
-    if moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })) {
-        tag(tags, "g75:arcs");
-    }
-}

@@ -7,15 +7,13 @@
 //! its feature needs and writes the program; [`tags`] reads back from the
 //! expanded cycle what it shows, which the template's entry may require.
 
-use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use cycleref::{DepthMode, Infeed, LeadWord, Move, PassKind, Role, RunOut};
-use cycleref_spec::reader::{G76Call, Multipass};
+use cycleref::LeadWord;
 use cycleref_spec::ProfileName;
 
 use super::machine::{any_profile, head, MachineStyle, Param};
-use super::{tag, Draft, Expected, Rng, Template};
+use super::{Draft, Expected, Rng, Template};
 
 /// One G76 thread: geometry and schedule, in increments.
 #[derive(Clone)]
@@ -700,104 +698,3 @@ fn partial_p(rng: &mut Rng) -> Draft {
 }
 
 // ---- what a G76 shows ----
-
-/// The features a valid G76 shows, read from the cycle and its moves.
-pub(super) fn tags(call: &G76Call, moves: &[Move], tags: &mut BTreeSet<String>) {
-    let c = &call.cycle;
-    let g78 = call.code == Multipass::G78;
-    tag(tags, if g78 { "g78" } else { "g76" });
-    if g78 {
-        tag(
-            tags,
-            match c.infeed {
-                Infeed::Centre => "g78:centre",
-                Infeed::LeftFlank => "g78:left",
-                Infeed::RightFlank => "g78:right",
-                Infeed::RightCentre => "g78:right-centre",
-                Infeed::LeftRight => "g78:left-right",
-                Infeed::Alternating => "g78:alternating",
-            },
-        );
-        tag(tags, if c.depth_mode == DepthMode::Equal { "g78:equal" } else { "g78:decreasing" });
-    }
-    let xc = c.end.x + c.x_mode.factor() * c.taper;
-    tag(tags, if c.start.x > xc { "thread:external" } else { "thread:internal" });
-    tag(tags, if c.end.z < c.start.z { "direction:-z" } else { "direction:+z" });
-    let w = (c.end.z - c.start.z).abs();
-    tag(
-        tags,
-        if c.taper == 0 {
-            "taper:straight"
-        } else if w > c.taper.abs() {
-            "taper:z-long"
-        } else {
-            "taper:x-long"
-        },
-    );
-    tag(tags, if c.lead.word == LeadWord::F { "lead:F" } else { "lead:I" });
-    if !g78 {
-        tag(
-            tags,
-            match c.infeed {
-                Infeed::RightFlank => "infeed:D0",
-                Infeed::RightCentre => "infeed:D1",
-                Infeed::LeftRight => "infeed:D2",
-                // G76's D has no other modes: only G78's P(r) selects these.
-                Infeed::Centre | Infeed::LeftFlank | Infeed::Alternating => "infeed:g78-only",
-            },
-        );
-    }
-    if c.lead_in > 0 {
-        tag(tags, "lead-in");
-    }
-    if c.starts > 1 {
-        tag(tags, "multi-start");
-    }
-    match c.run_out {
-        RunOut::None => tag(tags, "run-out:none"),
-        RunOut::Amounts { long: 0, .. } => tag(tags, "run-out:pull-out"),
-        RunOut::Amounts { .. } => tag(tags, "run-out:amounts"),
-        RunOut::Chamfer { long, angle_degrees, .. } => {
-            tag(tags, if long.is_some() { "run-out:chamfer+k" } else { "run-out:chamfer" });
-            if angle_degrees != 45 {
-                tag(tags, "run-out:chamfer-angle");
-            }
-        }
-    }
-    match c.finishing_passes {
-        0 => tag(tags, "finish:none"),
-        1 => {}
-        _ => tag(tags, "finish:multiple"),
-    }
-    // The rough levels of start 1, in order (D2 cuts two passes per level).
-    let mut levels: Vec<i64> = Vec::new();
-    for m in moves.iter().filter(|m| m.role == Role::Approach) {
-        if let Some(p) = m.pass.filter(|p| p.kind == PassKind::Rough && p.start == 1) {
-            if levels.last() != Some(&p.depth) {
-                levels.push(p.depth);
-            }
-        }
-    }
-    let target = c.thread_height - c.finishing_allowance;
-    if target == 0 {
-        tag(tags, "schedule:d-equals-k");
-    }
-    if levels.len() == 1 {
-        tag(tags, "schedule:one-pass");
-    }
-    let q = u128::try_from(c.first_depth).unwrap_or(0);
-    let law = |n: usize| {
-        i64::try_from(cycleref::engine::round_sqrt(q * q * u128::try_from(n).unwrap_or(0)))
-            .unwrap_or(i64::MAX)
-    };
-    let step = c.min_cut.max(1);
-    for n in 2..=levels.len() {
-        let clamp = levels[n - 2] + step;
-        if c.depth_mode == DepthMode::Decreasing && c.min_cut > 0 && law(n) < clamp && clamp < target {
-            tag(tags, "schedule:min-cut");
-        }
-    }
-    if !levels.is_empty() && law(levels.len()) == target && c.depth_mode == DepthMode::Decreasing {
-        tag(tags, "schedule:exact-k-d");
-    }
-}

@@ -5,14 +5,11 @@
 //! the unit and the X mode (G7 or G8) first, the spindle, a G0 to the
 //! drive line, the one-block G76, and a G0 away.
 
-use std::collections::BTreeSet;
-
-use cycleref::{CycleError, Field, IncrementSystem, InputUnit, Move, XMode};
-use cycleref_spec::reader::LinuxCncCall;
+use cycleref::{CycleError, Field, IncrementSystem, InputUnit, XMode};
 use cycleref_spec::{ErrorKind, ProfileName};
 
 use super::machine::MachineStyle;
-use super::{tag, Draft, Expected, Rng, Template};
+use super::{Draft, Expected, Rng, Template};
 
 /// A linuxcnc machine (IS-C, the profile's own) and the program's unit and
 /// X mode: G20 or G21 and G7 or G8 are written in the program.
@@ -180,30 +177,4 @@ fn refused(rng: &mut Rng) -> Draft {
     };
     let lines = program(&ctx, &w, &block, spindle);
     Draft::new(ctx, lines).described(format!("LinuxCNC G76 refused: {what}"))
-}
-
-/// The features a LinuxCNC G76 shows.
-pub(super) fn tags(call: &LinuxCncCall, moves: &[Move], tags: &mut BTreeSet<String>) {
-    let c = &call.cycle;
-    tag(tags, "linuxcnc");
-    tag(tags, if c.internal() { "linuxcnc:internal" } else { "linuxcnc:external" });
-    tag(tags, if c.x_mode == XMode::Diameter { "linuxcnc:g7" } else { "linuxcnc:g8" });
-    if c.end.z > c.start.z {
-        tag(tags, "linuxcnc:towards-plus-z");
-    }
-    if c.degression > cycleref::linuxcnc::DEGRESSION_ONE {
-        tag(tags, "linuxcnc:degression");
-    }
-    if c.compound_angle != 0 {
-        tag(tags, "linuxcnc:compound-angle");
-    }
-    if c.spring_passes > 0 {
-        tag(tags, "linuxcnc:spring-passes");
-    }
-    if c.taper_distance > 0 && (c.entry_taper || c.exit_taper) {
-        tag(tags, "linuxcnc:taper-ends");
-    }
-    if moves.is_empty() {
-        tag(tags, "linuxcnc:no-moves");
-    }
 }

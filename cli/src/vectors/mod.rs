@@ -460,13 +460,7 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
         })?;
         match engine {
             Ok(moves) => {
-                match cycle {
-                    Cycle::G76(call) => g76::tags(call, &moves, &mut tags),
-                    Cycle::G32(call) => g32::tags(call, &moves, &mut tags),
-                    Cycle::G75(call) => g75::tags(call, &moves, &mut tags),
-                    Cycle::G92(call) => g92::tags(call, &moves, &mut tags),
-                    Cycle::LinuxCnc(call) => linuxcnc::tags(call, &moves, &mut tags),
-                }
+                cycle.tags(&moves, &mut |t| tag(&mut tags, t));
                 count += moves.len();
                 let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
                 cycles.push(serde_json::to_value(CycleJson::new(cycle, typed)).map_err(|e| e.to_string())?);

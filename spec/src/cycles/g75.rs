@@ -1,0 +1,203 @@
+//! G75.1, the radial trapezoidal groove cycle of the GSK 980TDi (seed 001,
+//! `docs/G75.md`).
+
+use std::fmt;
+
+use cycleref::g75::RIGHT_ANGLE;
+use cycleref::units::Length;
+use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role, Units, XMode};
+
+use super::{
+    Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable, ReferenceMoves, Region,
+};
+use crate::lex::Block;
+use crate::pipeline::{Engine, Moves};
+use crate::reader::{G75Call, Restore};
+
+/// The `nc` heading of a G75.1: `G75.1 lines 3-4: J1 rough + finish, 2
+/// layers, 9 plunges, tool width I3.000`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GrooveHeading {
+    /// The line of block 1.
+    pub params_line: usize,
+    /// The line of block 2.
+    pub line: usize,
+    /// J: rough, rough and finish, or finish.
+    pub path: PathType,
+    /// The roughing layers.
+    pub layers: u32,
+    /// The plunges.
+    pub plunges: usize,
+    /// The tool's width I, or `None` for a pointed tool.
+    pub tool_width: Option<Length>,
+}
+
+impl fmt::Display for GrooveHeading {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let path = match self.path {
+            PathType::Rough => "J0 rough",
+            PathType::RoughAndFinish => "J1 rough + finish",
+            PathType::Finish => "J2 finish",
+        };
+        write!(
+            f,
+            "G75.1 lines {}-{}: {path}, {} layer{} {} plunge{}, tool ",
+            self.params_line,
+            self.line,
+            self.layers,
+            if self.layers == 1 { "," } else { "s," },
+            self.plunges,
+            if self.plunges == 1 { "" } else { "s" },
+        )?;
+        match self.tool_width {
+            Some(w) => write!(f, "width I{w}"),
+            None => f.write_str("pointed"),
+        }
+    }
+}
+
+impl<'a> CycleCall<'a> for G75Call<'a> {
+    // Boxed: the largest of the engines' iterators.
+    type EngineMoves = Box<G75Moves>;
+
+    fn code(&self) -> &'static str {
+        "G75.1"
+    }
+
+    fn block(&self) -> &Block<'a> {
+        &self.block
+    }
+
+    fn params_line(&self) -> Option<usize> {
+        Some(self.params_line)
+    }
+
+    fn has_params_block(&self) -> bool {
+        true
+    }
+
+    fn start(&self) -> Point {
+        self.cycle.start
+    }
+
+    /// S, from which the cycle rapids to A.
+    fn tool_before_start(&self) -> Option<Point> {
+        Some(self.cycle.from)
+    }
+
+    fn units(&self) -> Units {
+        self.cycle.units
+    }
+
+    fn x_mode(&self) -> XMode {
+        self.cycle.x_mode
+    }
+
+    fn restore(&self) -> Restore {
+        self.restore
+    }
+
+    fn engine(&self) -> Result<Box<G75Moves>, CycleError> {
+        Ok(Box::new(cycleref::expand_g75(&self.cycle)?))
+    }
+
+    fn reference(&self) -> Result<Box<dyn ReferenceMoves>, CycleError> {
+        Ok(Box::new(crate::g75::moves(&self.cycle)?))
+    }
+
+    fn heading(&self, moves: &Moves) -> Option<Heading> {
+        // The layers and plunges, counted on a copy of the moves.
+        let (mut layers, mut plunges) = (0, 0);
+        for m in moves.clone() {
+            if let Role::Peck(p) | Role::PeckRetract(p) | Role::PlungeRetract(p) | Role::Step(p) = m.role {
+                layers = layers.max(p.layer);
+            }
+            plunges += usize::from(matches!(m.role, Role::PlungeRetract(_)));
+        }
+        let c = &self.cycle;
+        Some(Heading::Groove(GrooveHeading {
+            params_line: self.params_line,
+            line: self.block.line,
+            path: c.path,
+            layers,
+            plunges,
+            tool_width: c.tool_width.map(|w| Length::new(w, c.units)),
+        }))
+    }
+
+    fn annotations(&self) -> Annotations {
+        Annotations::Plunges
+    }
+
+    fn nc_style(&self) -> NcStyle {
+        NcStyle { words: MoveWords::Groove, passes: PassComment::None, plunges: true, contours: true }
+    }
+
+    fn pass_table(&self) -> PassTable {
+        PassTable::Plunges
+    }
+
+    fn regions(&self, _engine: Engine, out: &mut Vec<Region>) -> Result<(), CycleError> {
+        // The finishing profile's box, with each round's circle's box.
+        let c = &self.cycle;
+        let p = cycleref::groove_profile(c)?;
+        let f = i128::from(c.x_mode.factor());
+        let mut pts = vec![(i128::from(c.start.x), i128::from(c.start.z))];
+        let mut prev = c.start;
+        for q in p.finishing() {
+            pts.push((i128::from(q.at.x), i128::from(q.at.z)));
+            if let cycleref::ProfileSegment::Arc { centre, .. } = q.segment {
+                // The round lies in its circle's box; the radius is at most
+                // |dx|/f + |dz| (rounded up).
+                let dx = (i128::from(prev.x) - i128::from(centre.x)).abs();
+                let dz = (i128::from(prev.z) - i128::from(centre.z)).abs();
+                let r = (dx + f - 1) / f + dz;
+                let (ox, oz) = (i128::from(centre.x), i128::from(centre.z));
+                pts.push((ox - f * r, oz - r));
+                pts.push((ox + f * r, oz + r));
+            }
+            prev = q.at;
+        }
+        out.extend(Region::spanning(&pts));
+        Ok(())
+    }
+
+    fn tags(&self, moves: &[Move], tag: &mut dyn FnMut(&'static str)) {
+        let c = &self.cycle;
+        tag("g75");
+        tag(if c.depth < 0 { "g75:-x" } else { "g75:+x" });
+        tag(if c.width < 0 { "g75:-z" } else { "g75:+z" });
+        if c.flank_a != RIGHT_ANGLE || c.flank_b != RIGHT_ANGLE {
+            tag("g75:angled");
+        }
+        if c.slope > 0 {
+            tag("g75:slope");
+        }
+        tag(match c.path {
+            PathType::Rough => "g75:j0",
+            PathType::RoughAndFinish => "g75:j1",
+            PathType::Finish => "g75:j2",
+        });
+        if c.allowance_x > 0 || c.allowance_z > 0 {
+            tag("g75:allowances");
+        }
+        if c.tool_width.is_some_and(|w| w > 0) {
+            tag("g75:tool-width");
+        }
+        if moves.iter().any(|m| matches!(m.role, Role::LayerChange(_))) {
+            tag("g75:layers");
+        }
+        if moves.iter().any(|m| matches!(m.role, Role::PeckRetract(_))) {
+            tag("g75:pecking");
+        }
+        if c.corners.iter().any(|k| k.size > 0) {
+            tag("g75:corners");
+        }
+        if c.path.finishes() && c.corners.iter().any(|k| k.size > 0 && k.kind == CornerKind::Chamfer) {
+            tag("g75:chamfers");
+        }
+        if moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })) {
+            tag("g75:arcs");
+        }
+    }
+}

@@ -1,0 +1,368 @@
+//! The cycles, each defined in one module that implements [`CycleCall`],
+//! and the one table that lists them ([`registry!`](crate::pipeline)'s
+//! invocation in [`crate::pipeline`]).
+//!
+//! A cycle's module says everything a consumer needs to know about it:
+//!
+//! * what it is: its G code, its blocks, where it starts, its units and X
+//!   mode, the modal state to restore after it;
+//! * its moves by either engine ([`CycleCall::engine`],
+//!   [`CycleCall::reference`]), every alarm raised before the first move;
+//! * the annotations its moves carry and how the `nc` writer comments them
+//!   ([`NcStyle`]), its `nc` heading ([`CycleCall::heading`]);
+//! * its row of the `passes` tables ([`PassTable`]);
+//! * the regions it cuts, for `check`'s split rapids ([`Region`], reading
+//!   R-CHECKSPLIT);
+//! * the features the conformance vectors tag it with.
+//!
+//! Consumers (`expand`'s writers, `passes`, `check`, `vectors`, C and
+//! Python) go through [`Cycle`](crate::Cycle), whose methods forward to the
+//! module of the cycle at hand; none of them matches on the kind of cycle.
+//!
+//! # Adding a cycle
+//!
+//! 1. Its typed cycle, engine and reference (in `cycleref` and in this
+//!    crate), and its front end in the [reader](crate::reader): the
+//!    [`Item`](crate::Item) variant it yields.
+//! 2. A module here implementing [`CycleCall`].
+//! 3. One line in the registry of [`crate::pipeline`].
+//! 4. Its templates in the conformance vectors, its tests and its readings.
+//!
+//! `spec/tests/registry.rs` holds this list to the code: every item that
+//! calls a cycle has a module here and a line in the registry.
+
+use std::fmt;
+
+use cycleref::{CycleError, Move, Point, Units, XMode};
+
+use crate::lex::Block;
+use crate::pipeline::Engine;
+use crate::reader::Restore;
+
+mod g32;
+mod g75;
+mod g76;
+mod g92;
+mod linuxcnc;
+
+pub use g75::GrooveHeading;
+pub use g76::MultipassHeading;
+
+/// The reference's moves of one cycle, boxed: a stream that can be cloned
+/// whatever its type.
+pub trait ReferenceMoves: Iterator<Item = Move> + Send + Sync {
+    /// A copy of the stream, where it stands.
+    fn boxed_clone(&self) -> Box<dyn ReferenceMoves>;
+}
+
+impl<T: Iterator<Item = Move> + Clone + Send + Sync + 'static> ReferenceMoves for T {
+    fn boxed_clone(&self) -> Box<dyn ReferenceMoves> {
+        Box::new(self.clone())
+    }
+}
+
+impl Clone for Box<dyn ReferenceMoves> {
+    fn clone(&self) -> Self {
+        // The stream inside the box: `self.boxed_clone()` would find the
+        // box itself (it is a `ReferenceMoves` too) and recurse.
+        (**self).boxed_clone()
+    }
+}
+
+impl fmt::Debug for dyn ReferenceMoves {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("ReferenceMoves")
+    }
+}
+
+/// One cycle of a program, as its call was read: what every consumer needs
+/// of it. Implemented once per cycle, in the cycle's module.
+pub trait CycleCall<'a> {
+    /// The fixed-point engine's moves.
+    type EngineMoves: Iterator<Item = Move> + Clone + fmt::Debug;
+
+    /// The G code, as the manuals write it (`G76`, `G78`, `G32`, `G33`,
+    /// `G75.1`, `G92`).
+    fn code(&self) -> &'static str;
+
+    /// The block that runs the cycle (G76 and G75.1: block 2).
+    fn block(&self) -> &Block<'a>;
+
+    /// The line of the block 1 whose values the cycle uses, if any.
+    fn params_line(&self) -> Option<usize> {
+        None
+    }
+
+    /// True for the cycles of two blocks, whose block 1
+    /// [`params_line`](CycleCall::params_line) names when it was written.
+    fn has_params_block(&self) -> bool {
+        false
+    }
+
+    /// The cycle's start point.
+    fn start(&self) -> Point;
+
+    /// Where the tool is before the cycle when that is not its start point.
+    fn tool_before_start(&self) -> Option<Point> {
+        None
+    }
+
+    /// The units of the cycle's lengths.
+    fn units(&self) -> Units;
+
+    /// The X mode of the cycle's lengths (and of its moves).
+    fn x_mode(&self) -> XMode;
+
+    /// The modal state to program after the cycle's moves.
+    fn restore(&self) -> Restore {
+        Restore::default()
+    }
+
+    /// The moves by the fixed-point engine.
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm, before any move.
+    fn engine(&self) -> Result<Self::EngineMoves, CycleError>;
+
+    /// The moves by the exact-decimal reference.
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm, before any move (the engine's).
+    fn reference(&self) -> Result<Box<dyn ReferenceMoves>, CycleError>;
+
+    /// The number of rough passes the engine's moves counted before the
+    /// first move, for the cycles that count them (G76, G78).
+    fn rough_passes(_moves: &Self::EngineMoves) -> Option<u64> {
+        None
+    }
+
+    /// The `nc` heading: the comment written before the cycle's moves,
+    /// without its parentheses; `None` for a cycle without one (G32). Given
+    /// the cycle's moves, which it may count on a copy.
+    fn heading(&self, moves: &crate::pipeline::Moves) -> Option<Heading>;
+
+    /// The annotations the cycle's moves carry beyond their role.
+    fn annotations(&self) -> Annotations;
+
+    /// How the `nc` writer writes the cycle's moves and comments them.
+    fn nc_style(&self) -> NcStyle;
+
+    /// The cycle's `passes` table.
+    fn pass_table(&self) -> PassTable;
+
+    /// The regions the cycle cuts (reading R-CHECKSPLIT), given its moves
+    /// by the engine in use (which it may walk).
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    fn regions(&self, engine: Engine, out: &mut Vec<Region>) -> Result<(), CycleError>;
+
+    /// The features the conformance vectors tag the cycle with, given its
+    /// moves.
+    fn tags(&self, moves: &[Move], tag: &mut dyn FnMut(&'static str));
+}
+
+/// An `nc` heading, as its cycle's module writes it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Heading {
+    /// `G76 line 4: 7 rough + 1 finish passes x 1 start`.
+    Multipass(MultipassHeading),
+    /// `G75.1 lines 3-4: J1 rough + finish, 2 layers, 9 plunges, tool width I3.000`.
+    Groove(GrooveHeading),
+    /// `G92 line 5: 1 pass x 2 starts`.
+    SinglePass {
+        /// The G code.
+        code: &'static str,
+        /// The line.
+        line: usize,
+        /// The number of starts.
+        starts: u32,
+    },
+    /// `G76 line 6: LinuxCNC threading cycle`.
+    Named {
+        /// The G code.
+        code: &'static str,
+        /// The line.
+        line: usize,
+        /// What the cycle is.
+        name: &'static str,
+    },
+}
+
+impl fmt::Display for Heading {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let plural = |n: u64| if n == 1 { "" } else { "s" };
+        match self {
+            Heading::Multipass(h) => h.fmt(f),
+            Heading::Groove(h) => h.fmt(f),
+            Heading::SinglePass { code, line, starts } => {
+                write!(f, "{code} line {line}: 1 pass x {starts} start{}", plural(u64::from(*starts)))
+            }
+            Heading::Named { code, line, name } => write!(f, "{code} line {line}: {name}"),
+        }
+    }
+}
+
+/// What a cycle's moves say of themselves beyond their role ([`Move::role`]
+/// and [`Move::pass`]), for the consumers that report them (`check`'s
+/// report names a move by them).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Annotations {
+    /// Each move's pass: its kind, number, start, depth, cut and flank (G76,
+    /// G78).
+    Passes,
+    /// Each move's pass in LinuxCNC's terms: its number, depth and cut
+    /// (LinuxCNC's G76).
+    LinuxCncPasses,
+    /// Each move's start of a multi-start thread (G92).
+    Starts,
+    /// The plunge of each peck in the role (G75.1).
+    Plunges,
+    /// The role only (G32, G33).
+    Roles,
+}
+
+/// How the `nc` writer writes a cycle's moves: the words of its moves and
+/// the comments it writes before them, from the annotations (pass, start,
+/// plunge, role) the moves carry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NcStyle {
+    /// The words of a move.
+    pub words: MoveWords,
+    /// The comment before the first move of each pass.
+    pub passes: PassComment,
+    /// A comment before the first move of each plunge (`(layer 1 plunge
+    /// 2)`, G75.1).
+    pub plunges: bool,
+    /// A comment before the moves of each contour (`(rough contour)`,
+    /// `(finishing contour)`, G75.1).
+    pub contours: bool,
+}
+
+/// The words of a cycle's moves in the `nc` output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MoveWords {
+    /// `G00`, `G01`, `G32 X Z F [Q]`, arcs with their centre in a comment.
+    Fanuc,
+    /// LinuxCNC's: `G0`, `G33 X Z K` (reading R-LCNC-SYNC).
+    LinuxCnc,
+    /// G75.1's: arcs with I and K from their start, Q in millidegrees.
+    Groove,
+}
+
+/// The comment before each pass of a cycle's moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PassComment {
+    /// None.
+    None,
+    /// `(rough 1 start 1 depth 1.800 cut 1.800)`, at each new pass or start.
+    Full,
+    /// `(pass 3)` or `(full depth 1)`, at each new pass.
+    Numbered,
+    /// `(start 2)` at each new start, when the cycle has more than one.
+    Starts,
+}
+
+/// The `passes` table of a cycle: each cycle's own table, or a row of one
+/// table shared by the consecutive cycles of the same kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PassTable {
+    /// A table of the cycle's passes: a row per pass with its number, kind,
+    /// start, flank, depth, cut and start point Bn.
+    Passes,
+    /// LinuxCNC's: a row per pass with the X of its cut and its Z span.
+    LinuxCncPasses,
+    /// G75.1's: a row per plunge, then the contours' cutting moves.
+    Plunges,
+    /// A row of the table of single-block threads headed `title`: the
+    /// block's line, its synchronisation or start, where the cut starts
+    /// and ends, and where the run-out ends.
+    Row {
+        /// The table's title (`G32 blocks`, `G92 blocks`).
+        title: &'static str,
+        /// The table's columns.
+        columns: [&'static str; 8],
+        /// The block's synchronisation (G32: the second column says
+        /// whether the move waits for the spindle), or `None` for a row
+        /// per start (G92: the second column is the start's number).
+        sync: Option<bool>,
+    },
+}
+
+/// A region a cycle cuts, an open box in increments (X in the units the
+/// trace is compared in, a diameter on diameter machines): its edges are
+/// outside it (reading R-CHECKSPLIT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Region {
+    /// The lowest X, outside.
+    pub x_lo: i128,
+    /// The highest X, outside.
+    pub x_hi: i128,
+    /// The lowest Z, outside.
+    pub z_lo: i128,
+    /// The highest Z, outside.
+    pub z_hi: i128,
+}
+
+impl Region {
+    /// The box that spans `points`; `None` for none.
+    #[must_use]
+    pub fn spanning(points: &[(i128, i128)]) -> Option<Region> {
+        let (&(x0, z0), rest) = points.split_first()?;
+        let mut r = Region { x_lo: x0, x_hi: x0, z_lo: z0, z_hi: z0 };
+        for &(x, z) in rest {
+            r.x_lo = r.x_lo.min(x);
+            r.x_hi = r.x_hi.max(x);
+            r.z_lo = r.z_lo.min(z);
+            r.z_hi = r.z_hi.max(z);
+        }
+        Some(r)
+    }
+
+    /// The box with a dimension of no extent widened by one increment to
+    /// each side (the cut line of a straight or face thread).
+    #[must_use]
+    pub fn widened_where_flat(mut self) -> Region {
+        if self.x_lo == self.x_hi {
+            self.x_lo -= 1;
+            self.x_hi += 1;
+        }
+        if self.z_lo == self.z_hi {
+            self.z_lo -= 1;
+            self.z_hi += 1;
+        }
+        self
+    }
+
+    /// True when the straight path from `p` to `q` meets the open box. Only
+    /// paths along one axis are decided (a split's legs are); a diagonal
+    /// gives false.
+    #[must_use]
+    pub fn crossed_by(&self, p: Point, q: Point) -> bool {
+        let (px, pz, qx, qz) = (i128::from(p.x), i128::from(p.z), i128::from(q.x), i128::from(q.z));
+        if px == qx {
+            self.x_lo < px && px < self.x_hi && pz.min(qz) < self.z_hi && pz.max(qz) > self.z_lo
+        } else if pz == qz {
+            self.z_lo < pz && pz < self.z_hi && px.min(qx) < self.x_hi && px.max(qx) > self.x_lo
+        } else {
+            false
+        }
+    }
+}
+
+/// Calls `f` with each move of `c` by `engine`, in order, in constant
+/// memory.
+fn for_each_move<'a, C: CycleCall<'a>>(
+    c: &C,
+    engine: Engine,
+    mut f: impl FnMut(&Move),
+) -> Result<(), CycleError> {
+    match engine {
+        Engine::Impl => c.engine()?.for_each(|m| f(&m)),
+        Engine::Spec => c.reference()?.for_each(|m| f(&m)),
+    }
+    Ok(())
+}
