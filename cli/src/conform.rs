@@ -46,7 +46,7 @@ use cycleref_spec::{Machine, ProfileName};
 use serde_json::Value;
 
 use crate::check::{self, CheckOptions, TraceFormat};
-use crate::job::{Failure, Job};
+use crate::job::{Cause, Failure, Job};
 
 /// Where the vendor's outcome of each case comes from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -465,7 +465,7 @@ fn judge(options: &ConformOptions, job: &Job, trace: (PathBuf, Option<TraceForma
                 None => head,
             })
         }
-        Err(e) => Verdict::Error(e),
+        Err(e) => Verdict::Error(e.to_string()),
     }
 }
 
@@ -577,15 +577,16 @@ pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Fai
     let pairs_run = matches!(options.outcomes, Outcomes::Pairs { .. });
     let cases =
         if pairs_run { pairs(&options.corpus, options.shard) } else { cases(&options.corpus, options.shard) }
-            .map_err(Failure::msg)?;
+            .map_err(|e| Failure::new(Cause::Corpus, e))?;
     let work = std::env::temp_dir().join(format!("cycleref-conform-{}", std::process::id()));
     if matches!(options.outcomes, Outcomes::Run(_)) {
-        fs::create_dir_all(&work).map_err(|e| Failure::msg(format!("{}: {e}", work.display())))?;
+        fs::create_dir_all(&work)
+            .map_err(|e| Failure::new(Cause::Output, format!("{}: {e}", work.display())))?;
     }
     let body_path = options.junit.as_ref().map(|p| p.with_extension("cycleref-part"));
     let mut body = match &body_path {
         Some(p) => Some(BufWriter::new(
-            fs::File::create(p).map_err(|e| Failure::msg(format!("{}: {e}", p.display())))?,
+            fs::File::create(p).map_err(|e| Failure::new(Cause::Output, format!("{}: {e}", p.display())))?,
         )),
         None => None,
     };
@@ -630,7 +631,7 @@ pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Fai
                 }
                 if let Some(b) = &mut body {
                     b.write_all(testcase(&r).as_bytes())
-                        .map_err(|e| Failure::msg(format!("the JUnit file: {e}")))?;
+                        .map_err(|e| Failure::new(Cause::Output, format!("the JUnit file: {e}")))?;
                 }
             }
         }
@@ -642,7 +643,7 @@ pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Fai
     result?;
     if let (Some(path), Some(part), Some(b)) = (&options.junit, &body_path, body) {
         write_junit(path, part, b, &summary, &options.corpus)
-            .map_err(|e| Failure::msg(format!("{}: {e}", path.display())))?;
+            .map_err(|e| Failure::new(Cause::Output, format!("{}: {e}", path.display())))?;
     }
     let shard = if options.shard == Shard::ALL {
         String::new()

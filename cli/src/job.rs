@@ -29,8 +29,10 @@ use cycleref_spec::{LineReader, Machine, ProfileName, ProgramError};
 /// How a command ends when it does not succeed.
 #[derive(Debug)]
 pub enum Failure {
-    /// An error for the user: printed on stderr, exit status 2.
-    Message(String),
+    /// An error that is not the program's (its input, the parameter file,
+    /// a trace, the arguments, the output): printed as `error[KIND]:
+    /// MESSAGE`, exit status 2.
+    Other(Box<OtherFailure>),
     /// An error of the program read (the reader's or a cycle's alarm):
     /// printed as `error[KIND]: MESSAGE`, exit status 2. `kind` is the
     /// stable kind the conformance vectors, Python and C name
@@ -50,6 +52,59 @@ pub struct ProgramFailure {
     pub message: String,
 }
 
+/// An error that is not the program's, with what it is about
+/// ([`Failure::Other`]).
+#[derive(Debug)]
+pub struct OtherFailure {
+    /// What the error is about: its stable kind.
+    pub cause: Cause,
+    /// The message, naming the file (and line) it is about.
+    pub message: String,
+}
+
+/// What an error that is not the program's is about; its stable kind
+/// ([`Cause::stable_kind`]) is printed before the message.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Cause {
+    /// The program cannot be read (a missing file, standard input).
+    Input,
+    /// The output cannot be written.
+    Output,
+    /// The parameter file cannot be read or applied.
+    Params,
+    /// The trace `check` compares cannot be read, or says what it cannot.
+    Trace,
+    /// The arguments ask for what cannot be done.
+    Usage,
+    /// A corpus of vectors or a list of pairs `conform` reads.
+    Corpus,
+    /// The generator of conformance vectors (its output directory, or an
+    /// engine that disagrees with the reference).
+    Vectors,
+    /// A block of the program `check` cannot compare (an arc by R, an arc
+    /// without a centre: reading R-CHECKARC).
+    Check,
+}
+
+impl Cause {
+    /// The stable kind: `input`, `output`, `params`, `trace`, `usage`,
+    /// `corpus`, `vectors`, `check`.
+    #[must_use]
+    pub fn stable_kind(self) -> &'static str {
+        match self {
+            Cause::Input => "input",
+            Cause::Output => "output",
+            Cause::Params => "params",
+            Cause::Trace => "trace",
+            Cause::Usage => "usage",
+            Cause::Corpus => "corpus",
+            Cause::Check => "check",
+            Cause::Vectors => "vectors",
+        }
+    }
+}
+
 impl Failure {
     /// A failure of the program read: its stable kind and message.
     #[must_use]
@@ -57,9 +112,24 @@ impl Failure {
         Failure::Program(Box::new(ProgramFailure { kind, message }))
     }
 
-    /// A failure with `message`.
-    pub fn msg(message: impl Into<String>) -> Failure {
-        Failure::Message(message.into())
+    /// A failure about `cause`, with `message`.
+    pub fn new(cause: Cause, message: impl Into<String>) -> Failure {
+        Failure::Other(Box::new(OtherFailure { cause, message: message.into() }))
+    }
+
+    /// A failure to read the program.
+    pub fn input(message: impl Into<String>) -> Failure {
+        Failure::new(Cause::Input, message)
+    }
+
+    /// A failure of the trace.
+    pub fn trace(message: impl Into<String>) -> Failure {
+        Failure::new(Cause::Trace, message)
+    }
+
+    /// A request that cannot be done.
+    pub fn usage(message: impl Into<String>) -> Failure {
+        Failure::new(Cause::Usage, message)
     }
 
     /// A failure to write the output.
@@ -68,24 +138,49 @@ impl Failure {
         if e.kind() == std::io::ErrorKind::BrokenPipe {
             Failure::BrokenPipe
         } else {
-            Failure::Message(format!("cannot write the output: {e}"))
+            Failure::new(Cause::Output, format!("cannot write the output: {e}"))
+        }
+    }
+
+    /// The stable kind (`syntax`, `cycle:too_many_passes`, `trace`,
+    /// `input`, ...), as the command prints it: `error[KIND]: MESSAGE`.
+    #[must_use]
+    pub fn kind(&self) -> &str {
+        match self {
+            Failure::Other(o) => o.cause.stable_kind(),
+            Failure::Program(p) => &p.kind,
+            Failure::BrokenPipe => "output",
+        }
+    }
+
+    /// The message, without the kind.
+    #[must_use]
+    pub fn message(&self) -> &str {
+        match self {
+            Failure::Other(o) => &o.message,
+            Failure::Program(p) => &p.message,
+            Failure::BrokenPipe => "the output pipe was closed",
         }
     }
 }
 
+impl fmt::Display for Failure {
+    /// `error[KIND]: MESSAGE`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "error[{}]: {}", self.kind(), self.message())
+    }
+}
+
+impl std::error::Error for Failure {}
+
 impl From<Failure> for String {
+    /// The message, without the kind.
     fn from(f: Failure) -> String {
         match f {
-            Failure::Message(m) => m,
+            Failure::Other(o) => o.message,
             Failure::Program(p) => p.message,
             Failure::BrokenPipe => "the output pipe was closed".to_string(),
         }
-    }
-}
-
-impl From<String> for Failure {
-    fn from(s: String) -> Failure {
-        Failure::Message(s)
     }
 }
 
@@ -153,12 +248,12 @@ impl Job {
         let (name, text) = if stdin {
             let mut input = std::io::stdin();
             if input.is_terminal() {
-                return Err(Failure::msg(
+                return Err(Failure::usage(
                     "no program: give a FILE, or `-` with the program on standard input (see --help)",
                 ));
             }
             let mut s = Vec::new();
-            input.read_to_end(&mut s).map_err(|e| Failure::msg(format!("{STDIN_NAME}: {e}")))?;
+            input.read_to_end(&mut s).map_err(|e| Failure::input(format!("{STDIN_NAME}: {e}")))?;
             (STDIN_NAME.to_string(), Text::Held(s))
         } else {
             open_named(opts.file.as_deref().unwrap_or(Path::new("-")))?
@@ -236,7 +331,7 @@ impl Job {
     pub fn read_failure(&self, e: &ReadError) -> Failure {
         match e {
             ReadError::Run(run) => self.fail(run),
-            _ => Failure::Message(format!("{}: {e}", self.name)),
+            _ => Failure::input(format!("{}: {e}", self.name)),
         }
     }
 
@@ -405,7 +500,7 @@ fn validate(text: &Text, machine: &Machine, engine: Engine) -> Result<Summary, R
 /// The program at `path`, with the name messages call it by.
 fn open_named(path: &Path) -> Result<(String, Text), Failure> {
     let name = path.display().to_string();
-    let text = Text::open(path).map_err(|e| Failure::msg(format!("{name}: {e}")))?;
+    let text = Text::open(path).map_err(|e| Failure::input(format!("{name}: {e}")))?;
     Ok((name, text))
 }
 
@@ -899,13 +994,14 @@ pub fn machine(opts: &Options) -> Result<Machine, Failure> {
     });
     let mut machine = Machine::new(flag.unwrap_or(ProfileName::Gsk988));
     if let Some(p) = &opts.params {
-        let t = std::fs::read_to_string(p).map_err(|e| Failure::msg(format!("{}: {e}", p.display())))?;
+        let t = std::fs::read_to_string(p)
+            .map_err(|e| Failure::new(Cause::Params, format!("{}: {e}", p.display())))?;
         let applied =
             if flag.is_some() { machine.apply_toml_keeping_profile(&t) } else { machine.apply_toml(&t) };
-        applied.map_err(|e| Failure::msg(format!("{}: {e}", p.display())))?;
+        applied.map_err(|e| Failure::new(Cause::Params, format!("{}: {e}", p.display())))?;
         // Reading R-PARAMS: a bad value is the file's error, named by key.
         cycleref_spec::reader::check_parameters(&machine)
-            .map_err(|e| Failure::msg(format!("{}: {}", p.display(), e.kind)))?;
+            .map_err(|e| Failure::new(Cause::Params, format!("{}: {}", p.display(), e.kind)))?;
     }
     if let Some(i) = opts.increment {
         machine.increment = i;

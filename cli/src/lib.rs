@@ -34,5 +34,5 @@ pub mod output;
 pub mod plot;
 pub mod vectors;
 
-pub use job::{Failure, Job, Options, Profile};
+pub use job::{Cause, Failure, Job, Options, Profile};
 pub use output::Format;

@@ -13,7 +13,7 @@ use std::process::ExitCode;
 
 use clap::{Args, CommandFactory as _, Parser, Subcommand, ValueEnum};
 use cycleref::IncrementSystem;
-use cycleref_cli::{check, output, plot, vectors, Failure, Format, Job, Options, Profile};
+use cycleref_cli::{check, output, plot, vectors, Cause, Failure, Format, Job, Options, Profile};
 use cycleref_spec::pipeline::Engine;
 
 const EXIT_STATUS: &str = "Exit status: 0 success (check: the toolpaths agree), 1 check: they differ, \
@@ -299,14 +299,11 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(code) => ExitCode::from(code),
         Err(Failure::BrokenPipe) => ExitCode::SUCCESS,
-        Err(Failure::Message(msg)) => {
-            warn(&msg);
-            ExitCode::from(2)
-        }
         // The stable kind first, as a compiler names its error codes, so
-        // that a vendor's script matches it with the vectors' kinds.
-        Err(Failure::Program(p)) => {
-            warn(&format!("error[{}]: {}", p.kind, p.message));
+        // that a vendor's script matches it with the vectors' kinds
+        // (`error[syntax]: …`, `error[trace]: …`).
+        Err(failure) => {
+            warn(&failure.to_string());
             ExitCode::from(2)
         }
     }
@@ -485,15 +482,14 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 None => command,
                 Some(name) => {
                     let found = command.get_subcommands().find(|c| c.get_name() == name.as_str()).cloned();
-                    let sub = found.ok_or_else(|| Failure::msg(format!("man: no subcommand `{name}`")))?;
+                    let sub = found.ok_or_else(|| Failure::usage(format!("man: no subcommand `{name}`")))?;
                     // The page's title is `cycleref-<name>`, as the main
                     // page's list of subcommands names it.
                     let title = format!("cycleref-{name}");
                     sub.name(title.clone()).bin_name(title).version(env!("CARGO_PKG_VERSION"))
                 }
             };
-            let text = man_page(page, subcommand.as_deref())
-                .map_err(|e| Failure::msg(format!("cannot render the manual page: {e}")))?;
+            let text = man_page(page, subcommand.as_deref()).map_err(|e| Failure::output(&e))?;
             print(&String::from_utf8_lossy(&text))?;
             Ok(0)
         }
@@ -504,8 +500,9 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         Command::Plot { common, output, trace, lines } => {
             let job = Job::load(&common.options())?;
             let (svg, note) = plot::run(&job, &lines, trace.as_deref())?;
-            std::fs::write(&output, svg)
-                .map_err(|e| Failure::msg(format!("{}: cannot write: {e}", output.display())))?;
+            std::fs::write(&output, svg).map_err(|e| {
+                Failure::new(Cause::Output, format!("{}: cannot write: {e}", output.display()))
+            })?;
             if let Some(note) = note {
                 warn(&note);
             }
@@ -564,7 +561,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 (Some(dir), _, false) => cycleref_cli::conform::Outcomes::Dir(dir),
                 (None, Some(template), false) => cycleref_cli::conform::Outcomes::Run(template),
                 (None, None, false) => {
-                    return Err(Failure::msg("give --traces DIR, --run TEMPLATE or --pairs"))
+                    return Err(Failure::usage("give --traces DIR, --run TEMPLATE or --pairs"))
                 }
             };
             let options = cycleref_cli::conform::ConformOptions {
@@ -573,7 +570,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 trace_format: trace_format.map(Into::into),
                 tolerance: compare.tolerance,
                 cycles_only: compare.cycles_only,
-                shard: cycleref_cli::conform::Shard::parse(&shard).map_err(Failure::msg)?,
+                shard: cycleref_cli::conform::Shard::parse(&shard).map_err(Failure::usage)?,
                 jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
                 junit,
             };
@@ -581,7 +578,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             Ok(u8::from(!summary.all_passed()))
         }
         Command::Vectors { count, seed, out } => {
-            print(&vectors::run(count, seed, &out)?)?;
+            print(&vectors::run(count, seed, &out).map_err(|e| Failure::new(Cause::Vectors, e))?)?;
             Ok(0)
         }
     }

@@ -79,7 +79,7 @@ fn phase_two(e: impl std::fmt::Display) -> io::Error {
 fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Result<()> {
     job.for_each_item(
         |failure| match failure {
-            Failure::Message(m) => phase_two(m),
+            Failure::Other(o) => phase_two(o.message),
             Failure::Program(p) => phase_two(p.message),
             Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
         },
@@ -90,7 +90,7 @@ fn each_item(job: &Job, f: impl FnMut(&Item<'_>) -> io::Result<()>) -> io::Resul
 /// The moves of `cycle`, which the first phase expanded without alarm.
 fn moves(job: &Job, cycle: Cycle<'_, '_>) -> io::Result<Moves> {
     job.expand(cycle).map_err(|f| match f {
-        Failure::Message(m) => phase_two(m),
+        Failure::Other(o) => phase_two(o.message),
         Failure::Program(p) => phase_two(p.message),
         Failure::BrokenPipe => io::ErrorKind::BrokenPipe.into(),
     })

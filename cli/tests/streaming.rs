@@ -145,7 +145,7 @@ fn a_full_disk_is_an_error() {
             .expect("runs");
         assert_eq!(out.status.code(), Some(2), "{file} {format}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.starts_with("cycleref: cannot write the output: "), "{err}");
+        assert!(err.starts_with("cycleref: error[output]: cannot write the output: "), "{err}");
         assert!(err.contains("No space left on device"), "{err}");
     }
     let out = Command::new(BIN)

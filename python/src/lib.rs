@@ -536,7 +536,7 @@ fn check(
             Program::Text(bytes) => cycleref_cli::check::check_bytes(&job, bytes, csv, tolerance),
             Program::File(path) => cycleref_cli::check::run(&job, path, tolerance),
         })
-        .map_err(Error::new_err)?;
+        .map_err(|f| Error::new_err(String::from(f)))?;
     Ok((report.agree(), report.divergences(), report.text(), report.json()))
 }
 

@@ -15,11 +15,13 @@ use super::ours::OurSteps;
 use super::report::Report;
 use super::trace::trace_steps;
 use super::{Divergence, Group, Kind, Step, TraceFormat};
-use crate::job::Job;
+use crate::job::{Failure, Job};
 
 /// Whose toolpath an error comes from.
 pub(super) enum StreamError {
-    Ours(String),
+    /// Our program's (its kind kept).
+    Ours(Failure),
+    /// The trace's.
     Theirs(String),
 }
 
@@ -60,7 +62,7 @@ const SPARE_GROUPS: usize = 2 * WINDOW_GROUPS + 16;
 /// hold more room than the passes they carry need.
 const SPARE_ROOM: usize = 64;
 
-impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
+impl<E, I: Iterator<Item = Result<(Step, u32), E>>> Grouper<I> {
     fn new(steps: I) -> Grouper<I> {
         Grouper { steps, next: None, count: 0, spare: Vec::new() }
     }
@@ -74,7 +76,7 @@ impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
         }
     }
 
-    fn pull(&mut self) -> Option<Result<(Step, u32), String>> {
+    fn pull(&mut self) -> Option<Result<(Step, u32), E>> {
         let s = self.next.take().map(Ok).or_else(|| self.steps.next());
         if matches!(s, Some(Ok(_))) {
             self.count += 1;
@@ -82,7 +84,7 @@ impl<I: Iterator<Item = Result<(Step, u32), String>>> Grouper<I> {
         s
     }
 
-    fn group(&mut self) -> Option<Result<(Group, u32), String>> {
+    fn group(&mut self) -> Option<Result<(Group, u32), E>> {
         let mut g = self.spare.pop().unwrap_or(Group { rapids: Vec::new(), cuts: Vec::new() });
         let (mut rapid_owner, mut cut_owner) = (None, None);
         loop {
@@ -508,7 +510,7 @@ mod tests {
     #[test]
     fn long_runs_are_grouped_in_pieces() {
         // One rapid and GROUP_MOVES + 5 feeds: two groups, the second of 5.
-        let steps = std::iter::once(Ok((step(Kind::Rapid, 0, 0, 1), 0))).chain(
+        let steps = std::iter::once(Ok::<_, String>((step(Kind::Rapid, 0, 0, 1), 0))).chain(
             (1..=GROUP_MOVES + 5).map(|i| Ok((step(Kind::Feed, 0, -i64::try_from(i).unwrap_or(0), 2), 0))),
         );
         let mut g = Grouper::new(steps);

@@ -58,7 +58,7 @@ use std::path::Path;
 
 use cycleref::{Lead, Pass, Point, Role, StartAngle, Units};
 
-use crate::job::Job;
+use crate::job::{Failure, Job};
 
 use align::{compare_streams, StreamError};
 pub use report::{Mark, Report, MAX_LISTED};
@@ -188,28 +188,27 @@ pub fn overlay(
     trace: &Path,
     units: Units,
     cycles: &[(usize, usize, usize)],
-) -> Result<crate::plot::Overlay, String> {
+) -> Result<crate::plot::Overlay, Failure> {
     if trace == Path::new("-") {
-        return Err(
+        return Err(Failure::usage(
             "plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
-                    give it as a file, not `-`"
-                .into(),
-        );
+                    give it as a file, not `-`",
+        ));
     }
     // Read twice: only a regular file gives the same bytes both times (a
     // FIFO or /dev/stdin would hang or look empty the second time).
     match std::fs::metadata(trace) {
         Ok(m) if m.is_file() => {}
         Ok(_) => {
-            return Err(format!(
-            "{}: plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
-                 give a regular file, not a pipe or a device",
-            trace.display()
-        ))
+            return Err(Failure::usage(format!(
+                "{}: plot --trace reads the trace twice (to draw it, and to find where it diverges from \
+                 ours): give a regular file, not a pipe or a device",
+                trace.display()
+            )))
         }
-        Err(e) => return Err(format!("{}: {e}", trace.display())),
+        Err(e) => return Err(Failure::trace(format!("{}: {e}", trace.display()))),
     }
-    let (name, source) = open_trace(trace)?;
+    let (name, source) = open_trace(trace).map_err(Failure::trace)?;
     let widened: Vec<(usize, usize)> = cycles
         .iter()
         .map(|&(_, from, to)| {
@@ -221,10 +220,10 @@ pub fn overlay(
     let mut per_cycle = vec![Vec::new(); cycles.len()];
     let mut dropped = 0_usize;
     for (i, step) in trace_steps(source, format_of(trace), &job.machine, units)
-        .map_err(|e| format!("{name}: {e}"))?
+        .map_err(|e| Failure::trace(format!("{name}: {e}")))?
         .enumerate()
     {
-        let p = step.map_err(|e| format!("{name}: {e}"))?.0.to;
+        let p = step.map_err(|e| Failure::trace(format!("{name}: {e}")))?.0.to;
         if i > last {
             // The rest is read only for its errors.
             continue;
@@ -263,7 +262,7 @@ pub enum TraceFormat {
 /// # Errors
 ///
 /// The program's first error, or the trace's, with its line.
-pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, String> {
+pub fn run(job: &Job, trace: &Path, tolerance: u64) -> Result<Report, Failure> {
     run_as(job, trace, &CheckOptions { tolerance, ..CheckOptions::default() })
 }
 
@@ -288,10 +287,10 @@ pub struct CheckOptions {
 /// # Errors
 ///
 /// The program's first error, or the trace's, with its line.
-pub fn run_as(job: &Job, trace: &Path, options: &CheckOptions) -> Result<Report, String> {
+pub fn run_as(job: &Job, trace: &Path, options: &CheckOptions) -> Result<Report, Failure> {
     if trace == Path::new("-") && job.name == crate::job::STDIN_NAME {
         job.validate()?;
-        return Err("the program and the trace cannot both come from standard input".into());
+        return Err(Failure::usage("the program and the trace cannot both come from standard input"));
     }
     let units = job.units()?;
     let format = options.format.unwrap_or_else(|| format_of(trace));
@@ -307,9 +306,9 @@ pub fn run_as(job: &Job, trace: &Path, options: &CheckOptions) -> Result<Report,
 /// (or of opening it) may come first, and then the validation is run after
 /// all, so that a program error still wins and every message is the one a
 /// validation phase first would have given.
-fn program_error_first(job: &Job, e: String) -> String {
+fn program_error_first(job: &Job, e: Failure) -> Failure {
     match job.validate() {
-        Err(program) => program.into(),
+        Err(program) => program,
         Ok(_) => e,
     }
 }
@@ -322,11 +321,11 @@ fn compare_file(
     units: Units,
     tolerance: u64,
     cycles_only: bool,
-) -> Result<Report, String> {
-    let (name, source) = open_trace(trace)?;
+) -> Result<Report, Failure> {
+    let (name, source) = open_trace(trace).map_err(Failure::trace)?;
     compare_streams(job, source, format, units, tolerance, cycles_only).map_err(|e| match e {
         StreamError::Ours(e) => e,
-        StreamError::Theirs(e) => format!("{name}: {e}"),
+        StreamError::Theirs(e) => Failure::trace(format!("{name}: {e}")),
     })
 }
 
@@ -351,9 +350,9 @@ fn compare_file(
 /// let lead = check::check_bytes(&job, b"G00 X80 Z10\nG32 Z-20 F2.1\nG00 X90\n", false, 0)?;
 /// assert_eq!((lead.agree(), lead.divergences()), (false, 1));
 /// assert!(lead.first_divergence().unwrap().contains("(lead)"));
-/// # Ok::<(), String>(())
+/// # Ok::<(), cycleref_cli::Failure>(())
 /// ```
-pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, String> {
+pub fn check_bytes(job: &Job, bytes: &[u8], is_csv: bool, tolerance: u64) -> Result<Report, Failure> {
     let format = if is_csv { TraceFormat::Csv } else { TraceFormat::Nc };
     check_bytes_as(job, bytes, format, tolerance)
 }
@@ -369,11 +368,12 @@ pub fn check_bytes_as(
     bytes: &[u8],
     format: TraceFormat,
     tolerance: u64,
-) -> Result<Report, String> {
+) -> Result<Report, Failure> {
     let units = job.units()?;
     compare_streams(job, Box::new(bytes), format, units, tolerance, false)
         .map_err(|e| match e {
-            StreamError::Ours(e) | StreamError::Theirs(e) => e,
+            StreamError::Ours(e) => e,
+            StreamError::Theirs(e) => Failure::trace(e),
         })
         .map_err(|e| program_error_first(job, e))
 }

@@ -18,7 +18,7 @@ use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
 use super::{Context, Kind, Step, UNKNOWN};
-use crate::job::{Items, Job};
+use crate::job::{Cause, Failure, Items, Job};
 
 /// A message naming a block's line and, when there is one, its word.
 fn at(b: &Block, w: Option<&Word>, msg: &str) -> String {
@@ -256,7 +256,7 @@ pub(super) struct OurSteps<'j> {
 }
 
 impl<'j> OurSteps<'j> {
-    pub(super) fn new(job: &'j Job, units: Units, cycles_only: bool) -> Result<OurSteps<'j>, String> {
+    pub(super) fn new(job: &'j Job, units: Units, cycles_only: bool) -> Result<OurSteps<'j>, Failure> {
         Ok(OurSteps {
             job,
             items: job.items()?,
@@ -268,7 +268,7 @@ impl<'j> OurSteps<'j> {
         })
     }
 
-    fn step(&mut self) -> Option<Result<(Step, u32), String>> {
+    fn step(&mut self) -> Option<Result<(Step, u32), Failure>> {
         loop {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
@@ -300,21 +300,17 @@ impl<'j> OurSteps<'j> {
             let (job, follow, segment, cycles_only) =
                 (self.job, &mut self.follow, self.segment, self.cycles_only);
             let (regions, current) = (&mut self.regions, &mut self.current);
-            let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, String> {
+            let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, Failure> {
                 let Some(cycle) = Cycle::of(item) else {
                     let Item::Move(m) = item else { return Ok(None) };
                     return match follow.plain(m) {
                         Ok(step) => Ok(step.filter(|_| !cycles_only).map(|s| (s, segment))),
-                        Err(e) => Err(format!("{}: {e}", job.name)),
+                        Err(e) => Err(Failure::new(Cause::Check, format!("{}: {e}", job.name))),
                     };
                 };
                 let mut started = Vec::new();
                 cycle.regions(job.engine, &mut started).map_err(|e| {
-                    String::from(job.fail(&RunError::Cycle {
-                        line: cycle.line_of(&e),
-                        code: cycle.code(),
-                        error: e,
-                    }))
+                    job.fail(&RunError::Cycle { line: cycle.line_of(&e), code: cycle.code(), error: e })
                 })?;
                 let moves = job.expand(cycle)?;
                 follow.start_cycle(cycle.from(), cycle.x_mode());
@@ -339,14 +335,14 @@ impl<'j> OurSteps<'j> {
                     }
                 }
                 Ok(Err(e)) => return Some(Err(e)),
-                Err(e) => return Some(Err(String::from(self.job.read_failure(&e)))),
+                Err(e) => return Some(Err(self.job.read_failure(&e))),
             }
         }
     }
 }
 
 impl Iterator for OurSteps<'_> {
-    type Item = Result<(Step, u32), String>;
+    type Item = Result<(Step, u32), Failure>;
 
     fn next(&mut self) -> Option<Self::Item> {
         self.step()

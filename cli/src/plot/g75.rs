@@ -67,7 +67,9 @@ impl<'a> Groove<'a> {
         let contour: Vec<Move> =
             job.expand(Cycle::G75(&pointed))?.filter(|m| m.role == Role::FinishContour).collect();
         let rough = cycleref::groove_profile(&call.cycle)
-            .map_err(|e| crate::Failure::msg(format!("{}: line {}, G75.1: {e}", job.name, call.block.line)))?
+            .map_err(|error| {
+                job.fail(&cycleref_spec::RunError::Cycle { line: call.block.line, code: "G75.1", error })
+            })?
             .roughing()
             .to_vec();
         Ok(Groove { call, moves, profile: profile_from_contour(&contour), rough })

@@ -111,10 +111,13 @@ impl<'a> Panel<'a> {
         call: &'a G76Call<'a>,
         moves: &[Move],
         trace: &[Point],
-    ) -> Result<Panel<'a>, String> {
+    ) -> Result<Panel<'a>, crate::Failure> {
         let c: &G76Cycle = &call.cycle;
         let line = call.block.line;
-        let g = cycleref_spec::g76::geometry(c).map_err(|e| format!("{name}: line {line}, G76: {e}"))?;
+        let g = cycleref_spec::g76::geometry(c).map_err(|error| {
+            let run = cycleref_spec::RunError::Cycle { line, code: call.code.code(), error };
+            crate::Failure::program(run.stable_kind(), format!("{name}: {run}"))
+        })?;
         let xf = c.x_mode.factor();
         // C: Z of A, X of D plus i; B: X of C plus k towards A (spec::g76::geometry).
         let c_x = c.end.x + xf * c.taper;

@@ -64,9 +64,11 @@ fn svg(
     lcncs: &[(LinuxCncCall<'_>, Vec<Move>)],
     grooves: &[g75::Groove<'_>],
     overlay: Option<&Overlay>,
-) -> Result<String, String> {
+) -> Result<String, crate::Failure> {
     if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && lcncs.is_empty() && grooves.is_empty() {
-        return Err(format!("{name}: no G76 cycle, G32 or G33 block, G92 block or G75.1 cycle to plot"));
+        return Err(crate::Failure::usage(format!(
+            "{name}: no G76 cycle, G32 or G33 block, G92 block or G75.1 cycle to plot"
+        )));
     }
     // G33 (the linuxcnc profile) is drawn with X as a diameter, as check
     // holds it.
@@ -319,14 +321,13 @@ pub fn run(
             // number of passes and starts).
             let count = job.expand(cycle)?.count();
             if count > MAX_DRAWN_MOVES {
-                return Err(format!(
+                return Err(crate::Failure::usage(format!(
                     "{}: line {}: the {} has {count} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
                      moves (expand and check have no such limit)",
                     job.name,
                     cycle.line(),
                     cycle.code()
-                )
-                .into());
+                )));
             }
             let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
@@ -351,7 +352,7 @@ pub fn run(
         },
     )?;
     if let Some(missing) = lines.iter().find(|l| !found.contains(*l)) {
-        return Err(crate::Failure::msg(format!(
+        return Err(crate::Failure::usage(format!(
             "{}: --line {missing}: no G76, G32, G92 or G75.1 block at that line",
             job.name
         )));
@@ -362,8 +363,7 @@ pub fn run(
         Some(t) => Some(crate::check::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())
-        .map_err(crate::Failure::Message)?;
+    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {
