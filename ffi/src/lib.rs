@@ -292,6 +292,7 @@ fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Fail
     let mut m = Machine::new(profile);
     if let Some(text) = params {
         m.apply_toml(text).map_err(|e| {
+            let e = e.to_string();
             Failure::invalid(if e.starts_with("parameter file") { e } else { format!("parameter file: {e}") })
         })?;
     }

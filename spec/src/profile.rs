@@ -38,14 +38,14 @@ impl ProfileName {
 }
 
 impl FromStr for ProfileName {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = ParamsError;
+    fn from_str(s: &str) -> Result<Self, ParamsError> {
         match s.to_ascii_lowercase().as_str() {
             "fanuc" => Ok(ProfileName::Fanuc),
             "gsk980" | "gsk980tdi" => Ok(ProfileName::Gsk980),
             "gsk988" | "gsk988ta" => Ok(ProfileName::Gsk988),
             "linuxcnc" => Ok(ProfileName::LinuxCnc),
-            _ => Err(format!("unknown profile `{s}` (expected fanuc, gsk980, gsk988 or linuxcnc)")),
+            _ => Err(ParamsError::UnknownProfile { name: s.to_string() }),
         }
     }
 }
@@ -573,8 +573,8 @@ impl Machine {
     ///
     /// # Errors
     ///
-    /// A message naming the key and what was wrong with it.
-    pub fn apply_toml(&mut self, text: &str) -> Result<(), String> {
+    /// [`ParamsError`], naming the key and what was wrong with it.
+    pub fn apply_toml(&mut self, text: &str) -> Result<(), ParamsError> {
         self.apply(text, false)
     }
 
@@ -585,14 +585,16 @@ impl Machine {
     /// # Errors
     ///
     /// As [`Machine::apply_toml`].
-    pub fn apply_toml_keeping_profile(&mut self, text: &str) -> Result<(), String> {
+    pub fn apply_toml_keeping_profile(&mut self, text: &str) -> Result<(), ParamsError> {
         self.apply(text, true)
     }
 
-    fn apply(&mut self, text: &str, keep_profile: bool) -> Result<(), String> {
-        let table: toml::Table = text.parse().map_err(|e| format!("parameter file: {e}"))?;
+    fn apply(&mut self, text: &str, keep_profile: bool) -> Result<(), ParamsError> {
+        let table: toml::Table =
+            text.parse().map_err(|e: toml::de::Error| ParamsError::Toml(e.to_string()))?;
+        let bad = |key: &'static str, expected: &'static str| ParamsError::BadSetting { key, expected };
         if let Some(v) = table.get("profile") {
-            let name: ProfileName = v.as_str().ok_or("`profile` must be a string")?.parse()?;
+            let name: ProfileName = v.as_str().ok_or(bad("profile", "a string"))?.parse()?;
             if name != self.profile.name && !keep_profile {
                 // The new profile's defaults, then the file's other keys.
                 let (pass_limit, nesting, blocks) =
@@ -610,86 +612,191 @@ impl Machine {
                     self.increment = match value.as_str() {
                         Some("is-b" | "IS-B" | "isb") => IncrementSystem::IsB,
                         Some("is-c" | "IS-C" | "isc") => IncrementSystem::IsC,
-                        _ => return Err("`increment` must be \"is-b\" or \"is-c\"".into()),
+                        _ => return Err(bad("increment", "\"is-b\" or \"is-c\"")),
                     }
                 }
                 "unit" => {
                     self.unit = match value.as_str() {
                         Some("metric" | "mm") => InputUnit::Metric,
                         Some("inch") => InputUnit::Inch,
-                        _ => return Err("`unit` must be \"metric\" or \"inch\"".into()),
+                        _ => return Err(bad("unit", "\"metric\" or \"inch\"")),
                     }
                 }
                 "x" => {
                     self.x_mode = match value.as_str() {
                         Some("diameter") => XMode::Diameter,
                         Some("radius") => XMode::Radius,
-                        _ => return Err("`x` must be \"diameter\" or \"radius\"".into()),
+                        _ => return Err(bad("x", "\"diameter\" or \"radius\"")),
                     }
                 }
                 "calculator_input" => {
                     self.calculator_input =
-                        value.as_bool().ok_or("`calculator_input` must be true or false")?;
+                        value.as_bool().ok_or(bad("calculator_input", "true or false"))?;
                 }
                 "pass_limit" => {
-                    let v = value.as_integer().ok_or("`pass_limit` must be an integer")?;
+                    let v = value.as_integer().ok_or(bad("pass_limit", "an integer"))?;
                     self.pass_limit = u32::try_from(v)
                         .ok()
                         .filter(|v| *v >= 1)
-                        .ok_or("`pass_limit` must be between 1 and 4294967295")?;
+                        .ok_or(bad("pass_limit", "between 1 and 4294967295"))?;
                 }
                 "subprogram_nesting" => {
-                    let v = value.as_integer().ok_or("`subprogram_nesting` must be an integer")?;
+                    let v = value.as_integer().ok_or(bad("subprogram_nesting", "an integer"))?;
                     self.subprogram_nesting = u8::try_from(v)
                         .ok()
                         .filter(|v| (1..=crate::reader::MAX_SUBPROGRAM_NESTING).contains(v))
-                        .ok_or("`subprogram_nesting` must be between 1 and 10")?;
+                        .ok_or(bad("subprogram_nesting", "between 1 and 10"))?;
                 }
                 "subprogram_block_limit" => {
-                    let v = value.as_integer().ok_or("`subprogram_block_limit` must be an integer")?;
+                    let v = value.as_integer().ok_or(bad("subprogram_block_limit", "an integer"))?;
                     self.subprogram_block_limit = u64::try_from(v)
                         .ok()
                         .filter(|v| *v >= 1)
-                        .ok_or("`subprogram_block_limit` must be at least 1")?;
+                        .ok_or(bad("subprogram_block_limit", "at least 1"))?;
                 }
                 "parameters" => {
-                    let t = value.as_table().ok_or("`parameters` must be a table")?;
+                    let t = value.as_table().ok_or(bad("parameters", "a table"))?;
                     for (num, v) in t {
                         self.set_param(num, v)?;
                     }
                 }
-                other => return Err(format!("parameter file: unknown key `{other}`")),
+                other => return Err(ParamsError::UnknownKey { key: other.to_string() }),
             }
         }
         Ok(())
     }
 
-    fn set_param(&mut self, num: &str, v: &toml::Value) -> Result<(), String> {
+    fn set_param(&mut self, num: &str, v: &toml::Value) -> Result<(), ParamsError> {
         let known = self.profile.default_params();
         let Some(default) = known.get(num) else {
             let list: Vec<&str> = known.keys().map(String::as_str).collect();
-            return Err(format!(
-                "parameter {num} is not used by the {} profile (it knows {})",
-                self.profile.name,
-                list.join(", ")
-            ));
+            return Err(ParamsError::UnknownParameter {
+                number: num.to_string(),
+                profile: self.profile.name,
+                known: list.join(", "),
+            });
         };
+        let bad = |expected: &'static str| ParamsError::BadParameter { number: num.to_string(), expected };
         let value = match (default, v) {
             (ParamValue::Int(_), toml::Value::Integer(i)) => ParamValue::Int(*i),
             (ParamValue::Length(_), toml::Value::String(s)) => ParamValue::Length(
                 Decimal::from_str_exact(s)
-                    .map_err(|_| format!("parameter {num}: `{s}` is not a decimal length"))?,
+                    .map_err(|_| ParamsError::NotALength { number: num.to_string(), value: s.clone() })?,
             ),
             (ParamValue::Length(_), toml::Value::Integer(i)) => ParamValue::Length(Decimal::from(*i)),
             (ParamValue::Length(_), toml::Value::Float(_)) => {
-                return Err(format!(
-                    "parameter {num}: write lengths as strings (\"0.15\") so they stay exact decimals"
-                ))
+                return Err(ParamsError::FloatLength { number: num.to_string() })
             }
-            (ParamValue::Int(_), _) => return Err(format!("parameter {num} must be an integer")),
-            (ParamValue::Length(_), _) => return Err(format!("parameter {num} must be a length string")),
+            (ParamValue::Int(_), _) => return Err(bad("an integer")),
+            (ParamValue::Length(_), _) => return Err(bad("a length string")),
         };
         self.params.insert(num.to_string(), value);
         Ok(())
     }
 }
+
+/// Why a parameter file cannot be applied ([`Machine::apply_toml`]), or a
+/// profile's name not read. Its `Display` names the key (or parameter) and
+/// what it must be.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ParamsError {
+    /// The file is not TOML: the TOML reader's message.
+    Toml(String),
+    /// `profile` names no profile.
+    UnknownProfile {
+        /// The name given.
+        name: String,
+    },
+    /// A setting (`increment`, `unit`, `x`, `pass_limit`, ...) has a value
+    /// it cannot have.
+    BadSetting {
+        /// The setting.
+        key: &'static str,
+        /// What it must be.
+        expected: &'static str,
+    },
+    /// A key no setting has.
+    UnknownKey {
+        /// The key.
+        key: String,
+    },
+    /// A parameter the profile does not use.
+    UnknownParameter {
+        /// The parameter's number.
+        number: String,
+        /// The profile.
+        profile: ProfileName,
+        /// The parameters it knows, comma-separated.
+        known: String,
+    },
+    /// A parameter with a value of the wrong type.
+    BadParameter {
+        /// The parameter's number.
+        number: String,
+        /// What it must be.
+        expected: &'static str,
+    },
+    /// A length parameter written as a TOML float, which is not exact.
+    FloatLength {
+        /// The parameter's number.
+        number: String,
+    },
+    /// A length parameter whose string is not a decimal.
+    NotALength {
+        /// The parameter's number.
+        number: String,
+        /// The string.
+        value: String,
+    },
+}
+
+impl ParamsError {
+    /// The stable kind: `params:toml`, `params:unknown_profile`,
+    /// `params:bad_setting`, `params:unknown_key`,
+    /// `params:unknown_parameter`, `params:bad_parameter`,
+    /// `params:float_length`, `params:not_a_length`.
+    #[must_use]
+    pub fn stable_kind(&self) -> &'static str {
+        match self {
+            ParamsError::Toml(_) => "params:toml",
+            ParamsError::UnknownProfile { .. } => "params:unknown_profile",
+            ParamsError::BadSetting { .. } => "params:bad_setting",
+            ParamsError::UnknownKey { .. } => "params:unknown_key",
+            ParamsError::UnknownParameter { .. } => "params:unknown_parameter",
+            ParamsError::BadParameter { .. } => "params:bad_parameter",
+            ParamsError::FloatLength { .. } => "params:float_length",
+            ParamsError::NotALength { .. } => "params:not_a_length",
+        }
+    }
+}
+
+impl fmt::Display for ParamsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParamsError::Toml(e) => write!(f, "parameter file: {e}"),
+            ParamsError::UnknownProfile { name } => {
+                write!(f, "unknown profile `{name}` (expected fanuc, gsk980, gsk988 or linuxcnc)")
+            }
+            ParamsError::BadSetting { key, expected } => write!(f, "`{key}` must be {expected}"),
+            ParamsError::UnknownKey { key } => write!(f, "parameter file: unknown key `{key}`"),
+            ParamsError::UnknownParameter { number, profile, known } => {
+                write!(f, "parameter {number} is not used by the {profile} profile (it knows {known})")
+            }
+            ParamsError::BadParameter { number, expected } => {
+                write!(f, "parameter {number} must be {expected}")
+            }
+            ParamsError::FloatLength { number } => {
+                write!(
+                    f,
+                    "parameter {number}: write lengths as strings (\"0.15\") so they stay exact decimals"
+                )
+            }
+            ParamsError::NotALength { number, value } => {
+                write!(f, "parameter {number}: `{value}` is not a decimal length")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamsError {}

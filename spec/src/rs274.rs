@@ -19,6 +19,8 @@
 //! (calls that cannot move the tool), or an error. Values are kept as the
 //! exact decimals printed.
 
+use std::fmt;
+
 use cycleref::{Motion, Move, Units, XMode};
 use rust_decimal::Decimal;
 
@@ -360,38 +362,104 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
 ///
 /// # Errors
 ///
-/// The first difference, named by the move's index and rs274's output
-/// line.
-pub fn compare(ours: &[Move], canon: &[CanonMove], units: Units, x_mode: XMode) -> Result<(), String> {
+/// The first difference ([`CanonDifference`]), named by the move's index
+/// and rs274's output line.
+pub fn compare(
+    ours: &[Move],
+    canon: &[CanonMove],
+    units: Units,
+    x_mode: XMode,
+) -> Result<(), CanonDifference> {
     if ours.len() != canon.len() {
-        return Err(format!("{} moves against rs274's {}", ours.len(), canon.len()));
+        return Err(CanonDifference::Count { ours: ours.len(), theirs: canon.len() });
     }
     let dec = units.decimals();
     let inc = Decimal::new(1, dec);
     let tol = inc + Decimal::new(5, 5);
     let xf = Decimal::from(x_mode.factor());
-    for (i, (m, k)) in ours.iter().zip(canon).enumerate() {
+    for (index, (m, k)) in ours.iter().zip(canon).enumerate() {
         let x = Decimal::new(m.to.x, dec) / xf;
         let z = Decimal::new(m.to.z, dec);
         if (x - k.x).abs() > tol || (z - k.z).abs() > tol {
-            return Err(format!(
-                "move {i}: ours X{x} Z{z} (X as a radius), rs274 X{} Z{} (output line {})",
-                k.x, k.z, k.line
-            ));
+            return Err(CanonDifference::Position { index, x, z, theirs: *k });
         }
         match (m.motion, k.rapid, k.pitch) {
             (Motion::Rapid, true, None) => {}
             (Motion::Thread { lead, .. }, false, Some(p)) => {
                 let ours = Decimal::new(i64::try_from(lead.mantissa).unwrap_or(i64::MAX), lead.scale);
                 if (ours - p).abs() > Decimal::new(1, 6) {
-                    return Err(format!(
-                        "move {i}: pitch {ours} against rs274's {p} (output line {})",
-                        k.line
-                    ));
+                    return Err(CanonDifference::Pitch { index, ours, theirs: *k });
                 }
             }
-            _ => return Err(format!("move {i}: {:?} against rs274's {k:?}", m.motion)),
+            _ => return Err(CanonDifference::Kind { index, ours: m.motion, theirs: *k }),
         }
     }
     Ok(())
 }
+
+/// The first difference [`compare`] found between our moves and rs274's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CanonDifference {
+    /// Not as many moves.
+    Count {
+        /// Ours.
+        ours: usize,
+        /// rs274's.
+        theirs: usize,
+    },
+    /// A move ends elsewhere.
+    Position {
+        /// The move's index.
+        index: usize,
+        /// Our X, as a radius.
+        x: Decimal,
+        /// Our Z.
+        z: Decimal,
+        /// rs274's move.
+        theirs: CanonMove,
+    },
+    /// A synchronised move at another pitch.
+    Pitch {
+        /// The move's index.
+        index: usize,
+        /// Our lead.
+        ours: Decimal,
+        /// rs274's move.
+        theirs: CanonMove,
+    },
+    /// A move of another kind.
+    Kind {
+        /// The move's index.
+        index: usize,
+        /// Our motion.
+        ours: Motion,
+        /// rs274's move.
+        theirs: CanonMove,
+    },
+}
+
+impl fmt::Display for CanonDifference {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CanonDifference::Count { ours, theirs } => write!(f, "{ours} moves against rs274's {theirs}"),
+            CanonDifference::Position { index, x, z, theirs: k } => write!(
+                f,
+                "move {index}: ours X{x} Z{z} (X as a radius), rs274 X{} Z{} (output line {})",
+                k.x, k.z, k.line
+            ),
+            CanonDifference::Pitch { index, ours, theirs: k } => {
+                write!(
+                    f,
+                    "move {index}: pitch {ours} against rs274's {} (output line {})",
+                    k.pitch.unwrap_or_default(),
+                    k.line
+                )
+            }
+            CanonDifference::Kind { index, ours, theirs } => {
+                write!(f, "move {index}: {ours:?} against rs274's {theirs:?}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for CanonDifference {}

@@ -89,9 +89,13 @@ fn parameters_replace_omitted_block1() {
 #[test]
 fn parameter_file_errors_name_the_key() {
     let mut m = gsk988();
-    assert!(m.apply_toml("[parameters]\n5140 = 0.1\n").unwrap_err().contains("strings"));
-    assert!(m.apply_toml("[parameters]\n57 = 1\n").unwrap_err().contains("not used by the gsk988"));
-    assert!(m.apply_toml("colour = 1\n").unwrap_err().contains("colour"));
+    assert!(m.apply_toml("[parameters]\n5140 = 0.1\n").unwrap_err().to_string().contains("strings"));
+    assert!(m
+        .apply_toml("[parameters]\n57 = 1\n")
+        .unwrap_err()
+        .to_string()
+        .contains("not used by the gsk988"));
+    assert!(m.apply_toml("colour = 1\n").unwrap_err().to_string().contains("colour"));
     m.apply_toml("profile = \"fanuc\"\nincrement = \"is-c\"\nunit = \"inch\"\nx = \"radius\"\n").unwrap();
     assert_eq!(m.profile.name, ProfileName::Fanuc);
 }

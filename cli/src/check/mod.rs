@@ -171,77 +171,35 @@ struct Divergence {
     moves: usize,
 }
 
-/// The trace at `trace` as points to draw over the cycles drawn: for each
-/// range of `ranges` (the indices of a drawn cycle's moves in our whole
-/// toolpath, the first move being 0), the trace's moves whose index lies in
-/// it, widened by a tenth (at least 16) each way so that a trace with a few
-/// moves more or less still shows whole; at most
-/// [`crate::plot::MAX_OVERLAY_POINTS`] a cycle. The trace is read as it is
-/// taken, then again by [`run`] for the divergences to mark.
+/// The trace at `trace` (a file, read by its extension) as the points its
+/// moves reach, in order, with its name: what `plot --trace` draws.
 ///
 /// # Errors
 ///
-/// The program's or the trace's first error; a trace on standard input
-/// (`-`), which cannot be read twice.
-pub fn overlay(
-    job: &Job,
+/// The trace cannot be opened, or is not of the program's dialect; each
+/// point a trace error with its line.
+pub(crate) fn trace_points<'m>(
+    job: &'m Job,
     trace: &Path,
     units: Units,
-    cycles: &[(usize, usize, usize)],
-) -> Result<crate::plot::Overlay, Failure> {
-    if trace == Path::new("-") {
-        return Err(Failure::usage(
-            "plot --trace reads the trace twice (to draw it, and to find where it diverges from ours): \
-                    give it as a file, not `-`",
-        ));
-    }
-    // Read twice: only a regular file gives the same bytes both times (a
-    // FIFO or /dev/stdin would hang or look empty the second time).
-    match std::fs::metadata(trace) {
-        Ok(m) if m.is_file() => {}
-        Ok(_) => {
-            return Err(Failure::usage(format!(
-                "{}: plot --trace reads the trace twice (to draw it, and to find where it diverges from \
-                 ours): give a regular file, not a pipe or a device",
-                trace.display()
-            )))
-        }
-        Err(e) => return Err(Failure::trace(format!("{}: {e}", trace.display()))),
-    }
+) -> Result<(String, impl Iterator<Item = Result<Point, Failure>> + 'm), Failure> {
     let (name, source) = open_trace(trace).map_err(Failure::trace)?;
-    let widened: Vec<(usize, usize)> = cycles
-        .iter()
-        .map(|&(_, from, to)| {
-            let slack = ((to - from) / 10).max(16);
-            (from.saturating_sub(slack), to + slack)
-        })
-        .collect();
-    let last = widened.iter().map(|r| r.1).max().unwrap_or(0);
-    let mut per_cycle = vec![Vec::new(); cycles.len()];
-    let mut dropped = 0_usize;
-    for (i, step) in trace_steps(source, format_of(trace), &job.machine, units)
-        .map_err(|e| Failure::trace(format!("{name}: {e}")))?
-        .enumerate()
-    {
-        let p = step.map_err(|e| Failure::trace(format!("{name}: {e}")))?.0.to;
-        if i > last {
-            // The rest is read only for its errors.
-            continue;
-        }
-        for (k, (from, to)) in widened.iter().enumerate() {
-            if (*from..*to).contains(&i) {
-                if per_cycle[k].len() < crate::plot::MAX_OVERLAY_POINTS {
-                    per_cycle[k].push(p);
-                } else {
-                    dropped += 1;
-                }
-            }
-        }
-    }
-    // Where they diverge: the comparison `check` makes, at tolerance 0.
-    let marks = compare_file(job, trace, format_of(trace), units, 0, false)?.marks();
-    let lines = cycles.iter().map(|&(line, _, _)| line).collect();
-    Ok(crate::plot::Overlay { name, per_cycle, lines, dropped, marks })
+    let steps = trace_steps(source, format_of(trace), &job.machine, units)
+        .map_err(|e| Failure::trace(format!("{name}: {e}")))?;
+    let named = name.clone();
+    let points =
+        steps.map(move |s| s.map(|(step, _)| step.to).map_err(|e| Failure::trace(format!("{named}: {e}"))));
+    Ok((name, points))
+}
+
+/// Where `job`'s program and the trace at `trace` diverge, at tolerance 0:
+/// the marks `plot --trace` draws.
+///
+/// # Errors
+///
+/// As [`run`].
+pub(crate) fn marks(job: &Job, trace: &Path, units: Units) -> Result<Vec<Mark>, Failure> {
+    Ok(compare_file(job, trace, format_of(trace), units, 0, false)?.marks())
 }
 
 /// The kinds of trace `check` reads.

@@ -33,17 +33,19 @@
 
 use std::collections::BTreeSet;
 
-use cycleref::{Move, Point};
+use cycleref::Move;
 use cycleref_spec::reader::{G32Call, G76Call, G92Call, LinuxCncCall};
 use svg::node::element::{Group, Line, Rectangle};
 use svg::Document;
 
 use canvas::num;
+pub use overlay::Overlay;
 
 mod canvas;
-mod g32;
+mod threads;
 mod g75;
 mod g76;
+mod overlay;
 mod zoom;
 
 /// Width of the picture (px).
@@ -73,12 +75,12 @@ fn svg(
     // G33 (the linuxcnc profile) is drawn with X as a diameter, as check
     // holds it.
     let thread_code = threads.first().map_or("G32", |(c, _)| c.code);
-    let threads: Vec<g32::BlockPath<'_>> = threads
+    let threads: Vec<threads::BlockPath<'_>> = threads
         .iter()
-        .map(|(c, m)| if c.code == "G33" { g32::BlockPath::g33(c, m) } else { g32::BlockPath::g32(c, m) })
+        .map(|(c, m)| if c.code == "G33" { threads::BlockPath::g33(c, m) } else { threads::BlockPath::g32(c, m) })
         .collect();
-    let g92s: Vec<g32::BlockPath<'_>> = g92s.iter().map(|(c, m)| g32::BlockPath::g92(c, m)).collect();
-    let lcncs: Vec<g32::BlockPath<'_>> = lcncs.iter().map(|(c, m)| g32::BlockPath::linuxcnc(c, m)).collect();
+    let g92s: Vec<threads::BlockPath<'_>> = g92s.iter().map(|(c, m)| threads::BlockPath::g92(c, m)).collect();
+    let lcncs: Vec<threads::BlockPath<'_>> = lcncs.iter().map(|(c, m)| threads::BlockPath::linuxcnc(c, m)).collect();
     let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
     let first_line = marks.first().and_then(|m| m.cycle_line);
     // The zoomed panel of the first divergence, drawn last.
@@ -147,7 +149,7 @@ fn svg(
             .take(MAX_MARKS)
             .collect();
         let first = blocks.iter().any(|b| first_line == Some(b.line));
-        doc = place(doc, g32::panel(name, code, blocks, &here, first), before, true);
+        doc = place(doc, threads::panel(name, code, blocks, &here, first), before, true);
         before += 1;
     }
     for (i, groove) in grooves.iter().enumerate() {
@@ -194,36 +196,6 @@ fn place(mut doc: Document, group: Group, slot: usize, rule: bool) -> Document {
 #[allow(clippy::cast_precision_loss)]
 fn count(n: usize) -> f64 {
     n as f64
-}
-
-/// A vendor's toolpath to draw over ours (`cycleref plot --trace`).
-pub struct Overlay {
-    /// The trace's name, for the label.
-    pub name: String,
-    /// For each cycle drawn, in order, the trace's points in order (in
-    /// increments) that correspond to its moves (`check::overlay`).
-    pub per_cycle: Vec<Vec<Point>>,
-    /// The line of each of those cycles (G76 and G75.1: block 2).
-    pub lines: Vec<usize>,
-    /// Points left out beyond [`MAX_OVERLAY_POINTS`] a cycle.
-    pub dropped: usize,
-    /// The divergences `check` finds between the program and the trace,
-    /// the first first: each G76 panel marks those in its cycle, and a last
-    /// panel is zoomed on the first.
-    pub marks: Vec<crate::check::Mark>,
-}
-
-impl Overlay {
-    /// The trace's points over the cycle at `line`.
-    fn points_for(&self, line: usize) -> &[Point] {
-        let i = self.lines.iter().position(|&l| l == line);
-        i.and_then(|i| self.per_cycle.get(i)).map_or(&[], Vec::as_slice)
-    }
-
-    /// The trace's name as a legend shows it: its file name.
-    fn short_name(&self) -> &str {
-        std::path::Path::new(&self.name).file_name().and_then(|n| n.to_str()).unwrap_or(&self.name)
-    }
 }
 
 /// The most divergences marked on one panel.
@@ -360,7 +332,7 @@ pub fn run(
     // The trace, read now: for each cycle drawn, its moves at the same
     // places in the toolpath.
     let overlay = match trace {
-        Some(t) => Some(crate::check::overlay(job, t, units, &ranges)?),
+        Some(t) => Some(overlay::overlay(job, t, units, &ranges)?),
         None => None,
     };
     let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())?;
