@@ -1,0 +1,457 @@
+//! The modal state at work: what a block is ([`State::scan`], the G and
+//! M codes, the modal values a block sets, the plain moves), the item it
+//! makes, and the checks shared by the cycles (axis words, addresses, the
+//! spindle, the machine's parameters).
+
+use cycleref::lead::{Lead, LeadWord};
+use cycleref::units::{Point, MAX_LENGTH};
+use cycleref::InputUnit;
+use rust_decimal::Decimal;
+
+use super::g75::G75Block1;
+use super::threads::G92Modal;
+use super::words::letter_mask;
+use super::{err, subprogram, Item, MotionMode, Multipass, PlainMove, State};
+use crate::error::{ErrorKind, ProgramError};
+use crate::lex::{letter_bit, Block, Word};
+use crate::profile::Dialect;
+
+/// X, Z, U and W of a block.
+type AxisWords<'b, 'a> =
+    (Option<&'b Word<'a>>, Option<&'b Word<'a>>, Option<&'b Word<'a>>, Option<&'b Word<'a>>);
+
+/// What [`State::scan`] found a block to be: the rest of its reading
+/// takes the block itself.
+#[derive(Debug)]
+pub(super) enum Next {
+    /// A block echoed as written: read in full.
+    Source,
+    /// A block of plain motion, read in full: the position it starts from
+    /// (the state holds where it ends).
+    Move((Option<i64>, Option<i64>)),
+    /// A block of the LinuxCNC dialect (read by `linuxcnc_block`).
+    LinuxCnc,
+    /// G75.1 block 1: read in full, pending.
+    G75Params,
+    /// G75.1 block 2, after its block 1.
+    G75(G75Block1),
+    /// G76 (G78) block 1: read in full.
+    G76Params,
+    /// G76 (G78) block 2.
+    G76(Multipass),
+    /// A G32 block.
+    G32,
+    /// A G92 block.
+    G92,
+}
+
+impl State<'_> {
+    /// True when the reader follows subprogram calls: a program, not a
+    /// trace (which holds no calls).
+    pub(super) fn follows_calls(&self) -> bool {
+        !self.trace
+    }
+
+    /// The machine's settings that no program can use (none at present:
+    /// 5129 = 1, the 988TA's high-speed threading mode, is refused by the
+    /// G76 block it would change, and followed by G92).
+    #[allow(clippy::unnecessary_wraps, clippy::unused_self)]
+    pub(super) fn check_machine(&self) -> Result<(), ProgramError> {
+        Ok(())
+    }
+
+    /// The count parameters a cycle reads when its block leaves a value
+    /// out, checked by the same rules as there (reading R-PARAMS).
+    pub(super) fn check_params(&self) -> Result<(), ProgramError> {
+        let profile = &self.machine.profile;
+        let p = &profile.params;
+        self.param_count(p.finishing_passes, i64::from(profile.min_finishing_passes), 99)?;
+        self.param_count(p.tool_angle, 0, 99)?;
+        self.param_count(p.chamfer, 0, 99)?;
+        if let Some(n) = p.chamfer_angle {
+            self.param_count(n, 0, 89)?;
+        }
+        if let Some(g78) = profile.g78 {
+            let last = i64::try_from(g78.infeeds.len()).unwrap_or(1) - 1;
+            self.param_count(g78.infeed_param, 0, last)?;
+            self.param_count(g78.depth_mode_param, 0, 1)?;
+        }
+        Ok(())
+    }
+
+    /// True when the 988TA's parameter 5129 (THM) selects the high-speed
+    /// threading mode.
+    pub(super) fn high_speed(&self) -> bool {
+        self.machine.profile.params.thread_mode.is_some_and(|n| self.machine.int_param(n) != 0)
+    }
+}
+
+impl State<'_> {
+    /// The item of `block` once [`State::scan`] has said what it is.
+    pub(super) fn item<'a>(&mut self, next: Next, block: Block<'a>) -> Result<Item<'a>, ProgramError> {
+        match next {
+            Next::Source => Ok(Item::Source(block)),
+            Next::Move(from) => Ok(Item::Move(self.plain_move(block, from))),
+            Next::LinuxCnc => self.linuxcnc_block(block),
+            Next::G75Params => Ok(Item::G75Params(block)),
+            Next::G75(first) => self.g75_block2(first, block).map(Item::G75),
+            Next::G76Params => Ok(Item::G76Params(block)),
+            Next::G76(code) => self.g76_block2(block, code).map(Item::G76),
+            Next::G32 => self.g32_block(block).map(Item::G32),
+            Next::G92 => self.g92_block(block).map(Item::G92),
+        }
+    }
+
+    /// Reads `block` in the modal state as far as deciding its item: all
+    /// of it for a block that is not a cycle's (most are), which then
+    /// moves once, into its item.
+    pub(super) fn scan(&mut self, block: &Block<'_>) -> Result<Next, ProgramError> {
+        if self.machine.profile.dialect == Dialect::LinuxCnc {
+            return Ok(Next::LinuxCnc);
+        }
+        // G codes of the block.
+        let mut g76: Option<Multipass> = None;
+        let mut g75 = false;
+        let mut g50 = false;
+        let mut g04 = false;
+        let mut motion = None;
+        // The G word of a canned cycle (refused in a trace).
+        let mut cycle_word = None;
+        for w in block.all('G') {
+            let whole = w.integer();
+            if matches!(whole, Some(76 | 78 | 92)) || (whole.is_none() && w.number().exact(1) == Some(751)) {
+                cycle_word = cycle_word.or(Some(w));
+            }
+            match whole {
+                Some(c @ 0..=3) => motion = MotionMode::plain(c),
+                Some(32) => motion = Some(MotionMode::G32),
+                Some(92) => motion = Some(MotionMode::G92),
+                Some(4) => g04 = true,
+                Some(50) => g50 = true,
+                Some(76) => g76 = Some(Multipass::G76),
+                Some(78) => {
+                    if self.machine.profile.g78.is_none() {
+                        return Err(err(
+                            block,
+                            Some(w),
+                            ErrorKind::Unsupported(format!(
+                                "G78 on the {} profile (G78 is GSK's enhanced thread-cutting cycle: use the \
+                                 gsk980 or gsk988 profile)",
+                                self.machine.profile.name
+                            )),
+                        ));
+                    }
+                    g76 = Some(Multipass::G78);
+                }
+                Some(20) => self.set_unit(block, w, InputUnit::Inch)?,
+                Some(21) => self.set_unit(block, w, InputUnit::Metric)?,
+                Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
+                None if w.number().exact(1) == Some(751) => {
+                    if !self.machine.profile.g75_1 {
+                        return Err(err(
+                            block,
+                            Some(w),
+                            ErrorKind::Unsupported(format!(
+                                "G75.1 on the {} profile (G75.1 is a GSK 980TDi cycle: use the gsk980 \
+                                 profile)",
+                                self.machine.profile.name
+                            )),
+                        ));
+                    }
+                    g75 = true;
+                }
+                _ => {
+                    let code = w.number().decimal().unwrap_or(Decimal::NEGATIVE_ONE);
+                    return Err(err(
+                        block,
+                        Some(w),
+                        ErrorKind::Unsupported(format!(
+                            "G{code} (the reader models G00-G04, G18, G20/G21, G32, G40, G50, G54-G59, \
+                             G75.1, G76, G92 (the thread-cutting cycle), G96-G99)"
+                        )),
+                    ));
+                }
+            }
+        }
+        // M codes and S.
+        for w in block.all('M') {
+            match w.integer() {
+                Some(3 | 4) => self.spindle_on = true,
+                Some(5) => self.spindle_on = false,
+                Some(98 | 99) => return Err(subprogram(block, w)),
+                // A trace goes on after it: its moves are compared.
+                Some(2 | 30) => self.program_end = !self.trace,
+                _ => {}
+            }
+        }
+        if self.trace {
+            let m = motion.unwrap_or(self.motion);
+            self.trace_block(block, cycle_word, m, m == MotionMode::G32, g04)?;
+        }
+        if let Some(s) = block.get('S')? {
+            // Reading R-SPINDLE: `G50 S` alone clamps the spindle speed; with X/Z
+            // (the manuals' "G50 X100 Z50 M3 S300") S is the speed.
+            let clamp = g50 && !block.has('X') && !block.has('Z');
+            if !clamp && s.number().is_positive() {
+                self.speed = true;
+            }
+        }
+        if !block.words.is_empty() {
+            // Continuity needs consecutive G32 blocks (a comment line does not count).
+            let thread_block = motion.unwrap_or(self.motion) == MotionMode::G32
+                && g76.is_none()
+                && !g50
+                && !g04
+                && ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c));
+            if !thread_block {
+                self.thread_run = None;
+                // Seed 002: J and K are cancelled by a non-thread motion.
+                if motion.is_some_and(|m| m != MotionMode::G32) || g76.is_some() || g75 {
+                    self.g32_j = None;
+                    self.g32_k = None;
+                }
+            }
+        }
+        if g75 {
+            if motion.is_some() || g76.is_some() || g50 || g04 {
+                return Err(err(
+                    block,
+                    None,
+                    ErrorKind::Unsupported("another G code of group 00/01 in the same block as G75.1".into()),
+                ));
+            }
+            return match self.g75_pending.take() {
+                None => {
+                    self.g75_pending = Some(self.g75_block1(block)?);
+                    Ok(Next::G75Params)
+                }
+                Some(first) => Ok(Next::G75(first)),
+            };
+        }
+        if let Some(code) = g76 {
+            if motion.is_some() {
+                return Err(err(
+                    block,
+                    None,
+                    ErrorKind::Unsupported(format!("a motion G code in the same block as {}", code.code())),
+                ));
+            }
+            return if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
+                Ok(Next::G76(code))
+            } else {
+                self.g76_block1(block, code)?;
+                Ok(Next::G76Params)
+            };
+        }
+        if let Some(f) = block.get('F')? {
+            if f.number().is_positive() {
+                self.lead =
+                    Some(self.lead(block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
+            }
+        }
+        if let Some(m) = motion {
+            if m != MotionMode::G92 {
+                // Reading R-G92MODAL: another motion code ends the G92 mode.
+                self.g92 = G92Modal::default();
+            }
+            self.motion = m;
+        }
+        if matches!(motion, Some(MotionMode::G32 | MotionMode::G92))
+            && !g04
+            && !g50
+            && !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c))
+        {
+            let rule = if motion == Some(MotionMode::G32) {
+                "G32 cuts to an end point"
+            } else {
+                "G92 cuts to its cut end point C"
+            };
+            return Err(err(block, None, ErrorKind::Missing { what: "X(U) Z(W) (the end point)", rule }));
+        }
+        if g04 {
+            return Ok(Next::Source);
+        }
+        let (xw, zw, uw, ww) = Self::axis_words(block)?;
+        if g50 {
+            if uw.is_some() || ww.is_some() {
+                return Err(err(block, uw.or(ww), ErrorKind::Unsupported("U/W in G50".into())));
+            }
+            if let Some(w) = xw {
+                self.x = Some(self.length(block, w)?);
+            }
+            if let Some(w) = zw {
+                self.z = Some(self.length(block, w)?);
+            }
+            return Ok(Next::Source);
+        }
+        if xw.is_some() || zw.is_some() || uw.is_some() || ww.is_some() {
+            if self.motion == MotionMode::G32 {
+                return Ok(Next::G32);
+            }
+            if self.motion == MotionMode::G92 {
+                return Ok(Next::G92);
+            }
+            self.g32_j = None;
+            self.g32_k = None;
+            let from = (self.x, self.z);
+            self.x = self.axis(block, xw, uw, self.x)?;
+            self.z = self.axis(block, zw, ww, self.z)?;
+            self.moved = true;
+            return Ok(Next::Move(from));
+        }
+        Ok(Next::Source)
+    }
+
+    /// The move of a plain block from `from` to where the state now holds
+    /// the tool.
+    pub(super) fn plain_move<'a>(&self, block: Block<'a>, from: (Option<i64>, Option<i64>)) -> PlainMove<'a> {
+        PlainMove { block, motion: self.motion, from, to: (self.x, self.z), x_mode: self.x_mode }
+    }
+
+    /// True once the unit can no longer change (reading R-UNITS): after
+    /// the first motion, or once a position is known (G50).
+    pub(super) fn units_settled(&self) -> bool {
+        self.moved || self.x.is_some() || self.z.is_some()
+    }
+
+    /// G20/G21 (reading R-UNITS): the unit may change only before the
+    /// first motion.
+    pub(super) fn set_unit(
+        &mut self,
+        block: &Block<'_>,
+        w: &Word<'_>,
+        unit: InputUnit,
+    ) -> Result<(), ProgramError> {
+        if self.trace {
+            return self.trace_unit(block, w, unit);
+        }
+        if unit != self.units.unit {
+            if self.units_settled() {
+                return Err(err(block, Some(w), ErrorKind::UnitChangeAfterMotion));
+            }
+            self.units.unit = unit;
+        }
+        Ok(())
+    }
+
+    #[inline(always)]
+    pub(super) fn axis(
+        &self,
+        block: &Block<'_>,
+        abs: Option<&Word<'_>>,
+        inc: Option<&Word<'_>>,
+        cur: Option<i64>,
+    ) -> Result<Option<i64>, ProgramError> {
+        if let Some(w) = abs {
+            return Ok(Some(self.length(block, w)?));
+        }
+        if let Some(w) = inc {
+            let d = self.length(block, w)?;
+            let c = cur.ok_or_else(|| err(block, Some(w), ErrorKind::PositionUnknown))?;
+            let v = c + d;
+            if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+                return Err(err(block, Some(w), self.range_err(true)));
+            }
+            return Ok(Some(v));
+        }
+        Ok(cur)
+    }
+
+    /// X, Z, U and W of a block; X with U or Z with W is an error.
+    #[inline(always)]
+    pub(super) fn axis_words<'b, 'a>(block: &'b Block<'a>) -> Result<AxisWords<'b, 'a>, ProgramError> {
+        if !['X', 'Z', 'U', 'W'].iter().any(|&c| block.has(c)) {
+            return Ok((None, None, None, None));
+        }
+        let (xw, zw, uw, ww) = if ['X', 'Z', 'U', 'W'].iter().any(|&c| block.words.repeats(c)) {
+            // `get` names the repeated word.
+            (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?)
+        } else {
+            // The usual case: one pass over the words.
+            let (mut xw, mut zw, mut uw, mut ww) = (None, None, None, None);
+            for w in &block.words {
+                match w.letter {
+                    'X' => xw = Some(w),
+                    'Z' => zw = Some(w),
+                    'U' => uw = Some(w),
+                    'W' => ww = Some(w),
+                    _ => {}
+                }
+            }
+            (xw, zw, uw, ww)
+        };
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return Err(err(
+                block,
+                uw.or(ww),
+                ErrorKind::Unsupported("absolute and incremental words for the same axis".into()),
+            ));
+        }
+        Ok((xw, zw, uw, ww))
+    }
+
+    /// The end point X(U) Z(W) of a block that starts at `from`.
+    pub(super) fn end_point(&self, block: &Block<'_>, from: Point) -> Result<Point, ProgramError> {
+        let (xw, zw, uw, ww) = Self::axis_words(block)?;
+        let x = self.axis(block, xw, uw, Some(from.x))?.unwrap_or(from.x);
+        let z = self.axis(block, zw, ww, Some(from.z))?.unwrap_or(from.z);
+        Ok(Point::new(x, z))
+    }
+
+    pub(super) fn check_spindle(&self, block: &Block<'_>) -> Result<(), ProgramError> {
+        // A trace is a log of moves: it need not hold the spindle's words.
+        if self.trace || (self.speed && self.spindle_on) {
+            Ok(())
+        } else {
+            Err(err(block, None, ErrorKind::NoSpindleSpeed))
+        }
+    }
+
+    /// Every word of `block` has an address of `allowed` or `extra`.
+    pub(super) fn check_addresses(
+        &self,
+        block: &Block<'_>,
+        cycle: &'static str,
+        allowed: &str,
+        extra: &str,
+    ) -> Result<(), ProgramError> {
+        // Most words are upper-case letters of the lists: a bit test each;
+        // the lists themselves are read for any other.
+        let listed = letter_mask(allowed) | letter_mask(extra);
+        for w in &block.words {
+            if letter_bit(w.letter) & listed != 0 {
+                continue;
+            }
+            if !allowed.contains(w.letter) && !extra.contains(w.letter) {
+                return Err(err(
+                    block,
+                    Some(w),
+                    ErrorKind::AddressNotInProfile { cycle, profile: self.machine.profile.name.to_string() },
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// P(k) or Q(Δd) of G76 block 2: required, in the profile's P/Q unit,
+    /// 1..=the profile's range table.
+    pub(super) fn depth_word(
+        &self,
+        block: &Block<'_>,
+        letter: char,
+        what: &'static str,
+        rule: &'static str,
+    ) -> Result<i64, ProgramError> {
+        let max = self.machine.profile.max_depth_increments;
+        let w = block.get(letter)?.ok_or_else(|| err(block, None, ErrorKind::Missing { what, rule }))?;
+        let v = self.pq_length(block, w)?;
+        if v == 0 || v > max {
+            return Err(err(
+                block,
+                Some(w),
+                ErrorKind::OutOfRange { range: format!("1..{max} least increments") },
+            ));
+        }
+        Ok(v)
+    }
+}
