@@ -14,8 +14,12 @@
 //!
 //! * the output is gathered in the serializer's own buffer and handed to
 //!   the writer in blocks of 64 KiB (at the end of an element of an array
-//!   or a value of a map), so a write is a copy into a `Vec`;
-//! * a line break with its indentation is one copy of fixed size;
+//!   or a value of a map), so a write is a copy into memory; bytes past
+//!   the written ones may be overwritten, so a short piece of varying
+//!   length is a copy of fixed size (`text::Buf`);
+//! * a field's start (line break, indentation, quoted name and colon) is
+//!   one look for room and copies of fixed size: the field names are
+//!   constants where the derived code is inlined;
 //! * a string or a field name is checked for escapes eight bytes a step
 //!   and copied whole when it needs none (every string of the documents);
 //! * lengths and leads ([`Fixed`](crate::format::Fixed),
@@ -43,12 +47,14 @@ mod key;
 mod text;
 
 use key::KeySerializer;
-use text::{push_contents, push_integer, push_line_break};
+use text::{needs_escape, push_contents, push_escaped, push_integer, push_line_break, Buf};
 
-/// The name of the newtype struct whose value is a string that needs no
-/// escape in JSON (ASCII digits, letters, `.`, `-`): [`JsonSerializer`]
-/// copies it between quotes as it is. To any other serializer it is the
-/// string.
+/// The name of the newtype struct whose value is a text that needs no
+/// escape in JSON (ASCII digits, letters, `.`, `-`), serialized as a
+/// string or as bytes: [`JsonSerializer`] copies it between quotes as it
+/// is, serializing the value with a serializer that is not human-readable
+/// (so that a length gives its bytes, not a `&str` checked as UTF-8). To
+/// any other serializer the newtype struct is its value.
 pub const PLAIN_TEXT: &str = "$cycleref::json::PlainText";
 
 /// The name of the newtype struct ([`OneLine`]) whose value the corpus's
@@ -172,31 +178,24 @@ type Result<T> = std::result::Result<T, Error>;
 const FLUSH_AT: usize = 1 << 16;
 
 /// A serde [`Serializer`](serde::Serializer) writing JSON to `W`: pretty
-/// when `PRETTY`, else compact; or in the corpus's layout of lines
-/// ([`JsonSerializer::lines`]). The output is gathered in a buffer and
+/// when `PRETTY`, else compact; pretty with `LINES`, in the corpus's layout
+/// of lines ([`JsonSerializer::lines`]: each value marked [`OneLine`]
+/// compact). The output is gathered in a buffer and
 /// handed to `W` in blocks: call [`JsonSerializer::finish`] at the end
 /// (dropping it writes what is left too, ignoring a failure).
-pub struct JsonSerializer<W: io::Write, const PRETTY: bool> {
+pub struct JsonSerializer<W: io::Write, const PRETTY: bool, const LINES: bool = false> {
     out: W,
-    buf: Vec<u8>,
+    buf: Buf,
     /// The number of arrays and objects open.
     level: usize,
-    /// The corpus's layout: a value marked [`OneLine`] is written compact.
-    lines: bool,
-    /// Within a value marked [`OneLine`], in the corpus's layout.
+    /// Within a value marked [`OneLine`], in the corpus's layout (`LINES`).
     one_line: bool,
 }
 
-impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> JsonSerializer<W, PRETTY, LINES> {
     /// A serializer writing to `out`.
     pub fn new(out: W) -> Self {
-        JsonSerializer {
-            out,
-            buf: Vec::with_capacity(FLUSH_AT + 4096),
-            level: 0,
-            lines: false,
-            one_line: false,
-        }
+        JsonSerializer { out, buf: Buf::with_capacity(FLUSH_AT + 4096), level: 0, one_line: false }
     }
 
     /// Serializes `value`.
@@ -233,7 +232,7 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     }
 
     fn flush(&mut self) -> io::Result<()> {
-        let written = self.out.write_all(&self.buf);
+        let written = self.out.write_all(self.buf.as_slice());
         self.buf.clear();
         written
     }
@@ -251,13 +250,13 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     /// outside a value written on one line.
     #[inline]
     fn pretty(&self) -> bool {
-        PRETTY && !self.one_line
+        PRETTY && !(LINES && self.one_line)
     }
 
     /// Opens an array or object with `open` (`[` or `{`); `empty` closes it
     /// at once with `close`.
     #[inline]
-    fn open(&mut self, open: u8, close: u8, empty: bool) -> Compound<'_, W, PRETTY> {
+    fn open(&mut self, open: u8, close: u8, empty: bool) -> Compound<'_, W, PRETTY, LINES> {
         if empty {
             self.buf.extend_from_slice(&[open, close]);
             return Compound { ser: self, state: State::Empty };
@@ -269,7 +268,7 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
 
     /// Closes what [`Self::open`] opened with `close`: in the pretty form
     /// on a line of its own when it has an element.
-    #[inline]
+    #[inline(always)]
     fn close(&mut self, state: State, close: u8) {
         if state == State::Empty {
             return;
@@ -283,7 +282,7 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
 
     /// The start of an array's element: `,` unless `first`, and in the
     /// pretty form a line break and the indentation.
-    #[inline]
+    #[inline(always)]
     fn element_start(&mut self, first: bool) {
         if self.pretty() {
             push_line_break(&mut self.buf, !first, self.level);
@@ -296,24 +295,26 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     /// (pretty form), `"name"` and the colon.
     #[inline(always)]
     fn field_start(&mut self, name: &str, first: bool) {
-        let pretty = self.pretty();
-        if pretty {
-            push_line_break(&mut self.buf, !first, self.level);
-        } else if !first {
-            self.buf.push(b',');
+        if self.pretty() {
+            self.buf.pretty_field_start(!first, self.level, name.as_bytes());
+        } else {
+            if !first {
+                self.buf.push(b',');
+            }
+            self.buf.key(name.as_bytes(), false);
         }
-        self.buf.push(b'"');
-        push_contents(&mut self.buf, name.as_bytes());
-        self.buf.extend_from_slice(if pretty { b"\": " } else { b"\":" });
     }
 
     /// `s` as a JSON string, quoted.
     #[inline]
     fn string(&mut self, s: &[u8]) {
-        self.buf.reserve(s.len() + 2);
-        self.buf.push(b'"');
-        push_contents(&mut self.buf, s);
-        self.buf.push(b'"');
+        if needs_escape(s) {
+            self.buf.push(b'"');
+            push_escaped(&mut self.buf, s);
+            self.buf.push(b'"');
+        } else {
+            self.buf.quoted(s);
+        }
     }
 
     /// `{"variant": ` — the opening of an enum variant with data.
@@ -336,15 +337,12 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     /// A [`PLAIN_TEXT`] value: its text between quotes, as it is.
     #[inline]
     fn plain<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
-        self.buf.push(b'"');
-        value.serialize(KeySerializer { buf: &mut self.buf, plain: true })?;
-        self.buf.push(b'"');
-        Ok(())
+        value.serialize(KeySerializer { buf: &mut self.buf, plain: true, quoted: true })
     }
 
     /// A [`OneLine`] value: compact in the corpus's layout, else as it is.
     fn one_line<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
-        if !self.lines || self.one_line {
+        if !LINES || self.one_line {
             return value.serialize(self);
         }
         self.one_line = true;
@@ -354,17 +352,15 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
     }
 }
 
-impl<W: io::Write> JsonSerializer<W, true> {
+impl<W: io::Write> JsonSerializer<W, true, true> {
     /// A serializer writing to `out` in the corpus's layout of lines: pretty,
     /// each value marked [`OneLine`] compact on the line of its key.
     pub fn lines(out: W) -> Self {
-        let mut ser = JsonSerializer::new(out);
-        ser.lines = true;
-        ser
+        JsonSerializer::new(out)
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> Drop for JsonSerializer<W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> Drop for JsonSerializer<W, PRETTY, LINES> {
     /// Hands what is left to the writer, as a dropped `BufWriter` does.
     fn drop(&mut self) {
         if !self.buf.is_empty() {
@@ -384,16 +380,18 @@ enum State {
     Rest,
 }
 
-impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSerializer<W, PRETTY> {
+impl<'a, W: io::Write, const PRETTY: bool, const LINES: bool> ser::Serializer
+    for &'a mut JsonSerializer<W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
-    type SerializeSeq = Compound<'a, W, PRETTY>;
-    type SerializeTuple = Compound<'a, W, PRETTY>;
-    type SerializeTupleStruct = Compound<'a, W, PRETTY>;
-    type SerializeTupleVariant = Compound<'a, W, PRETTY>;
-    type SerializeMap = Compound<'a, W, PRETTY>;
-    type SerializeStruct = Compound<'a, W, PRETTY>;
-    type SerializeStructVariant = Compound<'a, W, PRETTY>;
+    type SerializeSeq = Compound<'a, W, PRETTY, LINES>;
+    type SerializeTuple = Compound<'a, W, PRETTY, LINES>;
+    type SerializeTupleStruct = Compound<'a, W, PRETTY, LINES>;
+    type SerializeTupleVariant = Compound<'a, W, PRETTY, LINES>;
+    type SerializeMap = Compound<'a, W, PRETTY, LINES>;
+    type SerializeStruct = Compound<'a, W, PRETTY, LINES>;
+    type SerializeStructVariant = Compound<'a, W, PRETTY, LINES>;
 
     #[inline]
     fn serialize_bool(self, v: bool) -> Result<()> {
@@ -498,7 +496,7 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         self.serialize_str(variant)
     }
 
-    #[inline]
+    #[inline(always)]
     fn serialize_newtype_struct<T: ?Sized + Serialize>(self, name: &'static str, value: &T) -> Result<()> {
         // The names are compared by their text; where the call is inlined
         // with a constant name the comparison is decided when compiling.
@@ -525,15 +523,19 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
     }
 
     #[inline]
-    fn serialize_seq(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY>> {
+    fn serialize_seq(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY, LINES>> {
         Ok(self.open(b'[', b']', len == Some(0)))
     }
 
-    fn serialize_tuple(self, len: usize) -> Result<Compound<'a, W, PRETTY>> {
+    fn serialize_tuple(self, len: usize) -> Result<Compound<'a, W, PRETTY, LINES>> {
         self.serialize_seq(Some(len))
     }
 
-    fn serialize_tuple_struct(self, _name: &'static str, len: usize) -> Result<Compound<'a, W, PRETTY>> {
+    fn serialize_tuple_struct(
+        self,
+        _name: &'static str,
+        len: usize,
+    ) -> Result<Compound<'a, W, PRETTY, LINES>> {
         self.serialize_seq(Some(len))
     }
 
@@ -543,18 +545,18 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         _index: u32,
         variant: &'static str,
         len: usize,
-    ) -> Result<Compound<'a, W, PRETTY>> {
+    ) -> Result<Compound<'a, W, PRETTY, LINES>> {
         self.variant_open(variant);
         self.serialize_seq(Some(len))
     }
 
     #[inline]
-    fn serialize_map(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY>> {
+    fn serialize_map(self, len: Option<usize>) -> Result<Compound<'a, W, PRETTY, LINES>> {
         Ok(self.open(b'{', b'}', len == Some(0)))
     }
 
     #[inline]
-    fn serialize_struct(self, _name: &'static str, len: usize) -> Result<Compound<'a, W, PRETTY>> {
+    fn serialize_struct(self, _name: &'static str, len: usize) -> Result<Compound<'a, W, PRETTY, LINES>> {
         self.serialize_map(Some(len))
     }
 
@@ -564,7 +566,7 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
         _index: u32,
         variant: &'static str,
         len: usize,
-    ) -> Result<Compound<'a, W, PRETTY>> {
+    ) -> Result<Compound<'a, W, PRETTY, LINES>> {
         self.variant_open(variant);
         self.serialize_map(Some(len))
     }
@@ -575,11 +577,11 @@ impl<'a, W: io::Write, const PRETTY: bool> ser::Serializer for &'a mut JsonSeria
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> JsonSerializer<W, PRETTY, LINES> {
     /// `value`'s `Display` as a JSON string, escaped as it is written.
     fn display<T: ?Sized + fmt::Display>(&mut self, value: &T) -> Result<()> {
         /// Escapes what `Display` writes.
-        struct Escaping<'b>(&'b mut Vec<u8>);
+        struct Escaping<'b>(&'b mut Buf);
         impl fmt::Write for Escaping<'_> {
             fn write_str(&mut self, s: &str) -> fmt::Result {
                 push_contents(self.0, s.as_bytes());
@@ -596,12 +598,12 @@ impl<W: io::Write, const PRETTY: bool> JsonSerializer<W, PRETTY> {
 
 /// An array or object being written (serde's `SerializeSeq`,
 /// `SerializeMap`, `SerializeStruct` and the others).
-pub struct Compound<'a, W: io::Write, const PRETTY: bool> {
-    ser: &'a mut JsonSerializer<W, PRETTY>,
+pub struct Compound<'a, W: io::Write, const PRETTY: bool, const LINES: bool> {
+    ser: &'a mut JsonSerializer<W, PRETTY, LINES>,
     state: State,
 }
 
-impl<W: io::Write, const PRETTY: bool> Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> Compound<'_, W, PRETTY, LINES> {
     /// Whether the next element is the first; from now on it is not.
     #[inline]
     fn take_first(&mut self) -> bool {
@@ -619,7 +621,9 @@ impl<W: io::Write, const PRETTY: bool> Compound<'_, W, PRETTY> {
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeSeq for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeSeq
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -638,7 +642,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeSeq for Compound<'_, W, PRE
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeTuple for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeTuple
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -651,7 +657,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeTuple for Compound<'_, W, P
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeTupleStruct for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeTupleStruct
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -664,7 +672,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeTupleStruct for Compound<'_
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeTupleVariant for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeTupleVariant
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -679,7 +689,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeTupleVariant for Compound<'
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeMap for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeMap
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -687,7 +699,7 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeMap for Compound<'_, W, PRE
         let first = self.take_first();
         self.ser.element_start(first);
         self.ser.buf.push(b'"');
-        key.serialize(KeySerializer { buf: &mut self.ser.buf, plain: false })?;
+        key.serialize(KeySerializer { buf: &mut self.ser.buf, plain: false, quoted: false })?;
         let colon: &[u8] = if self.ser.pretty() { b"\": " } else { b"\":" };
         self.ser.buf.extend_from_slice(colon);
         Ok(())
@@ -704,7 +716,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeMap for Compound<'_, W, PRE
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeStruct for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeStruct
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 
@@ -720,7 +734,9 @@ impl<W: io::Write, const PRETTY: bool> ser::SerializeStruct for Compound<'_, W, 
     }
 }
 
-impl<W: io::Write, const PRETTY: bool> ser::SerializeStructVariant for Compound<'_, W, PRETTY> {
+impl<W: io::Write, const PRETTY: bool, const LINES: bool> ser::SerializeStructVariant
+    for Compound<'_, W, PRETTY, LINES>
+{
     type Ok = ();
     type Error = Error;
 

@@ -5,7 +5,7 @@ use std::io;
 
 use serde::ser::{self, Serialize};
 
-use super::text::{push_contents, push_integer};
+use super::text::{push_contents, push_integer, Buf};
 use super::{Error, Result};
 
 /// Writes the text of a map key, or of a [`PLAIN_TEXT`](super::PLAIN_TEXT)
@@ -16,9 +16,11 @@ use super::{Error, Result};
 /// human-readable, so a length gives its ASCII bytes.
 pub(super) struct KeySerializer<'b> {
     /// Where the text goes.
-    pub(super) buf: &'b mut Vec<u8>,
+    pub(super) buf: &'b mut Buf,
     /// A plain text: a string is copied without the escape scan.
     pub(super) plain: bool,
+    /// A plain text written with its quotes (the caller writes none).
+    pub(super) quoted: bool,
 }
 
 impl KeySerializer<'_> {
@@ -108,7 +110,11 @@ impl ser::Serializer for KeySerializer<'_> {
     #[inline]
     fn serialize_str(self, v: &str) -> Result<()> {
         if self.plain {
-            self.buf.extend_from_slice(v.as_bytes());
+            if self.quoted {
+                self.buf.quoted(v.as_bytes());
+            } else {
+                self.buf.extend_from_slice(v.as_bytes());
+            }
         } else {
             push_contents(self.buf, v.as_bytes());
         }
@@ -119,7 +125,11 @@ impl ser::Serializer for KeySerializer<'_> {
     #[inline]
     fn serialize_bytes(self, v: &[u8]) -> Result<()> {
         if self.plain {
-            self.buf.extend_from_slice(v);
+            if self.quoted {
+                self.buf.quoted(v);
+            } else {
+                self.buf.extend_from_slice(v);
+            }
             Ok(())
         } else {
             Err(Error::KeyMustBeAString)

@@ -1,7 +1,178 @@
-//! The bytes of JSON text: strings escaped as `serde_json` escapes them,
-//! integers, and the line breaks of the pretty layout.
+//! The bytes of JSON text: the serializer's buffer, strings escaped as
+//! `serde_json` escapes them, integers, and the line breaks of the pretty
+//! layout.
+
+use std::io;
 
 use crate::format::{encode_fixed, FIXED_BUF};
+
+/// The serializer's output before it is handed to the writer: a block of
+/// bytes and how many of them are written. Bytes past the written ones
+/// may be overwritten freely, so a short piece of text of varying length
+/// is written as a copy of fixed size of which only its length counts (a
+/// line break with its indentation, a field's name and colon): a few
+/// moves of registers instead of a call of `memcpy`.
+pub(super) struct Buf {
+    /// Always zeroed or written: `len` of them count.
+    bytes: Vec<u8>,
+    len: usize,
+}
+
+impl Buf {
+    /// An empty buffer with room for `n` bytes (more when written).
+    pub(super) fn with_capacity(n: usize) -> Buf {
+        Buf { bytes: vec![0; n], len: 0 }
+    }
+
+    /// The written bytes.
+    #[inline]
+    pub(super) fn as_slice(&self) -> &[u8] {
+        &self.bytes[..self.len]
+    }
+
+    /// The number of written bytes.
+    #[inline]
+    pub(super) fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether nothing is written.
+    #[inline]
+    pub(super) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Forgets the written bytes (the room stays).
+    #[inline]
+    pub(super) fn clear(&mut self) {
+        self.len = 0;
+    }
+
+    /// The bytes after the written ones, at least `n` of them.
+    #[inline(always)]
+    fn room(&mut self, n: usize) -> &mut [u8] {
+        if self.bytes.len() - self.len < n {
+            self.grow(n);
+        }
+        &mut self.bytes[self.len..]
+    }
+
+    /// Makes room for `n` more bytes: twice the room, or what is needed.
+    #[cold]
+    #[inline(never)]
+    fn grow(&mut self, n: usize) {
+        let size = (2 * self.bytes.len()).max(self.len + n);
+        self.bytes.resize(size, 0);
+    }
+
+    /// Appends `b`.
+    #[inline(always)]
+    pub(super) fn push(&mut self, b: u8) {
+        self.room(1)[0] = b;
+        self.len += 1;
+    }
+
+    /// Appends `s`.
+    #[inline(always)]
+    pub(super) fn extend_from_slice(&mut self, s: &[u8]) {
+        self.room(s.len())[..s.len()].copy_from_slice(s);
+        self.len += s.len();
+    }
+
+    /// Appends the first `n` bytes of `chunk` (`n` ≤ `N`) by a copy of all
+    /// of it.
+    #[inline(always)]
+    pub(super) fn extend_prefix<const N: usize>(&mut self, chunk: &[u8; N], n: usize) {
+        self.room(N)[..N].copy_from_slice(chunk);
+        self.len += n.min(N);
+    }
+
+    /// Appends `"name": ` (`"name":` when not `pretty`): one copy of
+    /// `name` and of the quotes and colon around it when the name needs
+    /// no escape (where the name is a constant, copies of fixed size).
+    #[inline(always)]
+    pub(super) fn key(&mut self, name: &[u8], pretty: bool) {
+        if needs_escape(name) {
+            self.push(b'"');
+            push_escaped(self, name);
+            self.extend_from_slice(if pretty { b"\": " } else { b"\":" });
+            return;
+        }
+        let n = name.len();
+        let room = self.room(n + 4);
+        room[0] = b'"';
+        room[1..=n].copy_from_slice(name);
+        room[n + 1..n + 4].copy_from_slice(b"\": ");
+        self.len += n + if pretty { 4 } else { 3 };
+    }
+}
+
+impl Buf {
+    /// Appends, in the pretty layout, `,` when `comma`, a line break and
+    /// the indentation of `level`, and `"name": `: with one look for room
+    /// and, where the name is a constant, copies of fixed size only.
+    #[inline(always)]
+    pub(super) fn pretty_field_start(&mut self, comma: bool, level: usize, name: &[u8]) {
+        let skip = usize::from(!comma);
+        let end = 2 + 2 * level;
+        if end > CHUNK || needs_escape(name) {
+            push_line_break(self, comma, level);
+            self.key(name, true);
+            return;
+        }
+        let n = name.len();
+        let room = self.room(CHUNK + n + 4);
+        room[..CHUNK].copy_from_slice(&LINE[skip..skip + CHUNK]);
+        let at = end - skip;
+        room[at] = b'"';
+        room[at + 1..=at + n].copy_from_slice(name);
+        room[at + n + 1..at + n + 4].copy_from_slice(b"\": ");
+        self.len += at + n + 4;
+    }
+
+    /// Appends `s` between quotes (`s` needs no escape).
+    #[inline(always)]
+    pub(super) fn quoted(&mut self, s: &[u8]) {
+        let n = s.len();
+        let room = self.room(n + 2);
+        room[0] = b'"';
+        copy_short(&mut room[1..=n], s);
+        room[n + 1] = b'"';
+        self.len += n + 2;
+    }
+}
+
+/// `dst.copy_from_slice(src)`; from 4 to 16 bytes (a length, a lead, a
+/// role) as two copies of fixed size that overlap, not a call of `memcpy`.
+#[inline(always)]
+fn copy_short(dst: &mut [u8], src: &[u8]) {
+    let n = src.len();
+    if (8..=16).contains(&n) {
+        dst[..8].copy_from_slice(&src[..8]);
+        dst[n - 8..].copy_from_slice(&src[n - 8..]);
+    } else if (4..8).contains(&n) {
+        dst[..4].copy_from_slice(&src[..4]);
+        dst[n - 4..].copy_from_slice(&src[n - 4..]);
+    } else {
+        dst.copy_from_slice(src);
+    }
+}
+
+impl io::Write for Buf {
+    fn write(&mut self, s: &[u8]) -> io::Result<usize> {
+        self.extend_from_slice(s);
+        Ok(s.len())
+    }
+
+    fn write_all(&mut self, s: &[u8]) -> io::Result<()> {
+        self.extend_from_slice(s);
+        Ok(())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
 
 /// The size of the fixed copies: a line prefix of up to this many bytes is
 /// copied as a block of this size, then cut to length.
@@ -65,7 +236,7 @@ pub(super) fn needs_escape(s: &[u8]) -> bool {
 
 /// Appends the contents of a JSON string for `s` (without the quotes).
 #[inline(always)]
-pub(super) fn push_contents(buf: &mut Vec<u8>, s: &[u8]) {
+pub(super) fn push_contents(buf: &mut Buf, s: &[u8]) {
     if needs_escape(s) {
         push_escaped(buf, s);
     } else {
@@ -76,7 +247,7 @@ pub(super) fn push_contents(buf: &mut Vec<u8>, s: &[u8]) {
 /// The slow path of [`push_contents`]: runs without an escape are copied
 /// whole, each escape written as serde_json writes it.
 #[cold]
-fn push_escaped(buf: &mut Vec<u8>, s: &[u8]) {
+pub(super) fn push_escaped(buf: &mut Buf, s: &[u8]) {
     const HEX: &[u8; 16] = b"0123456789abcdef";
     let mut start = 0;
     for (i, &b) in s.iter().enumerate() {
@@ -105,7 +276,7 @@ fn push_escaped(buf: &mut Vec<u8>, s: &[u8]) {
 /// Appends the decimal text of `mag`, with `-` when `negative`, as
 /// serde_json writes integers (two digits a step, [`encode_fixed`]).
 #[inline]
-pub(super) fn push_integer(buf: &mut Vec<u8>, negative: bool, mag: u64) {
+pub(super) fn push_integer(buf: &mut Buf, negative: bool, mag: u64) {
     if !negative && mag < 10 {
         // mag < 10: one digit.
         #[allow(clippy::cast_possible_truncation)]
@@ -119,16 +290,13 @@ pub(super) fn push_integer(buf: &mut Vec<u8>, negative: bool, mag: u64) {
 /// Appends `,` when `comma`, a line break and the indentation of `level`
 /// levels of two spaces: one copy of fixed size up to 31 levels.
 #[inline(always)]
-pub(super) fn push_line_break(buf: &mut Vec<u8>, comma: bool, level: usize) {
+pub(super) fn push_line_break(buf: &mut Buf, comma: bool, level: usize) {
     let skip = usize::from(!comma);
     let end = 2 + 2 * level;
     if end <= CHUNK {
-        // A copy of fixed size, then cut: the length is hidden from the
-        // optimizer, which would otherwise make the copy one of variable
-        // size (a call of `memcpy` for a few bytes).
-        let at = buf.len();
-        buf.extend_from_slice(&LINE[skip..skip + CHUNK]);
-        buf.truncate(std::hint::black_box(at + end - skip));
+        let mut chunk = [0; CHUNK];
+        chunk.copy_from_slice(&LINE[skip..skip + CHUNK]);
+        buf.extend_prefix(&chunk, end - skip);
     } else if end <= LINE.len() {
         buf.extend_from_slice(&LINE[skip..end]);
     } else {
