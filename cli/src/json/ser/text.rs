@@ -304,3 +304,36 @@ pub(super) fn push_line_break(buf: &mut Buf, comma: bool, level: usize) {
         (0..level).for_each(|_| buf.extend_from_slice(b"  "));
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Quoted texts of every length from 0 to 40, written one after the
+    /// other (a fixed copy past the end must not spoil what follows), and
+    /// a buffer grown from nothing.
+    #[test]
+    fn quoted_texts_and_field_starts_are_written_whole() {
+        let mut buf = Buf::with_capacity(0);
+        let mut want = Vec::new();
+        let text: Vec<u8> = (0..40).map(|i| b'a' + (i % 26)).collect();
+        for n in 0..=40 {
+            buf.quoted(&text[..n]);
+            want.push(b'"');
+            want.extend_from_slice(&text[..n]);
+            want.push(b'"');
+            for level in [0, 1, 30, 31, 32, 70] {
+                buf.pretty_field_start(n % 2 == 0, level, &text[..n]);
+                if n % 2 == 0 {
+                    want.push(b',');
+                }
+                want.push(b'\n');
+                want.extend(std::iter::repeat_n(b' ', 2 * level));
+                want.push(b'"');
+                want.extend_from_slice(&text[..n]);
+                want.extend_from_slice(b"\": ");
+            }
+        }
+        assert_eq!(String::from_utf8_lossy(buf.as_slice()), String::from_utf8_lossy(&want));
+    }
+}
