@@ -50,7 +50,7 @@ impl Serialize for LeadText {
 struct Plain<T>(T);
 
 impl<T: EncodeAtEnd + std::fmt::Display> Serialize for Plain<T> {
-    #[inline]
+    #[inline(always)]
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         if s.is_human_readable() {
             s.collect_str(&self.0)

@@ -335,7 +335,7 @@ impl<W: io::Write, const PRETTY: bool, const LINES: bool> JsonSerializer<W, PRET
     }
 
     /// A [`PLAIN_TEXT`] value: its text between quotes, as it is.
-    #[inline]
+    #[inline(always)]
     fn plain<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
         value.serialize(KeySerializer { buf: &mut self.buf, plain: true, quoted: true })
     }

@@ -122,7 +122,7 @@ impl ser::Serializer for KeySerializer<'_> {
     }
 
     /// A plain text's ASCII bytes, as they are; a key cannot be bytes.
-    #[inline]
+    #[inline(always)]
     fn serialize_bytes(self, v: &[u8]) -> Result<()> {
         if self.plain {
             if self.quoted {

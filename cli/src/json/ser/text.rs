@@ -209,7 +209,7 @@ static ESCAPE: [u8; 256] = {
 
 /// Whether some byte of `s` needs an escape (below 0x20, `"` or `\`):
 /// eight bytes a step, then the rest one by one.
-#[inline]
+#[inline(always)]
 pub(super) fn needs_escape(s: &[u8]) -> bool {
     const ONES: u64 = 0x0101_0101_0101_0101;
     const HIGH: u64 = 0x8080_8080_8080_8080;
