@@ -7,8 +7,6 @@ use cycleref::Point;
 use cycleref::{Flank, IncrementSystem, LeadWord, PassKind, Role, StartAngle, Units};
 use cycleref_spec::profile::QUnit;
 
-use crate::json::ser::{serialize_plain, PlainText};
-
 /// `v` increments as a decimal with the increment's number of decimals.
 pub fn fixed(v: i64, units: Units) -> String {
     Fixed::new(v, units).to_string()
@@ -101,15 +99,6 @@ impl fmt::Display for Fixed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut buf = [0; FIXED_BUF];
         f.pad(std::str::from_utf8(self.encode(&mut buf)).map_err(|_| fmt::Error)?)
-    }
-}
-
-/// A string (`"64.400"`) in every format: `collect_str` of the text
-/// above; the JSON writer takes the digits without the text
-/// ([`crate::json::ser`]).
-impl serde::Serialize for Fixed {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        serialize_plain(self, PlainText::Length(*self), s)
     }
 }
 
@@ -226,13 +215,6 @@ impl fmt::Display for LeadText {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut buf = [0; FIXED_BUF];
         f.pad(std::str::from_utf8(self.encode(&mut buf)).map_err(|_| fmt::Error)?)
-    }
-}
-
-/// A string (`"F6.0"`) in every format, as [`Fixed`]'s.
-impl serde::Serialize for LeadText {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        serialize_plain(self, PlainText::Lead(*self), s)
     }
 }
 

@@ -1,25 +1,68 @@
 //! The `cycleref-moves/1` document as typed values that serialize straight
-//! into a writer (the `json` and `jsonl` output contracts in the README).
+//! into a writer (the `json` and `jsonl` output contracts in the README),
+//! and the pieces the other two documents share with it.
 //!
-//! Every document of moves is written from these types: `expand --format
-//! json` and `jsonl` (by [`ser`], the writer that serializes them), and the
-//! expected moves of `vectors` (through `serde_json::Value`). Fields are in
-//! the contract's order; the moves of a cycle are taken from the engine as
+//! Every document is written by [`ser`], one serializer: `expand --format
+//! json` and `jsonl` from these types; `check --format json`
+//! (`cycleref-check/1`, [`crate::check`]'s report), whose moves have the
+//! same point, angle, pass and plunge objects; and each case of `vectors`
+//! (`cycleref-vector/1`, [`crate::vectors`]), whose expected moves are
+//! these cycles, in the corpus's layout of lines ([`ser::to_writer_lines`]:
+//! the values marked [`OneLine`] on one line). Fields are in the
+//! contract's order; the moves of a cycle are taken from the engine as
 //! they are written, so a cycle of a million moves costs no memory here.
+//! The JSON Schemas of the three documents are in `docs/schemas/`.
 
 use std::cell::RefCell;
 use std::io;
 
-use cycleref::{InputUnit, Motion, Move, Point, Role, Units};
+use cycleref::{InputUnit, Motion, Move, Pass, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use serde::ser::{Serialize, SerializeSeq, Serializer};
 
-use crate::format::{flank_name, kind_name, plunge_of, role_name, Fixed, LeadText};
+use crate::format::{flank_name, kind_name, plunge_of, role_name, EncodeAtEnd, Fixed, LeadText, FIXED_BUF};
 
 pub mod ser;
 
+pub use ser::OneLine;
+
+/// A length (`"64.400"`): a string in every human-readable format (its
+/// ASCII bytes in the others); [`ser`] copies its digits as they are
+/// ([`ser::PLAIN_TEXT`]).
+impl Serialize for Fixed {
+    #[inline]
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_newtype_struct(ser::PLAIN_TEXT, &Plain(*self))
+    }
+}
+
+/// A lead word (`"F6.0"`): as [`Fixed`].
+impl Serialize for LeadText {
+    #[inline]
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_newtype_struct(ser::PLAIN_TEXT, &Plain(*self))
+    }
+}
+
+/// The value of a [`ser::PLAIN_TEXT`] newtype struct: `T`'s text, as a
+/// string to a human-readable serializer, else as its ASCII bytes (which
+/// is how [`ser`] takes it, without a UTF-8 check or an escape scan).
+struct Plain<T>(T);
+
+impl<T: EncodeAtEnd + std::fmt::Display> Serialize for Plain<T> {
+    #[inline(always)]
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if s.is_human_readable() {
+            s.collect_str(&self.0)
+        } else {
+            let mut buf = [0; FIXED_BUF];
+            s.serialize_bytes(self.0.encode_at_end(&mut buf))
+        }
+    }
+}
+
 /// `{"unit": "mm", "decimals": 3}`.
-#[derive(serde::Serialize)]
+#[derive(Clone, Copy, serde::Serialize)]
 pub struct UnitsJson {
     unit: &'static str,
     decimals: u32,
@@ -41,38 +84,60 @@ impl UnitsJson {
 
 /// `{"x": "…", "z": "…"}`.
 #[derive(serde::Serialize)]
-struct PointJson {
+pub(crate) struct PointJson {
     x: Fixed,
     z: Fixed,
 }
 
 impl PointJson {
-    fn new(p: Point, u: Units) -> PointJson {
+    /// The JSON form of `p`.
+    pub(crate) fn new(p: Point, u: Units) -> PointJson {
         PointJson { x: Fixed::new(p.x, u), z: Fixed::new(p.z, u) }
     }
 }
 
+/// `{"num": …, "den": …}`: a start angle in thousandths of a degree.
 #[derive(serde::Serialize)]
-struct AngleJson {
-    num: u32,
-    den: u32,
+pub(crate) struct AngleJson {
+    pub(crate) num: u32,
+    pub(crate) den: u32,
 }
 
+/// The pass a move belongs to: `{"kind", "number", "start", "depth",
+/// "cut", "flank"}` (the moves document's and `check`'s).
 #[derive(serde::Serialize)]
-struct PassJson {
+pub(crate) struct PassJson {
     kind: &'static str,
     number: u32,
-    start: u16,
+    /// Absent in `check`'s moves of LinuxCNC's G76 (one start).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    start: Option<u16>,
     depth: Fixed,
     cut: Fixed,
     flank: &'static str,
 }
 
+impl PassJson {
+    /// The JSON form of `p`, with its start when `with_start`.
+    pub(crate) fn new(p: Pass, u: Units, with_start: bool) -> PassJson {
+        PassJson {
+            kind: kind_name(p.kind),
+            number: p.number,
+            start: with_start.then_some(p.start),
+            depth: Fixed::new(p.depth, u),
+            cut: Fixed::new(p.cut, u),
+            flank: flank_name(p.flank),
+        }
+    }
+}
+
+/// The G75.1 plunge (`{"layer", "number"}`) or layer (`{"layer"}`) a
+/// move belongs to.
 #[derive(serde::Serialize)]
-struct PlungeJson {
-    layer: u32,
+pub(crate) struct PlungeJson {
+    pub(crate) layer: u32,
     #[serde(skip_serializing_if = "Option::is_none")]
-    number: Option<u32>,
+    pub(crate) number: Option<u32>,
 }
 
 /// One move (the `json` contract's move object).
@@ -131,14 +196,7 @@ impl MoveJson {
             lead,
             start_angle_millidegrees: angle,
             sync,
-            pass: m.pass.map(|p| PassJson {
-                kind: kind_name(p.kind),
-                number: p.number,
-                start: p.start,
-                depth: Fixed::new(p.depth, u),
-                cut: Fixed::new(p.cut, u),
-                flank: flank_name(p.flank),
-            }),
+            pass: m.pass.map(|p| PassJson::new(p, u, true)),
             plunge,
         }
     }
@@ -156,7 +214,7 @@ impl Serialize for MovesJson {
         let mut seq = s.serialize_seq(None)?;
         if let Some(moves) = self.moves.borrow_mut().take() {
             for m in moves {
-                seq.serialize_element(&MoveJson::new(&m, self.units))?;
+                seq.serialize_element(&OneLine(MoveJson::new(&m, self.units)))?;
             }
         }
         seq.end()
@@ -172,8 +230,8 @@ pub struct CycleJson {
     #[serde(skip_serializing_if = "Option::is_none")]
     params_line: Option<Option<usize>>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    from: Option<PointJson>,
-    start: PointJson,
+    from: Option<OneLine<PointJson>>,
+    start: OneLine<PointJson>,
     moves: MovesJson,
 }
 
@@ -188,8 +246,8 @@ impl CycleJson {
             // Present (null when block 1 came from the parameters) for the
             // cycles of two blocks only.
             params_line: cycle.has_params_block().then(|| cycle.params_line()),
-            from: cycle.tool_before_start().map(|p| PointJson::new(p, u)),
-            start: PointJson::new(cycle.start(), u),
+            from: cycle.tool_before_start().map(|p| OneLine(PointJson::new(p, u))),
+            start: OneLine(PointJson::new(cycle.start(), u)),
             moves: MovesJson { moves: RefCell::new(Some(moves)), units: u },
         }
     }

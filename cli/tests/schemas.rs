@@ -1,7 +1,8 @@
 //! The JSON Schemas of the three documents (`docs/schemas/`) hold for real
-//! output: every vector of the corpus, `expand --format json` of every
-//! example, and `check --format json` reports that agree and that differ
-//! (a rapid, an arc's centre, a thread move's lead). A schema that accepted
+//! output: every vector of the corpus, `expand --format json` and every
+//! line of `--format jsonl` of every example, and `check --format json`
+//! reports that agree and that differ (a rapid, an arc's centre, a thread
+//! move's lead, a point of LinuxCNC's G76). A schema that accepted
 //! anything would pass these, so each is also shown to refuse a document
 //! with one field changed.
 
@@ -35,6 +36,18 @@ fn vector_schema() -> Value {
     let mut v: Value = serde_json::from_str(&text).expect("json");
     v["$defs"] = moves["$defs"].clone();
     v
+}
+
+/// The moves schema's definition `name` as a schema of its own (a jsonl
+/// line).
+fn moves_def(name: &str) -> Value {
+    let mut v = schema("cycleref-moves-1.schema.json");
+    let defs = v["$defs"].take();
+    serde_json::json!({
+        "$schema": v["$schema"],
+        "$ref": format!("#/$defs/{name}"),
+        "$defs": defs,
+    })
 }
 
 fn validator(schema: &Value) -> jsonschema::Validator {
@@ -98,6 +111,8 @@ fn examples() -> Vec<(String, &'static str)> {
 #[test]
 fn expand_json_of_every_example_is_a_cycleref_moves_1() {
     let v = validator(&schema("cycleref-moves-1.schema.json"));
+    let jsonl_cycle = validator(&moves_def("cycle"));
+    let jsonl_summary = validator(&moves_def("jsonl_summary"));
     let mut kinds = std::collections::BTreeSet::new();
     let mut expanded = 0;
     for (path, profile) in examples() {
@@ -110,6 +125,20 @@ fn expand_json_of_every_example_is_a_cycleref_moves_1() {
         expanded += 1;
         let doc: Value = serde_json::from_slice(&out.stdout).expect("json");
         assert_valid(&v, &doc, &path);
+        // Each jsonl line: a cycle of the document, then the summary.
+        let out = common::run(&["expand", "--format", "jsonl", "--profile", profile, &path], None);
+        assert!(out.status.success(), "{path}: {}", String::from_utf8_lossy(&out.stderr));
+        let lines: Vec<Value> = String::from_utf8(out.stdout)
+            .expect("utf-8")
+            .lines()
+            .map(|l| serde_json::from_str(l).expect("a json line"))
+            .collect();
+        let (summary, cycles) = lines.split_last().expect("a summary line");
+        assert_eq!(cycles.len(), doc["cycles"].as_array().expect("cycles").len(), "{path}");
+        for (n, cycle) in cycles.iter().enumerate() {
+            assert_valid(&jsonl_cycle, cycle, &format!("{path}: jsonl line {}", n + 1));
+        }
+        assert_valid(&jsonl_summary, summary, &format!("{path}: jsonl summary"));
         for c in doc["cycles"].as_array().expect("cycles") {
             kinds.insert(c["cycle"].as_str().expect("code").to_owned());
             for m in c["moves"].as_array().expect("moves") {
@@ -182,12 +211,30 @@ fn check_json_is_a_cycleref_check_1() {
     });
     assert_eq!(code, 1);
     assert_valid(&v, &doc, "an arc off");
-    // A thread's lead changed (G76).
+    // A thread's lead changed (G76): the pass is the moves document's,
+    // flank included.
     let (code, doc) = check_report("gsk988", &example("gsk988-m68x6.nc"), |t| t.replacen("F6", "F5", 1));
     assert_eq!(code, 1);
     assert_valid(&v, &doc, "a lead changed");
-    // Refused: a verdict that is not a boolean.
-    let mut bad = doc;
+    let pass = &doc["divergences"][0]["ours"]["pass"];
+    assert_eq!((pass["start"].as_u64(), pass["flank"].as_str()), (Some(1), Some("right")), "{pass}");
+    // A point of LinuxCNC's G76 off: its pass has no start.
+    let (code, lcnc) = check_report("linuxcnc", &example("linuxcnc-m20-taper.ngc"), |t| {
+        t.replacen("X19.7000 Z0.9151", "X19.7010 Z0.9151", 1)
+    });
+    assert_eq!(code, 1);
+    assert_valid(&v, &lcnc, "a LinuxCNC point off");
+    let pass = &lcnc["divergences"][0]["ours"]["pass"];
+    assert!(pass.get("start").is_none() && pass["flank"].is_string(), "{pass}");
+    // Refused: a verdict that is not a boolean, a pass without its flank,
+    // an unknown role.
+    let mut bad = doc.clone();
     bad["agree"] = Value::String("no".into());
+    assert!(!v.is_valid(&bad));
+    let mut bad = doc.clone();
+    bad["divergences"][0]["ours"]["pass"].as_object_mut().expect("a pass").remove("flank");
+    assert!(!v.is_valid(&bad));
+    let mut bad = doc;
+    bad["divergences"][0]["ours"]["role"] = Value::String("wander".into());
     assert!(!v.is_valid(&bad));
 }

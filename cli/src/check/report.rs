@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 
-use cycleref::{InputUnit, Lead, PassKind, Point, Role, Units};
-use serde_json::{json, Value};
+use cycleref::{Lead, PassKind, Point, Role, Units};
 
 use super::{Context, Divergence, Kind, Step};
-use crate::format::{fixed, kind_name};
+use crate::format::{fixed, kind_name, plunge_of, role_name, Fixed, LeadText};
+use crate::json::{ser, AngleJson, PassJson, PlungeJson, PointJson, UnitsJson};
 
 /// A divergence as `plot --trace` draws it: where it is, and what the
 /// report says of it.
@@ -157,9 +157,9 @@ impl Report {
                 fixed(pass.cut, self.units)
             ),
             Context::G92 { line, start, .. } => format!("G92 at line {line}, start {start}"),
-            Context::G75 { line, role } => match crate::format::plunge_of(role) {
+            Context::G75 { line, role } => match plunge_of(role) {
                 Some(p) => format!("G75.1 at line {line}, layer {} plunge {}", p.layer, p.number),
-                None => format!("G75.1 at line {line}, {}", crate::format::role_name(role)),
+                None => format!("G75.1 at line {line}, {}", role_name(role)),
             },
             Context::Source { line } => format!("program line {line}"),
         }
@@ -325,107 +325,174 @@ impl Report {
         out
     }
 
-    fn step_json(&self, s: &Step) -> Value {
+    fn step_json(&self, s: &Step) -> StepJson {
+        let u = self.units;
         // An axis not known yet (R-CHECKPARTIAL) is null.
-        let axis = |v: i64| if v == super::UNKNOWN { Value::Null } else { json!(fixed(v, self.units)) };
-        let mut v = json!({
-            "motion": s.kind.name(),
-            "x": axis(s.to.x),
-            "z": axis(s.to.z),
-        });
-        if let Some(c) = s.centre {
-            v["centre"] = json!({"x": fixed(c.x, self.units), "z": fixed(c.z, self.units)});
-        }
-        if let Some(l) = s.lead {
-            v["lead"] = json!(crate::format::lead_word(l));
-        }
-        if s.kind == Kind::Thread {
-            v["sync"] = json!(s.sync);
-            v["start_angle_millidegrees"] = json!({"num": s.angle.num, "den": s.angle.den});
-        }
-        match s.context {
+        let axis = |v: i64| (v != super::UNKNOWN).then(|| Fixed::new(v, u));
+        let thread = s.kind == Kind::Thread;
+        let mut step = StepJson {
+            motion: s.kind.name(),
+            x: axis(s.to.x),
+            z: axis(s.to.z),
+            centre: s.centre.map(|c| PointJson::new(c, u)),
+            lead: s.lead.map(LeadText),
+            sync: thread.then_some(s.sync),
+            start_angle_millidegrees: thread.then_some(AngleJson { num: s.angle.num, den: s.angle.den }),
+            cycle: None,
+            pass: None,
+            start: None,
+            point: Some(point_name(s.context, s.kind)),
+            role: None,
+            plunge: None,
+            line: None,
+        };
+        let (code, line, role) = match s.context {
             Context::G76 { code, line, pass, role } => {
-                v["cycle"] = json!({"code": code, "line": line});
-                v["pass"] = json!({
-                    "kind": kind_name(pass.kind), "number": pass.number, "start": pass.start,
-                    "depth": fixed(pass.depth, self.units), "cut": fixed(pass.cut, self.units),
-                });
-                v["point"] = json!(point_name(s.context, s.kind));
-                v["role"] = json!(crate::format::role_name(role));
+                step.pass = Some(PassJson::new(pass, u, true));
+                (code, line, role)
             }
             Context::G75 { line, role } => {
-                v["cycle"] = json!({"code": "G75.1", "line": line});
-                v["point"] = json!(point_name(s.context, s.kind));
-                v["role"] = json!(crate::format::role_name(role));
-                if let Some(p) = crate::format::plunge_of(role) {
-                    v["plunge"] = json!({"layer": p.layer, "number": p.number});
-                }
+                step.plunge = plunge_of(role).map(|p| PlungeJson { layer: p.layer, number: Some(p.number) });
+                ("G75.1", line, role)
             }
             Context::G92 { line, start, role } => {
-                v["cycle"] = json!({"code": "G92", "line": line});
-                v["start"] = json!(start);
-                v["point"] = json!(point_name(s.context, s.kind));
-                v["role"] = json!(crate::format::role_name(role));
+                step.start = Some(start);
+                ("G92", line, role)
             }
             Context::LinuxCnc { line, pass, role } => {
-                v["cycle"] = json!({"code": "G76", "line": line});
-                v["pass"] = json!({
-                    "kind": kind_name(pass.kind), "number": pass.number,
-                    "depth": fixed(pass.depth, self.units), "cut": fixed(pass.cut, self.units),
-                });
-                v["point"] = json!(point_name(s.context, s.kind));
-                v["role"] = json!(crate::format::role_name(role));
+                // One start: the pass has none.
+                step.pass = Some(PassJson::new(pass, u, false));
+                ("G76", line, role)
             }
-            Context::G32 { code, line, role } => {
-                v["cycle"] = json!({"code": code, "line": line});
-                v["point"] = json!(point_name(s.context, s.kind));
-                v["role"] = json!(crate::format::role_name(role));
+            Context::G32 { code, line, role } => (code, line, role),
+            Context::Source { line } => {
+                step.point = None;
+                step.line = Some(line);
+                return step;
             }
-            Context::Source { line } => v["line"] = json!(line),
-        }
-        v
+        };
+        step.cycle = Some(CycleRefJson { code, line });
+        step.role = Some(role_name(role));
+        step
     }
 
-    /// The JSON report (schema in the README).
-    pub fn json(&self) -> String {
-        let divs: Vec<Value> = self
-            .divergences
-            .iter()
-            .map(|d| {
-                let mut v = json!({"what": d.what, "moves": d.moves});
-                if let Some(o) = &d.ours {
-                    v["ours"] = self.step_json(o);
-                }
-                if let Some(t) = &d.theirs {
-                    v["theirs"] = self.step_json(t);
-                }
-                if let (Some(o), Some(t)) = (&d.ours, &d.theirs) {
-                    let (dx, dz) = diff(o.to, t.to);
-                    v["difference_increments"] = json!({"x": sat(dx), "z": sat(dz)});
-                    if let (Some(oc), Some(tc)) = (o.centre, t.centre) {
-                        let (dx, dz) = diff(oc, tc);
-                        v["centre_difference_increments"] = json!({"x": sat(dx), "z": sat(dz)});
-                    }
-                }
-                v
-            })
-            .collect();
-        let doc = json!({
-            "format": "cycleref-check/1",
-            "agree": self.agree(),
-            "tolerance_increments": self.tolerance,
-            "units": {"unit": match self.units.unit { InputUnit::Metric => "mm", InputUnit::Inch => "inch" }, "decimals": self.units.decimals()},
-            "moves": {"ours": self.ours_moves, "theirs": self.theirs_moves},
-            "divergences": divs,
-        });
-        let mut doc = doc;
-        if self.total > self.divergences.len() {
-            doc["unlisted_divergences"] = json!(self.total - self.divergences.len());
+    fn divergence_json(&self, d: &Divergence) -> DivergenceJson {
+        let both = d.ours.zip(d.theirs);
+        let increments = |(dx, dz): (i128, i128)| IncrementsJson { x: sat(dx), z: sat(dz) };
+        DivergenceJson {
+            what: d.what,
+            moves: d.moves,
+            ours: d.ours.as_ref().map(|o| self.step_json(o)),
+            theirs: d.theirs.as_ref().map(|t| self.step_json(t)),
+            difference_increments: both.map(|(o, t)| increments(diff(o.to, t.to))),
+            centre_difference_increments: both
+                .and_then(|(o, t)| o.centre.zip(t.centre))
+                .map(|(oc, tc)| increments(diff(oc, tc))),
         }
-        let mut s = serde_json::to_string_pretty(&doc).unwrap_or_default();
-        s.push('\n');
-        s
     }
+
+    /// The JSON report (`cycleref-check/1`: the README, and
+    /// `docs/schemas/cycleref-check-1.schema.json`).
+    pub fn json(&self) -> String {
+        let doc = CheckJson {
+            format: "cycleref-check/1",
+            agree: self.agree(),
+            tolerance_increments: self.tolerance,
+            units: UnitsJson::new(self.units),
+            moves: MoveCountsJson { ours: self.ours_moves, theirs: self.theirs_moves },
+            divergences: self.divergences.iter().map(|d| self.divergence_json(d)).collect(),
+            unlisted_divergences: (self.total > self.divergences.len())
+                .then(|| self.total - self.divergences.len()),
+        };
+        let mut out = Vec::new();
+        // Written into memory, of values that always serialize: no error.
+        let _ = ser::to_writer_pretty(&mut out, &doc);
+        out.push(b'\n');
+        String::from_utf8(out).unwrap_or_default()
+    }
+}
+
+/// The `cycleref-check/1` document.
+#[derive(serde::Serialize)]
+struct CheckJson {
+    format: &'static str,
+    agree: bool,
+    tolerance_increments: u64,
+    units: UnitsJson,
+    moves: MoveCountsJson,
+    divergences: Vec<DivergenceJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unlisted_divergences: Option<usize>,
+}
+
+/// `{"ours": …, "theirs": …}`: the moves of each toolpath.
+#[derive(serde::Serialize)]
+struct MoveCountsJson {
+    ours: usize,
+    theirs: usize,
+}
+
+/// One divergence: what differs, our step and theirs, and by how much.
+#[derive(serde::Serialize)]
+struct DivergenceJson {
+    what: &'static str,
+    moves: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ours: Option<StepJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    theirs: Option<StepJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    difference_increments: Option<IncrementsJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    centre_difference_increments: Option<IncrementsJson>,
+}
+
+/// `{"x": …, "z": …}` in increments (saturated to 64 bits).
+#[derive(serde::Serialize)]
+struct IncrementsJson {
+    x: i64,
+    z: i64,
+}
+
+/// `{"code": …, "line": …}`: the cycle a step belongs to.
+#[derive(serde::Serialize)]
+struct CycleRefJson {
+    code: &'static str,
+    line: usize,
+}
+
+/// One step of either toolpath: the move (as the moves document's, an
+/// axis not known yet null), then where it belongs (its cycle, pass,
+/// point and role, or its program line).
+#[derive(serde::Serialize)]
+struct StepJson {
+    motion: &'static str,
+    x: Option<Fixed>,
+    z: Option<Fixed>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    centre: Option<PointJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lead: Option<LeadText>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sync: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    start_angle_millidegrees: Option<AngleJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cycle: Option<CycleRefJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pass: Option<PassJson>,
+    /// G92: the thread start.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    start: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    point: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    role: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    plunge: Option<PlungeJson>,
+    /// A step outside any cycle: its program line.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    line: Option<usize>,
 }
 
 /// `q - p` per axis, exactly.

@@ -11,13 +11,11 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
+use super::{MachineJson, OneLine, ParamJson, ParamsJson, Rng};
 use cycleref::units::write_fixed;
 use cycleref::{IncrementSystem, InputUnit, LeadWord, Units, XMode};
 use cycleref_spec::profile::{ParamValue, Profile};
 use cycleref_spec::ProfileName;
-use serde_json::{json, Map, Value};
-
-use super::Rng;
 
 /// A parameter override: an integer, or a length in increments of the
 /// program's units (written as a decimal string).
@@ -202,7 +200,7 @@ impl MachineStyle {
     }
 
     /// The machine settings as a parameter file and as a JSON object.
-    pub(super) fn settings(&self) -> (String, Value) {
+    pub(super) fn settings(&self) -> (String, MachineJson) {
         let increment = match self.increment {
             IncrementSystem::IsB => "is-b",
             IncrementSystem::IsC => "is-c",
@@ -223,24 +221,28 @@ impl MachineStyle {
         let _ = writeln!(toml, "calculator_input = {}", self.calculator_input);
         let _ = writeln!(toml, "pass_limit = {}", self.pass_limit);
         toml.push_str("\n[parameters]\n");
-        let mut params = Map::new();
+        let mut params = Vec::new();
         for (key, default) in self.profile_data().default_params() {
             let value = match (self.params.get(key.as_str()).copied(), default) {
-                (Some(Param::Int(v)), _) | (None, ParamValue::Int(v)) => json!(v),
-                (Some(Param::Len(v)), _) => json!(decimal(v, self.decimals(), false)),
-                (None, ParamValue::Length(d)) => json!(d.to_string()),
+                (Some(Param::Int(v)), _) | (None, ParamValue::Int(v)) => ParamJson::Int(v),
+                (Some(Param::Len(v)), _) => ParamJson::Length(decimal(v, self.decimals(), false)),
+                (None, ParamValue::Length(d)) => ParamJson::Length(d.to_string()),
             };
-            let _ = writeln!(toml, "\"{key}\" = {value}");
-            params.insert(key, value);
+            // A length is a decimal: quoted, it needs no escape.
+            let _ = match &value {
+                ParamJson::Int(v) => writeln!(toml, "\"{key}\" = {v}"),
+                ParamJson::Length(d) => writeln!(toml, "\"{key}\" = \"{d}\""),
+            };
+            params.push((key, value));
         }
-        let machine = json!({
-            "increment": increment,
-            "unit": unit,
-            "x": x,
-            "calculator_input": self.calculator_input,
-            "pass_limit": self.pass_limit,
-            "parameters": params,
-        });
+        let machine = MachineJson {
+            increment,
+            unit,
+            x,
+            calculator_input: self.calculator_input,
+            pass_limit: self.pass_limit,
+            parameters: OneLine(ParamsJson(params)),
+        };
         (toml, machine)
     }
 }

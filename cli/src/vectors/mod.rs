@@ -35,17 +35,20 @@
 //!    another kind, too many moves, a feature missing) is dropped and the
 //!    generator drafts again from where the stream is, up to `ATTEMPTS`
 //!    times.
-//! 6. **Writing.** The case's JSON (`make_case`) is written in the
-//!    corpus's text form (`to_text`), and `index.json` lists them all.
+//! 6. **Writing.** The case (`make_case`: a typed `CaseJson`, the
+//!    `cycleref-vector/1` document, whose expected moves are the cycles of
+//!    `expand --format json`) is written by the one JSON serializer in the
+//!    corpus's layout of lines ([`crate::json::ser::to_writer_lines`]: a
+//!    move, a point, a list of tags, a flat object a line), and
+//!    `index.json` lists them all.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
-use serde_json::{json, Value};
 
-use crate::json::{CycleJson, UnitsJson};
+use crate::json::{ser, CycleJson, OneLine, UnitsJson};
 use cycleref_spec::pipeline::{expand, Cycle, Engine};
 
 mod g32;
@@ -103,24 +106,18 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
         } else {
             valid += 1;
         }
-        entries.push(json!({
-            "id": case.id,
-            "file": file,
-            "description": case.description,
-            "expect": if case.kind.is_some() { "error" } else { "moves" },
-            "kind": case.kind,
-            "tags": case.tags,
-        }));
+        entries.push(IndexEntryJson {
+            id: case.id,
+            file: file.clone(),
+            description: case.description,
+            expect: if case.kind.is_some() { "error" } else { "moves" },
+            kind: case.kind,
+            tags: OneLine(case.tags),
+        });
         files.insert(file);
     }
     remove_stale(out, &files)?;
-    let index = json!({
-        "schema": INDEX_SCHEMA,
-        "seed": seed,
-        "count": count,
-        "tags": tag_counts,
-        "cases": entries,
-    });
+    let index = IndexJson { schema: INDEX_SCHEMA, seed, count, tags: OneLine(tag_counts), cases: entries };
     std::fs::write(out.join("index.json"), to_text(&index))
         .map_err(|e| format!("{}: cannot write: {e}", out.join("index.json").display()))?;
     Ok(format!(
@@ -429,7 +426,7 @@ fn template(index: u32) -> &'static Template {
 
 /// What a program does: the cycles' JSON, or the first error.
 struct Evaluated {
-    outcome: Result<(Units, Vec<Value>), ProgramError>,
+    outcome: Result<(Units, Vec<CycleJson>), ProgramError>,
     tags: BTreeSet<String>,
     moves: usize,
 }
@@ -463,7 +460,7 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
                 cycle.tags(&moves, &mut |t| tag(&mut tags, t));
                 count += moves.len();
                 let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
-                cycles.push(serde_json::to_value(CycleJson::new(cycle, typed)).map_err(|e| e.to_string())?);
+                cycles.push(CycleJson::new(cycle, typed));
             }
             Err(e) => {
                 let error = ProgramError { line: cycle.line(), word: None, kind: ErrorKind::Cycle(e) };
@@ -472,10 +469,6 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
         }
     }
     Ok(Evaluated { outcome: Ok((program.units, cycles)), tags, moves: count })
-}
-
-fn units_json(u: Units) -> Value {
-    serde_json::to_value(UnitsJson::new(u)).unwrap_or(Value::Null)
 }
 
 fn tag(tags: &mut BTreeSet<String>, t: &str) {
@@ -491,7 +484,7 @@ struct Case {
     tags: Vec<String>,
     /// The expected error kind, for a refused program.
     kind: Option<String>,
-    json: Value,
+    json: CaseJson,
 }
 
 /// Case `index`: drafts of its template until one is what the template's
@@ -553,86 +546,149 @@ fn make_case(seed: u64, index: u32) -> Result<Case, String> {
             Ok((units, cycles)) => {
                 tags.insert("valid".into());
                 tags.extend(ev.tags);
-                (json!({"units": units_json(units), "moves": cycles}), None)
+                let expect = ExpectJson {
+                    units: Some(OneLine(UnitsJson::new(units))),
+                    moves: Some(cycles),
+                    error: None,
+                };
+                (expect, None)
             }
             Err(e) => {
                 let kind = kind_name(&e.kind);
                 tags.insert("refused".into());
                 tags.insert(format!("error:{kind}"));
-                let error = json!({"line": e.line, "word": e.word, "kind": kind, "message": e.to_string()});
-                (json!({ "error": error }), Some(kind))
+                let message = e.to_string();
+                let error = ErrorJson { line: e.line, word: e.word, kind: kind.clone(), message };
+                (ExpectJson { units: None, moves: None, error: Some(OneLine(error)) }, Some(kind))
             }
         };
         let tags: Vec<String> = tags.into_iter().collect();
-        let json = json!({
-            "schema": CASE_SCHEMA,
-            "id": id,
-            "seed": seed,
-            "index": index,
-            "description": description,
-            "tags": tags,
-            "profile": ctx.profile.to_string(),
-            "machine": machine_json,
-            "machine_toml": toml,
-            "program": program,
-            "expect": expect,
-        });
+        let json = CaseJson {
+            schema: CASE_SCHEMA,
+            id: id.clone(),
+            seed,
+            index,
+            description: description.clone(),
+            tags: OneLine(tags.clone()),
+            profile: ctx.profile.to_string(),
+            machine: machine_json,
+            machine_toml: toml,
+            program,
+            expect,
+        };
         return Ok(Case { id, description, tags, kind, json });
     }
     Err(format!("{id}: no draft of its template ({}) fitted in {ATTEMPTS} attempts", template.id))
 }
 
-// ---- JSON text ----
+// ---- the documents ----
 
-/// Pretty JSON with one move (and one list of scalars, one flat object) per
-/// line: readable, diffable, and a third of the size of full pretty printing.
-fn to_text(v: &Value) -> String {
-    let mut s = String::new();
-    write_value(v, 0, &mut s);
-    s.push('\n');
-    s
+/// `cycleref-vector/1`: one case (`vectors/README.md`,
+/// `docs/schemas/cycleref-vector-1.schema.json`).
+#[derive(serde::Serialize)]
+struct CaseJson {
+    schema: &'static str,
+    id: String,
+    seed: u64,
+    index: u32,
+    description: String,
+    tags: OneLine<Vec<String>>,
+    profile: String,
+    machine: MachineJson,
+    machine_toml: String,
+    program: String,
+    expect: ExpectJson,
 }
 
-fn scalar(v: &Value) -> bool {
-    !v.is_object() && !v.is_array()
+/// What must happen: the units and the cycles with their moves, or the
+/// error.
+#[derive(serde::Serialize)]
+struct ExpectJson {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    units: Option<OneLine<UnitsJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    moves: Option<Vec<CycleJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<OneLine<ErrorJson>>,
 }
 
-fn write_value(v: &Value, indent: usize, out: &mut String) {
-    let compact = match v {
-        Value::Object(m) => m.contains_key("motion") || m.values().all(scalar),
-        Value::Array(a) => a.iter().all(scalar),
-        _ => true,
-    };
-    if compact {
-        out.push_str(&serde_json::to_string(v).unwrap_or_default());
-        return;
-    }
-    let pad = " ".repeat(indent + 2);
-    match v {
-        Value::Object(m) => {
-            out.push_str("{\n");
-            for (n, (key, val)) in m.iter().enumerate() {
-                out.push_str(&pad);
-                out.push_str(&serde_json::to_string(key).unwrap_or_default());
-                out.push_str(": ");
-                write_value(val, indent + 2, out);
-                out.push_str(if n + 1 < m.len() { ",\n" } else { "\n" });
-            }
-            out.push_str(&" ".repeat(indent));
-            out.push('}');
+/// The expected error: its line, its word (or null), its stable kind and
+/// its message.
+#[derive(serde::Serialize)]
+struct ErrorJson {
+    line: usize,
+    word: Option<String>,
+    kind: String,
+    message: String,
+}
+
+/// The machine a case runs on (its `machine` object; the same settings as
+/// its parameter file).
+#[derive(serde::Serialize)]
+pub(super) struct MachineJson {
+    pub(super) increment: &'static str,
+    pub(super) unit: &'static str,
+    pub(super) x: &'static str,
+    pub(super) calculator_input: bool,
+    pub(super) pass_limit: u32,
+    /// Every parameter of the profile, by name in the profile's order.
+    pub(super) parameters: OneLine<ParamsJson>,
+}
+
+/// The parameters as an object, in the order given.
+pub(super) struct ParamsJson(pub(super) Vec<(String, ParamJson)>);
+
+impl serde::Serialize for ParamsJson {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap as _;
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (key, value) in &self.0 {
+            map.serialize_entry(key, value)?;
         }
-        Value::Array(a) => {
-            out.push_str("[\n");
-            for (n, val) in a.iter().enumerate() {
-                out.push_str(&pad);
-                write_value(val, indent + 2, out);
-                out.push_str(if n + 1 < a.len() { ",\n" } else { "\n" });
-            }
-            out.push_str(&" ".repeat(indent));
-            out.push(']');
-        }
-        _ => {}
+        map.end()
     }
+}
+
+/// A parameter's value: an integer, or a length as a decimal string.
+#[derive(serde::Serialize)]
+#[serde(untagged)]
+pub(super) enum ParamJson {
+    /// An integer parameter.
+    Int(i64),
+    /// A length (`"0.5"`).
+    Length(String),
+}
+
+/// `index.json` (`cycleref-vectors-index/1`).
+#[derive(serde::Serialize)]
+struct IndexJson {
+    schema: &'static str,
+    seed: u64,
+    count: u32,
+    tags: OneLine<BTreeMap<String, u32>>,
+    cases: Vec<IndexEntryJson>,
+}
+
+/// A case as `index.json` lists it.
+#[derive(serde::Serialize)]
+struct IndexEntryJson {
+    id: String,
+    file: String,
+    description: String,
+    expect: &'static str,
+    kind: Option<String>,
+    tags: OneLine<Vec<String>>,
+}
+
+/// A document in the corpus's layout: pretty, one move (one point, one
+/// list of tags, one flat object) a line — readable, diffable, and a
+/// third of the size of full pretty printing.
+fn to_text<T: serde::Serialize>(doc: &T) -> String {
+    let mut out = Vec::new();
+    // Written into memory, of values that always serialize: no error.
+    let _ = ser::to_writer_lines(&mut out, doc);
+    out.push(b'\n');
+    String::from_utf8(out).unwrap_or_default()
 }
 
 #[cfg(test)]
