@@ -13,7 +13,7 @@
 //! they are written, so a cycle of a million moves costs no memory here.
 //! The JSON Schemas of the three documents are in `docs/schemas/`.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::io;
 
 use cycleref::{InputUnit, Motion, Move, Pass, Point, Role, Units};
@@ -207,6 +207,8 @@ impl MoveJson {
 pub struct MovesJson {
     moves: RefCell<Option<Moves>>,
     units: Units,
+    /// How many moves were written.
+    written: Cell<u64>,
 }
 
 impl Serialize for MovesJson {
@@ -215,6 +217,7 @@ impl Serialize for MovesJson {
         if let Some(moves) = self.moves.borrow_mut().take() {
             for m in moves {
                 seq.serialize_element(&OneLine(MoveJson::new(&m, self.units)))?;
+                self.written.set(self.written.get() + 1);
             }
         }
         seq.end()
@@ -248,8 +251,16 @@ impl CycleJson {
             params_line: cycle.has_params_block().then(|| cycle.params_line()),
             from: cycle.tool_before_start().map(|p| OneLine(PointJson::new(p, u))),
             start: OneLine(PointJson::new(cycle.start(), u)),
-            moves: MovesJson { moves: RefCell::new(Some(moves)), units: u },
+            moves: MovesJson { moves: RefCell::new(Some(moves)), units: u, written: Cell::new(0) },
         }
+    }
+
+    /// How many of the cycle's moves were written (all of them once the
+    /// document is): `jsonl`'s summary counts them as they go, without
+    /// walking the cycle again.
+    #[must_use]
+    pub fn moves_written(&self) -> u64 {
+        self.moves.written.get()
     }
 }
 

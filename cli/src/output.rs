@@ -381,11 +381,12 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
     let mut ser = JsonSerializer::<_, false>::new(&mut *out);
     each_item(job, |item| {
         let Some(c) = Cycle::of(item) else { return Ok(()) };
-        let m = moves(job, c)?;
-        // Counted on a copy of the iterator: the summary line is exact.
-        moves_total += m.clone().count() as u64;
+        // Counted as they are written: the summary line comes last.
+        let document = CycleJson::new(c, moves(job, c)?);
+        ser.write_line(&document)?;
+        moves_total += document.moves_written();
         cycles += 1;
-        ser.write_line(&CycleJson::new(c, m))
+        Ok(())
     })?;
     let summary = JsonlSummary {
         format: "cycleref-moves-jsonl/1",
