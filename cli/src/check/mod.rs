@@ -57,6 +57,7 @@ mod trace;
 use std::path::Path;
 
 use cycleref::{Lead, Pass, Point, Role, StartAngle, Units};
+use cycleref_spec::cycles::Annotations;
 
 use crate::job::{Failure, Job};
 
@@ -97,16 +98,10 @@ impl Kind {
 enum Context {
     /// A motion block of the program itself.
     Source { line: usize },
-    /// A G76 or G78 move (`code`: which).
-    G76 { code: &'static str, line: usize, pass: Pass, role: Role },
-    /// A G32 move (or LinuxCNC's G33: `code`).
-    G32 { code: &'static str, line: usize, role: Role },
-    /// A move of LinuxCNC's G76 (the `linuxcnc` profile).
-    LinuxCnc { line: usize, pass: Pass, role: Role },
-    /// A G75.1 move (line of block 2).
-    G75 { line: usize, role: Role },
-    /// A G92 move, of start `start`.
-    G92 { line: usize, start: u16, role: Role },
+    /// A move of one of our cycles: its G code, the line of the block
+    /// that runs it, the move's role and pass, and what the cycle's moves
+    /// carry ([`Annotations`]), which the report names them by.
+    Cycle { code: &'static str, line: usize, role: Role, pass: Option<Pass>, annotations: Annotations },
 }
 
 /// The coordinate of an axis not known yet: a move made before the

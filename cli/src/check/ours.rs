@@ -8,7 +8,7 @@
 use std::collections::VecDeque;
 
 use cycleref::units::MAX_LENGTH;
-use cycleref::{Motion, Move, Pass, PassKind, Point, StartAngle, Units, XMode};
+use cycleref::{Motion, Move, Point, StartAngle, Units, XMode};
 use cycleref_spec::cycles::{Annotations, Region};
 use cycleref_spec::lex::{Block, Word};
 use cycleref_spec::pipeline::{Cycle, Moves, RunError};
@@ -219,10 +219,6 @@ impl<'m> Follow<'m> {
     }
 }
 
-/// The pass of a cycle's move that belongs to no pass (the return).
-const NO_PASS: Pass =
-    Pass { kind: PassKind::Rough, number: 0, start: 0, depth: 0, cut: 0, flank: cycleref::Flank::Right };
-
 /// How many cycles' regions are kept for judging split rapids: the cycle
 /// being compared and its neighbours.
 const REGION_CYCLES: usize = 3;
@@ -273,18 +269,12 @@ impl<'j> OurSteps<'j> {
             if let Some(run) = &mut self.current {
                 if let Some(m) = run.moves.next() {
                     let (line, role) = (run.line, m.role);
-                    let context = match run.annotations {
-                        Annotations::Passes => {
-                            Context::G76 { code: run.code, line, pass: m.pass.unwrap_or(NO_PASS), role }
-                        }
-                        Annotations::Roles => Context::G32 { code: run.code, line, role },
-                        Annotations::LinuxCncPasses => {
-                            Context::LinuxCnc { line, pass: m.pass.unwrap_or(NO_PASS), role }
-                        }
-                        Annotations::Starts => {
-                            Context::G92 { line, start: m.pass.map_or(1, |p| p.start), role }
-                        }
-                        Annotations::Plunges => Context::G75 { line, role },
+                    let context = Context::Cycle {
+                        code: run.code,
+                        line,
+                        role,
+                        pass: m.pass,
+                        annotations: run.annotations,
                     };
                     // A move to where the tool is, is no move, in our
                     // toolpath as in a trace.

@@ -4,7 +4,8 @@
 
 use std::fmt::Write as _;
 
-use cycleref::{Lead, PassKind, Point, Role, Units};
+use cycleref::{Lead, Pass, PassKind, Point, Role, Units};
+use cycleref_spec::cycles::Annotations;
 
 use super::{Context, Divergence, Kind, Step};
 use crate::format::{fixed, kind_name, plunge_of, role_name, Fixed, LeadText};
@@ -30,11 +31,22 @@ pub struct Mark {
 /// The most divergences a report lists; the count is always exact.
 pub const MAX_LISTED: usize = 10_000;
 
+/// The pass a cycle's move that belongs to no pass (the return) is
+/// reported with.
+const NO_PASS: Pass =
+    Pass { kind: PassKind::Rough, number: 0, start: 0, depth: 0, cut: 0, flank: cycleref::Flank::Right };
+
+/// The start of a multi-start single pass a move belongs to (1 when it
+/// says none).
+fn start_of(pass: Option<Pass>) -> u16 {
+    pass.map_or(1, |p| p.start)
+}
+
 /// The point a move ends at, in the manual's terms.
 fn point_name(c: Context, kind: Kind) -> &'static str {
     match c {
         // LinuxCNC's own names of the moves (threading_pass, R-LCNC-PASS).
-        Context::LinuxCnc { role, .. } => match role {
+        Context::Cycle { annotations: Annotations::LinuxCncPasses, role, .. } => match role {
             Role::Approach => "pass start (\"back\" or \"in\")",
             Role::LeadIn => "entry taper (\"in\", \"angled in\")",
             Role::Cut => "end of \"over\"",
@@ -42,10 +54,7 @@ fn point_name(c: Context, kind: Kind) -> &'static str {
             Role::Retract => "\"out\"",
             _ => "the block's X Z (end of the cycle)",
         },
-        Context::G76 { role, .. }
-        | Context::G32 { role, .. }
-        | Context::G75 { role, .. }
-        | Context::G92 { role, .. } => match role {
+        Context::Cycle { role, .. } => match role {
             Role::Approach => "Bn (pass start, or An before a lead-in)",
             Role::LeadIn => "Bn (end of the lead-in)",
             Role::Cut => "end of cut (run-out start)",
@@ -101,11 +110,7 @@ impl Report {
                 let mut text = String::new();
                 self.describe(d, &mut text);
                 let cycle_line = d.ours.and_then(|s| match s.context {
-                    Context::LinuxCnc { line, .. }
-                    | Context::G76 { line, .. }
-                    | Context::G32 { line, .. }
-                    | Context::G75 { line, .. }
-                    | Context::G92 { line, .. } => Some(line),
+                    Context::Cycle { line, .. } => Some(line),
                     Context::Source { .. } => None,
                 });
                 let difference = match (&d.ours, &d.theirs) {
@@ -139,40 +144,39 @@ impl Report {
     }
 
     fn where_ours(&self, s: &Step) -> String {
-        match s.context {
-            Context::G76 { code, line, pass, .. } => format!(
+        let (code, line, role, pass, annotations) = match s.context {
+            Context::Cycle { code, line, role, pass, annotations } => (code, line, role, pass, annotations),
+            Context::Source { line } => return format!("program line {line}"),
+        };
+        let full = pass.unwrap_or(NO_PASS);
+        match annotations {
+            Annotations::Passes => format!(
                 "{code} at line {line}, {} pass {} (start {}, depth {}, cut {})",
-                kind_name(pass.kind),
-                pass.number,
-                pass.start,
-                fixed(pass.depth, self.units),
-                fixed(pass.cut, self.units)
+                kind_name(full.kind),
+                full.number,
+                full.start,
+                fixed(full.depth, self.units),
+                fixed(full.cut, self.units)
             ),
-            Context::G32 { code, line, .. } => format!("{code} at line {line}"),
-            Context::LinuxCnc { line, pass, .. } => format!(
-                "G76 (LinuxCNC) at line {line}, {} pass {} (depth {}, cut {})",
-                if pass.kind == PassKind::Rough { "rough" } else { "full-depth" },
-                pass.number,
-                fixed(pass.depth, self.units),
-                fixed(pass.cut, self.units)
+            Annotations::Roles => format!("{code} at line {line}"),
+            Annotations::LinuxCncPasses => format!(
+                "{code} (LinuxCNC) at line {line}, {} pass {} (depth {}, cut {})",
+                if full.kind == PassKind::Rough { "rough" } else { "full-depth" },
+                full.number,
+                fixed(full.depth, self.units),
+                fixed(full.cut, self.units)
             ),
-            Context::G92 { line, start, .. } => format!("G92 at line {line}, start {start}"),
-            Context::G75 { line, role } => match plunge_of(role) {
-                Some(p) => format!("G75.1 at line {line}, layer {} plunge {}", p.layer, p.number),
-                None => format!("G75.1 at line {line}, {}", role_name(role)),
+            Annotations::Starts => format!("{code} at line {line}, start {}", start_of(pass)),
+            Annotations::Plunges => match plunge_of(role) {
+                Some(p) => format!("{code} at line {line}, layer {} plunge {}", p.layer, p.number),
+                None => format!("{code} at line {line}, {}", role_name(role)),
             },
-            Context::Source { line } => format!("program line {line}"),
         }
     }
 
     fn theirs_line(s: &Step) -> usize {
         match s.context {
-            Context::Source { line } => line,
-            Context::LinuxCnc { line, .. }
-            | Context::G76 { line, .. }
-            | Context::G32 { line, .. }
-            | Context::G75 { line, .. }
-            | Context::G92 { line, .. } => line,
+            Context::Source { line } | Context::Cycle { line, .. } => line,
         }
     }
 
@@ -347,24 +351,22 @@ impl Report {
             line: None,
         };
         let (code, line, role) = match s.context {
-            Context::G76 { code, line, pass, role } => {
-                step.pass = Some(PassJson::new(pass, u, true));
+            Context::Cycle { code, line, role, pass, annotations } => {
+                match annotations {
+                    Annotations::Passes => step.pass = Some(PassJson::new(pass.unwrap_or(NO_PASS), u, true)),
+                    // One start: the pass has none.
+                    Annotations::LinuxCncPasses => {
+                        step.pass = Some(PassJson::new(pass.unwrap_or(NO_PASS), u, false));
+                    }
+                    Annotations::Starts => step.start = Some(start_of(pass)),
+                    Annotations::Plunges => {
+                        step.plunge =
+                            plunge_of(role).map(|p| PlungeJson { layer: p.layer, number: Some(p.number) });
+                    }
+                    Annotations::Roles => {}
+                }
                 (code, line, role)
             }
-            Context::G75 { line, role } => {
-                step.plunge = plunge_of(role).map(|p| PlungeJson { layer: p.layer, number: Some(p.number) });
-                ("G75.1", line, role)
-            }
-            Context::G92 { line, start, role } => {
-                step.start = Some(start);
-                ("G92", line, role)
-            }
-            Context::LinuxCnc { line, pass, role } => {
-                // One start: the pass has none.
-                step.pass = Some(PassJson::new(pass, u, false));
-                ("G76", line, role)
-            }
-            Context::G32 { code, line, role } => (code, line, role),
             Context::Source { line } => {
                 step.point = None;
                 step.line = Some(line);
