@@ -51,6 +51,23 @@ macro_rules! registry {
             $($(#[$doc])* $variant(&'r $call<'a>),)*
         }
 
+        /// A cycle of a program detached from the text it was read from
+        /// ([`Cycle::detached`]): kept after the reader has moved on.
+        #[derive(Clone, Debug)]
+        pub enum OwnedCycle {
+            $($(#[$doc])* $variant($call<'static>),)*
+        }
+
+        impl OwnedCycle {
+            /// The cycle, to expand or ask.
+            #[must_use]
+            pub fn cycle(&self) -> Cycle<'_, 'static> {
+                match self {
+                    $(OwnedCycle::$variant(c) => Cycle::$variant(c),)*
+                }
+            }
+        }
+
         /// The number of cycles in the registry.
         pub const CYCLE_KINDS: usize = [$(stringify!($variant)),*].len();
 
@@ -61,6 +78,15 @@ macro_rules! registry {
                 match item {
                     $(Item::$item(c) => Some(Cycle::$variant(c)),)*
                     _ => None,
+                }
+            }
+
+            /// The cycle detached from the text it was read from (its
+            /// block's text copied).
+            #[must_use]
+            pub fn detached(self) -> OwnedCycle {
+                match self {
+                    $(Cycle::$variant(c) => OwnedCycle::$variant(c.detached()),)*
                 }
             }
 

@@ -9,9 +9,7 @@ use std::io::BufRead;
 use cycleref::Units;
 
 use super::compare::{compare, only_kinds};
-use cycleref_spec::cycles::Region;
-
-use super::ours::OurSteps;
+use super::ours::{OurSteps, Regions};
 use super::report::Report;
 use super::trace::trace_steps;
 use super::{Divergence, Group, Kind, Step, TraceFormat};
@@ -133,7 +131,6 @@ pub(super) fn compare_streams(
     let mut lookahead: Option<(Group, u32)> = None;
     // Reused from window to window, as the groups are.
     let mut window = Vec::new();
-    let mut regions: Vec<Region> = Vec::new();
     // A missing group at the end of a window, held until the next window
     // shows whether the pass it begins is missing whole (see `align`).
     let mut carry: Option<Group> = None;
@@ -165,11 +162,10 @@ pub(super) fn compare_streams(
                 Some(r) => pending.push_back(r.map_err(StreamError::Theirs)?.0),
             }
         }
-        regions.clear();
-        regions.extend(ours.steps.regions.iter().flatten().copied());
         let next = lookahead.as_ref().map(|(g, _)| g);
+        let regions = Regions(&ours.steps.recent);
         let (divergences, taken) =
-            align(&window, pending.make_contiguous(), tol, units, &regions, next, &mut carry);
+            align(&window, pending.make_contiguous(), tol, units, regions, next, &mut carry);
         for g in pending.drain(..taken) {
             theirs.recycle(g);
         }
@@ -240,7 +236,7 @@ fn align(
     b: &[Group],
     tol: i64,
     units: Units,
-    regions: &[Region],
+    regions: Regions<'_>,
     next: Option<&Group>,
     carry: &mut Option<Group>,
 ) -> (Vec<Divergence>, usize) {
@@ -460,10 +456,10 @@ mod tests {
         let ours = [pass(100), pass(90), pass(80)];
         let theirs = [pass(100), pass(90), pass(80), pass(70)];
         // Our next group is theirs after the three: they agree, three taken.
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&pass(70)), &mut None);
+        let (d, taken) = align(&ours, &theirs, 0, MM, Regions(&VecDeque::new()), Some(&pass(70)), &mut None);
         assert_eq!((whats(&d), taken), (vec![], 3));
         // Without a next group, all of theirs is taken: one extra pass.
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None, &mut None);
+        let (d, taken) = align(&ours, &theirs, 0, MM, Regions(&VecDeque::new()), None, &mut None);
         assert_eq!((whats(&d), taken), (vec!["extra pass"], 4));
     }
 
@@ -471,7 +467,7 @@ mod tests {
     fn a_missing_pass_is_one_divergence_not_a_shift() {
         let ours = [pass(100), pass(90), pass(80), pass(70)];
         let theirs = [pass(100), pass(80), pass(70)];
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], None, &mut None);
+        let (d, taken) = align(&ours, &theirs, 0, MM, Regions(&VecDeque::new()), None, &mut None);
         assert_eq!((whats(&d), taken), (vec!["missing pass"], 3));
         assert_eq!(d[0].ours.map(|s| s.to), Some(Point::new(90, -30)));
     }
@@ -488,10 +484,11 @@ mod tests {
         let next = pass(500);
         let theirs = [pass(100), pass(90), pass(500), pass(490)];
         let mut carry = None;
-        let (d, taken) = align(&ours, &theirs, 0, MM, &[], Some(&next), &mut carry);
+        let (d, taken) = align(&ours, &theirs, 0, MM, Regions(&VecDeque::new()), Some(&next), &mut carry);
         assert_eq!((whats(&d), taken), (vec![], 2));
         assert_eq!(carry.as_ref().and_then(|g| g.cuts.first()).map(|s| s.to), Some(Point::new(80, -30)));
-        let (d, taken) = align(&[next, pass(490)], &theirs[2..], 0, MM, &[], None, &mut carry);
+        let (d, taken) =
+            align(&[next, pass(490)], &theirs[2..], 0, MM, Regions(&VecDeque::new()), None, &mut carry);
         assert_eq!((whats(&d), taken), (vec!["missing pass"], 2));
         assert!(carry.is_none());
     }
@@ -501,9 +498,11 @@ mod tests {
         let ours = [pass(100)];
         let mut moved = pass(100);
         moved.cuts[0].to = Point::new(100, -31);
-        let (d, _) = align(&ours, std::slice::from_ref(&moved), 0, MM, &[], None, &mut None);
+        let (d, _) =
+            align(&ours, std::slice::from_ref(&moved), 0, MM, Regions(&VecDeque::new()), None, &mut None);
         assert_eq!(whats(&d), vec!["end point"]);
-        let (d, _) = align(&ours, std::slice::from_ref(&moved), 1, MM, &[], None, &mut None);
+        let (d, _) =
+            align(&ours, std::slice::from_ref(&moved), 1, MM, Regions(&VecDeque::new()), None, &mut None);
         assert!(d.is_empty());
     }
 

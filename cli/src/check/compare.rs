@@ -7,8 +7,8 @@
 use cycleref::angle::FULL_TURN_MILLIDEGREES;
 use cycleref::{Lead, Point, StartAngle, Units};
 
+use super::ours::Regions;
 use super::{Divergence, Group, Kind, Step};
-use cycleref_spec::cycles::Region;
 
 /// True when two leads are the same rate (F6 and F6.000; an F and an I of
 /// the same value).
@@ -41,14 +41,13 @@ fn corners(p: Point, q: Point) -> [Point; 2] {
 }
 
 /// Compares a group of ours with a group of theirs; the differences.
-pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: &[Region]) -> Vec<Divergence> {
+pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: Regions<'_>) -> Vec<Divergence> {
     let mut out = Vec::new();
     let tol = i128::from(tol);
     let close = |p: Point, q: Point| {
         (i128::from(p.x) - i128::from(q.x)).abs() <= tol && (i128::from(p.z) - i128::from(q.z)).abs() <= tol
     };
-    let through =
-        |p: Point, c: Point, q: Point| regions.iter().any(|r| r.crossed_by(p, c) || r.crossed_by(c, q));
+    let through = |p: Point, c: Point, q: Point| regions.any(|r| r.crossed_by(p, c) || r.crossed_by(c, q));
     let div = |what, o: &Step, t: &Step| Divergence { what, ours: Some(*o), theirs: Some(*t), moves: 1 };
     // Rapids: their points must be ours. A rapid of ours may be reached
     // through either corner of an X/Z split, and an X/Z split of ours may be
@@ -100,7 +99,7 @@ pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: &[R
                 continue;
             }
         }
-        let crossed = t.from.is_some_and(|p| regions.iter().any(|g| g.crossed_by(p, t.to)));
+        let crossed = t.from.is_some_and(|p| regions.any(|g| g.crossed_by(p, t.to)));
         out.push(div(if crossed { "rapid through the work" } else { "rapid point" }, r, t));
         i += 1;
         j += 1;
@@ -155,7 +154,12 @@ pub(super) fn only_kinds(d: &[Divergence]) -> bool {
 mod tests {
     use cycleref::{Lead, LeadWord, Point, StartAngle};
 
+    use std::collections::VecDeque;
+
+    use cycleref_spec::cycles::Region;
+
     use super::*;
+    use crate::check::ours::RecentCycle;
     use crate::check::test_steps::{step, MM};
 
     fn whats(d: &[Divergence]) -> Vec<&'static str> {
@@ -177,23 +181,31 @@ mod tests {
         // Ours: (100, 10) to (90, 0) in one rapid. Theirs: along X to the
         // corner (90, 10), then along Z to (90, 0), or along Z first to the
         // corner (100, 0).
+        let (empty, known) = (
+            VecDeque::new(),
+            VecDeque::from([RecentCycle::Known(
+                // A region X 85..95, Z 2..8 (open).
+                Region::spanning(&[(85, 2), (95, 8)]).into_iter().collect(),
+            )]),
+        );
+        let none = Regions(&empty);
         let ours = group(vec![rapid((100, 10), (90, 0))], vec![]);
         let x_first = group(vec![rapid((100, 10), (90, 10)), rapid((90, 10), (90, 0))], vec![]);
         let z_first = group(vec![rapid((100, 10), (100, 0)), rapid((100, 0), (90, 0))], vec![]);
-        assert!(compare(&ours, &x_first, 0, MM, &[]).is_empty());
-        assert!(compare(&ours, &z_first, 0, MM, &[]).is_empty());
+        assert!(compare(&ours, &x_first, 0, MM, none).is_empty());
+        assert!(compare(&ours, &z_first, 0, MM, none).is_empty());
         // A region X 85..95, Z 2..8 (open): the X-first split's second leg
         // runs down X 90 through it (R-CHECKSPLIT); the Z-first split's legs
         // (X 100, then Z 0) pass it by.
-        let cut = Region::spanning(&[(85, 2), (95, 8)]).into_iter().collect::<Vec<_>>();
-        assert_eq!(whats(&compare(&ours, &x_first, 0, MM, &cut)), ["rapid through the work"]);
-        assert!(compare(&ours, &z_first, 0, MM, &cut).is_empty());
+        let cut = Regions(&known);
+        assert_eq!(whats(&compare(&ours, &x_first, 0, MM, cut)), ["rapid through the work"]);
+        assert!(compare(&ours, &z_first, 0, MM, cut).is_empty());
         // A rapid to another point, and one more rapid than ours.
         let elsewhere = group(vec![rapid((100, 10), (90, 1))], vec![]);
-        assert_eq!(whats(&compare(&ours, &elsewhere, 0, MM, &[])), ["rapid point"]);
-        assert!(compare(&ours, &elsewhere, 1, MM, &[]).is_empty(), "within a tolerance of 1");
+        assert_eq!(whats(&compare(&ours, &elsewhere, 0, MM, none)), ["rapid point"]);
+        assert!(compare(&ours, &elsewhere, 1, MM, none).is_empty(), "within a tolerance of 1");
         let more = group(vec![rapid((100, 10), (90, 0)), rapid((90, 0), (95, 0))], vec![]);
-        assert_eq!(whats(&compare(&ours, &more, 0, MM, &[])), ["extra rapid"]);
+        assert_eq!(whats(&compare(&ours, &more, 0, MM, none)), ["extra rapid"]);
     }
 
     #[test]
@@ -204,11 +216,15 @@ mod tests {
         // F2.54 = F2.540 = I10 (25.4 mm / 10 threads per inch): the same
         // rate, 2540 increments a turn.
         for same in [lead(LeadWord::F, 2540, 3), lead(LeadWord::I, 10, 0)] {
-            assert!(compare(&ours, &group(vec![], vec![thread(same)]), 0, MM, &[]).is_empty(), "{same:?}");
+            assert!(
+                compare(&ours, &group(vec![], vec![thread(same)]), 0, MM, Regions(&VecDeque::new()))
+                    .is_empty(),
+                "{same:?}"
+            );
         }
         // F2.5 and I11 (2309.09… increments) are other rates.
         for other in [lead(LeadWord::F, 25, 1), lead(LeadWord::I, 11, 0)] {
-            let d = compare(&ours, &group(vec![], vec![thread(other)]), 0, MM, &[]);
+            let d = compare(&ours, &group(vec![], vec![thread(other)]), 0, MM, Regions(&VecDeque::new()));
             assert_eq!(whats(&d), ["lead"], "{other:?}");
         }
     }
@@ -217,11 +233,11 @@ mod tests {
     fn synchronisation_and_start_angle_are_exact() {
         let ours = group(vec![], vec![step(Kind::Thread, 90, -30, 2)]);
         let unsynchronised = Step { sync: false, ..step(Kind::Thread, 90, -30, 2) };
-        let d = compare(&ours, &group(vec![], vec![unsynchronised]), 0, MM, &[]);
+        let d = compare(&ours, &group(vec![], vec![unsynchronised]), 0, MM, Regions(&VecDeque::new()));
         assert_eq!(whats(&d), ["synchronisation"]);
         // 180° for 0°: a start angle, whatever the tolerance.
         let half_turn = Step { angle: StartAngle { num: 180_000, den: 1 }, ..step(Kind::Thread, 90, -30, 2) };
-        let d = compare(&ours, &group(vec![], vec![half_turn]), 1_000, MM, &[]);
+        let d = compare(&ours, &group(vec![], vec![half_turn]), 1_000, MM, Regions(&VecDeque::new()));
         assert_eq!(whats(&d), ["start angle"]);
     }
 
@@ -229,24 +245,37 @@ mod tests {
     fn kinds_arcs_and_counts_of_moves() {
         // A rapid written for a feed: a kind of move, and nothing else.
         let ours = group(vec![], vec![step(Kind::Feed, 90, -30, 2)]);
-        let d = compare(&ours, &group(vec![], vec![step(Kind::Rapid, 90, -30, 2)]), 0, MM, &[]);
+        let d = compare(
+            &ours,
+            &group(vec![], vec![step(Kind::Rapid, 90, -30, 2)]),
+            0,
+            MM,
+            Regions(&VecDeque::new()),
+        );
         assert_eq!(whats(&d), ["kind of move"]);
         assert!(only_kinds(&d));
         // An arc the other way round with its centre 2 off: the direction
         // and the centre (beyond a tolerance of 1, not of 2).
         let arc = |kind, cz| Step { centre: Some(Point::new(80, cz)), ..step(kind, 90, -30, 2) };
         let ours = group(vec![], vec![arc(Kind::ArcCw, -20)]);
-        let d = compare(&ours, &group(vec![], vec![arc(Kind::ArcCcw, -22)]), 1, MM, &[]);
+        let d =
+            compare(&ours, &group(vec![], vec![arc(Kind::ArcCcw, -22)]), 1, MM, Regions(&VecDeque::new()));
         assert_eq!(whats(&d), ["arc direction", "arc centre"]);
         assert!(!only_kinds(&d));
         assert_eq!(
-            whats(&compare(&ours, &group(vec![], vec![arc(Kind::ArcCcw, -22)]), 2, MM, &[])),
+            whats(&compare(
+                &ours,
+                &group(vec![], vec![arc(Kind::ArcCcw, -22)]),
+                2,
+                MM,
+                Regions(&VecDeque::new())
+            )),
             ["arc direction"]
         );
         // One move short, and one too many.
         let two = group(vec![], vec![step(Kind::Feed, 90, -30, 2), step(Kind::Feed, 100, -30, 3)]);
         let one = group(vec![], vec![step(Kind::Feed, 90, -30, 2)]);
-        assert_eq!(whats(&compare(&two, &one, 0, MM, &[])), ["missing move"]);
-        assert_eq!(whats(&compare(&one, &two, 0, MM, &[])), ["extra move"]);
+        assert_eq!(whats(&compare(&two, &one, 0, MM, Regions(&VecDeque::new()))), ["missing move"]);
+        assert_eq!(whats(&compare(&one, &two, 0, MM, Regions(&VecDeque::new()))), ["extra move"]);
     }
 }

@@ -5,13 +5,14 @@
 //! Also the regions the cycles cut, against which a split rapid is judged
 //! (reading R-CHECKSPLIT).
 
+use std::cell::OnceCell;
 use std::collections::VecDeque;
 
 use cycleref::units::MAX_LENGTH;
 use cycleref::{Motion, Move, Point, StartAngle, Units, XMode};
 use cycleref_spec::cycles::{Annotations, Region};
 use cycleref_spec::lex::{Block, Word};
-use cycleref_spec::pipeline::{Cycle, Moves, RunError};
+use cycleref_spec::pipeline::{Cycle, Engine, Moves, OwnedCycle};
 use cycleref_spec::profile::Dialect;
 use cycleref_spec::reader::{length_word, G32Call, Item, MotionMode, PlainMove};
 use cycleref_spec::Machine;
@@ -219,6 +220,56 @@ impl<'m> Follow<'m> {
     }
 }
 
+/// One of our latest cycles, and the regions it cuts (reading
+/// R-CHECKSPLIT).
+pub(super) enum RecentCycle {
+    /// A cycle of the program: its regions are found when a split rapid
+    /// first needs them, by the engine in use, and kept.
+    Lazy {
+        /// The cycle, detached from the program's text.
+        cycle: Box<OwnedCycle>,
+        /// The engine that expands it.
+        engine: Engine,
+        /// Its regions once found; `None` inside when they cannot be.
+        regions: OnceCell<Option<Vec<Region>>>,
+    },
+    /// Regions given as they are.
+    #[cfg(test)]
+    Known(Vec<Region>),
+}
+
+impl RecentCycle {
+    /// The regions the cycle cuts; `None` when they cannot be found (the
+    /// cycle's alarm, which its expansion, made first, would have raised:
+    /// not expected). A split rapid is then judged to go through the work:
+    /// an unknown region never turns a difference into agreement.
+    fn regions(&self) -> Option<&[Region]> {
+        match self {
+            RecentCycle::Lazy { cycle, engine, regions } => regions
+                .get_or_init(|| {
+                    let mut out = Vec::new();
+                    cycle.cycle().regions(*engine, &mut out).ok().map(|()| out)
+                })
+                .as_deref(),
+            #[cfg(test)]
+            RecentCycle::Known(r) => Some(r),
+        }
+    }
+}
+
+/// The regions of our latest cycles, which a split rapid must stay out of
+/// (reading R-CHECKSPLIT).
+#[derive(Clone, Copy)]
+pub(super) struct Regions<'r>(pub(super) &'r VecDeque<RecentCycle>);
+
+impl Regions<'_> {
+    /// True when `hit` holds for a region, or when a cycle's regions could
+    /// not be found.
+    pub(super) fn any(&self, hit: impl Fn(&Region) -> bool) -> bool {
+        self.0.iter().any(|c| c.regions().is_none_or(|rs| rs.iter().any(&hit)))
+    }
+}
+
 /// How many cycles' regions are kept for judging split rapids: the cycle
 /// being compared and its neighbours.
 const REGION_CYCLES: usize = 3;
@@ -244,8 +295,8 @@ pub(super) struct OurSteps<'j> {
     follow: Follow<'j>,
     current: Option<Running>,
     segment: u32,
-    /// The regions of the latest cycles.
-    pub(super) regions: VecDeque<Vec<Region>>,
+    /// The latest cycles, whose regions split rapids are judged against.
+    pub(super) recent: VecDeque<RecentCycle>,
     /// Only the cycles' moves are steps (reading R-CHECKCYCLES); the
     /// program's own blocks only move the tool.
     cycles_only: bool,
@@ -259,7 +310,7 @@ impl<'j> OurSteps<'j> {
             follow: Follow::new(&job.machine, units),
             current: None,
             segment: 0,
-            regions: VecDeque::new(),
+            recent: VecDeque::new(),
             cycles_only,
         })
     }
@@ -289,7 +340,7 @@ impl<'j> OurSteps<'j> {
             }
             let (job, follow, segment, cycles_only) =
                 (self.job, &mut self.follow, self.segment, self.cycles_only);
-            let (regions, current) = (&mut self.regions, &mut self.current);
+            let (recent, current) = (&mut self.recent, &mut self.current);
             let next = self.items.next_with(|item| -> Result<Option<(Step, u32)>, Failure> {
                 let Some(cycle) = Cycle::of(item) else {
                     let Item::Move(m) = item else { return Ok(None) };
@@ -298,16 +349,18 @@ impl<'j> OurSteps<'j> {
                         Err(e) => Err(Failure::new(Cause::Check, format!("{}: {e}", job.name))),
                     };
                 };
-                let mut started = Vec::new();
-                cycle.regions(job.engine, &mut started).map_err(|e| {
-                    job.fail(&RunError::Cycle { line: cycle.line_of(&e), code: cycle.code(), error: e })
-                })?;
                 let moves = job.expand(cycle)?;
                 follow.start_cycle(cycle.from(), cycle.x_mode());
-                if regions.len() == REGION_CYCLES {
-                    regions.pop_front();
+                if recent.len() == REGION_CYCLES {
+                    recent.pop_front();
                 }
-                regions.push_back(started);
+                // Its regions are found only if a split rapid needs them:
+                // most comparisons never do, and the cycle is expanded once.
+                recent.push_back(RecentCycle::Lazy {
+                    cycle: Box::new(cycle.detached()),
+                    engine: job.engine,
+                    regions: OnceCell::new(),
+                });
                 *current = Some(Running {
                     moves,
                     code: cycle.code(),
