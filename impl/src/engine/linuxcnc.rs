@@ -401,7 +401,7 @@ fn taper_pitch_valid(c: &LinuxCncG76) -> Option<Lead> {
 }
 
 /// The full product `x·y` of two `u128` as (high, low) halves.
-const fn mul_wide(x: u128, y: u128) -> (u128, u128) {
+pub(crate) const fn mul_wide(x: u128, y: u128) -> (u128, u128) {
     const M: u128 = u64::MAX as u128;
     let (x1, x0) = (x >> 64, x & M);
     let (y1, y0) = (y >> 64, y & M);
