@@ -63,7 +63,7 @@
 use core::cmp::Ordering;
 
 use crate::engine::linuxcnc::mul_wide;
-use crate::engine::real::{Interval, FAST};
+use crate::engine::real::Interval;
 
 /// `⌊ln 2 · 2^64⌋`: `ln 2 = 0.B17217F7D1CF79AB C9E3…` (hexadecimal); the
 /// truncation is below `ln 2` by less than one ulp (the test
@@ -83,24 +83,25 @@ const ATANH_TERMS: usize = 14;
 /// Terms of the exponential's series: `i = 0 … EXP_TERMS − 1`.
 const EXP_TERMS: usize = 20;
 
-/// `⌊2^64 / (2j + 1)⌋` for `j ≥ 1` (index 0 unused): below `1/(2j+1)` by
-/// less than one ulp.
-const INV_ODD: [u128; ATANH_TERMS] = {
-    let mut t = [0_u128; ATANH_TERMS];
+/// `⌊(2^64 − 1) / (2j + 1)⌋ = ⌊2^64 / (2j + 1)⌋` for `j ≥ 1` (index 0
+/// unused): below `1/(2j+1)` by less than one ulp.
+const INV_ODD: [u64; ATANH_TERMS] = {
+    let mut t = [0_u64; ATANH_TERMS];
     let mut j = 1;
     while j < ATANH_TERMS {
-        t[j] = (1_u128 << 64) / (2 * j as u128 + 1);
+        t[j] = u64::MAX / (2 * j as u64 + 1);
         j += 1;
     }
     t
 };
 
-/// `⌊2^64 / i⌋` for `i ≥ 2` (index 0 and 1 unused).
-const INV: [u128; EXP_TERMS] = {
-    let mut t = [0_u128; EXP_TERMS];
+/// `⌊(2^64 − 1) / i⌋` for `i ≥ 2` (index 0 and 1 unused): below `1/i` by
+/// at most one ulp.
+const INV: [u64; EXP_TERMS] = {
+    let mut t = [0_u64; EXP_TERMS];
     let mut i = 2;
     while i < EXP_TERMS {
-        t[i] = (1_u128 << 64) / i as u128;
+        t[i] = u64::MAX / i as u64;
         i += 1;
     }
     t
@@ -117,9 +118,11 @@ pub struct Approx {
     e: u128,
 }
 
-/// `⌊a·b / 2^64⌋` for `a, b` whose product fits `u128`, else `None`.
-fn mul_hi(a: u128, b: u128) -> Option<u128> {
-    a.checked_mul(b).map(|p| p >> 64)
+/// `⌊a·b / 2^64⌋`, exact in one product of 64-bit words.
+const fn mul_hi(a: u64, b: u64) -> u64 {
+    // a·b < 2^128: the high word.
+    let p = (a as u128) * (b as u128);
+    (p >> 64) as u64
 }
 
 /// `⌈a·b / 2^64⌉`, saturating.
@@ -263,25 +266,28 @@ impl Approx {
         }
     }
 
-    /// An enclosure at 128 fraction bits as an [`Approx`]: the value is the
-    /// lower end truncated to 64 fraction bits (a floor), the bound the
-    /// distance to the upper end rounded up.
+    /// An enclosure (of 64 fraction bits or more) as an [`Approx`]: the
+    /// value is the lower end truncated to 64 fraction bits (a floor), the
+    /// bound the distance to the upper end rounded up.
     #[must_use]
-    pub fn enclosing(iv: &Interval<FAST>) -> Approx {
+    pub fn enclosing<const N: usize>(iv: &Interval<N>) -> Approx {
         if !iv.is_valid() {
             return Approx::UNKNOWN;
         }
-        // Limbs l0 … l3 (two's complement, little-endian): the value at
-        // 64 fraction bits is l3:l2:l1 ⌊·⌋, which fits an i128 when l3 is
-        // the sign extension of l2.
-        let at64 = |l: &[u64; FAST]| -> Option<(i128, bool)> {
-            let [l0, l1, l2, l3] = *l;
-            let top_ok = (l3 == 0 && l2 >> 63 == 0) || (l3 == u64::MAX && l2 >> 63 == 1);
+        // Limbs (two's complement, little-endian), the top two the integer
+        // part: the value at 64 fraction bits is the top three, ⌊·⌋ (the
+        // limbs below dropped), which fits an i128 when the top limb is
+        // the sign extension of the next.
+        let at64 = |l: &[u64; N]| -> Option<(i128, bool)> {
+            let top = N.checked_sub(3)?;
+            let (f, lo, hi) = (*l.get(top)?, *l.get(top + 1)?, *l.get(top + 2)?);
+            let top_ok = (hi == 0 && lo >> 63 == 0) || (hi == u64::MAX && lo >> 63 == 1);
             if !top_ok {
                 return None;
             }
-            let bits = (u128::from(l2) << 64) | u128::from(l1);
-            Some((i128::from_le_bytes(bits.to_le_bytes()), l0 != 0))
+            let bits = (u128::from(lo) << 64) | u128::from(f);
+            let cut = l.get(..top).is_some_and(|below| below.iter().any(|&x| x != 0));
+            Some((i128::from_le_bytes(bits.to_le_bytes()), cut))
         };
         let (Some((lo, _)), Some((hi, hi_cut))) = (at64(iv.lower().limbs()), at64(iv.upper().limbs())) else {
             return Approx::UNKNOWN;
@@ -311,15 +317,15 @@ pub fn ln(n: u64) -> Option<i128> {
     let f = if u128::from(n) >= 3_u128 << (e - 1) { e + 1 } else { e };
     let (n, base) = (u128::from(n), 1_u128 << f);
     let (num, negative) = if n >= base { (n - base, false) } else { (base - n, true) };
-    // num ≤ 2^(f−1) ≤ 2^62: num·2^64 < 2^127; den < 2^65.
-    let s = (num << 64) / (n + base);
-    let q = mul_hi(s, s)?;
-    let (mut power, mut sum) = (s, s);
+    // num ≤ 2^(f−1) ≤ 2^62: num·2^64 < 2^127; den < 2^65; s < 2^64/5.
+    let s = u64::try_from((num << 64) / (n + base)).ok()?;
+    let q = mul_hi(s, s);
+    let (mut power, mut sum) = (s, u128::from(s));
     let mut loops = crate::loop_counters::count!(REAL_LN);
     for inv in INV_ODD.iter().skip(1) {
         loops.tick();
-        power = mul_hi(power, q)?;
-        sum += mul_hi(power, *inv)?;
+        power = mul_hi(power, q);
+        sum += u128::from(mul_hi(power, *inv));
     }
     let atanh2 = i128::try_from(sum.checked_mul(2)?).ok()?;
     let base_ln = i128::try_from(LN2.checked_mul(u128::from(f))?).ok()?;
@@ -334,21 +340,14 @@ pub fn ln(n: u64) -> Option<i128> {
 /// r^i/i!` to `i = 19`, every step truncated): below the exact value by
 /// less than 71 ulps (R-FASTPATH).
 fn exp_unit(r: u128) -> Option<u128> {
-    let one = 1_u128 << 64;
-    if r >= one {
-        return None;
-    }
-    let (mut term, mut sum) = (one, one);
+    let r = u64::try_from(r).ok()?;
+    // Terms 0 and 1 exactly (1 and r), then ⌊⌊term·r⌋ · ⌊(2^64 − 1)/i⌋⌋.
+    let (mut term, mut sum) = (r, (1_u128 << 64) + u128::from(r));
     let mut loops = crate::loop_counters::count!(REAL_EXP);
-    for inv in INV.iter().skip(1) {
+    for inv in INV.iter().skip(2) {
         loops.tick();
-        // Index 1: the term r itself (the reciprocal of 1 is not a
-        // truncation); then ⌊⌊term·r⌋ · ⌊2^64/i⌋⌋.
-        term = mul_hi(term, r)?;
-        if *inv != 0 {
-            term = mul_hi(term, *inv)?;
-        }
-        sum += term;
+        term = mul_hi(mul_hi(term, r), *inv);
+        sum += u128::from(term);
     }
     Some(sum)
 }
@@ -401,7 +400,7 @@ mod tests {
     extern crate std;
 
     use super::*;
-    use crate::engine::real::{self, Fixed, SLOW};
+    use crate::engine::real::{self, Fixed, FAST, SLOW};
 
     /// The exact `x` (a narrow enclosure at 512 bits) against an
     /// [`Approx`]: the distance from `v·2^-64` to every end of the
@@ -559,7 +558,14 @@ mod tests {
         assert!(a.bound() <= 2);
         let n = Approx::enclosing(&t.neg());
         assert!(error_ulps(&n, &exact.neg()) <= n.bound());
-        assert_eq!(Approx::enclosing(&Interval::int(0)), Approx::int(0));
-        assert_eq!(Approx::enclosing(&Interval::poison()), Approx::UNKNOWN);
+        // At 64 fraction bits: the ends exactly.
+        let t3 = real::tan::<3>(590_000);
+        let a3 = Approx::enclosing(&t3);
+        assert!(error_ulps(&a3, &exact) <= a3.bound());
+        assert!(a3.bound() < 1 << 12, "{a3:?}");
+        std::println!("tan 29.5° at 64 bits: bound {} ulps", a3.bound());
+        assert_eq!(Approx::enclosing(&Interval::<FAST>::int(0)), Approx::int(0));
+        assert_eq!(Approx::enclosing(&Interval::<3>::int(-7)), Approx::int(-7));
+        assert_eq!(Approx::enclosing(&Interval::<FAST>::poison()), Approx::UNKNOWN);
     }
 }

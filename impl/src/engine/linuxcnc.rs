@@ -63,11 +63,13 @@
 //!
 //! Up front: one power per rough pass and one for the limit check, on the
 //! fast path (about 70 products of 64-bit words each), rarely at 192 bits
-//! and more rarely at 576; `tan Q` once at 128 bits. Per move: O(1); a
-//! rough pass's start computes one power again. A [`LinuxCncMoves`] is a
-//! fixed-size value (the words, the 128-bit enclosure of `tan Q`, the
-//! leads, the current pass's points and the fast path's counts; the test
-//! `size_of_the_iterator` bounds it by 512 bytes).
+//! and more rarely at 576; `tan Q` once at 64 fraction bits for the fast
+//! path, and at 128 only once a value falls back. Per move: O(1); a rough
+//! pass's start computes one power again. A [`LinuxCncMoves`] is a
+//! fixed-size value (the words with the fast path's `tan Q`, its 128-bit
+//! enclosure once computed, the leads, the current pass's points and the
+//! fast path's counts; the test `size_of_the_iterator` bounds it by 512
+//! bytes).
 
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
@@ -86,6 +88,11 @@ const FAST_POWER: usize = FAST + 1;
 
 /// Limbs at which the slow path computes a power (one more than [`SLOW`]).
 const SLOW_POWER: usize = SLOW + 1;
+
+/// Limbs of the enclosure of `tan Q` that the fast path starts from (64
+/// fraction bits: its width, 19 units of `2^-64` at 29.5°, is part of
+/// the bound, R-FASTPATH).
+const TAN_QUICK: usize = 3;
 
 /// The depth of a pass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,6 +130,9 @@ struct Words {
     tan_negative: bool,
     /// The fast path (R-FASTPATH) is tried before the intervals.
     fast_path: bool,
+    /// `t` on the fast path (from its enclosure at [`TAN_QUICK`] limbs;
+    /// unknown when the fast path is off).
+    tan_quick: Approx,
 }
 
 /// Indices of the values of a pass.
@@ -234,8 +244,8 @@ impl FastPathStats {
 /// once a decision needs them, and at 512 once the 128 bits do not decide.
 struct Values<'t> {
     depth: Depth,
-    /// `t` at 128 bits.
-    tan: &'t Interval<FAST>,
+    /// `t` at 128 bits, once computed (kept for the cycle's other passes).
+    tan: &'t mut Option<Interval<FAST>>,
     /// The values with their bounds (unknown when the fast path is off).
     quick: [Approx; 6],
     fast: Option<[Interval<FAST>; 6]>,
@@ -244,9 +254,9 @@ struct Values<'t> {
 }
 
 impl<'t> Values<'t> {
-    fn new(w: &Words, t: &'t Interval<FAST>, depth: Depth) -> Values<'t> {
+    fn new(w: &Words, t: &'t mut Option<Interval<FAST>>, depth: Depth) -> Values<'t> {
         let quick = if w.fast_path {
-            w.quick_values(&w.depth_quick(depth), &Approx::enclosing(t))
+            w.quick_values(&w.depth_quick(depth), &w.tan_quick)
         } else {
             [Approx::UNKNOWN; 6]
         };
@@ -262,8 +272,12 @@ impl<'t> Values<'t> {
 
     /// Value `i` at 128 bits (the whole pass's values computed once).
     fn fast(&mut self, w: &Words, i: usize) -> Interval<FAST> {
-        let (depth, t) = (self.depth, self.tan);
-        let fast = self.fast.get_or_insert_with(|| w.values(&w.depth_fast(depth), t));
+        let depth = self.depth;
+        let tan = &mut *self.tan;
+        let fast = self.fast.get_or_insert_with(|| {
+            let t = *tan.get_or_insert_with(|| w.tan::<FAST>());
+            w.values(&w.depth_fast(depth), &t)
+        });
         fast.get(i).copied().unwrap_or_else(Interval::poison)
     }
 
@@ -396,8 +410,8 @@ impl Points {
 #[derive(Clone, Debug)]
 pub struct LinuxCncMoves {
     words: Words,
-    /// `t` at 128 bits.
-    tan: Interval<FAST>,
+    /// `t` at 128 bits, once a value needed it.
+    tan: Option<Interval<FAST>>,
     /// The pitch P.
     pitch: Lead,
     /// The pitch of the taper moves (P without a taper).
@@ -619,13 +633,18 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         tan_angle: q.unsigned_abs() * 2,
         tan_negative: q < 0,
         fast_path,
+        tan_quick: Approx::UNKNOWN,
     };
-    let t = words.tan::<FAST>();
+    let mut words = words;
+    if fast_path {
+        words.tan_quick = Approx::enclosing(&words.tan::<TAN_QUICK>());
+    }
+    let mut t = None;
     // Reading R-LIMIT for LinuxCNC: refuse before a move when pass limit + 1
     // would still be shallower than K.
     let limit = u64::from(c.pass_limit);
     let mut stats = FastPathStats::default();
-    let mut v = Values::new(&words, &t, Depth::Rough(limit + 1));
+    let mut v = Values::new(&words, &mut t, Depth::Rough(limit + 1));
     let beyond = v.sign(&words, DEEPER)?;
     stats.add(v.stats);
     if beyond == Ordering::Less {
@@ -639,7 +658,7 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         // the loop ends by n = limit + 1; the bound is a safeguard.
         while n <= limit + 1 {
             loops.tick();
-            let mut v = Values::new(&words, &t, Depth::Rough(n));
+            let mut v = Values::new(&words, &mut t, Depth::Rough(n));
             let shallower = v.sign(&words, DEEPER)? == Ordering::Less;
             if shallower {
                 Points::of(&mut v, &words)?;
@@ -659,7 +678,7 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
     }
     let full_points = if full > 0 {
-        let mut v = Values::new(&words, &t, Depth::Full);
+        let mut v = Values::new(&words, &mut t, Depth::Full);
         let p = Points::of(&mut v, &words)?;
         stats.add(v.stats);
         p
@@ -741,7 +760,7 @@ impl LinuxCncMoves {
     /// last pass.
     fn start_pass(&mut self, number: u64) -> Option<(Points, Pass)> {
         let (points, kind, count) = if number <= self.rough {
-            let mut v = Values::new(&self.words, &self.tan, Depth::Rough(number));
+            let mut v = Values::new(&self.words, &mut self.tan, Depth::Rough(number));
             // Computed without error in expand_linuxcnc (the same
             // computation): the `?` is unreachable.
             let points = Points::of(&mut v, &self.words).ok()?;
@@ -873,11 +892,11 @@ mod tests {
             c.peak_offset = if variant % 2 == 0 { -10_000 } else { 10_000 };
             c.x_mode = if variant < 2 { XMode::Radius } else { XMode::Diameter };
             c.end.z = if variant == 3 { 300_000 } else { -200_000 };
-            let m = expand_linuxcnc_exact(&c).unwrap();
+            let mut m = expand_linuxcnc_exact(&c).unwrap();
             let w = m.words;
             for depth in [Depth::Rough(1), Depth::Rough(2), Depth::Rough(7), Depth::Full] {
-                let normal = Points::of(&mut Values::new(&w, &m.tan, depth), &w).unwrap();
-                let mut v = Values::new(&w, &m.tan, depth);
+                let normal = Points::of(&mut Values::new(&w, &mut m.tan, depth), &w).unwrap();
+                let mut v = Values::new(&w, &mut m.tan, depth);
                 v.fast(&w, 0);
                 for f in v.fast.iter_mut().flatten() {
                     *f = widen(f);
@@ -892,16 +911,16 @@ mod tests {
         // bits is 0 whether the power is held exact or not.
         c.initial_depth = 1_000;
         c.full_depth = 4_000;
-        let m = expand_linuxcnc_exact(&c).unwrap();
-        let mut v = Values::new(&m.words, &m.tan, Depth::Rough(8));
+        let mut m = expand_linuxcnc_exact(&c).unwrap();
+        let mut v = Values::new(&m.words, &mut m.tan, Depth::Rough(8));
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
         let fast = v.fast.as_mut().unwrap();
         fast[DEEPER] = widen(&fast[DEEPER]);
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
         // On the fast path, J·8^(2/3) − 4J is enclosed, not exact: left to
         // the intervals (a tie of R-LCNC-TIE).
-        let m = expand_linuxcnc(&c).unwrap();
-        let mut v = Values::new(&m.words, &m.tan, Depth::Rough(8));
+        let mut m = expand_linuxcnc(&c).unwrap();
+        let mut v = Values::new(&m.words, &mut m.tan, Depth::Rough(8));
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
         assert_eq!(v.stats, FastPathStats { values: 1, fallbacks: 1 });
     }
