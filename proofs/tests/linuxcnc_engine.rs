@@ -6,12 +6,14 @@
 //!
 //! For every generated cycle, valid or not, both must give the same error
 //! or the same moves, move by move (motion and lead, end point, role, pass
-//! information). The cycles span G7/G8, mm and inch, both directions,
-//! internal and external threads, R in 1..3 with four decimals (and the R
-//! of exact roots, where a depth equals K exactly, R-LCNC-TIE), Q in
-//! −45..45° with four decimals, H −1..3, E and L, pass limits that refuse,
-//! coordinates beyond the range table and words at its ends; K is chosen
-//! so that a cycle has at most about 30 rough passes. The default run tries
+//! information); and the engine must equal itself with its fast path off
+//! (`expand_linuxcnc_exact`, reading R-FASTPATH). The cycles span G7/G8,
+//! mm and inch, both directions, internal and external threads, R in 1..3
+//! with four decimals (and the R of exact roots, where a depth equals K
+//! exactly, R-LCNC-TIE), Q in −45..45° with four decimals, H −1..3, E and
+//! L, pass limits that refuse, coordinates beyond the range table and
+//! words at its ends; K is chosen so that a cycle has at most about 30
+//! rough passes. The default run tries
 //! 400 cycles; `engine_equals_reference_long` (ignored) 20 000.
 
 use cycleref::engine::real::{power, Interval, Rounding, FAST, SLOW};
@@ -32,10 +34,19 @@ fn engine(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
     expand_linuxcnc(c).map(Iterator::collect)
 }
 
-/// Both agree on `c`; returns the common result.
+/// The engine with its fast path off (R-FASTPATH): the interval
+/// arithmetic alone.
+fn engine_exact(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
+    cycleref::engine::linuxcnc::expand_linuxcnc_exact(c).map(Iterator::collect)
+}
+
+/// All three agree on `c` (the engine, the engine without its fast path
+/// and the reference); returns the common result.
 fn same(c: &LinuxCncG76) -> Result<Vec<Move>, CycleError> {
     let s = spec(c);
-    assert_same_moves(&engine(c), &s, format_args!("{c:?}"));
+    let e = engine(c);
+    assert_same_moves(&e, &s, format_args!("{c:?}"));
+    assert_eq!(e, engine_exact(c), "fast path against the intervals: {c:?}");
     s
 }
 

@@ -26,6 +26,14 @@
 //! one limb wider (192 and 576 bits) and narrowed, so that the enclosures
 //! are about as narrow as the reference's.
 //!
+//! Before either, the fast path of [`crate::engine::approx`] (reading
+//! R-FASTPATH, issue 33): each value in 64-bit fixed point with a rigorous
+//! error bound, rounded from there when no boundary lies within the bound
+//! (nearly always: the 128- and 512-bit enclosures are computed only for a
+//! pass with a value near a boundary, and then once for the whole pass).
+//! [`expand_linuxcnc_exact`] is the same expansion without it, and
+//! [`LinuxCncMoves::fast_path_stats`] counts its fallbacks.
+//!
 //! # Alarms before the first move
 //!
 //! [`expand_linuxcnc`] makes every check before the first move, in the
@@ -53,17 +61,21 @@
 //!
 //! # Work and memory
 //!
-//! Up front: two interval powers per rough pass at 192 bits (the limit
-//! check, then each pass once), rarely one at 576. Per move: O(1); a rough
+//! Up front: one power per rough pass and one for the limit check, on the
+//! fast path (about 70 products of 64-bit words each), rarely at 192 bits
+//! and more rarely at 576; `tan Q` once at 64 fraction bits for the fast
+//! path, and at 128 only once a value falls back. Per move: O(1); a rough
 //! pass's start computes one power again. A [`LinuxCncMoves`] is a
-//! fixed-size value (368 bytes on 64-bit targets: the words, the 128-bit
-//! enclosure of `tan Q`, the leads and the current pass's points; the test
-//! `size_of_the_iterator` bounds it by 512).
+//! fixed-size value (the words with the fast path's `tan Q`, its 128-bit
+//! enclosure once computed, the leads, the current pass's points and the
+//! fast path's counts; the test `size_of_the_iterator` bounds it by 512
+//! bytes).
 
 use core::cmp::Ordering;
 use core::iter::FusedIterator;
 
 use crate::angle::StartAngle;
+use crate::engine::approx::{self, Approx};
 use crate::engine::real::{power, tan, Interval, Rounding, FAST, SLOW};
 use crate::error::{CycleError, Field};
 use crate::lead::{Lead, MAX_LEAD_SCALE};
@@ -76,6 +88,11 @@ const FAST_POWER: usize = FAST + 1;
 
 /// Limbs at which the slow path computes a power (one more than [`SLOW`]).
 const SLOW_POWER: usize = SLOW + 1;
+
+/// Limbs of the enclosure of `tan Q` that the fast path starts from (64
+/// fraction bits: its width, 19 units of `2^-64` at 29.5°, is part of
+/// the bound, R-FASTPATH).
+const TAN_QUICK: usize = 3;
 
 /// The depth of a pass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -111,6 +128,11 @@ struct Words {
     tan_angle: u32,
     /// True when `t = −tan |Q|`.
     tan_negative: bool,
+    /// The fast path (R-FASTPATH) is tried before the intervals.
+    fast_path: bool,
+    /// `t` on the fast path (from its enclosure at [`TAN_QUICK`] limbs;
+    /// unknown when the fast path is off).
+    tan_quick: Approx,
 }
 
 /// Indices of the values of a pass.
@@ -152,6 +174,31 @@ impl Words {
         ]
     }
 
+    /// The values of a pass at depth `d` on the fast path (R-FASTPATH):
+    /// the formulas of [`Words::values`], each with its error bound.
+    fn quick_values(&self, d: &Approx, t: &Approx) -> [Approx; 6] {
+        let k = Approx::int(self.k);
+        let s = self.sigma;
+        let radius = d.div_int(self.xf);
+        let zeta = radius.mul(t);
+        [
+            d.sub(&k),
+            Approx::int(self.x0).add(&k.sub(d).mul_int(s)),
+            Approx::int(self.x0 - s * self.i_abs).sub(&d.mul_int(s)),
+            Approx::int(self.z0).sub(&zeta),
+            Approx::int(self.z).add(&k.div_int(self.xf).mul(t)).sub(&zeta),
+            radius,
+        ]
+    }
+
+    /// The depth on the fast path: `J·n^(1/R)` with its bound.
+    fn depth_quick(&self, depth: Depth) -> Approx {
+        match depth {
+            Depth::Full => Approx::int(self.k),
+            Depth::Rough(n) => approx::power(n, DEGRESSION_ONE, self.degression).mul_int(self.j),
+        }
+    }
+
     /// The depth at 128 fraction bits.
     fn depth_fast(&self, depth: Depth) -> Interval<FAST> {
         match depth {
@@ -175,17 +222,45 @@ impl Words {
     }
 }
 
-/// The values of one pass: at 128 bits, and at 512 once a decision needs
-/// them.
-struct Values {
-    depth: Depth,
-    fast: [Interval<FAST>; 6],
-    slow: Option<[Interval<SLOW>; 6]>,
+/// How often the fast path (R-FASTPATH) decided a value, and how often it
+/// fell back to the interval arithmetic: for the tests and benchmarks that
+/// measure the fallback rate ([`LinuxCncMoves::fast_path_stats`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FastPathStats {
+    /// Values decided (each sign of `δ − K` and each rounded coordinate).
+    pub values: u64,
+    /// Of those, the values the fast path left to the intervals.
+    pub fallbacks: u64,
 }
 
-impl Values {
-    fn new(w: &Words, t: &Interval<FAST>, depth: Depth) -> Values {
-        Values { depth, fast: w.values(&w.depth_fast(depth), t), slow: None }
+impl FastPathStats {
+    fn add(&mut self, o: FastPathStats) {
+        self.values = self.values.saturating_add(o.values);
+        self.fallbacks = self.fallbacks.saturating_add(o.fallbacks);
+    }
+}
+
+/// The values of one pass: on the fast path (R-FASTPATH), at 128 bits
+/// once a decision needs them, and at 512 once the 128 bits do not decide.
+struct Values<'t> {
+    depth: Depth,
+    /// `t` at 128 bits, once computed (kept for the cycle's other passes).
+    tan: &'t mut Option<Interval<FAST>>,
+    /// The values with their bounds (unknown when the fast path is off).
+    quick: [Approx; 6],
+    fast: Option<[Interval<FAST>; 6]>,
+    slow: Option<[Interval<SLOW>; 6]>,
+    stats: FastPathStats,
+}
+
+impl<'t> Values<'t> {
+    fn new(w: &Words, t: &'t mut Option<Interval<FAST>>, depth: Depth) -> Values<'t> {
+        let quick = if w.fast_path {
+            w.quick_values(&w.depth_quick(depth), &w.tan_quick)
+        } else {
+            [Approx::UNKNOWN; 6]
+        };
+        Values { depth, tan: t, quick, fast: None, slow: None, stats: FastPathStats::default() }
     }
 
     /// Value `i` at 512 bits (the whole pass's values computed once).
@@ -195,13 +270,42 @@ impl Values {
         slow.get(i).copied().unwrap_or_else(Interval::poison)
     }
 
-    fn fast(&self, i: usize) -> Interval<FAST> {
-        self.fast.get(i).copied().unwrap_or_else(Interval::poison)
+    /// Value `i` at 128 bits (the whole pass's values computed once).
+    fn fast(&mut self, w: &Words, i: usize) -> Interval<FAST> {
+        let depth = self.depth;
+        let tan = &mut *self.tan;
+        let fast = self.fast.get_or_insert_with(|| {
+            let t = *tan.get_or_insert_with(|| w.tan::<FAST>());
+            w.values(&w.depth_fast(depth), &t)
+        });
+        fast.get(i).copied().unwrap_or_else(Interval::poison)
     }
 
-    /// The sign of value `i`: at 128 bits, else at 512 with R-G75TIE.
+    fn quick(&self, i: usize) -> Approx {
+        self.quick.get(i).copied().unwrap_or(Approx::UNKNOWN)
+    }
+
+    /// Counts one value, decided on the fast path or not.
+    fn count(&mut self, decided: bool) {
+        self.stats.values = self.stats.values.saturating_add(1);
+        self.stats.fallbacks = self.stats.fallbacks.saturating_add(u64::from(!decided));
+    }
+
+    /// The sign of value `i`: on the fast path, else at 128 bits, else at
+    /// 512 with R-G75TIE.
     fn sign(&mut self, w: &Words, i: usize) -> Result<Ordering, CycleError> {
-        if let Some(o) = self.fast(i).sign() {
+        let quick = self.quick(i).sign();
+        self.count(quick.is_some());
+        match quick {
+            Some(o) => Ok(o),
+            None => self.exact_sign(w, i),
+        }
+    }
+
+    /// The sign of value `i` by the intervals alone (at 128 bits, else at
+    /// 512 with R-G75TIE).
+    fn exact_sign(&mut self, w: &Words, i: usize) -> Result<Ordering, CycleError> {
+        if let Some(o) = self.fast(w, i).sign() {
             return Ok(o);
         }
         self.slow(w, i).sign_tie().ok_or(CycleError::UndecidedRounding)
@@ -210,7 +314,7 @@ impl Values {
     /// `floor(±v + 1/2)` of value `i` (negated when `negate`): at 128 bits,
     /// else at 512 with R-G75TIE.
     fn nearest(&mut self, w: &Words, i: usize, negate: bool) -> Result<i128, CycleError> {
-        let f = self.fast(i);
+        let f = self.fast(w, i);
         let f = if negate { f.neg() } else { f };
         if let Some(v) = f.round(Rounding::Nearest) {
             return Ok(v);
@@ -226,7 +330,11 @@ impl Values {
     ///
     /// Twin: `spec/src/linuxcnc.rs`, `round_away`.
     fn round_away(&mut self, w: &Words, i: usize) -> Result<i64, CycleError> {
-        let r = if self.sign(w, i)? == Ordering::Less {
+        let quick = self.quick(i).round_half_away();
+        self.count(quick.is_some());
+        let r = if let Some(v) = quick {
+            Some(v)
+        } else if self.exact_sign(w, i)? == Ordering::Less {
             self.nearest(w, i, true)?.checked_neg()
         } else {
             Some(self.nearest(w, i, false)?)
@@ -302,8 +410,8 @@ impl Points {
 #[derive(Clone, Debug)]
 pub struct LinuxCncMoves {
     words: Words,
-    /// `t` at 128 bits.
-    tan: Interval<FAST>,
+    /// `t` at 128 bits, once a value needed it.
+    tan: Option<Interval<FAST>>,
     /// The pitch P.
     pitch: Lead,
     /// The pitch of the taper moves (P without a taper).
@@ -333,6 +441,9 @@ pub struct LinuxCncMoves {
     last_depth: i64,
     /// The final rapid is made.
     done: bool,
+    /// The fast path's counts so far (the checks before the first move
+    /// included).
+    stats: FastPathStats,
 }
 
 /// The pitch of LinuxCNC's taper moves, `P · √(ξ²E² + K²) / (ξE)` with K as
@@ -401,7 +512,7 @@ fn taper_pitch_valid(c: &LinuxCncG76) -> Option<Lead> {
 }
 
 /// The full product `x·y` of two `u128` as (high, low) halves.
-const fn mul_wide(x: u128, y: u128) -> (u128, u128) {
+pub(crate) const fn mul_wide(x: u128, y: u128) -> (u128, u128) {
     const M: u128 = u64::MAX as u128;
     let (x1, x0) = (x >> 64, x & M);
     let (y1, y0) = (y >> 64, y & M);
@@ -487,6 +598,23 @@ fn isqrt_wide(hi: u128, lo: u128) -> Option<u128> {
 ///
 /// Twin: `spec/src/linuxcnc.rs`, `expand`.
 pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
+    expand(c, true)
+}
+
+/// [`expand_linuxcnc`] with the fast path off: every value decided by the
+/// interval arithmetic alone, as before issue 33. The same result by
+/// construction (reading R-FASTPATH); kept for the tests and benchmarks
+/// that compare the two paths.
+///
+/// # Errors
+///
+/// Those of [`expand_linuxcnc`].
+pub fn expand_linuxcnc_exact(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
+    expand(c, false)
+}
+
+/// [`expand_linuxcnc`], the fast path on or off.
+fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError> {
     c.validate()?;
     let towards_plus = c.end.z > c.start.z;
     // l.5740-5742: Q negated for a thread towards +Z.
@@ -504,12 +632,22 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         // |Q| < 90° (validate): below 1 800 000 units of 0.00005°.
         tan_angle: q.unsigned_abs() * 2,
         tan_negative: q < 0,
+        fast_path,
+        tan_quick: Approx::UNKNOWN,
     };
-    let t = words.tan::<FAST>();
+    let mut words = words;
+    if fast_path {
+        words.tan_quick = Approx::enclosing(&words.tan::<TAN_QUICK>());
+    }
+    let mut t = None;
     // Reading R-LIMIT for LinuxCNC: refuse before a move when pass limit + 1
     // would still be shallower than K.
     let limit = u64::from(c.pass_limit);
-    if Values::new(&words, &t, Depth::Rough(limit + 1)).sign(&words, DEEPER)? == Ordering::Less {
+    let mut stats = FastPathStats::default();
+    let mut v = Values::new(&words, &mut t, Depth::Rough(limit + 1));
+    let beyond = v.sign(&words, DEEPER)?;
+    stats.add(v.stats);
+    if beyond == Ordering::Less {
         return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
     }
     // Every pass once, as the reference computes them (l.5775-5790).
@@ -520,11 +658,15 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         // the loop ends by n = limit + 1; the bound is a safeguard.
         while n <= limit + 1 {
             loops.tick();
-            let mut v = Values::new(&words, &t, Depth::Rough(n));
-            if v.sign(&words, DEEPER)? != Ordering::Less {
+            let mut v = Values::new(&words, &mut t, Depth::Rough(n));
+            let shallower = v.sign(&words, DEEPER)? == Ordering::Less;
+            if shallower {
+                Points::of(&mut v, &words)?;
+            }
+            stats.add(v.stats);
+            if !shallower {
                 break;
             }
-            Points::of(&mut v, &words)?;
             n += 1;
         }
     }
@@ -536,7 +678,10 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
     }
     let full_points = if full > 0 {
-        Points::of(&mut Values::new(&words, &t, Depth::Full), &words)?
+        let mut v = Values::new(&words, &mut t, Depth::Full);
+        let p = Points::of(&mut v, &words)?;
+        stats.add(v.stats);
+        p
     } else {
         Points { x_back: 0, x_cut: 0, x_rise: 0, z_start: 0, z_end: 0, radius: 0 }
     };
@@ -566,10 +711,19 @@ pub fn expand_linuxcnc(c: &LinuxCncG76) -> Result<LinuxCncMoves, CycleError> {
         step: 0,
         last_depth: 0,
         done: false,
+        stats,
     })
 }
 
 impl LinuxCncMoves {
+    /// How many values the fast path (reading R-FASTPATH) decided so far,
+    /// and how many it left to the interval arithmetic: the checks made by
+    /// [`expand_linuxcnc`] and the passes started since.
+    #[must_use]
+    pub const fn fast_path_stats(&self) -> FastPathStats {
+        self.stats
+    }
+
     /// Move `step` (0-based) of the pass with points `p`, if the pass has
     /// that many: back, in (or the entry taper's two moves), over (to the
     /// exit taper's start, then its move), out.
@@ -606,10 +760,12 @@ impl LinuxCncMoves {
     /// last pass.
     fn start_pass(&mut self, number: u64) -> Option<(Points, Pass)> {
         let (points, kind, count) = if number <= self.rough {
-            let mut v = Values::new(&self.words, &self.tan, Depth::Rough(number));
+            let mut v = Values::new(&self.words, &mut self.tan, Depth::Rough(number));
             // Computed without error in expand_linuxcnc (the same
             // computation): the `?` is unreachable.
-            (Points::of(&mut v, &self.words).ok()?, PassKind::Rough, number)
+            let points = Points::of(&mut v, &self.words).ok()?;
+            self.stats.add(v.stats);
+            (points, PassKind::Rough, number)
         } else if number - self.rough <= self.full {
             (self.full_points, PassKind::Finish, number - self.rough)
         } else {
@@ -736,15 +892,16 @@ mod tests {
             c.peak_offset = if variant % 2 == 0 { -10_000 } else { 10_000 };
             c.x_mode = if variant < 2 { XMode::Radius } else { XMode::Diameter };
             c.end.z = if variant == 3 { 300_000 } else { -200_000 };
-            let m = expand_linuxcnc(&c).unwrap();
+            let mut m = expand_linuxcnc_exact(&c).unwrap();
             let w = m.words;
             for depth in [Depth::Rough(1), Depth::Rough(2), Depth::Rough(7), Depth::Full] {
-                let normal = Points::of(&mut Values::new(&w, &m.tan, depth), &w).unwrap();
-                let mut v = Values::new(&w, &m.tan, depth);
-                for f in &mut v.fast {
+                let normal = Points::of(&mut Values::new(&w, &mut m.tan, depth), &w).unwrap();
+                let mut v = Values::new(&w, &mut m.tan, depth);
+                v.fast(&w, 0);
+                for f in v.fast.iter_mut().flatten() {
                     *f = widen(f);
                 }
-                assert_eq!(v.fast(X_BACK).round(Rounding::Nearest), None);
+                assert_eq!(v.fast(&w, X_BACK).round(Rounding::Nearest), None);
                 let slow = Points::of(&mut v, &w).unwrap();
                 assert!(v.slow.is_some());
                 assert_eq!(slow, normal, "{variant} {depth:?}");
@@ -754,11 +911,18 @@ mod tests {
         // bits is 0 whether the power is held exact or not.
         c.initial_depth = 1_000;
         c.full_depth = 4_000;
-        let m = expand_linuxcnc(&c).unwrap();
-        let mut v = Values::new(&m.words, &m.tan, Depth::Rough(8));
+        let mut m = expand_linuxcnc_exact(&c).unwrap();
+        let mut v = Values::new(&m.words, &mut m.tan, Depth::Rough(8));
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
-        v.fast[DEEPER] = widen(&v.fast[DEEPER]);
+        let fast = v.fast.as_mut().unwrap();
+        fast[DEEPER] = widen(&fast[DEEPER]);
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
+        // On the fast path, J·8^(2/3) − 4J is enclosed, not exact: left to
+        // the intervals (a tie of R-LCNC-TIE).
+        let mut m = expand_linuxcnc(&c).unwrap();
+        let mut v = Values::new(&m.words, &mut m.tan, Depth::Rough(8));
+        assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
+        assert_eq!(v.stats, FastPathStats { values: 1, fallbacks: 1 });
     }
 
     #[test]

@@ -46,6 +46,7 @@
 //! checked (`checked_*`, `saturating_*`) or bounded by such a comment; no
 //! index, `unwrap`, `expect` or division can panic.
 
+pub mod approx;
 pub mod arith;
 pub mod contracts;
 pub mod g32;
