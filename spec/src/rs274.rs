@@ -204,6 +204,39 @@ pub enum CanonCall {
     Skipped,
 }
 
+/// `s` as a decimal, as [`Decimal`]'s parser reads it: the plain forms
+/// `rs274` prints (`-12.3456`, `0.0000`, up to 18 digits) digit by digit,
+/// without the general parser's work; any other form by that parser.
+fn number(s: &str) -> Result<Decimal, rust_decimal::Error> {
+    let b = s.as_bytes();
+    let (negative, digits) = match b.first() {
+        Some(b'-') => (true, &b[1..]),
+        Some(b'+') => (false, &b[1..]),
+        _ => (false, b),
+    };
+    if digits.is_empty() || digits.len() > 18 {
+        return s.parse();
+    }
+    let (mut mantissa, mut scale, mut point, mut any) = (0_i64, 0_u32, false, false);
+    for &c in digits {
+        match c {
+            b'0'..=b'9' => {
+                // At most 18 digits: below 10^18, no overflow.
+                mantissa = mantissa * 10 + i64::from(c - b'0');
+                scale += u32::from(point);
+                any = true;
+            }
+            b'.' if !point => point = true,
+            _ => return s.parse(),
+        }
+    }
+    if !any || (negative && mantissa == 0) {
+        // No digit, or a negative zero (its sign kept as the parser keeps it).
+        return s.parse();
+    }
+    Ok(Decimal::new(if negative { -mantissa } else { mantissa }, scale))
+}
+
 /// The call of one line of `rs274`'s output (`line` names it in an
 /// error), or `None` for an empty line. A line is
 /// `<sequence> N<number or .....> <CALL>(<arguments>)`.
@@ -255,7 +288,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
         }
         args.split(',')
             .map(|a| {
-                a.trim().parse::<Decimal>().map_err(|e| {
+                number(a.trim()).map_err(|e| {
                     fail(format!(
                         "{name}: argument `{}` is not a number ({e})",
                         crate::error::shown(a.trim())
@@ -463,3 +496,56 @@ impl fmt::Display for CanonDifference {
 }
 
 impl std::error::Error for CanonDifference {}
+
+#[cfg(test)]
+mod number_tests {
+    use rust_decimal::Decimal;
+
+    use super::number;
+
+    #[test]
+    fn the_fast_reading_of_a_number_is_the_parsers() {
+        let forms = [
+            "0",
+            "0.0000",
+            "-0.0000",
+            "-0",
+            "1",
+            "-1",
+            "12.3456",
+            "-12.3456",
+            "+4.5",
+            ".5",
+            "-.5",
+            "5.",
+            "-5.",
+            "123456789012345678",
+            "1234567890123456789",
+            "99999999.9999999999",
+            "0.000000000000000001",
+            "1e3",
+            "1.2.3",
+            "-",
+            "+",
+            ".",
+            "",
+            "--1",
+            "1,5",
+            " 1",
+            "007.0100",
+        ];
+        for s in forms {
+            let ours = number(s);
+            let parser = s.parse::<Decimal>();
+            assert_eq!(ours.is_ok(), parser.is_ok(), "{s}");
+            if let (Ok(a), Ok(b)) = (ours, parser) {
+                assert_eq!((a, a.to_string()), (b, b.to_string()), "{s}");
+            }
+        }
+        // Every value of four decimals over a range, both signs.
+        for m in -20_000_i64..=20_000 {
+            let s = format!("{}{}.{:04}", if m < 0 { "-" } else { "" }, m.abs() / 10_000, m.abs() % 10_000);
+            assert_eq!(number(&s).map(|d| d.to_string()), s.parse::<Decimal>().map(|d| d.to_string()), "{s}");
+        }
+    }
+}
