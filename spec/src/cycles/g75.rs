@@ -5,7 +5,7 @@ use std::fmt;
 
 use cycleref::g75::RIGHT_ANGLE;
 use cycleref::units::Length;
-use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role, Units, XMode};
+use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role};
 
 use super::{
     Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable, ReferenceMoves, Region,
@@ -76,21 +76,11 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
         true
     }
 
-    fn start(&self) -> Point {
-        self.cycle.start
-    }
+    frame_of_cycle!();
 
     /// S, from which the cycle rapids to A.
     fn tool_before_start(&self) -> Option<Point> {
         Some(self.cycle.from)
-    }
-
-    fn units(&self) -> Units {
-        self.cycle.units
-    }
-
-    fn x_mode(&self) -> XMode {
-        self.cycle.x_mode
     }
 
     fn restore(&self) -> Restore {

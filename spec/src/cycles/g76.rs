@@ -4,10 +4,7 @@
 
 use std::fmt;
 
-use cycleref::{
-    CycleError, DepthMode, G76Moves, Infeed, LeadWord, Motion, Move, PassKind, Point, Role, RunOut, Units,
-    XMode,
-};
+use cycleref::{CycleError, DepthMode, G76Moves, Infeed, LeadWord, Motion, Move, PassKind, Role, RunOut};
 
 use super::{
     for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable,
@@ -67,17 +64,7 @@ impl<'a> CycleCall<'a> for G76Call<'a> {
         true
     }
 
-    fn start(&self) -> Point {
-        self.cycle.start
-    }
-
-    fn units(&self) -> Units {
-        self.cycle.units
-    }
-
-    fn x_mode(&self) -> XMode {
-        self.cycle.x_mode
-    }
+    frame_of_cycle!();
 
     fn restore(&self) -> Restore {
         self.restore

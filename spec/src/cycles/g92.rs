@@ -1,7 +1,7 @@
 //! G92, the single-pass thread-cutting cycle (the GSK 980TDi and 988TA G92
 //! pages, FANUC's G92): one pass per block on G76's pass model.
 
-use cycleref::{CycleError, G92Moves, LeadWord, Move, Point, RunOut, Units, XMode};
+use cycleref::{CycleError, G92Moves, LeadWord, Move, RunOut};
 
 use super::{
     Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable, ReferenceMoves, Region,
@@ -21,17 +21,7 @@ impl<'a> CycleCall<'a> for G92Call<'a> {
         &self.block
     }
 
-    fn start(&self) -> Point {
-        self.cycle.start
-    }
-
-    fn units(&self) -> Units {
-        self.cycle.units
-    }
-
-    fn x_mode(&self) -> XMode {
-        self.cycle.x_mode
-    }
+    frame_of_cycle!();
 
     // G92 is modal: the mode in force is its own, and every G92 block is
     // expanded (reading R-G92MODAL): nothing to restore.

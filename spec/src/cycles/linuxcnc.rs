@@ -1,7 +1,7 @@
 //! LinuxCNC's G76 threading cycle (`G76 P Z I J R K Q H E L`, the
 //! `linuxcnc` profile; readings R-LCNC-*).
 
-use cycleref::{CycleError, LinuxCncMoves, Motion, Move, Point, Units, XMode};
+use cycleref::{CycleError, LinuxCncMoves, Motion, Move, XMode};
 
 use super::{
     for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable,
@@ -22,17 +22,7 @@ impl<'a> CycleCall<'a> for LinuxCncCall<'a> {
         &self.block
     }
 
-    fn start(&self) -> Point {
-        self.cycle.start
-    }
-
-    fn units(&self) -> Units {
-        self.cycle.units
-    }
-
-    fn x_mode(&self) -> XMode {
-        self.cycle.x_mode
-    }
+    frame_of_cycle!();
 
     // LinuxCNC's G76 is modal, but a later block that would repeat it is
     // refused by the reader (its words are needed again), so the

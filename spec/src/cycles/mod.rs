@@ -39,6 +39,25 @@ use crate::lex::Block;
 use crate::pipeline::Engine;
 use crate::reader::Restore;
 
+/// The accessors of a call whose typed cycle, `self.cycle`, holds the
+/// start point, units and X mode ([`CycleCall::start`],
+/// [`CycleCall::units`], [`CycleCall::x_mode`]).
+macro_rules! frame_of_cycle {
+    () => {
+        fn start(&self) -> cycleref::Point {
+            self.cycle.start
+        }
+
+        fn units(&self) -> cycleref::Units {
+            self.cycle.units
+        }
+
+        fn x_mode(&self) -> cycleref::XMode {
+            self.cycle.x_mode
+        }
+    };
+}
+
 mod g32;
 mod g75;
 mod g76;
