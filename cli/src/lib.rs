@@ -2,18 +2,26 @@
 //!
 //! Data flows one way: the program's bytes ([`Job`]) → the reader
 //! ([`cycleref_spec::Reader`]) → each cycle expanded by the chosen engine
-//! ([`cycleref_spec::pipeline`]) → a writer. The modules:
+//! ([`cycleref_spec::pipeline`]) → a writer. What a writer needs of a
+//! cycle (its heading, its `nc` style, its `passes` table, the annotations
+//! its moves carry, the regions it cuts) comes from the cycle's module
+//! ([`cycleref_spec::cycles`]); no module here matches on the kind of
+//! cycle except `plot`, whose panels draw each kind's geometry. The
+//! modules:
 //!
 //! * [`job`]: the program, its machine (profile, parameter file, options)
-//!   and the failures a command can end in;
+//!   and the failures a command can end in ([`Failure`], each with its
+//!   stable kind, printed `error[KIND]: MESSAGE`);
 //! * [`output`]: the streaming writers of `expand` (nc, json, jsonl) and
 //!   `passes`;
-//! * [`json`]: the typed `cycleref-moves/1` documents, serialized straight
-//!   into the writer by their own serializer ([`json::ser`]);
+//! * [`json`]: the typed documents (`cycleref-moves/1`, and the types
+//!   `check`'s and the vectors' documents share), serialized straight into
+//!   the writer by the one serializer ([`json::ser`]); their JSON Schemas
+//!   are in `docs/schemas/`;
 //! * [`format`](mod@format): the text forms of lengths, leads, angles and names;
 //! * [`check`]: `check`, the comparison of a vendor's toolpath with ours;
-//! * [`plot`]: `plot`, the SVG drawing (one module per cycle over a shared
-//!   canvas);
+//! * [`plot`]: `plot`, the SVG drawing (a panel module per kind of
+//!   drawing over a shared canvas, and the trace's overlay);
 //! * [`vectors`]: the generator of conformance vectors;
 //! * [`conform`]: a vendor's outputs run against a corpus of them.
 //!
