@@ -44,7 +44,8 @@
 //!
 //! This module holds the types they share (`Kind`, `Context`, `Step`,
 //! `Group`, `Divergence`) and the entry points: [`run`], [`check_bytes`],
-//! [`check_bytes_as`] and [`overlay`].
+//! [`check_bytes_as`], and for `plot --trace` the trace's points and the
+//! marks of its divergences (`trace_points`, `marks`).
 
 mod align;
 mod compare;
