@@ -44,7 +44,9 @@
 //!
 //! This module holds the types they share (`Kind`, `Context`, `Step`,
 //! `Group`, `Divergence`) and the entry points: [`run`], [`check_bytes`],
-//! [`check_bytes_as`] and [`overlay`].
+//! [`check_bytes_as`], and `trace_points` and `marks` for `plot --trace`.
+//! Its errors are typed (`error`): a trace's `TraceError` and a block's
+//! `StepError`, each printed with the rule's stable kind.
 
 mod align;
 mod compare;
