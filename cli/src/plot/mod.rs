@@ -42,10 +42,10 @@ use canvas::num;
 pub use overlay::Overlay;
 
 mod canvas;
-mod threads;
 mod g75;
 mod g76;
 mod overlay;
+mod threads;
 mod zoom;
 
 /// Width of the picture (px).
@@ -77,10 +77,19 @@ fn svg(
     let thread_code = threads.first().map_or("G32", |(c, _)| c.code);
     let threads: Vec<threads::BlockPath<'_>> = threads
         .iter()
-        .map(|(c, m)| if c.code == "G33" { threads::BlockPath::g33(c, m) } else { threads::BlockPath::g32(c, m) })
+        .map(
+            |(c, m)| {
+                if c.code == "G33" {
+                    threads::BlockPath::g33(c, m)
+                } else {
+                    threads::BlockPath::g32(c, m)
+                }
+            },
+        )
         .collect();
     let g92s: Vec<threads::BlockPath<'_>> = g92s.iter().map(|(c, m)| threads::BlockPath::g92(c, m)).collect();
-    let lcncs: Vec<threads::BlockPath<'_>> = lcncs.iter().map(|(c, m)| threads::BlockPath::linuxcnc(c, m)).collect();
+    let lcncs: Vec<threads::BlockPath<'_>> =
+        lcncs.iter().map(|(c, m)| threads::BlockPath::linuxcnc(c, m)).collect();
     let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
     let first_line = marks.first().and_then(|m| m.cycle_line);
     // The zoomed panel of the first divergence, drawn last.
