@@ -42,6 +42,7 @@ use std::sync::mpsc;
 use std::time::Instant;
 
 use cycleref_spec::pipeline::Engine;
+use cycleref_spec::profile::ParamsError;
 use cycleref_spec::{Machine, ProfileName};
 use serde_json::Value;
 
@@ -85,9 +86,9 @@ impl Shard {
     ///
     /// # Errors
     ///
-    /// A text that is not `I/N` with 1 ≤ I ≤ N.
-    pub fn parse(text: &str) -> Result<Shard, String> {
-        let bad = || format!("--shard {text:?}: give I/N with 1 <= I <= N, e.g. 2/4");
+    /// [`ConformError::Shard`]: a text that is not `I/N` with 1 ≤ I ≤ N.
+    pub fn parse(text: &str) -> Result<Shard, ConformError> {
+        let bad = || ConformError::Shard { text: text.to_string() };
         let (i, n) = text.split_once('/').ok_or_else(bad)?;
         let (index, count) =
             (i.trim().parse::<u32>().map_err(|_| bad())?, n.trim().parse::<u32>().map_err(|_| bad())?);
@@ -188,8 +189,8 @@ enum Source {
 
 /// The cases of a list of pairs in `shard`, by line (case `i` is the
 /// list's `i`-th pair). Paths are taken relative to the list's directory.
-fn pairs(list: &Path, shard: Shard) -> Result<Vec<Case>, String> {
-    let text = fs::read_to_string(list).map_err(|e| format!("{}: {e}", list.display()))?;
+fn pairs(list: &Path, shard: Shard) -> Result<Vec<Case>, ConformError> {
+    let text = fs::read_to_string(list).map_err(|e| ConformError::cannot_read(list, e))?;
     let dir = list.parent().unwrap_or(Path::new("."));
     let mut out = Vec::new();
     let mut index = 0_u32;
@@ -203,18 +204,20 @@ fn pairs(list: &Path, shard: Shard) -> Result<Vec<Case>, String> {
         } else {
             line.split_whitespace().collect()
         };
-        let bad =
-            |why: &str| format!("{}: line {}: {why} (`PROGRAM TRACE [PROFILE]`)", list.display(), n + 1);
         let (program, trace, profile) = match fields.as_slice() {
             [p, t] => (p, t, None),
             [p, t, profile] => {
-                let name = ProfileName::ALL
-                    .into_iter()
-                    .find(|x| x.to_string() == *profile)
-                    .ok_or_else(|| bad(&format!("{profile:?} is none of cycleref's profiles")))?;
+                let name =
+                    ProfileName::ALL.into_iter().find(|x| x.to_string() == *profile).ok_or_else(|| {
+                        ConformError::PairProfile {
+                            list: list.display().to_string(),
+                            line: n + 1,
+                            profile: (*profile).to_string(),
+                        }
+                    })?;
                 (p, t, Some(name))
             }
-            _ => return Err(bad("a pair is two or three fields")),
+            _ => return Err(ConformError::PairFields { list: list.display().to_string(), line: n + 1 }),
         };
         index += 1;
         if shard.holds(index) {
@@ -223,17 +226,17 @@ fn pairs(list: &Path, shard: Shard) -> Result<Vec<Case>, String> {
         }
     }
     if index == 0 {
-        return Err(format!("{}: no pairs (`PROGRAM TRACE [PROFILE]` a line)", list.display()));
+        return Err(ConformError::NoPairs { list: list.display().to_string() });
     }
     Ok(out)
 }
 
 /// The corpus's cases in `shard`, by index.
-fn cases(corpus: &Path, shard: Shard) -> Result<Vec<Case>, String> {
-    let entries = fs::read_dir(corpus).map_err(|e| format!("{}: {e}", corpus.display()))?;
+fn cases(corpus: &Path, shard: Shard) -> Result<Vec<Case>, ConformError> {
+    let entries = fs::read_dir(corpus).map_err(|e| ConformError::cannot_read(corpus, e))?;
     let mut out = Vec::new();
     for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: {e}", corpus.display()))?;
+        let entry = entry.map_err(|e| ConformError::cannot_read(corpus, e))?;
         let name = entry.file_name();
         let Some(name) = name.to_str() else { continue };
         let Some(digits) = name.strip_prefix("case-").and_then(|n| n.strip_suffix(".json")) else {
@@ -246,10 +249,7 @@ fn cases(corpus: &Path, shard: Shard) -> Result<Vec<Case>, String> {
     }
     out.sort_by_key(|c| c.index);
     if out.is_empty() && shard == Shard::ALL {
-        return Err(format!(
-            "{}: no case-NNNN.json files (write a corpus with `cycleref vectors`)",
-            corpus.display()
-        ));
+        return Err(ConformError::NoCases { corpus: corpus.display().to_string() });
     }
     Ok(out)
 }
@@ -265,21 +265,22 @@ struct Vector {
     refusal: Option<String>,
 }
 
-fn read_vector(path: &Path) -> Result<Vector, String> {
-    let text = fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-    let field = |name: &str| -> Result<String, String> {
-        v.get(name)
+fn read_vector(path: &Path) -> Result<Vector, ConformError> {
+    let text = fs::read_to_string(path).map_err(|e| ConformError::cannot_read(path, e))?;
+    let v: Value = serde_json::from_str(&text)
+        .map_err(|error| ConformError::NotJson { path: path.display().to_string(), error })?;
+    let field = |field: &'static str| -> Result<String, ConformError> {
+        v.get(field)
             .and_then(Value::as_str)
             .map(str::to_owned)
-            .ok_or_else(|| format!("{}: no text field `{name}` (a cycleref-vector/1 case?)", path.display()))
+            .ok_or_else(|| ConformError::VectorField { path: path.display().to_string(), field })
     };
     if v.get("schema").and_then(Value::as_str) != Some("cycleref-vector/1") {
-        return Err(format!("{}: not a cycleref-vector/1 case", path.display()));
+        return Err(ConformError::VectorSchema { path: path.display().to_string() });
     }
     let refusal = v.pointer("/expect/error/kind").and_then(Value::as_str).map(str::to_owned);
     if refusal.is_none() && v.pointer("/expect/moves").is_none() {
-        return Err(format!("{}: `expect` holds neither moves nor an error", path.display()));
+        return Err(ConformError::VectorExpect { path: path.display().to_string() });
     }
     Ok(Vector {
         id: field("id")?,
@@ -319,9 +320,9 @@ fn quoted(path: &Path) -> String {
 
 /// The case's outcome from the vendor: `work` is a directory for this
 /// case's files (`--run`).
-fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome, String> {
+fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome, ConformError> {
     match &options.outcomes {
-        Outcomes::Pairs { .. } => Err(format!("{}: a vector in a run of pairs", v.id)),
+        Outcomes::Pairs { .. } => Err(ConformError::VectorInPairs { id: v.id.clone() }),
         Outcomes::Dir(dir) => {
             let error = dir.join(format!("{}.error", v.id));
             let traces: Vec<(PathBuf, TraceFormat)> =
@@ -333,16 +334,14 @@ fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome,
             match (error.exists(), traces.as_slice()) {
                 (true, []) => {
                     let message =
-                        fs::read_to_string(&error).map_err(|e| format!("{}: {e}", error.display()))?;
+                        fs::read_to_string(&error).map_err(|e| ConformError::cannot_read(&error, e))?;
                     Ok(Outcome::Refused(short(&message)))
                 }
                 (false, [(p, f)]) => Ok(Outcome::Trace(p.clone(), Some(*f))),
-                (false, []) => Err(format!(
-                    "no outcome: none of {id}.nc, {id}.csv, {id}.canon or {id}.error in {}",
-                    dir.display(),
-                    id = v.id
-                )),
-                _ => Err(format!("more than one outcome for {} in {}", v.id, dir.display())),
+                (false, []) => {
+                    Err(ConformError::NoOutcome { id: v.id.clone(), dir: dir.display().to_string() })
+                }
+                _ => Err(ConformError::TwoOutcomes { id: v.id.clone(), dir: dir.display().to_string() }),
             }
         }
         Outcomes::Run(template) => {
@@ -350,8 +349,8 @@ fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome,
             let program = work.join(format!("{}.{ext}", v.id));
             let params = work.join(format!("{}.toml", v.id));
             let trace = work.join(format!("{}-trace.{}", v.id, trace_extension(options.trace_format)));
-            fs::write(&program, &v.program).map_err(|e| format!("{}: {e}", program.display()))?;
-            fs::write(&params, &v.machine_toml).map_err(|e| format!("{}: {e}", params.display()))?;
+            fs::write(&program, &v.program).map_err(|e| ConformError::cannot_write(&program, e))?;
+            fs::write(&params, &v.machine_toml).map_err(|e| ConformError::cannot_write(&params, e))?;
             let command = template
                 .replace("{program}", &quoted(&program))
                 .replace("{params}", &quoted(&params))
@@ -368,10 +367,10 @@ fn outcome(options: &ConformOptions, v: &Vector, work: &Path) -> Result<Outcome,
             // directory holds the cases in progress, not the corpus.
             let _ = fs::remove_file(&program);
             let _ = fs::remove_file(&params);
-            let out = out.map_err(|e| format!("cannot run `sh -c {command}`: {e}"))?;
+            let out = out.map_err(|error| ConformError::CannotRun { command: command.clone(), error })?;
             if out.status.success() {
                 if !trace.exists() {
-                    return Err(format!("the command exited 0 but wrote no trace to {{trace}}: {command}"));
+                    return Err(ConformError::NoTrace { command });
                 }
                 Ok(Outcome::Trace(trace, options.trace_format))
             } else {
@@ -391,13 +390,13 @@ fn trace_extension(format: Option<TraceFormat>) -> &'static str {
 }
 
 /// The machine of a case: its profile, then its parameter file.
-fn machine(v: &Vector) -> Result<Machine, String> {
+fn machine(v: &Vector) -> Result<Machine, ConformError> {
     let profile = ProfileName::ALL
         .into_iter()
         .find(|p| p.to_string() == v.profile)
-        .ok_or_else(|| format!("profile {:?} is none of cycleref's", v.profile))?;
+        .ok_or_else(|| ConformError::VectorProfile { profile: v.profile.clone() })?;
     let mut m = Machine::new(profile);
-    m.apply_toml(&v.machine_toml).map_err(|e| format!("machine_toml: {e}"))?;
+    m.apply_toml(&v.machine_toml).map_err(ConformError::MachineToml)?;
     Ok(m)
 }
 
@@ -406,7 +405,7 @@ fn run_case(options: &ConformOptions, case: &Case, work: &Path) -> CaseResult {
     let started = Instant::now();
     let (id, description, verdict) = match &case.source {
         Source::Vector(path) => match read_vector(path) {
-            Err(e) => (format!("case-{:04}", case.index), String::new(), Verdict::Error(e)),
+            Err(e) => (format!("case-{:04}", case.index), String::new(), Verdict::Error(e.to_string())),
             Ok(v) => {
                 let verdict = judge_vector(options, &v, work);
                 (v.id, v.description, verdict)
@@ -431,7 +430,7 @@ fn run_case(options: &ConformOptions, case: &Case, work: &Path) -> CaseResult {
 fn judge_vector(options: &ConformOptions, v: &Vector, work: &Path) -> Verdict {
     let outcome = match outcome(options, v, work) {
         Ok(o) => o,
-        Err(e) => return Verdict::Error(e),
+        Err(e) => return Verdict::Error(e.to_string()),
     };
     let trace = match (outcome, &v.refusal) {
         (Outcome::Refused(_), Some(_)) => return Verdict::Pass,
@@ -577,7 +576,7 @@ pub fn run(options: &ConformOptions, out: &mut dyn Write) -> Result<Summary, Fai
     let pairs_run = matches!(options.outcomes, Outcomes::Pairs { .. });
     let cases =
         if pairs_run { pairs(&options.corpus, options.shard) } else { cases(&options.corpus, options.shard) }
-            .map_err(|e| Failure::new(Cause::Corpus, e))?;
+            .map_err(|e| Failure::with_kind(Cause::Corpus, e.stable_kind(), e.to_string()))?;
     let work = std::env::temp_dir().join(format!("cycleref-conform-{}", std::process::id()));
     if matches!(options.outcomes, Outcomes::Run(_)) {
         fs::create_dir_all(&work)
@@ -721,4 +720,221 @@ fn write_junit(
     f.into_inner().map_err(io::IntoInnerError::into_error)?.sync_all()?;
     fs::remove_file(part)?;
     fs::rename(&tmp, path)
+}
+
+/// Why a corpus, a list of pairs or a case cannot be read or run, or a
+/// `--shard` is not one. Each variant names the file (and line, or field)
+/// it is about; `Display` is the message.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum ConformError {
+    /// A `--shard` that is not `I/N` with 1 ≤ I ≤ N.
+    Shard {
+        /// The text given.
+        text: String,
+    },
+    /// A file or directory that cannot be read (the corpus, the list of
+    /// pairs, a case, a vendor's `.error` file).
+    CannotRead {
+        /// The path.
+        path: String,
+        /// Why.
+        error: io::Error,
+    },
+    /// A case's file that cannot be written for `--run`.
+    CannotWrite {
+        /// The path.
+        path: String,
+        /// Why.
+        error: io::Error,
+    },
+    /// A line of the list of pairs that names no profile of cycleref's.
+    PairProfile {
+        /// The list.
+        list: String,
+        /// The line.
+        line: usize,
+        /// The profile named.
+        profile: String,
+    },
+    /// A line of the list of pairs of fewer than two or more than three
+    /// fields.
+    PairFields {
+        /// The list.
+        list: String,
+        /// The line.
+        line: usize,
+    },
+    /// A list of pairs without one.
+    NoPairs {
+        /// The list.
+        list: String,
+    },
+    /// A corpus directory without a case.
+    NoCases {
+        /// The directory.
+        corpus: String,
+    },
+    /// A case's file that is not JSON.
+    NotJson {
+        /// The path.
+        path: String,
+        /// Why.
+        error: serde_json::Error,
+    },
+    /// A case without one of its text fields.
+    VectorField {
+        /// The path.
+        path: String,
+        /// The field (`id`, `program`, ...).
+        field: &'static str,
+    },
+    /// A file that is not a `cycleref-vector/1` case.
+    VectorSchema {
+        /// The path.
+        path: String,
+    },
+    /// A case whose `expect` holds neither moves nor an error.
+    VectorExpect {
+        /// The path.
+        path: String,
+    },
+    /// A case whose profile is none of cycleref's.
+    VectorProfile {
+        /// The profile named.
+        profile: String,
+    },
+    /// A case whose `machine_toml` cannot be applied.
+    MachineToml(ParamsError),
+    /// A vector in a run of pairs.
+    VectorInPairs {
+        /// The case's id.
+        id: String,
+    },
+    /// No outcome for a case in the vendor's directory.
+    NoOutcome {
+        /// The case's id.
+        id: String,
+        /// The directory.
+        dir: String,
+    },
+    /// More than one outcome for a case in the vendor's directory.
+    TwoOutcomes {
+        /// The case's id.
+        id: String,
+        /// The directory.
+        dir: String,
+    },
+    /// The `--run` command cannot be started.
+    CannotRun {
+        /// The command.
+        command: String,
+        /// Why.
+        error: io::Error,
+    },
+    /// The `--run` command exited 0 without writing its trace.
+    NoTrace {
+        /// The command.
+        command: String,
+    },
+}
+
+impl ConformError {
+    fn cannot_read(path: &Path, error: io::Error) -> ConformError {
+        ConformError::CannotRead { path: path.display().to_string(), error }
+    }
+
+    fn cannot_write(path: &Path, error: io::Error) -> ConformError {
+        ConformError::CannotWrite { path: path.display().to_string(), error }
+    }
+
+    /// The stable kind: `usage:bad_shard`, or `corpus:` and the rule
+    /// (`corpus:cannot_read`, `corpus:cannot_write`, `corpus:pair_profile`,
+    /// `corpus:pair_fields`, `corpus:no_pairs`, `corpus:no_cases`,
+    /// `corpus:not_json`, `corpus:vector_field`, `corpus:vector_schema`,
+    /// `corpus:vector_expect`, `corpus:vector_profile`,
+    /// `corpus:machine_toml`, `corpus:vector_in_pairs`,
+    /// `corpus:no_outcome`, `corpus:two_outcomes`, `corpus:cannot_run`,
+    /// `corpus:no_trace`).
+    #[must_use]
+    pub fn stable_kind(&self) -> &'static str {
+        match self {
+            ConformError::Shard { .. } => "usage:bad_shard",
+            ConformError::CannotRead { .. } => "corpus:cannot_read",
+            ConformError::CannotWrite { .. } => "corpus:cannot_write",
+            ConformError::PairProfile { .. } => "corpus:pair_profile",
+            ConformError::PairFields { .. } => "corpus:pair_fields",
+            ConformError::NoPairs { .. } => "corpus:no_pairs",
+            ConformError::NoCases { .. } => "corpus:no_cases",
+            ConformError::NotJson { .. } => "corpus:not_json",
+            ConformError::VectorField { .. } => "corpus:vector_field",
+            ConformError::VectorSchema { .. } => "corpus:vector_schema",
+            ConformError::VectorExpect { .. } => "corpus:vector_expect",
+            ConformError::VectorProfile { .. } => "corpus:vector_profile",
+            ConformError::MachineToml(_) => "corpus:machine_toml",
+            ConformError::VectorInPairs { .. } => "corpus:vector_in_pairs",
+            ConformError::NoOutcome { .. } => "corpus:no_outcome",
+            ConformError::TwoOutcomes { .. } => "corpus:two_outcomes",
+            ConformError::CannotRun { .. } => "corpus:cannot_run",
+            ConformError::NoTrace { .. } => "corpus:no_trace",
+        }
+    }
+}
+
+impl std::fmt::Display for ConformError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        const PAIR: &str = "(`PROGRAM TRACE [PROFILE]`)";
+        match self {
+            ConformError::Shard { text } => {
+                write!(f, "--shard {text:?}: give I/N with 1 <= I <= N, e.g. 2/4")
+            }
+            ConformError::CannotRead { path, error } | ConformError::CannotWrite { path, error } => {
+                write!(f, "{path}: {error}")
+            }
+            ConformError::PairProfile { list, line, profile } => {
+                write!(f, "{list}: line {line}: {profile:?} is none of cycleref's profiles {PAIR}")
+            }
+            ConformError::PairFields { list, line } => {
+                write!(f, "{list}: line {line}: a pair is two or three fields {PAIR}")
+            }
+            ConformError::NoPairs { list } => {
+                write!(f, "{list}: no pairs (`PROGRAM TRACE [PROFILE]` a line)")
+            }
+            ConformError::NoCases { corpus } => {
+                write!(f, "{corpus}: no case-NNNN.json files (write a corpus with `cycleref vectors`)")
+            }
+            ConformError::NotJson { path, error } => write!(f, "{path}: {error}"),
+            ConformError::VectorField { path, field } => {
+                write!(f, "{path}: no text field `{field}` (a cycleref-vector/1 case?)")
+            }
+            ConformError::VectorSchema { path } => write!(f, "{path}: not a cycleref-vector/1 case"),
+            ConformError::VectorExpect { path } => {
+                write!(f, "{path}: `expect` holds neither moves nor an error")
+            }
+            ConformError::VectorProfile { profile } => write!(f, "profile {profile:?} is none of cycleref's"),
+            ConformError::MachineToml(e) => write!(f, "machine_toml: {e}"),
+            ConformError::VectorInPairs { id } => write!(f, "{id}: a vector in a run of pairs"),
+            ConformError::NoOutcome { id, dir } => {
+                write!(f, "no outcome: none of {id}.nc, {id}.csv, {id}.canon or {id}.error in {dir}")
+            }
+            ConformError::TwoOutcomes { id, dir } => write!(f, "more than one outcome for {id} in {dir}"),
+            ConformError::CannotRun { command, error } => write!(f, "cannot run `sh -c {command}`: {error}"),
+            ConformError::NoTrace { command } => {
+                write!(f, "the command exited 0 but wrote no trace to {{trace}}: {command}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ConformError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ConformError::CannotRead { error, .. }
+            | ConformError::CannotWrite { error, .. }
+            | ConformError::CannotRun { error, .. } => Some(error),
+            ConformError::NotJson { error, .. } => Some(error),
+            ConformError::MachineToml(e) => Some(e),
+            _ => None,
+        }
+    }
 }

@@ -10,6 +10,7 @@
 //! Memory is the longest line and the reader's modal state, whatever the
 //! length of a program in a file.
 
+use std::borrow::Cow;
 use std::fmt;
 use std::fs::File;
 use std::io::{BufReader, IsTerminal as _, Read as _};
@@ -56,14 +57,19 @@ pub struct ProgramFailure {
 /// ([`Failure::Other`]).
 #[derive(Debug)]
 pub struct OtherFailure {
-    /// What the error is about: its stable kind.
+    /// What the error is about.
     pub cause: Cause,
+    /// The stable kind printed: the cause's ([`Cause::stable_kind`],
+    /// `trace`), or the rule's within it when it is known
+    /// (`trace:not_a_decimal`, `params:unknown_key`).
+    pub kind: Cow<'static, str>,
     /// The message, naming the file (and line) it is about.
     pub message: String,
 }
 
 /// What an error that is not the program's is about; its stable kind
-/// ([`Cause::stable_kind`]) is printed before the message.
+/// ([`Cause::stable_kind`]), or the rule's within it
+/// ([`OtherFailure::kind`]), is printed before the message.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Cause {
@@ -112,9 +118,20 @@ impl Failure {
         Failure::Program(Box::new(ProgramFailure { kind, message }))
     }
 
-    /// A failure about `cause`, with `message`.
+    /// A failure about `cause`, with `message`; its kind is the cause's.
     pub fn new(cause: Cause, message: impl Into<String>) -> Failure {
-        Failure::Other(Box::new(OtherFailure { cause, message: message.into() }))
+        Failure::with_kind(cause, cause.stable_kind(), message)
+    }
+
+    /// A failure about `cause` whose rule is known: its stable kind `kind`
+    /// (`trace:not_a_decimal`, the cause's kind, a colon and the rule's
+    /// name), with `message`.
+    pub fn with_kind(
+        cause: Cause,
+        kind: impl Into<Cow<'static, str>>,
+        message: impl Into<String>,
+    ) -> Failure {
+        Failure::Other(Box::new(OtherFailure { cause, kind: kind.into(), message: message.into() }))
     }
 
     /// A failure to read the program.
@@ -142,12 +159,12 @@ impl Failure {
         }
     }
 
-    /// The stable kind (`syntax`, `cycle:too_many_passes`, `trace`,
-    /// `input`, ...), as the command prints it: `error[KIND]: MESSAGE`.
+    /// The stable kind (`syntax`, `cycle:too_many_passes`,
+    /// `trace:not_a_decimal`, `input`, ...), as the command prints it: `error[KIND]: MESSAGE`.
     #[must_use]
     pub fn kind(&self) -> &str {
         match self {
-            Failure::Other(o) => o.cause.stable_kind(),
+            Failure::Other(o) => &o.kind,
             Failure::Program(p) => &p.kind,
             Failure::BrokenPipe => "output",
         }
@@ -998,7 +1015,9 @@ pub fn machine(opts: &Options) -> Result<Machine, Failure> {
             .map_err(|e| Failure::new(Cause::Params, format!("{}: {e}", p.display())))?;
         let applied =
             if flag.is_some() { machine.apply_toml_keeping_profile(&t) } else { machine.apply_toml(&t) };
-        applied.map_err(|e| Failure::new(Cause::Params, format!("{}: {e}", p.display())))?;
+        applied.map_err(|e| {
+            Failure::with_kind(Cause::Params, e.stable_kind(), format!("{}: {e}", p.display()))
+        })?;
         // Reading R-PARAMS: a bad value is the file's error, named by key.
         cycleref_spec::reader::check_parameters(&machine)
             .map_err(|e| Failure::new(Cause::Params, format!("{}: {}", p.display(), e.kind)))?;

@@ -570,7 +570,8 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 trace_format: trace_format.map(Into::into),
                 tolerance: compare.tolerance,
                 cycles_only: compare.cycles_only,
-                shard: cycleref_cli::conform::Shard::parse(&shard).map_err(Failure::usage)?,
+                shard: cycleref_cli::conform::Shard::parse(&shard)
+                    .map_err(|e| Failure::with_kind(Cause::Usage, e.stable_kind(), e.to_string()))?,
                 jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
                 junit,
             };

@@ -180,7 +180,8 @@ pub use cursor::CyclerefCursor;
 pub use types::{
     CyclerefCycle, CyclerefError, CyclerefFlank, CyclerefG76Params, CyclerefG92Params, CyclerefIncrement,
     CyclerefInfeed, CyclerefLeadWord, CyclerefMotion, CyclerefMove, CyclerefOptions, CyclerefPassKind,
-    CyclerefProfile, CyclerefRole, CyclerefRunOutKind, CyclerefStatus, CYCLEREF_ERROR_MESSAGE_LEN,
+    CyclerefProfile, CyclerefRole, CyclerefRunOutKind, CyclerefStatus, FieldError,
+    CYCLEREF_ERROR_MESSAGE_LEN,
 };
 
 /// Why a call failed, before it is written to a `CyclerefError`.
@@ -284,10 +285,14 @@ fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Fail
         1 => ProfileName::Gsk980,
         2 => ProfileName::Gsk988,
         3 => ProfileName::LinuxCnc,
-        v => return Err(Failure::invalid(format!("profile = {v} is not a CyclerefProfile"))),
+        value => {
+            let e = FieldError { field: "profile", value, expected: "CyclerefProfile" };
+            return Err(Failure::invalid(e.to_string()));
+        }
     };
     let increment = types::increment(opts.increment).ok_or_else(|| {
-        Failure::invalid(format!("increment = {} is not a CyclerefIncrement", opts.increment))
+        let e = FieldError { field: "increment", value: opts.increment, expected: "CyclerefIncrement" };
+        Failure::invalid(e.to_string())
     })?;
     let mut m = Machine::new(profile);
     if let Some(text) = params {
@@ -682,7 +687,7 @@ pub unsafe extern "C" fn cycleref_g76_new(
         // a `CyclerefG76Params` (the caller's contract); it has only
         // integer fields, for which every bit pattern is valid.
         let p = unsafe { params.read() };
-        let cycle = p.cycle().map_err(Failure::invalid)?;
+        let cycle = p.cycle().map_err(|e| Failure::invalid(e.to_string()))?;
         let moves =
             expand_g76(&cycle).map_err(|e| Failure::new(CyclerefStatus::CycleError, 0, e.to_string()))?;
         Ok(Box::into_raw(Box::new(CyclerefG76 { moves, decimals: cycle.units.decimals(), poisoned: false })))
@@ -804,7 +809,7 @@ pub unsafe extern "C" fn cycleref_g92_new(
         // a `CyclerefG92Params` (the caller's contract); it has only
         // integer fields, for which every bit pattern is valid.
         let p = unsafe { params.read() };
-        let cycle = p.cycle().map_err(Failure::invalid)?;
+        let cycle = p.cycle().map_err(|e| Failure::invalid(e.to_string()))?;
         let moves =
             expand_g92(&cycle).map_err(|e| Failure::new(CyclerefStatus::CycleError, 0, e.to_string()))?;
         Ok(Box::into_raw(Box::new(CyclerefG92 { moves, decimals: cycle.units.decimals(), poisoned: false })))

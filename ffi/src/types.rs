@@ -592,9 +592,9 @@ impl CyclerefG76Params {
     ///
     /// # Errors
     ///
-    /// A message naming the field whose enum value is out of range.
-    pub fn cycle(&self) -> Result<G76Cycle, String> {
-        let bad = |field: &str, v: u32, ty: &str| format!("{field} = {v} is not a {ty}");
+    /// A [`FieldError`] naming the field whose enum value is out of range.
+    pub fn cycle(&self) -> Result<G76Cycle, FieldError> {
+        let bad = |field, value, expected| FieldError { field, value, expected };
         let infeed = match self.infeed {
             0 => Infeed::RightFlank,
             1 => Infeed::RightCentre,
@@ -642,6 +642,36 @@ impl CyclerefG76Params {
     }
 }
 
+/// An input struct's enum field holding a value that is none of its enum's
+/// (refused with [`CyclerefStatus::InvalidArgument`]): the field, its
+/// value and the enum it must be one of. `Display` is the message the
+/// `CyclerefError` carries: `infeed = 9 is not a CyclerefInfeed`.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct FieldError {
+    /// The field (`infeed`, `lead_word`, `run_out_kind`, ...).
+    pub field: &'static str,
+    /// The value it holds.
+    pub value: u32,
+    /// The enum its value must be one of (`CyclerefInfeed`).
+    pub expected: &'static str,
+}
+
+impl FieldError {
+    /// The stable kind: `argument:not_an_enum_value`.
+    #[must_use]
+    pub fn stable_kind(&self) -> &'static str {
+        "argument:not_an_enum_value"
+    }
+}
+
+impl core::fmt::Display for FieldError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{} = {} is not a {}", self.field, self.value, self.expected)
+    }
+}
+
+impl std::error::Error for FieldError {}
+
 /// The run-out fields of a parameters struct (G76's and G92's).
 struct RunOutFields {
     kind: u32,
@@ -652,8 +682,8 @@ struct RunOutFields {
     has_long: u8,
 }
 
-/// The run-out the fields describe, or a message naming the kind out of range.
-fn run_out_of(f: RunOutFields) -> Result<RunOut, String> {
+/// The run-out the fields describe, or an error naming the kind out of range.
+fn run_out_of(f: RunOutFields) -> Result<RunOut, FieldError> {
     Ok(match f.kind {
         0 => RunOut::None,
         1 => RunOut::Amounts { short: f.short, long: f.long },
@@ -662,14 +692,17 @@ fn run_out_of(f: RunOutFields) -> Result<RunOut, String> {
             angle_degrees: f.angle,
             long: (f.has_long != 0).then_some(f.long),
         },
-        v => return Err(format!("run_out_kind = {v} is not a CyclerefRunOutKind")),
+        value => return Err(FieldError { field: "run_out_kind", value, expected: "CyclerefRunOutKind" }),
     })
 }
 
 /// The units of an increment field and an inch flag.
-fn units_of(increment_field: u32, inch: u8) -> Result<Units, String> {
-    let system = increment(increment_field)
-        .ok_or_else(|| format!("increment = {increment_field} is not a CyclerefIncrement"))?;
+fn units_of(increment_field: u32, inch: u8) -> Result<Units, FieldError> {
+    let system = increment(increment_field).ok_or(FieldError {
+        field: "increment",
+        value: increment_field,
+        expected: "CyclerefIncrement",
+    })?;
     Ok(Units {
         system: system.unwrap_or(IncrementSystem::IsB),
         unit: if inch != 0 { InputUnit::Inch } else { InputUnit::Metric },
@@ -677,12 +710,12 @@ fn units_of(increment_field: u32, inch: u8) -> Result<Units, String> {
 }
 
 /// The lead of a lead word field, mantissa and scale.
-fn lead_of(word: u32, mantissa: u64, scale: u32) -> Result<Lead, String> {
+fn lead_of(word: u32, mantissa: u64, scale: u32) -> Result<Lead, FieldError> {
     let word = match word {
         0 => LeadWord::F,
         1 => LeadWord::I,
         2 => LeadWord::K,
-        v => return Err(format!("lead_word = {v} is not a CyclerefLeadWord")),
+        value => return Err(FieldError { field: "lead_word", value, expected: "CyclerefLeadWord" }),
     };
     Ok(Lead { word, mantissa, scale })
 }
@@ -747,8 +780,8 @@ impl CyclerefG92Params {
     ///
     /// # Errors
     ///
-    /// A message naming the field whose enum value is out of range.
-    pub fn cycle(&self) -> Result<G92Cycle, String> {
+    /// A [`FieldError`] naming the field whose enum value is out of range.
+    pub fn cycle(&self) -> Result<G92Cycle, FieldError> {
         let den = if self.start_angle_den == 0 { 1 } else { self.start_angle_den };
         Ok(G92Cycle {
             units: units_of(self.increment, self.inch)?,

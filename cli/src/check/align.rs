@@ -9,6 +9,7 @@ use std::io::BufRead;
 use cycleref::Units;
 
 use super::compare::{compare, only_kinds};
+use super::error::TraceError;
 use super::ours::{OurSteps, Regions};
 use super::report::Report;
 use super::trace::trace_steps;
@@ -20,7 +21,7 @@ pub(super) enum StreamError {
     /// Our program's (its kind kept).
     Ours(Failure),
     /// The trace's.
-    Theirs(String),
+    Theirs(TraceError),
 }
 
 /// The most moves in one group: a pass longer than this (a program of a
@@ -185,7 +186,7 @@ pub(super) fn compare_streams(
         report.add(vec![extra(&g.map_err(StreamError::Theirs)?.0)]);
     }
     if theirs.count == 0 {
-        return Err(StreamError::Theirs("the trace has no moves (reading R-CHECKEMPTY)".into()));
+        return Err(StreamError::Theirs(TraceError::Empty));
     }
     report.ours_moves = ours.count;
     report.theirs_moves = theirs.count;
@@ -509,7 +510,7 @@ mod tests {
     #[test]
     fn long_runs_are_grouped_in_pieces() {
         // One rapid and GROUP_MOVES + 5 feeds: two groups, the second of 5.
-        let steps = std::iter::once(Ok::<_, String>((step(Kind::Rapid, 0, 0, 1), 0))).chain(
+        let steps = std::iter::once(Ok::<_, TraceError>((step(Kind::Rapid, 0, 0, 1), 0))).chain(
             (1..=GROUP_MOVES + 5).map(|i| Ok((step(Kind::Feed, 0, -i64::try_from(i).unwrap_or(0), 2), 0))),
         );
         let mut g = Grouper::new(steps);

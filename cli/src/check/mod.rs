@@ -45,10 +45,13 @@
 //! This module holds the types they share (`Kind`, `Context`, `Step`,
 //! `Group`, `Divergence`) and the entry points: [`run`], [`check_bytes`],
 //! [`check_bytes_as`], and for `plot --trace` the trace's points and the
-//! marks of its divergences (`trace_points`, `marks`).
+//! marks of its divergences (`trace_points`, `marks`). Its errors are typed
+//! (`error`): a trace's `TraceError` and a block's `StepError`, each printed
+//! with the rule's stable kind.
 
 mod align;
 mod compare;
+mod error;
 mod ours;
 mod report;
 #[cfg(test)]
@@ -179,12 +182,11 @@ pub(crate) fn trace_points<'m>(
     trace: &Path,
     units: Units,
 ) -> Result<(String, impl Iterator<Item = Result<Point, Failure>> + 'm), Failure> {
-    let (name, source) = open_trace(trace).map_err(Failure::trace)?;
-    let steps = trace_steps(source, format_of(trace), &job.machine, units)
-        .map_err(|e| Failure::trace(format!("{name}: {e}")))?;
+    let (name, source) = open_trace(trace).map_err(|e| e.failure(None))?;
+    let steps =
+        trace_steps(source, format_of(trace), &job.machine, units).map_err(|e| e.failure(Some(&name)))?;
     let named = name.clone();
-    let points =
-        steps.map(move |s| s.map(|(step, _)| step.to).map_err(|e| Failure::trace(format!("{named}: {e}"))));
+    let points = steps.map(move |s| s.map(|(step, _)| step.to).map_err(|e| e.failure(Some(&named))));
     Ok((name, points))
 }
 
@@ -276,10 +278,10 @@ fn compare_file(
     tolerance: u64,
     cycles_only: bool,
 ) -> Result<Report, Failure> {
-    let (name, source) = open_trace(trace).map_err(Failure::trace)?;
+    let (name, source) = open_trace(trace).map_err(|e| e.failure(None))?;
     compare_streams(job, source, format, units, tolerance, cycles_only).map_err(|e| match e {
         StreamError::Ours(e) => e,
-        StreamError::Theirs(e) => Failure::trace(format!("{name}: {e}")),
+        StreamError::Theirs(e) => e.failure(Some(&name)),
     })
 }
 
@@ -327,7 +329,7 @@ pub fn check_bytes_as(
     compare_streams(job, Box::new(bytes), format, units, tolerance, false)
         .map_err(|e| match e {
             StreamError::Ours(e) => e,
-            StreamError::Theirs(e) => Failure::trace(e),
+            StreamError::Theirs(e) => e.failure(None),
         })
         .map_err(|e| program_error_first(job, e))
 }

@@ -18,25 +18,18 @@ use cycleref_spec::reader::{length_word, G32Call, Item, MotionMode, PlainMove};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
+use super::error::StepError;
 use super::{Context, Kind, Step, UNKNOWN};
 use crate::job::{Cause, Failure, Items, Job};
-
-/// A message naming a block's line and, when there is one, its word.
-fn at(b: &Block, w: Option<&Word>, msg: &str) -> String {
-    match w {
-        Some(w) => format!("line {}, word `{}`: {msg}", b.line, w.text()),
-        None => format!("line {}: {msg}", b.line),
-    }
-}
 
 /// The X distance of an I word in X-word increments: I is a radius, and
 /// may have one more decimal than the increment when X is a diameter (the
 /// `nc` contract, `format::arc_ik`).
-fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, String> {
+fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, StepError> {
     let f = machine.x_mode.factor();
     let n = &w.number();
     let bare = machine.profile.bare_length_is_increments && !machine.calculator_input;
-    let out = || at(b, Some(w), "the arc centre distance is outside the range table");
+    let out = || StepError::CentreOutOfRange { line: b.line, word: w.text().to_string() };
     let radius_increments = if !n.has_point() && bare {
         Decimal::from(n.integer().ok_or_else(out)?)
     } else {
@@ -45,11 +38,7 @@ fn arc_i(machine: &Machine, units: Units, b: &Block, w: &Word) -> Result<i64, St
     };
     let dx = radius_increments.checked_mul(Decimal::from(f)).ok_or_else(out)?;
     if !dx.fract().is_zero() {
-        return Err(at(
-            b,
-            Some(w),
-            "I is not a whole number of X increments (a radius; one more decimal than the increment only when X is a diameter)",
-        ));
+        return Err(StepError::CentreNotInIncrements { line: b.line, word: w.text().to_string() });
     }
     let dx = i64::try_from(dx.trunc()).map_err(|_| out())?;
     if dx.unsigned_abs() > 2 * MAX_LENGTH.unsigned_abs() {
@@ -94,7 +83,7 @@ impl<'m> Follow<'m> {
     /// tool is. A move before both axes are known is kept, with the axis
     /// not yet known as `UNKNOWN` (reading R-CHECKPARTIAL): it is compared
     /// on the axis it gives, and never dropped.
-    pub(super) fn plain(&mut self, m: &PlainMove<'_>) -> Result<Option<Step>, String> {
+    pub(super) fn plain(&mut self, m: &PlainMove<'_>) -> Result<Option<Step>, StepError> {
         let (from, to) = (self.held(m.from, m.x_mode), self.held(m.to, m.x_mode));
         self.at = to;
         if from == to {
@@ -113,7 +102,7 @@ impl<'m> Follow<'m> {
             // moves; were one given, it is refused, not compared as
             // something else.
             MotionMode::G32 | MotionMode::G92 => {
-                return Err(at(&m.block, None, "a thread block is no plain move"));
+                return Err(StepError::ThreadNotPlain { line: m.block.line });
             }
         };
         let centre = if kind.is_arc() { Some(self.centre(&m.block, from)?) } else { None };
@@ -155,27 +144,19 @@ impl<'m> Follow<'m> {
 
     /// An arc's centre from its I and K (an omitted one is 0); R is refused
     /// (reading R-CHECKARC), and an arc without I, K or R is an error.
-    fn centre(&self, b: &Block, from: Option<Point>) -> Result<Point, String> {
-        let pe = |e: cycleref_spec::ProgramError| e.to_string();
+    fn centre(&self, b: &Block, from: Option<Point>) -> Result<Point, StepError> {
+        let pe = StepError::Program;
         let g = b.all('G').find(|g| matches!(g.number().integer(), Some(2 | 3)));
         if let Some(r) = b.get('R').map_err(pe)? {
-            return Err(at(
-                b,
-                Some(r),
-                "an arc is compared by its centre: give I and K (the centre R implies is in general not a point \
-                 of the increment grid, reading R-CHECKARC)",
-            ));
+            return Err(StepError::ArcByRadius { line: b.line, word: r.text().to_string() });
         }
         let (i, k) = (b.get('I').map_err(pe)?, b.get('K').map_err(pe)?);
+        let word = || g.map(|g| g.text().to_string());
         if i.is_none() && k.is_none() {
-            return Err(at(b, g, "an arc without a centre: give I and K (reading R-CHECKARC)"));
+            return Err(StepError::ArcWithoutCentre { line: b.line, word: word() });
         }
         let Some(from) = from else {
-            return Err(at(
-                b,
-                g,
-                "an arc whose start point is not known (no earlier block gives both X and Z)",
-            ));
+            return Err(StepError::ArcStartUnknown { line: b.line, word: word() });
         };
         let dx = match i {
             Some(w) => arc_i(self.machine, self.units, b, w)?,
@@ -346,7 +327,11 @@ impl<'j> OurSteps<'j> {
                     let Item::Move(m) = item else { return Ok(None) };
                     return match follow.plain(m) {
                         Ok(step) => Ok(step.filter(|_| !cycles_only).map(|s| (s, segment))),
-                        Err(e) => Err(Failure::new(Cause::Check, format!("{}: {e}", job.name))),
+                        Err(e) => Err(Failure::with_kind(
+                            Cause::Check,
+                            e.stable_kind(),
+                            format!("{}: {e}", job.name),
+                        )),
                     };
                 };
                 let moves = job.expand(cycle)?;

@@ -15,13 +15,14 @@ use cycleref_spec::rs274::{CanonCall, CanonUnits};
 use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
+use super::error::TraceError;
 use super::ours::Follow;
 use super::{Context, Kind, Step, TraceFormat};
 
 /// The error of a trace's line `line` whose byte at offset `at` (from 0)
 /// is not UTF-8.
-fn not_utf8(line: usize, at: usize) -> String {
-    format!("line {line}, byte {}: not UTF-8 text", at + 1)
+fn not_utf8(line: usize, at: usize) -> TraceError {
+    TraceError::NotUtf8 { line, byte: at + 1 }
 }
 
 /// One line of a trace read from a stream, checked to be UTF-8 (the
@@ -30,12 +31,12 @@ fn trace_line<'b>(
     source: &mut dyn BufRead,
     buf: &'b mut Vec<u8>,
     line: usize,
-) -> Option<Result<&'b str, String>> {
+) -> Option<Result<&'b str, TraceError>> {
     buf.clear();
     match source.read_until(b'\n', buf) {
         Ok(0) => return None,
         Ok(_) => {}
-        Err(e) => return Some(Err(format!("line {line}: {e}"))),
+        Err(error) => return Some(Err(TraceError::CannotRead { line, error })),
     }
     if buf.last() == Some(&b'\n') {
         buf.pop();
@@ -89,14 +90,14 @@ impl<'t, 'm> NcTrace<'t, 'm> {
     }
 
     /// Reads lines until one moves; false at the end.
-    fn fill(&mut self) -> Result<bool, String> {
+    fn fill(&mut self) -> Result<bool, TraceError> {
         while self.ready.is_empty() {
             if self.at >= self.piece {
                 match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
                 {
                     Ok(false) => return Ok(false),
                     Ok(true) => {}
-                    Err(e) => return Err(format!("line {}: {e}", self.line + 1)),
+                    Err(error) => return Err(TraceError::CannotRead { line: self.line + 1, error }),
                 }
                 self.at = 0;
                 let piece = self.buf.get(..self.piece).unwrap_or_default();
@@ -120,30 +121,22 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
             }
             // A CSV header read as a program: say how to read it as a CSV.
-            let hint = |e: String| {
-                let header =
-                    text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
-                if header {
-                    format!("{e} (this looks like a CSV header: pass --trace-format csv)")
-                } else {
-                    e
-                }
-            };
+            let csv_header =
+                || text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
             // The line is one piece of the reader's, so that its numbers
             // are the trace's.
             while let Some(item) = self.reader.next_in(text) {
-                let step = match item.map_err(|e| hint(e.to_string()))? {
-                    Item::Move(m) => self.follow.plain(&m).map_err(hint)?,
+                let item = item.map_err(|error| TraceError::Program { error, csv_header: csv_header() })?;
+                let step = match item {
+                    Item::Move(m) => self
+                        .follow
+                        .plain(&m)
+                        .map_err(|error| TraceError::Step { error, csv_header: csv_header() })?,
                     Item::G32(call) => Some(self.follow.thread(&call)),
                     Item::Source(_) => None,
                     // The trace mode refuses every cycle's block; were one
                     // read, it is refused here rather than passed over.
-                    other => {
-                        return Err(format!(
-                            "line {}: a trace holds plain moves, not canned cycles",
-                            other.block().line
-                        ))
-                    }
+                    other => return Err(TraceError::CannedCycle { line: other.block().line }),
                 };
                 self.ready.extend(step);
             }
@@ -153,7 +146,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
 }
 
 impl Iterator for NcTrace<'_, '_> {
-    type Item = Result<(Step, u32), String>;
+    type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
         match self.fill() {
@@ -165,7 +158,7 @@ impl Iterator for NcTrace<'_, '_> {
 }
 
 /// The columns a CSV trace may have.
-const CSV_COLUMNS: [&str; 9] = ["motion", "x", "z", "lead", "q", "i", "k", "cx", "cz"];
+pub(super) const CSV_COLUMNS: [&str; 9] = ["motion", "x", "z", "lead", "q", "i", "k", "cx", "cz"];
 
 /// The vendor's toolpath from a CSV with a header naming its columns
 /// (`motion`, `x`, `z`; `lead`, `q`; `i`, `k` or `cx`, `cz` for arcs).
@@ -195,7 +188,7 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
         mut source: Box<dyn BufRead + 't>,
         machine: &'m Machine,
         units: Units,
-    ) -> Result<CsvTrace<'t, 'm>, String> {
+    ) -> Result<CsvTrace<'t, 'm>, TraceError> {
         let mut buf = Vec::new();
         let mut cols = vec!["motion".to_string(), "x".into(), "z".into()];
         let mut h = 0;
@@ -209,10 +202,7 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
         }
         let col = |name: &str| cols.iter().position(|c| c == name);
         let (Some(cm), Some(cx), Some(cz)) = (col("motion"), col("x"), col("z")) else {
-            return Err(format!(
-                "CSV line {}: the header must name the columns motion, x and z (lead, q, i, k, cx and cz are optional)",
-                h + 1
-            ));
+            return Err(TraceError::CsvHeaderIncomplete { line: h + 1 });
         };
         let (cl, cq, ci, ck, ccx, ccz) = (col("lead"), col("q"), col("i"), col("k"), col("cx"), col("cz"));
         Ok(CsvTrace {
@@ -237,28 +227,24 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
     }
 
     /// The columns the header at line `h` (0-based) names.
-    fn columns(h: usize, header: &str) -> Result<Vec<String>, String> {
+    fn columns(h: usize, header: &str) -> Result<Vec<String>, TraceError> {
         let cols: Vec<String> = header.split(',').map(|c| c.trim().to_ascii_lowercase()).collect();
         for (n, c) in cols.iter().enumerate() {
             if !CSV_COLUMNS.contains(&c.as_str()) {
-                return Err(format!(
-                    "CSV line {}: unknown column `{c}` (the columns are {})",
-                    h + 1,
-                    CSV_COLUMNS.join(", ")
-                ));
+                return Err(TraceError::CsvUnknownColumn { line: h + 1, column: c.clone() });
             }
             if cols[..n].contains(c) {
-                return Err(format!("CSV line {}: the column `{c}` appears twice", h + 1));
+                return Err(TraceError::CsvColumnTwice { line: h + 1, column: c.clone() });
             }
         }
         Ok(cols)
     }
 
     /// The step of CSV line `n` (1-based), if it moves.
-    fn row(&mut self, n: usize, line: &str) -> Result<Option<Step>, String> {
+    fn row(&mut self, n: usize, line: &str) -> Result<Option<Step>, TraceError> {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
         if f.len() > self.cols.len() {
-            return Err(format!("CSV line {n}: {} fields, the header names {}", f.len(), self.cols.len()));
+            return Err(TraceError::CsvTooManyFields { line: n, fields: f.len(), columns: self.cols.len() });
         }
         let get = |c: Option<usize>| c.and_then(|c| f.get(c).copied()).filter(|s| !s.is_empty());
         let motion = get(Some(self.cm)).unwrap_or("");
@@ -268,35 +254,26 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
             "thread" | "g32" => Kind::Thread,
             "arc-cw" | "g02" | "g2" => Kind::ArcCw,
             "arc-ccw" | "g03" | "g3" => Kind::ArcCcw,
-            "arc" => {
-                return Err(format!(
-                    "CSV line {n}: motion `arc` needs a direction: arc-cw (G02) or arc-ccw (G03)"
-                ))
-            }
-            _ => {
-                return Err(format!(
-                "CSV line {n}: unknown motion `{motion}` (rapid, feed, thread, arc-cw, arc-ccw; or G00, G01, \
-                 G32, G02, G03)"
-            ))
-            }
+            "arc" => return Err(TraceError::CsvArcDirection { line: n }),
+            _ => return Err(TraceError::CsvUnknownMotion { line: n, motion: motion.to_string() }),
         };
-        let decimal = |s: &str, what: &str| -> Result<Decimal, String> {
+        let decimal = |s: &str, column: &'static str| -> Result<Decimal, TraceError> {
             let ok = !s.is_empty()
                 && s.trim_start_matches(['-', '+']).chars().all(|c| c.is_ascii_digit() || c == '.')
                 && s.trim_start_matches(['-', '+']).chars().any(|c| c.is_ascii_digit());
             let d = if ok { Decimal::from_str_exact(s).ok() } else { None };
-            d.ok_or_else(|| format!("CSV line {n}: {what} `{s}` is not a decimal"))
+            d.ok_or_else(|| TraceError::CsvNotADecimal { line: n, column, value: s.to_string() })
         };
         // A length in increments times `factor`, exact, within the range table.
-        let length = |s: Option<&str>, what: &str, factor: i64| -> Result<i64, String> {
-            let s = s.ok_or_else(|| format!("CSV line {n}: {what} is missing"))?;
-            let out = || format!("CSV line {n}: {what} `{s}` is outside the range table");
-            let v = decimal(s, what)?
+        let length = |s: Option<&str>, column: &'static str, factor: i64| -> Result<i64, TraceError> {
+            let s = s.ok_or(TraceError::CsvMissing { line: n, column })?;
+            let out = || TraceError::CsvOutOfRange { line: n, column, value: s.to_string() };
+            let v = decimal(s, column)?
                 .checked_mul(Decimal::from(self.units.per_unit()))
                 .and_then(|v| v.checked_mul(Decimal::from(factor)))
                 .ok_or_else(out)?;
             if !v.fract().is_zero() {
-                return Err(format!("CSV line {n}: {what} `{s}` is not a whole number of increments"));
+                return Err(TraceError::CsvNotInIncrements { line: n, column, value: s.to_string() });
             }
             let v = i64::try_from(v.trunc()).map_err(|_| out())?;
             if v.unsigned_abs() > MAX_LENGTH.unsigned_abs() * factor.unsigned_abs() {
@@ -306,40 +283,30 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
         };
         let to = Point::new(length(get(Some(self.cx)), "x", 1)?, length(get(Some(self.cz)), "z", 1)?);
         let lead = match get(self.cl) {
-            Some(s) if kind == Kind::Thread => Some(parse_lead(s).ok_or_else(|| {
-                format!("CSV line {n}: lead `{s}` (write F6.0, I20 or 6.0, within the range tables)")
-            })?),
-            Some(s) => return Err(format!("CSV line {n}: lead `{s}` on a row that is not a thread move")),
-            None if kind == Kind::Thread => return Err(format!("CSV line {n}: a thread row needs its lead")),
+            Some(s) if kind == Kind::Thread => {
+                Some(parse_lead(s).ok_or_else(|| TraceError::CsvBadLead { line: n, value: s.to_string() })?)
+            }
+            Some(s) => {
+                return Err(TraceError::CsvNotAThread { line: n, column: "lead", value: s.to_string() })
+            }
+            None if kind == Kind::Thread => return Err(TraceError::CsvThreadWithoutLead { line: n }),
             None => None,
         };
         let angle = match get(self.cq) {
             Some(s) if kind == Kind::Thread => csv_angle(s, n)?,
-            Some(s) => return Err(format!("CSV line {n}: q `{s}` on a row that is not a thread move")),
+            Some(s) => return Err(TraceError::CsvNotAThread { line: n, column: "q", value: s.to_string() }),
             None => StartAngle::ZERO,
         };
         let relative = get(self.ci).is_some() || get(self.ck).is_some();
         let absolute = get(self.ccx).is_some() || get(self.ccz).is_some();
         let centre = match (kind.is_arc(), relative, absolute) {
             (false, false, false) => None,
-            (false, _, _) => {
-                return Err(format!(
-                    "CSV line {n}: an arc centre on a row that is not an arc (arc-cw or arc-ccw)"
-                ))
-            }
-            (true, false, false) => {
-                return Err(format!(
-                    "CSV line {n}: an arc without a centre: give i and k, or cx and cz (reading R-CHECKARC)"
-                ))
-            }
-            (true, true, true) => {
-                return Err(format!("CSV line {n}: give the centre once: i and k, or cx and cz, not both"))
-            }
+            (false, _, _) => return Err(TraceError::CsvCentreOffArc { line: n }),
+            (true, false, false) => return Err(TraceError::CsvArcWithoutCentre { line: n }),
+            (true, true, true) => return Err(TraceError::CsvCentreTwice { line: n }),
             (true, true, false) => {
                 let Some(p) = self.here else {
-                    return Err(format!(
-                    "CSV line {n}: i and k are from the arc's start, and no earlier row gives it (use cx, cz)"
-                ));
+                    return Err(TraceError::CsvArcStartUnknown { line: n });
                 };
                 let di = match get(self.ci) {
                     Some(s) => length(Some(s), "i", self.machine.x_mode.factor())?,
@@ -368,7 +335,7 @@ impl<'t, 'm> CsvTrace<'t, 'm> {
 }
 
 impl Iterator for CsvTrace<'_, '_> {
-    type Item = Result<(Step, u32), String>;
+    type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
         loop {
@@ -390,9 +357,8 @@ impl Iterator for CsvTrace<'_, '_> {
 }
 
 /// A CSV start angle: thousandths of a degree, multiples of 0.1, below 360°.
-fn csv_angle(s: &str, n: usize) -> Result<StartAngle, String> {
-    let bad =
-        || format!("CSV line {n}: q `{s}` must be 0 to 360000 thousandths of a degree, in steps of 0.1");
+fn csv_angle(s: &str, n: usize) -> Result<StartAngle, TraceError> {
+    let bad = || TraceError::CsvBadStartAngle { line: n, value: s.to_string() };
     if !s.chars().all(|c| c.is_ascii_digit() || c == '.') || !s.chars().any(|c| c.is_ascii_digit()) {
         return Err(bad());
     }
@@ -485,43 +451,31 @@ impl CanonTrace<'_> {
     }
 
     /// A printed length in increments (X doubled: a diameter).
-    fn increments(&self, v: Decimal, factor: i64, what: &str) -> Result<i64, String> {
-        let scaled = v
+    fn increments(&self, value: Decimal, factor: i64, what: &'static str) -> Result<i64, TraceError> {
+        let line = self.line;
+        let scaled = value
             .checked_mul(Decimal::from(self.units.per_unit() * factor))
             .filter(|s| s.fract().is_zero())
-            .ok_or_else(|| format!("line {}: {what} {v} is not a whole number of increments", self.line))?;
+            .ok_or(TraceError::CanonNotInIncrements { line, what, value })?;
         i64::try_from(scaled)
             .ok()
             .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
-            .ok_or_else(|| format!("line {}: {what} {v} is beyond the range table", self.line))
+            .ok_or(TraceError::CanonOutOfRange { line, what, value })
     }
 
     /// What every motion must meet: the program's unit, no rotation, and
     /// the other axes where they started.
-    fn motion_frame(&mut self, name: &str, others: [Decimal; 4]) -> Result<(), String> {
+    fn motion_frame(&mut self, call: &'static str, others: [Decimal; 4]) -> Result<(), TraceError> {
         let line = self.line;
         let program = match self.units.unit {
             InputUnit::Metric => CanonUnits::Mm,
             InputUnit::Inch => CanonUnits::Inches,
         };
         if self.length_units != program {
-            let unit = |u: CanonUnits| match u {
-                CanonUnits::Mm => "CANON_UNITS_MM",
-                CanonUnits::Inches => "CANON_UNITS_INCHES",
-            };
-            return Err(format!(
-                "line {line}: {name} in {} while the program is in {}: write the trace in the program's unit \
-                 (USE_LENGTH_UNITS)",
-                unit(self.length_units),
-                unit(program)
-            ));
+            return Err(TraceError::CanonUnits { line, call, trace: self.length_units, program });
         }
         if !self.rotation.is_zero() {
-            return Err(format!(
-                "line {line}: {name} under an XY rotation of {} degrees: a trace is compared unrotated \
-                 (SET_XY_ROTATION(0))",
-                self.rotation
-            ));
+            return Err(TraceError::CanonRotation { line, call, degrees: self.rotation });
         }
         match self.others {
             None => self.others = Some(others),
@@ -530,23 +484,26 @@ impl CanonTrace<'_> {
                 let names = ["Y", "A", "B", "C"];
                 // `first != others`: some axis differs.
                 let i = (0..4).find(|&i| first[i] != others[i]).unwrap_or(0);
-                return Err(format!(
-                    "line {line}: {name} moves {} from {} to {}: a lathe trace moves X and Z only",
-                    names[i], first[i], others[i]
-                ));
+                return Err(TraceError::CanonOtherAxis {
+                    line,
+                    call,
+                    axis: names[i],
+                    from: first[i],
+                    to: others[i],
+                });
             }
         }
         Ok(())
     }
 
-    fn step(&mut self) -> Result<Option<Step>, String> {
+    fn step(&mut self) -> Result<Option<Step>, TraceError> {
         loop {
             self.line += 1;
             let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
                 None => return Ok(None),
                 Some(t) => t?.to_string(),
             };
-            let call = cycleref_spec::rs274::call(&text, self.line).map_err(|e| e.to_string())?;
+            let call = cycleref_spec::rs274::call(&text, self.line).map_err(TraceError::Canon)?;
             let (kind, to, centre) = match call {
                 None | Some(CanonCall::Skipped) => continue,
                 Some(CanonCall::Units(u)) => {
@@ -562,8 +519,7 @@ impl CanonTrace<'_> {
                     continue;
                 }
                 Some(CanonCall::StartSync { pitch }) => {
-                    let bad =
-                        || format!("line {}: pitch {pitch} is not a lead of at most 6 decimals", self.line);
+                    let bad = || TraceError::CanonPitch { line: self.line, pitch };
                     let mut mantissa = pitch
                         .checked_mul(Decimal::from(1_000_000))
                         .filter(|s| s.fract().is_zero())
@@ -595,27 +551,15 @@ impl CanonTrace<'_> {
                 Some(CanonCall::Arc { x, z, cx, cz, rotation, others }) => {
                     self.motion_frame("ARC_FEED", others)?;
                     if !self.plane_xz {
-                        return Err(format!(
-                            "line {}: ARC_FEED outside the XZ plane (SELECT_PLANE(CANON_PLANE_XZ), G18)",
-                            self.line
-                        ));
+                        return Err(TraceError::CanonArcPlane { line: self.line });
                     }
                     if self.pitch.is_some() {
-                        return Err(format!(
-                            "line {}: ARC_FEED while synchronised: a threaded arc is not a move the check reads",
-                            self.line
-                        ));
+                        return Err(TraceError::CanonThreadedArc { line: self.line });
                     }
                     let kind = match rotation {
                         -1 => Kind::ArcCw,
                         1 => Kind::ArcCcw,
-                        _ => {
-                            return Err(format!(
-                            "line {}: ARC_FEED of rotation {rotation}: an arc of more than one turn (P) is \
-                                 not a move the check reads",
-                            self.line
-                        ))
-                        }
+                        _ => return Err(TraceError::CanonArcTurns { line: self.line, rotation }),
                     };
                     let to = Point::new(self.increments(x, 2, "X")?, self.increments(z, 1, "Z")?);
                     let centre = Point::new(
@@ -639,7 +583,7 @@ impl CanonTrace<'_> {
 }
 
 impl Iterator for CanonTrace<'_> {
-    type Item = Result<(Step, u32), String>;
+    type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
         self.step().transpose().map(|r| r.map(|s| (s, 0)))
@@ -647,16 +591,17 @@ impl Iterator for CanonTrace<'_> {
 }
 
 /// The trace's name and a buffered reader of it (`-`: standard input).
-pub(super) fn open_trace(trace: &Path) -> Result<(String, Box<dyn BufRead>), String> {
+pub(super) fn open_trace(trace: &Path) -> Result<(String, Box<dyn BufRead>), TraceError> {
     if trace == Path::new("-") {
         return Ok((crate::job::STDIN_NAME.to_string(), Box::new(std::io::stdin().lock())));
     }
-    let file = std::fs::File::open(trace).map_err(|e| format!("{}: {e}", trace.display()))?;
+    let file = std::fs::File::open(trace)
+        .map_err(|error| TraceError::CannotOpen { path: trace.display().to_string(), error })?;
     Ok((trace.display().to_string(), Box::new(std::io::BufReader::with_capacity(1 << 16, file))))
 }
 
 /// Steps with their segments, read as they are taken.
-type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), String>> + 't>;
+type TraceSteps<'t> = Box<dyn Iterator<Item = Result<(Step, u32), TraceError>> + 't>;
 
 /// The vendor's steps, read as they are taken from `source`: an expanded
 /// program, a CSV, or LinuxCNC's canonical trace (`rs274`). The text must be UTF-8 (a byte-order mark is
@@ -666,10 +611,10 @@ pub(super) fn trace_steps<'t, 'm: 't>(
     format: TraceFormat,
     machine: &'m Machine,
     units: Units,
-) -> Result<TraceSteps<'t>, String> {
+) -> Result<TraceSteps<'t>, TraceError> {
     Ok(if format == TraceFormat::Rs274 {
         if machine.profile.dialect != Dialect::LinuxCnc {
-            return Err("an rs274 trace (.canon) is LinuxCNC's: compare it with --profile linuxcnc".into());
+            return Err(TraceError::CanonProfile);
         }
         Box::new(CanonTrace::new(source, units))
     } else if format == TraceFormat::Csv {

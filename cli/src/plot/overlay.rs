@@ -74,7 +74,14 @@ pub(super) fn overlay(
                 trace.display()
             )))
         }
-        Err(e) => return Err(Failure::trace(format!("{}: {e}", trace.display()))),
+        // As `check` names a trace it cannot open (`trace:cannot_open`).
+        Err(e) => {
+            return Err(Failure::with_kind(
+                crate::job::Cause::Trace,
+                "trace:cannot_open",
+                format!("{}: {e}", trace.display()),
+            ))
+        }
     }
     let (name, points) = trace_points(job, trace, units)?;
     let widened: Vec<(usize, usize)> = cycles
