@@ -579,7 +579,10 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             Ok(u8::from(!summary.all_passed()))
         }
         Command::Vectors { count, seed, out } => {
-            print(&vectors::run(count, seed, &out).map_err(|e| Failure::new(Cause::Vectors, e))?)?;
+            print(
+                &vectors::run(count, seed, &out)
+                    .map_err(|e| Failure::with_kind(Cause::Vectors, e.stable_kind(), e.to_string()))?,
+            )?;
             Ok(0)
         }
     }

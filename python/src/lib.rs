@@ -543,7 +543,8 @@ fn check(
 /// `vectors`: the text of case `index` of the corpus of `seed`.
 #[pyfunction]
 fn vector_case(py: Python<'_>, seed: u64, index: u32) -> PyResult<String> {
-    py.detach(|| cycleref_cli::vectors::case_text(seed, index)).map_err(PyValueError::new_err)
+    py.detach(|| cycleref_cli::vectors::case_text(seed, index))
+        .map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 /// The native module.

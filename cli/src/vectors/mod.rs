@@ -43,7 +43,7 @@
 //!    `index.json` lists them all.
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use cycleref::{IncrementSystem, InputUnit, Units, XMode};
 use cycleref_spec::{read, ErrorKind, Machine, ProfileName, ProgramError};
@@ -80,15 +80,12 @@ const ATTEMPTS: u32 = 400;
 /// A message naming the case when the engine and the reference model
 /// disagree on it, when no draft of its template fits, or when a file
 /// cannot be written.
-pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
+pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, VectorsError> {
     if out.exists() && !out.is_dir() {
-        return Err(format!(
-            "--out {}: exists and is not a directory (vectors writes a directory of JSON files)",
-            out.display()
-        ));
+        return Err(VectorsError::NotADirectory { out: out.to_path_buf() });
     }
     std::fs::create_dir_all(out)
-        .map_err(|e| format!("--out {}: cannot create the directory: {e}", out.display()))?;
+        .map_err(|source| VectorsError::CannotCreate { out: out.to_path_buf(), source })?;
     let mut entries = Vec::new();
     let mut tag_counts: BTreeMap<String, u32> = BTreeMap::new();
     let mut files = BTreeSet::new();
@@ -97,7 +94,7 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
         let case = make_case(seed, index)?;
         let file = format!("{}.json", case.id);
         std::fs::write(out.join(&file), to_text(&case.json))
-            .map_err(|e| format!("{}: cannot write: {e}", out.join(&file).display()))?;
+            .map_err(|source| VectorsError::CannotWrite { path: out.join(&file), source })?;
         for t in &case.tags {
             *tag_counts.entry(t.clone()).or_default() += 1;
         }
@@ -119,7 +116,7 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
     remove_stale(out, &files)?;
     let index = IndexJson { schema: INDEX_SCHEMA, seed, count, tags: OneLine(tag_counts), cases: entries };
     std::fs::write(out.join("index.json"), to_text(&index))
-        .map_err(|e| format!("{}: cannot write: {e}", out.join("index.json").display()))?;
+        .map_err(|source| VectorsError::CannotWrite { path: out.join("index.json"), source })?;
     Ok(format!(
         "wrote {count} cases ({valid} with moves, {refused} refused) and index.json to {}\n",
         out.display()
@@ -140,15 +137,16 @@ pub fn run(count: u32, seed: u64, out: &Path) -> Result<String, String> {
 /// let case: serde_json::Value = serde_json::from_str(&cycleref_cli::vectors::case_text(1, 2)?).unwrap();
 /// assert_eq!(case["id"], "case-0002");
 /// assert!(case["expect"]["error"]["kind"].is_string());
-/// # Ok::<(), String>(())
+/// # Ok::<(), cycleref_cli::vectors::VectorsError>(())
 /// ```
-pub fn case_text(seed: u64, index: u32) -> Result<String, String> {
+pub fn case_text(seed: u64, index: u32) -> Result<String, VectorsError> {
     Ok(to_text(&make_case(seed, index)?.json))
 }
 
 /// Removes `case-NNNN.json` files of an earlier, larger run.
-fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
-    let dir = std::fs::read_dir(out).map_err(|e| format!("{}: {e}", out.display()))?;
+fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), VectorsError> {
+    let dir =
+        std::fs::read_dir(out).map_err(|source| VectorsError::Io { path: out.to_path_buf(), source })?;
     for entry in dir.flatten() {
         let name = entry.file_name().to_string_lossy().into_owned();
         let is_case = name
@@ -156,7 +154,8 @@ fn remove_stale(out: &Path, keep: &BTreeSet<String>) -> Result<(), String> {
             .and_then(|n| n.strip_suffix(".json"))
             .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
         if is_case && !keep.contains(&name) {
-            std::fs::remove_file(entry.path()).map_err(|e| format!("{}: {e}", entry.path().display()))?;
+            std::fs::remove_file(entry.path())
+                .map_err(|source| VectorsError::Io { path: entry.path(), source })?;
         }
     }
     Ok(())
@@ -436,7 +435,7 @@ struct Evaluated {
 /// # Errors
 ///
 /// A message naming the case when the engine and the reference differ.
-fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String> {
+fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, VectorsError> {
     let mut tags = BTreeSet::new();
     let program = match read(text, machine) {
         Ok(p) => p,
@@ -448,18 +447,20 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, String
         let Some(cycle) = Cycle::of(item) else { continue };
         let engine = expand(cycle, Engine::Impl).map(Iterator::collect::<Vec<_>>);
         let reference = expand(cycle, Engine::Spec).map(Iterator::collect::<Vec<_>>);
-        cycleref_spec::differ::compare(&engine, &reference).map_err(|d| {
-            format!(
-                "{id}: {} at line {}: the engine and the reference model differ: {d}",
-                cycle.code(),
-                cycle.line()
-            )
+        cycleref_spec::differ::compare(&engine, &reference).map_err(|difference| {
+            VectorsError::EnginesDiffer {
+                id: id.to_string(),
+                code: cycle.code(),
+                line: cycle.line(),
+                difference: Box::new(difference),
+            }
         })?;
         match engine {
             Ok(moves) => {
                 cycle.tags(&moves, &mut |t| tag(&mut tags, t));
                 count += moves.len();
-                let typed = expand(cycle, Engine::Impl).map_err(|e| format!("{id}: {e}"))?;
+                let typed = expand(cycle, Engine::Impl)
+                    .map_err(|error| VectorsError::Expansion { id: id.to_string(), error })?;
                 cycles.push(CycleJson::new(cycle, typed));
             }
             Err(e) => {
@@ -489,7 +490,7 @@ struct Case {
 
 /// Case `index`: drafts of its template until one is what the template's
 /// entry expects.
-fn make_case(seed: u64, index: u32) -> Result<Case, String> {
+fn make_case(seed: u64, index: u32) -> Result<Case, VectorsError> {
     let id = format!("case-{index:04}");
     let mut rng = Rng::for_case(seed, index);
     let template = template(index);
@@ -497,9 +498,7 @@ fn make_case(seed: u64, index: u32) -> Result<Case, String> {
         let draft = (template.generate)(&mut rng);
         let (toml, machine_json) = draft.ctx.settings();
         let mut machine = Machine::new(draft.ctx.profile);
-        machine
-            .apply_toml(&toml)
-            .map_err(|e| format!("{id}: the generated parameter file is refused: {e}"))?;
+        machine.apply_toml(&toml).map_err(|error| VectorsError::ParamsRefused { id: id.clone(), error })?;
         let mut program = draft.lines.join("\n");
         program.push('\n');
         let ev = evaluate(&id, &machine, &program)?;
@@ -578,7 +577,7 @@ fn make_case(seed: u64, index: u32) -> Result<Case, String> {
         };
         return Ok(Case { id, description, tags, kind, json });
     }
-    Err(format!("{id}: no draft of its template ({}) fitted in {ATTEMPTS} attempts", template.id))
+    Err(VectorsError::NoDraftFits { id, template: template.id, attempts: ATTEMPTS })
 }
 
 // ---- the documents ----
@@ -716,6 +715,139 @@ mod tests {
                 Expected::Refused(_) => "refuse:",
             };
             assert!(t.tags.first().is_some_and(|tag| tag.starts_with(prefix)), "{}", t.id);
+        }
+    }
+}
+
+/// Why the corpus cannot be made or written.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum VectorsError {
+    /// `--out` names something that is not a directory.
+    NotADirectory {
+        /// The path given.
+        out: PathBuf,
+    },
+    /// The output directory cannot be made.
+    CannotCreate {
+        /// The path given.
+        out: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// A file cannot be written.
+    CannotWrite {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The output directory cannot be listed, or an earlier case removed.
+    Io {
+        /// The directory or file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The engine and the reference model differ on a case's cycle: a
+    /// defect of this project, never a valid corpus.
+    EnginesDiffer {
+        /// The case.
+        id: String,
+        /// The cycle's G code.
+        code: &'static str,
+        /// Its line.
+        line: usize,
+        /// How they differ.
+        difference: Box<cycleref_spec::differ::Difference>,
+    },
+    /// A cycle that expanded once did not the second time (not expected).
+    Expansion {
+        /// The case.
+        id: String,
+        /// The alarm.
+        error: cycleref::CycleError,
+    },
+    /// The parameter file a template generated is refused (a defect of the
+    /// template).
+    ParamsRefused {
+        /// The case.
+        id: String,
+        /// Why.
+        error: cycleref_spec::profile::ParamsError,
+    },
+    /// No draft of a case's template was what the template expects.
+    NoDraftFits {
+        /// The case.
+        id: String,
+        /// The template.
+        template: &'static str,
+        /// The drafts tried.
+        attempts: u32,
+    },
+}
+
+impl VectorsError {
+    /// The stable kind: `vectors:not_a_directory`, `vectors:cannot_create`,
+    /// `vectors:cannot_write`, `vectors:io`, `vectors:engines_differ`,
+    /// `vectors:expansion`, `vectors:params_refused`,
+    /// `vectors:no_draft_fits`.
+    #[must_use]
+    pub fn stable_kind(&self) -> &'static str {
+        match self {
+            VectorsError::NotADirectory { .. } => "vectors:not_a_directory",
+            VectorsError::CannotCreate { .. } => "vectors:cannot_create",
+            VectorsError::CannotWrite { .. } => "vectors:cannot_write",
+            VectorsError::Io { .. } => "vectors:io",
+            VectorsError::EnginesDiffer { .. } => "vectors:engines_differ",
+            VectorsError::Expansion { .. } => "vectors:expansion",
+            VectorsError::ParamsRefused { .. } => "vectors:params_refused",
+            VectorsError::NoDraftFits { .. } => "vectors:no_draft_fits",
+        }
+    }
+}
+
+impl std::fmt::Display for VectorsError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            VectorsError::NotADirectory { out } => write!(
+                f,
+                "--out {}: exists and is not a directory (vectors writes a directory of JSON files)",
+                out.display()
+            ),
+            VectorsError::CannotCreate { out, source } => {
+                write!(f, "--out {}: cannot create the directory: {source}", out.display())
+            }
+            VectorsError::CannotWrite { path, source } => {
+                write!(f, "{}: cannot write: {source}", path.display())
+            }
+            VectorsError::Io { path, source } => write!(f, "{}: {source}", path.display()),
+            VectorsError::EnginesDiffer { id, code, line, difference } => {
+                write!(
+                    f,
+                    "{id}: {code} at line {line}: the engine and the reference model differ: {difference}"
+                )
+            }
+            VectorsError::Expansion { id, error } => write!(f, "{id}: {error}"),
+            VectorsError::ParamsRefused { id, error } => {
+                write!(f, "{id}: the generated parameter file is refused: {error}")
+            }
+            VectorsError::NoDraftFits { id, template, attempts } => {
+                write!(f, "{id}: no draft of its template ({template}) fitted in {attempts} attempts")
+            }
+        }
+    }
+}
+
+impl std::error::Error for VectorsError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            VectorsError::CannotCreate { source, .. }
+            | VectorsError::CannotWrite { source, .. }
+            | VectorsError::Io { source, .. } => Some(source),
+            VectorsError::ParamsRefused { error, .. } => Some(error),
+            VectorsError::Expansion { error, .. } => Some(error),
+            _ => None,
         }
     }
 }
