@@ -9,9 +9,10 @@
 //! cycle except `plot`, whose panels draw each kind's geometry. The
 //! modules:
 //!
-//! * [`job`]: the program, its machine (profile, parameter file, options)
-//!   and the failures a command can end in ([`Failure`], each with its
-//!   stable kind, printed `error[KIND]: MESSAGE`);
+//! * [`job`]: the program and its machine (profile, parameter file,
+//!   options);
+//! * [`failure`]: the failures a command can end in ([`Failure`], each
+//!   with its stable kind, printed `error[KIND]: MESSAGE`);
 //! * [`output`]: the streaming writers of `expand` (nc, json, jsonl) and
 //!   `passes`;
 //! * [`json`]: the typed documents (`cycleref-moves/1`, and the types
@@ -35,6 +36,7 @@
 
 pub mod check;
 pub mod conform;
+pub mod failure;
 pub mod format;
 pub mod job;
 pub mod json;
