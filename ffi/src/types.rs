@@ -638,6 +638,7 @@ impl CyclerefG76Params {
             lead,
             run_out,
             pass_limit: if self.pass_limit == 0 { DEFAULT_PASS_LIMIT } else { self.pass_limit },
+            readings: cycleref::CycleReadings::DEFAULT,
         })
     }
 }
@@ -768,6 +769,7 @@ impl CyclerefG92Params {
             starts: self.starts,
             start_angle: StartAngle::ZERO.plus(StartAngle { num: self.start_angle_num, den }),
             face: self.face != 0,
+            readings: cycleref::CycleReadings::DEFAULT,
         })
     }
 }
