@@ -24,7 +24,7 @@ profile's own: IS-B, or IS-C on ``linuxcnc``), ``inch``, ``radius`` (X as a radi
 ``params`` (the path of a parameter file, as ``--params``), ``readings``
 (a mapping of reading ids to values, as ``--reading ID=VALUE``, e.g.
 ``readings={"R-RUNOUT": "gsk988-only"}``; ``cycleref readings`` lists
-them, and an unknown id or value raises :class:`Error` naming the valid
+them, and an unknown id or value raises :class:`ValueError` naming the valid
 ones) and ``engine``
 (``"impl"``, the fixed-point engine, or ``"spec"``, the exact reference
 model; both give the same moves). A program is its text (``str`` or
