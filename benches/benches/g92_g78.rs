@@ -41,6 +41,7 @@ fn o0012(starts: u32) -> G92Cycle {
         starts,
         start_angle: StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 

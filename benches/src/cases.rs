@@ -85,6 +85,7 @@ pub fn passes(rough: u64) -> G76Cycle {
         lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },
         run_out: RunOut::Amounts { short: 1_000, long: 2_000 },
         pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 
@@ -118,6 +119,7 @@ pub fn eight_start() -> G76Cycle {
         lead: Lead { word: LeadWord::F, mantissa: 12, scale: 0 },
         run_out: RunOut::Amounts { short: 500, long: 1_500 },
         pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 
@@ -149,6 +151,7 @@ pub fn flat(rough: u64) -> G76Cycle {
         lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },
         run_out: RunOut::Amounts { short: 1_000, long: 2_000 },
         pass_limit: 1_000_000,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 

@@ -56,10 +56,30 @@ pub struct Options {
     pub radius: bool,
     /// `--params`.
     pub params: Option<PathBuf>,
+    /// `--reading ID=VALUE`, in order; applied after the parameter file's
+    /// `[readings]`, so the command line wins.
+    pub readings: Vec<String>,
     /// `--engine`.
     pub engine: Engine,
     /// The program file; `None` or `-` for standard input.
     pub file: Option<PathBuf>,
+}
+
+/// The readings of `machine` that differ from its profile's defaults
+/// (issue 34), `(id, value)` in the order `cycleref readings` lists them:
+/// what the `check` report and the JSON documents name.
+#[must_use]
+pub fn readings_in_force(machine: &Machine) -> Vec<(&'static str, &'static str)> {
+    machine.readings.non_default(machine.profile.name)
+}
+
+/// The `readings` object of the JSON documents: `None` (the key left out)
+/// under the defaults, so that their documents stay as they were.
+#[must_use]
+pub fn readings_json(
+    readings: &[(&'static str, &'static str)],
+) -> Option<std::collections::BTreeMap<&'static str, &'static str>> {
+    (!readings.is_empty()).then(|| readings.iter().copied().collect())
 }
 
 /// The name standard input goes by in messages, titles and documents.
@@ -857,6 +877,12 @@ pub fn machine(opts: &Options) -> Result<Machine, Failure> {
     }
     if opts.radius {
         machine.x_mode = XMode::Radius;
+    }
+    for pair in &opts.readings {
+        machine
+            .readings
+            .apply_pair(pair)
+            .map_err(|e| Failure::new(Cause::Params, format!("--reading {pair}: {e}")))?;
     }
     Ok(machine)
 }

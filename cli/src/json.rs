@@ -295,6 +295,10 @@ pub struct MovesDocument<'n, C> {
     pub file: &'n str,
     /// The units of every length.
     pub units: UnitsJson,
+    /// The readings in force when they differ from the defaults (issue
+    /// 34); left out otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub readings: Option<std::collections::BTreeMap<&'static str, &'static str>>,
     /// The cycles.
     pub cycles: C,
 }

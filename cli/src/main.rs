@@ -113,6 +113,10 @@ enum Command {
         /// With --pairs: a parameter file for the pairs that name no profile.
         #[arg(long, value_name = "FILE", requires = "pairs")]
         params: Option<PathBuf>,
+        /// With --pairs: a reading for every pair (repeatable, as for
+        /// `check`; a vectors corpus carries its own machine).
+        #[arg(long = "reading", value_name = "ID=VALUE", requires = "pairs")]
+        readings: Vec<String>,
         /// A shell command run per case: `{program}` (the case's program
         /// file), `{params}` (its machine as a parameter file), `{profile}`
         /// and `{trace}` (where to write the trace) are replaced; exit
@@ -155,6 +159,14 @@ enum Command {
         #[arg(long = "line", value_name = "N")]
         lines: Vec<usize>,
     },
+    /// List the selectable readings (issue 34): one line each, its id, its
+    /// values with the default marked `*`, the profiles on which it changes
+    /// anything, and the source of each value; tab-separated.
+    Readings {
+        /// List only the readings that change anything on this profile.
+        #[arg(long, value_enum)]
+        profile: Option<ProfileArg>,
+    },
     /// Print a completion script for SHELL on standard output, e.g.
     /// `cycleref completions bash > /etc/bash_completion.d/cycleref`.
     Completions {
@@ -189,6 +201,11 @@ struct Common {
     /// option given on the command line always wins over the file.
     #[arg(long, value_name = "FILE")]
     params: Option<PathBuf>,
+    /// Choose a reading where the manuals leave a point open (repeatable),
+    /// e.g. `--reading R-RUNOUT=gsk988-only`; it wins over the parameter
+    /// file's `[readings]`. `cycleref readings` lists the ids and values.
+    #[arg(long = "reading", value_name = "ID=VALUE")]
+    readings: Vec<String>,
     /// Engine that expands the cycles: the fixed-point engine (`impl`) or
     /// the exact-decimal reference model (`spec`); both give the same output.
     #[arg(long, value_enum, default_value_t = EngineArg::Impl)]
@@ -214,6 +231,7 @@ impl Common {
             inch: self.inch,
             radius: self.radius,
             params: self.params.clone(),
+            readings: self.readings.clone(),
             engine: match self.engine {
                 EngineArg::Impl => Engine::Impl,
                 EngineArg::Spec => Engine::Spec,
@@ -443,6 +461,12 @@ const MAN_SECTIONS: &[(&str, &str, &str)] = &[
     ),
     ("vectors", "EXAMPLES", "$ cycleref vectors --count 125 --seed 1 --out vectors"),
     (
+        "readings",
+        "EXAMPLES",
+        "$ cycleref readings --profile gsk980\n\
+         $ cycleref expand --profile gsk980 --reading R-RUNOUT=gsk988-only prog.nc",
+    ),
+    (
         "plot",
         "EXAMPLES",
         "$ cycleref plot --profile gsk988 examples/gsk988-m68x6.nc -o m68.svg\n\
@@ -493,6 +517,16 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             print(&String::from_utf8_lossy(&text))?;
             Ok(0)
         }
+        Command::Readings { profile } => {
+            let profile = profile.map(|p| match p {
+                ProfileArg::Fanuc => cycleref_spec::ProfileName::Fanuc,
+                ProfileArg::Gsk980 => cycleref_spec::ProfileName::Gsk980,
+                ProfileArg::Gsk988 => cycleref_spec::ProfileName::Gsk988,
+                ProfileArg::LinuxCnc => cycleref_spec::ProfileName::LinuxCnc,
+            });
+            print(&cycleref_spec::readings::Listing { profile }.to_string())?;
+            Ok(0)
+        }
         Command::Passes { common } => {
             output::passes(&Job::load(&common.options())?, std::io::stdout().lock())?;
             Ok(0)
@@ -537,6 +571,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
             pairs,
             profile,
             params,
+            readings,
             trace_format,
             compare,
             jobs,
@@ -551,6 +586,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                         inch: false,
                         radius: false,
                         params,
+                        readings,
                         engine: EngineArg::Impl,
                         file: None,
                     };

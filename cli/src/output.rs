@@ -359,6 +359,7 @@ fn json<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         format: "cycleref-moves/1",
         file: &job.name,
         units: UnitsJson::new(units),
+        readings: crate::job::readings_json(&crate::job::readings_in_force(&job.machine)),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job)?))),
     };
     let mut ser = JsonSerializer::<_, true>::new(&mut *out);
@@ -372,6 +373,8 @@ struct JsonlSummary<'n> {
     format: &'static str,
     file: &'n str,
     units: UnitsJson,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    readings: Option<std::collections::BTreeMap<&'static str, &'static str>>,
     cycles: usize,
     moves: u64,
 }
@@ -392,6 +395,7 @@ fn jsonl<W: Write>(job: &Job, units: Units, out: &mut W) -> io::Result<()> {
         format: "cycleref-moves-jsonl/1",
         file: &job.name,
         units: UnitsJson::new(units),
+        readings: crate::job::readings_json(&crate::job::readings_in_force(&job.machine)),
         cycles,
         moves: moves_total,
     };

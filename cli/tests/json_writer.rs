@@ -33,6 +33,7 @@ fn by_serde_json(job: &Job) -> (Vec<u8>, Vec<u8>) {
         format: "cycleref-moves/1",
         file: &job.name,
         units: UnitsJson::new(units),
+        readings: cycleref_cli::job::readings_json(&cycleref_cli::job::readings_in_force(&job.machine)),
         cycles: StreamSeq(RefCell::new(Some(cycle_documents(job).into_iter().map(Ok::<_, String>)))),
     };
     let mut json = Vec::new();

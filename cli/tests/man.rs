@@ -5,7 +5,7 @@
 //!
 //! ```text
 //! cargo build -p cycleref-cli
-//! for s in "" expand passes check vectors conform plot completions man; do
+//! for s in "" expand passes check vectors conform plot completions man readings; do
 //!   target/debug/cycleref man $s > cli/man/cycleref${s:+-$s}.1
 //! done
 //! ```
@@ -13,8 +13,8 @@
 use std::process::Command;
 
 const BIN: &str = env!("CARGO_BIN_EXE_cycleref");
-const SUBCOMMANDS: [&str; 8] =
-    ["expand", "passes", "check", "vectors", "conform", "plot", "completions", "man"];
+const SUBCOMMANDS: [&str; 9] =
+    ["expand", "passes", "check", "vectors", "conform", "plot", "completions", "man", "readings"];
 
 fn stdout(args: &[&str]) -> String {
     let out = Command::new(BIN).args(args).output().expect("runs");

@@ -523,6 +523,18 @@ typedef struct CyclerefOptions {
      * Length of `params_toml` in bytes (0 when it is NULL).
      */
     size_t params_toml_len;
+    /**
+     * The readings chosen where the manuals leave a point open (issue
+     * 34; `cycleref readings` lists them): a NUL-terminated UTF-8 string
+     * of `ID=VALUE` pairs separated by commas, e.g.
+     * `"R-RUNOUT=gsk988-only,R-XRUNOUT=towards-start"`, applied after the
+     * parameter file's `[readings]` (so it wins, as `--reading`), or NULL
+     * for none. An unknown id or value is `CYCLEREF_STATUS_INVALID_ARGUMENT`
+     * with a message naming the valid ones. Added at the end of the struct
+     * (0.2.x): code that fills the struct from `cycleref_options_default()`
+     * gets NULL.
+     */
+    const char *readings;
 } CyclerefOptions;
 
 /**

@@ -279,7 +279,7 @@ unsafe fn text<'a>(ptr: *const c_char, len: usize, what: &str) -> Result<&'a str
 }
 
 /// The machine of `opts`, with the parameter file `params`.
-fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Failure> {
+fn machine(opts: &CyclerefOptions, params: Option<&str>, readings: Option<&str>) -> Result<Machine, Failure> {
     let profile = match opts.profile {
         0 => ProfileName::Fanuc,
         1 => ProfileName::Gsk980,
@@ -309,6 +309,9 @@ fn machine(opts: &CyclerefOptions, params: Option<&str>) -> Result<Machine, Fail
     }
     if opts.radius != 0 {
         m.x_mode = XMode::Radius;
+    }
+    if let Some(list) = readings {
+        m.readings.apply_list(list).map_err(|e| Failure::invalid(format!("readings: {e}")))?;
     }
     Ok(m)
 }
@@ -399,7 +402,8 @@ fn expand(
 ///
 /// A non-null `opts` must point to a readable `CyclerefOptions` whose
 /// `params_toml`, when not NULL, is valid for reads of `params_toml_len`
-/// bytes, unchanged during the call.
+/// bytes, and whose `readings`, when not NULL, is a NUL-terminated string,
+/// both unchanged during the call.
 #[allow(unsafe_code)]
 unsafe fn options(opts: *const CyclerefOptions) -> Result<Machine, Failure> {
     required(opts, "opts")?;
@@ -417,7 +421,17 @@ unsafe fn options(opts: *const CyclerefOptions) -> Result<Machine, Failure> {
         // at a non-null `params_toml`, unchanged during the call.
         Some(unsafe { text(o.params_toml, o.params_toml_len, "params_toml") }?)
     };
-    machine(&o, params)
+    let readings = if o.readings.is_null() {
+        None
+    } else {
+        // SAFETY: the caller guarantees a NUL-terminated string at a
+        // non-null `readings`, unchanged during the call.
+        let c = unsafe { core::ffi::CStr::from_ptr(o.readings) };
+        Some(c.to_str().map_err(|e| {
+            Failure::invalid(format!("readings is not UTF-8 (invalid byte at offset {})", e.valid_up_to()))
+        })?)
+    };
+    machine(&o, params, readings)
 }
 
 /// The options of the `cycleref` command's defaults: GSK 988TA, IS-B,

@@ -264,6 +264,16 @@ pub struct CyclerefOptions {
     pub params_toml: *const c_char,
     /// Length of `params_toml` in bytes (0 when it is NULL).
     pub params_toml_len: usize,
+    /// The readings chosen where the manuals leave a point open (issue
+    /// 34; `cycleref readings` lists them): a NUL-terminated UTF-8 string
+    /// of `ID=VALUE` pairs separated by commas, e.g.
+    /// `"R-RUNOUT=gsk988-only,R-XRUNOUT=towards-start"`, applied after the
+    /// parameter file's `[readings]` (so it wins, as `--reading`), or NULL
+    /// for none. An unknown id or value is `CYCLEREF_STATUS_INVALID_ARGUMENT`
+    /// with a message naming the valid ones. Added at the end of the struct
+    /// (0.2.x): code that fills the struct from `cycleref_options_default()`
+    /// gets NULL.
+    pub readings: *const c_char,
 }
 
 impl Default for CyclerefOptions {
@@ -275,6 +285,7 @@ impl Default for CyclerefOptions {
             radius: 0,
             params_toml: core::ptr::null(),
             params_toml_len: 0,
+            readings: core::ptr::null(),
         }
     }
 }
@@ -638,6 +649,7 @@ impl CyclerefG76Params {
             lead,
             run_out,
             pass_limit: if self.pass_limit == 0 { DEFAULT_PASS_LIMIT } else { self.pass_limit },
+            readings: cycleref::CycleReadings::DEFAULT,
         })
     }
 }
@@ -801,6 +813,7 @@ impl CyclerefG92Params {
             starts: self.starts,
             start_angle: StartAngle::ZERO.plus(StartAngle { num: self.start_angle_num, den }),
             face: self.face != 0,
+            readings: cycleref::CycleReadings::DEFAULT,
         })
     }
 }

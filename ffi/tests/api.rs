@@ -451,6 +451,36 @@ fn options_reach_the_machine() {
     assert_eq!(expand(&text, &t).unwrap()[0].decimals, 3);
 }
 
+/// The `readings` field (issue 34): `ID=VALUE` pairs, winning over the
+/// parameter file's `[readings]`; an unknown value names the valid ones.
+/// The 980TDi G92 with J8 longer than the retract (10 on the diameter):
+/// clamped to X40 by default, X30 + 2·8 = X46 under R-RUNOUT=gsk988-only.
+#[test]
+fn readings_field() {
+    let text = "M3 S300\nG00 X40 Z5\nG92 X30 Z-20 F2 J8 K2\nM30\n";
+    let o = options(CyclerefProfile::Gsk980);
+    assert!(o.readings.is_null());
+    let default = expand(text, &o).unwrap();
+    assert_eq!((default[2].x, default[2].z), (40_000, -20_000));
+    let list = c"R-RUNOUT=gsk988-only, R-XRUNOUT=refuse";
+    let chosen = CyclerefOptions { readings: list.as_ptr(), ..o };
+    let moves = expand(text, &chosen).unwrap();
+    assert_eq!((moves[2].x, moves[2].z), (46_000, -20_000));
+    let mut m = Machine::new(ProfileName::Gsk980);
+    m.readings.apply_list("R-RUNOUT=gsk988-only").unwrap();
+    assert_eq!(moves, engine_moves(text, &m));
+    // The field wins over the file.
+    let toml = "[readings]\n\"R-RUNOUT\" = \"gsk988-only\"\n";
+    let file =
+        CyclerefOptions { params_toml: toml.as_ptr().cast::<c_char>(), params_toml_len: toml.len(), ..o };
+    assert_eq!(expand(text, &file).unwrap(), moves);
+    let back = c"R-RUNOUT=all-profiles";
+    assert_eq!(expand(text, &CyclerefOptions { readings: back.as_ptr(), ..file }).unwrap(), default);
+    let bad = c"R-RUNOUT=sometimes";
+    let err = expand(text, &CyclerefOptions { readings: bad.as_ptr(), ..o }).unwrap_err();
+    assert!(err.contains("its values are all-profiles, gsk988-only"), "{err}");
+}
+
 #[test]
 fn buffer_too_small_reports_the_count_and_fills_the_buffer() {
     let text = example("gsk988-m68x6.nc");

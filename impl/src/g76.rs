@@ -12,6 +12,7 @@
 
 use crate::error::{CycleError, Field};
 use crate::lead::Lead;
+use crate::readings::CycleReadings;
 use crate::units::{Length, Point, Units, XMode, MAX_LENGTH};
 
 /// Infeed mode (切入方式): the `D` word of the extended G76 (seed 000), the
@@ -217,6 +218,9 @@ pub struct G76Cycle {
     /// Largest number of rough passes the cycle may have; beyond it the
     /// cycle is refused before any move is produced.
     pub pass_limit: u32,
+    /// The readings in force for this cycle (R-RUNOUT, R-XRUNOUT),
+    /// resolved for its profile; [`CycleReadings::DEFAULT`] unless chosen.
+    pub readings: CycleReadings,
 }
 
 /// The range-table check of a threading cycle's coordinate words, in

@@ -23,6 +23,7 @@ use crate::angle::StartAngle;
 use crate::error::{CycleError, Field};
 use crate::g76::{coordinates_in_range, RunOut};
 use crate::lead::Lead;
+use crate::readings::CycleReadings;
 use crate::units::{Length, Point, Units, XMode};
 
 /// One G92 thread-cutting cycle block.
@@ -54,6 +55,9 @@ pub struct G92Cycle {
     /// along Z and K along X (radius), the retract runs along Z to the Z
     /// of A and the return along X (reading R-G92FACE).
     pub face: bool,
+    /// The readings in force for this block (R-RUNOUT, R-XRUNOUT),
+    /// resolved for its profile; [`CycleReadings::DEFAULT`] unless chosen.
+    pub readings: CycleReadings,
 }
 
 impl G92Cycle {

@@ -37,6 +37,7 @@
 //!     lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 }, // F6
 //!     run_out: RunOut::Amounts { short: 3_000, long: 3_000 }, // the 45° chamfer of r = 05
 //!     pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
+//!     readings: cycleref::CycleReadings::DEFAULT,
 //! };
 //! let moves: Vec<_> = expand_g76(&cycle)?.collect();
 //! // 4 rough and 2 finishing passes of 5 moves.
@@ -64,6 +65,7 @@ pub mod lead;
 pub mod linuxcnc;
 pub mod loop_counters;
 pub mod moves;
+pub mod readings;
 pub mod tan;
 pub mod units;
 
@@ -81,4 +83,5 @@ pub use g92::G92Cycle;
 pub use lead::{Lead, LeadWord, Ratio};
 pub use linuxcnc::LinuxCncG76;
 pub use moves::{Flank, Motion, Move, Pass, PassKind, Plunge, Role};
+pub use readings::CycleReadings;
 pub use units::{IncrementSystem, InputUnit, Length, Point, Units, XMode};

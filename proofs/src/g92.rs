@@ -55,6 +55,7 @@ pub fn any_g92(reach: i64, run_out: i64, max_starts: i64) -> G92Cycle {
         starts,
         start_angle: StartAngle::ZERO,
         face,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 

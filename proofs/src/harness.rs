@@ -216,6 +216,7 @@ pub const PLAIN_CYCLE: G76Cycle = G76Cycle {
     lead: Lead { word: LeadWord::F, mantissa: 2, scale: 0 },
     run_out: RunOut::None,
     pass_limit: 1_000,
+    readings: cycleref::CycleReadings::DEFAULT,
 };
 
 /// A cycle of the domain: an external or internal thread, either
@@ -296,6 +297,7 @@ pub fn any_cycle(d: &Domain) -> G76Cycle {
         lead,
         run_out,
         pass_limit: d.pass_limit,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 

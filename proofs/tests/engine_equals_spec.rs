@@ -264,6 +264,7 @@ fn assemble(sh: &Shape) -> G76Cycle {
         lead: sh.lead,
         run_out,
         pass_limit,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     corrupt(&mut c, sh.corrupt, raw[2] ^ raw[3]);
     c
@@ -318,6 +319,17 @@ proptest! {
     /// The engine equals the reference on generated cycles, valid or not.
     #[test]
     fn engine_equals_spec(c in cycle()) {
+        let _ = same(&c);
+    }
+
+    /// The engine equals the reference under every value of the readings
+    /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT).
+    #[test]
+    fn engine_equals_spec_under_every_reading(c in cycle(), clamp in any::<bool>(), towards in any::<bool>()) {
+        let c = G76Cycle {
+            readings: cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards },
+            ..c
+        };
         let _ = same(&c);
     }
 
@@ -748,6 +760,7 @@ fn internal_towards_plus_z() {
         lead: Lead { word: LeadWord::I, mantissa: 8, scale: 0 },
         run_out: RunOut::Chamfer { tenths_of_lead: 15, angle_degrees: 30, long: None },
         pass_limit: 100,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     let moves = same(&c).unwrap();
     assert!(!moves.is_empty());

@@ -33,6 +33,7 @@ fn cycles() -> impl Strategy<Value = G92Cycle> {
                 starts: l.min(12),
                 start_angle: StartAngle::from_millidegrees(u64::from(q)),
                 face,
+                readings: cycleref::CycleReadings::DEFAULT,
             },
         )
 }
@@ -66,6 +67,38 @@ proptest! {
             starts: l,
             start_angle: StartAngle::ZERO,
             face,
+            readings: cycleref::CycleReadings::DEFAULT,
+        };
+        let ours = cycleref::expand_g92(&c).map(Iterator::collect::<Vec<_>>);
+        prop_assert_eq!(ours, cycleref_spec::g92::expand(&c));
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(5000))]
+
+    /// Both engines agree under every value of the readings a block carries
+    /// (issue 34: R-RUNOUT's clamp, R-XRUNOUT), on every block size and near
+    /// the boundaries, where the clamp and the X-long run-out switch.
+    #[test]
+    fn engine_equals_spec_under_every_reading(
+        c in cycles(), clamp in any::<bool>(), towards in any::<bool>(),
+        x0 in -6_i64..=6, z0 in -6_i64..=6, x1 in -6_i64..=6, z1 in -6_i64..=6, r in -6_i64..=6,
+        j in 0_i64..=6, k in 0_i64..=6, small in any::<bool>(),
+    ) {
+        let readings = cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards };
+        let c = if small {
+            G92Cycle {
+                start: Point::new(x0, z0),
+                end: Point::new(x1, z1),
+                taper: r,
+                run_out: if j == 0 { RunOut::None } else { RunOut::Amounts { short: j, long: k } },
+                starts: 1,
+                readings,
+                ..c
+            }
+        } else {
+            G92Cycle { readings, ..c }
         };
         let ours = cycleref::expand_g92(&c).map(Iterator::collect::<Vec<_>>);
         prop_assert_eq!(ours, cycleref_spec::g92::expand(&c));

@@ -184,6 +184,7 @@ fn g92_does_not_allocate() {
         starts: 3,
         start_angle: cycleref::StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     let face = cycleref::G92Cycle {
         start: Point::new(60_000, 5_000),

@@ -167,6 +167,7 @@ fn g92_with_a_on_the_x_of_b() {
         starts: 1,
         start_angle: StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     // B: X = 40.000 + 2 · 5.000 = 50.000 (diameter), the X of A, at the Z
     // of A: B = A, so no approach. The cut along the taper to C, the
@@ -214,6 +215,7 @@ fn g92_run_out_limits() {
         starts: 1,
         start_angle: StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     let cycle = |end: Point, taper: i64, short: i64, long: i64| cycle_from(50_000, end, taper, short, long);
     let both = |c: &G92Cycle| {
@@ -466,6 +468,7 @@ fn g92_b_at_the_end_of_the_range() {
         starts: 1,
         start_angle: StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     let moves: Vec<_> = cycleref::expand_g92(&cycle(999_997_999)).expect("B at the range's end").collect();
     assert_eq!(moves.first().map(|m| m.to), Some(Point::new(999_999_999, 0)), "the approach to B");

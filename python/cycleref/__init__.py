@@ -21,7 +21,11 @@ Every function takes the machine as the ``cycleref`` command does:
 ``profile`` (``"fanuc"``, ``"gsk980"``, ``"gsk988"``, ``"linuxcnc"``),
 ``increment`` (``"is-b"``, ``"is-c"``; ``None``, the default, is the
 profile's own: IS-B, or IS-C on ``linuxcnc``), ``inch``, ``radius`` (X as a radius),
-``params`` (the path of a parameter file, as ``--params``) and ``engine``
+``params`` (the path of a parameter file, as ``--params``), ``readings``
+(a mapping of reading ids to values, as ``--reading ID=VALUE``, e.g.
+``readings={"R-RUNOUT": "gsk988-only"}``; ``cycleref readings`` lists
+them, and an unknown id or value raises :class:`ValueError` naming the valid
+ones) and ``engine``
 (``"impl"``, the fixed-point engine, or ``"spec"``, the exact reference
 model; both give the same moves). A program is its text (``str`` or
 ``bytes``) or the path of its file (:class:`os.PathLike`, read from disk a
@@ -34,7 +38,7 @@ import json as _json
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
-from typing import Any, Dict, Iterator, List, Optional, Tuple
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Tuple
 
 from . import _cycleref
 from ._cycleref import CycleError, Error, ProgramError
@@ -180,6 +184,7 @@ def expand(
     inch: bool = False,
     radius: bool = False,
     params: Any = None,
+    readings: Mapping[str, str] | None = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> List[Cycle]:
@@ -208,6 +213,7 @@ def expand(
         inch=inch,
         radius=radius,
         params=params,
+        readings=readings,
         engine=engine,
         name=name,
     )
@@ -225,6 +231,7 @@ def iter_moves(
     inch: bool = False,
     radius: bool = False,
     params: Any = None,
+    readings: Mapping[str, str] | None = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> Iterator[Move]:
@@ -245,6 +252,7 @@ def iter_moves(
         inch=inch,
         radius=radius,
         params=params,
+        readings=readings,
         engine=engine,
         name=name,
     )
@@ -380,6 +388,7 @@ def check(
     inch: bool = False,
     radius: bool = False,
     params: Any = None,
+    readings: Mapping[str, str] | None = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> Report:
@@ -416,6 +425,7 @@ def check(
         inch=inch,
         radius=radius,
         params=params,
+        readings=readings,
         engine=engine,
         name=name,
     )

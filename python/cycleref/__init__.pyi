@@ -4,7 +4,7 @@ import os
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
-from typing import Any, Dict, Iterator, List, Literal, Optional, Tuple, Union
+from typing import Any, Dict, Iterator, List, Literal, Mapping, Optional, Tuple, Union
 
 __all__ = [
     "Cycle",
@@ -132,6 +132,7 @@ def expand(
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: _EngineName = "impl",
     name: str = "<string>",
 ) -> List[Cycle]: ...
@@ -143,6 +144,7 @@ def iter_moves(
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: _EngineName = "impl",
     name: str = "<string>",
 ) -> Iterator[Move]: ...
@@ -157,6 +159,7 @@ def check(
     inch: bool = False,
     radius: bool = False,
     params: Optional[Union[str, "os.PathLike[str]"]] = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: _EngineName = "impl",
     name: str = "<string>",
 ) -> Report: ...

@@ -1,7 +1,7 @@
 # The native module under the cycleref package: its raw tuples are made into
 # the package's types by __init__.py; use the package, not this module.
 import os
-from typing import Any, Iterator, List, Optional, Tuple, Union, final
+from typing import Any, Iterator, List, Mapping, Optional, Tuple, Union, final
 
 __all__: List[str]
 
@@ -29,6 +29,7 @@ def expand(
     inch: bool = False,
     radius: bool = False,
     params: _Path = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> Tuple[str, int, List[Tuple[Any, ...]]]: ...
@@ -40,6 +41,7 @@ def iter_moves(
     inch: bool = False,
     radius: bool = False,
     params: _Path = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> MoveIter: ...
@@ -54,6 +56,7 @@ def check(
     inch: bool = False,
     radius: bool = False,
     params: _Path = None,
+    readings: Optional[Mapping[str, str]] = None,
     engine: str = "impl",
     name: str = "<string>",
 ) -> Tuple[bool, int, str, str]: ...

@@ -15,6 +15,7 @@
 //! program for `expand` and `check`, a batch of moves at a time for
 //! `iter_moves`.
 
+use std::collections::BTreeMap;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
@@ -90,6 +91,7 @@ fn options(
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
+    readings: Option<BTreeMap<String, String>>,
     engine: &str,
 ) -> PyResult<Options> {
     let profile = match profile {
@@ -115,7 +117,10 @@ fn options(
         "spec" => Engine::Spec,
         e => return Err(PyValueError::new_err(format!("engine {e:?}: one of impl, spec"))),
     };
-    Ok(Options { profile: Some(profile), increment, inch, radius, params, engine, file: None })
+    // `readings={"R-RUNOUT": "gsk988-only"}`: as `--reading ID=VALUE`,
+    // winning over the parameter file's `[readings]`.
+    let readings = readings.unwrap_or_default().into_iter().map(|(id, v)| format!("{id}={v}")).collect();
+    Ok(Options { profile: Some(profile), increment, inch, radius, params, readings, engine, file: None })
 }
 
 /// The job of `program` with `opts` (a text is named `name` in messages).
@@ -354,7 +359,7 @@ fn expand_job(job: &Job) -> Result<(Units, Vec<CycleData>), ExpandFailure> {
 /// `expand`: `(unit, decimals, [(code, line, params_line, from, start,
 /// [move tuple])])`.
 #[pyfunction]
-#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, readings=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn expand<'py>(
     py: Python<'py>,
@@ -364,10 +369,11 @@ fn expand<'py>(
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
+    readings: Option<BTreeMap<String, String>>,
     engine: &str,
     name: &str,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let opts = options(profile, increment, inch, radius, params, engine)?;
+    let opts = options(profile, increment, inch, radius, params, readings, engine)?;
     let job = job(program, name, &opts)?;
     let (units, cycles) = py.detach(|| expand_job(&job)).map_err(|e| e.into_py(py))?;
     let mut out = Vec::with_capacity(cycles.len());
@@ -482,7 +488,7 @@ impl MoveIter {
 /// `iter_moves`: checks the whole program first (the command's first
 /// phase), then an iterator over its moves.
 #[pyfunction]
-#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, *, profile="gsk988", increment=None, inch=false, radius=false, params=None, readings=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn iter_moves(
     py: Python<'_>,
@@ -492,10 +498,11 @@ fn iter_moves(
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
+    readings: Option<BTreeMap<String, String>>,
     engine: &str,
     name: &str,
 ) -> PyResult<MoveIter> {
-    let opts = options(profile, increment, inch, radius, params, engine)?;
+    let opts = options(profile, increment, inch, radius, params, readings, engine)?;
     let job = job(program, name, &opts)?;
     py.detach(|| job.validate_run()).map_err(|(f, e)| run_error(py, f, e))?;
     let reading = Reading::try_new(job, |j| j.items()).map_err(|f| PyOSError::new_err(String::from(f)))?;
@@ -508,7 +515,7 @@ fn iter_moves(
 
 /// `check`: `(agree, divergences, text report, JSON report)`.
 #[pyfunction]
-#[pyo3(signature = (program, trace, *, tolerance=0, csv=false, profile="gsk988", increment=None, inch=false, radius=false, params=None, engine="impl", name="<string>"))]
+#[pyo3(signature = (program, trace, *, tolerance=0, csv=false, profile="gsk988", increment=None, inch=false, radius=false, params=None, readings=None, engine="impl", name="<string>"))]
 #[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
 fn check(
     py: Python<'_>,
@@ -521,10 +528,11 @@ fn check(
     inch: bool,
     radius: bool,
     params: Option<PathBuf>,
+    readings: Option<BTreeMap<String, String>>,
     engine: &str,
     name: &str,
 ) -> PyResult<(bool, usize, String, String)> {
-    let opts = options(profile, increment, inch, radius, params, engine)?;
+    let opts = options(profile, increment, inch, radius, params, readings, engine)?;
     let job = job(program, name, &opts)?;
     // The program's own errors are raised with their line, word and rule.
     py.detach(|| job.validate_run()).map_err(|(f, e)| run_error(py, f, e))?;

@@ -540,7 +540,8 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
                 // J along Z towards A, where the cut line lies at X of the
                 // end plus xf·i·J/|W|: beyond the tool, on the work's side,
                 // when s·i > 0.
-                if s * i > Decimal::ZERO {
+                // `towards-start` makes it as written.
+                if s * i > Decimal::ZERO && !c.readings.x_run_out_towards_start {
                     return Err(CycleError::RunOutIntoWork { taper: len(i, u) });
                 }
             }
@@ -557,6 +558,17 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
         check_coordinate(g.a.1 + t * min_shift - t * lz, u)?;
     }
+    // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
+    // retract: Z long, furthest out at the end of the shallowest pass; X
+    // long, J along Z from D towards A.
+    if let (Some((j, _)), Some(first), false) = (run_out, plan.first(), c.readings.clamp_run_out) {
+        let shallowest = from_increments(first.pass.depth, u);
+        let beyond = match g.long_axis {
+            LongAxis::Z => g.d.0 + s * xf * (k - shallowest) + s * xf * j,
+            LongAxis::X => g.d.1 - t * j,
+        };
+        check_coordinate(beyond, u)?;
+    }
 
     let frame = PassFrame {
         a: g.a,
@@ -567,6 +579,7 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         x_factor: xf,
         long_axis: g.long_axis,
         run_out,
+        clamp_run_out: c.readings.clamp_run_out,
         lead: c.lead,
         units: u,
     };

@@ -107,12 +107,27 @@ pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         // Reading R-XRUNOUT: on an X long axis the run-out runs along Z
         // towards A; the cut line there lies xf·R·J/|W| beyond C's X, on
         // the work's side when R points away from the work (s·R > 0).
-        if long_axis == LongAxis::X && Decimal::from(side) * r > Decimal::ZERO {
+        // `towards-start` makes it as written.
+        if long_axis == LongAxis::X
+            && Decimal::from(side) * r > Decimal::ZERO
+            && !c.readings.x_run_out_towards_start
+        {
             return Err(CycleError::RunOutIntoWork { taper: len(r) });
         }
     }
     if to_increments(b.0, u).abs() > MAX_LENGTH {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(b.0) });
+    }
+    // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
+    // retract, so its end may lie beyond the range (R-RANGE).
+    if let (Some((j, _)), false) = (run_out, c.readings.clamp_run_out) {
+        let beyond = match long_axis {
+            LongAxis::Z => cut_end.0 + Decimal::from(side) * sf * j,
+            LongAxis::X => cut_end.1 - Decimal::from(direction) * j,
+        };
+        if to_increments(beyond, u).abs() > MAX_LENGTH {
+            return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(beyond) });
+        }
     }
     let frame = PassFrame {
         a,
@@ -123,6 +138,7 @@ pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         x_factor: sf,
         long_axis,
         run_out,
+        clamp_run_out: c.readings.clamp_run_out,
         lead: c.lead,
         units: u,
     };

@@ -65,6 +65,7 @@ pub mod pass;
 pub mod pipeline;
 pub mod profile;
 pub mod reader;
+pub mod readings;
 pub mod real;
 pub mod rs274;
 pub mod tan;

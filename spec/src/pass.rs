@@ -53,6 +53,9 @@ pub struct PassFrame {
     pub long_axis: LongAxis,
     /// The run-out amounts `(J, K)`, radius, or `None`.
     pub run_out: Option<(Decimal, Decimal)>,
+    /// J clamped at the retract (reading R-RUNOUT, 988TA G92 note 5);
+    /// `false` under R-RUNOUT `gsk988-only` on another profile.
+    pub clamp_run_out: bool,
     /// The lead.
     pub lead: Lead,
     /// The cycle's units.
@@ -135,7 +138,8 @@ pub fn pass_path(
                 let xr = quantize(bn.0 + (end.0 - bn.0) * (zr - bn.1) / (end.1 - bn.1), u);
                 path.thread((xr, zr), Role::Cut);
                 // Short axis: J away from the work, at most to E (reading R-RUNOUT).
-                let jx = (xf * j).min(s * (f.a.0 - end.0));
+                // Reading R-RUNOUT `gsk988-only`: J as written.
+                let jx = if f.clamp_run_out { (xf * j).min(s * (f.a.0 - end.0)) } else { xf * j };
                 last = (end.0 + s * jx, end.1);
                 path.thread(last, Role::RunOut);
             }
@@ -144,7 +148,7 @@ pub fn pass_path(
                 let xr = end.0 - sigma * xf * kk;
                 let zr = quantize(bn.1 + (end.1 - bn.1) * (xr - bn.0) / (end.0 - bn.0), u);
                 path.thread((xr, zr), Role::Cut);
-                let jz = j.min(f.length);
+                let jz = if f.clamp_run_out { j.min(f.length) } else { j };
                 last = (end.0, end.1 - t * jz);
                 path.thread(last, Role::RunOut);
             }

@@ -499,6 +499,10 @@ pub struct Machine {
     pub subprogram_block_limit: u64,
     /// Parameter values by number (the profile's numbering).
     pub params: BTreeMap<String, ParamValue>,
+    /// The readings chosen where the manuals leave a point open (issue
+    /// 34): `[readings]` in the parameter file, `--reading` on the command
+    /// line; the defaults unless chosen.
+    pub readings: crate::readings::Readings,
 }
 
 impl Machine {
@@ -525,6 +529,7 @@ impl Machine {
             },
             subprogram_block_limit: crate::reader::DEFAULT_SUBPROGRAM_BLOCK_LIMIT,
             params,
+            readings: crate::readings::Readings::default(),
         }
     }
 
@@ -569,6 +574,8 @@ impl Machine {
     /// 5142 = 2                  # integers for counts, angles and bits
     /// 5140 = "0.15"             # lengths as strings, in mm (inch), exact
     /// "3401.6" = 0              # bit parameters as "number.bit"
+    /// [readings]                # `cycleref readings` lists them
+    /// R-RUNOUT = "gsk988-only"
     /// ```
     ///
     /// # Errors
@@ -597,9 +604,10 @@ impl Machine {
             let name: ProfileName = v.as_str().ok_or(bad("profile", "a string"))?.parse()?;
             if name != self.profile.name && !keep_profile {
                 // The new profile's defaults, then the file's other keys.
-                let (pass_limit, nesting, blocks) =
-                    (self.pass_limit, self.subprogram_nesting, self.subprogram_block_limit);
+                let (pass_limit, nesting, blocks, readings) =
+                    (self.pass_limit, self.subprogram_nesting, self.subprogram_block_limit, self.readings);
                 *self = Machine::new(name);
+                self.readings = readings;
                 self.pass_limit = pass_limit;
                 self.subprogram_nesting = nesting;
                 self.subprogram_block_limit = blocks;
@@ -658,6 +666,15 @@ impl Machine {
                     let t = value.as_table().ok_or(bad("parameters", "a table"))?;
                     for (num, v) in t {
                         self.set_param(num, v)?;
+                    }
+                }
+                "readings" => {
+                    let t = value.as_table().ok_or(bad("readings", "a table"))?;
+                    for (id, v) in t {
+                        let v = v
+                            .as_str()
+                            .ok_or(bad("readings", "a table of strings (\"R-RUNOUT\" = \"gsk988-only\")"))?;
+                        self.readings.set(id, v)?;
                     }
                 }
                 other => return Err(ParamsError::UnknownKey { key: other.to_string() }),
@@ -749,13 +766,36 @@ pub enum ParamsError {
         /// The string.
         value: String,
     },
+    /// A reading id that is not selectable (`--reading`, `[readings]`).
+    UnknownReading {
+        /// The id given.
+        id: String,
+        /// The selectable ids, comma-separated.
+        known: String,
+    },
+    /// A value the reading does not have.
+    BadReading {
+        /// The reading's id.
+        id: &'static str,
+        /// The value given.
+        value: String,
+        /// Its values, comma-separated.
+        valid: String,
+    },
+    /// A reading choice not written `ID=VALUE`.
+    ReadingSyntax {
+        /// The text given.
+        text: String,
+    },
 }
 
 impl ParamsError {
     /// The stable kind: `params:toml`, `params:unknown_profile`,
     /// `params:bad_setting`, `params:unknown_key`,
     /// `params:unknown_parameter`, `params:bad_parameter`,
-    /// `params:float_length`, `params:not_a_length`.
+    /// `params:float_length`, `params:not_a_length`,
+    /// `params:unknown_reading`, `params:bad_reading`,
+    /// `params:reading_syntax`.
     #[must_use]
     pub fn stable_kind(&self) -> &'static str {
         match self {
@@ -767,6 +807,9 @@ impl ParamsError {
             ParamsError::BadParameter { .. } => "params:bad_parameter",
             ParamsError::FloatLength { .. } => "params:float_length",
             ParamsError::NotALength { .. } => "params:not_a_length",
+            ParamsError::UnknownReading { .. } => "params:unknown_reading",
+            ParamsError::BadReading { .. } => "params:bad_reading",
+            ParamsError::ReadingSyntax { .. } => "params:reading_syntax",
         }
     }
 }
@@ -794,6 +837,15 @@ impl fmt::Display for ParamsError {
             }
             ParamsError::NotALength { number, value } => {
                 write!(f, "parameter {number}: `{value}` is not a decimal length")
+            }
+            ParamsError::UnknownReading { id, known } => {
+                write!(f, "unknown reading `{id}` (the selectable readings are {known})")
+            }
+            ParamsError::BadReading { id, value, valid } => {
+                write!(f, "reading {id} has no value `{value}` (its values are {valid})")
+            }
+            ParamsError::ReadingSyntax { text } => {
+                write!(f, "reading `{text}` must be written ID=VALUE (for example R-RUNOUT=gsk988-only)")
             }
         }
     }

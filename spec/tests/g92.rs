@@ -495,6 +495,7 @@ fn validate_shares_the_run_out_checks() {
         starts: 1,
         start_angle: StartAngle::ZERO,
         face: false,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     assert!(matches!(c.validate(), Err(CycleError::CountOutOfRange { value: 100, .. })));
     let c = cycleref::G92Cycle { starts: 0, run_out: RunOut::None, ..c };

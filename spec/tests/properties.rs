@@ -76,6 +76,7 @@ fn cycles() -> impl Strategy<Value = G76Cycle> {
                     lead: Lead { word: LeadWord::F, mantissa: lead, scale: lead_scale },
                     run_out,
                     pass_limit: 100_000,
+                    readings: cycleref::CycleReadings::DEFAULT,
                 }
             },
         )

@@ -127,7 +127,7 @@ pub(super) fn compare_streams(
     let mut ours = Grouper::new(OurSteps::new(job, units, cycles_only).map_err(StreamError::Ours)?);
     let steps = trace_steps(trace, format, &job.machine, units).map_err(StreamError::Theirs)?;
     let mut theirs = Grouper::new(steps);
-    let mut report = Report::new(units, tolerance);
+    let mut report = Report::new(units, tolerance, crate::job::readings_in_force(&job.machine));
     let mut pending: VecDeque<Group> = VecDeque::new();
     let mut lookahead: Option<(Group, u32)> = None;
     // Reused from window to window, as the groups are.

@@ -86,11 +86,31 @@ pub struct Report {
     divergences: Vec<Divergence>,
     /// How many there are.
     total: usize,
+    /// The readings in force that differ from the defaults (issue 34),
+    /// `(id, value)`.
+    readings: Vec<(&'static str, &'static str)>,
 }
 
 impl Report {
-    pub(super) fn new(units: Units, tolerance: u64) -> Report {
-        Report { units, tolerance, ours_moves: 0, theirs_moves: 0, divergences: Vec::new(), total: 0 }
+    pub(super) fn new(units: Units, tolerance: u64, readings: Vec<(&'static str, &'static str)>) -> Report {
+        Report {
+            units,
+            tolerance,
+            ours_moves: 0,
+            theirs_moves: 0,
+            divergences: Vec::new(),
+            total: 0,
+            readings,
+        }
+    }
+
+    /// The line naming the non-default readings, `readings: ID=VALUE, …`,
+    /// after the verdict; nothing under the defaults.
+    fn readings_line(&self, out: &mut String) {
+        if !self.readings.is_empty() {
+            let list: Vec<String> = self.readings.iter().map(|(id, v)| format!("{id}={v}")).collect();
+            let _ = writeln!(out, "readings: {}", list.join(", "));
+        }
     }
 
     /// Counts `found` and keeps those within the first [`MAX_LISTED`].
@@ -298,6 +318,7 @@ impl Report {
                 self.tolerance,
                 if self.tolerance == 1 { "" } else { "s" }
             );
+            self.readings_line(&mut out);
             return out;
         }
         let _ = writeln!(
@@ -309,6 +330,7 @@ impl Report {
             self.ours_moves,
             self.theirs_moves
         );
+        self.readings_line(&mut out);
         let _ = writeln!(out, "\nfirst divergence:");
         if let Some(d) = self.divergences.first() {
             self.describe(d, &mut out);
@@ -401,6 +423,7 @@ impl Report {
             agree: self.agree(),
             tolerance_increments: self.tolerance,
             units: UnitsJson::new(self.units),
+            readings: crate::job::readings_json(&self.readings),
             moves: MoveCountsJson { ours: self.ours_moves, theirs: self.theirs_moves },
             divergences: self.divergences.iter().map(|d| self.divergence_json(d)).collect(),
             unlisted_divergences: (self.total > self.divergences.len())
@@ -421,6 +444,9 @@ struct CheckJson {
     agree: bool,
     tolerance_increments: u64,
     units: UnitsJson,
+    /// The readings in force when they differ from the defaults.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    readings: Option<std::collections::BTreeMap<&'static str, &'static str>>,
     moves: MoveCountsJson,
     divergences: Vec<DivergenceJson>,
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -453,8 +453,9 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
                     return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(taper_abs) });
                 }
                 // Reading R-XRUNOUT: along Z towards A is into the work
-                // when the cut line rises towards A (s·i > 0).
-                if side * c.taper > 0 {
+                // when the cut line rises towards A (s·i > 0); `towards-start`
+                // makes it.
+                if side * c.taper > 0 && !c.readings.x_run_out_towards_start {
                     return Err(CycleError::RunOutIntoWork { taper: len(c.taper) });
                 }
             }
@@ -475,6 +476,17 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         let z = i128::from(a.z) + t * i128::from(p.min_shift) - t * i128::from(lz);
         check_coordinate(z, u)?;
     }
+    // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
+    // retract. Z long: furthest out at the end of the shallowest pass; X
+    // long: J along Z from D towards A. J ≤ 57 × MAX_LENGTH, in i128.
+    if let (Some((j, _)), Some(p), false) = (run_out, extremes, c.readings.clamp_run_out) {
+        let (j, out) = (i128::from(j), i128::from(side * xf));
+        let beyond = match long_axis {
+            LongAxis::Z => i128::from(d.x) + out * i128::from(c.thread_height - p.shallowest) + out * j,
+            LongAxis::X => i128::from(d.z) - i128::from(direction) * j,
+        };
+        check_coordinate(beyond, u)?;
+    }
 
     let frame = Frame {
         lead: c.lead,
@@ -490,6 +502,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         k: c.thread_height,
         long_axis,
         run_out,
+        clamp_run_out: c.readings.clamp_run_out,
         lead_in,
         starts: c.starts,
         spacing: {

@@ -75,6 +75,7 @@ pub struct G92Moves {
 ///     starts: 1,
 ///     start_angle: StartAngle::ZERO,
 ///     face: false,
+///     readings: cycleref::CycleReadings::DEFAULT,
 /// };
 /// let moves: Vec<_> = expand_g92(&block)?.collect();
 /// let ends: Vec<_> = moves.iter().map(|m| (m.role, m.to)).collect();
@@ -130,8 +131,8 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
             return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(length) });
         }
         // Reading R-XRUNOUT: along Z towards A is into the work when the
-        // cut line rises towards A (s·R > 0).
-        if long_axis == LongAxis::X && side * c.taper > 0 {
+        // cut line rises towards A (s·R > 0); `towards-start` makes it.
+        if long_axis == LongAxis::X && side * c.taper > 0 && !c.readings.x_run_out_towards_start {
             return Err(CycleError::RunOutIntoWork { taper: len(c.taper) });
         }
     }
@@ -139,6 +140,20 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
     // lies between them or on B's short-axis coordinate.
     if b_x.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
         return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value: len(b_x) });
+    }
+    // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
+    // retract; its end may then lie beyond the range (R-RANGE). J ≤ 57 ×
+    // MAX_LENGTH (a chamfer at 89°), in i128.
+    if let (Some((j, _)), false) = (run_out, c.readings.clamp_run_out) {
+        let j = i128::from(j);
+        let beyond = match long_axis {
+            LongAxis::Z => i128::from(end.x) + i128::from(side * sf) * j,
+            LongAxis::X => i128::from(end.z) - i128::from(direction) * j,
+        };
+        if beyond.unsigned_abs() > MAX_LENGTH.unsigned_abs().into() {
+            let value = Length::new(i64::try_from(beyond).unwrap_or(i64::MAX), u);
+            return Err(CycleError::OutOfRange { field: Field::PassCoordinate, value });
+        }
     }
     let frame = Frame {
         lead: c.lead,
@@ -154,6 +169,7 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         k: 0,
         long_axis,
         run_out,
+        clamp_run_out: c.readings.clamp_run_out,
         lead_in: None,
         starts: c.starts,
         spacing: {

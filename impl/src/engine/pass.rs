@@ -66,6 +66,8 @@ pub(crate) struct Frame {
     /// `(J, K)`, K in the long axis's coordinate increments (a face
     /// thread's K, a radius, is scaled to X's words by the caller).
     pub(crate) run_out: Option<(i64, i64)>,
+    /// J clamped at the retract (reading R-RUNOUT, 988TA G92 note 5).
+    pub(crate) clamp_run_out: bool,
     /// `(E, lead-in length)`.
     pub(crate) lead_in: Option<(i64, i64)>,
     /// L.
@@ -131,7 +133,10 @@ impl Frame {
                         saturate_i64(round_div(num, den))
                     };
                     // J away from the work, at most to E; J may be i64::MAX.
-                    let jx = xf.saturating_mul(j).min(s * (self.a.x - end.x));
+                    // Unclamped (R-RUNOUT `gsk988-only`): J as written,
+                    // range-checked by the caller.
+                    let jx = xf.saturating_mul(j);
+                    let jx = if self.clamp_run_out { jx.min(s * (self.a.x - end.x)) } else { jx };
                     let last = Point::new(end.x + s * jx, end.z);
                     (Point::new(xr, zr), Some(last), last)
                 }
@@ -143,7 +148,7 @@ impl Frame {
                     let num = i128::from(bn.z) * den
                         + (i128::from(end.z) - i128::from(bn.z)) * (i128::from(xr) - i128::from(bn.x));
                     let zr = saturate_i64(round_div(num, den));
-                    let jz = j.min(self.w_abs);
+                    let jz = if self.clamp_run_out { j.min(self.w_abs) } else { j };
                     let last = Point::new(end.x, end.z - t * jz);
                     (Point::new(xr, zr), Some(last), last)
                 }

@@ -3,6 +3,8 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::readings::E980;
+use crate::ProfileName;
 
 /// Modal values of G76 block 1 and, on the 988TA, J and K (reading R-MODAL).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -50,7 +52,21 @@ impl State<'_> {
         }
         let min_cut = block.get('Q')?.map(|q| self.pq_length(block, q)).transpose()?;
         let allowance = block.get('R')?.map(|r| self.unsigned_length(block, r)).transpose()?;
-        let lead_in = block.get('E')?.map(|e| self.unsigned_length(block, e)).transpose()?;
+        // Reading R-E980: the 980TDi's E is "无符号" with the range
+        // "-9999.9999~9999.9999"; `signed` accepts a negative E as its
+        // magnitude (as G92 note 10's J and K), `refuse-negative` refuses it.
+        let signed_e = profile.name == ProfileName::Gsk980 && self.machine.readings.e980 == E980::Signed;
+        let lead_in =
+            block
+                .get('E')?
+                .map(|e| {
+                    if signed_e {
+                        self.length(block, e).map(i64::abs)
+                    } else {
+                        self.unsigned_length(block, e)
+                    }
+                })
+                .transpose()?;
         let j = block.get('J')?.map(|j| self.unsigned_length(block, j)).transpose()?;
         let k = block.get('K')?.map(|k| self.unsigned_length(block, k)).transpose()?;
         let modal = &mut self.modal[code as usize];
@@ -353,6 +369,7 @@ impl State<'_> {
             lead,
             run_out,
             pass_limit: self.machine.pass_limit,
+            readings: self.machine.readings.for_cycle(self.machine.profile.name),
         };
         cycle.validate().map_err(|e| cycle_err(&block, one.line, e))?;
         self.moved = true;

@@ -1,0 +1,295 @@
+//! Readings per control (issue 34): the points of docs/INTERPRETATIONS.md
+//! that the sources leave open, each a typed choice with named values, its
+//! source and its default per profile.
+//!
+//! A [`Readings`] value is part of the [`Machine`](crate::profile::Machine)
+//! (`[readings]` in the parameter file, `--reading ID=VALUE` on the
+//! command line, `readings=` in Python, `readings` in the C options). The
+//! program reader resolves it against the profile
+//! ([`Readings::for_cycle`]) into the [`CycleReadings`] every threading
+//! cycle carries, so the engine and the exact reference take the same
+//! value; R-E980 is applied by the reader itself (it only decides whether a
+//! word is accepted).
+//!
+//! Only readings implemented in both engines are listed ([`TABLE`]).
+
+use core::fmt;
+use cycleref::CycleReadings;
+
+use crate::profile::{ParamsError, ProfileName};
+
+/// Reading R-RUNOUT: which profiles clamp the short-axis run-out J at the
+/// retract distance of a pass without run-out.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum RunOutClamp {
+    /// `all-profiles` (default): 988TA G92 note 5 ("当螺纹短轴方向退尾长度大
+    /// 于无退尾时的退刀距离时，系统默认短轴方向退尾长度为无退尾时的退刀距离")
+    /// adopted for every profile: the 980TDi and FANUC pages are silent, and
+    /// the clamp keeps the run-out between the work and the retract point.
+    #[default]
+    AllProfiles,
+    /// `gsk988-only`: the clamp only where its page says it (gsk988); on
+    /// fanuc and gsk980 J is made as written, beyond the X of A (Z long) or
+    /// beyond A's Z (X long) when it is longer, and the retract comes back
+    /// to A's X.
+    Gsk988Only,
+}
+
+/// Reading R-XRUNOUT: an X-long run-out whose cut line rises towards A
+/// (s·i > 0), along Z towards A, ends inside the material.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum XRunOut {
+    /// `refuse` (default): refused with `run_out_into_work`; the retract
+    /// after it would cut through the thread (found by the
+    /// `no_rapid_in_thread` harness, issue 13).
+    #[default]
+    Refuse,
+    /// `towards-start`: the run-out towards the start point as written
+    /// ("根据程序起点位置自动确定退尾方向"; no page calls it an alarm).
+    TowardsStart,
+}
+
+/// Reading R-E980: a negative lead-in E on the 980TDi's G78, whose page
+/// gives E the range "-9999.9999~9999.9999" while calling it "无符号".
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum E980 {
+    /// `refuse-negative` (default): "无符号" wins; a negative E is
+    /// `out_of_range`, as every other unsigned length.
+    #[default]
+    RefuseNegative,
+    /// `signed`: the range wins; a negative E is accepted and, being
+    /// without direction ("无符号"), made as its magnitude, as the 980TDi
+    /// G92 page does for J and K (note 10: "J、K输入负值时，按正值处理").
+    Signed,
+}
+
+/// The readings chosen for a machine. [`Readings::default`] is the
+/// project's reading of every point.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Readings {
+    /// R-RUNOUT.
+    pub run_out: RunOutClamp,
+    /// R-XRUNOUT.
+    pub x_run_out: XRunOut,
+    /// R-E980.
+    pub e980: E980,
+}
+
+/// One value of a reading: its name and where it comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ReadingValue {
+    /// The name scripts use (`--reading ID=NAME`).
+    pub name: &'static str,
+    /// Its source and reason, in one line.
+    pub source: &'static str,
+}
+
+/// One selectable reading.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ReadingEntry {
+    /// The id of docs/INTERPRETATIONS.md.
+    pub id: &'static str,
+    /// What it decides, in a few words.
+    pub point: &'static str,
+    /// Its values, the default first.
+    pub values: &'static [ReadingValue],
+    /// The profiles on which the choice changes anything.
+    pub profiles: &'static [ProfileName],
+}
+
+impl ReadingEntry {
+    /// The default value on `profile` (the same on every profile for the
+    /// readings listed today: the first value).
+    #[must_use]
+    pub fn default_on(&self, _profile: ProfileName) -> &'static str {
+        self.values.first().map_or("", |v| v.name)
+    }
+
+    fn names(&self) -> String {
+        self.values.iter().map(|v| v.name).collect::<Vec<_>>().join(", ")
+    }
+}
+
+const GSK: &[ProfileName] = &[ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988];
+
+/// Every selectable reading, in the order `cycleref readings` lists them.
+pub const TABLE: &[ReadingEntry] = &[
+    ReadingEntry {
+        id: "R-RUNOUT",
+        point: "the clamp of the short-axis run-out J at the retract (988TA G92 note 5)",
+        values: &[
+            ReadingValue {
+                name: "all-profiles",
+                source: "988TA G92 note 5 adopted for every profile; the 980TDi and FANUC pages are silent",
+            },
+            ReadingValue {
+                name: "gsk988-only",
+                source: "only the 988TA page says it: J as written on fanuc and gsk980",
+            },
+        ],
+        profiles: &[ProfileName::Fanuc, ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-XRUNOUT",
+        point: "an X-long run-out towards A when s*i > 0 (into the work)",
+        values: &[
+            ReadingValue {
+                name: "refuse",
+                source: "run_out_into_work: the retract after it would cut the thread",
+            },
+            ReadingValue {
+                name: "towards-start",
+                source: "\"根据程序起点位置自动确定退尾方向\" as written; no page calls it an alarm",
+            },
+        ],
+        profiles: GSK,
+    },
+    ReadingEntry {
+        id: "R-E980",
+        point: "a negative lead-in E on the 980TDi's G78",
+        values: &[
+            ReadingValue { name: "refuse-negative", source: "980TDi G78: E \"无符号\" (unsigned)" },
+            ReadingValue {
+                name: "signed",
+                source: "980TDi G78: E \"-9999.9999~9999.9999\"; made as |E| like G92 note 10's J and K",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+];
+
+impl Readings {
+    /// The value of reading `id`, by name.
+    #[must_use]
+    pub fn get(&self, id: &str) -> Option<&'static str> {
+        let v = match id {
+            "R-RUNOUT" => match self.run_out {
+                RunOutClamp::AllProfiles => "all-profiles",
+                RunOutClamp::Gsk988Only => "gsk988-only",
+            },
+            "R-XRUNOUT" => match self.x_run_out {
+                XRunOut::Refuse => "refuse",
+                XRunOut::TowardsStart => "towards-start",
+            },
+            "R-E980" => match self.e980 {
+                E980::RefuseNegative => "refuse-negative",
+                E980::Signed => "signed",
+            },
+            _ => return None,
+        };
+        Some(v)
+    }
+
+    /// Sets reading `id` to the value named `value`.
+    ///
+    /// # Errors
+    ///
+    /// [`ParamsError::UnknownReading`] naming the ids, or
+    /// [`ParamsError::BadReading`] naming the reading's values.
+    pub fn set(&mut self, id: &str, value: &str) -> Result<(), ParamsError> {
+        let Some(entry) = TABLE.iter().find(|e| e.id == id) else {
+            return Err(ParamsError::UnknownReading { id: id.to_string(), known: known_ids() });
+        };
+        let bad = || ParamsError::BadReading { id: entry.id, value: value.to_string(), valid: entry.names() };
+        match (entry.id, value) {
+            ("R-RUNOUT", "all-profiles") => self.run_out = RunOutClamp::AllProfiles,
+            ("R-RUNOUT", "gsk988-only") => self.run_out = RunOutClamp::Gsk988Only,
+            ("R-XRUNOUT", "refuse") => self.x_run_out = XRunOut::Refuse,
+            ("R-XRUNOUT", "towards-start") => self.x_run_out = XRunOut::TowardsStart,
+            ("R-E980", "refuse-negative") => self.e980 = E980::RefuseNegative,
+            ("R-E980", "signed") => self.e980 = E980::Signed,
+            _ => return Err(bad()),
+        }
+        Ok(())
+    }
+
+    /// Applies `ID=VALUE` pairs separated by commas (the C options field;
+    /// blanks around each pair are ignored, an empty text sets nothing).
+    ///
+    /// # Errors
+    ///
+    /// [`ParamsError::ReadingSyntax`] for a pair without `=`, else as
+    /// [`Readings::set`].
+    pub fn apply_list(&mut self, text: &str) -> Result<(), ParamsError> {
+        for pair in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+            self.apply_pair(pair)?;
+        }
+        Ok(())
+    }
+
+    /// Applies one `ID=VALUE` (`--reading`).
+    ///
+    /// # Errors
+    ///
+    /// As [`Readings::apply_list`].
+    pub fn apply_pair(&mut self, pair: &str) -> Result<(), ParamsError> {
+        let Some((id, value)) = pair.split_once('=') else {
+            return Err(ParamsError::ReadingSyntax { text: pair.to_string() });
+        };
+        self.set(id.trim(), value.trim())
+    }
+
+    /// The readings whose value differs from the default on `profile`, as
+    /// `(id, value)` in [`TABLE`]'s order: what the `check` report and the
+    /// JSON documents name.
+    #[must_use]
+    pub fn non_default(&self, profile: ProfileName) -> Vec<(&'static str, &'static str)> {
+        TABLE
+            .iter()
+            .filter_map(|e| {
+                let v = self.get(e.id)?;
+                (v != e.default_on(profile)).then_some((e.id, v))
+            })
+            .collect()
+    }
+
+    /// What a threading cycle of `profile` does under these readings.
+    #[must_use]
+    pub fn for_cycle(&self, profile: ProfileName) -> CycleReadings {
+        CycleReadings {
+            clamp_run_out: self.run_out == RunOutClamp::AllProfiles || profile == ProfileName::Gsk988,
+            x_run_out_towards_start: self.x_run_out == XRunOut::TowardsStart,
+        }
+    }
+}
+
+fn known_ids() -> String {
+    TABLE.iter().map(|e| e.id).collect::<Vec<_>>().join(", ")
+}
+
+/// `cycleref readings`: one line per reading of [`TABLE`], its id, its
+/// values with the default on `profile` marked `*` (every profile's when
+/// `None`), the profiles it changes anything on, and each value's source.
+pub struct Listing {
+    /// The profile whose defaults are marked.
+    pub profile: Option<ProfileName>,
+}
+
+impl fmt::Display for Listing {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for e in TABLE {
+            if let Some(p) = self.profile {
+                if !e.profiles.contains(&p) {
+                    continue;
+                }
+            }
+            let default = e.default_on(self.profile.unwrap_or(ProfileName::Gsk988));
+            let values: Vec<String> = e
+                .values
+                .iter()
+                .map(|v| if v.name == default { format!("{}*", v.name) } else { v.name.to_string() })
+                .collect();
+            let profiles: Vec<String> = e.profiles.iter().map(ToString::to_string).collect();
+            let sources: Vec<String> = e.values.iter().map(|v| format!("{}: {}", v.name, v.source)).collect();
+            writeln!(
+                f,
+                "{}\t{}\t[{}]\t{}",
+                e.id,
+                values.join(" | "),
+                profiles.join(","),
+                sources.join("; ")
+            )?;
+        }
+        Ok(())
+    }
+}

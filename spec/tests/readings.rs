@@ -1,0 +1,246 @@
+//! Readings per control (issue 34): each selectable reading's non-default
+//! value on a program whose moves are worked by hand from the manual's
+//! words (the arithmetic in the comments), the default unchanged, both
+//! engines equal under every value, and the errors naming the valid ids
+//! and values. IS-B metric, X as a diameter; J, K and E are radius values.
+
+use cycleref::{CycleError, Move, Point, Role};
+use cycleref_spec::pipeline::{expand, Cycle, Engine};
+use cycleref_spec::profile::{Machine, ParamsError};
+use cycleref_spec::readings::{Listing, Readings, TABLE};
+use cycleref_spec::{read, ErrorKind, ProfileName};
+
+/// Every cycle's moves, by both engines (which must agree), or the first
+/// error (reader or cycle), which both engines must also agree on.
+fn run(src: &str, m: &Machine) -> Result<Vec<Move>, ErrorKind> {
+    let p = read(src, m).map_err(|e| e.kind)?;
+    let mut all = Vec::new();
+    for c in p.items.iter().filter_map(Cycle::of) {
+        let ours: Result<Vec<Move>, CycleError> = expand(c, Engine::Impl).map(Iterator::collect);
+        let reference: Result<Vec<Move>, CycleError> = expand(c, Engine::Spec).map(Iterator::collect);
+        assert_eq!(ours, reference, "line {}", c.line());
+        all.extend(ours.map_err(ErrorKind::Cycle)?);
+    }
+    Ok(all)
+}
+
+fn machine(profile: ProfileName, readings: &[&str]) -> Machine {
+    let mut m = Machine::new(profile);
+    for r in readings {
+        m.readings.apply_pair(r).unwrap_or_else(|e| panic!("{e}"));
+    }
+    m
+}
+
+fn ends(moves: &[Move]) -> Vec<(Role, Point)> {
+    moves.iter().map(|m| (m.role, m.to)).collect()
+}
+
+/// The 980TDi's G92 with a run-out J longer than the retract.
+/// A = (X40, Z5), C = (X30, Z-20), R = 0: Z long (|W| = 25 > 0). K = 2:
+/// the cut ends at Z-20 + 2 = Z-18 on X30. J = 8 (radius) is 16 on the
+/// diameter; the retract without run-out is X40 - X30 = 10.
+const G92_LONG_J: &str = "M3 S300\nG00 X40 Z5\nG92 X30 Z-20 F2 J8 K2\nM30\n";
+
+/// R-RUNOUT `all-profiles` (default): 988TA G92 note 5 clamps J to the
+/// retract, 16 → 10: the run-out ends at X40, Z-20, so the retract to X40
+/// does not move (R-ZERO) and Z returns to Z5.
+#[test]
+fn run_out_clamped_by_default() {
+    let got = run(G92_LONG_J, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -18_000)),
+            (Role::RunOut, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    );
+}
+
+/// R-RUNOUT `gsk988-only` on the 980TDi: J as written, X30 + 2·8 = X46 at
+/// Z-20; then step ③, "X 轴以快速移动速度退刀 … 返回到 X 轴绝对坐标与起点相同处":
+/// back to X40 at Z-20; step ④ Z to Z5.
+#[test]
+fn run_out_as_written_on_gsk980_under_gsk988_only() {
+    let got = run(G92_LONG_J, &machine(ProfileName::Gsk980, &["R-RUNOUT=gsk988-only"])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -18_000)),
+            (Role::RunOut, Point::new(46_000, -20_000)),
+            (Role::Retract, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    );
+}
+
+/// On the 988TA, whose page has note 5, `gsk988-only` changes nothing.
+#[test]
+fn run_out_still_clamped_on_gsk988_under_gsk988_only() {
+    let default = run(G92_LONG_J, &machine(ProfileName::Gsk988, &[])).unwrap();
+    let chosen = run(G92_LONG_J, &machine(ProfileName::Gsk988, &["R-RUNOUT=gsk988-only"])).unwrap();
+    assert_eq!(default, chosen);
+    assert_eq!(default[2].to, Point::new(40_000, -20_000));
+}
+
+/// The same on a G76 of the 980TDi (J, K in block 1, P/Q in increments):
+/// k = 1 mm, Δd = 1 mm, d = 0, m = 1, a = 0: one rough pass at depth
+/// k - d = 1 and one finishing pass at k, both ending at X_D + 2·(k - Dn)
+/// = X30, no flank shift (a = 0); A = (X40, Z5), D = (X30, Z-20). Each
+/// pass: to B (X30, Z5), cut to Z-18 (K2), run-out 2·J = 16 to X46 at
+/// Z-20 (unclamped), retract to X40, return to Z5.
+#[test]
+fn g76_run_out_as_written_under_gsk988_only() {
+    let src = "M3 S300\nG00 X40 Z5\nG76 P010000 Q100 R0 J8 K2\nG76 X30 Z-20 P1000 Q1000 F2\nM30\n";
+    let pass = [
+        (Role::Approach, Point::new(30_000, 5_000)),
+        (Role::Cut, Point::new(30_000, -18_000)),
+        (Role::RunOut, Point::new(46_000, -20_000)),
+        (Role::Retract, Point::new(40_000, -20_000)),
+        (Role::Return, Point::new(40_000, 5_000)),
+    ];
+    let got = run(src, &machine(ProfileName::Gsk980, &["R-RUNOUT=gsk988-only"])).unwrap();
+    assert_eq!(ends(&got), [pass, pass].concat());
+    // Default: clamped to X40, the retract left out.
+    let got = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    let clamped = [pass[0], pass[1], (Role::RunOut, Point::new(40_000, -20_000)), pass[4]];
+    assert_eq!(ends(&got), [clamped, clamped].concat());
+}
+
+/// An unclamped run-out beyond the range tables is refused (R-RANGE):
+/// X999 + 2·J with J = 999 999.999 mm.
+#[test]
+fn unclamped_run_out_beyond_the_range_is_refused() {
+    let src = "M3 S300\nG00 X1000 Z5\nG92 X999 Z-20 F2 J999999.999 K2\nM30\n";
+    let e = run(src, &machine(ProfileName::Gsk980, &["R-RUNOUT=gsk988-only"])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::OutOfRange { .. })), "{e:?}");
+    assert!(run(src, &machine(ProfileName::Gsk980, &[])).is_ok());
+}
+
+/// An X-long G92 whose cut line rises towards A (s·R > 0).
+/// A = (X60, Z0), C = (X20, Z-5), R = +10: external (X_A > X_C, s = +1),
+/// B = X20 + 2·10 = X40 at Z0; U = -40 and R > 0 differ in sign and
+/// |R| = 10 <= |U/2| = 20. |W| = 5 < |R| = 10: X is the long axis, Z the
+/// short one. K = 1 along X (radius): the cut ends 2 (diameter) before
+/// C's X, at X22, on the line B→C: Z = 0 + (-5)·(22 - 40)/(20 - 40) =
+/// -4.5. J = 2 along Z towards A ("根据程序起点位置自动确定退尾方向"): from
+/// C's Z-5 to Z-3, at C's X20. Then X back to X60 at Z-3 (③), Z to Z0 (④).
+const G92_X_LONG: &str = "M3 S300\nG00 X60 Z0\nG92 X20 Z-5 R10 F2 J2 K1\nM30\n";
+
+/// R-XRUNOUT `refuse` (default): the run-out ends at X20, Z-3, where the
+/// cut line lies at X20 + 2·10·2/5 = X28: inside the material.
+#[test]
+fn x_long_run_out_into_the_work_refused_by_default() {
+    let e = run(G92_X_LONG, &machine(ProfileName::Gsk980, &[])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::RunOutIntoWork { .. })), "{e:?}");
+}
+
+/// R-XRUNOUT `towards-start`: the moves worked out above.
+#[test]
+fn x_long_run_out_towards_start() {
+    let got = run(G92_X_LONG, &machine(ProfileName::Gsk980, &["R-XRUNOUT=towards-start"])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(40_000, 0)),
+            (Role::Cut, Point::new(22_000, -4_500)),
+            (Role::RunOut, Point::new(20_000, -3_000)),
+            (Role::Retract, Point::new(60_000, -3_000)),
+            (Role::Return, Point::new(60_000, 0)),
+        ]
+    );
+}
+
+/// The 980TDi's G78 with E: "E：X 向旋进距离值，取值范围为-9999.9999~9999.9999
+/// （单位：mm，半径值、无符号)".
+fn g78_with_e(e: &str) -> String {
+    format!("M3 S300\nG00 X80 Z10\nG78 P010245 Q150 R0.5 J1.5 K2 D2 E{e}\nG78 X60 Z-60 P3000 Q1800 F3\nM30\n")
+}
+
+/// R-E980 `refuse-negative` (default): "无符号" wins, E-1 is out of range
+/// (0..), on the E word.
+#[test]
+fn negative_e_refused_by_default() {
+    let e = read(&g78_with_e("-1"), &machine(ProfileName::Gsk980, &[])).unwrap_err();
+    assert_eq!(e.word.as_deref(), Some("E-1"));
+    assert!(matches!(e.kind, ErrorKind::OutOfRange { ref range } if range.starts_with("0..")), "{e}");
+}
+
+/// R-E980 `signed`: the range wins and E, having no direction ("无符号"),
+/// is its magnitude (as 980TDi G92 note 10 for J and K: "J、K输入负值时，按
+/// 正值处理"): E-1 cuts exactly the passes of E1 (R-LEADIN: each pass
+/// screws in from 1 mm (radius) outside Bn, whole leads back in Z).
+#[test]
+fn negative_e_is_its_magnitude_under_signed() {
+    let m = machine(ProfileName::Gsk980, &["R-E980=signed"]);
+    let negative = run(&g78_with_e("-1"), &m).unwrap();
+    let positive = run(&g78_with_e("1"), &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(negative, positive);
+    assert!(negative.iter().any(|m| m.role == Role::LeadIn));
+    // The first pass's lead-in start: X of B1 + 2·1, whole leads (F3) back
+    // in Z: E = 1 <= 1 lead, so Z10 + 3 = Z13.
+    let approach = negative[0].to;
+    let lead_in_end = negative[1].to;
+    assert_eq!(approach.x - lead_in_end.x, 2_000);
+    assert_eq!(approach.z - lead_in_end.z, 3_000);
+}
+
+/// R-E980 concerns the 980TDi only: the 988TA's E stays unsigned.
+#[test]
+fn negative_e_still_refused_on_gsk988() {
+    let src = "M3 S300\nG00 X80 Z10\nG76 P020560 Q0.15 R0.1 E-1\nG76 X60 Z-30 P2 Q0.5 F2\nM30\n";
+    assert!(read(src, &machine(ProfileName::Gsk988, &["R-E980=signed"])).is_err());
+}
+
+/// The errors name the valid ids and values.
+#[test]
+fn unknown_reading_or_value_names_the_valid_ones() {
+    let mut r = Readings::default();
+    let e = r.apply_pair("R-NOPE=x").unwrap_err();
+    assert_eq!(e.stable_kind(), "params:unknown_reading");
+    assert_eq!(
+        e.to_string(),
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980)"
+    );
+    let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
+    assert_eq!(e.stable_kind(), "params:bad_reading");
+    assert_eq!(
+        e.to_string(),
+        "reading R-RUNOUT has no value `sometimes` (its values are all-profiles, gsk988-only)"
+    );
+    let e = r.apply_pair("R-RUNOUT").unwrap_err();
+    assert!(matches!(e, ParamsError::ReadingSyntax { .. }));
+    assert_eq!(r, Readings::default());
+}
+
+/// `[readings]` in the parameter file, and the list of the C field.
+#[test]
+fn readings_from_the_parameter_file_and_a_list() {
+    let mut m = Machine::new(ProfileName::Gsk980);
+    m.apply_toml("[readings]\n\"R-RUNOUT\" = \"gsk988-only\"\n\"R-XRUNOUT\" = \"towards-start\"\n").unwrap();
+    assert_eq!(
+        m.readings.non_default(ProfileName::Gsk980),
+        [("R-RUNOUT", "gsk988-only"), ("R-XRUNOUT", "towards-start")]
+    );
+    let e = m.apply_toml("[readings]\n\"R-E980\" = \"maybe\"\n").unwrap_err();
+    assert_eq!(e.stable_kind(), "params:bad_reading");
+    let e = m.apply_toml("readings = 3\n").unwrap_err();
+    assert_eq!(e.stable_kind(), "params:bad_setting");
+    let mut r = Readings::default();
+    r.apply_list(" R-E980=signed , R-XRUNOUT=towards-start").unwrap();
+    assert_eq!(r.non_default(ProfileName::Gsk980), [("R-XRUNOUT", "towards-start"), ("R-E980", "signed")]);
+    assert!(Readings::default().non_default(ProfileName::Gsk988).is_empty());
+}
+
+/// `cycleref readings`: one line per reading, the default marked.
+#[test]
+fn listing() {
+    let all = Listing { profile: None }.to_string();
+    assert_eq!(all.lines().count(), TABLE.len());
+    assert!(all.lines().next().unwrap().starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t"));
+    let gsk988 = Listing { profile: Some(ProfileName::Gsk988) }.to_string();
+    assert!(!gsk988.contains("R-RUNOUT") && !gsk988.contains("R-E980") && gsk988.contains("R-XRUNOUT"));
+}
