@@ -125,6 +125,11 @@ fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: b
 
 fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
     let t = &mut NcText::default();
+    // The readings in force that differ from the defaults (issue 34),
+    // named under each cycle's heading; empty under the defaults.
+    let readings: Vec<String> =
+        crate::job::readings_in_force(&job.machine).iter().map(|(id, v)| format!("{id}={v}")).collect();
+    let readings = readings.join(", ");
     each_item(job, |item| {
         let cycle = Cycle::of(item);
         match item {
@@ -135,7 +140,7 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             _ => nc_aux(out, item.block(), false)?,
         }
         if let Some(cycle) = cycle {
-            nc_cycle(out, t, cycle, moves(job, cycle)?, job.q_unit)?;
+            nc_cycle(out, t, cycle, moves(job, cycle)?, job.q_unit, &readings)?;
         }
         nc_aux(out, item.block(), true)
     })
@@ -145,17 +150,23 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// its heading, its moves in its words ([`MoveWords`]), each pass, start,
 /// plunge and contour announced by a comment as the cycle's style asks
 /// ([`NcStyle`]), then what restores the modal state the cycle changed.
+/// `readings` (the non-default readings, `ID=VALUE, …`) is named on a
+/// comment line after the heading when it is not empty.
 fn nc_cycle<W: Write>(
     out: &mut W,
     t: &mut NcText,
     cycle: Cycle<'_, '_>,
     moves: Moves,
     q: QUnit,
+    readings: &str,
 ) -> io::Result<()> {
     let u = cycle.units();
     let style = cycle.nc_style();
     if let Some(heading) = cycle.heading(&moves) {
         writeln!(out, "({heading})")?;
+        if !readings.is_empty() {
+            writeln!(out, "(readings: {readings})")?;
+        }
     }
     let x_factor = cycle.x_mode().factor();
     let (mut pass, mut plunge, mut contour) = (None, None, None);

@@ -40,6 +40,13 @@ fn reading_on_the_command_line_changes_the_moves_and_is_named() {
     assert!(!default.contains("X46"), "{default}");
     let chosen = common::stdout(&["expand", "--profile", "gsk980", "--reading", "R-RUNOUT=gsk988-only", p]);
     assert!(chosen.contains("G32 X46.000 Z-20.000 F2.0\nG00 X40.000 Z-20.000\n"), "{chosen}");
+    // The nc output names the reading under the cycle's heading, and only
+    // then.
+    assert!(
+        chosen.contains("(G92 line 3: 1 pass x 1 start)\n(readings: R-RUNOUT=gsk988-only)\n"),
+        "{chosen}"
+    );
+    assert!(!default.contains("readings"), "{default}");
 
     // The JSON document names the readings only when they differ.
     let v = schema("cycleref-moves-1.schema.json");
