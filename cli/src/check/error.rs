@@ -88,10 +88,12 @@ impl StepError {
     }
 }
 
-/// `line N, word `W`: ` or `line N: `.
+/// `line N, word `W`: ` or `line N: `, the word cut and escaped as the
+/// program reader's errors show it ([`cycleref_spec::error::shown`]): a
+/// huge word or a control byte is never echoed whole or raw.
 fn at(f: &mut fmt::Formatter<'_>, line: usize, word: Option<&str>) -> fmt::Result {
     match word {
-        Some(w) => write!(f, "line {line}, word `{w}`: "),
+        Some(w) => write!(f, "line {line}, word `{}`: ", cycleref_spec::error::shown(w)),
         None => write!(f, "line {line}: "),
     }
 }
