@@ -19,7 +19,7 @@ use cycleref::{
     CycleError, G32Moves, G75Moves, G76Moves, G92Moves, LinuxCncMoves, Move, Point, Units, XMode,
 };
 
-use crate::cycles::{Annotations, CycleCall, Heading, NcStyle, PassTable, ReferenceMoves, Region};
+use crate::cycles::{Annotations, CycleCall, Heading, NcStyle, Panel, PassTable, ReferenceMoves, Region};
 use crate::lex::Block;
 
 use crate::error::ProgramError;
@@ -137,6 +137,17 @@ macro_rules! registry {
             pub fn tags(self, moves: &[Move], tag: &mut dyn FnMut(&'static str)) {
                 match self {
                     $(Cycle::$variant(c) => c.tags(moves, tag),)*
+                }
+            }
+
+            /// How `plot` draws the cycle ([`CycleCall::panel`]).
+            ///
+            /// # Errors
+            ///
+            /// The cycle's alarm.
+            pub fn panel(self, engine: Engine) -> Result<Panel, CycleError> {
+                match self {
+                    $(Cycle::$variant(c) => c.panel(engine),)*
                 }
             }
 

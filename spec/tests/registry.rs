@@ -59,6 +59,9 @@ fn every_cycle_of_the_registry_is_found_by_its_item_and_expands_by_both_engines(
         let mut tags = Vec::new();
         cycle.tags(&ours, &mut |t| tags.push(t));
         assert!(!tags.is_empty(), "{code}: its features");
+        // And how it is drawn, the same by either engine.
+        let panel = cycle.panel(Engine::Impl).unwrap_or_else(|e| panic!("{code}: {e}"));
+        assert_eq!(panel, cycle.panel(Engine::Spec).unwrap_or_else(|e| panic!("{code}: {e}")), "{code}");
     }
     assert_eq!(kinds.len(), CYCLE_KINDS, "every line of the registry has a program here");
 }
@@ -79,4 +82,50 @@ fn each_cycle_is_one_module_of_the_cycles_directory() {
         let text = std::fs::read_to_string(dir.join(m)).expect("a module");
         assert!(text.contains("CycleCall<'a> for "), "{name} implements CycleCall");
     }
+}
+
+/// The G76 panel's points A, B, C and D, worked by hand from the 988TA
+/// M68x6 program: A = (X80, Z10); C = (X of D + i, Z of A) = (X60.64,
+/// Z10); B = X of C + 2·k outwards (diameter X, external) = 60.64 + 2 ×
+/// 3.68 = X68.00 at Z10; D = (X60.64, Z-62). In micrometres.
+#[test]
+fn the_g76_panel_carries_the_manuals_points() {
+    use cycleref::Point;
+    use cycleref_spec::cycles::{Panel, PassesPanel};
+    let (profile, _, text) = PROGRAMS[0];
+    let program = read(text, &Machine::new(profile)).expect("reads");
+    let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+    let Ok(Panel::Passes(PassesPanel { points, direction, side, starts, .. })) = cycle.panel(Engine::Impl)
+    else {
+        panic!("G76 is drawn on a panel of its own");
+    };
+    assert_eq!(
+        points,
+        [
+            Point::new(80_000, 10_000),
+            Point::new(68_000, 10_000),
+            Point::new(60_640, 10_000),
+            Point::new(60_640, -62_000)
+        ]
+    );
+    assert_eq!((direction, side, starts), (-1, 1, 1), "cut towards -Z, external, one start");
+}
+
+/// The blocks of a program share a panel by title; the LinuxCNC ones hold
+/// X as a diameter (reading R-CHECKLCNC).
+#[test]
+fn the_single_block_cycles_share_panels_by_title() {
+    use cycleref_spec::cycles::Panel;
+    let titles: Vec<(&str, bool)> = PROGRAMS
+        .iter()
+        .filter_map(|(profile, code, text)| {
+            let program = read(text, &Machine::new(*profile)).expect("reads");
+            let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+            match cycle.panel(Engine::Impl).unwrap_or_else(|e| panic!("{code}: {e}")) {
+                Panel::Blocks(b) => Some((b.title, b.x_as_diameter)),
+                Panel::Passes(_) | Panel::Groove(_) => None,
+            }
+        })
+        .collect();
+    assert_eq!(titles, [("G32", false), ("G92", false), ("G76 (LinuxCNC)", true), ("G33", true)]);
 }

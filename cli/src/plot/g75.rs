@@ -19,8 +19,7 @@
 use std::fmt::Write as _;
 
 use cycleref::{Motion, Move, Point, Role};
-use cycleref_spec::pipeline::Cycle;
-use cycleref_spec::reader::G75Call;
+use cycleref_spec::cycles::GroovePanel;
 use svg::node::element::{Group, Path, Rectangle, Title};
 
 use super::canvas::{
@@ -38,66 +37,33 @@ const PROFILE: &str = "#222222";
 
 /// What a G75.1 panel draws.
 pub(super) struct Groove<'a> {
-    /// The cycle.
-    call: G75Call<'a>,
-    /// Its moves.
-    moves: Vec<Move>,
-    /// The finishing contour of the same groove for a pointed tool (the
-    /// programmed profile), from its start on the surface to its end.
+    /// The cycle and its moves.
+    drawn: &'a super::Drawn,
+    /// Its programmed profile, roughing region and tool.
+    info: &'a GroovePanel,
+    /// The programmed profile, drawn (`profile_from_contour`).
     profile: Vec<Move>,
-    /// The roughing region's outline (`cycleref::groove_profile`): R0, K1
-    /// and K2 (or Q1), K3 and K4 (or Q2), R3, absolute, without the tool
-    /// width.
-    rough: Vec<Point>,
 }
 
 impl<'a> Groove<'a> {
-    /// The panel of `call` with its `moves`: the profile and the roughing
-    /// region are computed here by `job`'s engine (the module
+    /// The panel of `drawn` drawn as `info` says: the profile and the
+    /// roughing region were computed by the job's engine (the module
     /// documentation says how).
-    ///
-    /// # Errors
-    ///
-    /// The engine's error for the pointed-tool run or the roughing region.
-    pub(super) fn new(job: &crate::Job, call: G75Call<'a>, moves: Vec<Move>) -> Result<Self, crate::Failure> {
-        let pointed = G75Call {
-            cycle: cycleref::G75Cycle { tool_width: None, path: cycleref::PathType::Finish, ..call.cycle },
-            ..call.clone()
-        };
-        let contour: Vec<Move> =
-            job.expand(Cycle::G75(&pointed))?.filter(|m| m.role == Role::FinishContour).collect();
-        let rough = cycleref::groove_profile(&call.cycle)
-            .map_err(|error| {
-                job.fail(&cycleref_spec::RunError::Cycle { line: call.block.line, code: "G75.1", error })
-            })?
-            .roughing()
-            .to_vec();
-        Ok(Groove { call, moves, profile: profile_from_contour(&contour), rough })
+    pub(super) fn new(drawn: &'a super::Drawn, info: &'a GroovePanel) -> Self {
+        Groove { drawn, info, profile: profile_from_contour(&info.profile) }
     }
 
     /// The panel's mapping: every point of the moves and the profile, and
     /// those of the trace `trace` that stray no further than their extent
     /// ([`Mapping::around_both`]).
     pub(super) fn map(&self, trace: &[Point]) -> Mapping {
-        let c = &self.call.cycle;
-        let ours: Vec<Point> = std::iter::once(c.from)
-            .chain(std::iter::once(c.start))
-            .chain(self.moves.iter().map(|m| m.to))
+        let d = self.drawn;
+        let ours: Vec<Point> = std::iter::once(d.from)
+            .chain(std::iter::once(d.start))
+            .chain(d.moves.iter().map(|m| m.to))
             .chain(self.profile.iter().map(|m| m.to))
             .collect();
-        Mapping::around_both(&ours, trace, c.units.per_unit())
-    }
-
-    /// The line of block 2, where the cycle runs.
-    pub(super) fn line(&self) -> usize {
-        self.call.block.line
-    }
-
-    /// Our path, for the zoomed panel: where the tool is when the cycle
-    /// starts, and its moves.
-    pub(super) fn path(&self) -> super::zoom::Ours<'_> {
-        let c = &self.call.cycle;
-        super::zoom::Ours { from: c.from, moves: &self.moves, units: c.units, x_mode: c.x_mode }
+        Mapping::around_both(&ours, trace, d.units.per_unit())
     }
 
     /// The panel's drawing, with the divergences `marks` of a trace in
@@ -109,8 +75,8 @@ impl<'a> Groove<'a> {
         first: bool,
         trace: &[Point],
     ) -> Group {
-        let c = &self.call.cycle;
-        let u = c.units;
+        let (c, d) = (self.info, self.drawn);
+        let u = d.units;
         let map = self.map(trace);
         let tool = match c.tool_width {
             Some(w) => format!("grooving tool I{}", fixed(w, u)),
@@ -118,10 +84,10 @@ impl<'a> Groove<'a> {
         };
         let mut g = heading(
             Group::new(),
-            format!("{name} \u{2014} G75.1 at lines {}-{}", self.call.params_line, self.call.block.line),
+            format!("{name} \u{2014} G75.1 at lines {}-{}", d.params_line.unwrap_or(d.line), d.line),
             format!("{tool}; {}", scale_note(&map)),
         );
-        let layers_total = self
+        let layers_total = d
             .moves
             .iter()
             .filter_map(|m| crate::format::plunge_of(m.role))
@@ -158,8 +124,8 @@ impl<'a> Groove<'a> {
             ));
         }
         g = legend(g, &entries);
-        g = draw_axes(g, &map, unit_name(u.unit), x_kind(c.x_mode));
-        let x_factor = c.x_mode.factor();
+        g = draw_axes(g, &map, unit_name(u.unit), x_kind(d.x_mode));
+        let x_factor = d.x_mode.factor();
         // The groove: the profile closed along the surface.
         if let Some(first) = self.profile.first() {
             let mut d = String::new();
@@ -180,7 +146,7 @@ impl<'a> Groove<'a> {
                     .add(Title::new("the programmed groove profile")),
             );
         }
-        if let Some((first, rest)) = self.rough.split_first() {
+        if let Some((first, rest)) = c.roughing.split_first() {
             let (x, y) = map.px(*first);
             let mut d = format!("M{} {}", num(x), num(y));
             for p in rest {
@@ -198,10 +164,10 @@ impl<'a> Groove<'a> {
             );
         }
         let layers = layers_total;
-        let mut at = c.from;
+        let mut at = d.from;
         let mut rapids = String::new();
         let mut bars = Group::new();
-        for (i, m) in self.moves.iter().enumerate() {
+        for (i, m) in d.moves.iter().enumerate() {
             if m.motion == Motion::Rapid {
                 let (x1, y1) = map.px(at);
                 let (x2, y2) = map.px(m.to);
@@ -233,9 +199,9 @@ impl<'a> Groove<'a> {
             // The tool's edge at the bottom of each plunge (the last peck).
             if let (Role::Peck(p), Some(w)) = (m.role, c.tool_width) {
                 let last =
-                    !matches!(self.moves.get(i + 1).map(|n| n.role), Some(Role::PeckRetract(q)) if q == p);
+                    !matches!(d.moves.get(i + 1).map(|n| n.role), Some(Role::PeckRetract(q)) if q == p);
                 if last && w > 0 {
-                    let far = Point::new(m.to.x, m.to.z + c.axial_sign() * w);
+                    let far = Point::new(m.to.x, m.to.z + c.width_direction * w);
                     let (x1, y1) = map.px(m.to);
                     let (x2, _) = map.px(far);
                     bars = bars.add(

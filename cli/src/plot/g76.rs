@@ -13,8 +13,8 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 
-use cycleref::{G76Cycle, Motion, Move, PassKind, Point, Role};
-use cycleref_spec::reader::G76Call;
+use cycleref::{Motion, Move, PassKind, Point, Role};
+use cycleref_spec::cycles::PassesPanel;
 use svg::node::element::{Circle, Group, Line, Path, Text, Title};
 
 use super::canvas::{
@@ -27,12 +27,6 @@ use crate::format::{fixed, lead_word};
 const LEAD_IN: &str = "#9467bd";
 /// Rough passes listed one by one in the legend up to this count.
 const LEGEND_PASSES: u32 = 8;
-
-/// The path of the cycle `call` with its `moves`, for the zoomed panel.
-pub(super) fn ours<'a>(call: &G76Call<'_>, moves: &'a [Move]) -> super::zoom::Ours<'a> {
-    let c = &call.cycle;
-    super::zoom::Ours { from: c.start, moves, units: c.units, x_mode: c.x_mode }
-}
 
 /// Path data of line segments, drawing each distinct segment once and
 /// joining segments that continue one another.
@@ -84,7 +78,10 @@ struct PassPath {
 /// One cycle, ready to draw.
 pub(super) struct Panel<'a> {
     name: &'a str,
-    call: &'a G76Call<'a>,
+    /// The cycle and its moves.
+    drawn: &'a super::Drawn,
+    /// Its starts and lead.
+    info: &'a PassesPanel,
     map: Mapping,
     /// A, B, C, D.
     points: [Point; 4],
@@ -103,38 +100,28 @@ pub(super) struct Panel<'a> {
 }
 
 impl<'a> Panel<'a> {
-    /// The panel of `call` and its `moves`, for the program `name`.
+    /// The panel of `drawn` drawn as `info` says, for the program `name`.
     /// `trace`: the points of a trace over this cycle, which the frame
     /// grows to hold (within reason: [`Mapping::around_both`]).
     pub(super) fn new(
         name: &'a str,
-        call: &'a G76Call<'a>,
-        moves: &[Move],
+        drawn: &'a super::Drawn,
+        info: &'a PassesPanel,
         trace: &[Point],
-    ) -> Result<Panel<'a>, crate::Failure> {
-        let c: &G76Cycle = &call.cycle;
-        let line = call.block.line;
-        let g = cycleref_spec::g76::geometry(c).map_err(|error| {
-            let run = cycleref_spec::RunError::Cycle { line, code: call.code.code(), error };
-            crate::Failure::program(run.stable_kind(), format!("{name}: {run}"))
-        })?;
-        let xf = c.x_mode.factor();
-        // C: Z of A, X of D plus i; B: X of C plus k towards A (spec::g76::geometry).
-        let c_x = c.end.x + xf * c.taper;
-        let b_x = c_x + g.side * xf * c.thread_height;
-        let points = [c.start, Point::new(b_x, c.start.z), Point::new(c_x, c.start.z), c.end];
-        let per_unit = c.units.per_unit();
-
-        let ours: Vec<Point> = points.iter().copied().chain(moves.iter().map(|m| m.to)).collect();
+    ) -> Panel<'a> {
+        let points = info.points;
+        let per_unit = drawn.units.per_unit();
+        let ours: Vec<Point> = points.iter().copied().chain(drawn.moves.iter().map(|m| m.to)).collect();
         let map = Mapping::around_both(&ours, trace, per_unit);
 
         let mut panel = Panel {
             name,
-            call,
+            drawn,
+            info,
             map,
             points,
-            direction: g.direction,
-            side: g.side,
+            direction: info.direction,
+            side: info.side,
             rapids: Segments::default(),
             run_outs: Segments::default(),
             lead_ins: Segments::default(),
@@ -144,14 +131,14 @@ impl<'a> Panel<'a> {
             finish_total: 0,
             finish_depth: None,
         };
-        panel.trace(moves);
-        Ok(panel)
+        panel.trace(&drawn.moves);
+        panel
     }
 
     /// Sorts the moves into rapids, run-outs, lead-ins and pass paths.
     fn trace(&mut self, moves: &[Move]) {
-        let u = self.call.cycle.units;
-        let start = self.call.cycle.start;
+        let u = self.drawn.units;
+        let start = self.drawn.from;
         let mut at = start;
         // Index in `passes` of each (kind, number, start).
         let mut index: BTreeMap<(u8, u32, u16), usize> = BTreeMap::new();
@@ -301,9 +288,8 @@ impl<'a> Panel<'a> {
     }
 
     fn draw_heading(&self, g: Group) -> Group {
-        let c = &self.call.cycle;
-        let title =
-            format!("{} \u{2014} {} at line {}", self.name, self.call.code.code(), self.call.block.line);
+        let c = self.info;
+        let title = format!("{} \u{2014} {} at line {}", self.name, self.drawn.code, self.drawn.line);
         let (sz, sx) = self.map.scales();
         let scales = if (sz / sx - 1.0).abs() < 0.02 {
             "X and Z to the same scale".to_string()
@@ -325,8 +311,8 @@ impl<'a> Panel<'a> {
     }
 
     fn draw_axes(&self, g: Group) -> Group {
-        let c = &self.call.cycle;
-        draw_axes(g, &self.map, unit_name(c.units.unit), x_kind(c.x_mode))
+        let d = self.drawn;
+        draw_axes(g, &self.map, unit_name(d.units.unit), x_kind(d.x_mode))
     }
 
     fn draw_points(&self, mut g: Group) -> Group {
@@ -347,8 +333,8 @@ impl<'a> Panel<'a> {
                     .add(Title::new(format!(
                         "{} X{} Z{}",
                         NAMES[i],
-                        fixed(p.x, self.call.cycle.units),
-                        fixed(p.z, self.call.cycle.units)
+                        fixed(p.x, self.drawn.units),
+                        fixed(p.z, self.drawn.units)
                     ))),
             );
             labels.push((x, y, i));
@@ -381,7 +367,7 @@ impl<'a> Panel<'a> {
     }
 
     fn draw_legend(&self, mut g: Group) -> Group {
-        let u = self.call.cycle.units;
+        let u = self.drawn.units;
         let mut y = PLOT_TOP + 8.0;
         let x0 = LEGEND_LEFT;
         let x1 = LEGEND_LEFT + 30.0;
@@ -461,9 +447,9 @@ impl<'a> Panel<'a> {
         let lead_in = if self.lead_ins.d.is_empty() { "lead-in (none)" } else { "lead-in" };
         g = g.add(swatch(LEAD_IN, 3.0, y)).add(text(lead_in.into(), y));
         y += 20.0;
-        if self.call.cycle.starts > 1 {
+        if self.info.starts > 1 {
             g = g.add(
-                text(format!("{} starts: their paths coincide", self.call.cycle.starts), y)
+                text(format!("{} starts: their paths coincide", self.info.starts), y)
                     .set("font-size", 11)
                     .set("fill", "#555555"),
             );

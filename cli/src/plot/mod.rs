@@ -1,8 +1,11 @@
 //! SVG drawing of toolpaths (`cycleref plot`).
 //!
-//! Each cycle gets one panel, stacked vertically: every G76 cycle in
-//! order, then one panel with all the G32 blocks, one with all the G92
-//! blocks, then every G75.1 cycle.
+//! Each cycle says how it is drawn ([`Panel`], from its module in
+//! `cycleref_spec::cycles`); the panels are stacked vertically: every
+//! cycle with a panel of its own and the manual's points (G76, G78) in
+//! order, then one panel per title of the single-block cycles that share
+//! one (all the G32 blocks, all the G92 blocks, …), then every groove
+//! (G75.1).
 //! A panel draws the toolpath in the XZ plane as on a lathe drawing: Z
 //! horizontal (increasing to the right), X vertical (increasing upwards).
 //! X is drawn as programmed: the diameter when X words are diameters, the
@@ -26,15 +29,16 @@
 //!
 //! The modules: `canvas` holds what every panel shares (the plot
 //! area, the palette, the mapping from increments to pixels, the axes, the
-//! heading, the number format); `g76`, `g32` (G32 and G92 blocks) and
-//! `g75` draw their cycle's panel on it; this module reads the program ([`run`]) and stacks the
+//! heading, the number format); `g76` ([`Panel::Passes`]), `threads`
+//! ([`Panel::Blocks`]) and `g75` ([`Panel::Groove`]) draw their kind of
+//! panel on it; this module reads the program ([`run`]) and stacks the
 //! panels into the page. The output depends only on the input: no clock,
 //! no hash order, so the same program gives the same bytes.
 
 use std::collections::BTreeSet;
 
-use cycleref::Move;
-use cycleref_spec::reader::{G32Call, G76Call, G92Call, LinuxCncCall};
+use cycleref::{Move, Point, Units, XMode};
+use cycleref_spec::cycles::{BlocksPanel, GroovePanel, Panel, PassesPanel};
 use svg::node::element::{Group, Line, Rectangle};
 use svg::Document;
 
@@ -53,43 +57,100 @@ const WIDTH: f64 = 1200.0;
 /// Height of one panel (px).
 const PANEL_HEIGHT: f64 = 560.0;
 
+/// A cycle drawn: what every panel needs of it beside what its
+/// [`Panel`] says, and its moves.
+#[derive(Clone, Debug)]
+struct Drawn {
+    /// The G code.
+    code: &'static str,
+    /// The line of the block that runs the cycle.
+    line: usize,
+    /// The line of its block 1, if any.
+    params_line: Option<usize>,
+    /// Where the tool is when the cycle starts.
+    from: Point,
+    /// The cycle's start point.
+    start: Point,
+    /// The units of its lengths.
+    units: Units,
+    /// Its X mode, as drawn.
+    x_mode: XMode,
+    /// Its moves.
+    moves: Vec<Move>,
+}
+
+impl Drawn {
+    /// The path, for the zoomed panel.
+    fn ours(&self) -> zoom::Ours<'_> {
+        zoom::Ours { from: self.from, moves: &self.moves, units: self.units, x_mode: self.x_mode }
+    }
+}
+
+/// The panels of a program, in the order drawn: each cycle with a panel
+/// of its own ([`Panel::Passes`]), the panels shared by blocks
+/// ([`Panel::Blocks`], one per title, in the registry's order of their
+/// cycles), each groove ([`Panel::Groove`]).
+#[derive(Default)]
+struct Panels {
+    passes: Vec<(Drawn, PassesPanel)>,
+    /// Per title: the registry index of its cycles, the panel, its blocks.
+    blocks: Vec<(usize, BlocksPanel, Vec<Drawn>)>,
+    grooves: Vec<(Drawn, GroovePanel)>,
+}
+
+impl Panels {
+    fn is_empty(&self) -> bool {
+        self.passes.is_empty() && self.blocks.is_empty() && self.grooves.is_empty()
+    }
+
+    /// Adds `drawn`, a cycle of registry index `kind` drawn as `panel`.
+    fn add(&mut self, kind: usize, panel: Panel, mut drawn: Drawn) {
+        match panel {
+            Panel::Passes(p) => self.passes.push((drawn, p)),
+            Panel::Groove(g) => self.grooves.push((drawn, g)),
+            Panel::Blocks(b) => {
+                if b.x_as_diameter && drawn.x_mode == XMode::Radius {
+                    drawn.from.x = drawn.from.x.saturating_mul(2);
+                    drawn.start.x = drawn.start.x.saturating_mul(2);
+                    for m in &mut drawn.moves {
+                        m.to.x = m.to.x.saturating_mul(2);
+                    }
+                }
+                if b.x_as_diameter {
+                    drawn.x_mode = XMode::Diameter;
+                }
+                match self.blocks.iter_mut().find(|(_, p, _)| p.title == b.title) {
+                    Some((_, _, blocks)) => blocks.push(drawn),
+                    None => {
+                        let at = self.blocks.partition_point(|(k, _, _)| *k <= kind);
+                        self.blocks.insert(at, (kind, b, vec![drawn]));
+                    }
+                }
+            }
+        }
+    }
+
+    /// Every cycle drawn, in panel order.
+    fn drawn(&self) -> impl Iterator<Item = &Drawn> {
+        self.passes
+            .iter()
+            .map(|(d, _)| d)
+            .chain(self.blocks.iter().flat_map(|(_, _, b)| b))
+            .chain(self.grooves.iter().map(|(d, _)| d))
+    }
+}
+
 /// Draws the cycles as an SVG document, one panel per cycle.
 ///
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
-fn svg(
-    name: &str,
-    cycles: &[(G76Call<'_>, Vec<Move>)],
-    threads: &[(G32Call<'_>, Vec<Move>)],
-    g92s: &[(G92Call<'_>, Vec<Move>)],
-    lcncs: &[(LinuxCncCall<'_>, Vec<Move>)],
-    grooves: &[g75::Groove<'_>],
-    overlay: Option<&Overlay>,
-) -> Result<String, crate::Failure> {
-    if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && lcncs.is_empty() && grooves.is_empty() {
+fn svg(name: &str, panels: &Panels, overlay: Option<&Overlay>) -> Result<String, crate::Failure> {
+    if panels.is_empty() {
         return Err(crate::Failure::usage(format!(
             "{name}: no G76 cycle, G32 or G33 block, G92 block or G75.1 cycle to plot"
         )));
     }
-    // G33 (the linuxcnc profile) is drawn with X as a diameter, as check
-    // holds it.
-    let thread_code = threads.first().map_or("G32", |(c, _)| c.code);
-    let threads: Vec<threads::BlockPath<'_>> = threads
-        .iter()
-        .map(
-            |(c, m)| {
-                if c.code == "G33" {
-                    threads::BlockPath::g33(c, m)
-                } else {
-                    threads::BlockPath::g32(c, m)
-                }
-            },
-        )
-        .collect();
-    let g92s: Vec<threads::BlockPath<'_>> = g92s.iter().map(|(c, m)| threads::BlockPath::g92(c, m)).collect();
-    let lcncs: Vec<threads::BlockPath<'_>> =
-        lcncs.iter().map(|(c, m)| threads::BlockPath::linuxcnc(c, m)).collect();
     let marks: Vec<&crate::check::Mark> = overlay.map_or(Vec::new(), |o| o.marks.iter().collect());
     let first_line = marks.first().and_then(|m| m.cycle_line);
     // The zoomed panel of the first divergence, drawn last.
@@ -97,60 +158,41 @@ fn svg(
         let first = marks.first()?;
         // Our path of the cycle it lies in, and the trace's points there.
         let line = first.cycle_line;
-        let ours = cycles
-            .iter()
-            .find(|(c, _)| Some(c.block.line) == line)
-            .map(|(c, moves)| g76::ours(c, moves))
-            .or_else(|| {
-                threads.iter().chain(&g92s).chain(&lcncs).find(|b| Some(b.line) == line).map(|b| b.ours())
-            })
-            .or_else(|| grooves.iter().find(|g| Some(g.line()) == line).map(g75::Groove::path));
-        let (ours, theirs) = match ours {
-            Some(ours) => (ours, line.map_or(&[][..], |l| o.points_for(l))),
+        let (ours, theirs) = match panels.drawn().find(|d| Some(d.line) == line) {
+            Some(d) => (d.ours(), line.map_or(&[][..], |l| o.points_for(l))),
             // A divergence outside the cycles drawn: its marks alone, in
             // the first panel's units.
             None => {
-                let any = cycles
-                    .first()
-                    .map(|(c, m)| g76::ours(c, m))
-                    .or_else(|| threads.first().or(g92s.first()).or(lcncs.first()).map(|b| b.ours()))
-                    .or_else(|| grooves.first().map(g75::Groove::path))?;
+                let any = panels.drawn().next()?.ours();
                 (zoom::Ours { from: first.ours.or(first.theirs)?, moves: &[], ..any }, &[][..])
             }
         };
         zoom::panel(name, o.short_name(), &marks, &ours, theirs)
     });
-    let panels = cycles.len()
-        + usize::from(!threads.is_empty())
-        + usize::from(!g92s.is_empty())
-        + usize::from(!lcncs.is_empty())
-        + grooves.len()
-        + usize::from(zoomed.is_some());
-    let height = PANEL_HEIGHT * count(panels);
+    let count_of = panels.passes.len() + panels.blocks.len() + panels.grooves.len();
+    let height = PANEL_HEIGHT * count(count_of + usize::from(zoomed.is_some()));
     let mut doc = Document::new()
         .set("width", WIDTH)
         .set("height", height)
         .set("viewBox", (0, 0, WIDTH, height))
         .set("font-family", "DejaVu Sans, Helvetica, Arial, sans-serif")
         .add(Rectangle::new().set("width", "100%").set("height", "100%").set("fill", "#ffffff"));
-    for (index, (call, moves)) in cycles.iter().enumerate() {
-        let trace = overlay.map_or(&[][..], |o| o.points_for(call.block.line));
-        let panel = g76::Panel::new(name, call, moves, trace)?;
+    let mut slot = 0;
+    for (index, (drawn, p)) in panels.passes.iter().enumerate() {
+        let trace = overlay.map_or(&[][..], |o| o.points_for(drawn.line));
+        let panel = g76::Panel::new(name, drawn, p, trace);
         let mut group = panel.draw();
         if let Some(o) = overlay {
-            group = panel.draw_overlay(group, o.short_name(), o.points_for(call.block.line), index);
-            let line = Some(call.block.line);
+            group = panel.draw_overlay(group, o.short_name(), o.points_for(drawn.line), index);
+            let line = Some(drawn.line);
             let here: Vec<&crate::check::Mark> =
                 marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
             group = panel.draw_marks(group, &here, first_line == line);
         }
-        doc = place(doc, group, index, true);
+        doc = place(doc, group, slot, true);
+        slot += 1;
     }
-    let mut before = cycles.len();
-    for (code, blocks) in [(thread_code, &threads), ("G92", &g92s), ("G76 (LinuxCNC)", &lcncs)] {
-        if blocks.is_empty() {
-            continue;
-        }
+    for (_, p, blocks) in &panels.blocks {
         let here: Vec<&crate::check::Mark> = marks
             .iter()
             .copied()
@@ -158,23 +200,25 @@ fn svg(
             .take(MAX_MARKS)
             .collect();
         let first = blocks.iter().any(|b| first_line == Some(b.line));
-        doc = place(doc, threads::panel(name, code, blocks, &here, first), before, true);
-        before += 1;
+        doc = place(doc, threads::panel(name, p, blocks, &here, first), slot, true);
+        slot += 1;
     }
-    for (i, groove) in grooves.iter().enumerate() {
-        let line = Some(groove.line());
+    for (i, (drawn, p)) in panels.grooves.iter().enumerate() {
+        let groove = g75::Groove::new(drawn, p);
+        let line = Some(drawn.line);
         let here: Vec<&crate::check::Mark> =
             marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
-        let trace = overlay.map_or(&[][..], |o| o.points_for(groove.line()));
+        let trace = overlay.map_or(&[][..], |o| o.points_for(drawn.line));
         let mut group = groove.draw(name, &here, first_line == line, trace);
         if let Some(o) = overlay {
             let clip = format!("groove-area-{i}");
             group = canvas::draw_trace(group, &groove.map(trace), o.short_name(), trace, &clip);
         }
-        doc = place(doc, group, before + i, true);
+        doc = place(doc, group, slot, true);
+        slot += 1;
     }
     if let Some(group) = zoomed {
-        doc = place(doc, group, before + grooves.len(), true);
+        doc = place(doc, group, slot, true);
     }
     Ok(format!("{doc}\n"))
 }
@@ -222,17 +266,6 @@ pub const MAX_DRAWN_MOVES: usize = 200_000;
 /// with every panel). Counted: each G76 and G75.1 cycle and each G32 block.
 pub const MAX_CYCLES: usize = 24;
 
-/// The moves of a LinuxCNC block with X as a diameter, as `check` holds it
-/// on that profile (reading R-CHECKLCNC): doubled when the block is in G8.
-fn as_diameter(mut moves: Vec<Move>, x_mode: cycleref::XMode) -> Vec<Move> {
-    if x_mode == cycleref::XMode::Radius {
-        for m in &mut moves {
-            m.to.x = m.to.x.saturating_mul(2);
-        }
-    }
-    moves
-}
-
 /// Draws `job`'s cycles: those whose line (block 2 of G76 and G75.1,
 /// either block of G75.1, the G32 block) is in `lines`, or without
 /// `lines`, the first [`MAX_CYCLES`]. Returns the SVG document and, when
@@ -251,19 +284,14 @@ pub fn run(
     use cycleref_spec::pipeline::Cycle;
     use cycleref_spec::reader::Item;
     let units = job.validate()?.units;
-    let mut cycles = Vec::new();
-    let mut threads = Vec::new();
-    let mut g92s = Vec::new();
-    let mut lcncs = Vec::new();
-    let mut grooves = Vec::new();
+    let mut panels = Panels::default();
     let (mut total, mut drawn) = (0_usize, 0_usize);
-    // Where each G76 cycle drawn lies in the whole toolpath, by move index.
     // Each cycle drawn: its line, and where it lies in the whole toolpath,
     // by move index.
     let (mut position, mut ranges) = (0_usize, Vec::new());
     let mut found = BTreeSet::new();
     // The program is read as everywhere (a file a line at a time); the
-    // cycles drawn are kept, detached from the line they were read from.
+    // cycles drawn are kept, their moves held.
     job.for_each_item(
         |f| f,
         |item| {
@@ -292,43 +320,45 @@ pub fn run(
                 }
                 hit
             };
+            let mut all = job.expand(cycle)?;
             if !wanted {
-                position += job.expand(cycle)?.count();
+                position += all.count();
                 return Ok(());
             }
             drawn += 1;
-            // Counted first, streamed: a cycle too long to draw is refused
-            // before any of it is held (memory stays bounded whatever the
-            // number of passes and starts).
-            let count = job.expand(cycle)?.count();
-            if count > MAX_DRAWN_MOVES {
+            // Held up to the limit, then counted: a cycle too long to draw
+            // is refused with no more than the limit held (memory stays
+            // bounded whatever the number of passes and starts), and each
+            // cycle is expanded once.
+            let moves: Vec<Move> = all.by_ref().take(MAX_DRAWN_MOVES).collect();
+            let more = all.count();
+            if more > 0 {
                 return Err(crate::Failure::usage(format!(
-                    "{}: line {}: the {} has {count} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
+                    "{}: line {}: the {} has {} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
                      moves (expand and check have no such limit)",
                     job.name,
                     cycle.line(),
-                    cycle.code()
+                    cycle.code(),
+                    moves.len() + more
                 )));
             }
-            let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
             position += moves.len();
             ranges.push((cycle.line(), from, position));
-            match &item {
-                Item::G76(call) => cycles.push((call.detached(), moves)),
-                Item::G32(call) if call.code == "G33" => {
-                    let moves = as_diameter(moves, call.g32.x_mode);
-                    threads.push((call.detached(), moves));
-                }
-                Item::G32(call) => threads.push((call.detached(), moves)),
-                Item::G92(call) => g92s.push((call.detached(), moves)),
-                Item::G75(call) => grooves.push(g75::Groove::new(job, call.detached(), moves)?),
-                Item::LinuxCncG76(call) => {
-                    let moves = as_diameter(moves, call.cycle.x_mode);
-                    lcncs.push((call.detached(), moves));
-                }
-                Item::Source(_) | Item::Move(_) | Item::G76Params(_) | Item::G75Params(_) => {}
-            }
+            let panel = cycle.panel(job.engine).map_err(|error| {
+                job.fail(&cycleref_spec::RunError::Cycle { line: cycle.line(), code: cycle.code(), error })
+            })?;
+            let d = Drawn {
+                code: cycle.code(),
+                line: cycle.line(),
+                params_line: cycle.params_line(),
+                from: cycle.from(),
+                start: cycle.start(),
+                units: cycle.units(),
+                x_mode: cycle.x_mode(),
+                moves,
+            };
+            panels.add(cycle.index(), panel, d);
             Ok(())
         },
     )?;
@@ -344,7 +374,7 @@ pub fn run(
         Some(t) => Some(overlay::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())?;
+    let svg = svg(&job.name, &panels, overlay.as_ref())?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {

@@ -4,8 +4,8 @@
 use cycleref::{CycleError, G32Moves, G32RunOut, LeadWord, Move, Point, Role, Units, XMode};
 
 use super::{
-    for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable,
-    ReferenceMoves, Region,
+    for_each_move, Annotations, BlocksPanel, CycleCall, Heading, MoveWords, NcStyle, Panel, PassComment,
+    PassTable, ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -114,5 +114,17 @@ impl<'a> CycleCall<'a> for G32Call<'a> {
         if b.sync && !b.start_angle.is_zero() && !moves.is_empty() {
             tag("g32:q");
         }
+    }
+
+    fn panel(&self, _engine: Engine) -> Result<Panel, CycleError> {
+        // The blocks of a program share one panel; G33 (the `linuxcnc`
+        // profile) with X as a diameter, as `check` holds it.
+        Ok(Panel::Blocks(BlocksPanel {
+            title: self.code,
+            x_as_diameter: self.code == "G33",
+            run_out: "run-out (J, K)",
+            synchronises: "not continuing the block before",
+            rapids: None,
+        }))
     }
 }

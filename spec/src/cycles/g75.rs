@@ -8,7 +8,8 @@ use cycleref::units::Length;
 use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role};
 
 use super::{
-    Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable, ReferenceMoves, Region,
+    Annotations, CycleCall, GroovePanel, Heading, MoveWords, NcStyle, Panel, PassComment, PassTable,
+    ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -189,5 +190,26 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
         if moves.iter().any(|m| matches!(m.motion, Motion::Arc { .. })) {
             tag("g75:arcs");
         }
+    }
+
+    fn panel(&self, engine: Engine) -> Result<Panel, CycleError> {
+        // The programmed profile is the finishing path (J2) of the same
+        // groove for a pointed tool, by the same engine; the roughing
+        // region, the engine's profile's roughing vertices.
+        let c = &self.cycle;
+        let pointed = G75Call {
+            cycle: cycleref::G75Cycle { tool_width: None, path: PathType::Finish, ..*c },
+            ..self.clone()
+        };
+        let profile = crate::pipeline::expand(crate::Cycle::G75(&pointed), engine)?
+            .filter(|m| m.role == Role::FinishContour)
+            .collect();
+        let roughing = cycleref::groove_profile(c)?.roughing().to_vec();
+        Ok(Panel::Groove(GroovePanel {
+            tool_width: c.tool_width,
+            width_direction: c.axial_sign(),
+            profile,
+            roughing,
+        }))
     }
 }

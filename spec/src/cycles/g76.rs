@@ -4,11 +4,13 @@
 
 use std::fmt;
 
-use cycleref::{CycleError, DepthMode, G76Moves, Infeed, LeadWord, Motion, Move, PassKind, Role, RunOut};
+use cycleref::{
+    CycleError, DepthMode, G76Moves, Infeed, LeadWord, Motion, Move, PassKind, Point, Role, RunOut,
+};
 
 use super::{
-    for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable,
-    ReferenceMoves, Region,
+    for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, Panel, PassComment, PassTable,
+    PassesPanel, ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -230,5 +232,23 @@ impl<'a> CycleCall<'a> for G76Call<'a> {
         if !levels.is_empty() && law(levels.len()) == target && c.depth_mode == DepthMode::Decreasing {
             tag("schedule:exact-k-d");
         }
+    }
+
+    fn panel(&self, _engine: Engine) -> Result<Panel, CycleError> {
+        let c = &self.cycle;
+        let g = crate::g76::geometry(c)?;
+        let xf = c.x_mode.factor();
+        // C: the Z of A, the X of D plus i; B: the X of C plus k towards A
+        // (crate::g76::geometry).
+        let c_x = c.end.x + xf * c.taper;
+        let b_x = c_x + g.side * xf * c.thread_height;
+        let points = [c.start, Point::new(b_x, c.start.z), Point::new(c_x, c.start.z), c.end];
+        Ok(Panel::Passes(PassesPanel {
+            points,
+            direction: g.direction,
+            side: g.side,
+            starts: c.starts,
+            lead: c.lead,
+        }))
     }
 }

@@ -4,7 +4,8 @@
 use cycleref::{CycleError, G92Moves, LeadWord, Move, RunOut};
 
 use super::{
-    Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable, ReferenceMoves, Region,
+    Annotations, BlocksPanel, CycleCall, Heading, MoveWords, NcStyle, Panel, PassComment, PassTable,
+    ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -103,5 +104,17 @@ impl<'a> CycleCall<'a> for G92Call<'a> {
         if !c.start_angle.is_zero() && !moves.is_empty() {
             tag("g92:q");
         }
+    }
+
+    fn panel(&self, _engine: Engine) -> Result<Panel, CycleError> {
+        // The blocks of a program share one panel: a thread cut in several
+        // G92 blocks (O0012) reads as one picture.
+        Ok(Panel::Blocks(BlocksPanel {
+            title: "G92",
+            x_as_diameter: false,
+            run_out: "run-out (J, K)",
+            synchronises: "each pass of each start",
+            rapids: Some("A \u{2192} B, retract, return to A"),
+        }))
     }
 }

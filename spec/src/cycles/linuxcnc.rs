@@ -4,8 +4,8 @@
 use cycleref::{CycleError, LinuxCncMoves, Motion, Move, XMode};
 
 use super::{
-    for_each_move, Annotations, CycleCall, Heading, MoveWords, NcStyle, PassComment, PassTable,
-    ReferenceMoves, Region,
+    for_each_move, Annotations, BlocksPanel, CycleCall, Heading, MoveWords, NcStyle, Panel, PassComment,
+    PassTable, ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -103,5 +103,17 @@ impl<'a> CycleCall<'a> for LinuxCncCall<'a> {
         if moves.is_empty() {
             tag("linuxcnc:no-moves");
         }
+    }
+
+    fn panel(&self, _engine: Engine) -> Result<Panel, CycleError> {
+        // X as a diameter, as `check` holds it on this profile (reading
+        // R-CHECKLCNC).
+        Ok(Panel::Blocks(BlocksPanel {
+            title: "G76 (LinuxCNC)",
+            x_as_diameter: true,
+            run_out: "exit taper (E, L bit 2)",
+            synchronises: "each pass",
+            rapids: Some("\"back\", \"in\", \"out\", to the end point"),
+        }))
     }
 }

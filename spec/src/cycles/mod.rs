@@ -13,10 +13,11 @@
 //! * its row of the `passes` tables ([`PassTable`]);
 //! * the regions it cuts, for `check`'s split rapids ([`Region`], reading
 //!   R-CHECKSPLIT);
+//! * how `plot` draws it ([`Panel`]);
 //! * the features the conformance vectors tag it with.
 //!
-//! Consumers (`expand`'s writers, `passes`, `check`, `vectors`, C and
-//! Python) go through [`Cycle`](crate::Cycle), whose methods forward to the
+//! Consumers (`expand`'s writers, `passes`, `check`, `plot`, `vectors`, C
+//! and Python) go through [`Cycle`](crate::Cycle), whose methods forward to the
 //! module of the cycle at hand; none of them matches on the kind of cycle.
 //!
 //! # Adding a cycle
@@ -182,6 +183,14 @@ pub trait CycleCall<'a> {
     /// The features the conformance vectors tag the cycle with, given its
     /// moves.
     fn tags(&self, moves: &[Move], tag: &mut dyn FnMut(&'static str));
+
+    /// How `plot` draws the cycle, by the engine in use (which G75.1 asks
+    /// for its programmed profile).
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    fn panel(&self, engine: Engine) -> Result<Panel, CycleError>;
 }
 
 /// An `nc` heading, as its cycle's module writes it.
@@ -309,6 +318,78 @@ pub enum PassTable {
         /// per start (G92: the second column is the start's number).
         sync: Option<bool>,
     },
+}
+
+/// How `plot` draws a cycle: the panel it is drawn on and what the panel
+/// shows beside the cycle's moves. The moves themselves, their roles and
+/// passes, are drawn from the stream as for every consumer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Panel {
+    /// A panel of its own with the manual's points A, B, C and D and the
+    /// path of each pass, coloured by depth (G76, G78).
+    Passes(PassesPanel),
+    /// One path on the panel shared by the program's blocks drawn with the
+    /// same title (G32, G33, G92, LinuxCNC's G76): a thread cut in several
+    /// blocks is read on one picture.
+    Blocks(BlocksPanel),
+    /// A panel of its own with the groove's programmed profile and its
+    /// roughing region under the toolpath (G75.1).
+    Groove(GroovePanel),
+}
+
+/// What a [`Panel::Passes`] shows beside the moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PassesPanel {
+    /// The manual's points A (start), B (depth reference), C (thread
+    /// start) and D (thread end), in increments, X as programmed.
+    pub points: [Point; 4],
+    /// +1 when the cut goes towards +Z, -1 otherwise (t).
+    pub direction: i64,
+    /// +1 for an external thread (A outside C), -1 for an internal one (s).
+    pub side: i64,
+    /// The number of starts L.
+    pub starts: u32,
+    /// The lead F, I or E (and K of an X-long thread).
+    pub lead: cycleref::Lead,
+}
+
+/// Where a [`Panel::Blocks`] path is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BlocksPanel {
+    /// The shared panel's title (`G32`, `G33`, `G92`, `G76 (LinuxCNC)`):
+    /// the blocks of one title share one panel.
+    pub title: &'static str,
+    /// X drawn as a diameter whatever the block's X mode (doubled in G8),
+    /// as `check` holds it on the `linuxcnc` profile (reading R-CHECKLCNC),
+    /// so that a trace's marks fall on the path.
+    pub x_as_diameter: bool,
+    /// The legend's name of the moves whose role is
+    /// [`Role::RunOut`](cycleref::Role::RunOut) (`run-out (J, K)`).
+    pub run_out: &'static str,
+    /// The legend's note on where the spindle synchronises (`each pass`).
+    pub synchronises: &'static str,
+    /// The legend's note on the block's own rapids (`A → B, retract,
+    /// return to A`), or `None` for a block without rapids (G32).
+    pub rapids: Option<&'static str>,
+}
+
+/// What a [`Panel::Groove`] shows beside the moves.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GroovePanel {
+    /// The tool's width I, or `None` for a pointed tool.
+    pub tool_width: Option<i64>,
+    /// The direction along Z in which the tool's width lies from the point
+    /// its moves follow: +1 when the groove's width D ≥ 0, -1 otherwise.
+    pub width_direction: i64,
+    /// The programmed profile: the finishing contour (J2) of the same
+    /// groove for a pointed tool, by the same engine, from its start on the
+    /// surface to its end; so that the drawing cannot disagree with the
+    /// expansion.
+    pub profile: Vec<Move>,
+    /// The roughing region's outline ([`cycleref::groove_profile`]'s
+    /// roughing vertices: R0, K1 and K2 (or Q1), K3 and K4 (or Q2), R3),
+    /// absolute, without the tool width.
+    pub roughing: Vec<Point>,
 }
 
 /// A region a cycle cuts, an open box in increments (X in the units the
