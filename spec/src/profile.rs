@@ -597,8 +597,7 @@ impl Machine {
     }
 
     fn apply(&mut self, text: &str, keep_profile: bool) -> Result<(), ParamsError> {
-        let table: toml::Table =
-            text.parse().map_err(|e: toml::de::Error| ParamsError::Toml(e.to_string()))?;
+        let table: toml::Table = text.parse().map_err(|e: toml::de::Error| ParamsError::toml(text, &e))?;
         let bad = |key: &'static str, expected: &'static str| ParamsError::BadSetting { key, expected };
         if let Some(v) = table.get("profile") {
             let name: ProfileName = v.as_str().ok_or(bad("profile", "a string"))?.parse()?;
@@ -718,8 +717,16 @@ impl Machine {
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ParamsError {
-    /// The file is not TOML: the TOML reader's message.
-    Toml(String),
+    /// The file is not TOML: where the TOML reader stopped (1-based line
+    /// and column, in characters) and its message.
+    Toml {
+        /// The line.
+        line: usize,
+        /// The column.
+        column: usize,
+        /// The TOML reader's message (`invalid basic string`).
+        message: String,
+    },
     /// `profile` names no profile.
     UnknownProfile {
         /// The name given.
@@ -790,6 +797,18 @@ pub enum ParamsError {
 }
 
 impl ParamsError {
+    /// The error of the TOML reader `e` on `text`, placed.
+    fn toml(text: &str, e: &toml::de::Error) -> ParamsError {
+        let at = e.span().map_or(0, |span| span.start.min(text.len()));
+        let before = text.get(..at).unwrap_or(text);
+        let line = before.matches('\n').count() + 1;
+        let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        // One line: the reader's message may run over several.
+        let message =
+            e.message().lines().map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(": ");
+        ParamsError::Toml { line, column, message }
+    }
+
     /// The stable kind: `params:toml`, `params:unknown_profile`,
     /// `params:bad_setting`, `params:unknown_key`,
     /// `params:unknown_parameter`, `params:bad_parameter`,
@@ -799,7 +818,7 @@ impl ParamsError {
     #[must_use]
     pub fn stable_kind(&self) -> &'static str {
         match self {
-            ParamsError::Toml(_) => "params:toml",
+            ParamsError::Toml { .. } => "params:toml",
             ParamsError::UnknownProfile { .. } => "params:unknown_profile",
             ParamsError::BadSetting { .. } => "params:bad_setting",
             ParamsError::UnknownKey { .. } => "params:unknown_key",
@@ -817,7 +836,9 @@ impl ParamsError {
 impl fmt::Display for ParamsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ParamsError::Toml(e) => write!(f, "parameter file: {e}"),
+            ParamsError::Toml { line, column, message } => {
+                write!(f, "parameter file: line {line}, column {column}: not TOML: {message}")
+            }
             ParamsError::UnknownProfile { name } => {
                 write!(f, "unknown profile `{name}` (expected fanuc, gsk980, gsk988 or linuxcnc)")
             }

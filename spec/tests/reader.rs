@@ -368,3 +368,23 @@ fn huge_values_are_errors_not_panics() {
     let e = error("M03 S500\nG00 X80 Z10\nG76 X60 Z-30 P2 Q0.5 F2\n", &m);
     assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
 }
+
+/// A parameter file that is not TOML is refused with the line and column
+/// where the TOML reader stopped, on one line. Worked by hand: line 1 of
+/// the first file is `profile = "gsk980` (17 characters), its string never
+/// closed: the reader stops at the end of the line, column 18; line 2 of
+/// the second is `[readings` (9 characters), a table header never closed:
+/// column 10.
+#[test]
+fn a_parameter_file_that_is_not_toml_is_refused_with_its_place() {
+    use cycleref_spec::profile::ParamsError;
+    let mut m = Machine::new(ProfileName::Gsk980);
+    let e = m.apply_toml("profile = \"gsk980\nx = 3\n").expect_err("not TOML");
+    assert!(matches!(e, ParamsError::Toml { line: 1, column: 18, .. }), "{e:?}");
+    assert_eq!(e.stable_kind(), "params:toml");
+    let e = m.apply_toml("x = 3\n[readings\n").expect_err("not TOML");
+    assert!(matches!(e, ParamsError::Toml { line: 2, column: 10, .. }), "{e:?}");
+    let shown = e.to_string();
+    assert!(shown.starts_with("parameter file: line 2, column 10: not TOML: "), "{shown}");
+    assert!(!shown.contains('\n'), "{shown}");
+}
