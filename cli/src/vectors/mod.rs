@@ -707,6 +707,25 @@ mod tests {
         assert_eq!(used, all);
     }
 
+    /// Adding a cycle adds its templates (README, "Adding a cycle"): the
+    /// valid templates' cases call every cycle of the registry.
+    #[test]
+    fn the_valid_templates_call_every_cycle_of_the_registry() {
+        use cycleref_spec::pipeline::{Cycle, CYCLE_KINDS};
+        let mut kinds = BTreeSet::new();
+        for (i, t) in templates(false).into_iter().enumerate() {
+            let index = u32::try_from(i).expect("few templates") + 1;
+            let draft = (t.generate)(&mut Rng::for_case(1, index));
+            let (toml, _) = draft.ctx.settings();
+            let mut machine = Machine::new(draft.ctx.profile);
+            machine.apply_toml(&toml).expect("the template's settings");
+            let text = draft.lines.join("\n") + "\n";
+            let program = cycleref_spec::read(&text, &machine).unwrap_or_else(|e| panic!("{}: {e}", t.id));
+            kinds.extend(program.items.iter().filter_map(Cycle::of).map(Cycle::index));
+        }
+        assert_eq!(kinds, (0..CYCLE_KINDS).collect::<BTreeSet<_>>());
+    }
+
     #[test]
     fn every_template_carries_its_tag_first() {
         for t in TEMPLATES {

@@ -27,10 +27,19 @@
 //!    [`Item`](crate::Item) variant it yields.
 //! 2. A module here implementing [`CycleCall`].
 //! 3. One line in the registry of [`crate::pipeline`].
-//! 4. Its templates in the conformance vectors, its tests and its readings.
+//! 4. Its templates in the conformance vectors (`cli/src/vectors/`, one
+//!    file per cycle: program generators are the corpus's, not the
+//!    reference's), its tests and its readings.
+//!
+//! Nothing else: `expand`, `passes`, `check`, `plot`, `vectors`, C and
+//! Python read the cycle through [`Cycle`](crate::Cycle). The C interface
+//! names the cycle's code in its `CyclerefCycle` enumeration.
 //!
 //! `spec/tests/registry.rs` holds this list to the code: every item that
-//! calls a cycle has a module here and a line in the registry.
+//! calls a cycle has a module here and a line in the registry, and every
+//! cycle of the registry is expanded, tabulated, drawn and tagged from its
+//! module; the vectors' unit tests hold that the templates call every
+//! cycle of the registry.
 
 use std::fmt;
 
