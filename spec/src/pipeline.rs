@@ -225,6 +225,18 @@ macro_rules! registry {
                     Inner::Reference(_) => None,
                 }
             }
+
+            /// The layers and plunges of a G75.1 cycle's roughing, when the
+            /// engine counted them before its first move (the fixed-point
+            /// engine does); `None` for the other cycles and for the
+            /// reference.
+            #[must_use]
+            pub fn layers_and_plunges(&self) -> Option<(u32, u64)> {
+                match &self.0 {
+                    $(Inner::$variant(m) => <$call<'_> as CycleCall<'_>>::layers_and_plunges(m),)*
+                    Inner::Reference(_) => None,
+                }
+            }
         }
     };
     (@forward [$($variant:ident)*]) => {};

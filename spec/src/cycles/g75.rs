@@ -28,7 +28,7 @@ pub struct GrooveHeading {
     /// The roughing layers.
     pub layers: u32,
     /// The plunges.
-    pub plunges: usize,
+    pub plunges: u64,
     /// The tool's width I, or `None` for a pointed tool.
     pub tool_width: Option<Length>,
 }
@@ -96,15 +96,14 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
         Ok(Box::new(crate::g75::moves(&self.cycle)?))
     }
 
+    fn layers_and_plunges(moves: &Box<G75Moves>) -> Option<(u32, u64)> {
+        Some(moves.layers_and_plunges())
+    }
+
     fn heading(&self, moves: &Moves) -> Option<Heading> {
-        // The layers and plunges, counted on a copy of the moves.
-        let (mut layers, mut plunges) = (0, 0);
-        for m in moves.clone() {
-            if let Role::Peck(p) | Role::PeckRetract(p) | Role::PlungeRetract(p) | Role::Step(p) = m.role {
-                layers = layers.max(p.layer);
-            }
-            plunges += usize::from(matches!(m.role, Role::PlungeRetract(_)));
-        }
+        // The layers and plunges as the engine counted them before its
+        // first move; the reference's, counted on a copy of its moves.
+        let (layers, plunges) = moves.layers_and_plunges().unwrap_or_else(|| count_plunges(moves.clone()));
         let c = &self.cycle;
         Some(Heading::Groove(GrooveHeading {
             params_line: self.params_line,
@@ -212,4 +211,17 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
             roughing,
         }))
     }
+}
+
+/// The roughing's layers (the deepest layer of a plunge) and plunges (its
+/// [`Role::PlungeRetract`] moves) of a groove's `moves`.
+pub fn count_plunges(moves: impl Iterator<Item = Move>) -> (u32, u64) {
+    let (mut layers, mut plunges) = (0, 0);
+    for m in moves {
+        if let Role::Peck(p) | Role::PeckRetract(p) | Role::PlungeRetract(p) | Role::Step(p) = m.role {
+            layers = layers.max(p.layer);
+        }
+        plunges += u64::from(matches!(m.role, Role::PlungeRetract(_)));
+    }
+    (layers, plunges)
 }

@@ -74,7 +74,7 @@ mod g76;
 mod g92;
 mod linuxcnc;
 
-pub use g75::GrooveHeading;
+pub use g75::{count_plunges, GrooveHeading};
 pub use g76::MultipassHeading;
 
 /// The reference's moves of one cycle, boxed: a stream that can be cloned
@@ -164,6 +164,12 @@ pub trait CycleCall<'a> {
     /// The number of rough passes the engine's moves counted before the
     /// first move, for the cycles that count them (G76, G78).
     fn rough_passes(_moves: &Self::EngineMoves) -> Option<u64> {
+        None
+    }
+
+    /// The layers and plunges of a groove's roughing, for the cycles whose
+    /// engine counts them before the first move (G75.1).
+    fn layers_and_plunges(_moves: &Self::EngineMoves) -> Option<(u32, u64)> {
         None
     }
 

@@ -205,6 +205,8 @@ pub struct G75Moves {
     tail_len: usize,
     /// The next move of `tail`.
     tail_next: usize,
+    /// The plunges of the roughing (0 when the cycle does not rough).
+    plunges: u64,
 }
 
 /// Expands a G75.1 cycle (`docs/G75.md`): the same error or the same moves
@@ -250,9 +252,11 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
 
     // §9, only when roughing (R-G75PECKS).
     let roughs = c.path.roughs();
-    if roughs {
-        check_peck_count(&mut ev, c, &layers, y_top, (a11, a1f), (last_first, last_last))?;
-    }
+    let plunges = if roughs {
+        check_peck_count(&mut ev, c, &layers, y_top, (a11, a1f), (last_first, last_last))?
+    } else {
+        0
+    };
     // R-G75NEED: the rough contour only for J0/J1, the finishing profile
     // only for J1/J2.
     let rough_pts = if roughs { Some(rough_vertices(&mut ev, y_top)?) } else { None };
@@ -361,7 +365,23 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
         tail: b.legs,
         tail_len: b.len,
         tail_next: 0,
+        plunges,
     })
+}
+
+impl G75Moves {
+    /// The roughing's layers M and plunges, counted before the first move
+    /// (the count of §9, R-G75PECK): the number of distinct layers and of
+    /// [`Role::PlungeRetract`] moves the cycle makes; `(0, 0)` when it does
+    /// not rough (J2).
+    #[must_use]
+    pub fn layers_and_plunges(&self) -> (u32, u64) {
+        if self.roughs {
+            (self.rough.layers, self.plunges)
+        } else {
+            (0, 0)
+        }
+    }
 }
 
 impl Iterator for G75Moves {

@@ -56,6 +56,9 @@ impl Layers {
 /// t)/Δi)` pecks). `layer1` and `last_layer` are the plunge ranges already
 /// found for layers 1 and M; the others are evaluated here, in order.
 ///
+/// Returns the number of plunges of the whole roughing (each ends in one
+/// [`Role::PlungeRetract`](crate::Role::PlungeRetract) move).
+///
 /// Twin: `spec/src/g75/roughing.rs`, `rough_layers` (with `peck_count`).
 pub(super) fn check_peck_count(
     ev: &mut Evaluator,
@@ -64,7 +67,7 @@ pub(super) fn check_peck_count(
     y_top: i128,
     (a11, a1f): (i128, i128),
     (last_first, last_last): (i128, i128),
-) -> Result<(), CycleError> {
+) -> Result<u64, CycleError> {
     let (di, dk) = (i128::from(c.peck), i128::from(c.step));
     let limit = i128::from(MAX_PECKS);
     let (count, dv, rough_bottom) = (layers.count, layers.dv, layers.rough_bottom);
@@ -79,8 +82,9 @@ pub(super) fn check_peck_count(
     if lower > limit {
         return Err(CycleError::TooManyPecks { limit: MAX_PECKS });
     }
-    // Now M ≤ lower ≤ MAX_PECKS: count exactly, layer by layer.
-    let mut total: i128 = 0;
+    // Now M ≤ lower ≤ MAX_PECKS: count exactly, layer by layer (and the
+    // plunges, which the `nc` heading names).
+    let (mut total, mut all_plunges): (i128, i128) = (0, 0);
     let mut top = y_top;
     let mut loops = crate::loop_counters::count!(G75_LAYERS);
     for m in 1..=count {
@@ -95,13 +99,15 @@ pub(super) fn check_peck_count(
         };
         // first ≤ last (the last layer's check and monotony), Δk ≥ 1.
         let plunges = ceil_div(last - first, dk) + 1;
+        all_plunges = all_plunges.saturating_add(plunges);
         total = total.saturating_add(plunges.saturating_mul(pecks(top, bottom)));
         if total > limit {
             return Err(CycleError::TooManyPecks { limit: MAX_PECKS });
         }
         top = bottom;
     }
-    Ok(())
+    // Every plunge has at least one peck: plunges ≤ pecks ≤ MAX_PECKS.
+    Ok(u64::try_from(all_plunges).unwrap_or(u64::MAX))
 }
 
 /// Where the roughing state machine is within a plunge or a layer change.
