@@ -320,28 +320,26 @@ pub fn run(
                 }
                 hit
             };
-            let mut all = job.expand(cycle)?;
             if !wanted {
-                position += all.count();
+                position += job.expand(cycle)?.count();
                 return Ok(());
             }
             drawn += 1;
-            // Held up to the limit, then counted: a cycle too long to draw
-            // is refused with no more than the limit held (memory stays
-            // bounded whatever the number of passes and starts), and each
-            // cycle is expanded once.
-            let moves: Vec<Move> = all.by_ref().take(MAX_DRAWN_MOVES).collect();
-            let more = all.count();
-            if more > 0 {
+            // Counted first, then held: a cycle too long to draw is refused
+            // before any of it is held (memory stays bounded whatever the
+            // number of passes and starts). A drawn cycle is expanded twice,
+            // at most MAX_CYCLES of them without `--line`.
+            let count = job.expand(cycle)?.count();
+            if count > MAX_DRAWN_MOVES {
                 return Err(crate::Failure::usage(format!(
-                    "{}: line {}: the {} has {} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
+                    "{}: line {}: the {} has {count} moves; plot draws cycles of at most {MAX_DRAWN_MOVES} \
                      moves (expand and check have no such limit)",
                     job.name,
                     cycle.line(),
-                    cycle.code(),
-                    moves.len() + more
+                    cycle.code()
                 )));
             }
+            let moves: Vec<Move> = job.expand(cycle)?.collect();
             let from = position;
             position += moves.len();
             ranges.push((cycle.line(), from, position));
