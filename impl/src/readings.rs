@@ -11,10 +11,10 @@
 //! profile's own defaults, which differ from it for R-END and R-LONG988
 //! (docs/INTERPRETATIONS.md).
 
-/// Reading R-END: where each pass of a G76 or G78 cycle ends, on a taper
-/// (i ≠ 0) when the pass is shifted along Z (seed 000 "执行过程" (4), 988TA
-/// and 980TDi G76 step ②). On a straight thread, or for a pass without
-/// shift, the three coincide.
+/// Reading R-END: where each pass of a G76 or G78 cycle ends when it is
+/// shifted along Z (seed 000 "执行过程" (4), 988TA and 980TDi G76 step ②).
+/// For a pass without shift the three coincide; on a straight thread
+/// `travel-i` and `parallel` do, and `translated` ends the shift beyond D.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum PassEnd {
     /// `travel-i`: the pass ends on the line D–E (Z of D) at X of D plus

@@ -140,16 +140,15 @@ impl ReadingEntry {
 }
 
 /// R-END's default on `profile`, decided on the text
-/// (docs/INTERPRETATIONS.md, R-END): on fanuc and gsk980 the 980TDi G76
-/// page (the FANUC two-block format) step ②, "沿平行于 C→D 的方向螺纹切削到
-/// 与 D→E 相交处"; on gsk988 seed 000 (4), which wins over the 988TA G76
-/// page's step ②, and the 988TA G78 page (4), "本轮切削终点与螺纹切入点在 Z
-/// 轴方向的移动量为 W，X 轴方向的移动量为 i".
-fn default_pass_end(profile: ProfileName) -> PassEnd {
-    match profile {
-        ProfileName::Gsk988 => PassEnd::Translated,
-        _ => PassEnd::Parallel,
-    }
+/// (docs/INTERPRETATIONS.md, R-END): `parallel` on every profile. The
+/// 980TDi G76 page (the FANUC two-block format) and the 988TA G76 page,
+/// step ②: "沿平行于 C→D 的方向螺纹切削到与 D→E 相交处"; seed 000 and the
+/// 988TA G78 page define D's long-axis coordinate as the end of the cut
+/// ("如果有螺纹退尾，切削终点长轴方向为螺纹切削终点"), which a pass
+/// translated by its shift (`translated`, their step (4) read literally)
+/// would overrun on every thread, straight ones included.
+fn default_pass_end(_profile: ProfileName) -> PassEnd {
+    PassEnd::Parallel
 }
 
 fn pass_end_name(v: PassEnd) -> &'static str {
