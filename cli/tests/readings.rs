@@ -115,7 +115,10 @@ fn an_unknown_id_or_value_names_the_valid_ones() {
     let out = common::run(&["expand", "--reading", "R-NOPE=x", p], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("unknown reading `R-NOPE`") && err.contains("R-RUNOUT, R-XRUNOUT, R-E980, R-END"), "{err}");
+    assert!(
+        err.contains("unknown reading `R-NOPE`") && err.contains("R-RUNOUT, R-XRUNOUT, R-E980, R-END"),
+        "{err}"
+    );
     assert!(out.stdout.is_empty());
     let out = common::run(&["passes", "--reading", "R-XRUNOUT=never", p], None);
     assert_eq!(out.status.code(), Some(2));
@@ -138,7 +141,10 @@ fn pass_end_on_the_command_line() {
     let default = common::stdout(&["expand", "--profile", "gsk980", p]);
     assert!(default.contains("G32 X30.765 Z-15.000 F2.0\n") && !default.contains("readings"), "{default}");
     let travel = common::stdout(&["expand", "--profile", "gsk980", "--reading", "R-END=travel-i", p]);
-    assert!(travel.contains("(readings: R-END=travel-i)\n") && travel.contains("G32 X30.800 Z-15.000"), "{travel}");
+    assert!(
+        travel.contains("(readings: R-END=travel-i)\n") && travel.contains("G32 X30.800 Z-15.000"),
+        "{travel}"
+    );
     let moved = common::stdout(&["expand", "--profile", "gsk980", "--reading", "R-END=translated", p]);
     assert!(moved.contains("G32 X30.800 Z-15.346 F2.0\n"), "{moved}");
 }
@@ -156,12 +162,20 @@ fn long_axis_table_refuses_plain_blocks() {
     let out = common::run(&["expand", "--profile", "gsk988", p], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("error[usage:lead_not_writable]") && err.contains("line 3, G92") && err.contains("R-LONG988"), "{err}");
+    assert!(
+        err.contains("error[usage:lead_not_writable]")
+            && err.contains("line 3, G92")
+            && err.contains("R-LONG988"),
+        "{err}"
+    );
     assert!(out.stdout.is_empty());
     let json = common::stdout(&["expand", "--profile", "gsk988", "--format", "json", p]);
     let doc: Value = serde_json::from_str(&json).expect("json");
     let cut = &doc["cycles"][0]["moves"][1];
-    assert_eq!((cut["role"].as_str(), cut["x"].as_str(), cut["z"].as_str()), (Some("cut"), Some("24.000"), Some("-4.000")));
+    assert_eq!(
+        (cut["role"].as_str(), cut["x"].as_str(), cut["z"].as_str()),
+        (Some("cut"), Some("24.000"), Some("-4.000"))
+    );
     let out = common::run(&["expand", "--profile", "gsk988", "--reading", "R-LONG988=displacement", p], None);
     assert!(String::from_utf8_lossy(&out.stderr).contains("run_out_into_work"));
 }

@@ -45,7 +45,10 @@ pub const M68X6: G76Cycle = G76Cycle {
     pass_limit: DEFAULT_PASS_LIMIT,
     // The gsk988 profile's readings: R-END `parallel` (a straight thread:
     // the same moves as `travel-i`).
-    readings: crate::CycleReadings { pass_end: crate::readings::PassEnd::Parallel, ..crate::CycleReadings::DEFAULT },
+    readings: crate::CycleReadings {
+        pass_end: crate::readings::PassEnd::Parallel,
+        ..crate::CycleReadings::DEFAULT
+    },
 };
 
 /// The G75.1 example of the GSK 980TDi manual (seed 001) at IS-C metric:

@@ -122,7 +122,8 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     let w = d.1 - a.1;
     let direction = if w > Decimal::ZERO { 1 } else { -1 };
     // Reading R-LONG988 `table` (a 988TA G78): Z whatever the displacements.
-    let long_axis = if w.abs() > i.abs() || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
+    let long_axis =
+        if w.abs() > i.abs() || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     Ok(Geometry { a, d, c_x, b_x, side, direction, long_axis, x_factor: xf })
 }
 

@@ -348,7 +348,8 @@ fn pass_end_parallel_with_run_out() {
 /// the diameter) before it, at X17.269, on the parallel line (X +12, Z -4):
 /// Z = 1.423 - 4·(17.269 - 8)/12 = 1.423 - 3.08967 = -1.66667 → -1.667. J
 /// = 0.5 along Z towards A: from Z-2 to Z-1.5 at X18.269.
-const END_X_LONG: &str = "M3 S300\nG00 X40 Z2\nG76 P010060 Q100 R0 J0.5 K0.5\nG76 X20 Z-2 R-6 P1000 Q1000 F2\nM30\n";
+const END_X_LONG: &str =
+    "M3 S300\nG00 X40 Z2\nG76 P010060 Q100 R0 J0.5 K0.5\nG76 X20 Z-2 R-6 P1000 Q1000 F2\nM30\n";
 
 #[test]
 fn pass_end_parallel_x_long() {
@@ -411,9 +412,8 @@ fn long_axis_table_applies_to_g78_not_g76() {
     let g = |code: &str| {
         format!("M3 S300\nG00 X40 Z2\n{code} P010260 Q0.1 R0 E0.5\n{code} X20 Z-2 R-6 P1 Q1 F2\nM30\n")
     };
-    let steep = |e: Result<Vec<Move>, ErrorKind>| {
-        matches!(e, Err(ErrorKind::Cycle(CycleError::LeadInOnXLongAxis)))
-    };
+    let steep =
+        |e: Result<Vec<Move>, ErrorKind>| matches!(e, Err(ErrorKind::Cycle(CycleError::LeadInOnXLongAxis)));
     assert!(run(&g("G78"), &machine(ProfileName::Gsk988, &[])).is_ok());
     assert!(steep(run(&g("G78"), &machine(ProfileName::Gsk988, &["R-LONG988=displacement"]))));
     assert!(steep(run(&g("G76").replace("P010260", "P010060"), &machine(ProfileName::Gsk988, &[]))));

@@ -310,7 +310,8 @@ pub(super) const LONG_TABLE: Template = Template {
     id: "g92-long-table",
     outcome: Expected::Valid(&["g92:long-table", "g92:taper"]),
     tags: &["template:g92-long-table", "rule:long-axis"],
-    description: "GSK 988TA G92 steep taper, |R| >= |W|: Z the long axis by the 988TA's table (\"P = 0（轴向螺纹）\
+    description:
+        "GSK 988TA G92 steep taper, |R| >= |W|: Z the long axis by the 988TA's table (\"P = 0（轴向螺纹）\
                   长轴：横轴\", R-LONG988), the run-out K along Z and J along X",
     generate: long_table,
 };

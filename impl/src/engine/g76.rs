@@ -422,7 +422,8 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let taper_abs = c.taper.abs();
     // Reading R-LONG, or R-LONG988 `table` (a 988TA G78: Z whatever the
     // displacements).
-    let long_axis = if w_abs > taper_abs || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
+    let long_axis =
+        if w_abs > taper_abs || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     if long_axis == LongAxis::X && c.lead_in > 0 {
         return Err(CycleError::LeadInOnXLongAxis);
     }
@@ -505,7 +506,9 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         let t = i128::from(direction);
         let beyond = match long_axis {
             LongAxis::Z => i128::from(d.x) + out * i128::from(c.thread_height - p.shallowest) + out * j,
-            LongAxis::X if pass_end == PassEnd::Translated => i128::from(d.z) + t * i128::from(p.min_shift) - t * j,
+            LongAxis::X if pass_end == PassEnd::Translated => {
+                i128::from(d.z) + t * i128::from(p.min_shift) - t * j
+            }
             LongAxis::X => i128::from(d.z) - t * j,
         };
         check_coordinate(beyond, u)?;
