@@ -278,10 +278,10 @@ fn end_taper_passes(cut_ends: [(i64, i64); 4]) -> Vec<(Role, Point)> {
 }
 
 /// R-END `parallel` (default on every profile): the line through Bn
-/// parallel to C→D (X +2, Z -20) meets D–E (Z-15) at X = X30 + 2·(1 - Dn)
-/// + 2·i·shift/|W| = X30 + 2·(1 - Dn) - shift/10: 30.8 - 0.0346 = 30.7654
-/// → 30.765; 30.302 - 0.049 = 30.253; 30.0 - 0.0577 = 29.9423 → 29.942
-/// (twice).
+/// parallel to C→D (X +2, Z -20) meets D–E (Z-15) at X = X30 +
+/// 2·(1 - Dn) + 2·i·shift/|W| = X30 + 2·(1 - Dn) - shift/10: 30.8 -
+/// 0.0346 = 30.7654, rounded 30.765; 30.302 - 0.049 = 30.253; 30.0 -
+/// 0.0577 = 29.9423, rounded 29.942 (twice).
 #[test]
 fn pass_end_parallel_by_default() {
     let want = end_taper_passes([(30_765, -15_000), (30_253, -15_000), (29_942, -15_000), (29_942, -15_000)]);
