@@ -18,7 +18,7 @@ use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{Item, PlainMove, Restore};
 
 use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
-use crate::job::{Failure, Job};
+use crate::job::{Cause, Failure, Job};
 use crate::json::ser::JsonSerializer;
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
 
@@ -59,6 +59,20 @@ pub enum Format {
 /// ```
 pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure> {
     let summary = job.validate()?;
+    // Reading R-LONG988: a cycle whose lead no G32 block can carry.
+    if let (Format::Nc, Some((line, code))) = (format, summary.lead_off_g32_axis) {
+        return Err(Failure::with_kind(
+            Cause::Usage,
+            "usage:lead_not_writable",
+            format!(
+                "{}: line {line}, {code}: under reading R-LONG988=table the lead is along Z on a taper whose \
+                 X travel is not shorter than its Z travel, and a G32 block of it would be read with the lead \
+                 along X (the longer displacement): the cycle cannot be written as plain blocks; ask for \
+                 --format json, or --reading R-LONG988=displacement",
+                job.name
+            ),
+        ));
+    }
     let mut out = io::BufWriter::with_capacity(1 << 16, out);
     let written = match format {
         Format::Nc => nc(job, &mut out),

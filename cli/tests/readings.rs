@@ -25,10 +25,13 @@ fn schema(name: &str) -> jsonschema::Validator {
 fn readings_lists_one_line_per_reading() {
     let all = common::stdout(&["readings"]);
     let ids: Vec<&str> = all.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
-    assert_eq!(ids, ["R-RUNOUT", "R-XRUNOUT", "R-E980"]);
+    assert_eq!(ids, ["R-RUNOUT", "R-XRUNOUT", "R-E980", "R-END", "R-LONG988"]);
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
+    assert!(all.contains("\nR-END\ttravel-i | parallel* | translated\t[fanuc,gsk980,gsk988]\t"), "{all}");
     let gsk988 = common::stdout(&["readings", "--profile", "gsk988"]);
-    assert_eq!(gsk988.lines().count(), 1, "{gsk988}");
+    let ids: Vec<&str> = gsk988.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
+    assert_eq!(ids, ["R-XRUNOUT", "R-END", "R-LONG988"], "{gsk988}");
+    assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
 }
 
 #[test]
@@ -112,10 +115,67 @@ fn an_unknown_id_or_value_names_the_valid_ones() {
     let out = common::run(&["expand", "--reading", "R-NOPE=x", p], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("unknown reading `R-NOPE`") && err.contains("R-RUNOUT, R-XRUNOUT, R-E980"), "{err}");
+    assert!(
+        err.contains("unknown reading `R-NOPE`") && err.contains("R-RUNOUT, R-XRUNOUT, R-E980, R-END"),
+        "{err}"
+    );
     assert!(out.stdout.is_empty());
     let out = common::run(&["passes", "--reading", "R-XRUNOUT=never", p], None);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("its values are refuse, towards-start"), "{err}");
+}
+
+/// R-END on the command line: a 980TDi G76 taper (spec/tests/readings.rs,
+/// `END_TAPER`, works the three by hand): pass 1 ends at X30.765 Z-15
+/// (`parallel`, the default), X30.8 Z-15 (`travel-i`), X30.8 Z-15.346
+/// (`translated`); the heading names the non-default value.
+#[test]
+fn pass_end_on_the_command_line() {
+    let prog = common::tmp(
+        "readings-end",
+        "g76.nc",
+        "M3 S300\nG00 X40 Z5\nG76 P010060 Q100 R0\nG76 X30 Z-15 R-1 P1000 Q600 F2\nM30\n",
+    );
+    let p = prog.to_str().expect("utf-8");
+    let default = common::stdout(&["expand", "--profile", "gsk980", p]);
+    assert!(default.contains("G32 X30.765 Z-15.000 F2.0\n") && !default.contains("readings"), "{default}");
+    let travel = common::stdout(&["expand", "--profile", "gsk980", "--reading", "R-END=travel-i", p]);
+    assert!(
+        travel.contains("(readings: R-END=travel-i)\n") && travel.contains("G32 X30.800 Z-15.000"),
+        "{travel}"
+    );
+    let moved = common::stdout(&["expand", "--profile", "gsk980", "--reading", "R-END=translated", p]);
+    assert!(moved.contains("G32 X30.800 Z-15.346 F2.0\n"), "{moved}");
+}
+
+/// R-LONG988 `table` (default on gsk988): the steep G92 (|R| = 10 ≥ |W| =
+/// 5) has its lead along Z, which a G32 block of its cut (X travel 8, Z
+/// travel 4) would read along X: the nc expansion refuses it, naming the
+/// reading; the JSON moves are given (the cut to X24 Z-4, worked in
+/// spec/tests/readings.rs); under `displacement` it is X long and its
+/// run-out into the work is refused (R-XRUNOUT).
+#[test]
+fn long_axis_table_refuses_plain_blocks() {
+    let prog = common::tmp("readings-long", "g92.nc", "M3 S300\nG00 X60 Z0\nG92 X20 Z-5 R10 F2 J2 K1\nM30\n");
+    let p = prog.to_str().expect("utf-8");
+    let out = common::run(&["expand", "--profile", "gsk988", p], None);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("error[usage:lead_not_writable]")
+            && err.contains("line 3, G92")
+            && err.contains("R-LONG988"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+    let json = common::stdout(&["expand", "--profile", "gsk988", "--format", "json", p]);
+    let doc: Value = serde_json::from_str(&json).expect("json");
+    let cut = &doc["cycles"][0]["moves"][1];
+    assert_eq!(
+        (cut["role"].as_str(), cut["x"].as_str(), cut["z"].as_str()),
+        (Some("cut"), Some("24.000"), Some("-4.000"))
+    );
+    let out = common::run(&["expand", "--profile", "gsk988", "--reading", "R-LONG988=displacement", p], None);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("run_out_into_work"));
 }

@@ -120,6 +120,7 @@ const FEATURES: &[&str] = &[
     "g92:straight",
     "g92:taper",
     "g92:x-long",
+    "g92:long-table",
     "g92:external",
     "g92:internal",
     "g92:run-out",

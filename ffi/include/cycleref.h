@@ -687,6 +687,11 @@ typedef struct CyclerefError {
  * X in X-word units (diameter increments unless `radius` is non-zero).
  * The values are taken as resolved: the profile rules for omitted words
  * and run-out words that `cycleref_expand` applies are not applied here.
+ * The readings are the defaults of every profile (docs/INTERPRETATIONS.md):
+ * each pass parallel to C→D until D–E (R-END `parallel`), J clamped at the
+ * retract (R-RUNOUT), an X-long run-out into the work refused (R-XRUNOUT),
+ * the long axis by the displacements (R-LONG988 is a 988TA G92/G78
+ * reading, which a G76 does not take).
  */
 typedef struct CyclerefG76Params {
     /**

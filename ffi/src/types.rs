@@ -470,6 +470,11 @@ impl CyclerefMove {
 /// X in X-word units (diameter increments unless `radius` is non-zero).
 /// The values are taken as resolved: the profile rules for omitted words
 /// and run-out words that `cycleref_expand` applies are not applied here.
+/// The readings are the defaults of every profile (docs/INTERPRETATIONS.md):
+/// each pass parallel to C→D until D–E (R-END `parallel`), J clamped at the
+/// retract (R-RUNOUT), an X-long run-out into the work refused (R-XRUNOUT),
+/// the long axis by the displacements (R-LONG988 is a 988TA G92/G78
+/// reading, which a G76 does not take).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct CyclerefG76Params {
@@ -649,7 +654,11 @@ impl CyclerefG76Params {
             lead,
             run_out,
             pass_limit: if self.pass_limit == 0 { DEFAULT_PASS_LIMIT } else { self.pass_limit },
-            readings: cycleref::CycleReadings::DEFAULT,
+            // R-END `parallel`: the default on every profile.
+            readings: cycleref::CycleReadings {
+                pass_end: cycleref::readings::PassEnd::Parallel,
+                ..cycleref::CycleReadings::DEFAULT
+            },
         })
     }
 }

@@ -43,7 +43,12 @@ pub const M68X6: G76Cycle = G76Cycle {
     lead: Lead { word: LeadWord::F, mantissa: 6, scale: 0 },
     run_out: RunOut::Chamfer { tenths_of_lead: 5, angle_degrees: 45, long: None },
     pass_limit: DEFAULT_PASS_LIMIT,
-    readings: crate::CycleReadings::DEFAULT,
+    // The gsk988 profile's readings: R-END `parallel` (a straight thread:
+    // the same moves as `travel-i`).
+    readings: crate::CycleReadings {
+        pass_end: crate::readings::PassEnd::Parallel,
+        ..crate::CycleReadings::DEFAULT
+    },
 };
 
 /// The G75.1 example of the GSK 980TDi manual (seed 001) at IS-C metric:

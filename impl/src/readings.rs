@@ -5,9 +5,34 @@
 //! puts the result here, so that the engine and the exact reference take
 //! the same value.
 //!
-//! [`CycleReadings::DEFAULT`] is the project's default reading of every
-//! point: the moves of a cycle carrying it are those of the cycles before
-//! readings were selectable.
+//! [`CycleReadings::DEFAULT`] is the reading of every point that the cycles
+//! had before readings were selectable: the moves of a cycle carrying it are
+//! those of the cycles before issue 34. The program reader resolves each
+//! profile's own defaults, which differ from it for R-END and R-LONG988
+//! (docs/INTERPRETATIONS.md).
+
+/// Reading R-END: where each pass of a G76 or G78 cycle ends when it is
+/// shifted along Z (seed 000 "执行过程" (4), 988TA and 980TDi G76 step ②).
+/// For a pass without shift the three coincide; on a straight thread
+/// `travel-i` and `parallel` do, and `translated` ends the shift beyond D.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum PassEnd {
+    /// `travel-i`: the pass ends on the line D–E (Z of D) at X of D plus
+    /// the pass's depth below the crest: X travels exactly i from Bn, and
+    /// the pass is not parallel to C→D when it is shifted. The reading of
+    /// the cycles before issue 34.
+    #[default]
+    TravelI,
+    /// `parallel`: the pass runs parallel to C→D until it meets the line
+    /// D–E (Z of D) (980TDi and 988TA G76 step ②: "沿平行于 C→D 的方向螺纹切削
+    /// 到与 D→E 相交处"); the end's X is rounded to the nearest increment.
+    Parallel,
+    /// `translated`: the pass is C→D translated to Bn, Z travel W and X
+    /// travel i (seed 000 and 988TA G78 step (4): "本轮切削终点与螺纹切入点在
+    /// Z 轴方向的移动量为 W，X 轴方向的移动量为 i"): it ends shift beyond D
+    /// along Z.
+    Translated,
+}
 
 /// What a threading cycle (G76, G78, G92) does at the points its manuals
 /// leave open, resolved for the cycle's control profile.
@@ -15,11 +40,11 @@
 pub struct CycleReadings {
     /// Reading R-RUNOUT: the short-axis run-out J is clamped to the retract
     /// distance of a pass without run-out (the X of A on a Z-long thread,
-    /// |W| on an X-long one), as 988TA G92 note 5 says ("当螺纹短轴方向退尾
-    /// 长度大于无退尾时的退刀距离时，系统默认短轴方向退尾长度为无退尾时的退刀距离").
-    /// `false`: J as written, beyond the retract point when it is longer
-    /// (R-RUNOUT `gsk988-only` on a profile other than gsk988, whose pages
-    /// are silent).
+    /// the Z travel back to A on an X-long one), as 988TA G92 note 5 says
+    /// ("当螺纹短轴方向退尾长度大于无退尾时的退刀距离时，系统默认短轴方向退尾长度为无
+    /// 退尾时的退刀距离"). `false`: J as written, beyond the retract point when
+    /// it is longer (R-RUNOUT `gsk988-only` on a profile other than gsk988,
+    /// whose pages are silent).
     pub clamp_run_out: bool,
     /// Reading R-XRUNOUT: an X-long run-out along Z towards A on a thread
     /// whose cut line rises towards A (s·i > 0) is refused
@@ -27,12 +52,26 @@ pub struct CycleReadings {
     /// written when `true` ("根据程序起点位置自动确定退尾方向", R-XRUNOUT
     /// `towards-start`).
     pub x_run_out_towards_start: bool,
+    /// Reading R-END: where each pass of a G76 or G78 cycle ends (G92's
+    /// single pass has no shift: every value gives the same moves).
+    pub pass_end: PassEnd,
+    /// Reading R-LONG988 `table` on a 988TA G92 or G78: Z is the long axis
+    /// of an axial thread whatever the displacements (988TA G92 "长轴/短轴的
+    /// 判断": "P = 0（轴向螺纹）长轴：横轴"). `false`: the long axis by the
+    /// displacements, |W| > |i| for Z (R-LONG).
+    pub long_axis_by_table: bool,
 }
 
 impl CycleReadings {
-    /// The default readings: J clamped on every profile, X-long run-outs
-    /// into the work refused.
-    pub const DEFAULT: CycleReadings = CycleReadings { clamp_run_out: true, x_run_out_towards_start: false };
+    /// The readings of the cycles before issue 34: J clamped on every
+    /// profile, X-long run-outs into the work refused, X travelling i on
+    /// every pass (R-END `travel-i`), the long axis by the displacements.
+    pub const DEFAULT: CycleReadings = CycleReadings {
+        clamp_run_out: true,
+        x_run_out_towards_start: false,
+        pass_end: PassEnd::TravelI,
+        long_axis_by_table: false,
+    };
 }
 
 impl Default for CycleReadings {

@@ -22,6 +22,7 @@ use cycleref::engine::{expand_g76, isqrt_floor, rough_pass_count, round_sqrt, G7
 use cycleref::g76::{G76Cycle, Infeed, RunOut, DEFAULT_PASS_LIMIT};
 use cycleref::lead::{Lead, LeadWord};
 use cycleref::moves::{Flank, Motion, Move, PassKind, Role};
+use cycleref::readings::PassEnd;
 use cycleref::units::{IncrementSystem, InputUnit, Point, Units, XMode, MAX_LENGTH};
 use cycleref::{CycleError, Length};
 use cycleref_spec::differ::assert_same_moves;
@@ -323,11 +324,20 @@ proptest! {
     }
 
     /// The engine equals the reference under every value of the readings
-    /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT).
+    /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
+    /// three pass ends, R-LONG988's table).
     #[test]
-    fn engine_equals_spec_under_every_reading(c in cycle(), clamp in any::<bool>(), towards in any::<bool>()) {
+    fn engine_equals_spec_under_every_reading(
+        c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
+    ) {
+        let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
-            readings: cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards },
+            readings: cycleref::CycleReadings {
+                clamp_run_out: clamp,
+                x_run_out_towards_start: towards,
+                pass_end,
+                long_axis_by_table: table,
+            },
             ..c
         };
         let _ = same(&c);

@@ -78,15 +78,28 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(5000))]
 
     /// Both engines agree under every value of the readings a block carries
-    /// (issue 34: R-RUNOUT's clamp, R-XRUNOUT), on every block size and near
-    /// the boundaries, where the clamp and the X-long run-out switch.
+    /// (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-LONG988's table; R-END has
+    /// no effect on G92's unshifted pass, and both engines take every value),
+    /// on every block size and near the boundaries, where the clamp, the
+    /// long axis and the X-long run-out switch.
     #[test]
     fn engine_equals_spec_under_every_reading(
-        c in cycles(), clamp in any::<bool>(), towards in any::<bool>(),
+        c in cycles(), clamp in any::<bool>(), towards in any::<bool>(), table in any::<bool>(),
+        end in 0..3_u8,
         x0 in -6_i64..=6, z0 in -6_i64..=6, x1 in -6_i64..=6, z1 in -6_i64..=6, r in -6_i64..=6,
         j in 0_i64..=6, k in 0_i64..=6, small in any::<bool>(),
     ) {
-        let readings = cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards };
+        let pass_end = [
+            cycleref::readings::PassEnd::TravelI,
+            cycleref::readings::PassEnd::Parallel,
+            cycleref::readings::PassEnd::Translated,
+        ][usize::from(end)];
+        let readings = cycleref::CycleReadings {
+            clamp_run_out: clamp,
+            x_run_out_towards_start: towards,
+            pass_end,
+            long_axis_by_table: table,
+        };
         let c = if small {
             G92Cycle {
                 start: Point::new(x0, z0),

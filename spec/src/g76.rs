@@ -29,6 +29,7 @@ use cycleref::error::{CycleError, Field};
 use cycleref::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use cycleref::lead::{Lead, Ratio};
 use cycleref::moves::{Flank, Move, Pass, PassKind};
+use cycleref::readings::PassEnd;
 use cycleref::units::{Length, MAX_LENGTH};
 use cycleref::Units;
 use rust_decimal::Decimal;
@@ -120,7 +121,9 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     }
     let w = d.1 - a.1;
     let direction = if w > Decimal::ZERO { 1 } else { -1 };
-    let long_axis = if w.abs() > i.abs() { LongAxis::Z } else { LongAxis::X };
+    // Reading R-LONG988 `table` (a 988TA G78): Z whatever the displacements.
+    let long_axis =
+        if w.abs() > i.abs() || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     Ok(Geometry { a, d, c_x, b_x, side, direction, long_axis, x_factor: xf })
 }
 
@@ -461,6 +464,44 @@ fn check_coordinate(v: Decimal, u: Units) -> Result<(), CycleError> {
     Ok(())
 }
 
+/// The end of a pass at `depth` whose start Bn is shifted `shift` along Z
+/// (reading R-END):
+///
+/// * `travel-i`: on the line D–E (Z of D), at X of D plus the depth below
+///   the crest: X travels i from Bn (seed 000 (4): "X 轴方向的移动量为 i").
+/// * `parallel`: on the line through Bn parallel to C→D where it meets D–E
+///   (980TDi and 988TA G76 ②: "沿平行于 C→D 的方向螺纹切削到与 D→E 相交处"):
+///   X of D + s·xf·(k - depth) + xf·i·shift/|W|, rounded to the nearest
+///   increment, ties away from zero.
+/// * `translated`: Bn plus C→D, Z travel W and X travel i (seed 000 and
+///   988TA G78 (4): "在 Z 轴方向的移动量为 W，X 轴方向的移动量为 i"): X as
+///   `travel-i`, Z of D plus the shift towards D.
+///
+/// Twin: `impl/src/engine/pass.rs`, `Frame::path`.
+fn pass_end_point(
+    g: &Geometry,
+    depth: Decimal,
+    shift: Decimal,
+    k: Decimal,
+    pass_end: PassEnd,
+    u: Units,
+) -> (Decimal, Decimal) {
+    let s = Decimal::from(g.side);
+    let t = Decimal::from(g.direction);
+    let x = g.d.0 + s * g.x_factor * (k - depth);
+    match pass_end {
+        PassEnd::TravelI => (x, g.d.1),
+        PassEnd::Parallel => {
+            // Exactly, in increments: (x |W| + (X(C) - X(D)) shift) / |W|.
+            let w = i128::from(to_increments((g.d.1 - g.a.1).abs(), u));
+            let num = i128::from(to_increments(x, u)) * w
+                + i128::from(to_increments(g.c_x - g.d.0, u)) * i128::from(to_increments(shift, u));
+            (from_increments(i64::try_from(round_div(num, w)).unwrap_or(i64::MAX), u), g.d.1)
+        }
+        PassEnd::Translated => (x, g.d.1 + t * shift),
+    }
+}
+
 /// Expands a G76 cycle into moves.
 ///
 /// Each pass, for each start (reading R-STARTS: all starts at one depth
@@ -520,21 +561,35 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     if max_shift >= w.abs() {
         return Err(CycleError::ThreadTooShort { shift: len(max_shift, u), length: len(w.abs(), u) });
     }
+    let pass_end = c.readings.pass_end;
     match g.long_axis {
         LongAxis::Z => {
             if let Some((_, kk)) = run_out {
-                if kk > w.abs() - max_shift {
-                    return Err(CycleError::RunOutTooLong {
-                        run_out: len(kk, u),
-                        length: len(w.abs() - max_shift, u),
-                    });
+                // Reading R-END: a translated pass is |W| long whatever its
+                // shift; the others end on D–E, |W| less the shift.
+                let length = if pass_end == PassEnd::Translated { w.abs() } else { w.abs() - max_shift };
+                if kk > length {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk, u), length: len(length, u) });
                 }
             }
         }
         LongAxis::X => {
             if let Some((_, kk)) = run_out {
-                if kk > i.abs() {
-                    return Err(CycleError::RunOutTooLong { run_out: len(kk, u), length: len(i.abs(), u) });
+                // Reading R-END: a parallel pass travels |i| (|W| - shift) /
+                // |W| along X (radius), the least at the largest shift; K,
+                // a whole number of increments, exceeds it exactly when it
+                // exceeds its floor.
+                let length = if pass_end == PassEnd::Parallel {
+                    let num = i128::from(c.taper.abs()) * i128::from(to_increments(w.abs() - max_shift, u));
+                    from_increments(
+                        i64::try_from(num / i128::from(to_increments(w.abs(), u))).unwrap_or(i64::MAX),
+                        u,
+                    )
+                } else {
+                    i.abs()
+                };
+                if kk > length {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk, u), length: len(length, u) });
                 }
                 // Reading R-XRUNOUT: the run-out ends at X of the pass end,
                 // J along Z towards A, where the cut line lies at X of the
@@ -558,13 +613,21 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
         check_coordinate(g.a.1 + t * min_shift - t * lz, u)?;
     }
+    // Reading R-END `translated`: every pass ends its shift beyond D along
+    // Z, the furthest by the largest shift.
+    if pass_end == PassEnd::Translated {
+        check_coordinate(g.d.1 + t * max_shift, u)?;
+    }
     // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
     // retract: Z long, furthest out at the end of the shallowest pass; X
-    // long, J along Z from D towards A.
+    // long, J along Z from the pass's end towards A (D, or D shifted by
+    // the smallest shift for translated passes).
     if let (Some((j, _)), Some(first), false) = (run_out, plan.first(), c.readings.clamp_run_out) {
         let shallowest = from_increments(first.pass.depth, u);
+        let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
         let beyond = match g.long_axis {
             LongAxis::Z => g.d.0 + s * xf * (k - shallowest) + s * xf * j,
+            LongAxis::X if pass_end == PassEnd::Translated => g.d.1 + t * min_shift - t * j,
             LongAxis::X => g.d.1 - t * j,
         };
         check_coordinate(beyond, u)?;
@@ -580,6 +643,10 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         long_axis: g.long_axis,
         run_out,
         clamp_run_out: c.readings.clamp_run_out,
+        line: match pass_end {
+            PassEnd::TravelI => None,
+            PassEnd::Parallel | PassEnd::Translated => Some((g.d.0 - g.c_x, w)),
+        },
         lead: c.lead,
         units: u,
     };
@@ -598,8 +665,8 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
             // Seed 000 "进刀点实际坐标位置计算": X = X 终点 + 锥度 R(i) ∓ 牙高 P(k)
             // ± X 轴切深; Z = Z 起点 ± Z 轴切深.
             let bn = (g.d.0 + xf * i + s * xf * (k - depth), g.a.1 + t * planned.z_shift);
-            // Reading R-END: the cut ends on the line D–E, X having moved i.
-            let end = (g.d.0 + s * xf * (k - depth), g.d.1);
+            // Reading R-END: where the cut ends.
+            let end = pass_end_point(&g, depth, planned.z_shift, k, pass_end, u);
             let lead_in_start = lead_in.map(|lz| (bn.0 + s * xf * e, bn.1 - t * lz));
             pass_path(moves, &frame, bn, end, lead_in_start, pass, angle);
         }

@@ -92,7 +92,10 @@ pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     let direction = if w > Decimal::ZERO { 1 } else { -1 };
     // "B 点与 C 点 Z 轴坐标差的绝对值大于 X 轴(半径值)坐标差的绝对值时，Z 轴为长轴；
     // 反之，X 轴为长轴" (reading R-LONG); a face thread's long axis is X.
-    let long_axis = if c.face || w.abs() > r.abs() { LongAxis::Z } else { LongAxis::X };
+    // Reading R-LONG988 `table` (988TA "P = 0（轴向螺纹）长轴：横轴"): Z
+    // whatever the displacements.
+    let long_axis =
+        if c.face || w.abs() > r.abs() || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     // K along the long axis, in its units (X words on a face thread).
     let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, k * lf));
     if let Some((_, kk)) = run_out {
@@ -139,6 +142,8 @@ pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         long_axis,
         run_out,
         clamp_run_out: c.readings.clamp_run_out,
+        // One pass without shift: every R-END value gives this path.
+        line: None,
         lead: c.lead,
         units: u,
     };

@@ -56,6 +56,10 @@ pub struct PassFrame {
     /// J clamped at the retract (reading R-RUNOUT, 988TA G92 note 5);
     /// `false` under R-RUNOUT `gsk988-only` on another profile.
     pub clamp_run_out: bool,
+    /// The direction of every cut line, C→D (reading R-END `parallel` and
+    /// `translated`); `None`: from Bn towards the pass's end (`travel-i`,
+    /// and G92's pass, which has no shift).
+    pub line: Option<(Decimal, Decimal)>,
     /// The lead.
     pub lead: Lead,
     /// The cycle's units.
@@ -129,13 +133,15 @@ pub fn pass_path(
         None => path.go(Motion::Rapid, bn, Role::Approach),
     }
     let mut last = end;
+    // The cut line: from Bn along `dir` (reading R-END).
+    let dir = f.line.unwrap_or((end.0 - bn.0, end.1 - bn.1));
     match f.run_out {
         None => path.thread(end, Role::Cut),
         Some((j, kk)) => match f.long_axis {
             LongAxis::Z => {
                 // Run-out starts K before the end along Z, on the cut line.
                 let zr = end.1 - t * kk;
-                let xr = quantize(bn.0 + (end.0 - bn.0) * (zr - bn.1) / (end.1 - bn.1), u);
+                let xr = quantize(bn.0 + dir.0 * (zr - bn.1) / dir.1, u);
                 path.thread((xr, zr), Role::Cut);
                 // Short axis: J away from the work, at most to E (reading R-RUNOUT).
                 // Reading R-RUNOUT `gsk988-only`: J as written.
@@ -144,11 +150,13 @@ pub fn pass_path(
                 path.thread(last, Role::RunOut);
             }
             LongAxis::X => {
-                let sigma = if end.0 > bn.0 { Decimal::ONE } else { Decimal::NEGATIVE_ONE };
+                let sigma = if dir.0 > Decimal::ZERO { Decimal::ONE } else { Decimal::NEGATIVE_ONE };
                 let xr = end.0 - sigma * xf * kk;
-                let zr = quantize(bn.1 + (end.1 - bn.1) * (xr - bn.0) / (end.0 - bn.0), u);
+                let zr = quantize(bn.1 + dir.1 * (xr - bn.0) / dir.0, u);
                 path.thread((xr, zr), Role::Cut);
-                let jz = if f.clamp_run_out { j.min(f.length) } else { j };
+                // At most the Z travel back to A: |W|, or |W| + the shift
+                // for a translated pass (R-END).
+                let jz = if f.clamp_run_out { j.min((end.1 - f.a.1).abs()) } else { j };
                 last = (end.0, end.1 - t * jz);
                 path.thread(last, Role::RunOut);
             }

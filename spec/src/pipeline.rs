@@ -285,6 +285,28 @@ impl Cycle<'_, '_> {
         }
     }
 
+    /// True when the cycle's lead is not along the long axis that a G32
+    /// block of its cut would take (reading R-G32LONG: by the
+    /// displacements): a 988TA G92 or G78 under R-LONG988 `table` on a
+    /// steep taper (|W| ≤ |i|, radius), whose lead is along Z while its cut,
+    /// written as `G32 X… Z… F…`, would be read with the lead along X. Its
+    /// moves are the cycle's; the nc output refuses it, since no G32 block
+    /// says which axis the lead is on.
+    #[must_use]
+    pub fn lead_off_g32_axis(self) -> bool {
+        match self {
+            Cycle::G76(c) => {
+                let g = &c.cycle;
+                g.readings.long_axis_by_table && (g.end.z - g.start.z).abs() <= g.taper.abs()
+            }
+            Cycle::G92(c) => {
+                let g = &c.cycle;
+                g.readings.long_axis_by_table && !g.face && (g.end.z - g.start.z).abs() <= g.taper.abs()
+            }
+            _ => false,
+        }
+    }
+
     /// Where the tool is when the cycle starts.
     #[must_use]
     pub fn from(self) -> Point {
@@ -407,6 +429,11 @@ pub struct Summary {
     pub g92: usize,
     /// The number of LinuxCNC G76 cycles.
     pub linuxcnc: usize,
+    /// The line and G code of the first cycle whose lead is not along the
+    /// long axis a G32 block of its moves would take
+    /// ([`Cycle::lead_off_g32_axis`]): such a program cannot be written as
+    /// plain blocks (reading R-LONG988).
+    pub lead_off_g32_axis: Option<(usize, &'static str)>,
 }
 
 /// The first phase of a run (reading R-STREAM): reads every item of
@@ -435,13 +462,15 @@ pub struct Validation {
     items: usize,
     /// Cycles by kind: G76, G32, G75.1, G92, LinuxCNC G76.
     cycles: [usize; CYCLE_KINDS],
+    /// [`Summary::lead_off_g32_axis`].
+    lead_off_g32_axis: Option<(usize, &'static str)>,
 }
 
 impl Validation {
     /// Nothing checked yet; cycles will be expanded with `engine`.
     #[must_use]
     pub fn new(engine: Engine) -> Validation {
-        Validation { engine, items: 0, cycles: [0; CYCLE_KINDS] }
+        Validation { engine, items: 0, cycles: [0; CYCLE_KINDS], lead_off_g32_axis: None }
     }
 
     /// Checks the next item of the program.
@@ -456,6 +485,9 @@ impl Validation {
             // Every alarm is raised before the first move: the moves are
             // not taken.
             expand_at(cycle, self.engine)?;
+            if self.lead_off_g32_axis.is_none() && cycle.lead_off_g32_axis() {
+                self.lead_off_g32_axis = Some((cycle.line(), cycle.code()));
+            }
         }
         Ok(())
     }
@@ -473,6 +505,7 @@ impl Validation {
             g75,
             g92,
             linuxcnc,
+            lead_off_g32_axis: self.lead_off_g32_axis,
         }
     }
 }

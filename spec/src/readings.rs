@@ -14,6 +14,7 @@
 //! Only readings implemented in both engines are listed ([`TABLE`]).
 
 use core::fmt;
+use cycleref::readings::PassEnd;
 use cycleref::CycleReadings;
 
 use crate::profile::{ParamsError, ProfileName};
@@ -63,8 +64,26 @@ pub enum E980 {
     Signed,
 }
 
+/// Reading R-LONG988: the long axis of a 988TA G92 or G78 on a steep taper
+/// (|i| ≥ |W|).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Long988 {
+    /// `displacement`: by the displacements, Z when |W| > |i| (radius), as
+    /// the 980TDi G92 page ("B 点与 C 点 Z 轴坐标差的绝对值大于 X 轴(半径值)坐标差
+    /// 的绝对值时，Z 轴为长轴；反之，X 轴为长轴") and seed 000 for G76.
+    Displacement,
+    /// `table` (default on gsk988): the 988TA G92 page's table "长轴/短轴的
+    /// 判断": "P = 0（轴向螺纹）长轴：横轴" (Z in G18), whatever the
+    /// displacements; the 988TA replaced the 980TDi's displacement sentence
+    /// with it.
+    Table,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
-/// project's reading of every point.
+/// project's reading of every point on every profile: where a reading's
+/// default depends on the profile (R-END, R-LONG988) its field is `None`
+/// until a value is chosen, and [`Readings::for_cycle`] takes the
+/// profile's ([`ReadingEntry::default_on`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Readings {
     /// R-RUNOUT.
@@ -73,6 +92,10 @@ pub struct Readings {
     pub x_run_out: XRunOut,
     /// R-E980.
     pub e980: E980,
+    /// R-END; `None`: the profile's default.
+    pub pass_end: Option<PassEnd>,
+    /// R-LONG988; `None`: the profile's default.
+    pub long988: Option<Long988>,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -91,22 +114,65 @@ pub struct ReadingEntry {
     pub id: &'static str,
     /// What it decides, in a few words.
     pub point: &'static str,
-    /// Its values, the default first.
+    /// Its values, the default first unless the default depends on the
+    /// profile ([`ReadingEntry::default_on`]).
     pub values: &'static [ReadingValue],
     /// The profiles on which the choice changes anything.
     pub profiles: &'static [ProfileName],
 }
 
 impl ReadingEntry {
-    /// The default value on `profile` (the same on every profile for the
-    /// readings listed today: the first value).
+    /// The default value on `profile`: the first value, except where the
+    /// evidence decides another per profile (docs/INTERPRETATIONS.md,
+    /// R-END and R-LONG988).
     #[must_use]
-    pub fn default_on(&self, _profile: ProfileName) -> &'static str {
-        self.values.first().map_or("", |v| v.name)
+    pub fn default_on(&self, profile: ProfileName) -> &'static str {
+        match self.id {
+            "R-END" => pass_end_name(default_pass_end(profile)),
+            "R-LONG988" => long988_name(default_long988(profile)),
+            _ => self.values.first().map_or("", |v| v.name),
+        }
     }
 
     fn names(&self) -> String {
         self.values.iter().map(|v| v.name).collect::<Vec<_>>().join(", ")
+    }
+}
+
+/// R-END's default on `profile`, decided on the text
+/// (docs/INTERPRETATIONS.md, R-END): `parallel` on every profile. The
+/// 980TDi G76 page (the FANUC two-block format) and the 988TA G76 page,
+/// step ②: "沿平行于 C→D 的方向螺纹切削到与 D→E 相交处"; seed 000 and the
+/// 988TA G78 page define D's long-axis coordinate as the end of the cut
+/// ("如果有螺纹退尾，切削终点长轴方向为螺纹切削终点"), which a pass
+/// translated by its shift (`translated`, their step (4) read literally)
+/// would overrun on every thread, straight ones included.
+fn default_pass_end(_profile: ProfileName) -> PassEnd {
+    PassEnd::Parallel
+}
+
+fn pass_end_name(v: PassEnd) -> &'static str {
+    match v {
+        PassEnd::TravelI => "travel-i",
+        PassEnd::Parallel => "parallel",
+        PassEnd::Translated => "translated",
+    }
+}
+
+/// R-LONG988's default on `profile`: the 988TA G92 page's table, "P = 0
+/// （轴向螺纹）长轴：横轴", on gsk988 (elsewhere the reading changes
+/// nothing).
+fn default_long988(profile: ProfileName) -> Long988 {
+    match profile {
+        ProfileName::Gsk988 => Long988::Table,
+        _ => Long988::Displacement,
+    }
+}
+
+fn long988_name(v: Long988) -> &'static str {
+    match v {
+        Long988::Displacement => "displacement",
+        Long988::Table => "table",
     }
 }
 
@@ -156,10 +222,46 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-END",
+        point: "where each pass of G76 and G78 ends on a taper, its start shifted along Z",
+        values: &[
+            ReadingValue {
+                name: "travel-i",
+                source: "X travels exactly i from Bn to the line D-E (Z of D); parallel to C->D in no source",
+            },
+            ReadingValue {
+                name: "parallel",
+                source: "980TDi and 988TA G76 step 2: \"沿平行于 C→D 的方向螺纹切削到与 D→E 相交处\";                          the end's X rounded (default on fanuc, gsk980)",
+            },
+            ReadingValue {
+                name: "translated",
+                source: "seed 000 and 988TA G78 step (4): \"Z 轴方向的移动量为 W，X 轴方向的移动量为 i\":                          C->D moved to Bn, ending shift beyond D (default on gsk988)",
+            },
+        ],
+        profiles: GSK,
+    },
+    ReadingEntry {
+        id: "R-LONG988",
+        point: "the long axis of a 988TA G92 or G78 on a steep taper (|i| >= |W|)",
+        values: &[
+            ReadingValue {
+                name: "displacement",
+                source: "Z when |W| > |i| (radius), as the 980TDi G92 page and seed 000 for G76",
+            },
+            ReadingValue {
+                name: "table",
+                source: "988TA G92 \"P = 0（轴向螺纹）长轴：横轴\": Z whatever the displacements (default);                          such a cycle cannot be written as G32 blocks (expand refuses it)",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
 ];
 
 impl Readings {
-    /// The value of reading `id`, by name.
+    /// The value of reading `id`, by name; `None` for an unknown id, and
+    /// for a reading whose default depends on the profile while it is not
+    /// chosen ([`Readings::get_on`] gives the profile's).
     #[must_use]
     pub fn get(&self, id: &str) -> Option<&'static str> {
         let v = match id {
@@ -175,9 +277,19 @@ impl Readings {
                 E980::RefuseNegative => "refuse-negative",
                 E980::Signed => "signed",
             },
+            "R-END" => pass_end_name(self.pass_end?),
+            "R-LONG988" => long988_name(self.long988?),
             _ => return None,
         };
         Some(v)
+    }
+
+    /// The value of reading `id` in force on `profile`, by name: the
+    /// chosen one, else the profile's default.
+    #[must_use]
+    pub fn get_on(&self, id: &str, profile: ProfileName) -> Option<&'static str> {
+        let entry = TABLE.iter().find(|e| e.id == id)?;
+        Some(self.get(id).unwrap_or_else(|| entry.default_on(profile)))
     }
 
     /// Sets reading `id` to the value named `value`.
@@ -198,6 +310,11 @@ impl Readings {
             ("R-XRUNOUT", "towards-start") => self.x_run_out = XRunOut::TowardsStart,
             ("R-E980", "refuse-negative") => self.e980 = E980::RefuseNegative,
             ("R-E980", "signed") => self.e980 = E980::Signed,
+            ("R-END", "travel-i") => self.pass_end = Some(PassEnd::TravelI),
+            ("R-END", "parallel") => self.pass_end = Some(PassEnd::Parallel),
+            ("R-END", "translated") => self.pass_end = Some(PassEnd::Translated),
+            ("R-LONG988", "displacement") => self.long988 = Some(Long988::Displacement),
+            ("R-LONG988", "table") => self.long988 = Some(Long988::Table),
             _ => return Err(bad()),
         }
         Ok(())
@@ -243,12 +360,21 @@ impl Readings {
             .collect()
     }
 
-    /// What a threading cycle of `profile` does under these readings.
+    /// What a threading cycle of `profile` does under these readings: a
+    /// G92 or a G78 (`long_axis_table_applies`: the cycles R-LONG988 is
+    /// about) or a G76 (seed 000 gives G76 the displacement rule: "C 点与 D
+    /// 点 Z 轴坐标差的绝对值大于 X 轴坐标差的绝对值 … 时，Z 轴为长轴").
     #[must_use]
-    pub fn for_cycle(&self, profile: ProfileName) -> CycleReadings {
+    pub fn for_cycle(&self, profile: ProfileName, long_axis_table_applies: bool) -> CycleReadings {
+        let pass_end = self.pass_end.unwrap_or(default_pass_end(profile));
+        let long988 = self.long988.unwrap_or(default_long988(profile));
         CycleReadings {
             clamp_run_out: self.run_out == RunOutClamp::AllProfiles || profile == ProfileName::Gsk988,
             x_run_out_towards_start: self.x_run_out == XRunOut::TowardsStart,
+            pass_end,
+            long_axis_by_table: profile == ProfileName::Gsk988
+                && long_axis_table_applies
+                && long988 == Long988::Table,
         }
     }
 }
@@ -258,8 +384,10 @@ fn known_ids() -> String {
 }
 
 /// `cycleref readings`: one line per reading of [`TABLE`], its id, its
-/// values with the default on `profile` marked `*` (every profile's when
-/// `None`), the profiles it changes anything on, and each value's source.
+/// values with the default on `profile` marked `*` (without a profile,
+/// `*` where the value is the default on every profile the reading changes
+/// anything on, `*fanuc,gsk980` where only on those), the profiles it
+/// changes anything on, and each value's source.
 pub struct Listing {
     /// The profile whose defaults are marked.
     pub profile: Option<ProfileName>,
@@ -273,11 +401,24 @@ impl fmt::Display for Listing {
                     continue;
                 }
             }
-            let default = e.default_on(self.profile.unwrap_or(ProfileName::Gsk988));
+            // The default marked `*`; without a profile, where the defaults
+            // differ between the reading's profiles, followed by the
+            // profiles it is the default on.
+            let on: Vec<ProfileName> = self.profile.map_or_else(|| e.profiles.to_vec(), |p| vec![p]);
             let values: Vec<String> = e
                 .values
                 .iter()
-                .map(|v| if v.name == default { format!("{}*", v.name) } else { v.name.to_string() })
+                .map(|v| {
+                    let defaults: Vec<String> =
+                        on.iter().filter(|p| e.default_on(**p) == v.name).map(ToString::to_string).collect();
+                    if defaults.is_empty() {
+                        v.name.to_string()
+                    } else if defaults.len() == on.len() {
+                        format!("{}*", v.name)
+                    } else {
+                        format!("{}*{}", v.name, defaults.join(","))
+                    }
+                })
                 .collect();
             let profiles: Vec<String> = e.profiles.iter().map(ToString::to_string).collect();
             let sources: Vec<String> = e.values.iter().map(|v| format!("{}: {}", v.name, v.source)).collect();

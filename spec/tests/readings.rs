@@ -4,6 +4,7 @@
 //! engines equal under every value, and the errors naming the valid ids
 //! and values. IS-B metric, X as a diameter; J, K and E are radius values.
 
+use cycleref::readings::PassEnd;
 use cycleref::{CycleError, Move, Point, Role};
 use cycleref_spec::pipeline::{expand, Cycle, Engine};
 use cycleref_spec::profile::{Machine, ParamsError};
@@ -203,7 +204,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -243,4 +244,199 @@ fn listing() {
     assert!(all.lines().next().unwrap().starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t"));
     let gsk988 = Listing { profile: Some(ProfileName::Gsk988) }.to_string();
     assert!(!gsk988.contains("R-RUNOUT") && !gsk988.contains("R-E980") && gsk988.contains("R-XRUNOUT"));
+}
+
+/// R-END on a small taper, 980TDi G76 (P, Q in increments): A = (X40, Z5),
+/// D = (X30, Z-15), i = -1 (radius): C = X30 + 2·(-1) = X28 < X40, external
+/// (s = +1); W = -20 (t = -1), |W| = 20 > |i| = 1: Z long. k = 1, Δd = 0.6,
+/// Δdmin = 0.1, d = 0, m = 1, a = 60 (tan 30° = 0.5773503), r = 0 and no
+/// J, K: no run-out (980TDi note 4 via P(r) = 0).
+///
+/// Levels (R-DEPTH): round(0.6·√1) = 0.600; round(0.6·√2 = 0.8485) =
+/// 0.849 ≥ 0.600 + 0.1; 0.6·√3 = 1.039 ≥ k - d = 1: 1.000. Shifts
+/// round(Dn·tan 30°): 0.346 (0.3464), 0.490 (0.4902), 0.577 (0.5774);
+/// the finishing pass at k = 1 from the last rough Z (shift 0.577).
+/// Bn = (X28 + 2·(1 - Dn), Z5 - shift): (28.800, 4.654), (28.302, 4.510),
+/// (28.000, 4.423), finishing (28.000, 4.423).
+const END_TAPER: &str = "M3 S300\nG00 X40 Z5\nG76 P010060 Q100 R0\nG76 X30 Z-15 R-1 P1000 Q600 F2\nM30\n";
+
+/// The four passes of [`END_TAPER`] given each pass's cut end (X, Z):
+/// approach to Bn, cut, retract to X40 at the end's Z, return to A.
+fn end_taper_passes(cut_ends: [(i64, i64); 4]) -> Vec<(Role, Point)> {
+    let bn = [(28_800, 4_654), (28_302, 4_510), (28_000, 4_423), (28_000, 4_423)];
+    bn.iter()
+        .zip(cut_ends)
+        .flat_map(|(&(bx, bz), (ex, ez))| {
+            [
+                (Role::Approach, Point::new(bx, bz)),
+                (Role::Cut, Point::new(ex, ez)),
+                (Role::Retract, Point::new(40_000, ez)),
+                (Role::Return, Point::new(40_000, 5_000)),
+            ]
+        })
+        .collect()
+}
+
+/// R-END `parallel` (default on every profile): the line through Bn
+/// parallel to C→D (X +2, Z -20) meets D–E (Z-15) at X = X30 +
+/// 2·(1 - Dn) + 2·i·shift/|W| = X30 + 2·(1 - Dn) - shift/10: 30.8 -
+/// 0.0346 = 30.7654, rounded 30.765; 30.302 - 0.049 = 30.253; 30.0 -
+/// 0.0577 = 29.9423, rounded 29.942 (twice).
+#[test]
+fn pass_end_parallel_by_default() {
+    let want = end_taper_passes([(30_765, -15_000), (30_253, -15_000), (29_942, -15_000), (29_942, -15_000)]);
+    assert_eq!(ends(&run(END_TAPER, &machine(ProfileName::Gsk980, &[])).unwrap()), want);
+    assert_eq!(ends(&run(END_TAPER, &machine(ProfileName::Gsk980, &["R-END=parallel"])).unwrap()), want);
+    assert_eq!(Readings::default().for_cycle(ProfileName::Gsk988, false).pass_end, PassEnd::Parallel);
+    assert_eq!(Readings::default().for_cycle(ProfileName::Fanuc, false).pass_end, PassEnd::Parallel);
+}
+
+/// R-END `travel-i` (the reading before issue 34): X travels exactly i =
+/// 2·(-1) → +2 on the diameter from Bn to Z-15: 28.8 + 2 = 30.8, 30.302,
+/// 30.0, 30.0.
+#[test]
+fn pass_end_travel_i() {
+    let got = run(END_TAPER, &machine(ProfileName::Gsk980, &["R-END=travel-i"])).unwrap();
+    let want = end_taper_passes([(30_800, -15_000), (30_302, -15_000), (30_000, -15_000), (30_000, -15_000)]);
+    assert_eq!(ends(&got), want);
+}
+
+/// R-END `translated`: Bn + C→D, X travel i (+2), Z travel W (-20):
+/// (30.8, 4.654 - 20 = -15.346), (30.302, -15.490), (30.0, -15.577) twice:
+/// each pass ends its shift beyond D.
+#[test]
+fn pass_end_translated() {
+    let got = run(END_TAPER, &machine(ProfileName::Gsk980, &["R-END=translated"])).unwrap();
+    let want = end_taper_passes([(30_800, -15_346), (30_302, -15_490), (30_000, -15_577), (30_000, -15_577)]);
+    assert_eq!(ends(&got), want);
+    // On a straight thread (R0) too: the first pass, Bn (X30.8, Z4.654),
+    // ends at Z4.654 - 20 = Z-15.346 on X30.8; `parallel` ends at Z-15.
+    let straight = END_TAPER.replace("R-1 ", "");
+    let got = run(&straight, &machine(ProfileName::Gsk980, &["R-END=translated"])).unwrap();
+    assert_eq!(got[1].to, Point::new(30_800, -15_346));
+    let got = run(&straight, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(got[1].to, Point::new(30_800, -15_000));
+}
+
+/// R-END `parallel` with a run-out, Z long: [`END_TAPER`] with J0.5 K1
+/// (980TDi block 1). Pass 1: the cut stops K = 1 before Z-15, at Z-14, on
+/// the exact parallel line: X = 28.8 + 2·(-14 - 4.654)/(-20) = 28.8 +
+/// 1.8654 = 30.6654 → 30.665 (not on the line from Bn to the rounded end);
+/// the run-out J = 0.5, 1.0 on the diameter, from the pass's end X30.765:
+/// X31.765 at Z-15.
+#[test]
+fn pass_end_parallel_with_run_out() {
+    let src = END_TAPER.replace("R0\n", "R0 J0.5 K1.0\n");
+    let got = run(&src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        ends(&got[..5]),
+        [
+            (Role::Approach, Point::new(28_800, 4_654)),
+            (Role::Cut, Point::new(30_665, -14_000)),
+            (Role::RunOut, Point::new(31_765, -15_000)),
+            (Role::Retract, Point::new(40_000, -15_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    );
+}
+
+/// R-END `parallel` on a steep taper, X long: A = (X40, Z2), D = (X20,
+/// Z-2), i = -6: C = X20 - 12 = X8, external; |i| = 6 ≥ |W| = 4. k = Δd =
+/// 1, d = 0: one rough pass at depth 1 and one finishing pass, both at Bn
+/// = (X8 + 2·0, Z2 - 0.577) = (X8, Z1.423). The end on D–E: X20 + 2·(-6)·
+/// 0.577/4 = 20 - 1.731 = X18.269. K = 0.5 along X: the cut stops 1.0 (on
+/// the diameter) before it, at X17.269, on the parallel line (X +12, Z -4):
+/// Z = 1.423 - 4·(17.269 - 8)/12 = 1.423 - 3.08967 = -1.66667 → -1.667. J
+/// = 0.5 along Z towards A: from Z-2 to Z-1.5 at X18.269.
+const END_X_LONG: &str =
+    "M3 S300\nG00 X40 Z2\nG76 P010060 Q100 R0 J0.5 K0.5\nG76 X20 Z-2 R-6 P1000 Q1000 F2\nM30\n";
+
+#[test]
+fn pass_end_parallel_x_long() {
+    let got = run(END_X_LONG, &machine(ProfileName::Gsk980, &[])).unwrap();
+    let pass = [
+        (Role::Approach, Point::new(8_000, 1_423)),
+        (Role::Cut, Point::new(17_269, -1_667)),
+        (Role::RunOut, Point::new(18_269, -1_500)),
+        (Role::Retract, Point::new(40_000, -1_500)),
+        (Role::Return, Point::new(40_000, 2_000)),
+    ];
+    assert_eq!(ends(&got), [pass, pass].concat());
+    // The pass travels 6·(4 - 0.577)/4 = 5.1345 along X (radius): K5.134
+    // fits (the cut ends at X18.269 - 10.268 = X8.001), K5.135 is longer
+    // than the pass (note 7, R-SHORT), the length given floored.
+    let fits = END_X_LONG.replace("K0.5", "K5.134");
+    assert_eq!(run(&fits, &machine(ProfileName::Gsk980, &[])).unwrap()[1].to, Point::new(8_001, 1_423));
+    let long = END_X_LONG.replace("K0.5", "K5.135");
+    let e = run(&long, &machine(ProfileName::Gsk980, &[])).unwrap_err();
+    let ErrorKind::Cycle(CycleError::RunOutTooLong { run_out, length }) = e else { panic!("{e:?}") };
+    assert_eq!((run_out.increments, length.increments), (5_135, 5_134));
+    // travel-i: the pass travels |i| = 6, so K5.135 fits.
+    assert!(run(&long, &machine(ProfileName::Gsk980, &["R-END=travel-i"])).is_ok());
+}
+
+/// R-LONG988 `table` (default on gsk988): [`G92_X_LONG`] on the 988TA, Z
+/// long whatever the displacements ("P = 0（轴向螺纹）长轴：横轴"). K = 1
+/// along Z: the cut stops at Z-5 + 1 = Z-4 on the line B→C, X = 40 + (20 -
+/// 40)·(-4)/(-5) = 40 - 16 = X24; J = 2 along X, 4 on the diameter, away
+/// from the work from C's X20 (within the retract to X60): X24 at Z-5.
+/// Then X60 at Z-5 (③) and Z0 (④).
+#[test]
+fn long_axis_by_the_988ta_table() {
+    let got = run(G92_X_LONG, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(40_000, 0)),
+            (Role::Cut, Point::new(24_000, -4_000)),
+            (Role::RunOut, Point::new(24_000, -5_000)),
+            (Role::Retract, Point::new(60_000, -5_000)),
+            (Role::Return, Point::new(60_000, 0)),
+        ]
+    );
+    // `displacement`: X long, the run-out along Z into the work (R-XRUNOUT).
+    let e = run(G92_X_LONG, &machine(ProfileName::Gsk988, &["R-LONG988=displacement"])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::RunOutIntoWork { .. })), "{e:?}");
+    // Only the 988TA has the table: on the 980TDi `table` changes nothing.
+    let e = run(G92_X_LONG, &machine(ProfileName::Gsk980, &["R-LONG988=table"])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::RunOutIntoWork { .. })), "{e:?}");
+}
+
+/// R-LONG988 covers the 988TA's G78 and G92, not its G76 (seed 000 gives
+/// G76 the displacement rule): a steep taper (|i| = 6 ≥ |W| = 4) with a
+/// lead-in E is Z long for G78 under `table`, so E is accepted; as a G76,
+/// or as a G78 under `displacement`, it is X long and E is refused
+/// (`LeadInOnXLongAxis`).
+#[test]
+fn long_axis_table_applies_to_g78_not_g76() {
+    let g = |code: &str| {
+        format!("M3 S300\nG00 X40 Z2\n{code} P010260 Q0.1 R0 E0.5\n{code} X20 Z-2 R-6 P1 Q1 F2\nM30\n")
+    };
+    let steep =
+        |e: Result<Vec<Move>, ErrorKind>| matches!(e, Err(ErrorKind::Cycle(CycleError::LeadInOnXLongAxis)));
+    assert!(run(&g("G78"), &machine(ProfileName::Gsk988, &[])).is_ok());
+    assert!(steep(run(&g("G78"), &machine(ProfileName::Gsk988, &["R-LONG988=displacement"]))));
+    assert!(steep(run(&g("G76").replace("P010260", "P010060"), &machine(ProfileName::Gsk988, &[]))));
+}
+
+/// The defaults per profile, and `cycleref readings` marking them.
+#[test]
+fn end_and_long988_defaults_and_listing() {
+    let r = Readings::default();
+    assert!(r.for_cycle(ProfileName::Gsk988, true).long_axis_by_table);
+    assert!(!r.for_cycle(ProfileName::Gsk988, false).long_axis_by_table);
+    assert!(!r.for_cycle(ProfileName::Gsk980, true).long_axis_by_table);
+    assert_eq!(r.get_on("R-LONG988", ProfileName::Gsk988), Some("table"));
+    assert_eq!(r.get_on("R-LONG988", ProfileName::Fanuc), Some("displacement"));
+    assert_eq!(r.get_on("R-END", ProfileName::Fanuc), Some("parallel"));
+    // Choosing the default is not a difference to name; the other value is.
+    let mut m = machine(ProfileName::Gsk988, &["R-END=parallel", "R-LONG988=table"]);
+    assert!(m.readings.non_default(ProfileName::Gsk988).is_empty());
+    m.readings.apply_pair("R-END=travel-i").unwrap();
+    assert_eq!(m.readings.non_default(ProfileName::Gsk988), [("R-END", "travel-i")]);
+    let all = Listing { profile: None }.to_string();
+    assert!(all.contains("\nR-END\ttravel-i | parallel* | translated\t[fanuc,gsk980,gsk988]\t"), "{all}");
+    assert!(all.contains("\nR-LONG988\tdisplacement | table*\t[gsk988]\t"), "{all}");
+    let gsk980 = Listing { profile: Some(ProfileName::Gsk980) }.to_string();
+    assert!(gsk980.contains("R-END") && !gsk980.contains("R-LONG988"));
 }

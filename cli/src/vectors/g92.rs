@@ -294,7 +294,7 @@ fn high_speed(rng: &mut Rng) -> Draft {
     run_out_variants(rng, ctx, &l, k, false)
 }
 
-/// A steep taper: X the long axis.
+/// A steep taper on the 980TDi: X the long axis.
 pub(super) const X_LONG: Template = Template {
     id: "g92-x-long",
     outcome: Expected::Valid(&["g92:x-long", "g92:taper", "g92:external"]),
@@ -304,16 +304,35 @@ pub(super) const X_LONG: Template = Template {
     generate: x_long,
 };
 
+/// A steep taper on the 988TA: Z the long axis by its table (R-LONG988
+/// `table`), either slope.
+pub(super) const LONG_TABLE: Template = Template {
+    id: "g92-long-table",
+    outcome: Expected::Valid(&["g92:long-table", "g92:taper"]),
+    tags: &["template:g92-long-table", "rule:long-axis"],
+    description:
+        "GSK 988TA G92 steep taper, |R| >= |W|: Z the long axis by the 988TA's table (\"P = 0（轴向螺纹）\
+                  长轴：横轴\", R-LONG988), the run-out K along Z and J along X",
+    generate: long_table,
+};
+
+fn long_table(rng: &mut Rng) -> Draft {
+    let rising = rng.chance(50);
+    steep(rng, ProfileName::Gsk988, rising)
+}
+
 fn x_long(rng: &mut Rng) -> Draft {
-    steep(rng, false)
+    steep(rng, ProfileName::Gsk980, false)
 }
 
 /// A steep taper whose X travel (radius) exceeds its Z travel, with a run-out
 /// J K: its cut line falls away from A towards C (the radius grows towards
 /// C on an external thread), so the run-out along Z towards A ends in the
 /// air, or, `rising`, the other slope, which R-XRUNOUT refuses.
-fn steep(rng: &mut Rng, rising: bool) -> Draft {
-    let ctx = MachineStyle::new(gsk(rng), rng);
+/// On the 988TA its table makes Z the long axis whatever the slope
+/// (R-LONG988 `table`): the run-out is along X, out of the work.
+fn steep(rng: &mut Rng, profile: ProfileName, rising: bool) -> Draft {
+    let ctx = MachineStyle::new(profile, rng);
     let mut l = line32(rng, &ctx, false);
     l.len = ctx.mm(rng.range(2000, 5000));
     l.z1 = l.z0 + l.dir * l.len;
@@ -391,13 +410,13 @@ pub(super) const RUN_OUT_INTO_WORK: Template = Template {
     outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::RunOutIntoWork { .. }))),
     tags: &["refuse:run-out-into-work"],
     description:
-        "G92 steep taper (X the long axis) rising towards the start point, with a run-out J: along Z \
-                  towards A it would end in the work",
+        "G92 steep taper on the 980TDi (X the long axis) rising towards the start point, with a run-out \
+                  J: along Z towards A it would end in the work",
     generate: run_out_into_work,
 };
 
 fn run_out_into_work(rng: &mut Rng) -> Draft {
-    steep(rng, true)
+    steep(rng, ProfileName::Gsk980, true)
 }
 
 /// K along the long axis longer than the thread (988TA note 4, R-SHORT).

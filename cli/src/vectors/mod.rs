@@ -401,6 +401,7 @@ const TEMPLATES: &[&Template] = &[
     &g78::GSK988_D,
     &g78::FACE_THREAD,
     &g78::MISSING,
+    &g92::LONG_TABLE,
 ];
 
 /// The templates of one kind (refused or valid), in schedule order.

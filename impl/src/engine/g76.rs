@@ -98,6 +98,7 @@ use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use crate::lead::{Lead, Ratio};
 use crate::moves::{Flank, Move, Pass, PassKind};
+use crate::readings::PassEnd;
 use crate::tan::mul_tan_round;
 use crate::units::{Length, Units, MAX_LENGTH};
 
@@ -419,7 +420,10 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let direction = if w > 0 { 1 } else { -1 };
     let w_abs = w.abs();
     let taper_abs = c.taper.abs();
-    let long_axis = if w_abs > taper_abs { LongAxis::Z } else { LongAxis::X };
+    // Reading R-LONG, or R-LONG988 `table` (a 988TA G78: Z whatever the
+    // displacements).
+    let long_axis =
+        if w_abs > taper_abs || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     if long_axis == LongAxis::X && c.lead_in > 0 {
         return Err(CycleError::LeadInOnXLongAxis);
     }
@@ -436,21 +440,32 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     if max_shift >= w_abs {
         return Err(CycleError::ThreadTooShort { shift: len(max_shift), length: len(w_abs) });
     }
+    let pass_end = c.readings.pass_end;
     match long_axis {
         LongAxis::Z => {
             if let Some((_, kk)) = run_out {
-                if kk > w_abs - max_shift {
-                    return Err(CycleError::RunOutTooLong {
-                        run_out: len(kk),
-                        length: len(w_abs - max_shift),
-                    });
+                // The shortest pass along Z: |W| less the largest shift,
+                // or |W| when every pass is C→D translated (R-END).
+                let length = if pass_end == PassEnd::Translated { w_abs } else { w_abs - max_shift };
+                if kk > length {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(length) });
                 }
             }
         }
         LongAxis::X => {
             if let Some((_, kk)) = run_out {
-                if kk > taper_abs {
-                    return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(taper_abs) });
+                // The shortest pass along X (radius): |i|, or for a
+                // `parallel` pass |i| (|W| - largest shift) / |W|, floored
+                // (K, an integer, exceeds it exactly when it exceeds the
+                // floor). |i| < 2^31, |W| < 2^31.
+                let length = if pass_end == PassEnd::Parallel {
+                    let num = i128::from(taper_abs) * i128::from(w_abs - max_shift);
+                    saturate_i64(num / i128::from(w_abs))
+                } else {
+                    taper_abs
+                };
+                if kk > length {
+                    return Err(CycleError::RunOutTooLong { run_out: len(kk), length: len(length) });
                 }
                 // Reading R-XRUNOUT: along Z towards A is into the work
                 // when the cut line rises towards A (s·i > 0); `towards-start`
@@ -476,14 +491,25 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         let z = i128::from(a.z) + t * i128::from(p.min_shift) - t * i128::from(lz);
         check_coordinate(z, u)?;
     }
+    // Reading R-END `translated`: the passes end beyond D along Z, the
+    // furthest by the largest shift.
+    if pass_end == PassEnd::Translated {
+        check_coordinate(i128::from(d.z) + i128::from(direction) * i128::from(max_shift), u)?;
+    }
     // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
     // retract. Z long: furthest out at the end of the shallowest pass; X
-    // long: J along Z from D towards A. J ≤ 57 × MAX_LENGTH, in i128.
+    // long: J along Z from the end of the pass towards A (the end at the
+    // smallest shift when the passes are translated). J ≤ 57 × MAX_LENGTH,
+    // in i128.
     if let (Some((j, _)), Some(p), false) = (run_out, extremes, c.readings.clamp_run_out) {
         let (j, out) = (i128::from(j), i128::from(side * xf));
+        let t = i128::from(direction);
         let beyond = match long_axis {
             LongAxis::Z => i128::from(d.x) + out * i128::from(c.thread_height - p.shallowest) + out * j,
-            LongAxis::X => i128::from(d.z) - i128::from(direction) * j,
+            LongAxis::X if pass_end == PassEnd::Translated => {
+                i128::from(d.z) + t * i128::from(p.min_shift) - t * j
+            }
+            LongAxis::X => i128::from(d.z) - t * j,
         };
         check_coordinate(beyond, u)?;
     }
@@ -503,6 +529,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         long_axis,
         run_out,
         clamp_run_out: c.readings.clamp_run_out,
+        pass_end,
         lead_in,
         starts: c.starts,
         spacing: {

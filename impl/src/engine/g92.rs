@@ -28,6 +28,7 @@ use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g92::G92Cycle;
 use crate::moves::{Flank, Move, Pass, PassKind};
+use crate::readings::PassEnd;
 use crate::units::{Length, Point, MAX_LENGTH};
 
 /// The moves of a G92 block, in order: an [`Iterator`] of constant size
@@ -118,7 +119,10 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
     let taper_abs = c.taper.abs();
     // R-LONG for an axial thread; a face thread's long axis is X (988TA:
     // "P = 1（端面螺纹）长轴 纵轴").
-    let long_axis = if c.face || w_abs > taper_abs { LongAxis::Z } else { LongAxis::X };
+    // Reading R-LONG988 `table` (988TA "P = 0（轴向螺纹）长轴：横轴"): Z
+    // whatever the displacements.
+    let long_axis =
+        if c.face || w_abs > taper_abs || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     // K in the long axis's coordinate increments (X words on a face thread).
     let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, lf.saturating_mul(k)));
     if let Some((_, kk)) = run_out {
@@ -170,6 +174,8 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         long_axis,
         run_out,
         clamp_run_out: c.readings.clamp_run_out,
+        // One pass without shift: every R-END value gives this path.
+        pass_end: PassEnd::TravelI,
         lead_in: None,
         starts: c.starts,
         spacing: {

@@ -20,6 +20,7 @@ use crate::angle::{StartAngle, StartSpacing};
 use crate::engine::arith::{round_div, saturate_i64};
 use crate::lead::Lead;
 use crate::moves::{Motion, Move, Pass, Role};
+use crate::readings::PassEnd;
 use crate::units::Point;
 
 /// The long axis of the thread (reading R-LONG).
@@ -68,6 +69,9 @@ pub(crate) struct Frame {
     pub(crate) run_out: Option<(i64, i64)>,
     /// J clamped at the retract (reading R-RUNOUT, 988TA G92 note 5).
     pub(crate) clamp_run_out: bool,
+    /// Where each pass ends (reading R-END); G92 passes have no shift, so
+    /// every value gives the same path.
+    pub(crate) pass_end: PassEnd,
     /// `(E, lead-in length)`.
     pub(crate) lead_in: Option<(i64, i64)>,
     /// L.
@@ -92,6 +96,12 @@ pub(crate) struct PassPath {
 }
 
 impl Frame {
+    /// C→D, the direction of a `parallel` or `translated` pass (R-END).
+    #[inline(always)]
+    fn c_to_d(&self) -> (i128, i128) {
+        (i128::from(self.d.x) - i128::from(self.c_x), i128::from(self.d.z) - i128::from(self.a.z))
+    }
+
     /// The path of a pass at `depth` shifted `shift` along Z, as the
     /// reference's `pass_path` builds it.
     ///
@@ -106,7 +116,24 @@ impl Frame {
         // 0 ≤ k - depth < 2^30; X of C < 3·2^30, Z shifts < 2^32.
         let sink = s * xf * (self.k - depth);
         let bn = Point::new(self.c_x + sink, self.a.z + t * shift);
-        let end = Point::new(self.d.x + sink, self.d.z);
+        // Reading R-END. The cut line runs from Bn along `dir`: its own
+        // end for `travel-i`, C→D for the other two (exactly: the end of a
+        // `parallel` pass is rounded, the line is not).
+        let (end, dir) = match self.pass_end {
+            PassEnd::TravelI => {
+                let end = Point::new(self.d.x + sink, self.d.z);
+                (end, (i128::from(end.x) - i128::from(bn.x), i128::from(end.z) - i128::from(bn.z)))
+            }
+            PassEnd::Parallel => {
+                // X of the line at the Z of D: X(D) + sink + xf·i·shift/|W|,
+                // rounded as a whole (|W| ≥ 1; every term below 2^34).
+                let num = (i128::from(self.d.x) + i128::from(sink)) * i128::from(self.w_abs)
+                    + (i128::from(self.c_x) - i128::from(self.d.x)) * i128::from(shift);
+                let x = saturate_i64(round_div(num, i128::from(self.w_abs)));
+                (Point::new(x, self.d.z), self.c_to_d())
+            }
+            PassEnd::Translated => (Point::new(self.d.x + sink, self.d.z + t * shift), self.c_to_d()),
+        };
         let approach = match self.lead_in {
             // Only called for a planned pass, so the range check of
             // expand_g76 has bounded both coordinates of An (|lz| < 2^33).
@@ -119,18 +146,16 @@ impl Frame {
             Some((j, kk)) => match self.long_axis {
                 LongAxis::Z => {
                     // The run-out starts K before the end along Z, on the cut
-                    // line: xr = round(bn.x + (end.x - bn.x)(zr - bn.z) /
-                    // (end.z - bn.z)), the rounding on the whole sum. The
-                    // divisor is t(|W| - shift) ≠ 0 (ThreadTooShort).
+                    // line: xr = round(bn.x + dir.x (zr - bn.z) / dir.z), the
+                    // rounding on the whole sum. dir.z ≠ 0: t(|W| - shift)
+                    // (ThreadTooShort) or W.
                     let zr = end.z - t * kk;
-                    let xr = if end.x == bn.x {
+                    let xr = if dir.0 == 0 {
                         // A straight cut: no division (the common case).
                         bn.x
                     } else {
-                        let den = i128::from(end.z) - i128::from(bn.z);
-                        let num = i128::from(bn.x) * den
-                            + (i128::from(end.x) - i128::from(bn.x)) * (i128::from(zr) - i128::from(bn.z));
-                        saturate_i64(round_div(num, den))
+                        let num = i128::from(bn.x) * dir.1 + dir.0 * (i128::from(zr) - i128::from(bn.z));
+                        saturate_i64(round_div(num, dir.1))
                     };
                     // J away from the work, at most to E; J may be i64::MAX.
                     // Unclamped (R-RUNOUT `gsk988-only`): J as written,
@@ -141,14 +166,16 @@ impl Frame {
                     (Point::new(xr, zr), Some(last), last)
                 }
                 LongAxis::X => {
-                    // end.x - bn.x = -xf i ≠ 0 on an X long axis.
-                    let sigma = if end.x > bn.x { 1 } else { -1 };
+                    // dir.x = -xf i ≠ 0 (or the travel-i pass's, the same)
+                    // on an X long axis.
+                    let sigma = if dir.0 > 0 { 1 } else { -1 };
                     let xr = end.x - sigma * xf * kk;
-                    let den = i128::from(end.x) - i128::from(bn.x);
-                    let num = i128::from(bn.z) * den
-                        + (i128::from(end.z) - i128::from(bn.z)) * (i128::from(xr) - i128::from(bn.x));
-                    let zr = saturate_i64(round_div(num, den));
-                    let jz = if self.clamp_run_out { j.min(self.w_abs) } else { j };
+                    let num = i128::from(bn.z) * dir.0 + dir.1 * (i128::from(xr) - i128::from(bn.x));
+                    let zr = saturate_i64(round_div(num, dir.0));
+                    // At most the Z travel back to A (|W|, or |W| + shift
+                    // for a translated pass).
+                    let back = (end.z - self.a.z).abs();
+                    let jz = if self.clamp_run_out { j.min(back) } else { j };
                     let last = Point::new(end.x, end.z - t * jz);
                     (Point::new(xr, zr), Some(last), last)
                 }

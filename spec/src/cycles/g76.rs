@@ -166,6 +166,9 @@ impl<'a> CycleCall<'a> for G76Call<'a> {
             "taper:straight"
         } else if w > c.taper.abs() {
             "taper:z-long"
+        } else if c.readings.long_axis_by_table {
+            // Reading R-LONG988 `table` (a 988TA G78): Z long all the same.
+            "taper:long-table"
         } else {
             "taper:x-long"
         });

@@ -84,7 +84,8 @@ impl<'a> CycleCall<'a> for G92Call<'a> {
         // A face thread's long axis is X and its side is along Z.
         if !c.face {
             if (c.end.z - c.start.z).abs() <= c.taper.abs() {
-                tag("g92:x-long");
+                // Reading R-LONG988 `table`: Z long whatever the displacements.
+                tag(if c.readings.long_axis_by_table { "g92:long-table" } else { "g92:x-long" });
             }
             tag(if c.start.x > c.end.x { "g92:external" } else { "g92:internal" });
         }

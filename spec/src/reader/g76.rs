@@ -369,7 +369,7 @@ impl State<'_> {
             lead,
             run_out,
             pass_limit: self.machine.pass_limit,
-            readings: self.machine.readings.for_cycle(self.machine.profile.name),
+            readings: self.machine.readings.for_cycle(self.machine.profile.name, code == Multipass::G78),
         };
         cycle.validate().map_err(|e| cycle_err(&block, one.line, e))?;
         self.moved = true;

@@ -181,7 +181,7 @@ impl State<'_> {
             starts: self.g92.starts.unwrap_or(1),
             start_angle,
             face: self.g92.face.unwrap_or(false),
-            readings: self.machine.readings.for_cycle(profile.name),
+            readings: self.machine.readings.for_cycle(profile.name, true),
         };
         cycle.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.g92.end_x = Some(end.x);
