@@ -323,11 +323,55 @@ proptest! {
     }
 
     /// The engine equals the reference under every value of the readings
-    /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT).
+    /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-G78LEFT,
+    /// R-G78CENTRE, R-LEADIN).
     #[test]
-    fn engine_equals_spec_under_every_reading(c in cycle(), clamp in any::<bool>(), towards in any::<bool>()) {
+    fn engine_equals_spec_under_every_reading(
+        c in cycle(), clamp in any::<bool>(), towards in any::<bool>(),
+        left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
+    ) {
         let c = G76Cycle {
-            readings: cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards },
+            readings: cycleref::CycleReadings {
+                clamp_run_out: clamp,
+                x_run_out_towards_start: towards,
+                left_mirror_b: left_b,
+                centre_under_b: centre_b,
+                lead_in_same_z: same_z,
+            },
+            ..c
+        };
+        let _ = same(&c);
+    }
+
+    /// R-G78LEFT `mirror-b` and R-G78CENTRE `under-b` on the modes with
+    /// left and centre passes, with a lead-in under either R-LEADIN value,
+    /// A near the end of the Z range so that a left pass's start (beyond
+    /// the Z of A) or its lead-in start may leave it: both engines refuse
+    /// the same coordinate, or make the same moves.
+    #[test]
+    fn engine_equals_spec_left_and_centre_near_the_range(
+        c in cycle(), mode in 0_u8..4, same_z in any::<bool>(), margin in 0_i64..2000,
+    ) {
+        let infeed = match mode {
+            0 => Infeed::LeftFlank,
+            1 => Infeed::LeftRight,
+            2 => Infeed::Alternating,
+            _ => Infeed::Centre,
+        };
+        let t = if c.end.z > c.start.z { 1 } else { -1 };
+        let w = c.end.z - c.start.z;
+        // Z of A `margin` inside the range on the side away from D.
+        let a_z = -t * (MAX_LENGTH - margin);
+        let c = G76Cycle {
+            infeed,
+            start: Point::new(c.start.x, a_z),
+            end: Point::new(c.end.x, a_z + w),
+            readings: cycleref::CycleReadings {
+                left_mirror_b: true,
+                centre_under_b: true,
+                lead_in_same_z: same_z,
+                ..cycleref::CycleReadings::DEFAULT
+            },
             ..c
         };
         let _ = same(&c);
@@ -787,7 +831,7 @@ fn huge_lead_is_refused_by_both() {
 fn constant_size_and_fused() {
     let size = std::mem::size_of::<G76Moves>();
     eprintln!("size_of::<G76Moves>() = {size}");
-    assert_eq!(size, 432, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
+    assert_eq!(size, 448, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
     let mut it = expand_g76(&m68x6()).unwrap();
     assert_eq!(it.by_ref().count(), 30);
     assert_eq!(it.next(), None);

@@ -86,7 +86,8 @@ proptest! {
         x0 in -6_i64..=6, z0 in -6_i64..=6, x1 in -6_i64..=6, z1 in -6_i64..=6, r in -6_i64..=6,
         j in 0_i64..=6, k in 0_i64..=6, small in any::<bool>(),
     ) {
-        let readings = cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards };
+        let readings =
+            cycleref::CycleReadings { clamp_run_out: clamp, x_run_out_towards_start: towards, ..cycleref::CycleReadings::DEFAULT };
         let c = if small {
             G92Cycle {
                 start: Point::new(x0, z0),
