@@ -24,7 +24,7 @@ use cycleref_spec::reader::G75Call;
 use svg::node::element::{Group, Path, Rectangle, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
+    draw_axes, draw_marks, heading, legend, num, readings_entry, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
     FINISH, RAPID, RAPID_DASH,
 };
 use crate::format::fixed;
@@ -108,6 +108,7 @@ impl<'a> Groove<'a> {
         marks: &[&crate::check::Mark],
         first: bool,
         trace: &[Point],
+        readings: &[(&str, &str)],
     ) -> Group {
         let c = &self.call.cycle;
         let u = c.units;
@@ -157,6 +158,7 @@ impl<'a> Groove<'a> {
                 Some("far-side moves run I inside the profile".to_string()),
             ));
         }
+        entries.extend(readings_entry(readings));
         g = legend(g, &entries);
         g = draw_axes(g, &map, unit_name(u.unit), x_kind(c.x_mode));
         let x_factor = c.x_mode.factor();

@@ -22,7 +22,10 @@
 //! * the points A (start), B (depth reference), C (thread start) and D
 //!   (thread end) of the manual, with their coordinates in the legend;
 //! * for G75.1, the groove's profile and roughing region under the pecks
-//!   and contours.
+//!   and contours;
+//! * in every panel's legend, the readings in force that differ from the
+//!   defaults (issue 34), from the source the nc output's `(readings: …)`
+//!   comment names them from (`crate::job::readings_in_force`).
 //!
 //! The modules: `canvas` holds what every panel shares (the plot
 //! area, the palette, the mapping from increments to pixels, the axes, the
@@ -66,6 +69,7 @@ fn svg(
     lcncs: &[(LinuxCncCall<'_>, Vec<Move>)],
     grooves: &[g75::Groove<'_>],
     overlay: Option<&Overlay>,
+    readings: &[(&str, &str)],
 ) -> Result<String, crate::Failure> {
     if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && lcncs.is_empty() && grooves.is_empty() {
         return Err(crate::Failure::usage(format!(
@@ -135,7 +139,7 @@ fn svg(
         .add(Rectangle::new().set("width", "100%").set("height", "100%").set("fill", "#ffffff"));
     for (index, (call, moves)) in cycles.iter().enumerate() {
         let trace = overlay.map_or(&[][..], |o| o.points_for(call.block.line));
-        let panel = g76::Panel::new(name, call, moves, trace)?;
+        let panel = g76::Panel::new(name, call, moves, trace)?.with_readings(readings);
         let mut group = panel.draw();
         if let Some(o) = overlay {
             group = panel.draw_overlay(group, o.short_name(), o.points_for(call.block.line), index);
@@ -158,7 +162,7 @@ fn svg(
             .take(MAX_MARKS)
             .collect();
         let first = blocks.iter().any(|b| first_line == Some(b.line));
-        doc = place(doc, threads::panel(name, code, blocks, &here, first), before, true);
+        doc = place(doc, threads::panel(name, code, blocks, &here, first, readings), before, true);
         before += 1;
     }
     for (i, groove) in grooves.iter().enumerate() {
@@ -166,7 +170,7 @@ fn svg(
         let here: Vec<&crate::check::Mark> =
             marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
         let trace = overlay.map_or(&[][..], |o| o.points_for(groove.line()));
-        let mut group = groove.draw(name, &here, first_line == line, trace);
+        let mut group = groove.draw(name, &here, first_line == line, trace, readings);
         if let Some(o) = overlay {
             let clip = format!("groove-area-{i}");
             group = canvas::draw_trace(group, &groove.map(trace), o.short_name(), trace, &clip);
@@ -344,7 +348,9 @@ pub fn run(
         Some(t) => Some(overlay::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())?;
+    // The readings the legends name: those the nc output's headings name.
+    let readings = crate::job::readings_in_force(&job.machine);
+    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref(), &readings)?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {
