@@ -481,3 +481,53 @@ fn the_frame_grows_to_hold_a_trace_that_strays_not_one_that_runs_away() {
         "the run-away point lies beyond the frame, clipped"
     );
 }
+
+/// The legend names the readings in force that differ from the defaults
+/// (issue 34), as the nc output's `(readings: …)` comment does, on every
+/// kind of panel, inside the picture even with every reading changed; under
+/// the defaults it names none.
+#[test]
+fn the_legend_names_the_readings_not_the_defaults() {
+    let ex = |f: &str| format!("{}/../examples/{f}", env!("CARGO_MANIFEST_DIR"));
+    let every: Vec<String> = ["R-RUNOUT=gsk988-only", "R-XRUNOUT=towards-start", "R-E980=signed"]
+        .into_iter()
+        .chain(["R-G78LEFT=mirror-b", "R-G78CENTRE=under-b", "R-LEADIN=same-z"])
+        .map(String::from)
+        .collect();
+    for (profile, file) in [
+        ("gsk988", "gsk988-m68x6.nc"),
+        ("gsk988", "gsk988-g78.nc"),
+        ("gsk980", "gsk980-g78.nc"),
+        ("gsk980", "gsk980-g92-o0012.nc"),
+        ("gsk980", "gsk980-g75-square.nc"),
+    ] {
+        let out = scratch(&format!("readings-{file}.svg"));
+        let mut cmd = Command::new(BIN);
+        cmd.args(["plot", "--profile", profile, &ex(file), "-o"]).arg(&out);
+        for r in &every {
+            cmd.args(["--reading", r]);
+        }
+        let run = cmd.output().expect("runs");
+        assert!(run.status.success(), "{file}: {}", String::from_utf8_lossy(&run.stderr));
+        let doc = std::fs::read_to_string(&out).expect("svg");
+        let (boxes, width, height) = text_boxes(&doc);
+        assert!(
+            boxes.iter().any(|b| b.text == "readings (not the defaults):"),
+            "{file}: {:?}",
+            boxes.iter().map(|b| &b.text).collect::<Vec<_>>()
+        );
+        let named: String = boxes.iter().map(|b| b.text.as_str()).collect::<Vec<_>>().join(" ");
+        for r in &every {
+            assert!(named.contains(r.as_str()), "{file}: {r} not named: {named}");
+        }
+        for b in boxes {
+            assert!(
+                b.left >= 0.0 && b.top >= 0.0 && b.right <= width && b.bottom <= height,
+                "{file}: `{}` outside the picture",
+                b.text
+            );
+        }
+        let default = plot_ok(profile, &ex(file), &format!("d-{file}.svg"));
+        assert!(!default.contains("readings (not the defaults)"), "{file}");
+    }
+}

@@ -422,6 +422,10 @@ fn toml_from_json(profile: &str, m: &Value) -> String {
     for (k, v) in m["parameters"].as_object().expect("parameters") {
         t.push_str(&format!("\"{k}\" = {v}\n"));
     }
+    t.push_str("[readings]\n");
+    for (k, v) in m["readings"].as_object().expect("readings") {
+        t.push_str(&format!("\"{k}\" = {v}\n"));
+    }
     t
 }
 

@@ -60,17 +60,41 @@ pub struct CycleReadings {
     /// 判断": "P = 0（轴向螺纹）长轴：横轴"). `false`: the long axis by the
     /// displacements, |W| > |i| for Z (R-LONG).
     pub long_axis_by_table: bool,
+    /// Reading R-G78LEFT: a left-flank pass (G78 r = 1, the left passes of
+    /// G78 r = 4 and G76 D2 左右等量轮流, and of the 980TDi's G78 r = 3
+    /// 交错) is the right flank mirrored about the centre line of the final
+    /// form, `2 zc - round(Dn tan(a/2))`, when `false`
+    /// (`mirror-form-centre`); mirrored about B, `-round(Dn tan(a/2))`,
+    /// when `true` (`mirror-b`: "Bn 点相对于 B 点 X 轴和 Z 轴的位移符合公式
+    /// tg(a/2)=│Z 轴位移│/│X 轴位移│" on every left pass).
+    pub left_mirror_b: bool,
+    /// Reading R-G78CENTRE: the passes of G78 r = 0 ("刀刃沿螺纹牙型中线切入")
+    /// are at the Z of A shifted `zc = round((k - d) tan(a/2))` when `false`
+    /// (`form-centre`), under B (shift 0, radial infeed) when `true`
+    /// (`under-b`).
+    pub centre_under_b: bool,
+    /// Reading R-LEADIN: the lead-in start An of a pass (E, "X 向旋进距离值")
+    /// is E out along X from Bn and whole leads back along Z when `false`
+    /// (`whole-leads`); E out along X at the Z of Bn when `true` (`same-z`:
+    /// "快速移动到与切削起点 Bn 距离为 E 的位置"), the screw-in then a thread
+    /// move along X only.
+    pub lead_in_same_z: bool,
 }
 
 impl CycleReadings {
     /// The readings of the cycles before issue 34: J clamped on every
     /// profile, X-long run-outs into the work refused, X travelling i on
-    /// every pass (R-END `travel-i`), the long axis by the displacements.
+    /// every pass (R-END `travel-i`), the long axis by the displacements,
+    /// left flanks mirrored about the form's centre line, G78's centre line
+    /// at `zc`, the lead-in whole leads back.
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
         pass_end: PassEnd::TravelI,
         long_axis_by_table: false,
+        left_mirror_b: false,
+        centre_under_b: false,
+        lead_in_same_z: false,
     };
 }
 

@@ -325,10 +325,12 @@ proptest! {
 
     /// The engine equals the reference under every value of the readings
     /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
-    /// three pass ends, R-LONG988's table).
+    /// three pass ends, R-LONG988's table, R-G78LEFT, R-G78CENTRE,
+    /// R-LEADIN), in every combination.
     #[test]
     fn engine_equals_spec_under_every_reading(
         c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
+        left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -337,6 +339,43 @@ proptest! {
                 x_run_out_towards_start: towards,
                 pass_end,
                 long_axis_by_table: table,
+                left_mirror_b: left_b,
+                centre_under_b: centre_b,
+                lead_in_same_z: same_z,
+            },
+            ..c
+        };
+        let _ = same(&c);
+    }
+
+    /// R-G78LEFT `mirror-b` and R-G78CENTRE `under-b` on the modes with
+    /// left and centre passes, with a lead-in under either R-LEADIN value,
+    /// A near the end of the Z range so that a left pass's start (beyond
+    /// the Z of A) or its lead-in start may leave it: both engines refuse
+    /// the same coordinate, or make the same moves.
+    #[test]
+    fn engine_equals_spec_left_and_centre_near_the_range(
+        c in cycle(), mode in 0_u8..4, same_z in any::<bool>(), margin in 0_i64..2000,
+    ) {
+        let infeed = match mode {
+            0 => Infeed::LeftFlank,
+            1 => Infeed::LeftRight,
+            2 => Infeed::Alternating,
+            _ => Infeed::Centre,
+        };
+        let t = if c.end.z > c.start.z { 1 } else { -1 };
+        let w = c.end.z - c.start.z;
+        // Z of A `margin` inside the range on the side away from D.
+        let a_z = -t * (MAX_LENGTH - margin);
+        let c = G76Cycle {
+            infeed,
+            start: Point::new(c.start.x, a_z),
+            end: Point::new(c.end.x, a_z + w),
+            readings: cycleref::CycleReadings {
+                left_mirror_b: true,
+                centre_under_b: true,
+                lead_in_same_z: same_z,
+                ..cycleref::CycleReadings::DEFAULT
             },
             ..c
         };
@@ -684,7 +723,11 @@ fn x_long_axis_with_run_out() {
         (-20_000, RunOut::Amounts { short: 1000, long: 2000 }),
         (-20_000, RunOut::Amounts { short: 50_000, long: 0 }),
         (-20_000, RunOut::Chamfer { tenths_of_lead: 10, angle_degrees: 30, long: None }),
-        (-10_000, RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(10_000) }),
+        // K along X within the shortest pass: under R-END `parallel` (the
+        // example's), |i| (|W| - largest shift) / |W| = 10 × (10 - 2.067) /
+        // 10 = 7.933 mm, the largest shift round(3.58 tan 30°) = 2.067 at
+        // the last rough depth k - d = 3.58.
+        (-10_000, RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(7_933) }),
     ] {
         let c = G76Cycle {
             start: Point::new(150_000, 10_000),
@@ -712,19 +755,22 @@ fn x_long_axis_with_run_out() {
     let pull_out = G76Cycle { run_out: RunOut::Amounts { short: 1000, long: 0 }, ..up };
     assert_eq!(same(&pull_out), Err(CycleError::RunOutIntoWork { taper: Length::new(20_000, up.units) }));
     assert!(same(&G76Cycle { run_out: RunOut::None, ..up }).is_ok());
-    // K longer than |i|: refused.
+    // K longer than the shortest pass along X: refused. Under R-END
+    // `parallel` (the example's) that pass is |i| (|W| - largest shift) /
+    // |W| = 20 × (10 - 2.067) / 10 = 15.866 mm; K = 15.866 is made.
     let c = G76Cycle {
         start: Point::new(150_000, 10_000),
         end: Point::new(60_000, 0),
         taper: -20_000,
-        run_out: RunOut::Amounts { short: 1, long: 20_001 },
+        run_out: RunOut::Amounts { short: 1, long: 15_867 },
         ..m68x6()
     };
     let err = CycleError::RunOutTooLong {
-        run_out: Length::new(20_001, c.units),
-        length: Length::new(20_000, c.units),
+        run_out: Length::new(15_867, c.units),
+        length: Length::new(15_866, c.units),
     };
     assert_eq!(same(&c), Err(err));
+    assert!(same(&G76Cycle { run_out: RunOut::Amounts { short: 1, long: 15_866 }, ..c }).is_ok());
     // A lead-in is refused on an X long axis.
     let c = G76Cycle { lead_in: 100, ..c };
     assert_eq!(same(&c), Err(CycleError::LeadInOnXLongAxis));
@@ -797,7 +843,7 @@ fn huge_lead_is_refused_by_both() {
 fn constant_size_and_fused() {
     let size = std::mem::size_of::<G76Moves>();
     eprintln!("size_of::<G76Moves>() = {size}");
-    assert_eq!(size, 432, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
+    assert_eq!(size, 448, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
     let mut it = expand_g76(&m68x6()).unwrap();
     assert_eq!(it.by_ref().count(), 30);
     assert_eq!(it.next(), None);

@@ -99,6 +99,7 @@ proptest! {
             x_run_out_towards_start: towards,
             pass_end,
             long_axis_by_table: table,
+            ..cycleref::CycleReadings::DEFAULT
         };
         let c = if small {
             G92Cycle {

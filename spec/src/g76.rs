@@ -299,13 +299,18 @@ pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
 ///   flank, then on the left flank mirrored about the centre line
 ///   (`2 zc - round(Dn tan(a/2))`); the last level once (the two flanks meet
 ///   at `zc`), as the 988TA figure draws Bn1, Bn2 … and a single Bf.
-/// * G78 r = 0 (中线切入): every rough pass on the centre line, `zc`.
+/// * G78 r = 0 (中线切入): every rough pass on the centre line, `zc`
+///   (reading R-G78CENTRE `form-centre`), or under B, 0 (`under-b`).
 /// * G78 r = 1 (左边切入): every rough pass on the left flank, `2 zc -
 ///   round(Dn tan(a/2))`.
 /// * G78 r = 3 on the 980TDi (交错切入, reading R-G78ALT): one pass a level,
 ///   odd levels on the right flank, even levels on the left.
-/// * Finishing: m passes at depth k from the Z of the last rough pass, `zc`
-///   (seed 000 注意 2: "精车 Z 轴起切点与最后一刀粗车一致"); the first removes
+/// * Every left flank (r = 1, D2, 交错) is the right flank mirrored about
+///   the line `mirror`: `2 mirror - round(Dn tan(a/2))`, `mirror` = zc
+///   (reading R-G78LEFT `mirror-form-centre`) or 0, B (`mirror-b`).
+/// * Finishing: m passes at depth k from the Z of the last rough pass
+///   (seed 000 注意 2: "精车 Z 轴起切点与最后一刀粗车一致"), `zc` under the
+///   default readings, 0 when there is no rough pass; the first removes
 ///   d, the others 0 (seed 000: "第一次精车切削量为 d，其后的精车切削量为 0").
 ///
 /// # Errors
@@ -319,7 +324,12 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
     let u = c.units;
     let levels = rough_levels(c)?;
     let last = from_increments(c.thread_height - c.finishing_allowance, u);
-    let centre = flank_shift(last, c.tool_angle, u);
+    let zc = flank_shift(last, c.tool_angle, u);
+    // Reading R-G78CENTRE: the shift of G78 r = 0's passes.
+    let centre_line = if c.readings.centre_under_b { Decimal::ZERO } else { zc };
+    // Reading R-G78LEFT: the line the right flank is mirrored about.
+    let mirror = if c.readings.left_mirror_b { Decimal::ZERO } else { zc };
+    let left = |right: Decimal| mirror + mirror - right;
     let mut out = Vec::new();
     let mut number = 0_u32;
     let mut previous = Decimal::ZERO;
@@ -351,7 +361,7 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
                 if level % 2 == 1 {
                     push(PassKind::Rough, depth, cut, Flank::Right, right, number);
                 } else {
-                    push(PassKind::Rough, depth, cut, Flank::Centre, centre, number);
+                    push(PassKind::Rough, depth, cut, Flank::Centre, zc, number);
                 }
             }
             Infeed::LeftRight => {
@@ -359,23 +369,23 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
                 push(PassKind::Rough, depth, cut, Flank::Right, right, number);
                 if level < f {
                     number += 1;
-                    push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+                    push(PassKind::Rough, depth, cut, Flank::Left, left(right), number);
                 }
             }
             Infeed::Centre => {
                 number += 1;
-                push(PassKind::Rough, depth, cut, Flank::Centre, centre, number);
+                push(PassKind::Rough, depth, cut, Flank::Centre, centre_line, number);
             }
             Infeed::LeftFlank => {
                 number += 1;
-                push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+                push(PassKind::Rough, depth, cut, Flank::Left, left(right), number);
             }
             Infeed::Alternating => {
                 number += 1;
                 if level % 2 == 1 {
                     push(PassKind::Rough, depth, cut, Flank::Right, right, number);
                 } else {
-                    push(PassKind::Rough, depth, cut, Flank::Left, centre + centre - right, number);
+                    push(PassKind::Rough, depth, cut, Flank::Left, left(right), number);
                 }
             }
         }
@@ -383,9 +393,22 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
     }
     let k = from_increments(c.thread_height, u);
     let d = from_increments(c.finishing_allowance, u);
+    // "精车 Z 轴起切点与最后一刀粗车一致": zc under the default readings (every
+    // mode's last rough pass is at zc), 0 without a rough pass (zc = 0).
+    let finish = out.last().map_or(Decimal::ZERO, |p| p.z_shift);
     for m in 1..=c.finishing_passes {
         let cut = if m == 1 { d } else { Decimal::ZERO };
-        push(PassKind::Finish, k, cut, Flank::Centre, centre, m);
+        out.push(PlannedPass {
+            pass: Pass {
+                kind: PassKind::Finish,
+                number: m,
+                start: 1,
+                depth: to_increments(k, u),
+                cut: to_increments(cut, u),
+                flank: Flank::Centre,
+            },
+            z_shift: finish,
+        });
     }
     Ok(out)
 }
@@ -436,7 +459,8 @@ pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal
 /// The long-axis length of the lead-in (reading R-LEADIN): the smallest whole
 /// number of leads not shorter than E, rounded to the increment, so that the
 /// screw-in lands on the same helix as a pass without lead-in and Z stays the
-/// long axis of the screw-in move.
+/// long axis of the screw-in move (`whole-leads`); 0 under `same-z`, the
+/// lead-in start then E out along X at the Z of Bn.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `lead_in_length`.
 ///
@@ -444,6 +468,10 @@ pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal
 #[must_use]
 pub fn lead_in_length(c: &G76Cycle) -> Decimal {
     let u = c.units;
+    // Reading R-LEADIN `same-z`: An at the Z of Bn.
+    if c.readings.lead_in_same_z {
+        return Decimal::ZERO;
+    }
     let lead = c.lead.increments_per_rev(u);
     let e = i128::from(c.lead_in);
     let n = i128::try_from(lead.num).unwrap_or(i128::MAX);
@@ -617,6 +645,12 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     // Z, the furthest by the largest shift.
     if pass_end == PassEnd::Translated {
         check_coordinate(g.d.1 + t * max_shift, u)?;
+    }
+    // Reading R-G78LEFT `mirror-b`: a left pass starts beyond the Z of A,
+    // furthest at the deepest left pass (within the lead-in's start, above).
+    let min_shift = plan.iter().map(|p| p.z_shift).min().unwrap_or(Decimal::ZERO);
+    if min_shift < Decimal::ZERO {
+        check_coordinate(g.a.1 + t * min_shift, u)?;
     }
     // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
     // retract: Z long, furthest out at the end of the shallowest pass; X

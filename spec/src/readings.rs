@@ -79,6 +79,45 @@ pub enum Long988 {
     Table,
 }
 
+/// Reading R-G78LEFT: where a left-flank pass lies (G78 r = 1, the left
+/// passes of G78 r = 4 and G76 D2 左右等量轮流, the 980TDi's G78 r = 3 交错).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G78Left {
+    /// `mirror-form-centre` (default): the right flank mirrored about the
+    /// centre line of the final form, `2 zc - round(Dn tan(a/2))`: every
+    /// pass stays inside the form the finishing passes cut.
+    #[default]
+    MirrorFormCentre,
+    /// `mirror-b`: the right flank mirrored about B, `-round(Dn tan(a/2))`
+    /// from the Z of A, so that "Bn 点相对于 B 点 X 轴和 Z 轴的位移符合公式
+    /// tg(a/2)=│Z 轴位移│/│X 轴位移│" holds on every left pass.
+    MirrorB,
+}
+
+/// Reading R-G78CENTRE: where G78 r = 0's passes lie ("刀刃沿螺纹牙型中线切入").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G78Centre {
+    /// `form-centre` (default): on the centre line of the final form of
+    /// the other modes, `zc = round((k - d) tan(a/2))` from the Z of A.
+    #[default]
+    FormCentre,
+    /// `under-b`: radial infeed under B, at the Z of A.
+    UnderB,
+}
+
+/// Reading R-LEADIN: where the lead-in (旋进, E) starts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LeadIn {
+    /// `whole-leads` (default): E out along X from Bn and the smallest
+    /// whole number of leads not shorter than E back along Z; the screw-in
+    /// runs along Z, the long axis, in phase with a pass without lead-in.
+    #[default]
+    WholeLeads,
+    /// `same-z`: E out along X at the Z of Bn ("与切削起点 Bn 距离为 E 的位置",
+    /// E "X 向旋进距离值"); the screw-in is a thread move along X only.
+    SameZ,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -96,6 +135,12 @@ pub struct Readings {
     pub pass_end: Option<PassEnd>,
     /// R-LONG988; `None`: the profile's default.
     pub long988: Option<Long988>,
+    /// R-G78LEFT.
+    pub g78_left: G78Left,
+    /// R-G78CENTRE.
+    pub g78_centre: G78Centre,
+    /// R-LEADIN.
+    pub lead_in: LeadIn,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -178,6 +223,9 @@ fn long988_name(v: Long988) -> &'static str {
 
 const GSK: &[ProfileName] = &[ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988];
 
+/// The profiles with G78 (and the 988TA's G76 D modes and E).
+const GSK_G78: &[ProfileName] = &[ProfileName::Gsk980, ProfileName::Gsk988];
+
 /// Every selectable reading, in the order `cycleref readings` lists them.
 pub const TABLE: &[ReadingEntry] = &[
     ReadingEntry {
@@ -232,11 +280,11 @@ pub const TABLE: &[ReadingEntry] = &[
             },
             ReadingValue {
                 name: "parallel",
-                source: "980TDi and 988TA G76 step 2: \"沿平行于 C→D 的方向螺纹切削到与 D→E 相交处\";                          the end's X rounded (default on fanuc, gsk980)",
+                source: "980TDi and 988TA G76 step 2: \"沿平行于 C→D 的方向螺纹切削到与 D→E 相交处\"; the end's X rounded (default)",
             },
             ReadingValue {
                 name: "translated",
-                source: "seed 000 and 988TA G78 step (4): \"Z 轴方向的移动量为 W，X 轴方向的移动量为 i\":                          C->D moved to Bn, ending shift beyond D (default on gsk988)",
+                source: "seed 000 and 988TA G78 step (4): \"Z 轴方向的移动量为 W，X 轴方向的移动量为 i\": C->D moved to Bn, ending shift beyond D",
             },
         ],
         profiles: GSK,
@@ -251,10 +299,49 @@ pub const TABLE: &[ReadingEntry] = &[
             },
             ReadingValue {
                 name: "table",
-                source: "988TA G92 \"P = 0（轴向螺纹）长轴：横轴\": Z whatever the displacements (default);                          such a cycle cannot be written as G32 blocks (expand refuses it)",
+                source: "988TA G92 \"P = 0（轴向螺纹）长轴：横轴\": Z whatever the displacements (default); such a cycle cannot be written as G32 blocks (expand refuses it)",
             },
         ],
         profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-G78LEFT",
+        point: "where a left-flank pass lies (G78 r=1, the left passes of G78 r=3/r=4 and G76 D2)",
+        values: &[
+            ReadingValue {
+                name: "mirror-form-centre",
+                source: "the right flank mirrored about the form's centre line zc: every pass inside the final form",
+            },
+            ReadingValue {
+                name: "mirror-b",
+                source: "mirrored about B: \"Bn 点相对于 B 点 … tg(a/2)=│Z 轴位移│/│X 轴位移│\" on every left pass",
+            },
+        ],
+        profiles: GSK_G78,
+    },
+    ReadingEntry {
+        id: "R-G78CENTRE",
+        point: "where G78 r=0's passes lie (\"刀刃沿螺纹牙型中线切入\")",
+        values: &[
+            ReadingValue { name: "form-centre", source: "the centre line of the other modes' final form, zc from A" },
+            ReadingValue { name: "under-b", source: "radial infeed under B, at the Z of A" },
+        ],
+        profiles: GSK_G78,
+    },
+    ReadingEntry {
+        id: "R-LEADIN",
+        point: "where the lead-in E starts (旋进)",
+        values: &[
+            ReadingValue {
+                name: "whole-leads",
+                source: "E out along X, whole leads back along Z: the screw-in along the long axis, in phase",
+            },
+            ReadingValue {
+                name: "same-z",
+                source: "\"与切削起点 Bn 距离为 E 的位置\", E \"X 向旋进距离值\": E out along X at Bn's Z",
+            },
+        ],
+        profiles: GSK_G78,
     },
 ];
 
@@ -279,6 +366,18 @@ impl Readings {
             },
             "R-END" => pass_end_name(self.pass_end?),
             "R-LONG988" => long988_name(self.long988?),
+            "R-G78LEFT" => match self.g78_left {
+                G78Left::MirrorFormCentre => "mirror-form-centre",
+                G78Left::MirrorB => "mirror-b",
+            },
+            "R-G78CENTRE" => match self.g78_centre {
+                G78Centre::FormCentre => "form-centre",
+                G78Centre::UnderB => "under-b",
+            },
+            "R-LEADIN" => match self.lead_in {
+                LeadIn::WholeLeads => "whole-leads",
+                LeadIn::SameZ => "same-z",
+            },
             _ => return None,
         };
         Some(v)
@@ -315,6 +414,12 @@ impl Readings {
             ("R-END", "translated") => self.pass_end = Some(PassEnd::Translated),
             ("R-LONG988", "displacement") => self.long988 = Some(Long988::Displacement),
             ("R-LONG988", "table") => self.long988 = Some(Long988::Table),
+            ("R-G78LEFT", "mirror-form-centre") => self.g78_left = G78Left::MirrorFormCentre,
+            ("R-G78LEFT", "mirror-b") => self.g78_left = G78Left::MirrorB,
+            ("R-G78CENTRE", "form-centre") => self.g78_centre = G78Centre::FormCentre,
+            ("R-G78CENTRE", "under-b") => self.g78_centre = G78Centre::UnderB,
+            ("R-LEADIN", "whole-leads") => self.lead_in = LeadIn::WholeLeads,
+            ("R-LEADIN", "same-z") => self.lead_in = LeadIn::SameZ,
             _ => return Err(bad()),
         }
         Ok(())
@@ -375,6 +480,9 @@ impl Readings {
             long_axis_by_table: profile == ProfileName::Gsk988
                 && long_axis_table_applies
                 && long988 == Long988::Table,
+            left_mirror_b: self.g78_left == G78Left::MirrorB,
+            centre_under_b: self.g78_centre == G78Centre::UnderB,
+            lead_in_same_z: self.lead_in == LeadIn::SameZ,
         }
     }
 }

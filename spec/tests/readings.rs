@@ -196,6 +196,158 @@ fn negative_e_still_refused_on_gsk988() {
     assert!(read(src, &machine(ProfileName::Gsk988, &["R-E980=signed"])).is_err());
 }
 
+/// The pass starts Bn of a cycle: where each approach (or lead-in) ends.
+fn starts(moves: &[Move]) -> Vec<Point> {
+    let mut out = Vec::new();
+    for (i, m) in moves.iter().enumerate() {
+        if m.role == Role::Approach && moves.get(i + 1).is_none_or(|n| n.role != Role::LeadIn) {
+            out.push(m.to);
+        }
+        if m.role == Role::LeadIn {
+            out.push(m.to);
+        }
+    }
+    out
+}
+
+/// A small G78 on the 988TA, `G78 P01r60 Q0.1 R0.2` / `G78 X30 Z-20 P1 Q0.5
+/// F2` from A = (X40, Z5): m = 1 finishing pass, a = 60°, Δdmin = 0.1,
+/// d = 0.2, k = 1, Δd = 0.5 (mm, radius). External (X40 > X30), t = -1
+/// (Z5 → Z-20), B = (X32, Z5).
+///
+/// Levels (R-DEPTH, increments of 0.001 mm): round(500·√1) = 500;
+/// round(500·√2) = round(707.107) = 707; round(500·√3) = round(866.025) =
+/// 866 ≥ k - d = 800, so 800. Bn's X = X30 + 2·(k - Dn): X31, X30.586,
+/// X30.4, and X30 for the finishing pass at k.
+/// Right shifts round(Dn·tan 30°), tan 30° = 0.577350: 500 → 288.675 →
+/// 289; 707 → 408.186 → 408; 800 → 461.880 → 462 = zc. Bn's Z = Z5 - shift.
+fn small_g78(r: u32) -> String {
+    format!("M3 S300\nG00 X40 Z5\nG78 P01{r:02}60 Q0.1 R0.2\nG78 X30 Z-20 P1 Q0.5 F2\nM30\n")
+}
+
+/// R-G78LEFT on G78 r = 1 (左边切入). `mirror-form-centre` (default): the
+/// left shift is 2·zc - right = 924 - 289 = 635, 924 - 408 = 516, 924 -
+/// 462 = 462; the finishing pass at the last rough pass's Z, 462.
+/// `mirror-b`: -289, -408, -462 (beyond the Z of A, on the far side of B),
+/// the finishing pass at -462: |Z shift| / depth = tan 30° on every rough
+/// pass, up to the rounding.
+#[test]
+fn g78_left_flank_mirrored_about_b() {
+    let src = small_g78(1);
+    let default = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        starts(&default),
+        [
+            Point::new(31_000, 4_365),
+            Point::new(30_586, 4_484),
+            Point::new(30_400, 4_538),
+            Point::new(30_000, 4_538),
+        ]
+    );
+    let b = run(&src, &machine(ProfileName::Gsk988, &["R-G78LEFT=mirror-b"])).unwrap();
+    assert_eq!(
+        starts(&b),
+        [
+            Point::new(31_000, 5_289),
+            Point::new(30_586, 5_408),
+            Point::new(30_400, 5_462),
+            Point::new(30_000, 5_462),
+        ]
+    );
+}
+
+/// R-G78LEFT on G78 r = 4 (左右等量轮流): right then left at the first two
+/// levels, the last level once on the right (zc), the finishing pass
+/// there. Right shifts 289, 408, 462 under either value; the left ones
+/// 635, 516 by default, -289, -408 under `mirror-b`. The same mode is
+/// G76's D2 (seed 000), which the reading moves alike.
+#[test]
+fn g78_alternate_flanks_mirrored_about_b() {
+    let src = small_g78(4);
+    let z = |shifts: [i64; 6]| shifts.map(|s| 5_000 - s);
+    let x = [31_000, 31_000, 30_586, 30_586, 30_400, 30_000];
+    let points = |zs: [i64; 6]| x.iter().zip(zs).map(|(&x, z)| Point::new(x, z)).collect::<Vec<_>>();
+    let default = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(starts(&default), points(z([289, 635, 408, 516, 462, 462])));
+    let b = run(&src, &machine(ProfileName::Gsk988, &["R-G78LEFT=mirror-b"])).unwrap();
+    assert_eq!(starts(&b), points(z([289, -289, 408, -408, 462, 462])));
+    // G76 D2 on the 988TA: the same passes (G76's P(r) is the chamfer: 00).
+    let g76 = "M3 S300\nG00 X40 Z5\nG76 P010060 Q0.1 R0.2 D2\nG76 X30 Z-20 P1 Q0.5 F2\nM30\n";
+    let g76 = run(g76, &machine(ProfileName::Gsk988, &["R-G78LEFT=mirror-b"])).unwrap();
+    assert_eq!(starts(&g76), points(z([289, -289, 408, -408, 462, 462])));
+}
+
+/// R-G78CENTRE on G78 r = 0 (中线切入): `form-centre` (default) cuts every
+/// pass at zc = 462 (Z4.538); `under-b` radially under B, at Z5, the
+/// finishing pass too (the last rough pass's Z). r = 3 (右中轮流) keeps its
+/// centre passes at zc: the reading concerns r = 0.
+#[test]
+fn g78_centre_under_b() {
+    let src = small_g78(0);
+    let x = [31_000, 30_586, 30_400, 30_000];
+    let default = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(starts(&default), x.map(|x| Point::new(x, 4_538)));
+    let b = run(&src, &machine(ProfileName::Gsk988, &["R-G78CENTRE=under-b"])).unwrap();
+    assert_eq!(starts(&b), x.map(|x| Point::new(x, 5_000)));
+    // The first approach is along X only.
+    assert_eq!(b[0].to, Point::new(31_000, 5_000));
+    // r = 3: right 289, centre 462, right 462 (level 3), finishing 462.
+    let src = small_g78(3);
+    let right_centre = run(&src, &machine(ProfileName::Gsk988, &["R-G78CENTRE=under-b"])).unwrap();
+    assert_eq!(right_centre, run(&src, &machine(ProfileName::Gsk988, &[])).unwrap());
+    assert_eq!(
+        starts(&right_centre),
+        [
+            Point::new(31_000, 4_711),
+            Point::new(30_586, 4_538),
+            Point::new(30_400, 4_538),
+            Point::new(30_000, 4_538),
+        ]
+    );
+}
+
+/// R-LEADIN on the 988TA's G76 with E: `G76 P010000 Q0.1 R0 E0.5` /
+/// `G76 X30 Z-20 P1 Q1 F2` from A = (X40, Z5): a = 0 (no shift), k = 1,
+/// Δd = 1, d = 0: one rough pass at depth 1 and one finishing pass at k,
+/// both from Bn = (X30, Z5); r = 0: no run-out. E = 0.5 (radius): the
+/// lead-in starts at X30 + 2·0.5 = X31.
+/// `whole-leads` (default): N = ceil(0.5 / 2) = 1 lead, Lz = 2: An = (X31,
+/// Z5 + 2) = (X31, Z7). `same-z`: An = (X31, Z5), and the screw-in to Bn
+/// is a thread move along X only.
+#[test]
+fn lead_in_at_the_z_of_bn() {
+    let src = "M3 S300\nG00 X40 Z5\nG76 P010000 Q0.1 R0 E0.5\nG76 X30 Z-20 P1 Q1 F2\nM30\n";
+    let pass = |an: Point| {
+        [
+            (Role::Approach, an),
+            (Role::LeadIn, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -20_000)),
+            (Role::Retract, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    };
+    let default = run(src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    let whole = pass(Point::new(31_000, 7_000));
+    assert_eq!(ends(&default), [whole, whole].concat());
+    let same = run(src, &machine(ProfileName::Gsk988, &["R-LEADIN=same-z"])).unwrap();
+    let at_bn = pass(Point::new(31_000, 5_000));
+    assert_eq!(ends(&same), [at_bn, at_bn].concat());
+    assert!(matches!(same[1].motion, cycleref::Motion::Thread { sync: true, .. }));
+}
+
+/// A left pass beyond the Z of A under `mirror-b` is range-checked
+/// (R-RANGE): A at Z999999.8, the deepest left pass at Z999999.8 + 0.462
+/// = Z1000000.262, beyond Z999999.999; by default the left passes lie
+/// towards D (Z999999.8 - 0.635 …) and the cycle is made.
+#[test]
+fn left_pass_beyond_the_range_is_refused() {
+    let src = "M3 S300\nG00 X40 Z999999.8\nG78 P010160 Q0.1 R0.2\nG78 X30 Z999970 P1 Q0.5 F2\nM30\n";
+    assert!(run(src, &machine(ProfileName::Gsk988, &[])).is_ok());
+    let e = run(src, &machine(ProfileName::Gsk988, &["R-G78LEFT=mirror-b"])).unwrap_err();
+    let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
+    assert_eq!(value.increments, 1_000_000_262);
+}
+
 /// The errors name the valid ids and values.
 #[test]
 fn unknown_reading_or_value_names_the_valid_ones() {
@@ -204,7 +356,8 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
+         R-G78LEFT, R-G78CENTRE, R-LEADIN)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");

@@ -417,6 +417,18 @@ pub(super) enum Swatch<'s> {
     None,
 }
 
+/// The legend entry naming the readings in force that differ from the
+/// defaults (issue 34), as the nc output's `(readings: …)` comment does
+/// (`crate::job::readings_in_force`, the one source of both), or `None`
+/// under the defaults.
+pub(super) fn readings_entry(readings: &[(&str, &str)]) -> Option<(Swatch<'static>, String, Option<String>)> {
+    if readings.is_empty() {
+        return None;
+    }
+    let list: Vec<String> = readings.iter().map(|(id, v)| format!("{id}={v}")).collect();
+    Some((Swatch::None, "readings (not the defaults):".to_string(), Some(list.join(", "))))
+}
+
 /// A legend column right of the plot area: a title, then each entry's
 /// swatch and text, and under it an optional note in small grey type.
 pub(super) fn legend(mut g: Group, entries: &[(Swatch<'_>, String, Option<String>)]) -> Group {

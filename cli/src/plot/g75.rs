@@ -23,8 +23,8 @@ use cycleref_spec::cycles::GroovePanel;
 use svg::node::element::{Group, Path, Rectangle, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
-    FINISH, RAPID, RAPID_DASH,
+    draw_axes, draw_marks, heading, legend, num, ramp, readings_entry, scale_note, unit_name, x_kind,
+    Mapping, Swatch, FINISH, RAPID, RAPID_DASH,
 };
 use crate::format::fixed;
 
@@ -74,6 +74,7 @@ impl<'a> Groove<'a> {
         marks: &[&crate::check::Mark],
         first: bool,
         trace: &[Point],
+        readings: &[(&str, &str)],
     ) -> Group {
         let (c, d) = (self.info, self.drawn);
         let u = d.units;
@@ -123,6 +124,7 @@ impl<'a> Groove<'a> {
                 Some("far-side moves run I inside the profile".to_string()),
             ));
         }
+        entries.extend(readings_entry(readings));
         g = legend(g, &entries);
         g = draw_axes(g, &map, unit_name(u.unit), x_kind(d.x_mode));
         let x_factor = d.x_mode.factor();

@@ -18,8 +18,8 @@ use cycleref_spec::cycles::PassesPanel;
 use svg::node::element::{Circle, Group, Line, Path, Text, Title};
 
 use super::canvas::{
-    draw_axes, heading, num, ramp, unit_name, x_kind, Mapping, FINISH, LEGEND_LEFT, PLOT_TOP, POINT, RAPID,
-    RAPID_DASH, RUN_OUT,
+    chars_to_edge, draw_axes, heading, num, ramp, readings_entry, unit_name, wrap, x_kind, Mapping, FINISH,
+    LEGEND_LEFT, PLOT_TOP, POINT, RAPID, RAPID_DASH, RUN_OUT,
 };
 use crate::format::{fixed, lead_word};
 
@@ -97,9 +97,18 @@ pub(super) struct Panel<'a> {
     rough_depths: BTreeMap<u32, i64>,
     finish_total: u32,
     finish_depth: Option<i64>,
+    /// The readings in force that differ from the defaults, which the
+    /// legend names (issue 34).
+    readings: Vec<(&'a str, &'a str)>,
 }
 
 impl<'a> Panel<'a> {
+    /// The panel with its legend naming `readings` (the readings in force
+    /// that differ from the defaults).
+    pub(super) fn with_readings(self, readings: &[(&'a str, &'a str)]) -> Panel<'a> {
+        Panel { readings: readings.to_vec(), ..self }
+    }
+
     /// The panel of `drawn` drawn as `info` says, for the program `name`.
     /// `trace`: the points of a trace over this cycle, which the frame
     /// grows to hold (within reason: [`Mapping::around_both`]).
@@ -130,6 +139,7 @@ impl<'a> Panel<'a> {
             rough_depths: BTreeMap::new(),
             finish_total: 0,
             finish_depth: None,
+            readings: Vec::new(),
         };
         panel.trace(&drawn.moves);
         panel
@@ -489,6 +499,14 @@ impl<'a> Panel<'a> {
                     .set("fill", "#555555"),
             );
             y += 20.0;
+        }
+        if let Some((_, title, Some(list))) = readings_entry(&self.readings) {
+            g = g.add(text(title, y));
+            y += 15.0;
+            for line in wrap(&list, chars_to_edge(tx, 11.0)) {
+                g = g.add(text(line, y).set("font-size", 11).set("fill", "#555555"));
+                y += 14.0;
+            }
         }
         g
     }

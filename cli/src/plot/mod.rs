@@ -25,7 +25,10 @@
 //! * the points A (start), B (depth reference), C (thread start) and D
 //!   (thread end) of the manual, with their coordinates in the legend;
 //! * for G75.1, the groove's profile and roughing region under the pecks
-//!   and contours.
+//!   and contours;
+//! * in every panel's legend, the readings in force that differ from the
+//!   defaults (issue 34), from the source the nc output's `(readings: …)`
+//!   comment names them from (`crate::job::readings_in_force`).
 //!
 //! The modules: `canvas` holds what every panel shares (the plot
 //! area, the palette, the mapping from increments to pixels, the axes, the
@@ -145,7 +148,12 @@ impl Panels {
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
-fn svg(name: &str, panels: &Panels, overlay: Option<&Overlay>) -> Result<String, crate::Failure> {
+fn svg(
+    name: &str,
+    panels: &Panels,
+    overlay: Option<&Overlay>,
+    readings: &[(&str, &str)],
+) -> Result<String, crate::Failure> {
     if panels.is_empty() {
         return Err(crate::Failure::usage(format!(
             "{name}: no G76 cycle, G32 or G33 block, G92 block or G75.1 cycle to plot"
@@ -180,7 +188,7 @@ fn svg(name: &str, panels: &Panels, overlay: Option<&Overlay>) -> Result<String,
     let mut slot = 0;
     for (index, (drawn, p)) in panels.passes.iter().enumerate() {
         let trace = overlay.map_or(&[][..], |o| o.points_for(drawn.line));
-        let panel = g76::Panel::new(name, drawn, p, trace);
+        let panel = g76::Panel::new(name, drawn, p, trace).with_readings(readings);
         let mut group = panel.draw();
         if let Some(o) = overlay {
             group = panel.draw_overlay(group, o.short_name(), o.points_for(drawn.line), index);
@@ -200,7 +208,7 @@ fn svg(name: &str, panels: &Panels, overlay: Option<&Overlay>) -> Result<String,
             .take(MAX_MARKS)
             .collect();
         let first = blocks.iter().any(|b| first_line == Some(b.line));
-        doc = place(doc, threads::panel(name, p, blocks, &here, first), slot, true);
+        doc = place(doc, threads::panel(name, p, blocks, &here, first, readings), slot, true);
         slot += 1;
     }
     for (i, (drawn, p)) in panels.grooves.iter().enumerate() {
@@ -209,7 +217,7 @@ fn svg(name: &str, panels: &Panels, overlay: Option<&Overlay>) -> Result<String,
         let here: Vec<&crate::check::Mark> =
             marks.iter().copied().filter(|m| m.cycle_line == line).take(MAX_MARKS).collect();
         let trace = overlay.map_or(&[][..], |o| o.points_for(drawn.line));
-        let mut group = groove.draw(name, &here, first_line == line, trace);
+        let mut group = groove.draw(name, &here, first_line == line, trace, readings);
         if let Some(o) = overlay {
             let clip = format!("groove-area-{i}");
             group = canvas::draw_trace(group, &groove.map(trace), o.short_name(), trace, &clip);
@@ -372,7 +380,9 @@ pub fn run(
         Some(t) => Some(overlay::overlay(job, t, units, &ranges)?),
         None => None,
     };
-    let svg = svg(&job.name, &panels, overlay.as_ref())?;
+    // The readings the legends name: those the nc output's headings name.
+    let readings = crate::job::readings_in_force(&job.machine);
+    let svg = svg(&job.name, &panels, overlay.as_ref(), &readings)?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {

@@ -18,8 +18,8 @@ use cycleref_spec::cycles::BlocksPanel;
 use svg::node::element::{Circle, Group, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, line, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
-    POINT, RAPID, RAPID_DASH, RUN_OUT,
+    draw_axes, draw_marks, heading, legend, line, num, ramp, readings_entry, scale_note, unit_name, x_kind,
+    Mapping, Swatch, POINT, RAPID, RAPID_DASH, RUN_OUT,
 };
 
 /// One panel with every block of one title (`info`) of the program
@@ -32,6 +32,7 @@ pub(super) fn panel(
     blocks: &[super::Drawn],
     marks: &[&crate::check::Mark],
     first_mark: bool,
+    readings: &[(&str, &str)],
 ) -> Group {
     let first = &blocks[0];
     let points = blocks.iter().flat_map(|b| std::iter::once(b.from).chain(b.moves.iter().map(|m| m.to)));
@@ -59,6 +60,7 @@ pub(super) fn panel(
         "the program's own moves".into(),
         Some("between the blocks: not drawn".into()),
     ));
+    entries.extend(readings_entry(readings));
     g = legend(g, &entries);
     g = draw_axes(g, &map, unit_name(first.units.unit), x_kind(first.x_mode));
     for (i, block) in blocks.iter().enumerate() {

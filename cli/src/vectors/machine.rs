@@ -11,10 +11,11 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use super::{MachineJson, OneLine, ParamJson, ParamsJson, Rng};
+use super::{MachineJson, OneLine, ParamJson, ParamsJson, ReadingsJson, Rng};
 use cycleref::units::write_fixed;
 use cycleref::{IncrementSystem, InputUnit, LeadWord, Units, XMode};
 use cycleref_spec::profile::{ParamValue, Profile};
+use cycleref_spec::readings::{Readings, TABLE};
 use cycleref_spec::ProfileName;
 
 /// A parameter override: an integer, or a length in increments of the
@@ -42,6 +43,9 @@ pub(super) struct MachineStyle {
     pub(super) bare: bool,
     pub(super) pass_limit: u32,
     pub(super) params: BTreeMap<&'static str, Param>,
+    /// The readings (issue 34): the defaults, unless the case is made
+    /// under another value (`super::under_a_reading`).
+    pub(super) readings: Readings,
 }
 
 impl MachineStyle {
@@ -77,6 +81,7 @@ impl MachineStyle {
             bare,
             pass_limit: cycleref::g76::DEFAULT_PASS_LIMIT,
             params,
+            readings: Readings::default(),
         }
     }
 
@@ -235,6 +240,20 @@ impl MachineStyle {
             };
             params.push((key, value));
         }
+        // Every reading that changes anything on the profile, with its
+        // value, in the order `cycleref readings` lists them: the case says
+        // what it was made under whatever the defaults of a later version.
+        let readings: Vec<(&'static str, &'static str)> = TABLE
+            .iter()
+            .filter(|e| e.profiles.contains(&self.profile))
+            .filter_map(|e| Some((e.id, self.readings.get(e.id)?)))
+            .collect();
+        if !readings.is_empty() {
+            toml.push_str("\n[readings]\n");
+            for (id, value) in &readings {
+                let _ = writeln!(toml, "\"{id}\" = \"{value}\"");
+            }
+        }
         let machine = MachineJson {
             increment,
             unit,
@@ -242,6 +261,7 @@ impl MachineStyle {
             calculator_input: self.calculator_input,
             pass_limit: self.pass_limit,
             parameters: OneLine(ParamsJson(params)),
+            readings: OneLine(ReadingsJson(readings)),
         };
         (toml, machine)
     }

@@ -422,6 +422,17 @@ fn template(index: u32) -> &'static Template {
     pool[n % pool.len()]
 }
 
+/// How many times case `index`'s (1-based) template came before it in the
+/// schedule ([`template`]): 0 for its first case.
+fn round(index: u32) -> usize {
+    let s = usize::try_from(index - 1).unwrap_or(0);
+    let (group, pos) = (s / 5, s % 5);
+    match pos {
+        1 | 3 => (group * 2 + usize::from(pos == 3)) / templates(true).len(),
+        _ => (group * 3 + pos / 2) / templates(false).len(),
+    }
+}
+
 // ---- checking a draft ----
 
 /// What a program does: the cycles' JSON, or the first error.
@@ -429,6 +440,9 @@ struct Evaluated {
     outcome: Result<(Units, Vec<CycleJson>), ProgramError>,
     tags: BTreeSet<String>,
     moves: usize,
+    /// Every move of every cycle made, in order (to tell two outcomes
+    /// apart: the JSON of the cycles streams once).
+    all: Vec<cycleref::Move>,
 }
 
 /// Reads and expands a program with both engines.
@@ -440,10 +454,11 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, Vector
     let mut tags = BTreeSet::new();
     let program = match read(text, machine) {
         Ok(p) => p,
-        Err(e) => return Ok(Evaluated { outcome: Err(e), tags, moves: 0 }),
+        Err(e) => return Ok(Evaluated { outcome: Err(e), tags, moves: 0, all: Vec::new() }),
     };
     let mut cycles = Vec::new();
     let mut count = 0;
+    let mut all = Vec::new();
     for item in &program.items {
         let Some(cycle) = Cycle::of(item) else { continue };
         let engine = expand(cycle, Engine::Impl).map(Iterator::collect::<Vec<_>>);
@@ -460,17 +475,18 @@ fn evaluate(id: &str, machine: &Machine, text: &str) -> Result<Evaluated, Vector
             Ok(moves) => {
                 cycle.tags(&moves, &mut |t| tag(&mut tags, t));
                 count += moves.len();
+                all.extend_from_slice(&moves);
                 let typed = expand(cycle, Engine::Impl)
                     .map_err(|error| VectorsError::Expansion { id: id.to_string(), error })?;
                 cycles.push(CycleJson::new(cycle, typed));
             }
             Err(e) => {
                 let error = ProgramError { line: cycle.line(), word: None, kind: ErrorKind::Cycle(e) };
-                return Ok(Evaluated { outcome: Err(error), tags, moves: count });
+                return Ok(Evaluated { outcome: Err(error), tags, moves: count, all });
             }
         }
     }
-    Ok(Evaluated { outcome: Ok((program.units, cycles)), tags, moves: count })
+    Ok(Evaluated { outcome: Ok((program.units, cycles)), tags, moves: count, all })
 }
 
 fn tag(tags: &mut BTreeSet<String>, t: &str) {
@@ -497,12 +513,9 @@ fn make_case(seed: u64, index: u32) -> Result<Case, VectorsError> {
     let template = template(index);
     for _ in 0..ATTEMPTS {
         let draft = (template.generate)(&mut rng);
-        let (toml, machine_json) = draft.ctx.settings();
-        let mut machine = Machine::new(draft.ctx.profile);
-        machine.apply_toml(&toml).map_err(|error| VectorsError::ParamsRefused { id: id.clone(), error })?;
         let mut program = draft.lines.join("\n");
         program.push('\n');
-        let ev = evaluate(&id, &machine, &program)?;
+        let ev = evaluate(&id, &machine_of(&id, &draft.ctx)?, &program)?;
         let fits = match (&template.outcome, &ev.outcome) {
             (Expected::Valid(required), Ok(_)) => {
                 ev.moves > 0
@@ -515,6 +528,14 @@ fn make_case(seed: u64, index: u32) -> Result<Case, VectorsError> {
         if !fits {
             continue;
         }
+        // Every other round of the schedule is tried under the readings:
+        // each template's first case is made under the defaults.
+        let (draft, ev) = if round(index) % 2 == 1 {
+            under_a_reading(seed, index, &id, draft, &program, ev)?
+        } else {
+            (draft, ev)
+        };
+        let (toml, machine_json) = draft.ctx.settings();
         let ctx = &draft.ctx;
         let description = draft.description.unwrap_or_else(|| template.description.to_string());
         let mut tags: BTreeSet<String> =
@@ -541,6 +562,9 @@ fn make_case(seed: u64, index: u32) -> Result<Case, VectorsError> {
         }
         if ctx.bare {
             tags.insert("fanuc:bare-increments".into());
+        }
+        for (id, value) in ctx.readings.non_default(ctx.profile) {
+            tags.insert(format!("reading:{id}={value}"));
         }
         let (expect, kind) = match ev.outcome {
             Ok((units, cycles)) => {
@@ -579,6 +603,75 @@ fn make_case(seed: u64, index: u32) -> Result<Case, VectorsError> {
         return Ok(Case { id, description, tags, kind, json });
     }
     Err(VectorsError::NoDraftFits { id, template: template.id, attempts: ATTEMPTS })
+}
+
+/// The machine of a draft, as its parameter file sets it.
+fn machine_of(id: &str, ctx: &MachineStyle) -> Result<Machine, VectorsError> {
+    let (toml, _) = ctx.settings();
+    let mut machine = Machine::new(ctx.profile);
+    machine.apply_toml(&toml).map_err(|error| VectorsError::ParamsRefused { id: id.to_string(), error })?;
+    Ok(machine)
+}
+
+/// A case of an odd [`round`] is made under a reading other than the
+/// default (issue 34) where one changes it: each non-default value of every
+/// reading of [`TABLE`](cycleref_spec::readings::TABLE) that changes
+/// anything on the case's profile is tried in an order drawn from a stream
+/// of the case's own (so that the drafts stay those of the default
+/// readings), and the first
+/// that changes the outcome (other moves, another alarm, moves instead of
+/// the alarm or the other way round; valid with at most [`MAX_MOVES`]
+/// moves) is taken. Every value tried is a differential test of the two
+/// engines under it ([`evaluate`]). A case that no value changes stays
+/// under the defaults.
+///
+/// # Errors
+///
+/// As [`evaluate`].
+fn under_a_reading(
+    seed: u64,
+    index: u32,
+    id: &str,
+    draft: Draft,
+    program: &str,
+    ev: Evaluated,
+) -> Result<(Draft, Evaluated), VectorsError> {
+    let mut rng = Rng::for_case(seed ^ READINGS_STREAM, index);
+    let profile = draft.ctx.profile;
+    let mut values: Vec<(&'static str, &'static str)> = cycleref_spec::readings::TABLE
+        .iter()
+        .filter(|e| e.profiles.contains(&profile))
+        .flat_map(|e| {
+            let default = e.default_on(profile);
+            e.values.iter().filter(move |v| v.name != default).map(move |v| (e.id, v.name))
+        })
+        .collect();
+    // Fisher-Yates, from the readings' own stream.
+    for i in (1..values.len()).rev() {
+        values.swap(i, rng.index(i + 1));
+    }
+    for (reading, value) in values {
+        let mut ctx = draft.ctx.clone();
+        // A value of the table: always accepted.
+        if ctx.readings.set(reading, value).is_err() {
+            continue;
+        }
+        let chosen = evaluate(id, &machine_of(id, &ctx)?, program)?;
+        let small = chosen.outcome.is_err() || (chosen.moves > 0 && chosen.moves <= MAX_MOVES);
+        if small && fingerprint(&chosen) != fingerprint(&ev) {
+            return Ok((Draft { ctx, ..draft }, chosen));
+        }
+    }
+    Ok((draft, ev))
+}
+
+/// Salt of the readings' stream ([`under_a_reading`]).
+const READINGS_STREAM: u64 = 0x7265_6164_696e_6773;
+
+/// What a case expects, to tell whether a reading changes it: the moves,
+/// and the alarm if there is one.
+fn fingerprint(ev: &Evaluated) -> (&[cycleref::Move], Option<String>) {
+    (&ev.all, ev.outcome.as_ref().err().map(ToString::to_string))
 }
 
 // ---- the documents ----
@@ -633,6 +726,23 @@ pub(super) struct MachineJson {
     pub(super) pass_limit: u32,
     /// Every parameter of the profile, by name in the profile's order.
     pub(super) parameters: OneLine<ParamsJson>,
+    /// Every reading that changes anything on the profile (issue 34), by
+    /// id in the order of `cycleref readings`, with its value.
+    pub(super) readings: OneLine<ReadingsJson>,
+}
+
+/// The readings as an object, in the order given.
+pub(super) struct ReadingsJson(pub(super) Vec<(&'static str, &'static str)>);
+
+impl serde::Serialize for ReadingsJson {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap as _;
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (key, value) in &self.0 {
+            map.serialize_entry(key, value)?;
+        }
+        map.end()
+    }
 }
 
 /// The parameters as an object, in the order given.

@@ -232,7 +232,9 @@ fn out_of_range(rng: &mut Rng) -> Draft {
         }
         // LinuxCnc: never drawn (any_profile draws FANUC and GSK profiles).
         ProfileName::Fanuc | ProfileName::LinuxCnc => variants.push(("m = 0 (01..99)", 6)),
-        ProfileName::Gsk980 => variants.push(("negative K in block 1", 7)),
+        ProfileName::Gsk980 => {
+            variants.extend([("negative K in block 1", 7), ("negative E in a G78 block 1 (R-E980)", 8)]);
+        }
     }
     let (what, v) = rng.pick(&variants);
     match v {
@@ -243,9 +245,21 @@ fn out_of_range(rng: &mut Rng) -> Draft {
         4 => g.extra1.push("D3".into()),
         5 => g.extra2.push(format!("J-{}", ctx.num(ctx.mm(1000)))),
         6 => g.p = Some(pmra(0, 5, 60)),
-        _ => g.extra1.push(format!("K-{}", ctx.num(ctx.mm(1000)))),
+        7 => g.extra1.push(format!("K-{}", ctx.num(ctx.mm(1000)))),
+        // The 980TDi's G78 (its P: m the depth mode 0-1, r the infeed mode
+        // 0-3): E "无符号" with the range "-9999.9999~9999.9999".
+        _ => {
+            g.p = Some(pmra(1, rng.range(0, 3), 60));
+            g.extra1.push(format!("E-{}", ctx.num(ctx.mm(rng.range(300, 2000)))));
+        }
     }
-    let lines = g76_program(rng, &ctx, &t, &g);
+    let mut lines = g76_program(rng, &ctx, &t, &g);
+    if v == 8 {
+        lines = lines
+            .into_iter()
+            .map(|l| l.strip_prefix("G76").map_or(l.clone(), |rest| format!("G78{rest}")))
+            .collect();
+    }
     Draft::new(ctx, lines).described(format!("G76 with a value outside its range: {what}"))
 }
 

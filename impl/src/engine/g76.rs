@@ -83,7 +83,7 @@
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (432 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (448 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -119,7 +119,7 @@ fn flank_shift(depth: i64, tool_angle: u32) -> i64 {
 // up-front count 184 µs against 120 µs), the last of the per-pass
 // regression since e31a431 (CHANGELOG).
 #[inline(never)]
-fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
+fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
     // validate(): 0 ≤ d ≤ k < 2^30, 0 ≤ Δdmin ≤ k, 1 ≤ Δd < 2^30.
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
@@ -130,11 +130,19 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
     let mut depth = 0_i64;
     let mut n = 0_u64;
     let mut count = crate::loop_counters::count!(PASS_COUNT);
+    // The depth of the level before the last (0 when there are fewer than
+    // two levels): every level is at least one increment deep.
+    let mut penultimate = 0_i64;
     let levels = if c.depth_mode == DepthMode::Equal {
         // Every level adds max(Δd, Δdmin, 1) < 2^30: ceil((k - d) / step)
-        // levels, 0 ≤ k - d < 2^30.
+        // levels, 0 ≤ k - d < 2^30, the one before the last at (levels -
+        // 1)·step < k - d.
         let step = c.first_depth.max(min);
-        ((last + step - 1) / step).unsigned_abs()
+        let levels = (last + step - 1) / step;
+        if levels >= 2 {
+            penultimate = (levels - 1) * step;
+        }
+        levels.unsigned_abs()
     } else {
         loop {
             count.tick();
@@ -149,9 +157,14 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
                 // 0 < rest < 2^30, 1 ≤ min < 2^30: ceil(rest / min) < 2^30.
                 let rest = last - depth;
                 let more = (rest + min - 1) / min;
+                // Levels D(n-1) + j·min, j = 1..more, the last at k - d:
+                // the one before it at D(n-1) + (more - 1)·min < k - d
+                // (D(n-1) itself when more = 1, 0 when n = 1).
+                penultimate = depth + (more - 1) * min;
                 break n - 1 + more.unsigned_abs();
             }
             if law >= last {
+                penultimate = depth;
                 break n;
             }
             depth = law;
@@ -166,7 +179,19 @@ fn check_pass_count(c: &G76Cycle) -> Result<u64, CycleError> {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
     }
     check_work(c, passes)?;
-    Ok(passes)
+    Ok(PassCount { passes, penultimate })
+}
+
+/// What [`check_pass_count`] finds: the rough pass count and the depth of
+/// the level before the last (0 when there are fewer than two levels),
+/// where the deepest left pass of D2 and of 交错 may lie (reading
+/// R-G78LEFT `mirror-b`).
+#[derive(Clone, Copy, Debug)]
+struct PassCount {
+    /// Rough passes.
+    passes: u64,
+    /// Depth of level f - 1, or 0.
+    penultimate: i64,
 }
 
 /// Reading R-BUDGET: the whole cycle's pass paths, (rough + finishing) ×
@@ -193,7 +218,7 @@ fn check_work(c: &G76Cycle, rough: u64) -> Result<(), CycleError> {
 /// Those of [`G76Cycle::validate`], then [`CycleError::TooManyPasses`].
 pub fn rough_pass_count(cycle: &G76Cycle) -> Result<u64, CycleError> {
     cycle.validate()?;
-    check_pass_count(cycle)
+    check_pass_count(cycle).map(|p| p.passes)
 }
 
 /// `round(num × ratio)` for `num ≥ 0`, ties away from zero, or `None` if it
@@ -241,10 +266,14 @@ pub(crate) fn run_out_amounts(run_out: RunOut, lead: Lead, units: Units) -> Opti
 /// The long-axis length of the lead-in (reading R-LEADIN): the smallest
 /// whole number `N ≥ 1` of leads with `N × lead ≥ E`, times the lead,
 /// rounded to the increment; `i64::MAX` when that does not fit, as the
-/// reference.
+/// reference (`whole-leads`); 0 under `same-z`.
 ///
 /// Twin: `spec/src/g76.rs`, `lead_in_length`.
 fn lead_in_length(c: &G76Cycle) -> i64 {
+    // Reading R-LEADIN `same-z`: An at the Z of Bn.
+    if c.readings.lead_in_same_z {
+        return 0;
+    }
     let lead = c.lead.increments_per_rev(c.units);
     let e = u128::from(c.lead_in.unsigned_abs());
     // e < 2^30, den < 2^72, num < 2^81 (module docs): no overflow below.
@@ -296,8 +325,16 @@ pub struct G76Moves {
     tool_angle: u32,
     /// Infeed mode.
     infeed: Infeed,
-    /// Z shift of the centre line, `round((k - d) tan(a/2))`.
+    /// Z shift of the centre passes: the centre line of the final form,
+    /// `zc = round((k - d) tan(a/2))`, or 0 for G78 r = 0 under reading
+    /// R-G78CENTRE `under-b`.
     centre: i64,
+    /// The line left flanks mirror the right flank about (reading
+    /// R-G78LEFT): `zc`, or 0 (B) under `mirror-b`.
+    mirror: i64,
+    /// Z shift of the last rough pass planned (0 before the first): where
+    /// the finishing passes start ("精车 Z 轴起切点与最后一刀粗车一致").
+    finish: i64,
     /// d.
     allowance: i64,
     /// m.
@@ -329,15 +366,24 @@ struct PlanExtremes {
     max_shift: i64,
 }
 
-/// The [`PlanExtremes`] of a cycle whose pass count has been checked.
-fn plan_extremes(c: &G76Cycle, last: i64, centre: i64) -> Option<PlanExtremes> {
+/// The [`PlanExtremes`] of a cycle whose pass count has been checked:
+/// `count` from [`check_pass_count`], `zc` the shift of the last level,
+/// `centre` the centre passes' and `mirror` the left flanks' mirror line.
+fn plan_extremes(
+    c: &G76Cycle,
+    last: i64,
+    count: PassCount,
+    zc: i64,
+    centre: i64,
+    mirror: i64,
+) -> Option<PlanExtremes> {
     if last <= 0 {
         // No rough level: the finishing passes (if any) at depth k and the
-        // shift of the last rough level, depth 0: `centre` = 0.
+        // shift of the last rough pass, none: 0.
         return (c.finishing_passes > 0).then_some(PlanExtremes {
             shallowest: c.thread_height,
-            min_shift: centre,
-            max_shift: centre,
+            min_shift: 0,
+            max_shift: 0,
         });
     }
     // D1 = min(k - d, max(round(Δd √1), 0 + m)), with round(Δd √1) = Δd;
@@ -345,22 +391,29 @@ fn plan_extremes(c: &G76Cycle, last: i64, centre: i64) -> Option<PlanExtremes> {
     // m)).
     let d1 = last.min(c.first_depth.max(c.min_cut.max(1)));
     let right1 = flank_shift(d1, c.tool_angle);
-    // Shifts grow with the depth: right shifts lie in [right1, centre],
-    // centre passes and finishing passes at centre, left passes at 2 centre
-    // - right in [centre, 2 centre - right1]. D2 cuts a left pass at every
-    // level but the last (so at D1 when there is a second level), r = 1 at
-    // every level, the 980TDi's 交错 at the even levels (from D2 on).
-    // centre < 2^31: no overflow.
+    // Right shifts grow with the depth, in [right1, zc]; left shifts are
+    // 2·mirror - right (mirror = zc or 0; |values| < 2^32), so they shrink
+    // with the depth. D2 cuts a left pass at every level but the last (the
+    // deepest at level f - 1), r = 1 at every level, the 980TDi's 交错 at
+    // the even levels. The finishing passes repeat the last rough shift.
+    let left = |right: i64| 2 * mirror - right;
+    let two_levels = d1 < last;
     let (min_shift, max_shift) = match c.infeed {
-        Infeed::LeftRight if d1 < last => (right1, 2 * centre - right1),
-        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => (right1, centre),
-        Infeed::Centre => (centre, centre),
-        Infeed::LeftFlank => (centre, 2 * centre - right1),
-        Infeed::Alternating => {
-            let mut levels = schedule_of(c);
-            let second = levels.next_level().and_then(|_| levels.next_level());
-            (right1, second.map_or(centre, |d2| 2 * centre - flank_shift(d2, c.tool_angle)))
+        Infeed::LeftRight if two_levels => {
+            (right1.min(left(flank_shift(count.penultimate, c.tool_angle))), zc.max(left(right1)))
         }
+        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => (right1, zc),
+        Infeed::Centre => (centre, centre),
+        Infeed::LeftFlank => (left(zc), left(right1)),
+        Infeed::Alternating if two_levels => {
+            let mut levels = schedule_of(c);
+            let d2 = levels.next_level().and_then(|_| levels.next_level()).unwrap_or(last);
+            // The deepest odd (right) and even (left) levels: f and f - 1.
+            let pen = flank_shift(count.penultimate, c.tool_angle);
+            let (odd, even) = if count.passes % 2 == 1 { (zc, pen) } else { (pen, zc) };
+            (right1.min(left(even)), odd.max(left(flank_shift(d2, c.tool_angle))))
+        }
+        Infeed::Alternating => (right1, zc),
     };
     Some(PlanExtremes { shallowest: d1, min_shift, max_shift })
 }
@@ -427,10 +480,15 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     if long_axis == LongAxis::X && c.lead_in > 0 {
         return Err(CycleError::LeadInOnXLongAxis);
     }
-    let rough_passes = check_pass_count(c)?;
+    let count = check_pass_count(c)?;
+    let rough_passes = count.passes;
     let last = c.thread_height - c.finishing_allowance;
-    let centre = flank_shift(last, c.tool_angle);
-    let extremes = plan_extremes(c, last, centre);
+    let zc = flank_shift(last, c.tool_angle);
+    // Readings R-G78CENTRE (G78 r = 0 under B) and R-G78LEFT (left flanks
+    // mirrored about B).
+    let centre = if c.infeed == Infeed::Centre && c.readings.centre_under_b { 0 } else { zc };
+    let mirror = if c.readings.left_mirror_b { 0 } else { zc };
+    let extremes = plan_extremes(c, last, count, zc, centre, mirror);
     let max_shift = extremes.map_or(0, |p| p.max_shift);
     let run_out = run_out_amounts(c.run_out, c.lead, c.units);
     let lead_in = if c.lead_in > 0 { Some((c.lead_in, lead_in_length(c))) } else { None };
@@ -496,6 +554,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     if pass_end == PassEnd::Translated {
         check_coordinate(i128::from(d.z) + i128::from(direction) * i128::from(max_shift), u)?;
     }
+    // Reading R-G78LEFT `mirror-b`: a left pass starts beyond the Z of A,
+    // furthest at the smallest (negative) shift.
+    if let Some(p) = extremes.filter(|p| p.min_shift < 0) {
+        check_coordinate(i128::from(a.z) + i128::from(direction) * i128::from(p.min_shift), u)?;
+    }
     // Reading R-RUNOUT `gsk988-only`: J as written, not clamped at the
     // retract. Z long: furthest out at the end of the shallowest pass; X
     // long: J along Z from the end of the pass towards A (the end at the
@@ -546,6 +609,8 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         tool_angle: c.tool_angle,
         infeed: c.infeed,
         centre,
+        mirror,
+        finish: 0,
         allowance: c.finishing_allowance,
         finishing_passes: c.finishing_passes,
         stage: Stage::Rough { left_pending: false },
@@ -628,7 +693,9 @@ impl G76Moves {
                     // The rough count is at most pass_limit ≤ u32::MAX.
                     self.number = self.number.saturating_add(1);
                     let pass = self.rough(depth, Flank::Left);
-                    return Some((pass, 2 * self.centre - right));
+                    // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
+                    self.finish = 2 * self.mirror - right;
+                    return Some((pass, self.finish));
                 }
                 Stage::Rough { left_pending: false } => {
                     let previous = self.schedule.depth;
@@ -645,10 +712,10 @@ impl G76Moves {
                         Infeed::RightCentre if self.schedule.n % 2 == 0 => (Flank::Centre, self.centre),
                         Infeed::RightCentre => (Flank::Right, right),
                         Infeed::Centre => (Flank::Centre, self.centre),
-                        // centre < 2^31, 0 ≤ right ≤ centre.
-                        Infeed::LeftFlank => (Flank::Left, 2 * self.centre - right),
+                        // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
+                        Infeed::LeftFlank => (Flank::Left, 2 * self.mirror - right),
                         Infeed::Alternating if self.schedule.n % 2 == 0 => {
-                            (Flank::Left, 2 * self.centre - right)
+                            (Flank::Left, 2 * self.mirror - right)
                         }
                         Infeed::Alternating => (Flank::Right, right),
                         Infeed::LeftRight => {
@@ -657,6 +724,7 @@ impl G76Moves {
                             (Flank::Right, right)
                         }
                     };
+                    self.finish = shift;
                     return Some((self.rough(depth, flank), shift));
                 }
                 Stage::Finish => {
@@ -675,7 +743,7 @@ impl G76Moves {
                         cut,
                         flank: Flank::Centre,
                     };
-                    return Some((pass, self.centre));
+                    return Some((pass, self.finish));
                 }
                 Stage::Done => return None,
             }
