@@ -716,18 +716,16 @@ fn d2_levels() {
 }
 
 /// A steep taper (|i| ≥ |W|): X is the long axis; the run-out K runs along X
-/// and J along Z.
+/// and J along Z. Under R-END `travel-i` (every pass travels |i| along X)
+/// and, where the pass is long enough, `parallel` (M68x6's readings).
 #[test]
 fn x_long_axis_with_run_out() {
+    let travel_i = cycleref::CycleReadings::DEFAULT;
     for (taper, run_out) in [
         (-20_000, RunOut::Amounts { short: 1000, long: 2000 }),
         (-20_000, RunOut::Amounts { short: 50_000, long: 0 }),
         (-20_000, RunOut::Chamfer { tenths_of_lead: 10, angle_degrees: 30, long: None }),
-        // K along X within the shortest pass: under R-END `parallel` (the
-        // example's), |i| (|W| - largest shift) / |W| = 10 × (10 - 2.067) /
-        // 10 = 7.933 mm, the largest shift round(3.58 tan 30°) = 2.067 at
-        // the last rough depth k - d = 3.58.
-        (-10_000, RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(7_933) }),
+        (-10_000, RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(10_000) }),
     ] {
         let c = G76Cycle {
             start: Point::new(150_000, 10_000),
@@ -735,11 +733,32 @@ fn x_long_axis_with_run_out() {
             taper,
             finishing_passes: 1,
             run_out,
+            readings: travel_i,
             ..m68x6()
         };
         let moves = same(&c).unwrap();
         assert!(moves.iter().any(|m| m.role == Role::RunOut), "{run_out:?}");
     }
+    // `parallel` (the default): the most shifted pass (2.067 = round(3.58 ·
+    // tan 30°)) travels 10·(10 - 2.067)/10 = 7.933 along X (radius), so K =
+    // 10 is longer than it (R-SHORT), while K = 2 fits.
+    let steep = G76Cycle {
+        start: Point::new(150_000, 10_000),
+        end: Point::new(60_000, 0),
+        taper: -10_000,
+        finishing_passes: 1,
+        run_out: RunOut::Chamfer { tenths_of_lead: 99, angle_degrees: 89, long: Some(10_000) },
+        ..m68x6()
+    };
+    assert_eq!(
+        same(&steep),
+        Err(CycleError::RunOutTooLong {
+            run_out: Length::new(10_000, steep.units),
+            length: Length::new(7_933, steep.units)
+        })
+    );
+    let fits = G76Cycle { run_out: RunOut::Amounts { short: 1000, long: 2000 }, ..steep };
+    assert!(same(&fits).unwrap().iter().any(|m| m.role == Role::RunOut));
     // i > 0 with A outside (s·i > 0): the cut line rises towards A, and J
     // along Z towards A would end in the work (R-XRUNOUT): refused, with
     // or without K; without a run-out the same thread expands.
@@ -755,22 +774,27 @@ fn x_long_axis_with_run_out() {
     let pull_out = G76Cycle { run_out: RunOut::Amounts { short: 1000, long: 0 }, ..up };
     assert_eq!(same(&pull_out), Err(CycleError::RunOutIntoWork { taper: Length::new(20_000, up.units) }));
     assert!(same(&G76Cycle { run_out: RunOut::None, ..up }).is_ok());
-    // K longer than the shortest pass along X: refused. Under R-END
-    // `parallel` (the example's) that pass is |i| (|W| - largest shift) /
-    // |W| = 20 × (10 - 2.067) / 10 = 15.866 mm; K = 15.866 is made.
+    // K longer than |i| (`travel-i`): refused; under `parallel` the most
+    // shifted pass travels 20·(10 - 2.067)/10 = 15.866, the length named.
     let c = G76Cycle {
         start: Point::new(150_000, 10_000),
         end: Point::new(60_000, 0),
         taper: -20_000,
-        run_out: RunOut::Amounts { short: 1, long: 15_867 },
+        run_out: RunOut::Amounts { short: 1, long: 20_001 },
+        readings: travel_i,
         ..m68x6()
     };
     let err = CycleError::RunOutTooLong {
-        run_out: Length::new(15_867, c.units),
-        length: Length::new(15_866, c.units),
+        run_out: Length::new(20_001, c.units),
+        length: Length::new(20_000, c.units),
     };
     assert_eq!(same(&c), Err(err));
-    assert!(same(&G76Cycle { run_out: RunOut::Amounts { short: 1, long: 15_866 }, ..c }).is_ok());
+    let parallel = G76Cycle { readings: m68x6().readings, ..c };
+    let err = CycleError::RunOutTooLong {
+        run_out: Length::new(20_001, c.units),
+        length: Length::new(15_866, c.units),
+    };
+    assert_eq!(same(&parallel), Err(err));
     // A lead-in is refused on an X long axis.
     let c = G76Cycle { lead_in: 100, ..c };
     assert_eq!(same(&c), Err(CycleError::LeadInOnXLongAxis));
