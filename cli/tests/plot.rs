@@ -491,7 +491,7 @@ fn the_legend_names_the_readings_not_the_defaults() {
     let ex = |f: &str| format!("{}/../examples/{f}", env!("CARGO_MANIFEST_DIR"));
     let every: Vec<String> = ["R-RUNOUT=gsk988-only", "R-XRUNOUT=towards-start", "R-E980=signed"]
         .into_iter()
-        .chain(["R-G78LEFT=mirror-b", "R-G78CENTRE=under-b", "R-LEADIN=same-z"])
+        .chain(["R-G78LEFT=mirror-b", "R-G78CENTRE=under-b", "R-LEADIN=whole-leads"])
         .map(String::from)
         .collect();
     for (profile, file) in [
@@ -511,7 +511,11 @@ fn the_legend_names_the_readings_not_the_defaults() {
         assert!(run.status.success(), "{file}: {}", String::from_utf8_lossy(&run.stderr));
         let doc = std::fs::read_to_string(&out).expect("svg");
         let (boxes, width, height) = text_boxes(&doc);
-        assert!(boxes.iter().any(|b| b.text == "readings (not the defaults):"), "{file}: {:?}", boxes.iter().map(|b| &b.text).collect::<Vec<_>>());
+        assert!(
+            boxes.iter().any(|b| b.text == "readings (not the defaults):"),
+            "{file}: {:?}",
+            boxes.iter().map(|b| &b.text).collect::<Vec<_>>()
+        );
         let named: String = boxes.iter().map(|b| b.text.as_str()).collect::<Vec<_>>().join(" ");
         for r in &every {
             assert!(named.contains(r.as_str()), "{file}: {r} not named: {named}");

@@ -41,23 +41,23 @@ pub struct CycleReadings {
     /// (`under-b`).
     pub centre_under_b: bool,
     /// Reading R-LEADIN: the lead-in start An of a pass (E, "X 向旋进距离值")
-    /// is E out along X from Bn and whole leads back along Z when `false`
-    /// (`whole-leads`); E out along X at the Z of Bn when `true` (`same-z`:
+    /// is E out along X at the Z of Bn when `true` (`same-z`, the default:
     /// "快速移动到与切削起点 Bn 距离为 E 的位置"), the screw-in then a thread
-    /// move along X only.
+    /// move along X only; E out along X from Bn and whole leads back along
+    /// Z when `false` (`whole-leads`).
     pub lead_in_same_z: bool,
 }
 
 impl CycleReadings {
     /// The default readings: J clamped on every profile, X-long run-outs
     /// into the work refused, left flanks mirrored about the form's centre
-    /// line, G78's centre line at `zc`, the lead-in whole leads back.
+    /// line, G78's centre line at `zc`, the lead-in at the Z of Bn.
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
         left_mirror_b: false,
         centre_under_b: false,
-        lead_in_same_z: false,
+        lead_in_same_z: true,
     };
 }
 

@@ -24,8 +24,8 @@ use cycleref_spec::reader::G75Call;
 use svg::node::element::{Group, Path, Rectangle, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, num, readings_entry, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
-    FINISH, RAPID, RAPID_DASH,
+    draw_axes, draw_marks, heading, legend, num, ramp, readings_entry, scale_note, unit_name, x_kind,
+    Mapping, Swatch, FINISH, RAPID, RAPID_DASH,
 };
 use crate::format::fixed;
 

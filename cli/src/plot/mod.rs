@@ -56,20 +56,21 @@ const WIDTH: f64 = 1200.0;
 /// Height of one panel (px).
 const PANEL_HEIGHT: f64 = 560.0;
 
-/// Draws the cycles as an SVG document, one panel per cycle.
+/// Draws the cycles as an SVG document, one panel per cycle, for the
+/// program `name`, its legends naming `readings` (those in force that
+/// differ from the defaults).
 ///
 /// # Errors
 ///
 /// A message when there is no cycle to draw or a cycle has no geometry.
 fn svg(
-    name: &str,
+    (name, readings): (&str, &[(&str, &str)]),
     cycles: &[(G76Call<'_>, Vec<Move>)],
     threads: &[(G32Call<'_>, Vec<Move>)],
     g92s: &[(G92Call<'_>, Vec<Move>)],
     lcncs: &[(LinuxCncCall<'_>, Vec<Move>)],
     grooves: &[g75::Groove<'_>],
     overlay: Option<&Overlay>,
-    readings: &[(&str, &str)],
 ) -> Result<String, crate::Failure> {
     if cycles.is_empty() && threads.is_empty() && g92s.is_empty() && lcncs.is_empty() && grooves.is_empty() {
         return Err(crate::Failure::usage(format!(
@@ -350,7 +351,7 @@ pub fn run(
     };
     // The readings the legends name: those the nc output's headings name.
     let readings = crate::job::readings_in_force(&job.machine);
-    let svg = svg(&job.name, &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref(), &readings)?;
+    let svg = svg((&job.name, &readings), &cycles, &threads, &g92s, &lcncs, &grooves, overlay.as_ref())?;
     // Only when cycles were left out by the limit: cycles picked with
     // `--line` are what was asked for.
     let note = (lines.is_empty() && drawn < total).then(|| {

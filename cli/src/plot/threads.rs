@@ -18,8 +18,8 @@ use cycleref_spec::reader::{G32Call, G92Call, LinuxCncCall};
 use svg::node::element::{Circle, Group, Title};
 
 use super::canvas::{
-    draw_axes, draw_marks, heading, legend, line, readings_entry, num, ramp, scale_note, unit_name, x_kind, Mapping, Swatch,
-    POINT, RAPID, RAPID_DASH, RUN_OUT,
+    draw_axes, draw_marks, heading, legend, line, num, ramp, readings_entry, scale_note, unit_name, x_kind,
+    Mapping, Swatch, POINT, RAPID, RAPID_DASH, RUN_OUT,
 };
 
 /// One single-block thread to draw: a G32 or a G92 block and its moves.

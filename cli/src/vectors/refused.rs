@@ -255,7 +255,10 @@ fn out_of_range(rng: &mut Rng) -> Draft {
     }
     let mut lines = g76_program(rng, &ctx, &t, &g);
     if v == 8 {
-        lines = lines.into_iter().map(|l| l.strip_prefix("G76").map_or(l.clone(), |rest| format!("G78{rest}"))).collect();
+        lines = lines
+            .into_iter()
+            .map(|l| l.strip_prefix("G76").map_or(l.clone(), |rest| format!("G78{rest}")))
+            .collect();
     }
     Draft::new(ctx, lines).described(format!("G76 with a value outside its range: {what}"))
 }

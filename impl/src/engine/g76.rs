@@ -368,7 +368,14 @@ struct PlanExtremes {
 /// The [`PlanExtremes`] of a cycle whose pass count has been checked:
 /// `count` from [`check_pass_count`], `zc` the shift of the last level,
 /// `centre` the centre passes' and `mirror` the left flanks' mirror line.
-fn plan_extremes(c: &G76Cycle, last: i64, count: PassCount, zc: i64, centre: i64, mirror: i64) -> Option<PlanExtremes> {
+fn plan_extremes(
+    c: &G76Cycle,
+    last: i64,
+    count: PassCount,
+    zc: i64,
+    centre: i64,
+    mirror: i64,
+) -> Option<PlanExtremes> {
     if last <= 0 {
         // No rough level: the finishing passes (if any) at depth k and the
         // shift of the last rough pass, none: 0.
