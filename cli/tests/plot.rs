@@ -491,7 +491,7 @@ fn the_legend_names_the_readings_not_the_defaults() {
     let ex = |f: &str| format!("{}/../examples/{f}", env!("CARGO_MANIFEST_DIR"));
     let every: Vec<String> = ["R-RUNOUT=gsk988-only", "R-XRUNOUT=towards-start", "R-E980=signed"]
         .into_iter()
-        .chain(["R-G78LEFT=mirror-b", "R-G78CENTRE=under-b", "R-LEADIN=same-z"])
+        .chain(["R-G78LEFT=mirror-b", "R-G78CENTRE=under-b", "R-LEADIN=whole-leads"])
         .map(String::from)
         .collect();
     for (profile, file) in [

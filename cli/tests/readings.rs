@@ -35,7 +35,7 @@ fn readings_lists_one_line_per_reading() {
     let ids: Vec<&str> = gsk988.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
     assert_eq!(ids, ["R-XRUNOUT", "R-END", "R-LONG988", "R-G78LEFT", "R-G78CENTRE", "R-LEADIN"], "{gsk988}");
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
-    assert!(gsk988.contains("R-LEADIN\twhole-leads* | same-z\t[gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
 }
 
 #[test]
@@ -188,7 +188,7 @@ fn long_axis_table_refuses_plain_blocks() {
 /// (spec/tests/readings.rs works the same programs by hand): G78 r = 0
 /// under B cuts at Z5 (the Z of A), not at zc = 0.462 from it; the lead-in
 /// E0.5 under `same-z` starts at X31 on Bn's Z5 and screws in along X
-/// only, instead of a lead (F2) back at Z7.
+/// only (the default), or under `whole-leads` a lead (F2) back, at Z7.
 #[test]
 fn g78_centre_and_lead_in_readings_in_the_nc_output() {
     let g78 = "M3 S300\nG00 X40 Z5\nG78 P010060 Q0.1 R0.2\nG78 X30 Z-20 P1 Q0.5 F2\nM30\n";
@@ -209,14 +209,22 @@ fn g78_centre_and_lead_in_readings_in_the_nc_output() {
     let g76 = "M3 S300\nG00 X40 Z5\nG76 P010000 Q0.1 R0 E0.5\nG76 X30 Z-20 P1 Q1 F2\nM30\n";
     let prog = common::tmp("readings-g78", "g76.nc", g76);
     let p = prog.to_str().expect("utf-8");
-    let default = common::stdout(&["expand", "--profile", "gsk988", p]);
-    assert!(default.contains("G00 X31.000 Z7.000\nG32 X30.000 Z5.000 F2.0\n"), "{default}");
-    let same_z = common::stdout(&["expand", "--profile", "gsk988", "--reading", "R-LEADIN=same-z", p]);
+    let same_z = common::stdout(&["expand", "--profile", "gsk988", p]);
     assert!(same_z.contains("G00 X31.000 Z5.000\nG32 X30.000 Z5.000 F2.0\nG32 X30.000 Z-20.000"), "{same_z}");
+    let whole = common::stdout(&["expand", "--profile", "gsk988", "--reading", "R-LEADIN=whole-leads", p]);
+    assert!(whole.contains("G00 X31.000 Z7.000\nG32 X30.000 Z5.000 F2.0\n"), "{whole}");
     // `check` of that expansion under the same reading agrees.
-    let trace = common::tmp("readings-g78", "trace.nc", &same_z);
+    let trace = common::tmp("readings-g78", "trace.nc", &whole);
     let t = trace.to_str().expect("utf-8");
-    let text =
-        common::stdout(&["check", "--profile", "gsk988", "--reading", "R-LEADIN=same-z", "--trace", t, p]);
-    assert!(text.starts_with("AGREE") && text.contains("\nreadings: R-LEADIN=same-z\n"), "{text}");
+    let text = common::stdout(&[
+        "check",
+        "--profile",
+        "gsk988",
+        "--reading",
+        "R-LEADIN=whole-leads",
+        "--trace",
+        t,
+        p,
+    ]);
+    assert!(text.starts_with("AGREE") && text.contains("\nreadings: R-LEADIN=whole-leads\n"), "{text}");
 }

@@ -282,7 +282,9 @@ pub enum CycleError {
         length: Length,
     },
     /// Lead-in E on a thread whose long axis is X: the manual defines E as
-    /// an X distance, which cannot screw in along an X long axis.
+    /// an X distance, and no page shows a lead-in on a steep taper (reading
+    /// R-LEADIN, under either value: along X, the screw-in would run
+    /// against the cut where the taper falls towards A).
     LeadInOnXLongAxis,
     /// More rough passes than [`crate::g76::G76Cycle::pass_limit`].
     TooManyPasses {

@@ -74,19 +74,22 @@ pub struct CycleReadings {
     /// (`under-b`).
     pub centre_under_b: bool,
     /// Reading R-LEADIN: the lead-in start An of a pass (E, "X 向旋进距离值")
-    /// is E out along X from Bn and whole leads back along Z when `false`
-    /// (`whole-leads`); E out along X at the Z of Bn when `true` (`same-z`:
+    /// is E out along X at the Z of Bn when `true` (`same-z`, the default:
     /// "快速移动到与切削起点 Bn 距离为 E 的位置"), the screw-in then a thread
-    /// move along X only.
+    /// move along X only; E out along X from Bn and whole leads back along
+    /// Z when `false` (`whole-leads`).
     pub lead_in_same_z: bool,
 }
 
 impl CycleReadings {
-    /// The readings of the cycles before issue 34: J clamped on every
-    /// profile, X-long run-outs into the work refused, X travelling i on
-    /// every pass (R-END `travel-i`), the long axis by the displacements,
+    /// The readings a typed cycle built without the reader takes, the same
+    /// on every profile: J clamped, X-long run-outs into the work refused,
+    /// X travelling i on every pass (R-END `travel-i`) and the long axis by
+    /// the displacements (both the readings before issue 34: the reader
+    /// resolves each profile's own, `parallel`, and `table` on gsk988),
     /// left flanks mirrored about the form's centre line, G78's centre line
-    /// at `zc`, the lead-in whole leads back.
+    /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
+    /// every profile).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -94,7 +97,7 @@ impl CycleReadings {
         long_axis_by_table: false,
         left_mirror_b: false,
         centre_under_b: false,
-        lead_in_same_z: false,
+        lead_in_same_z: true,
     };
 }
 

@@ -259,10 +259,16 @@ fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(i64, i64)> 
     (j != 0).then_some((j, k))
 }
 
-/// The reference's `lead_in_length` (reading R-LEADIN).
+/// The reference's `lead_in_length` (reading R-LEADIN): 0 under `same-z`
+/// (the default), whole leads under `whole-leads`. (The other readings are
+/// restated at their defaults only: the harnesses make their cycles under
+/// `CycleReadings::DEFAULT`.)
 ///
 /// Twin: `spec/src/g76.rs`, `lead_in_length`.
 fn lead_in_length(c: &G76Cycle) -> i64 {
+    if c.readings.lead_in_same_z {
+        return 0;
+    }
     let lead = c.lead.increments_per_rev(c.units);
     let e = i128::from(c.lead_in);
     let n = i128::try_from(lead.num).unwrap_or(i128::MAX);

@@ -66,7 +66,9 @@ pub const INFEED_MODES: [(i64, &str); 6] =
 /// stay symbolic, since they decide which moves are dropped as empty (the
 /// counterexample of issue 32 needed a = 95°, a lead-in, a taper, an I lead
 /// and inch radius together; with a = 60° no pass of the window loses its
-/// approach: `tests/kani_windows.rs` found the cover unreachable).
+/// approach: `tests/kani_windows.rs` found the cover unreachable). Since the
+/// lead-in starts at Bn's Z (R-LEADIN `same-z`, issue 34), an approach is
+/// dropped where a pass has no shift (a = 0) and X_Bn + E is X of A.
 #[must_use]
 pub const fn depth_window(infeed: i64) -> Domain {
     Domain { infeed: (infeed, infeed), chamfer: (5, 5), chamfer_angle: (45, 45), ..G76_WINDOW }

@@ -801,12 +801,24 @@ fn x_long_axis_with_run_out() {
 }
 
 /// A lead-in with an I lead (threads per inch: the lead is not a
-/// terminating decimal in mm): the screw-in is a whole number of leads.
+/// terminating decimal in mm): under R-LEADIN `whole-leads` the screw-in is
+/// a whole number of leads; under `same-z` (the default) it runs along X
+/// alone, whatever the lead.
 #[test]
 fn lead_in_with_i_lead() {
     // 7 threads per inch: 25.4 / 7 = 3.628571… mm; E = 5 mm needs two leads,
     // 7.257142… → 7.257 mm.
-    let c = G76Cycle { lead: Lead { word: LeadWord::I, mantissa: 7, scale: 0 }, lead_in: 5000, ..m68x6() };
+    let whole_leads = cycleref::CycleReadings { lead_in_same_z: false, ..cycleref::CycleReadings::DEFAULT };
+    let c = G76Cycle {
+        lead: Lead { word: LeadWord::I, mantissa: 7, scale: 0 },
+        lead_in: 5000,
+        readings: whole_leads,
+        ..m68x6()
+    };
+    // Same Z: An = (Bn's X + 2·5, Bn's Z).
+    let same_z = same(&G76Cycle { readings: cycleref::CycleReadings::DEFAULT, ..c }).unwrap();
+    assert_eq!(same_z[0].to, Point::new(64_400 + 2 * 5000, 10_000 - 1039));
+    assert_eq!(same_z[1].to, Point::new(64_400, 10_000 - 1039));
     let moves = same(&c).unwrap();
     let first = &moves[..2];
     assert_eq!(first[0].role, Role::Approach);

@@ -226,18 +226,23 @@ fn p4_kani_window_reaches_every_cover() {
 }
 
 /// The counterexample of issue 32 to P1 over its own Kani window: k = 6,
-/// Δd = 2, Δdmin = 1, d = 2, m = 1, a = 95, centre infeed, equal depths,
-/// towards +Z, taper 3, |W| = 32, run-out J0 K4, E = 3, lead I2540, IS-B
-/// inch radius X. The first pass's approach has no length and is dropped
+/// Δd = 2, Δdmin = 1, d = 2, m = 1, centre infeed, equal depths, towards
+/// +Z, taper 3, |W| = 32, run-out J0 K4, E = 3, lead I2540, IS-B inch
+/// radius X. The first pass's approach has no length and is dropped
 /// (R-ZERO), so a pass finder keyed on the approach lost pass 1 and P1
 /// failed on "cut annotation" (2 against 4). Every harness that walks the
-/// passes runs on it.
+/// passes runs on it. The lead-in start An = (X_B1 + E, Z_B1) (R-LEADIN
+/// `same-z`, the default since issue 34) is A: X_B1 = X_C + (k - 2), that
+/// is X_C + 4, and with E = 3 that is X_C + 7, the crest plus one, X_A;
+/// a = 0 puts B1 at Z_A. (Issue 32 found it with a = 95 under
+/// `whole-leads`: the centre shift zc = round(4·tan 47.5°) = 4 equal to the
+/// lead back.)
 const APPROACH_DROPPED: Domain = Domain {
     height: (6, 6),
     first_depth: (2, 2),
     min_cut: (1, 1),
     allowance: (2, 2),
-    tool_angle: (95, 95),
+    tool_angle: (0, 0),
     finishing: (1, 1),
     infeed: (3, 3),
     depth_mode: (0, 0),

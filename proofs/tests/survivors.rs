@@ -483,11 +483,11 @@ fn g92_b_at_the_end_of_the_range() {
 /// not even a lead-in start beyond the range tables (reading R-RANGE looks
 /// at the first planned pass, and there is none). With one finishing pass
 /// the same lead-in start is refused. A (50.000, 999 000.000), D (40.000,
-/// 998 000.000) in IS-B increments: W = -1 000 000, t = -1; F2 = 2 000
-/// increments a revolution, E = 1 000 000: ceil(10^6 / 2 000) = 500
-/// leads, 1 000 000 long; the tool angle 0 gives the finishing pass the
-/// shift 0, so its lead-in starts at Z = 999 000 000 + 1 000 000 =
-/// 1 000 000 000 > 999 999 999.
+/// 998 000.000) in IS-B increments: W = -1 000 000, t = -1; under R-LEADIN
+/// `whole-leads` F2 = 2 000 increments a revolution, E = 1 000 000:
+/// ceil(10^6 / 2 000) = 500 leads, 1 000 000 long; the tool angle 0 gives
+/// the finishing pass the shift 0, so its lead-in starts at Z = 999 000 000
+/// + 1 000 000 = 1 000 000 000 > 999 999 999.
 #[test]
 fn a_cycle_without_passes_checks_no_lead_in() {
     let _serial = serial();
@@ -496,6 +496,7 @@ fn a_cycle_without_passes_checks_no_lead_in() {
         finishing_allowance: 1_000,
         finishing_passes,
         lead_in: 1_000_000,
+        readings: cycleref::CycleReadings { lead_in_same_z: false, ..cycleref::CycleReadings::DEFAULT },
         ..g76_cycle(Point::new(50_000, 999_000_000), Point::new(40_000, 998_000_000), 0, RunOut::None)
     };
     let moves: Vec<_> = cycleref::expand_g76(&c(0)).expect("nothing to cut, nothing refused").collect();

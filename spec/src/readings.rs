@@ -108,14 +108,16 @@ pub enum G78Centre {
 /// Reading R-LEADIN: where the lead-in (旋进, E) starts.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum LeadIn {
-    /// `whole-leads` (default): E out along X from Bn and the smallest
-    /// whole number of leads not shorter than E back along Z; the screw-in
-    /// runs along Z, the long axis, in phase with a pass without lead-in.
+    /// `same-z` (default): E out along X at the Z of Bn, as seed 000 and
+    /// the 988TA say ("快速移动到与切削起点 Bn 距离为 E 的位置", E "X 向旋进距离
+    /// 值"); the screw-in is a thread move along X only.
     #[default]
-    WholeLeads,
-    /// `same-z`: E out along X at the Z of Bn ("与切削起点 Bn 距离为 E 的位置",
-    /// E "X 向旋进距离值"); the screw-in is a thread move along X only.
     SameZ,
+    /// `whole-leads`: E out along X from Bn and the smallest whole number
+    /// of leads not shorter than E back along Z (the default before issue
+    /// 34); the screw-in runs along Z, in phase with a pass without
+    /// lead-in, but An is not at the distance E from Bn.
+    WholeLeads,
 }
 
 /// The readings chosen for a machine. [`Readings::default`] is the
@@ -333,12 +335,12 @@ pub const TABLE: &[ReadingEntry] = &[
         point: "where the lead-in E starts (旋进)",
         values: &[
             ReadingValue {
-                name: "whole-leads",
-                source: "E out along X, whole leads back along Z: the screw-in along the long axis, in phase",
-            },
-            ReadingValue {
                 name: "same-z",
                 source: "\"与切削起点 Bn 距离为 E 的位置\", E \"X 向旋进距离值\": E out along X at Bn's Z",
+            },
+            ReadingValue {
+                name: "whole-leads",
+                source: "E out along X, whole leads back along Z (no page gives a Z length): in phase, An not E from Bn",
             },
         ],
         profiles: GSK_G78,
@@ -375,8 +377,8 @@ impl Readings {
                 G78Centre::UnderB => "under-b",
             },
             "R-LEADIN" => match self.lead_in {
-                LeadIn::WholeLeads => "whole-leads",
                 LeadIn::SameZ => "same-z",
+                LeadIn::WholeLeads => "whole-leads",
             },
             _ => return None,
         };
@@ -418,8 +420,8 @@ impl Readings {
             ("R-G78LEFT", "mirror-b") => self.g78_left = G78Left::MirrorB,
             ("R-G78CENTRE", "form-centre") => self.g78_centre = G78Centre::FormCentre,
             ("R-G78CENTRE", "under-b") => self.g78_centre = G78Centre::UnderB,
-            ("R-LEADIN", "whole-leads") => self.lead_in = LeadIn::WholeLeads,
             ("R-LEADIN", "same-z") => self.lead_in = LeadIn::SameZ,
+            ("R-LEADIN", "whole-leads") => self.lead_in = LeadIn::WholeLeads,
             _ => return Err(bad()),
         }
         Ok(())

@@ -319,11 +319,14 @@ fn infeed_d1_right_centre() {
     );
 }
 
-/// Lead-in E (旋进) on the M68x6 thread: E = 0.5, lead 6: the smallest whole
-/// number of leads not shorter than E is 1, so the screw-in is 6.000 long
-/// along Z (reading R-LEADIN). Pass 1: Bn = (64.400, 8.961), so An =
-/// (64.400 + 2 × 0.5, 8.961 + 6) = (65.400, 14.961): a rapid to An, then a
-/// thread move (synchronised) to Bn, then the cut (not synchronised again).
+/// Lead-in E (旋进) on the M68x6 thread: E = 0.5 (radius), the lead-in
+/// start "与切削起点 Bn 距离为 E 的位置", E out along X at Bn's Z (reading
+/// R-LEADIN, `same-z`). Pass 1: D1 = 1.8, Bn = (60.64 + 2 × (3.68 - 1.8),
+/// 10 - round(1.8 × tan 30°)) = (64.400, 10 - 1.039) = (64.400, 8.961), so
+/// An = (64.400 + 2 × 0.5, 8.961) = (65.400, 8.961): a rapid to An, then a
+/// thread move (synchronised) along X to Bn, then the cut (not
+/// synchronised again). (Under `whole-leads`, 1 lead of 6 back: An =
+/// (65.400, 14.961).)
 #[test]
 fn lead_in_screws_in_over_one_lead() {
     let moves = expand_text(
@@ -332,7 +335,7 @@ fn lead_in_screws_in_over_one_lead() {
     let first: Vec<String> = render(&moves[..4], 3);
     assert_eq!(
         first,
-        vec!["G00 X65.400 Z14.961", "G32 X64.400 Z8.961", "G32 X64.400 Z-59.000", "G32 X70.400 Z-62.000"]
+        vec!["G00 X65.400 Z8.961", "G32 X64.400 Z8.961", "G32 X64.400 Z-59.000", "G32 X70.400 Z-62.000"]
     );
     let syncs: Vec<bool> =
         moves[..4].iter().map(|m| matches!(m.motion, Motion::Thread { sync: true, .. })).collect();

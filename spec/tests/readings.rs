@@ -173,7 +173,7 @@ fn negative_e_refused_by_default() {
 /// R-E980 `signed`: the range wins and E, having no direction ("无符号"),
 /// is its magnitude (as 980TDi G92 note 10 for J and K: "J、K输入负值时，按
 /// 正值处理"): E-1 cuts exactly the passes of E1 (R-LEADIN: each pass
-/// screws in from 1 mm (radius) outside Bn, whole leads back in Z).
+/// screws in from 1 mm (radius) outside Bn, at its Z).
 #[test]
 fn negative_e_is_its_magnitude_under_signed() {
     let m = machine(ProfileName::Gsk980, &["R-E980=signed"]);
@@ -181,12 +181,16 @@ fn negative_e_is_its_magnitude_under_signed() {
     let positive = run(&g78_with_e("1"), &machine(ProfileName::Gsk980, &[])).unwrap();
     assert_eq!(negative, positive);
     assert!(negative.iter().any(|m| m.role == Role::LeadIn));
-    // The first pass's lead-in start: X of B1 + 2·1, whole leads (F3) back
-    // in Z: E = 1 <= 1 lead, so Z10 + 3 = Z13.
+    // The first pass's lead-in start: X of B1 + 2·1 at B1's Z (R-LEADIN
+    // `same-z`); under `whole-leads`, E = 1 <= 1 lead (F3): Z + 3.
     let approach = negative[0].to;
     let lead_in_end = negative[1].to;
     assert_eq!(approach.x - lead_in_end.x, 2_000);
-    assert_eq!(approach.z - lead_in_end.z, 3_000);
+    assert_eq!(approach.z, lead_in_end.z);
+    let whole =
+        run(&g78_with_e("-1"), &machine(ProfileName::Gsk980, &["R-E980=signed", "R-LEADIN=whole-leads"]))
+            .unwrap();
+    assert_eq!(whole[0].to.z - whole[1].to.z, 3_000);
 }
 
 /// R-E980 concerns the 980TDi only: the 988TA's E stays unsigned.
@@ -311,9 +315,9 @@ fn g78_centre_under_b() {
 /// Δd = 1, d = 0: one rough pass at depth 1 and one finishing pass at k,
 /// both from Bn = (X30, Z5); r = 0: no run-out. E = 0.5 (radius): the
 /// lead-in starts at X30 + 2·0.5 = X31.
-/// `whole-leads` (default): N = ceil(0.5 / 2) = 1 lead, Lz = 2: An = (X31,
-/// Z5 + 2) = (X31, Z7). `same-z`: An = (X31, Z5), and the screw-in to Bn
-/// is a thread move along X only.
+/// `same-z` (default): An = (X31, Z5), "与切削起点 Bn 距离为 E 的位置", and the
+/// screw-in to Bn is a thread move along X only. `whole-leads`: N =
+/// ceil(0.5 / 2) = 1 lead, Lz = 2: An = (X31, Z5 + 2) = (X31, Z7).
 #[test]
 fn lead_in_at_the_z_of_bn() {
     let src = "M3 S300\nG00 X40 Z5\nG76 P010000 Q0.1 R0 E0.5\nG76 X30 Z-20 P1 Q1 F2\nM30\n";
@@ -326,10 +330,11 @@ fn lead_in_at_the_z_of_bn() {
             (Role::Return, Point::new(40_000, 5_000)),
         ]
     };
-    let default = run(src, &machine(ProfileName::Gsk988, &[])).unwrap();
-    let whole = pass(Point::new(31_000, 7_000));
-    assert_eq!(ends(&default), [whole, whole].concat());
-    let same = run(src, &machine(ProfileName::Gsk988, &["R-LEADIN=same-z"])).unwrap();
+    let whole = run(src, &machine(ProfileName::Gsk988, &["R-LEADIN=whole-leads"])).unwrap();
+    let back = pass(Point::new(31_000, 7_000));
+    assert_eq!(ends(&whole), [back, back].concat());
+    let same = run(src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(same, run(src, &machine(ProfileName::Gsk988, &["R-LEADIN=same-z"])).unwrap());
     let at_bn = pass(Point::new(31_000, 5_000));
     assert_eq!(ends(&same), [at_bn, at_bn].concat());
     assert!(matches!(same[1].motion, cycleref::Motion::Thread { sync: true, .. }));

@@ -143,7 +143,9 @@ impl Panels {
     }
 }
 
-/// Draws the cycles as an SVG document, one panel per cycle.
+/// Draws the cycles as an SVG document, one panel per cycle, for the
+/// program `name`, its legends naming `readings` (those in force that
+/// differ from the defaults).
 ///
 /// # Errors
 ///

@@ -52,7 +52,7 @@
 //!   run-out X ends lie between the cut line and A. All far inside `i64`.
 //! * Z: `|W| = |Z(D) - Z(A)| < 2^31`; Z shifts are `round(D tan(a/2))` with
 //!   `tan(49.5°) < 1.18`, so `|shift| < 2^31` and a D2 left shift
-//!   `2 zc - z < 2^32`; lead-in length is checked against the range before
+//!   `2 zc - z < 2^32` (`-z > -2^31` under R-G78LEFT `mirror-b`); lead-in length is checked against the range before
 //!   any point uses it.
 //! * `Δd² n` is `u128`: `Δd² < 2^60` and `n ≤ pass_limit + 1 ≤ 2^32` in the
 //!   up-front count, `n ≤ k - d < 2^30` while iterating, so `Δd² n < 2^92`.
@@ -538,7 +538,9 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     // and C, so X of C and the lead-in start are the extremes. The lead-in
     // start is furthest out on the shallowest pass, and on Z at the
     // smallest shift. Sums of values below 2^33, in i128. Every pass's
-    // shift is below |W| (checked above), so its Z lies between A and D.
+    // shift is below |W| (checked above), so its Z lies between A and D,
+    // or, under R-G78LEFT `mirror-b`, beyond A by at most zc (checked
+    // below).
     check_coordinate(i128::from(c_x), u)?;
     if let (Some((e, lz)), Some(p)) = (lead_in, extremes) {
         let out = i128::from(side * xf);
