@@ -159,7 +159,8 @@ use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
 use tail::{Leg, LegKind, TailBuilder, TAIL};
 
 use crate::engine::arith::saturate_i64;
-use crate::engine::real::FAST;
+use crate::engine::approx::Approx;
+use crate::engine::linuxcnc::FastPathStats;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
 use crate::moves::{Motion, Move, Role};
@@ -187,8 +188,12 @@ pub struct G75Moves {
     frame: Frame,
     /// The words in the local frame (a layer's plunge range needs them).
     geometry: Geometry,
-    /// The roughing region's boundaries at 128 bits.
-    region: Region<FAST>,
+    /// The roughing region's boundaries on the fast path (R-FASTPATH;
+    /// `None` when it is off): a layer's plunge range falls back to 128
+    /// and 512 bits from `geometry`.
+    region: Option<Region<Approx>>,
+    /// The values decided so far and the fast path's fallbacks.
+    stats: FastPathStats,
     /// Which part of the path comes next.
     stage: Stage,
     /// Step 1, the rapid to A11, unless the tool is there already.
@@ -221,7 +226,24 @@ pub struct G75Moves {
 ///
 /// Twin: `spec/src/g75/mod.rs`, `expand`.
 pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
-    let mut ev = Evaluator::checked(c)?;
+    expand(c, true)
+}
+
+/// [`expand_g75`] with the fast path off: every value decided by the
+/// interval arithmetic alone (128 bits, then 512), as before issue 33. The
+/// same result by construction (reading R-FASTPATH); kept for the tests and
+/// benchmarks that compare the two paths.
+///
+/// # Errors
+///
+/// Those of [`expand_g75`].
+pub fn expand_g75_exact(c: &G75Cycle) -> Result<G75Moves, CycleError> {
+    expand(c, false)
+}
+
+/// [`expand_g75`], the fast path on or off.
+fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
+    let mut ev = Evaluator::checked(c, fast_path)?;
     let g = ev.g;
     let frame = Frame::new(c);
 
@@ -352,7 +374,8 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     Ok(G75Moves {
         frame,
         geometry: g,
-        region: ev.fast.r,
+        region: ev.quick.map(|q| q.r),
+        stats: ev.stats,
         stage: Stage::Approach,
         approach,
         roughs,
@@ -403,3 +426,13 @@ impl Iterator for G75Moves {
 }
 
 impl FusedIterator for G75Moves {}
+
+impl G75Moves {
+    /// How many values this expansion has decided so far (up front, and
+    /// for each layer reached) and how many of them the fast path left to
+    /// the interval arithmetic (reading R-FASTPATH).
+    #[must_use]
+    pub fn fast_path_stats(&self) -> FastPathStats {
+        self.stats
+    }
+}

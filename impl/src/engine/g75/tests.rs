@@ -9,6 +9,8 @@ use core::cmp::Ordering;
 
 use super::exact::{plunges_at, Enclosures, Evaluator, Geometry, Quantity};
 use super::*;
+use crate::engine::approx::Approx;
+use crate::engine::linuxcnc::FastPathStats;
 use crate::engine::real::{Interval, Rounding, SLOW};
 use crate::error::{Field, GrooveEdge};
 use crate::g75::{corner, Corner, CornerKind, PathType, MAX_PECKS};
@@ -460,15 +462,17 @@ fn tie_values_are_decided() {
     let c = slope_example();
     let g = Geometry::new(&c);
     // The 512-bit enclosures alone leave both floors open ...
-    let slow = Enclosures::<SLOW>::new(&g);
+    let slow = Enclosures::<Interval<SLOW>>::new(&g);
     assert_eq!(slow.eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     assert_eq!(slow.eval(&g, Quantity::Right(6_000)).round(Rounding::Floor), None);
     // ... and R-G75TIE decides them on the boundary.
-    let mut ev = Evaluator::new(g);
+    let mut ev = Evaluator::new(g, false);
     assert_eq!(ev.floor(Quantity::YK1), Ok(8_150));
     assert_eq!(ev.floor(Quantity::Right(6_000)), Ok(8_900));
     assert_eq!(ev.plunges(6_000), Ok((1_833, 6_400)));
-    assert_eq!(plunges_at(&g, &ev.fast.r, 6_000), Some((1_833, 6_400)));
+    assert_eq!(plunges_at(&g, None, 6_000, &mut FastPathStats::default()), Some((1_833, 6_400)));
+    let quick = Enclosures::<Approx>::new(&g).r;
+    assert_eq!(plunges_at(&g, Some(&quick), 6_000, &mut FastPathStats::default()), Some((1_833, 6_400)));
     // U0.301 moves K1's depth off the integer (8148.5), the second
     // layer's boundary stays 8900.
     let moves: Vec<Move> = expand_g75(&G75Cycle { allowance_x: 301, ..c }).unwrap().collect();
@@ -578,7 +582,7 @@ fn sixty_degree_round_with_an_integer_k1_depth() {
     };
     let g = Geometry::new(&c);
     // Undecided at 512 bits without the rule.
-    assert_eq!(Enclosures::<SLOW>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
+    assert_eq!(Enclosures::<Interval<SLOW>>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     let p = groove_profile(&c).unwrap();
     assert_eq!(
         p.roughing(),
@@ -616,7 +620,7 @@ fn round_corner_equal_to_the_allowance_is_decided() {
     // The golden square groove with A80: U0.8 and D0.4 (f·ρ = 800 = Δu).
     let c = G75Cycle { flank_a: 800_000, allowance_x: 800, ..square() };
     let g = Geometry::new(&c);
-    assert_eq!(Enclosures::<SLOW>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
+    assert_eq!(Enclosures::<Interval<SLOW>>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     // y_K1 = 6000 − 1600 = 4400; K1 = (ceil(2200·cot 80° + 200) =
     // ceil(587.919…), 4400); y_K4 = 6000 − 800 − 600 − 800·0 = 4600 (B90,
     // exact). R0 (200, 0), K2 (ceil(1064.620…), 5200), K3
@@ -798,9 +802,10 @@ fn slope_groove_invariants() {
     assert!(local(last.at).1 < 0);
     assert_eq!(p.finishing().len(), 8);
     assert_eq!(p.roughing().len(), 6);
-    // The fast and slow contexts agree on every value they decide.
-    let mut ev = Evaluator::new(Geometry::new(&c));
-    let slow = Enclosures::<SLOW>::new(&ev.g);
+    // The fast path (R-FASTPATH) and the slow context agree on every value
+    // they decide.
+    let mut ev = Evaluator::new(Geometry::new(&c), true);
+    let slow = Enclosures::<Interval<SLOW>>::new(&ev.g);
     for q in [
         Quantity::U3,
         Quantity::Y3,
