@@ -272,8 +272,9 @@ impl Approx {
             return Approx::of(Some(v), u128::from(!exact));
         }
         // The quotient's error: (e_a + |a/b|·e_b)/(|b| − e_b), in ulps.
+        // e_a·2^64 (the shift drops bits only when e_a ≥ 2^64, refused).
         let num = (self.e < 1 << 64)
-            .then(|| self.e << 64)
+            .then_some(self.e << 64)
             .and_then(|ea| q.checked_add(1)?.checked_mul(o.e)?.checked_add(ea));
         match num {
             Some(n) => Approx::of(Some(v), n.div_ceil(b - o.e).saturating_add(1)),

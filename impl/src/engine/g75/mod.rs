@@ -158,8 +158,8 @@ use frame::Frame;
 use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
 use tail::{Leg, LegKind, TailBuilder, TAIL};
 
-use crate::engine::arith::saturate_i64;
 use crate::engine::approx::Approx;
+use crate::engine::arith::saturate_i64;
 use crate::engine::linuxcnc::FastPathStats;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
