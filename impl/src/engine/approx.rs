@@ -1,5 +1,5 @@
-//! The fast path of the LinuxCNC G76 engine (issue 33, reading R-FASTPATH
-//! in `docs/INTERPRETATIONS.md`): each value the engine rounds is first
+//! The fast path of the LinuxCNC G76 and G75.1 engines (issue 33, reading
+//! R-FASTPATH in `docs/INTERPRETATIONS.md`): each value an engine rounds is first
 //! computed in 64-bit fixed point with a rigorous bound on its error, and
 //! rounded from there when no rounding boundary lies within the bound
 //! (Ziv's strategy); otherwise the caller falls back to the exact interval
@@ -54,6 +54,15 @@
 //!   below 456, taken as [`EXP_BOUND`] = 1024;
 //! * `n^(a/b) = 2^k · exp(r)`: below `1024 · 2^k` ulps, i.e. a relative
 //!   error below `2^-54`.
+//!
+//! # Sine and cosine ([`sin_cos`], for G75.1)
+//!
+//! The exact cases of `docs/G75.md` §6 exactly; above 45° from the
+//! complement; for `0 < x ≤ π/4` the series `Σ ±x^(2j+s)/(2j+s)!` (j ≤ 10)
+//! in integers, every step truncated, below the exact value's terms by a
+//! sum under 13 ulps (taken as [`SIN_COS_BOUND`] = 16; R-FASTPATH derives
+//! it, `sin_cos_bound_at_its_worst_cases` measures 3). Quotients
+//! ([`Approx::div`]) give tan and cot.
 //!
 //! An exact power (`n = 1` or `a = b`) is an exact integer (bound 0); other
 //! exact powers (`n = r^b`) are enclosed like any value, so that a depth
@@ -587,8 +596,8 @@ fn sin_cos_series(k: u32) -> (Approx, Approx) {
 /// The sine and cosine of `k·0.00005°` with their bounds (R-FASTPATH), the
 /// fast path's [`crate::engine::real::sin_cos`]: the same exact cases
 /// (`docs/G75.md` §6: sin 0, 30°, 90°, cos 0, 60°, 90°, exact), the series
-/// of [`sin_cos_series`] up to 45° and, beyond, `sin x = cos(90° − x)` and
-/// `cos x = sin(90° − x)`. Unknown beyond 90°.
+/// in integers (the module documentation) up to 45° and, beyond, `sin x =
+/// cos(90° − x)` and `cos x = sin(90° − x)`. Unknown beyond 90°.
 #[must_use]
 pub fn sin_cos(k: u32) -> (Approx, Approx) {
     let half = Approx::half();

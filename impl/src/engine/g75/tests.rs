@@ -1308,6 +1308,7 @@ fn formulas_against_floats() {
 #[test]
 fn size_of_the_iterator() {
     let s = core::mem::size_of::<G75Moves>();
+    std::println!("G75Moves: {s} bytes");
     assert!(s <= 2_200, "G75Moves is {s} bytes");
 }
 
