@@ -1,7 +1,8 @@
 //! Differential tests of G75.1: the fixed-point engine (`cycleref::expand_g75`)
 //! against the exact reference model (`cycleref_spec::g75::expand`). For
 //! every generated groove, valid or not, both must give the same alarm or the
-//! same moves, move by move.
+//! same moves, move by move; and the engine gives the same with and
+//! without its fast path (reading R-FASTPATH, `expand_g75_exact`).
 //!
 //! The default run tries 1500 grooves per strategy; the long run (50 000,
 //! release) is ignored by default:
@@ -16,9 +17,11 @@ use cycleref_spec::differ::assert_same_moves;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
-/// Both engines agree on `c`; returns the common result.
-/// The engine's count of layers and plunges, made before its first move
-/// for the `nc` heading, is that of the reference's moves, counted.
+/// Both engines agree on `c`, and the engine with its fast path
+/// (R-FASTPATH) gives what it gives without (`expand_g75_exact`); the
+/// engine's count of layers and plunges, made before its first move for
+/// the `nc` heading, is that of the reference's moves, counted. Returns the
+/// common result.
 fn same(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
     let s = cycleref_spec::g75::expand(c);
     let ours = cycleref::expand_g75(c);
@@ -26,7 +29,11 @@ fn same(c: &G75Cycle) -> Result<Vec<Move>, CycleError> {
         let counted = cycleref_spec::cycles::count_plunges(moves.iter().copied());
         assert_eq!(ours.layers_and_plunges(), counted, "{c:?}");
     }
-    assert_same_moves(&ours.map(Iterator::collect), &s, format_args!("{c:?}"));
+    let fast: Result<Vec<Move>, CycleError> = ours.map(Iterator::collect);
+    assert_same_moves(&fast, &s, format_args!("{c:?}"));
+    let exact: Result<Vec<Move>, CycleError> =
+        cycleref::engine::g75::expand_g75_exact(c).map(Iterator::collect);
+    assert_eq!(fast, exact, "the fast path against the intervals alone: {c:?}");
     s
 }
 

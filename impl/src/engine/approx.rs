@@ -1,5 +1,5 @@
-//! The fast path of the LinuxCNC G76 engine (issue 33, reading R-FASTPATH
-//! in `docs/INTERPRETATIONS.md`): each value the engine rounds is first
+//! The fast path of the LinuxCNC G76 and G75.1 engines (issue 33, reading
+//! R-FASTPATH in `docs/INTERPRETATIONS.md`): each value an engine rounds is first
 //! computed in 64-bit fixed point with a rigorous bound on its error, and
 //! rounded from there when no rounding boundary lies within the bound
 //! (Ziv's strategy); otherwise the caller falls back to the exact interval
@@ -55,6 +55,15 @@
 //! * `n^(a/b) = 2^k · exp(r)`: below `1024 · 2^k` ulps, i.e. a relative
 //!   error below `2^-54`.
 //!
+//! # Sine and cosine ([`sin_cos`], for G75.1)
+//!
+//! The exact cases of `docs/G75.md` §6 exactly; above 45° from the
+//! complement; for `0 < x ≤ π/4` the series `Σ ±x^(2j+s)/(2j+s)!` (j ≤ 10)
+//! in integers, every step truncated, below the exact value's terms by a
+//! sum under 13 ulps (taken as [`SIN_COS_BOUND`] = 16; R-FASTPATH derives
+//! it, `sin_cos_bound_at_its_worst_cases` measures 3). Quotients
+//! ([`Approx::div`]) give tan and cot.
+//!
 //! An exact power (`n = 1` or `a = b`) is an exact integer (bound 0); other
 //! exact powers (`n = r^b`) are enclosed like any value, so that a depth
 //! exactly on K (R-LCNC-TIE) is undecided here and decided by the
@@ -63,7 +72,7 @@
 use core::cmp::Ordering;
 
 use crate::engine::linuxcnc::mul_wide;
-use crate::engine::real::Interval;
+use crate::engine::real::{Interval, Rounding, HALF_TURN, PI_FRACTION, RIGHT};
 
 /// `⌊ln 2 · 2^64⌋`: `ln 2 = 0.B17217F7D1CF79AB C9E3…` (hexadecimal); the
 /// truncation is below `ln 2` by less than one ulp (the test
@@ -163,6 +172,143 @@ impl Approx {
         self.e
     }
 
+    /// True for [`Approx::UNKNOWN`] (or any value whose bound is
+    /// `u128::MAX`): nothing is decided on it, and every operation on it
+    /// gives it again.
+    #[must_use]
+    pub const fn is_unknown(&self) -> bool {
+        self.e == u128::MAX
+    }
+
+    /// The integer `i` (of any `i128`): exact when `|i| < 2^63`, unknown
+    /// beyond.
+    #[must_use]
+    pub fn int_wide(i: i128) -> Approx {
+        match i64::try_from(i) {
+            Ok(i) if i != i64::MIN => Approx::int(i),
+            _ => Approx::UNKNOWN,
+        }
+    }
+
+    /// `1/2`, exactly.
+    #[must_use]
+    pub const fn half() -> Approx {
+        Approx { v: ONE / 2, e: 0 }
+    }
+
+    /// The enclosure `[v − e, v + e]` as its two ends (`None` when unknown
+    /// or when an end overflows).
+    fn ends(&self) -> Option<(i128, i128)> {
+        if self.is_unknown() {
+            return None;
+        }
+        let e = i128::try_from(self.e).ok()?;
+        Some((self.v.checked_sub(e)?, self.v.checked_add(e)?))
+    }
+
+    /// The value enclosed by `[lo, hi]` (`lo ≤ hi`): `v = lo`, `e = hi − lo`.
+    fn from_ends(lo: i128, hi: i128) -> Approx {
+        match hi.checked_sub(lo).and_then(|d| u128::try_from(d).ok()) {
+            Some(e) => Approx::of(Some(lo), e),
+            None => Approx::UNKNOWN,
+        }
+    }
+
+    /// `−self`, exact.
+    #[must_use]
+    pub fn neg(&self) -> Approx {
+        if self.is_unknown() {
+            return Approx::UNKNOWN;
+        }
+        Approx::of(self.v.checked_neg(), self.e)
+    }
+
+    /// `max(self, o)`: the enclosure `[max(lo₁, lo₂), max(hi₁, hi₂)]`
+    /// (as [`Interval::max`]).
+    #[must_use]
+    pub fn max(&self, o: &Approx) -> Approx {
+        match (self.ends(), o.ends()) {
+            (Some((l1, h1)), Some((l2, h2))) => Approx::from_ends(l1.max(l2), h1.max(h2)),
+            _ => Approx::UNKNOWN,
+        }
+    }
+
+    /// `min(self, o)`: the enclosure `[min(lo₁, lo₂), min(hi₁, hi₂)]`
+    /// (as [`Interval::min`]).
+    #[must_use]
+    pub fn min(&self, o: &Approx) -> Approx {
+        match (self.ends(), o.ends()) {
+            (Some((l1, h1)), Some((l2, h2))) => Approx::from_ends(l1.min(l2), h1.min(h2)),
+            _ => Approx::UNKNOWN,
+        }
+    }
+
+    /// `self / o` for a divisor of magnitude at most 1 (`|v_o| ≤ 2^64`)
+    /// that the bound keeps away from 0 (`|v_o| > e_o`); unknown otherwise
+    /// (and when the quotient reaches `2^63`). The quotient `⌊|a|·2^64 /
+    /// |b|⌋` with its sign (truncated, below one ulp; exact when the
+    /// remainder is 0), the bound `⌈(e_a·2^64 + (|q| + 1)·e_b) / (|b| −
+    /// e_b)⌉ + 1` (R-FASTPATH; 0 for an exact quotient of exact values).
+    #[must_use]
+    pub fn div(&self, o: &Approx) -> Approx {
+        if self.is_unknown() || o.is_unknown() {
+            return Approx::UNKNOWN;
+        }
+        let (a, b) = (self.v.unsigned_abs(), o.v.unsigned_abs());
+        if b > 1 << 64 || b <= o.e {
+            return Approx::UNKNOWN;
+        }
+        // |a|·2^64 / |b|, three 64-bit digits (b ≤ 2^64; b = 2^64 is 1).
+        let (q, exact) = if b == 1 << 64 {
+            (a, true)
+        } else {
+            let (hi, lo) = (a >> 64, a & u128::from(u64::MAX));
+            let (q1, r1) = (hi / b, hi % b);
+            let d2 = (r1 << 64) | lo;
+            let (q2, r2) = (d2 / b, d2 % b);
+            let d3 = r2 << 64;
+            let (q3, r3) = (d3 / b, d3 % b);
+            if q1 != 0 || q2 >> 63 != 0 {
+                return Approx::UNKNOWN;
+            }
+            ((q2 << 64) | q3, r3 == 0)
+        };
+        let Ok(m) = i128::try_from(q) else {
+            return Approx::UNKNOWN;
+        };
+        let v = if (self.v < 0) != (o.v < 0) { -m } else { m };
+        if self.e == 0 && o.e == 0 {
+            return Approx::of(Some(v), u128::from(!exact));
+        }
+        // The quotient's error: (e_a + |a/b|·e_b)/(|b| − e_b), in ulps.
+        // e_a·2^64 (the shift drops bits only when e_a ≥ 2^64, refused).
+        let num = (self.e < 1 << 64)
+            .then_some(self.e << 64)
+            .and_then(|ea| q.checked_add(1)?.checked_mul(o.e)?.checked_add(ea));
+        match num {
+            Some(n) => Approx::of(Some(v), n.div_ceil(b - o.e).saturating_add(1)),
+            None => Approx::UNKNOWN,
+        }
+    }
+
+    /// The rounding of every real of the enclosure `[v − e, v + e]`, when it
+    /// is the same for all (as [`Interval::round`] decides on its ends);
+    /// `None` when undecided or unknown.
+    #[must_use]
+    pub fn round(&self, r: Rounding) -> Option<i128> {
+        let (lo, hi) = self.ends()?;
+        let at = |x: i128| -> Option<i128> {
+            match r {
+                Rounding::Floor => Some(x >> 64),
+                // ⌈x⌉ = −⌊−x⌋.
+                Rounding::Ceil => Some(-(x.checked_neg()? >> 64)),
+                Rounding::Nearest => Some(x.checked_add(ONE / 2)? >> 64),
+            }
+        };
+        let (a, b) = (at(lo)?, at(hi)?);
+        (a == b).then_some(a)
+    }
+
     fn of(v: Option<i128>, e: u128) -> Approx {
         match v {
             Some(v) if e != u128::MAX => Approx { v, e },
@@ -185,6 +331,9 @@ impl Approx {
     /// `self · k`, exact.
     #[must_use]
     pub fn mul_int(&self, k: i64) -> Approx {
+        if self.is_unknown() {
+            return Approx::UNKNOWN;
+        }
         Approx::of(self.v.checked_mul(i128::from(k)), self.e.saturating_mul(u128::from(k.unsigned_abs())))
     }
 
@@ -192,7 +341,7 @@ impl Approx {
     /// bound divided and rounded up.
     #[must_use]
     pub fn div_int(&self, k: u64) -> Approx {
-        if k == 0 {
+        if k == 0 || self.is_unknown() {
             return Approx::UNKNOWN;
         }
         if k == 1 {
@@ -205,10 +354,15 @@ impl Approx {
         Approx::of(Some(q), e)
     }
 
-    /// `self · o`: the product truncated towards zero (below one ulp), the
-    /// bound `⌈(|a|·e_b + |b|·e_a + e_a·e_b) / 2^64⌉ + 1`.
+    /// `self · o`: the product truncated towards zero (below one ulp, and
+    /// exact when no bit is cut), the bound `⌈(|a|·e_b + |b|·e_a + e_a·e_b)
+    /// / 2^64⌉ + 1`, without the 1 when the product of the values is exact
+    /// (so an exact 0 factor gives an exact 0).
     #[must_use]
     pub fn mul(&self, o: &Approx) -> Approx {
+        if self.is_unknown() || o.is_unknown() {
+            return Approx::UNKNOWN;
+        }
         let (ma, mb) = (self.v.unsigned_abs(), o.v.unsigned_abs());
         let (hi, lo) = mul_wide(ma, mb);
         if hi >> 64 != 0 {
@@ -225,7 +379,7 @@ impl Approx {
             mul_up(ma, o.e)
                 .saturating_add(mul_up(mb, self.e))
                 .saturating_add(mul_up(self.e, o.e))
-                .saturating_add(1)
+                .saturating_add(u128::from(!exact))
         };
         Approx::of(Some(v), e)
     }
@@ -395,6 +549,104 @@ fn power_inexact(n: u64, a: u32, b: u32) -> Option<Approx> {
     Some(Approx { v, e })
 }
 
+/// `⌊π·2^64⌋`: 3 and the first 64 fraction bits of [`PI_FRACTION`] (below
+/// π by less than one ulp).
+const PI: u128 = (3 << 64) | PI_FRACTION[0] as u128;
+
+/// The bound of [`sin_cos`]'s series values, in ulps of `2^-64`
+/// (R-FASTPATH: below 13).
+pub const SIN_COS_BOUND: u128 = 16;
+
+/// Terms of the sine and cosine series: `j = 0 … TRIG_TERMS − 1`.
+const TRIG_TERMS: u64 = 11;
+
+/// 45° in the angle unit of [`crate::engine::real`] (0.00005°).
+const EIGHTH: u32 = RIGHT / 2;
+
+/// `sin x` and `cos x` of `x = k·π/3 600 000` for `0 < k ≤ 900 000` (0° to
+/// 45°), each below the exact value's magnitude terms by a sum the bound
+/// [`SIN_COS_BOUND`] covers (R-FASTPATH: below 13 ulps).
+///
+/// `X = ⌊⌊π·2^64⌋·k / 3 600 000⌋` (below `x` by < 1.25 ulps), `Q =
+/// ⌊X²/2^64⌋` (below `x²` by < 3), the terms `T_j = ⌊⌊T_(j−1)·Q/2^64⌋ /
+/// ((2j + s − 1)(2j + s))⌋` from `T_0 = X` (sine, s = 1) or `2^64` (cosine,
+/// s = 0), summed with alternating signs.
+fn sin_cos_series(k: u32) -> (Approx, Approx) {
+    // X < π/4 · 2^64 < 2^64: every product below fits a u128.
+    let x = PI * u128::from(k) / u128::from(HALF_TURN);
+    let q = (x * x) >> 64;
+    let series = |first: u128, s: u64| -> Option<Approx> {
+        let (mut term, mut sum) = (first, i128::try_from(first).ok()?);
+        let mut loops = crate::loop_counters::count!(REAL_SERIES);
+        for j in 1..TRIG_TERMS {
+            loops.tick();
+            let a = 2 * j + s - 1;
+            // term ≤ 2^64, q < 2^64: the product fits.
+            term = ((term * q) >> 64) / u128::from(a * (a + 1));
+            let t = i128::try_from(term).ok()?;
+            sum = if j % 2 == 1 { sum - t } else { sum + t };
+        }
+        Some(Approx::new(sum, SIN_COS_BOUND))
+    };
+    let sin = series(x, 1).unwrap_or(Approx::UNKNOWN);
+    let cos = series(1 << 64, 0).unwrap_or(Approx::UNKNOWN);
+    (sin, cos)
+}
+
+/// The sine and cosine of `k·0.00005°` with their bounds (R-FASTPATH), the
+/// fast path's [`crate::engine::real::sin_cos`]: the same exact cases
+/// (`docs/G75.md` §6: sin 0, 30°, 90°, cos 0, 60°, 90°, exact), the series
+/// in integers (the module documentation) up to 45° and, beyond, `sin x =
+/// cos(90° − x)` and `cos x = sin(90° − x)`. Unknown beyond 90°.
+#[must_use]
+pub fn sin_cos(k: u32) -> (Approx, Approx) {
+    let half = Approx::half();
+    match k {
+        0 => (Approx::int(0), Approx::int(1)),
+        600_000 => (half, sin_cos_series(k).1),
+        1_200_000 => (sin_cos_series(RIGHT - k).1, half),
+        RIGHT => (Approx::int(1), Approx::int(0)),
+        k if k > RIGHT => (Approx::UNKNOWN, Approx::UNKNOWN),
+        k if k > EIGHTH => {
+            let (s, c) = sin_cos_series(RIGHT - k);
+            (c, s)
+        }
+        k => sin_cos_series(k),
+    }
+}
+
+/// `tan(k·0.00005°)` from that angle's sine and cosine, with the exact
+/// cases of [`crate::engine::real::tan_of`] (0 and 45°; unknown from 90°).
+#[must_use]
+pub fn tan_of(k: u32, s: &Approx, c: &Approx) -> Approx {
+    match k {
+        0 => Approx::int(0),
+        EIGHTH => Approx::int(1),
+        k if k >= RIGHT => Approx::UNKNOWN,
+        _ => s.div(c),
+    }
+}
+
+/// `cot(k·0.00005°)` from that angle's sine and cosine, with the exact
+/// cases of [`crate::engine::real::cot_of`] (45° and 90°; unknown at 0 and
+/// beyond 90°).
+#[must_use]
+pub fn cot_of(k: u32, s: &Approx, c: &Approx) -> Approx {
+    match k {
+        EIGHTH => Approx::int(1),
+        RIGHT => Approx::int(0),
+        k if k == 0 || k > RIGHT => Approx::UNKNOWN,
+        _ => c.div(s),
+    }
+}
+
+/// `tan` and `cot` of one angle together ([`tan_of`], [`cot_of`]).
+#[must_use]
+pub fn tan_cot(k: u32) -> (Approx, Approx) {
+    let (s, c) = sin_cos(k);
+    (tan_of(k, &s, &c), cot_of(k, &s, &c))
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
@@ -547,6 +799,109 @@ mod tests {
             let err = error_ulps(&Approx::new(i128::try_from(s).unwrap(), 0), &exact);
             assert!(err < 71, "exp {r}: {err}");
         }
+    }
+
+    /// The bound of [`sin_cos`] against the interval arithmetic's sine and
+    /// cosine at 512 bits: at the ends of the series' range (the smallest
+    /// angle, 45° where `x` is largest), beside the exact cases, at the
+    /// reflected angles above 45°, and at a spread of angles. The
+    /// derivation (R-FASTPATH) gives below 13 ulps.
+    #[test]
+    fn sin_cos_bound_at_its_worst_cases() {
+        let mut worst = 0;
+        let mut ks = std::vec![1_u32, 2, 3, 599_999, 600_000, 600_001, 899_999, 900_000, 900_001];
+        ks.extend([1_199_999, 1_200_000, 1_200_001, 1_799_999, 1_800_000, 0, 450_000, 1_350_000]);
+        ks.extend((0..200_u32).map(|i| i * 8_999 + 17));
+        for k in ks {
+            let (s, c) = sin_cos(k);
+            let (es, ec) = real::sin_cos::<SLOW>(k);
+            for (a, exact) in [(s, es), (c, ec)] {
+                let err = error_ulps(&a, &exact);
+                assert!(err <= a.bound(), "k = {k}: {err} > {}", a.bound());
+                worst = worst.max(err);
+                assert!(err < 13, "k = {k}: {err} ulps");
+            }
+        }
+        std::println!("sin/cos: worst error {worst} ulps (bound {SIN_COS_BOUND})");
+        // The exact cases are exact.
+        assert_eq!(sin_cos(0), (Approx::int(0), Approx::int(1)));
+        assert_eq!(sin_cos(600_000).0, Approx::half());
+        assert_eq!(sin_cos(1_200_000).1, Approx::half());
+        assert_eq!(sin_cos(RIGHT), (Approx::int(1), Approx::int(0)));
+        assert_eq!(sin_cos(RIGHT + 1), (Approx::UNKNOWN, Approx::UNKNOWN));
+        // tan and cot from them, against the intervals', and their exact cases.
+        for k in [1_u32, 150_000, 600_000, 899_999, 1_200_000, 1_799_999] {
+            let (t, c) = tan_cot(k);
+            let (et, ec) = real::tan_cot::<SLOW>(k);
+            assert!(error_ulps(&t, &et) <= t.bound(), "tan {k}");
+            assert!(error_ulps(&c, &ec) <= c.bound(), "cot {k}");
+        }
+        assert_eq!(tan_cot(EIGHTH), (Approx::int(1), Approx::int(1)));
+        assert_eq!(tan_cot(RIGHT).1, Approx::int(0));
+        assert_eq!(tan_cot(0).0, Approx::int(0));
+        assert!(tan_cot(0).1.is_unknown() && tan_cot(RIGHT).0.is_unknown());
+    }
+
+    /// Quotients keep their bound: exact ones exact, inexact ones within
+    /// `⌈(e_a·2^64 + (|q| + 1)·e_b)/(|b| − e_b)⌉ + 1` of the exact value,
+    /// at the divisor's extremes (1, the smallest sine of the angle unit).
+    #[test]
+    fn quotients_keep_their_bound() {
+        assert_eq!(Approx::int(3).div(&Approx::half()), Approx::int(6));
+        assert_eq!(Approx::int(-3).div(&Approx::int(1)), Approx::int(-3));
+        assert_eq!(Approx::int(1).div(&Approx::int(2)), Approx::UNKNOWN);
+        assert_eq!(Approx::int(1).div(&Approx::new(3, 3)), Approx::UNKNOWN);
+        assert_eq!(Approx::int(1).div(&Approx::int(0)), Approx::UNKNOWN);
+        let third = Approx::int(1).div(&Approx::new(3 * ONE / 4, 0));
+        assert_eq!(third.bound(), 1);
+        assert!(error_ulps(&third, &Interval::<SLOW>::int(4).div_int(3)) <= third.bound());
+        for (ka, kb) in [(1_u32, 1_u32), (899_999, 1), (1, 899_999), (123_457, 765_431)] {
+            let ((sa, ca), (sb, cb)) = (sin_cos(ka), sin_cos(kb));
+            let ((esa, eca), (esb, ecb)) = (real::sin_cos::<SLOW>(ka), real::sin_cos::<SLOW>(kb));
+            for (a, b, ea, eb) in [(ca, sb, eca, esb), (sa.mul_int(-7_000), cb, esa.mul_int(-7_000), ecb)] {
+                let q = a.div(&b);
+                assert!(!q.is_unknown(), "{ka} {kb}");
+                assert!(error_ulps(&q, &ea.div(&eb)) <= q.bound(), "{ka} {kb}: {q:?}");
+            }
+        }
+        assert!(Approx::UNKNOWN.div(&Approx::int(1)).is_unknown());
+        assert!(Approx::UNKNOWN.mul_int(0).is_unknown());
+        assert!(Approx::UNKNOWN.mul(&Approx::int(0)).is_unknown());
+        assert!(Approx::UNKNOWN.div_int(3).is_unknown());
+    }
+
+    /// Floor, ceil and nearest (ties up) on the ends of the enclosure, as
+    /// the intervals decide them; max and min of enclosures.
+    #[test]
+    fn roundings_on_the_ends() {
+        let half = ONE / 2;
+        let cases = [
+            (Approx::new(2 * ONE, 0), [Some(2), Some(2), Some(2)]),
+            (Approx::new(2 * ONE + half, 0), [Some(2), Some(3), Some(3)]),
+            (Approx::new(-2 * ONE - half, 0), [Some(-3), Some(-2), Some(-2)]),
+            (Approx::new(2 * ONE + 5, 5), [Some(2), None, Some(2)]),
+            (Approx::new(2 * ONE + 4, 5), [None, None, Some(2)]),
+            (Approx::new(-2 * ONE - half + 6, 5), [Some(-3), Some(-2), Some(-2)]),
+            (Approx::new(-2 * ONE - half + 5, 5), [Some(-3), Some(-2), Some(-2)]),
+            (Approx::new(-2 * ONE - half + 4, 5), [Some(-3), Some(-2), None]),
+            (Approx::UNKNOWN, [None, None, None]),
+        ];
+        for (a, want) in cases {
+            let got = [Rounding::Floor, Rounding::Ceil, Rounding::Nearest].map(|r| a.round(r));
+            assert_eq!(got, want, "{a:?}");
+            // The intervals decide the same on the same ends.
+            if let Some((lo, hi)) = a.ends() {
+                let iv = Interval::<SLOW>::new(fixed_of(lo), fixed_of(hi));
+                let by_iv = [Rounding::Floor, Rounding::Ceil, Rounding::Nearest].map(|r| iv.round(r));
+                assert_eq!(got, by_iv, "{a:?}");
+            }
+        }
+        let (a, b) = (Approx::new(10, 3), Approx::new(12, 4));
+        assert_eq!(a.max(&b), Approx::new(8, 8));
+        assert_eq!(a.min(&b), Approx::new(7, 6));
+        assert_eq!(Approx::int(5).neg(), Approx::int(-5));
+        assert_eq!(Approx::int_wide(1 << 63), Approx::UNKNOWN);
+        assert_eq!(Approx::int_wide(-(1 << 62)), Approx::int(-(1 << 62)));
     }
 
     #[test]

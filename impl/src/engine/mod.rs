@@ -16,6 +16,7 @@
 //! | [`g75`] | the G75.1 trapezoidal groove ([`expand_g75`](g75::expand_g75), [`groove_profile`](g75::groove_profile)), split by concern: exact geometry, local contours, the absolute frame, roughing, the tail, the public profile | `spec/src/g75/` |
 //! | [`schedule`] | the G76 depth schedule, one level at a time ([`Schedule`](schedule::Schedule), public for the proofs' one-step harness) | `spec/src/g76.rs` (`next_depth`) |
 //! | [`linuxcnc`] | LinuxCNC's G76 ([`expand_linuxcnc`](linuxcnc::expand_linuxcnc), [`LinuxCncMoves`](linuxcnc::LinuxCncMoves), [`taper_pitch`](linuxcnc::taper_pitch)) | `spec/src/linuxcnc.rs` |
+//! | [`approx`] | the fast path (reading R-FASTPATH): 64-bit fixed-point values with a rigorous error bound, decided only when no rounding boundary lies within it (LinuxCNC's G76, G75.1), else the intervals of [`real`] | — |
 //! | [`real`] | dyadic fixed-point interval arithmetic, trigonometry, logarithm, exponential and powers (G75.1, LinuxCNC's G76) | `spec/src/real.rs` |
 //!
 //! Where an engine restates a formula of the reference, the comment on the
@@ -35,7 +36,9 @@
 //!   the one `round_div`;
 //! * lead ratios (G76 chamfer and lead-in lengths) are `u128`, below
 //!   `2^102`; the square roots of the depth schedule take `Δd² n < 2^93`;
-//! * G75.1 values are enclosed in 128-bit (then 512-bit) intervals whose
+//! * G75.1 values are first computed in 64-bit fixed point with a bound
+//!   ([`approx`]; a value beyond `2^63` is unknown there and falls back),
+//!   then enclosed in 128-bit (then 512-bit) intervals whose
 //!   magnitudes stay below `2^96`, far inside the `2^127` of an interval;
 //!   rounded values stay `i128` until the range check has bounded them;
 //! * the one narrowing back to `i64` saturates, and only values that a

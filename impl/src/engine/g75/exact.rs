@@ -18,7 +18,9 @@
 
 use core::cmp::Ordering;
 
-use crate::engine::real::{cot_of, sin_cos, tan_cot, tan_of, Interval, Rounding, FAST, SLOW};
+use crate::engine::approx::{self, Approx};
+use crate::engine::linuxcnc::FastPathStats;
+use crate::engine::real::{self, Interval, Rounding, FAST, SLOW};
 use crate::error::{CycleError, GrooveEdge};
 use crate::g75::{corner, CornerKind, G75Cycle};
 
@@ -82,67 +84,201 @@ impl Geometry {
     }
 }
 
+/// The arithmetic the groove's formulas are written in: the rigorous
+/// intervals of [`crate::engine::real`] at 128 or 512 fraction bits, and the
+/// fast path's values with their bounds ([`Approx`], reading R-FASTPATH).
+/// One home for each formula: [`Region`] and [`Enclosures`] are generic
+/// over it, so each path evaluates the same expression.
+pub(super) trait Real: Copy + core::fmt::Debug {
+    /// The exact integer `v`.
+    fn int(v: i128) -> Self;
+    /// A value that decides nothing (a poisoned interval, an unknown value).
+    fn poison() -> Self;
+    /// `self + o`.
+    fn add(&self, o: &Self) -> Self;
+    /// `self − o`.
+    fn sub(&self, o: &Self) -> Self;
+    /// `self · o`.
+    fn mul(&self, o: &Self) -> Self;
+    /// `self / o`.
+    fn div(&self, o: &Self) -> Self;
+    /// `−self`.
+    fn neg(&self) -> Self;
+    /// `self · k`.
+    fn mul_int(&self, k: i64) -> Self;
+    /// `self / k`.
+    fn div_int(&self, k: u64) -> Self;
+    /// `max(self, o)`.
+    fn max(&self, o: &Self) -> Self;
+    /// `min(self, o)`.
+    fn min(&self, o: &Self) -> Self;
+    /// The sine and cosine of `k·0.00005°`.
+    fn sin_cos(k: u32) -> (Self, Self);
+    /// `tan(k·0.00005°)` from its sine and cosine.
+    fn tan_of(k: u32, s: &Self, c: &Self) -> Self;
+    /// `cot(k·0.00005°)` from its sine and cosine.
+    fn cot_of(k: u32, s: &Self, c: &Self) -> Self;
+    /// `tan` and `cot` of `k·0.00005°`.
+    fn tan_cot(k: u32) -> (Self, Self);
+}
+
+impl<const N: usize> Real for Interval<N> {
+    fn int(v: i128) -> Self {
+        Interval::int(v)
+    }
+    fn poison() -> Self {
+        Interval::poison()
+    }
+    fn add(&self, o: &Self) -> Self {
+        Interval::add(self, o)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        Interval::sub(self, o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        Interval::mul(self, o)
+    }
+    fn div(&self, o: &Self) -> Self {
+        Interval::div(self, o)
+    }
+    fn neg(&self) -> Self {
+        Interval::neg(self)
+    }
+    fn mul_int(&self, k: i64) -> Self {
+        Interval::mul_int(self, k)
+    }
+    fn div_int(&self, k: u64) -> Self {
+        Interval::div_int(self, k)
+    }
+    fn max(&self, o: &Self) -> Self {
+        Interval::max(self, o)
+    }
+    fn min(&self, o: &Self) -> Self {
+        Interval::min(self, o)
+    }
+    fn sin_cos(k: u32) -> (Self, Self) {
+        real::sin_cos(k)
+    }
+    fn tan_of(k: u32, s: &Self, c: &Self) -> Self {
+        real::tan_of(k, s, c)
+    }
+    fn cot_of(k: u32, s: &Self, c: &Self) -> Self {
+        real::cot_of(k, s, c)
+    }
+    fn tan_cot(k: u32) -> (Self, Self) {
+        real::tan_cot(k)
+    }
+}
+
+impl Real for Approx {
+    fn int(v: i128) -> Self {
+        Approx::int_wide(v)
+    }
+    fn poison() -> Self {
+        Approx::UNKNOWN
+    }
+    fn add(&self, o: &Self) -> Self {
+        Approx::add(self, o)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        Approx::sub(self, o)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        Approx::mul(self, o)
+    }
+    fn div(&self, o: &Self) -> Self {
+        Approx::div(self, o)
+    }
+    fn neg(&self) -> Self {
+        Approx::neg(self)
+    }
+    fn mul_int(&self, k: i64) -> Self {
+        Approx::mul_int(self, k)
+    }
+    fn div_int(&self, k: u64) -> Self {
+        Approx::div_int(self, k)
+    }
+    fn max(&self, o: &Self) -> Self {
+        Approx::max(self, o)
+    }
+    fn min(&self, o: &Self) -> Self {
+        Approx::min(self, o)
+    }
+    fn sin_cos(k: u32) -> (Self, Self) {
+        approx::sin_cos(k)
+    }
+    fn tan_of(k: u32, s: &Self, c: &Self) -> Self {
+        approx::tan_of(k, s, c)
+    }
+    fn cot_of(k: u32, s: &Self, c: &Self) -> Self {
+        approx::cot_of(k, s, c)
+    }
+    fn tan_cot(k: u32) -> (Self, Self) {
+        approx::tan_cot(k)
+    }
+}
+
 /// What the roughing region's boundaries (`docs/G75.md` §5) need, at the
 /// precision `N`: enough to compute a layer's plunge range.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Region<const N: usize> {
+pub(super) struct Region<R: Real> {
     /// `(Y/f)·cot a`, the u of P1.
-    pub(super) p1u: Interval<N>,
+    pub(super) p1u: R,
     /// `cot a`.
-    pub(super) cot_a: Interval<N>,
+    pub(super) cot_a: R,
     /// `cot b`.
-    pub(super) cot_b: Interval<N>,
+    pub(super) cot_b: R,
     /// `cot(a/2)` (only when r3 > 0).
-    pub(super) cot_ha: Interval<N>,
+    pub(super) cot_ha: R,
     /// `cot(b/2)` (only when r4 > 0).
-    pub(super) cot_hb: Interval<N>,
+    pub(super) cot_hb: R,
     /// Tangent length t3.
-    pub(super) t3: Interval<N>,
+    pub(super) t3: R,
     /// Tangent length t4.
-    pub(super) t4: Interval<N>,
+    pub(super) t4: R,
 }
 
 /// The exact integer `v` as an interval.
-pub(super) fn int<const N: usize>(v: i64) -> Interval<N> {
-    Interval::int(i128::from(v))
+pub(super) fn int<R: Real>(v: i64) -> R {
+    R::int(i128::from(v))
 }
 
-impl<const N: usize> Region<N> {
+impl<R: Real> Region<R> {
     /// `flankA_r(y) = (y/f)·cot a + Δw`.
     ///
     /// Twin: `spec/src/g75/region.rs`, `flank_a_rough`.
-    pub(super) fn flank_a(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+    pub(super) fn flank_a(&self, g: &Geometry, y: &R) -> R {
         y.div_int(g.fu()).mul(&self.cot_a).add(&int(g.dw))
     }
 
     /// `flankB_r(y) = (Y/f)·cot a + d + ((Y − y)/f)·cot b − Δw`.
     ///
     /// Twin: `spec/src/g75/region.rs`, `flank_b_rough`.
-    pub(super) fn flank_b(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
-        let rise = int::<N>(g.depth).sub(y).div_int(g.fu()).mul(&self.cot_b);
+    pub(super) fn flank_b(&self, g: &Geometry, y: &R) -> R {
+        let rise = int::<R>(g.depth).sub(y).div_int(g.fu()).mul(&self.cot_b);
         self.p1u.add(&int(g.width)).add(&rise).sub(&int(g.dw))
     }
 
     /// `chord3_r(y) = (Y/f)·cot a + t3 + Δw − ((Y − Δu − y)/f)·cot(a/2)`.
     ///
     /// Twin: `spec/src/g75/region.rs`, `chord3_rough`.
-    pub(super) fn chord3(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
-        let rise = int::<N>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_ha);
+    pub(super) fn chord3(&self, g: &Geometry, y: &R) -> R {
+        let rise = int::<R>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_ha);
         self.p1u.add(&self.t3).add(&int(g.dw)).sub(&rise)
     }
 
     /// `chord4_r(y) = (Y/f)·cot a + d − t4 − Δw + ((Y − Δu − y)/f)·cot(b/2)`.
     ///
     /// Twin: `spec/src/g75/region.rs`, `chord4_rough`.
-    pub(super) fn chord4(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
-        let rise = int::<N>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_hb);
+    pub(super) fn chord4(&self, g: &Geometry, y: &R) -> R {
+        let rise = int::<R>(g.depth - g.du).sub(y).div_int(g.fu()).mul(&self.cot_hb);
         self.p1u.add(&int(g.width)).sub(&self.t4).sub(&int(g.dw)).add(&rise)
     }
 
     /// `left(y) = max(flankA_r(y), chord3_r(y))` (chord3 only when t3 > 0).
     ///
     /// Twin: `spec/src/g75/region.rs`, `left`.
-    pub(super) fn left(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+    pub(super) fn left(&self, g: &Geometry, y: &R) -> R {
         let flank = self.flank_a(g, y);
         if g.size(corner::R3) > 0 {
             flank.max(&self.chord3(g, y))
@@ -151,10 +287,19 @@ impl<const N: usize> Region<N> {
         }
     }
 
+    /// `left(y)` or `right(y)` at the integer depth `y`.
+    pub(super) fn side(&self, g: &Geometry, y: i128, left: bool) -> R {
+        if left {
+            self.left(g, &R::int(y))
+        } else {
+            self.right(g, &R::int(y))
+        }
+    }
+
     /// `right(y) = min(flankB_r(y), chord4_r(y))` (chord4 only when t4 > 0).
     ///
     /// Twin: `spec/src/g75/region.rs`, `right`.
-    pub(super) fn right(&self, g: &Geometry, y: &Interval<N>) -> Interval<N> {
+    pub(super) fn right(&self, g: &Geometry, y: &R) -> R {
         let flank = self.flank_b(g, y);
         if g.size(corner::R4) > 0 {
             flank.min(&self.chord4(g, y))
@@ -169,52 +314,52 @@ impl<const N: usize> Region<N> {
 /// corners) are poisoned intervals: using one by mistake could only give
 /// `UndecidedRounding`, never a wrong value.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Enclosures<const N: usize> {
+pub(super) struct Enclosures<R: Real> {
     /// The region's values.
-    pub(super) r: Region<N>,
+    pub(super) r: Region<R>,
     /// `sin a`.
-    pub(super) sin_a: Interval<N>,
+    pub(super) sin_a: R,
     /// `cos a`.
-    pub(super) cos_a: Interval<N>,
+    pub(super) cos_a: R,
     /// `sin b`.
-    pub(super) sin_b: Interval<N>,
+    pub(super) sin_b: R,
     /// `cos b`.
-    pub(super) cos_b: Interval<N>,
+    pub(super) cos_b: R,
     /// `sin L`.
-    pub(super) sin_l: Interval<N>,
+    pub(super) sin_l: R,
     /// `cos L`.
-    pub(super) cos_l: Interval<N>,
+    pub(super) cos_l: R,
     /// Tangent length t1.
-    pub(super) t1: Interval<N>,
+    pub(super) t1: R,
     /// Tangent length t2.
-    pub(super) t2: Interval<N>,
+    pub(super) t2: R,
     /// `u3`.
-    pub(super) u3: Interval<N>,
+    pub(super) u3: R,
     /// `y3`.
-    pub(super) y3: Interval<N>,
+    pub(super) y3: R,
 }
 
-impl<const N: usize> Enclosures<N> {
+impl<R: Real> Enclosures<R> {
     /// The enclosures of a cycle's values (`docs/G75.md` §3, angles in
     /// units of 0.00005°: `a` is `2A`, `a/2` is `A`, `(a + L)/2` is `A + L`).
     ///
     /// Twin: `spec/src/g75/geometry.rs`, `groove` (the angles and tangent
     /// lengths), `tangent_length`, `u3`, `y3`.
-    pub(super) fn new(g: &Geometry) -> Enclosures<N> {
+    pub(super) fn new(g: &Geometry) -> Enclosures<R> {
         let (ka, kb, kl) = (2 * g.a, 2 * g.b, 2 * g.l);
-        let (sin_a, cos_a) = sin_cos::<N>(ka);
-        let (sin_b, cos_b) = sin_cos::<N>(kb);
-        let (sin_l, cos_l) = sin_cos::<N>(kl);
-        let cot_a = cot_of(ka, &sin_a, &cos_a);
-        let cot_b = cot_of(kb, &sin_b, &cos_b);
-        let tan_l = tan_of(kl, &sin_l, &cos_l);
+        let (sin_a, cos_a) = R::sin_cos(ka);
+        let (sin_b, cos_b) = R::sin_cos(kb);
+        let (sin_l, cos_l) = R::sin_cos(kl);
+        let cot_a = R::cot_of(ka, &sin_a, &cos_a);
+        let cot_b = R::cot_of(kb, &sin_b, &cos_b);
+        let tan_l = R::tan_of(kl, &sin_l, &cos_l);
         // Tangent lengths (§3): a chamfer's is its size, a round's ρ·tan(…).
-        let t = |i: usize, half: u32| -> Interval<N> {
+        let t = |i: usize, half: u32| -> R {
             let c = g.size(i);
             if c == 0 {
                 int(0)
             } else if g.is_round(i) {
-                tan_cot::<N>(half).0.mul_int(c)
+                R::tan_cot(half).0.mul_int(c)
             } else {
                 int(c)
             }
@@ -223,23 +368,23 @@ impl<const N: usize> Enclosures<N> {
         // validate(): L < B.
         let t2 = t(corner::R2, g.b.saturating_sub(g.l));
         // t3 and cot(a/2) (and t4, cot(b/2)) share one series.
-        let half = |i: usize, k: u32| -> (Interval<N>, Interval<N>) {
+        let half = |i: usize, k: u32| -> (R, R) {
             let c = g.size(i);
             if c == 0 {
-                return (int(0), Interval::poison());
+                return (int(0), R::poison());
             }
-            let (tan_h, cot_h) = tan_cot::<N>(k);
+            let (tan_h, cot_h) = R::tan_cot(k);
             let t = if g.is_round(i) { tan_h.mul_int(c) } else { int(c) };
             (t, cot_h)
         };
         let (t3, cot_ha) = half(corner::R3, g.a);
         let (t4, cot_hb) = half(corner::R4, g.b);
         // P1.u = (Y/f)·cot a.
-        let hr = int::<N>(g.depth).div_int(g.fu());
+        let hr = int::<R>(g.depth).div_int(g.fu());
         let p1u = hr.mul(&cot_a);
         // u3 = ((Y/f)·cot a + d + (Y/f)·cot b) / (1 − tan L·cot b).
         let num = p1u.add(&int(g.width)).add(&hr.mul(&cot_b));
-        let den = int::<N>(1).sub(&tan_l.mul(&cot_b));
+        let den = int::<R>(1).sub(&tan_l.mul(&cot_b));
         let u3 = num.div(&den);
         // y3 = −f·u3·tan L.
         let y3 = u3.mul(&tan_l).mul_int(g.f).neg();
@@ -260,8 +405,8 @@ impl<const N: usize> Enclosures<N> {
 
     /// `Y − Δu − f·t·sin θ − Δu·cos θ`: the exact depth of K1 (t3, a) or K4
     /// (t4, b).
-    pub(super) fn y_k(g: &Geometry, t: &Interval<N>, sin: &Interval<N>, cos: &Interval<N>) -> Interval<N> {
-        int::<N>(g.depth - g.du).sub(&t.mul(sin).mul_int(g.f)).sub(&cos.mul_int(g.du))
+    pub(super) fn y_k(g: &Geometry, t: &R, sin: &R, cos: &R) -> R {
+        int::<R>(g.depth - g.du).sub(&t.mul(sin).mul_int(g.f)).sub(&cos.mul_int(g.du))
     }
 
     /// The enclosure of the quantity `q`.
@@ -270,25 +415,25 @@ impl<const N: usize> Enclosures<N> {
     /// quantity: `geometry.rs` (`t1s` … `c2`, `p1`, `p2`, `u3`, `y3`,
     /// `check_corners`), `region.rs` (`left`, `right`, `flank_a_rough`,
     /// `flank_b_rough`), `contour.rs` (`y_k1`, `k2`, `k3`, `y_k4`).
-    pub(super) fn eval(&self, g: &Geometry, q: Quantity) -> Interval<N> {
+    pub(super) fn eval(&self, g: &Geometry, q: Quantity) -> R {
         let r = &self.r;
         let f = g.f;
         let rho = |i: usize| g.size(i);
         match q {
             // §3 alarms: (sum of tangent lengths) − (edge length).
             Quantity::CheckFlankA => {
-                let edge = int::<N>(g.depth).div_int(g.fu()).div(&self.sin_a);
+                let edge = int::<R>(g.depth).div_int(g.fu()).div(&self.sin_a);
                 self.t1.add(&r.t3).sub(&edge)
             }
             Quantity::CheckBottom => r.t3.add(&r.t4).sub(&int(g.width)),
             Quantity::CheckFlankB => {
-                let edge = int::<N>(g.depth).sub(&self.y3).div_int(g.fu()).div(&self.sin_b);
+                let edge = int::<R>(g.depth).sub(&self.y3).div_int(g.fu()).div(&self.sin_b);
                 r.t4.add(&self.t2).sub(&edge)
             }
-            Quantity::Left(y) => r.left(g, &Interval::int(y)),
-            Quantity::Right(y) => r.right(g, &Interval::int(y)),
-            Quantity::FlankA(y) => r.flank_a(g, &Interval::int(y)),
-            Quantity::FlankB(y) => r.flank_b(g, &Interval::int(y)),
+            Quantity::Left(y) => r.left(g, &R::int(y)),
+            Quantity::Right(y) => r.right(g, &R::int(y)),
+            Quantity::FlankA(y) => r.flank_a(g, &R::int(y)),
+            Quantity::FlankB(y) => r.flank_b(g, &R::int(y)),
             Quantity::Y3 => self.y3,
             Quantity::U3 => self.u3,
             Quantity::YK1 => Enclosures::y_k(g, &r.t3, &self.sin_a, &self.cos_a),
@@ -307,14 +452,14 @@ impl<const N: usize> Enclosures<N> {
                 self.t1.mul(&self.sin_a).mul_int(f).add(&self.cos_a.mul_int(rho(corner::R1)).mul_int(f))
             }
             Quantity::T3aU => r.p1u.sub(&r.t3.mul(&self.cos_a)),
-            Quantity::T3aY => int::<N>(g.depth).sub(&r.t3.mul(&self.sin_a).mul_int(f)),
+            Quantity::T3aY => int::<R>(g.depth).sub(&r.t3.mul(&self.sin_a).mul_int(f)),
             // T3b.u = C3.u.
             Quantity::T3bU => r.p1u.add(&r.t3),
             Quantity::C3Y => int(g.depth - f * rho(corner::R3)),
             // T4b.u = C4.u.
             Quantity::T4bU => r.p1u.add(&int(g.width)).sub(&r.t4),
             Quantity::T4cU => r.p1u.add(&int(g.width)).add(&r.t4.mul(&self.cos_b)),
-            Quantity::T4cY => int::<N>(g.depth).sub(&r.t4.mul(&self.sin_b).mul_int(f)),
+            Quantity::T4cY => int::<R>(g.depth).sub(&r.t4.mul(&self.sin_b).mul_int(f)),
             Quantity::C4Y => int(g.depth - f * rho(corner::R4)),
             Quantity::T2bU => self.u3.sub(&self.t2.mul(&self.cos_b)),
             Quantity::T2bY => self.y3.add(&self.t2.mul(&self.sin_b).mul_int(f)),
@@ -406,33 +551,58 @@ pub(super) enum Quantity {
     C2Y,
 }
 
-/// Decides roundings and signs of the cycle's quantities (R-G75ROUND): at
-/// 128 fraction bits, then, if undecided, at 512 with R-G75TIE (the 512-bit
-/// context is built at most once per expansion).
+/// Decides roundings and signs of the cycle's quantities: first on the fast
+/// path (R-FASTPATH: 64-bit fixed point with a bound, [`Approx`]), then, if
+/// that does not decide, at 128 fraction bits, then at 512 with R-G75TIE
+/// (R-G75ROUND). Each context is built at most once per expansion, when a
+/// decision first needs it.
 pub(super) struct Evaluator {
     pub(super) g: Geometry,
-    pub(super) fast: Enclosures<FAST>,
-    pub(super) slow: Option<Enclosures<SLOW>>,
+    /// The fast path's values (`None`: the fast path is off).
+    pub(super) quick: Option<Enclosures<Approx>>,
+    pub(super) fast: Option<Enclosures<Interval<FAST>>>,
+    pub(super) slow: Option<Enclosures<Interval<SLOW>>>,
+    /// The values decided and the fast path's fallbacks.
+    pub(super) stats: FastPathStats,
 }
 
 impl Evaluator {
-    pub(super) fn new(g: Geometry) -> Evaluator {
-        Evaluator { g, fast: Enclosures::new(&g), slow: None }
+    /// The evaluator of a geometry, with the fast path on or off.
+    pub(super) fn new(g: Geometry, fast_path: bool) -> Evaluator {
+        let quick = fast_path.then(|| Enclosures::new(&g));
+        Evaluator { g, quick, fast: None, slow: None, stats: FastPathStats::default() }
     }
 
-    pub(super) fn slow(&mut self) -> &Enclosures<SLOW> {
+    pub(super) fn fast(&mut self) -> &Enclosures<Interval<FAST>> {
+        let g = &self.g;
+        self.fast.get_or_insert_with(|| Enclosures::new(g))
+    }
+
+    pub(super) fn slow(&mut self) -> &Enclosures<Interval<SLOW>> {
         let g = &self.g;
         self.slow.get_or_insert_with(|| Enclosures::new(g))
     }
 
-    /// `q` rounded by `r`: decided at 128 bits, else at 512 bits with
-    /// reading R-G75TIE (a value whose 512-bit enclosure holds exactly one
-    /// rounding boundary lies on it).
+    /// The fast path's decision on `q`, counted (`None`: fall back).
+    fn quick<T>(&mut self, q: Quantity, decide: impl Fn(&Approx) -> Option<T>) -> Option<T> {
+        let quick = self.quick.as_ref()?;
+        let v = decide(&quick.eval(&self.g, q));
+        self.stats.values = self.stats.values.saturating_add(1);
+        self.stats.fallbacks = self.stats.fallbacks.saturating_add(u64::from(v.is_none()));
+        v
+    }
+
+    /// `q` rounded by `r`: decided on the fast path, else at 128 bits, else
+    /// at 512 bits with reading R-G75TIE (a value whose 512-bit enclosure
+    /// holds exactly one rounding boundary lies on it).
     pub(super) fn round(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
-        if let Some(v) = self.fast.eval(&self.g, q).round(r) {
+        if let Some(v) = self.quick(q, |a| a.round(r)) {
             return Ok(v);
         }
         let g = self.g;
+        if let Some(v) = self.fast().eval(&g, q).round(r) {
+            return Ok(v);
+        }
         self.slow().eval(&g, q).round_tie(r).ok_or(CycleError::UndecidedRounding)
     }
 
@@ -451,21 +621,25 @@ impl Evaluator {
         self.round(q, Rounding::Nearest)
     }
 
-    /// The sign of `q`: decided at 128 bits, else at 512 bits with reading
-    /// R-G75TIE (a 512-bit enclosure that holds 0 is taken to be 0).
+    /// The sign of `q`: decided on the fast path, else at 128 bits, else at
+    /// 512 bits with reading R-G75TIE (a 512-bit enclosure that holds 0 is
+    /// taken to be 0).
     pub(super) fn sign(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
-        if let Some(v) = self.fast.eval(&self.g, q).sign() {
+        if let Some(v) = self.quick(q, Approx::sign) {
             return Ok(v);
         }
         let g = self.g;
+        if let Some(v) = self.fast().eval(&g, q).sign() {
+            return Ok(v);
+        }
         self.slow().eval(&g, q).sign_tie().ok_or(CycleError::UndecidedRounding)
     }
 
     /// The evaluator of a cycle after the checks that every use of its
     /// geometry starts with: `validate()`, then the corners (§3).
-    pub(super) fn checked(c: &G75Cycle) -> Result<Evaluator, CycleError> {
+    pub(super) fn checked(c: &G75Cycle, fast_path: bool) -> Result<Evaluator, CycleError> {
         c.validate()?;
-        let mut ev = Evaluator::new(Geometry::new(c));
+        let mut ev = Evaluator::new(Geometry::new(c), fast_path);
         ev.check_corners()?;
         Ok(ev)
     }
@@ -498,26 +672,36 @@ impl Evaluator {
 }
 
 /// The plunge range of the layer ending at `y`, for the iterator: the same
-/// decisions as [`Evaluator::plunges`], each end on its own (the fast context's
-/// region, then, if undecided, a 512-bit context rebuilt from the words,
-/// at most once, with reading R-G75TIE). `None` only if undecided at 512
-/// bits, which [`expand_g75`] has excluded for every layer.
-pub(super) fn plunges_at(g: &Geometry, fast: &Region<FAST>, y: i64) -> Option<(i128, i128)> {
-    let yv = Interval::int(i128::from(y));
-    let mut slow: Option<Region<SLOW>> = None;
-    let first = match fast.left(g, &yv).round(Rounding::Ceil) {
-        Some(v) => v,
-        None => slow
-            .get_or_insert_with(|| Enclosures::<SLOW>::new(g).r)
-            .left(g, &Interval::int(i128::from(y)))
-            .round_tie(Rounding::Ceil)?,
+/// decisions as [`Evaluator::plunges`], each end on its own (the fast path's
+/// region when there is one, then a 128-bit context, then a 512-bit one,
+/// each rebuilt from the words at most once, with reading R-G75TIE at 512
+/// bits), counted in `stats`. `None` only if undecided at 512 bits, which
+/// [`expand_g75`](super::expand_g75) has excluded for every layer.
+pub(super) fn plunges_at(
+    g: &Geometry,
+    quick: Option<&Region<Approx>>,
+    y: i64,
+    stats: &mut FastPathStats,
+) -> Option<(i128, i128)> {
+    let y = i128::from(y);
+    let mut fast: Option<Region<Interval<FAST>>> = None;
+    let mut slow: Option<Region<Interval<SLOW>>> = None;
+    let mut decide = |left: bool, r: Rounding| -> Option<i128> {
+        if let Some(quick) = quick {
+            let v = quick.side(g, y, left).round(r);
+            stats.values = stats.values.saturating_add(1);
+            stats.fallbacks = stats.fallbacks.saturating_add(u64::from(v.is_none()));
+            if v.is_some() {
+                return v;
+            }
+        }
+        let f = fast.get_or_insert_with(|| Enclosures::<Interval<FAST>>::new(g).r);
+        if let Some(v) = f.side(g, y, left).round(r) {
+            return Some(v);
+        }
+        slow.get_or_insert_with(|| Enclosures::<Interval<SLOW>>::new(g).r).side(g, y, left).round_tie(r)
     };
-    let last = match fast.right(g, &yv).round(Rounding::Floor) {
-        Some(v) => v,
-        None => slow
-            .get_or_insert_with(|| Enclosures::<SLOW>::new(g).r)
-            .right(g, &Interval::int(i128::from(y)))
-            .round_tie(Rounding::Floor)?,
-    };
+    let first = decide(true, Rounding::Ceil)?;
+    let last = decide(false, Rounding::Floor)?;
     Some((first, last - i128::from(g.w)))
 }

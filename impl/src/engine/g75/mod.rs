@@ -58,10 +58,16 @@
 //! # Exact rounding
 //!
 //! Every coordinate is rounded from the exact real value of its formula in
-//! `docs/G75.md` §3–§8, evaluated with the rigorous interval arithmetic of
-//! [`crate::engine::real`]: at 128 fraction bits first, and, only if that
+//! `docs/G75.md` §3–§8. The formula is first evaluated on the fast path
+//! (reading R-FASTPATH, [`crate::engine::approx`]: 64-bit fixed point with
+//! a rigorous error bound, decided only when no rounding boundary lies
+//! within the bound; [`G75Moves::fast_path_stats`] counts its fallbacks),
+//! then, if that does not decide, with the rigorous interval arithmetic of
+//! [`crate::engine::real`]: at 128 fraction bits, and, only if that
 //! interval does not decide the rounding, again from the same formula at
-//! 512 fraction bits (reading R-G75ROUND). Exact inputs (right angles, 45°,
+//! 512 fraction bits (reading R-G75ROUND). [`expand_g75_exact`] is the
+//! engine with the fast path off, the same by construction (the tests
+//! compare them). Exact inputs (right angles, 45°,
 //! the other exact cases of §6) give exact point intervals, decided
 //! exactly.
 //!
@@ -100,13 +106,14 @@
 //! Up front: a fixed number of interval evaluations (about forty) plus two
 //! per layer while counting pecks (at most `MAX_PECKS` layers, since every
 //! layer has at least one peck). Per move: O(1); a layer change evaluates
-//! the layer's plunge range again (a handful of 256-bit interval products;
-//! when 128 bits do not decide it, in practice only for a boundary exactly
-//! on an integer (R-G75TIE), the 512-bit context is rebuilt once for that
-//! layer, a bounded amount of work). A [`G75Moves`] is a fixed-size value
-//! (2 088 bytes on 64-bit targets: the precomputed tail
-//! of at most 22 moves and the 128-bit enclosures of the region's
-//! boundaries; the test `size_of_the_iterator` bounds it).
+//! the layer's plunge range again (a handful of 64-bit products on the fast
+//! path; when they do not decide, the 128-bit context is rebuilt from the
+//! words for that layer, and when 128 bits do not decide either, in
+//! practice only for a boundary exactly on an integer (R-G75TIE), the
+//! 512-bit one: a bounded amount of work). A [`G75Moves`] is a fixed-size
+//! value (1 840 bytes on 64-bit targets: the precomputed tail of at most 22
+//! moves and the fast path's values of the region's boundaries; the test
+//! `size_of_the_iterator` bounds it).
 //!
 //! # Readings added by this engine
 //!
@@ -158,8 +165,9 @@ use frame::Frame;
 use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
 use tail::{Leg, LegKind, TailBuilder, TAIL};
 
+use crate::engine::approx::Approx;
 use crate::engine::arith::saturate_i64;
-use crate::engine::real::FAST;
+use crate::engine::linuxcnc::FastPathStats;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
 use crate::moves::{Motion, Move, Role};
@@ -187,8 +195,12 @@ pub struct G75Moves {
     frame: Frame,
     /// The words in the local frame (a layer's plunge range needs them).
     geometry: Geometry,
-    /// The roughing region's boundaries at 128 bits.
-    region: Region<FAST>,
+    /// The roughing region's boundaries on the fast path (R-FASTPATH;
+    /// `None` when it is off): a layer's plunge range falls back to 128
+    /// and 512 bits from `geometry`.
+    region: Option<Region<Approx>>,
+    /// The values decided so far and the fast path's fallbacks.
+    stats: FastPathStats,
     /// Which part of the path comes next.
     stage: Stage,
     /// Step 1, the rapid to A11, unless the tool is there already.
@@ -223,7 +235,24 @@ pub struct G75Moves {
 ///
 /// Twin: `spec/src/g75/mod.rs`, `expand`.
 pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
-    let mut ev = Evaluator::checked(c)?;
+    expand(c, true)
+}
+
+/// [`expand_g75`] with the fast path off: every value decided by the
+/// interval arithmetic alone (128 bits, then 512), as before issue 33. The
+/// same result by construction (reading R-FASTPATH); kept for the tests and
+/// benchmarks that compare the two paths.
+///
+/// # Errors
+///
+/// Those of [`expand_g75`].
+pub fn expand_g75_exact(c: &G75Cycle) -> Result<G75Moves, CycleError> {
+    expand(c, false)
+}
+
+/// [`expand_g75`], the fast path on or off.
+fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
+    let mut ev = Evaluator::checked(c, fast_path)?;
     let g = ev.g;
     let frame = Frame::new(c);
 
@@ -356,7 +385,8 @@ pub fn expand_g75(c: &G75Cycle) -> Result<G75Moves, CycleError> {
     Ok(G75Moves {
         frame,
         geometry: g,
-        region: ev.fast.r,
+        region: ev.quick.map(|q| q.r),
+        stats: ev.stats,
         stage: Stage::Approach,
         approach,
         roughs,
@@ -423,3 +453,28 @@ impl Iterator for G75Moves {
 }
 
 impl FusedIterator for G75Moves {}
+
+impl G75Moves {
+    /// How many values this expansion has decided so far (up front, and
+    /// for each layer reached) and how many of them the fast path left to
+    /// the interval arithmetic (reading R-FASTPATH).
+    ///
+    /// ```
+    /// use cycleref::engine::g75::expand_g75_exact;
+    /// use cycleref::examples::G75_SEED;
+    /// use cycleref::expand_g75;
+    ///
+    /// let mut fast = expand_g75(&G75_SEED)?;
+    /// let moves: Vec<_> = fast.by_ref().collect();
+    /// // The same moves with the fast path off.
+    /// assert_eq!(moves, expand_g75_exact(&G75_SEED)?.collect::<Vec<_>>());
+    /// let s = fast.fast_path_stats();
+    /// assert!(s.values > 0);
+    /// assert_eq!(s.fallbacks, 0);
+    /// # Ok::<(), cycleref::CycleError>(())
+    /// ```
+    #[must_use]
+    pub fn fast_path_stats(&self) -> FastPathStats {
+        self.stats
+    }
+}

@@ -87,7 +87,7 @@ impl GrooveProfile {
 ///
 /// Twin: `spec/src/g75/profile.rs`, `profile`.
 pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
-    let mut ev = Evaluator::checked(c)?;
+    let mut ev = Evaluator::checked(c, true)?;
     let frame = Frame::new(c);
     let (pts, n) = finish_profile(&mut ev)?;
     let y_top = ev.floor(Quantity::Y3)?;

@@ -314,7 +314,7 @@ impl G75Moves {
             if r.dv > 0 { (i64::from(m).saturating_mul(r.dv)).min(r.rough_bottom) } else { r.rough_bottom };
         // Decided in expand_g75 for every layer (the peck count), so the
         // fallback to the previous range is unreachable.
-        let (first, last) = plunges_at(&self.geometry, &self.region, bottom)
+        let (first, last) = plunges_at(&self.geometry, self.region.as_ref(), bottom, &mut self.stats)
             .map_or((r.first, r.last), |(a, b)| (saturate_i64(a), saturate_i64(b)));
         self.rough = Roughing {
             m,

@@ -9,6 +9,8 @@ use core::cmp::Ordering;
 
 use super::exact::{plunges_at, Enclosures, Evaluator, Geometry, Quantity};
 use super::*;
+use crate::engine::approx::Approx;
+use crate::engine::linuxcnc::FastPathStats;
 use crate::engine::real::{Interval, Rounding, SLOW};
 use crate::error::{Field, GrooveEdge};
 use crate::g75::{corner, Corner, CornerKind, PathType, MAX_PECKS};
@@ -460,15 +462,17 @@ fn tie_values_are_decided() {
     let c = slope_example();
     let g = Geometry::new(&c);
     // The 512-bit enclosures alone leave both floors open ...
-    let slow = Enclosures::<SLOW>::new(&g);
+    let slow = Enclosures::<Interval<SLOW>>::new(&g);
     assert_eq!(slow.eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     assert_eq!(slow.eval(&g, Quantity::Right(6_000)).round(Rounding::Floor), None);
     // ... and R-G75TIE decides them on the boundary.
-    let mut ev = Evaluator::new(g);
+    let mut ev = Evaluator::new(g, false);
     assert_eq!(ev.floor(Quantity::YK1), Ok(8_150));
     assert_eq!(ev.floor(Quantity::Right(6_000)), Ok(8_900));
     assert_eq!(ev.plunges(6_000), Ok((1_833, 6_400)));
-    assert_eq!(plunges_at(&g, &ev.fast.r, 6_000), Some((1_833, 6_400)));
+    assert_eq!(plunges_at(&g, None, 6_000, &mut FastPathStats::default()), Some((1_833, 6_400)));
+    let quick = Enclosures::<Approx>::new(&g).r;
+    assert_eq!(plunges_at(&g, Some(&quick), 6_000, &mut FastPathStats::default()), Some((1_833, 6_400)));
     // U0.301 moves K1's depth off the integer (8148.5), the second
     // layer's boundary stays 8900.
     let moves: Vec<Move> = expand_g75(&G75Cycle { allowance_x: 301, ..c }).unwrap().collect();
@@ -578,7 +582,7 @@ fn sixty_degree_round_with_an_integer_k1_depth() {
     };
     let g = Geometry::new(&c);
     // Undecided at 512 bits without the rule.
-    assert_eq!(Enclosures::<SLOW>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
+    assert_eq!(Enclosures::<Interval<SLOW>>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     let p = groove_profile(&c).unwrap();
     assert_eq!(
         p.roughing(),
@@ -616,7 +620,7 @@ fn round_corner_equal_to_the_allowance_is_decided() {
     // The golden square groove with A80: U0.8 and D0.4 (f·ρ = 800 = Δu).
     let c = G75Cycle { flank_a: 800_000, allowance_x: 800, ..square() };
     let g = Geometry::new(&c);
-    assert_eq!(Enclosures::<SLOW>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
+    assert_eq!(Enclosures::<Interval<SLOW>>::new(&g).eval(&g, Quantity::YK1).round(Rounding::Floor), None);
     // y_K1 = 6000 − 1600 = 4400; K1 = (ceil(2200·cot 80° + 200) =
     // ceil(587.919…), 4400); y_K4 = 6000 − 800 − 600 − 800·0 = 4600 (B90,
     // exact). R0 (200, 0), K2 (ceil(1064.620…), 5200), K3
@@ -798,9 +802,10 @@ fn slope_groove_invariants() {
     assert!(local(last.at).1 < 0);
     assert_eq!(p.finishing().len(), 8);
     assert_eq!(p.roughing().len(), 6);
-    // The fast and slow contexts agree on every value they decide.
-    let mut ev = Evaluator::new(Geometry::new(&c));
-    let slow = Enclosures::<SLOW>::new(&ev.g);
+    // The fast path (R-FASTPATH) and the slow context agree on every value
+    // they decide.
+    let mut ev = Evaluator::new(Geometry::new(&c), true);
+    let slow = Enclosures::<Interval<SLOW>>::new(&ev.g);
     for q in [
         Quantity::U3,
         Quantity::Y3,
@@ -1303,5 +1308,122 @@ fn formulas_against_floats() {
 #[test]
 fn size_of_the_iterator() {
     let s = core::mem::size_of::<G75Moves>();
+    std::println!("G75Moves: {s} bytes");
     assert!(s <= 2_200, "G75Moves is {s} bytes");
+}
+
+/// `v·2^-64` exactly, at 512 fraction bits.
+fn at_512(v: i128) -> Interval<SLOW> {
+    let x = Interval::<SLOW>::int(v).div_int(1 << 32).div_int(1 << 32);
+    assert!(x.is_point());
+    x
+}
+
+/// Every quantity of the groove (R-FASTPATH), at the depths `ys` for the
+/// region's boundaries.
+fn every_quantity(ys: &[i128]) -> Vec<Quantity> {
+    let mut qs = std::vec![
+        Quantity::CheckFlankA,
+        Quantity::CheckBottom,
+        Quantity::CheckFlankB,
+        Quantity::Y3,
+        Quantity::U3,
+        Quantity::YK1,
+        Quantity::K2,
+        Quantity::K3,
+        Quantity::YK4,
+        Quantity::P1U,
+        Quantity::P2U,
+        Quantity::T1sU,
+        Quantity::T1sY,
+        Quantity::T1aU,
+        Quantity::T1aY,
+        Quantity::C1U,
+        Quantity::C1Y,
+        Quantity::T3aU,
+        Quantity::T3aY,
+        Quantity::T3bU,
+        Quantity::C3Y,
+        Quantity::T4bU,
+        Quantity::T4cU,
+        Quantity::T4cY,
+        Quantity::C4Y,
+        Quantity::T2bU,
+        Quantity::T2bY,
+        Quantity::T2sU,
+        Quantity::T2sY,
+        Quantity::C2U,
+        Quantity::C2Y,
+    ];
+    for &y in ys {
+        qs.extend([Quantity::Left(y), Quantity::Right(y), Quantity::FlankA(y), Quantity::FlankB(y)]);
+    }
+    qs
+}
+
+/// The fast path's bound of every formula (R-FASTPATH) against the exact
+/// value at 512 bits, on grooves that reach the formulas' extremes: the
+/// examples, every corner kind, a slope, flanks of 0.0001° and 89.9999°
+/// (cotangents near 2^20, the largest the magnitudes allow) and sizes near
+/// the words' limits. Where the fast path decides a rounding or a sign it
+/// is the exact value's (R-G75TIE's at 512 bits); where its value would
+/// overflow it is unknown and decides nothing.
+#[test]
+fn fast_path_bounds_hold_for_every_formula() {
+    let mut cycles = std::vec![seed(), square(), slope_example(), wide_example()];
+    let mut steep = slope_example();
+    steep.flank_a = 1;
+    steep.flank_b = 899_999;
+    steep.slope = 0;
+    cycles.push(steep);
+    let mut flat = slope_example();
+    flat.flank_a = 899_999;
+    flat.flank_b = 1_000;
+    flat.slope = 999;
+    cycles.push(flat);
+    let mut huge = wide_example();
+    huge.depth = -(1 << 26);
+    huge.width = -(1 << 26);
+    huge.flank_a = 7;
+    huge.flank_b = 13;
+    huge.corners = [Corner { size: 1 << 19, kind: CornerKind::Round }; 4];
+    cycles.push(huge);
+    let (mut checked, mut unknown, mut decided) = (0, 0, 0);
+    let mut worst = 0.0_f64;
+    for c in &cycles {
+        let g = Geometry::new(c);
+        let quick = Enclosures::<Approx>::new(&g);
+        let slow = Enclosures::<Interval<SLOW>>::new(&g);
+        let ys = [0, 1, i128::from(g.depth - g.du) / 2, i128::from(g.depth - g.du)];
+        for q in every_quantity(&ys) {
+            let a = quick.eval(&g, q);
+            let x = slow.eval(&g, q);
+            if a.is_unknown() {
+                unknown += 1;
+                continue;
+            }
+            if !x.is_valid() {
+                // A value the cycle does not have (an absent corner's).
+                continue;
+            }
+            let e = i128::try_from(a.bound()).unwrap();
+            let (lo, hi) = (at_512(a.value() - e), at_512(a.value() + e));
+            assert!(lo.lower().cmp_signed(x.lower()) != Ordering::Greater, "{c:?} {q:?}: {a:?}");
+            assert!(x.upper().cmp_signed(hi.upper()) != Ordering::Greater, "{c:?} {q:?}: {a:?}");
+            checked += 1;
+            let scale = (a.value().unsigned_abs() as f64).max(1.0);
+            worst = worst.max(a.bound() as f64 / scale);
+            for r in [Rounding::Floor, Rounding::Ceil, Rounding::Nearest] {
+                if let Some(k) = a.round(r) {
+                    decided += 1;
+                    assert_eq!(x.round_tie(r), Some(k), "{c:?} {q:?} {r:?}");
+                }
+            }
+            if let Some(s) = a.sign() {
+                assert_eq!(x.sign_tie(), Some(s), "{c:?} {q:?}");
+            }
+        }
+    }
+    std::println!("{checked} values within their bounds ({decided} roundings decided), {unknown} unknown; largest relative bound {worst:.2e}");
+    assert!(checked > 150 && decided > 300);
 }
