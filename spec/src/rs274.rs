@@ -248,6 +248,7 @@ fn plain_number(b: &[u8]) -> Option<Decimal> {
 /// A call's arguments as read: the first [`Args::KEPT`] kept (no call
 /// takes more), all of them counted, so that a call given too many is
 /// named with their number.
+#[derive(Clone)]
 struct Args {
     kept: [Decimal; Args::KEPT],
     len: usize,
@@ -277,18 +278,44 @@ impl Args {
     }
 }
 
-/// The name and the arguments of a line as `rs274` prints it (ASCII,
-/// `<sequence> N<number or .....> <name>(<arguments>)` with ASCII spaces)
-/// in one pass over its bytes; `None` for any other line, empty or an
-/// error or not ASCII, which [`call`] then reads by its parts. Where it
-/// gives them they are those of that reading: the line trimmed, the
-/// sequence and the N word each up to a space, the call trimmed, its name
-/// up to the first `(` and trimmed, its arguments up to the last `)`.
-fn plain_parts(raw: &str) -> Option<(&str, &str)> {
-    let b = raw.as_bytes();
-    if !b.is_ascii() {
-        return None;
+/// A line that is not of the form `<sequence> N..... CALL(arguments)`.
+#[derive(Debug, PartialEq, Eq)]
+struct NotACall;
+
+/// The name and the arguments of a line, `None` for an empty line: the
+/// line trimmed, the sequence (digits) and the N word (`N`, then digits
+/// and points) each up to a space, the call trimmed, its name up to the
+/// first `(` and trimmed, its arguments up to the `)` that ends it.
+fn parts(raw: &str) -> Result<Option<(&str, &str)>, NotACall> {
+    let text = scan::trim(raw);
+    if text.is_empty() {
+        return Ok(None);
     }
+    let (seq, rest) = scan::split_at_whitespace(text).ok_or(NotACall)?;
+    let rest = scan::trim_start(rest);
+    let (n, call) = scan::split_at_whitespace(rest).ok_or(NotACall)?;
+    if seq.is_empty()
+        || !seq.bytes().all(|b| b.is_ascii_digit())
+        || !n.starts_with('N')
+        || !n[1..].bytes().all(|b| b.is_ascii_digit() || b == b'.')
+    {
+        return Err(NotACall);
+    }
+    let call = scan::trim(call);
+    let (name, rest) = scan::split_at_byte(call, b'(').ok_or(NotACall)?;
+    Ok(Some((scan::trim(name), rest.strip_suffix(')').ok_or(NotACall)?)))
+}
+
+/// The name and the arguments of a line as `rs274` prints it
+/// (`<sequence> N<number or .....> <name>(<arguments>)` with ASCII spaces)
+/// in one pass over its bytes; `None` for any other line (empty, an
+/// error, or spaced by other characters), which [`call`] then reads by
+/// [`parts`]. Where it gives them they are those of [`parts`] (the test
+/// `plain_readings_are_the_general_ones` compares them).
+fn plain_parts(raw: &str) -> Option<(&str, &str)> {
+    // Only ASCII bytes are looked for, and the bytes of other characters
+    // are never ASCII: such a character is taken for none of them.
+    let b = raw.as_bytes();
     let spaces = |mut i: usize| {
         while b.get(i).is_some_and(|&c| scan::is_space(c)) {
             i += 1;
@@ -328,11 +355,11 @@ fn plain_parts(raw: &str) -> Option<(&str, &str)> {
 /// [`plain_number`] between ASCII spaces, as `rs274` prints them; false
 /// for anything else (an empty text, only spaces, another form), which
 /// [`call`] then reads an argument at a time. Where it gives arguments
-/// they are those of that reading: `,` splits them, each is trimmed and
-/// read by [`number`], whose first reading is [`plain_number`] (an
+/// they are those of that reading (`,` splits them, each is trimmed and
+/// read by [`number`], whose first reading is [`plain_number`]): an
 /// argument with a character that is not ASCII at either end is no plain
 /// number once its ASCII spaces are trimmed, so trimming only those is
-/// enough).
+/// enough.
 fn plain_numbers(args: &[u8], v: &mut Args) -> bool {
     for arg in args.split(|&c| c == b',') {
         let plain = arg.iter().position(|&c| !scan::is_space(c)).and_then(|start| {
@@ -415,8 +442,28 @@ mod scan {
         /// bytes, other ASCII and other non-ASCII characters.
         fn line() -> impl Strategy<Value = String> {
             let chars = prop::sample::select(vec![
-                ' ', '\t', '\n', '\x0b', '\x0c', '\r', '\u{85}', '\u{a0}', '\u{2003}', '\u{3000}', 'a',
-                'N', '.', ',', '(', ')', '1', '-', '\u{e9}', '\u{4e2d}', '\u{1f600}', '\u{feff}',
+                ' ',
+                '\t',
+                '\n',
+                '\x0b',
+                '\x0c',
+                '\r',
+                '\u{85}',
+                '\u{a0}',
+                '\u{2003}',
+                '\u{3000}',
+                'a',
+                'N',
+                '.',
+                ',',
+                '(',
+                ')',
+                '1',
+                '-',
+                '\u{e9}',
+                '\u{4e2d}',
+                '\u{1f600}',
+                '\u{feff}',
             ]);
             prop::collection::vec(chars, 0..12).prop_map(|v| v.into_iter().collect())
         }
@@ -465,25 +512,11 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
     };
     let (name, args) = match plain_parts(raw) {
         Some(parts) => parts,
-        None => {
-            let text = scan::trim(raw);
-            if text.is_empty() {
-                return Ok(None);
-            }
-            let (seq, rest) = scan::split_at_whitespace(text).ok_or_else(form)?;
-            let rest = scan::trim_start(rest);
-            let (n, call) = scan::split_at_whitespace(rest).ok_or_else(form)?;
-            if seq.is_empty()
-                || !seq.bytes().all(|b| b.is_ascii_digit())
-                || !n.starts_with('N')
-                || !n[1..].bytes().all(|b| b.is_ascii_digit() || b == b'.')
-            {
-                return Err(form());
-            }
-            let call = scan::trim(call);
-            let (name, rest) = scan::split_at_byte(call, b'(').ok_or_else(form)?;
-            (scan::trim(name), rest.strip_suffix(')').ok_or_else(form)?)
-        }
+        None => match parts(raw) {
+            Ok(Some(parts)) => parts,
+            Ok(None) => return Ok(None),
+            Err(NotACall) => return Err(form()),
+        },
     };
     let numbers = || -> Result<Args, CanonError> {
         let mut v = Args::EMPTY;
@@ -711,6 +744,142 @@ impl fmt::Display for CanonDifference {
 }
 
 impl std::error::Error for CanonDifference {}
+
+#[cfg(test)]
+mod plain_tests {
+    use proptest::prelude::*;
+
+    use super::{number, parts, plain_numbers, plain_parts, Args};
+
+    /// Lines made of the pieces of rs274's lines and of what could stand
+    /// in their place: ASCII and Unicode spaces, signs, points, commas,
+    /// parentheses, other letters.
+    fn line() -> impl Strategy<Value = String> {
+        let pieces = prop::sample::select(vec![
+            " ",
+            "  ",
+            "\t",
+            "\x0b",
+            "\r",
+            "\u{a0}",
+            "\u{3000}",
+            "12",
+            "7",
+            "N",
+            "N.....",
+            "N10",
+            ".",
+            "-",
+            "+",
+            "0.0000",
+            "-12.3456",
+            "1.500000",
+            ",",
+            ", ",
+            "(",
+            ")",
+            "STRAIGHT_FEED",
+            "SET_XY_ROTATION",
+            "\u{e9}",
+            "CANON_PLANE_XZ",
+            "1e3",
+            "99999999999999999999",
+            "",
+        ]);
+        // Mostly rs274's form, each part drawn with what may replace it.
+        let space = || prop::sample::select(vec![" ", " ", " ", "   ", "\t", "\x0b", "\u{a0}", "", "x"]);
+        let numbers = prop::collection::vec(
+            (
+                prop::sample::select(vec!["", "", " ", " ", "\u{a0}"]),
+                prop::sample::select(vec![
+                    "0.0000",
+                    "-12.3456",
+                    "1.500000",
+                    "0.0000",
+                    "-12.3456",
+                    "1.500000",
+                    "-0.0000",
+                    "5.",
+                    ".5",
+                    "-",
+                    "",
+                    "1e3",
+                    "+4",
+                    "1.2.3",
+                    "1234567890123456789",
+                    "123456789012345678",
+                    "\u{e9}",
+                ]),
+                prop::sample::select(vec!["", " ", "\t", "\u{3000}"]),
+            ),
+            0..8,
+        )
+        .prop_map(|v| v.iter().map(|(a, b, c)| format!("{a}{b}{c}")).collect::<Vec<_>>().join(","));
+        let formed = (
+            space(),
+            prop::sample::select(vec!["13", "13", "7", "", "1a"]),
+            space(),
+            prop::sample::select(vec!["N.....", "N.....", "N10", "N", "M..", ""]),
+            space(),
+            prop::sample::select(vec!["STRAIGHT_FEED", "STOP_SPEED_FEED_SYNCH", "", "A B", "X\u{a0}"]),
+            space(),
+            prop::sample::select(vec!["(", "(", "(", "", "(("]),
+            numbers,
+            prop::sample::select(vec![")", ")", ")", "", "))", ") x"]),
+            space(),
+        )
+            .prop_map(|(a, b, c, d, e, f, g, h, i, j, k)| format!("{a}{b}{c}{d}{e}{f}{g}{h}{i}{j}{k}"));
+        prop_oneof![
+            1 => prop::collection::vec(pieces, 0..16).prop_map(|v| v.concat()),
+            3 => formed,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(8192))]
+        #[test]
+        fn plain_readings_are_the_general_ones(raw in line()) {
+            let Some((_, args)) = plain_parts(&raw).inspect(|&p| {
+                assert_eq!(parts(&raw), Ok(Some(p)), "{raw:?}");
+            }) else {
+                return Ok(());
+            };
+            let mut v = Args::EMPTY;
+            if plain_numbers(args.as_bytes(), &mut v) {
+                let general: Vec<_> = args.split(',').map(|a| number(a.trim())).collect();
+                prop_assert!(general.iter().all(Result::is_ok), "{:?}", args);
+                let general: Vec<_> = general.into_iter().flatten().collect();
+                prop_assert_eq!(v.len(), general.len());
+                for (a, b) in v.kept().iter().zip(&general) {
+                    prop_assert_eq!((a, a.to_string()), (b, b.to_string()), "{:?}", args);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn rs274s_lines_are_read_plainly() {
+        let line = "   13 N..... STRAIGHT_TRAVERSE(11.0000, 0.0000, -2.0000, 0.0000, 0.0000, 0.0000) ";
+        let (name, args) = plain_parts(line).unwrap();
+        assert_eq!((name, args), ("STRAIGHT_TRAVERSE", "11.0000, 0.0000, -2.0000, 0.0000, 0.0000, 0.0000"));
+        let mut v = Args::EMPTY;
+        assert!(plain_numbers(args.as_bytes(), &mut v));
+        assert_eq!(
+            v.kept().iter().map(ToString::to_string).collect::<Vec<_>>()[..3],
+            ["11.0000", "0.0000", "-2.0000"]
+        );
+        assert_eq!(
+            plain_parts("   16 N..... START_SPEED_FEED_SYNC(2.038235,0)"),
+            Some(("START_SPEED_FEED_SYNC", "2.038235,0"))
+        );
+        // Left to the general reading: no arguments, an empty line, a
+        // negative zero, a Unicode space before the call.
+        assert!(!plain_numbers(b"", &mut Args::EMPTY.clone()));
+        assert!(!plain_numbers(b" -0.0000", &mut Args::EMPTY.clone()));
+        assert_eq!(plain_parts("  "), None);
+        assert_eq!(plain_parts("1 N..... STOP()\u{a0}"), None);
+    }
+}
 
 #[cfg(test)]
 mod number_tests {

@@ -421,7 +421,14 @@ fn whole_multiple(value: Decimal, k: i64) -> Option<i128> {
     // product and the unit within it.
     if let (Ok(m), Some(unit)) = (i64::try_from(mantissa), 10_i64.checked_pow(scale)) {
         if let Some(product) = m.checked_mul(k) {
-            return (product % unit == 0).then_some(i128::from(product / unit));
+            // `rs274` prints four decimals (six for a pitch): a division
+            // by a constant is a multiplication.
+            let (quotient, remainder) = match scale {
+                4 => (product / 10_000, product % 10_000),
+                6 => (product / 1_000_000, product % 1_000_000),
+                _ => (product / unit, product % unit),
+            };
+            return (remainder == 0).then_some(i128::from(quotient));
         }
     }
     if mantissa.unsigned_abs() <= u128::from(u64::MAX) && scale <= 18 && k.unsigned_abs() <= 1 << 32 {
