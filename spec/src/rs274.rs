@@ -218,30 +218,42 @@ fn number(s: &str) -> Result<Decimal, rust_decimal::Error> {
 /// other text.
 #[inline]
 fn plain_number(b: &[u8]) -> Option<Decimal> {
-    let (negative, digits) = match b.first() {
-        Some(b'-') => (true, &b[1..]),
-        Some(b'+') => (false, &b[1..]),
-        _ => (false, b),
-    };
-    if digits.is_empty() || digits.len() > 18 {
-        return None;
+    let mut at = 0;
+    plain_number_at(b, &mut at).filter(|_| at == b.len())
+}
+
+/// The plain form ([`plain_number`]) that starts at `b[*at]` and ends
+/// before the first byte that cannot continue it, `*at` moved there; or
+/// `None` when what stands there is no plain form.
+#[inline]
+fn plain_number_at(b: &[u8], at: &mut usize) -> Option<Decimal> {
+    let mut i = *at;
+    let negative = b.get(i) == Some(&b'-');
+    if matches!(b.get(i), Some(b'-' | b'+')) {
+        i += 1;
     }
+    let start = i;
     let (mut mantissa, mut scale, mut point) = (0_i64, 0_u32, false);
-    for &c in digits {
-        if c.is_ascii_digit() {
-            // At most 18 digits: below 10^18, no overflow.
-            mantissa = mantissa * 10 + i64::from(c - b'0');
+    while let Some(&c) = b.get(i) {
+        let digit = c.wrapping_sub(b'0');
+        if digit < 10 {
+            // Exact within 18 digits, the most a plain form has (checked
+            // below; beyond them the value is not used).
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(digit));
             scale += u32::from(point);
         } else if c == b'.' && !point {
             point = true;
         } else {
-            return None;
+            break;
         }
+        i += 1;
     }
-    if digits.len() == usize::from(point) || (negative && mantissa == 0) {
-        // No digit, or a negative zero.
+    let length = i - start;
+    if length > 18 || length == usize::from(point) || (negative && mantissa == 0) {
+        // Too long, no digit, or a negative zero.
         return None;
     }
+    *at = i;
     Some(Decimal::new(if negative { -mantissa } else { mantissa }, scale))
 }
 
@@ -361,17 +373,23 @@ fn plain_parts(raw: &str) -> Option<(&str, &str)> {
 /// number once its ASCII spaces are trimmed, so trimming only those is
 /// enough.
 fn plain_numbers(args: &[u8], v: &mut Args) -> bool {
-    for arg in args.split(|&c| c == b',') {
-        let plain = arg.iter().position(|&c| !scan::is_space(c)).and_then(|start| {
-            let end = arg.iter().rposition(|&c| !scan::is_space(c))?;
-            plain_number(&arg[start..=end])
-        });
-        match plain {
-            Some(d) => v.push(d),
-            None => return false,
+    let spaces = |mut i: usize| {
+        while args.get(i).is_some_and(|&c| scan::is_space(c)) {
+            i += 1;
+        }
+        i
+    };
+    let mut at = spaces(0);
+    loop {
+        let Some(d) = plain_number_at(args, &mut at) else { return false };
+        v.push(d);
+        at = spaces(at);
+        match args.get(at) {
+            None => return true,
+            Some(b',') => at = spaces(at + 1),
+            Some(_) => return false,
         }
     }
-    true
 }
 
 /// The few text operations [`call`] makes on a line, each exactly the
