@@ -125,19 +125,17 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 || text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
             // The line is one piece of the reader's, so that its numbers
             // are the trace's.
-            while let Some(item) = self.reader.next_in(text) {
-                let item = item.map_err(|error| TraceError::Program { error, csv_header: csv_header() })?;
-                let step = match item {
-                    Item::Move(m) => self
-                        .follow
-                        .plain(&m)
-                        .map_err(|error| TraceError::Step { error, csv_header: csv_header() })?,
-                    Item::G32(call) => Some(self.follow.thread(&call)),
-                    Item::Source(_) => None,
-                    // The trace mode refuses every cycle's block; were one
-                    // read, it is refused here rather than passed over.
-                    other => return Err(TraceError::CannedCycle { line: other.block().line }),
-                };
+            // Each item is lent where the reader returned it (not moved).
+            let follow = &mut self.follow;
+            while let Some(step) = self.reader.next_in_with(text, |item| match item {
+                Item::Move(m) => follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() }),
+                Item::G32(call) => Ok(Some(follow.thread(call))),
+                Item::Source(_) => Ok(None),
+                // The trace mode refuses every cycle's block; were one
+                // read, it is refused here rather than passed over.
+                other => Err(TraceError::CannedCycle { line: other.block().line }),
+            }) {
+                let step = step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
                 self.ready.extend(step);
             }
         }

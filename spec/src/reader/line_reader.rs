@@ -212,29 +212,50 @@ impl<'m> LineReader<'m> {
         match self.step(piece, None) {
             Ok(Step::Item(item)) => Some(Ok(item)),
             Ok(Step::Piece) => None,
-            Ok(Step::Subprograms) => {
-                self.done = true;
-                let at = self.at.take();
-                let mut lexer = match at {
-                    Some(at) => Lexer::resume(piece, at),
-                    None => Lexer::at_line(piece, self.line + 1),
-                };
-                let mut block = Block::empty();
-                let line = match lexer.next_into(&mut block) {
-                    Some(Ok(())) => block.line,
-                    _ => self.line + 1,
-                };
-                Some(Err(ProgramError {
-                    line,
-                    word: Some("M98".into()),
-                    kind: ErrorKind::Unsupported(
-                        "a subprogram call read without the program's subprograms (LineReader::next_in; \
-                         LineReader::step follows calls)"
-                            .into(),
-                    ),
-                }))
-            }
+            Ok(Step::Subprograms) => Some(Err(self.no_subprograms(piece))),
             Err(e) => Some(Err(e)),
+        }
+    }
+
+    /// [`LineReader::next_in`] with the item lent to `f` where it was
+    /// returned, not moved (an item is a few hundred bytes): what `f`
+    /// makes of it, or `None` when the piece has no more.
+    pub fn next_in_with<'a, T>(
+        &mut self,
+        piece: &'a [u8],
+        f: impl FnOnce(&Item<'a>) -> T,
+    ) -> Option<Result<T, ProgramError>> {
+        match self.step(piece, None) {
+            Ok(Step::Item(ref item)) => Some(Ok(f(item))),
+            Ok(Step::Piece) => None,
+            Ok(Step::Subprograms) => Some(Err(self.no_subprograms(piece))),
+            Err(e) => Some(Err(e)),
+        }
+    }
+
+    /// The error of a subprogram call met by [`LineReader::next_in`],
+    /// which is given no subprograms; the reader yields nothing more.
+    #[cold]
+    fn no_subprograms(&mut self, piece: &[u8]) -> ProgramError {
+        self.done = true;
+        let at = self.at.take();
+        let mut lexer = match at {
+            Some(at) => Lexer::resume(piece, at),
+            None => Lexer::at_line(piece, self.line + 1),
+        };
+        let mut block = Block::empty();
+        let line = match lexer.next_into(&mut block) {
+            Some(Ok(())) => block.line,
+            _ => self.line + 1,
+        };
+        ProgramError {
+            line,
+            word: Some("M98".into()),
+            kind: ErrorKind::Unsupported(
+                "a subprogram call read without the program's subprograms (LineReader::next_in; \
+                 LineReader::step follows calls)"
+                    .into(),
+            ),
         }
     }
 
