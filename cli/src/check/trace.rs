@@ -128,14 +128,17 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             // Each item is lent where the reader returned it (not moved).
             let follow = &mut self.follow;
             while let Some(step) = self.reader.next_in_with(text, |item| match item {
-                Item::Move(m) => follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() }),
+                Item::Move(m) => {
+                    follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() })
+                }
                 Item::G32(call) => Ok(Some(follow.thread(call))),
                 Item::Source(_) => Ok(None),
                 // The trace mode refuses every cycle's block; were one
                 // read, it is refused here rather than passed over.
                 other => Err(TraceError::CannedCycle { line: other.block().line }),
             }) {
-                let step = step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
+                let step =
+                    step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
                 self.ready.extend(step);
             }
         }
@@ -417,14 +420,17 @@ fn whole_multiple(value: Decimal, k: i64) -> Option<i128> {
     let (mantissa, scale) = (value.mantissa(), value.scale());
     // The usual case, in `i64` (`i128` division is a library call): the
     // product and the unit within it.
-    if let (Ok(m), Some(unit)) = (i64::try_from(mantissa), 10_i64.checked_pow(scale)) {
+    if let (Ok(m), true) = (i64::try_from(mantissa), scale <= 18) {
         if let Some(product) = m.checked_mul(k) {
             // `rs274` prints four decimals (six for a pitch): a division
             // by a constant is a multiplication.
             let (quotient, remainder) = match scale {
                 4 => (product / 10_000, product % 10_000),
                 6 => (product / 1_000_000, product % 1_000_000),
-                _ => (product / unit, product % unit),
+                _ => {
+                    let unit = 10_i64.pow(scale);
+                    (product / unit, product % unit)
+                }
             };
             return (remainder == 0).then_some(i128::from(quotient));
         }
@@ -489,11 +495,11 @@ impl CanonTrace<'_> {
     fn increments(&self, value: Decimal, factor: i64, what: &'static str) -> Result<i64, TraceError> {
         let line = self.line;
         let scaled = whole_multiple(value, self.units.per_unit() * factor)
-            .ok_or(TraceError::CanonNotInIncrements { line, what, value })?;
+            .ok_or_else(|| TraceError::CanonNotInIncrements { line, what, value })?;
         i64::try_from(scaled)
             .ok()
             .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
-            .ok_or(TraceError::CanonOutOfRange { line, what, value })
+            .ok_or_else(|| TraceError::CanonOutOfRange { line, what, value })
     }
 
     /// What every motion must meet: the program's unit, no rotation, and
