@@ -494,12 +494,15 @@ impl CanonTrace<'_> {
     /// A printed length in increments (X doubled: a diameter).
     fn increments(&self, value: Decimal, factor: i64, what: &'static str) -> Result<i64, TraceError> {
         let line = self.line;
-        let scaled = whole_multiple(value, self.units.per_unit() * factor)
-            .ok_or_else(|| TraceError::CanonNotInIncrements { line, what, value })?;
-        i64::try_from(scaled)
-            .ok()
-            .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
-            .ok_or_else(|| TraceError::CanonOutOfRange { line, what, value })
+        // The errors are built only when raised (`ok_or` built and dropped
+        // one for every coordinate).
+        let Some(scaled) = whole_multiple(value, self.units.per_unit() * factor) else {
+            return Err(TraceError::CanonNotInIncrements { line, what, value });
+        };
+        match i64::try_from(scaled).ok().filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs()) {
+            Some(v) => Ok(v),
+            None => Err(TraceError::CanonOutOfRange { line, what, value }),
+        }
     }
 
     /// What every motion must meet: the program's unit, no rotation, and
