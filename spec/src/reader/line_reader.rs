@@ -220,6 +220,22 @@ impl<'m> LineReader<'m> {
     /// [`LineReader::next_in`] with the item lent to `f` where it was
     /// returned, not moved (an item is a few hundred bytes): what `f`
     /// makes of it, or `None` when the piece has no more.
+    ///
+    /// ```
+    /// use cycleref_spec::reader::{Item, LineReader};
+    /// use cycleref_spec::{Machine, ProfileName};
+    ///
+    /// let machine = Machine::new(ProfileName::Gsk988);
+    /// let mut reader = LineReader::new(&machine);
+    /// let piece = b"M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+    /// let mut cycle_lines = Vec::new();
+    /// while let Some(line) = reader.next_in_with(piece, |item| matches!(item, Item::G76(_)).then(|| item.block().line)) {
+    ///     cycle_lines.extend(line?);
+    /// }
+    /// reader.finish()?;
+    /// assert_eq!(cycle_lines, [4]);
+    /// # Ok::<(), cycleref_spec::ProgramError>(())
+    /// ```
     pub fn next_in_with<'a, T>(
         &mut self,
         piece: &'a [u8],
