@@ -205,36 +205,300 @@ pub enum CanonCall {
 }
 
 /// `s` as a decimal, as [`Decimal`]'s parser reads it: the plain forms
-/// `rs274` prints (`-12.3456`, `0.0000`, up to 18 digits) digit by digit,
-/// without the general parser's work; any other form by that parser.
+/// `rs274` prints (`-12.3456`, `0.0000`, up to 18 digits) digit by digit
+/// ([`plain_number`]), without the general parser's work; any other form
+/// by that parser.
 fn number(s: &str) -> Result<Decimal, rust_decimal::Error> {
-    let b = s.as_bytes();
-    let (negative, digits) = match b.first() {
-        Some(b'-') => (true, &b[1..]),
-        Some(b'+') => (false, &b[1..]),
-        _ => (false, b),
-    };
-    if digits.is_empty() || digits.len() > 18 {
-        return s.parse();
+    plain_number(s.as_bytes()).map_or_else(|| s.parse(), Ok)
+}
+
+/// `b` as a decimal when it is a plain form: an optional sign, then at
+/// most 18 digits and points, one point at most and one digit at least,
+/// and not a negative zero (whose sign the parser keeps); `None` for any
+/// other text.
+#[inline]
+fn plain_number(b: &[u8]) -> Option<Decimal> {
+    let mut at = 0;
+    plain_number_at(b, &mut at).filter(|_| at == b.len())
+}
+
+/// The plain form ([`plain_number`]) that starts at `b[*at]` and ends
+/// before the first byte that cannot continue it, `*at` moved there; or
+/// `None` when what stands there is no plain form.
+#[inline]
+fn plain_number_at(b: &[u8], at: &mut usize) -> Option<Decimal> {
+    let mut i = *at;
+    let negative = b.get(i) == Some(&b'-');
+    if matches!(b.get(i), Some(b'-' | b'+')) {
+        i += 1;
     }
-    let (mut mantissa, mut scale, mut point, mut any) = (0_i64, 0_u32, false, false);
-    for &c in digits {
-        match c {
-            b'0'..=b'9' => {
-                // At most 18 digits: below 10^18, no overflow.
-                mantissa = mantissa * 10 + i64::from(c - b'0');
-                scale += u32::from(point);
-                any = true;
-            }
-            b'.' if !point => point = true,
-            _ => return s.parse(),
+    let start = i;
+    let (mut mantissa, mut scale, mut point) = (0_i64, 0_u32, false);
+    while let Some(&c) = b.get(i) {
+        let digit = c.wrapping_sub(b'0');
+        if digit < 10 {
+            // Exact within 18 digits, the most a plain form has (checked
+            // below; beyond them the value is not used).
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(digit));
+            scale += u32::from(point);
+        } else if c == b'.' && !point {
+            point = true;
+        } else {
+            break;
+        }
+        i += 1;
+    }
+    let length = i - start;
+    if length > 18 || length == usize::from(point) || (negative && mantissa == 0) {
+        // Too long, no digit, or a negative zero.
+        return None;
+    }
+    *at = i;
+    Some(Decimal::new(if negative { -mantissa } else { mantissa }, scale))
+}
+
+/// A call's arguments as read: the first [`Args::KEPT`] kept (no call
+/// takes more), all of them counted, so that a call given too many is
+/// named with their number.
+#[derive(Clone)]
+struct Args {
+    kept: [Decimal; Args::KEPT],
+    len: usize,
+}
+
+impl Args {
+    /// The most arguments a call takes (`ARC_FEED` with U, V and W).
+    const KEPT: usize = 12;
+    const EMPTY: Args = Args { kept: [Decimal::ZERO; Args::KEPT], len: 0 };
+
+    fn push(&mut self, d: Decimal) {
+        if let Some(slot) = self.kept.get_mut(self.len) {
+            *slot = d;
+        }
+        self.len += 1;
+    }
+
+    /// How many arguments the call was given.
+    fn len(&self) -> usize {
+        self.len
+    }
+
+    /// The arguments kept, in order: all of them when there are at most
+    /// [`Args::KEPT`].
+    fn kept(&self) -> &[Decimal] {
+        &self.kept[..self.len.min(Args::KEPT)]
+    }
+}
+
+/// A line that is not of the form `<sequence> N..... CALL(arguments)`.
+#[derive(Debug, PartialEq, Eq)]
+struct NotACall;
+
+/// The name and the arguments of a line, `None` for an empty line: the
+/// line trimmed, the sequence (digits) and the N word (`N`, then digits
+/// and points) each up to a space, the call trimmed, its name up to the
+/// first `(` and trimmed, its arguments up to the `)` that ends it.
+fn parts(raw: &str) -> Result<Option<(&str, &str)>, NotACall> {
+    let text = scan::trim(raw);
+    if text.is_empty() {
+        return Ok(None);
+    }
+    let (seq, rest) = scan::split_at_whitespace(text).ok_or(NotACall)?;
+    let rest = scan::trim_start(rest);
+    let (n, call) = scan::split_at_whitespace(rest).ok_or(NotACall)?;
+    if seq.is_empty()
+        || !seq.bytes().all(|b| b.is_ascii_digit())
+        || !n.starts_with('N')
+        || !n[1..].bytes().all(|b| b.is_ascii_digit() || b == b'.')
+    {
+        return Err(NotACall);
+    }
+    let call = scan::trim(call);
+    let (name, rest) = scan::split_at_byte(call, b'(').ok_or(NotACall)?;
+    Ok(Some((scan::trim(name), rest.strip_suffix(')').ok_or(NotACall)?)))
+}
+
+/// The name and the arguments of a line as `rs274` prints it
+/// (`<sequence> N<number or .....> <name>(<arguments>)` with ASCII spaces)
+/// in one pass over its bytes; `None` for any other line (empty, an
+/// error, or spaced by other characters), which [`call`] then reads by
+/// [`parts`]. Where it gives them they are those of [`parts`] (the test
+/// `plain_readings_are_the_general_ones` compares them).
+fn plain_parts(raw: &str) -> Option<(&str, &str)> {
+    // Only ASCII bytes are looked for, and the bytes of other characters
+    // are never ASCII: such a character is taken for none of them.
+    let b = raw.as_bytes();
+    let spaces = |mut i: usize| {
+        while b.get(i).is_some_and(|&c| scan::is_space(c)) {
+            i += 1;
+        }
+        i
+    };
+    let mut i = spaces(0);
+    let sequence = i;
+    while b.get(i).is_some_and(u8::is_ascii_digit) {
+        i += 1;
+    }
+    if i == sequence || !b.get(i).is_some_and(|&c| scan::is_space(c)) {
+        return None;
+    }
+    i = spaces(i);
+    if b.get(i) != Some(&b'N') {
+        return None;
+    }
+    i += 1;
+    while b.get(i).is_some_and(|&c| c.is_ascii_digit() || c == b'.') {
+        i += 1;
+    }
+    if !b.get(i).is_some_and(|&c| scan::is_space(c)) {
+        return None;
+    }
+    let call = spaces(i);
+    let open = call + b.get(call..)?.iter().position(|&c| c == b'(')?;
+    let close = b.iter().rposition(|&c| !scan::is_space(c))?;
+    if close <= open || b[close] != b')' {
+        return None;
+    }
+    Some((scan::trim(&raw[call..open]), &raw[open + 1..close]))
+}
+
+/// Pushes the arguments `args` (the text between a call's parentheses)
+/// onto `v` in one pass and gives true when every one is a
+/// [`plain_number`] between ASCII spaces, as `rs274` prints them; false
+/// for anything else (an empty text, only spaces, another form), which
+/// [`call`] then reads an argument at a time. Where it gives arguments
+/// they are those of that reading (`,` splits them, each is trimmed and
+/// read by [`number`], whose first reading is [`plain_number`]): an
+/// argument with a character that is not ASCII at either end is no plain
+/// number once its ASCII spaces are trimmed, so trimming only those is
+/// enough.
+fn plain_numbers(args: &[u8], v: &mut Args) -> bool {
+    let spaces = |mut i: usize| {
+        while args.get(i).is_some_and(|&c| scan::is_space(c)) {
+            i += 1;
+        }
+        i
+    };
+    let mut at = spaces(0);
+    loop {
+        let Some(d) = plain_number_at(args, &mut at) else { return false };
+        v.push(d);
+        at = spaces(at);
+        match args.get(at) {
+            None => return true,
+            Some(b',') => at = spaces(at + 1),
+            Some(_) => return false,
         }
     }
-    if !any || (negative && mantissa == 0) {
-        // No digit, or a negative zero (its sign kept as the parser keeps it).
-        return s.parse();
+}
+
+/// The few text operations [`call`] makes on a line, each exactly the
+/// `str` method it names (`str::trim`, `str::trim_start`,
+/// `str::split_once` with `char::is_whitespace` or an ASCII character)
+/// but reading bytes while they are ASCII, and handing the rest to that
+/// method at the first byte that is not: `rs274`'s lines are ASCII, and
+/// the `char` searches were a third of `check`'s time on them.
+mod scan {
+    /// `char::is_whitespace` of an ASCII byte (U+000B included, unlike
+    /// `u8::is_ascii_whitespace`).
+    #[inline]
+    pub(super) fn is_space(b: u8) -> bool {
+        // `\t`, `\n`, U+000B, U+000C and `\r` are 9 to 13.
+        b == b' ' || (b'\t'..=b'\r').contains(&b)
     }
-    Ok(Decimal::new(if negative { -mantissa } else { mantissa }, scale))
+
+    /// `s.trim_start()`.
+    #[inline]
+    pub(super) fn trim_start(s: &str) -> &str {
+        match s.bytes().position(|b| !is_space(b)) {
+            None => "",
+            Some(i) if s.as_bytes()[i].is_ascii() => &s[i..],
+            Some(_) => s.trim_start(),
+        }
+    }
+
+    /// `s.trim()`.
+    #[inline]
+    pub(super) fn trim(s: &str) -> &str {
+        let s = trim_start(s);
+        match s.bytes().rposition(|b| !is_space(b)) {
+            None => "",
+            Some(i) if s.as_bytes()[i].is_ascii() => &s[..=i],
+            Some(_) => s.trim_end(),
+        }
+    }
+
+    /// `s.split_once(char::is_whitespace)`.
+    #[inline]
+    pub(super) fn split_at_whitespace(s: &str) -> Option<(&str, &str)> {
+        match s.bytes().position(|b| is_space(b) || !b.is_ascii()) {
+            Some(i) if s.as_bytes()[i].is_ascii() => Some((&s[..i], &s[i + 1..])),
+            Some(_) => s.split_once(char::is_whitespace),
+            None => None,
+        }
+    }
+
+    /// `s.split_once(c)` for an ASCII `c` (which, in UTF-8, is never part
+    /// of another character's bytes).
+    #[inline]
+    pub(super) fn split_at_byte(s: &str, c: u8) -> Option<(&str, &str)> {
+        debug_assert!(c.is_ascii());
+        // A plain loop: the texts are a few bytes (an argument), where
+        // `memchr`'s setup costs more than it saves.
+        let i = s.bytes().position(|b| b == c)?;
+        Some((&s[..i], &s[i + 1..]))
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use proptest::prelude::*;
+
+        use super::{split_at_byte, split_at_whitespace, trim, trim_start};
+
+        /// Every character class the scan tells apart: ASCII spaces (the
+        /// vertical tab among them), Unicode spaces of two and three
+        /// bytes, other ASCII and other non-ASCII characters.
+        fn line() -> impl Strategy<Value = String> {
+            let chars = prop::sample::select(vec![
+                ' ',
+                '\t',
+                '\n',
+                '\x0b',
+                '\x0c',
+                '\r',
+                '\u{85}',
+                '\u{a0}',
+                '\u{2003}',
+                '\u{3000}',
+                'a',
+                'N',
+                '.',
+                ',',
+                '(',
+                ')',
+                '1',
+                '-',
+                '\u{e9}',
+                '\u{4e2d}',
+                '\u{1f600}',
+                '\u{feff}',
+            ]);
+            prop::collection::vec(chars, 0..12).prop_map(|v| v.into_iter().collect())
+        }
+
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(4096))]
+            #[test]
+            fn each_scan_is_the_str_method_it_names(s in line()) {
+                prop_assert_eq!(trim(&s), s.trim());
+                prop_assert_eq!(trim_start(&s), s.trim_start());
+                prop_assert_eq!(split_at_whitespace(&s), s.split_once(char::is_whitespace));
+                for c in [b'(', b','] {
+                    prop_assert_eq!(split_at_byte(&s, c), s.split_once(char::from(c)));
+                }
+            }
+        }
+    }
 }
 
 /// The call of one line of `rs274`'s output (`line` names it in an
@@ -256,10 +520,6 @@ fn number(s: &str) -> Result<Decimal, rust_decimal::Error> {
 /// ```
 pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
     let fail = |message: String| CanonError { line, message };
-    let text = raw.trim();
-    if text.is_empty() {
-        return Ok(None);
-    }
     // `<sequence> N<number or .....> <call>`.
     let form = || {
         fail(
@@ -268,36 +528,39 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
                 .into(),
         )
     };
-    let (seq, rest) = text.split_once(char::is_whitespace).ok_or_else(form)?;
-    let rest = rest.trim_start();
-    let (n, call) = rest.split_once(char::is_whitespace).ok_or_else(form)?;
-    if seq.is_empty()
-        || !seq.bytes().all(|b| b.is_ascii_digit())
-        || !n.starts_with('N')
-        || !n[1..].bytes().all(|b| b.is_ascii_digit() || b == b'.')
-    {
-        return Err(form());
-    }
-    let call = call.trim();
-    let (name, rest) = call.split_once('(').ok_or_else(form)?;
-    let name = name.trim();
-    let args = rest.strip_suffix(')').ok_or_else(form)?;
-    let numbers = || -> Result<Vec<Decimal>, CanonError> {
-        if args.trim().is_empty() {
-            return Ok(Vec::new());
-        }
-        args.split(',')
-            .map(|a| {
-                number(a.trim()).map_err(|e| {
-                    fail(format!(
-                        "{name}: argument `{}` is not a number ({e})",
-                        crate::error::shown(a.trim())
-                    ))
-                })
-            })
-            .collect()
+    let (name, args) = match plain_parts(raw) {
+        Some(parts) => parts,
+        None => match parts(raw) {
+            Ok(Some(parts)) => parts,
+            Ok(None) => return Ok(None),
+            Err(NotACall) => return Err(form()),
+        },
     };
-    let count = |v: &Vec<Decimal>, want: &[usize]| {
+    let numbers = || -> Result<Args, CanonError> {
+        let mut v = Args::EMPTY;
+        if plain_numbers(args.as_bytes(), &mut v) {
+            return Ok(v);
+        }
+        v = Args::EMPTY;
+        if scan::trim(args).is_empty() {
+            return Ok(v);
+        }
+        let mut rest = Some(args);
+        while let Some(r) = rest {
+            let (a, next) = match scan::split_at_byte(r, b',') {
+                Some((a, next)) => (a, Some(next)),
+                None => (r, None),
+            };
+            rest = next;
+            let a = scan::trim(a);
+            let d = number(a).map_err(|e| {
+                fail(format!("{name}: argument `{}` is not a number ({e})", crate::error::shown(a)))
+            })?;
+            v.push(d);
+        }
+        Ok(v)
+    };
+    let count = |v: &Args, want: &[usize]| {
         if want.contains(&v.len()) {
             Ok(())
         } else {
@@ -309,6 +572,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             let v = numbers()?;
             // X Y Z A B C, and U V W on machines that have them.
             count(&v, &[6, 9])?;
+            let v = v.kept();
             if v.len() == 9 && v[6..].iter().any(|d| !d.is_zero()) {
                 return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
             }
@@ -324,6 +588,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             // axis_end_point, a, b, c (and u, v, w).
             let v = numbers()?;
             count(&v, &[9, 12])?;
+            let v = v.kept();
             if v.len() == 12 && v[9..].iter().any(|d| !d.is_zero()) {
                 return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
             }
@@ -344,6 +609,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             // Two arguments (pitch, velocity mode), or three with the
             // spindle first (later LinuxCNC versions).
             let v = numbers()?;
+            let v = v.kept();
             let pitch = match v.len() {
                 2 => v[0],
                 3 => v[1],
@@ -360,7 +626,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             CanonCall::StartSync { pitch }
         }
         "STOP_SPEED_FEED_SYNCH" | "STOP_SPEED_FEED_SYNC" => CanonCall::StopSync,
-        "USE_LENGTH_UNITS" => match args.trim() {
+        "USE_LENGTH_UNITS" => match scan::trim(args) {
             "CANON_UNITS_MM" => CanonCall::Units(CanonUnits::Mm),
             "CANON_UNITS_INCHES" => CanonCall::Units(CanonUnits::Inches),
             other => {
@@ -373,9 +639,9 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
         "SET_XY_ROTATION" => {
             let v = numbers()?;
             count(&v, &[1])?;
-            CanonCall::Rotation(v[0])
+            CanonCall::Rotation(v.kept()[0])
         }
-        "SELECT_PLANE" => CanonCall::Plane { xz: args.trim() == "CANON_PLANE_XZ" },
+        "SELECT_PLANE" => CanonCall::Plane { xz: scan::trim(args) == "CANON_PLANE_XZ" },
         skipped if SKIPPED_CALLS.contains(&skipped) => CanonCall::Skipped,
         other => {
             return Err(fail(format!(
@@ -496,6 +762,142 @@ impl fmt::Display for CanonDifference {
 }
 
 impl std::error::Error for CanonDifference {}
+
+#[cfg(test)]
+mod plain_tests {
+    use proptest::prelude::*;
+
+    use super::{number, parts, plain_numbers, plain_parts, Args};
+
+    /// Lines made of the pieces of rs274's lines and of what could stand
+    /// in their place: ASCII and Unicode spaces, signs, points, commas,
+    /// parentheses, other letters.
+    fn line() -> impl Strategy<Value = String> {
+        let pieces = prop::sample::select(vec![
+            " ",
+            "  ",
+            "\t",
+            "\x0b",
+            "\r",
+            "\u{a0}",
+            "\u{3000}",
+            "12",
+            "7",
+            "N",
+            "N.....",
+            "N10",
+            ".",
+            "-",
+            "+",
+            "0.0000",
+            "-12.3456",
+            "1.500000",
+            ",",
+            ", ",
+            "(",
+            ")",
+            "STRAIGHT_FEED",
+            "SET_XY_ROTATION",
+            "\u{e9}",
+            "CANON_PLANE_XZ",
+            "1e3",
+            "99999999999999999999",
+            "",
+        ]);
+        // Mostly rs274's form, each part drawn with what may replace it.
+        let space = || prop::sample::select(vec![" ", " ", " ", "   ", "\t", "\x0b", "\u{a0}", "", "x"]);
+        let numbers = prop::collection::vec(
+            (
+                prop::sample::select(vec!["", "", " ", " ", "\u{a0}"]),
+                prop::sample::select(vec![
+                    "0.0000",
+                    "-12.3456",
+                    "1.500000",
+                    "0.0000",
+                    "-12.3456",
+                    "1.500000",
+                    "-0.0000",
+                    "5.",
+                    ".5",
+                    "-",
+                    "",
+                    "1e3",
+                    "+4",
+                    "1.2.3",
+                    "1234567890123456789",
+                    "123456789012345678",
+                    "\u{e9}",
+                ]),
+                prop::sample::select(vec!["", " ", "\t", "\u{3000}"]),
+            ),
+            0..8,
+        )
+        .prop_map(|v| v.iter().map(|(a, b, c)| format!("{a}{b}{c}")).collect::<Vec<_>>().join(","));
+        let formed = (
+            space(),
+            prop::sample::select(vec!["13", "13", "7", "", "1a"]),
+            space(),
+            prop::sample::select(vec!["N.....", "N.....", "N10", "N", "M..", ""]),
+            space(),
+            prop::sample::select(vec!["STRAIGHT_FEED", "STOP_SPEED_FEED_SYNCH", "", "A B", "X\u{a0}"]),
+            space(),
+            prop::sample::select(vec!["(", "(", "(", "", "(("]),
+            numbers,
+            prop::sample::select(vec![")", ")", ")", "", "))", ") x"]),
+            space(),
+        )
+            .prop_map(|(a, b, c, d, e, f, g, h, i, j, k)| format!("{a}{b}{c}{d}{e}{f}{g}{h}{i}{j}{k}"));
+        prop_oneof![
+            1 => prop::collection::vec(pieces, 0..16).prop_map(|v| v.concat()),
+            3 => formed,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(8192))]
+        #[test]
+        fn plain_readings_are_the_general_ones(raw in line()) {
+            let Some((_, args)) = plain_parts(&raw).inspect(|&p| {
+                assert_eq!(parts(&raw), Ok(Some(p)), "{raw:?}");
+            }) else {
+                return Ok(());
+            };
+            let mut v = Args::EMPTY;
+            if plain_numbers(args.as_bytes(), &mut v) {
+                let general: Vec<_> = args.split(',').map(|a| number(a.trim())).collect();
+                prop_assert!(general.iter().all(Result::is_ok), "{:?}", args);
+                let general: Vec<_> = general.into_iter().flatten().collect();
+                prop_assert_eq!(v.len(), general.len());
+                for (a, b) in v.kept().iter().zip(&general) {
+                    prop_assert_eq!((a, a.to_string()), (b, b.to_string()), "{:?}", args);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn rs274s_lines_are_read_plainly() {
+        let line = "   13 N..... STRAIGHT_TRAVERSE(11.0000, 0.0000, -2.0000, 0.0000, 0.0000, 0.0000) ";
+        let (name, args) = plain_parts(line).unwrap();
+        assert_eq!((name, args), ("STRAIGHT_TRAVERSE", "11.0000, 0.0000, -2.0000, 0.0000, 0.0000, 0.0000"));
+        let mut v = Args::EMPTY;
+        assert!(plain_numbers(args.as_bytes(), &mut v));
+        assert_eq!(
+            v.kept().iter().map(ToString::to_string).collect::<Vec<_>>()[..3],
+            ["11.0000", "0.0000", "-2.0000"]
+        );
+        assert_eq!(
+            plain_parts("   16 N..... START_SPEED_FEED_SYNC(2.038235,0)"),
+            Some(("START_SPEED_FEED_SYNC", "2.038235,0"))
+        );
+        // Left to the general reading: no arguments, an empty line, a
+        // negative zero, a Unicode space before the call.
+        assert!(!plain_numbers(b"", &mut Args::EMPTY.clone()));
+        assert!(!plain_numbers(b" -0.0000", &mut Args::EMPTY.clone()));
+        assert_eq!(plain_parts("  "), None);
+        assert_eq!(plain_parts("1 N..... STOP()\u{a0}"), None);
+    }
+}
 
 #[cfg(test)]
 mod number_tests {

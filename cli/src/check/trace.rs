@@ -125,19 +125,20 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 || text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
             // The line is one piece of the reader's, so that its numbers
             // are the trace's.
-            while let Some(item) = self.reader.next_in(text) {
-                let item = item.map_err(|error| TraceError::Program { error, csv_header: csv_header() })?;
-                let step = match item {
-                    Item::Move(m) => self
-                        .follow
-                        .plain(&m)
-                        .map_err(|error| TraceError::Step { error, csv_header: csv_header() })?,
-                    Item::G32(call) => Some(self.follow.thread(&call)),
-                    Item::Source(_) => None,
-                    // The trace mode refuses every cycle's block; were one
-                    // read, it is refused here rather than passed over.
-                    other => return Err(TraceError::CannedCycle { line: other.block().line }),
-                };
+            // Each item is lent where the reader returned it (not moved).
+            let follow = &mut self.follow;
+            while let Some(step) = self.reader.next_in_with(text, |item| match item {
+                Item::Move(m) => {
+                    follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() })
+                }
+                Item::G32(call) => Ok(Some(follow.thread(call))),
+                Item::Source(_) => Ok(None),
+                // The trace mode refuses every cycle's block; were one
+                // read, it is refused here rather than passed over.
+                other => Err(TraceError::CannedCycle { line: other.block().line }),
+            }) {
+                let step =
+                    step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
                 self.ready.extend(step);
             }
         }
@@ -403,6 +404,46 @@ pub(super) fn format_of(trace: &Path) -> TraceFormat {
     }
 }
 
+/// The call of a canonical output's line `line`.
+fn call_of(text: &str, line: usize) -> Result<Option<CanonCall>, TraceError> {
+    cycleref_spec::rs274::call(text, line).map_err(TraceError::Canon)
+}
+
+/// `value × k` when it is a whole number, else `None`: what
+/// `value.checked_mul(k)` filtered by a zero `fract()` gives, as an
+/// integer. The printed values have a mantissa within 64 bits and `k` is
+/// at most 2³², so the product is below 2⁹⁶ and `Decimal`'s product is
+/// exact: it is computed in `i128` without `Decimal`'s general
+/// multiplication (which was a tenth of `check`'s time on a canonical
+/// trace); any other value goes through `Decimal` as before.
+fn whole_multiple(value: Decimal, k: i64) -> Option<i128> {
+    let (mantissa, scale) = (value.mantissa(), value.scale());
+    // The usual case, in `i64` (`i128` division is a library call): the
+    // product and the unit within it.
+    if let (Ok(m), true) = (i64::try_from(mantissa), scale <= 18) {
+        if let Some(product) = m.checked_mul(k) {
+            // `rs274` prints four decimals (six for a pitch): a division
+            // by a constant is a multiplication.
+            let (quotient, remainder) = match scale {
+                4 => (product / 10_000, product % 10_000),
+                6 => (product / 1_000_000, product % 1_000_000),
+                _ => {
+                    let unit = 10_i64.pow(scale);
+                    (product / unit, product % unit)
+                }
+            };
+            return (remainder == 0).then_some(i128::from(quotient));
+        }
+    }
+    if mantissa.unsigned_abs() <= u128::from(u64::MAX) && scale <= 18 && k.unsigned_abs() <= 1 << 32 {
+        let product = mantissa * i128::from(k);
+        let unit = 10_i128.pow(scale);
+        return (product % unit == 0).then_some(product / unit);
+    }
+    let product = value.checked_mul(Decimal::from(k)).filter(|s| s.fract().is_zero())?;
+    i128::try_from(product).ok()
+}
+
 /// The vendor's toolpath from LinuxCNC's canonical output (reading
 /// R-CHECKLCNC): `STRAIGHT_TRAVERSE` is a rapid, `STRAIGHT_FEED` a feed,
 /// or a thread move at the pitch of the `START_SPEED_FEED_SYNC` in force,
@@ -453,14 +494,15 @@ impl CanonTrace<'_> {
     /// A printed length in increments (X doubled: a diameter).
     fn increments(&self, value: Decimal, factor: i64, what: &'static str) -> Result<i64, TraceError> {
         let line = self.line;
-        let scaled = value
-            .checked_mul(Decimal::from(self.units.per_unit() * factor))
-            .filter(|s| s.fract().is_zero())
-            .ok_or(TraceError::CanonNotInIncrements { line, what, value })?;
-        i64::try_from(scaled)
-            .ok()
-            .filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs())
-            .ok_or(TraceError::CanonOutOfRange { line, what, value })
+        // The errors are built only when raised (`ok_or` built and dropped
+        // one for every coordinate).
+        let Some(scaled) = whole_multiple(value, self.units.per_unit() * factor) else {
+            return Err(TraceError::CanonNotInIncrements { line, what, value });
+        };
+        match i64::try_from(scaled).ok().filter(|v| v.unsigned_abs() <= MAX_LENGTH.unsigned_abs()) {
+            Some(v) => Ok(v),
+            None => Err(TraceError::CanonOutOfRange { line, what, value }),
+        }
     }
 
     /// What every motion must meet: the program's unit, no rotation, and
@@ -496,14 +538,43 @@ impl CanonTrace<'_> {
         Ok(())
     }
 
+    /// The call of line `self.line` (`Some(None)`: an empty line), or
+    /// `None` at the end of the trace. A line that is whole in the
+    /// source's buffer is read there, where it stands; any other (the
+    /// last of a buffer, or after a failed read) is read as
+    /// [`trace_line`] reads it, into `self.buf`: the same line either
+    /// way, the line end `\n` (a `\r` before it is trimmed by the call's
+    /// reading as any space is).
+    fn next_call(&mut self) -> Result<Option<Option<CanonCall>>, TraceError> {
+        let line = self.line;
+        let in_place = self.source.fill_buf().ok().and_then(|b| Some(memchr::memchr(b'\n', b)? + 1));
+        if let Some(len) = in_place {
+            let bytes = self.source.fill_buf().map_err(|error| TraceError::CannotRead { line, error })?;
+            let bytes = bytes.get(..len - 1).unwrap_or_default();
+            let call = match std::str::from_utf8(bytes) {
+                // A byte-order mark may start the first line.
+                Ok(t) => call_of(if line == 1 { t.strip_prefix('\u{feff}').unwrap_or(t) } else { t }, line),
+                Err(e) => Err(not_utf8(line, e.valid_up_to())),
+            };
+            self.source.consume(len);
+            return call.map(Some);
+        }
+        // The line is read from a buffer taken for the time of its
+        // reading (given back below), so that the call can borrow it.
+        let mut buf = std::mem::take(&mut self.buf);
+        let call = match trace_line(&mut *self.source, &mut buf, line) {
+            None => Ok(None),
+            Some(Err(e)) => Err(e),
+            Some(Ok(text)) => call_of(text, line).map(Some),
+        };
+        self.buf = buf;
+        call
+    }
+
     fn step(&mut self) -> Result<Option<Step>, TraceError> {
         loop {
             self.line += 1;
-            let text = match trace_line(&mut *self.source, &mut self.buf, self.line) {
-                None => return Ok(None),
-                Some(t) => t?.to_string(),
-            };
-            let call = cycleref_spec::rs274::call(&text, self.line).map_err(TraceError::Canon)?;
+            let Some(call) = self.next_call()? else { return Ok(None) };
             let (kind, to, centre) = match call {
                 None | Some(CanonCall::Skipped) => continue,
                 Some(CanonCall::Units(u)) => {
@@ -520,9 +591,7 @@ impl CanonTrace<'_> {
                 }
                 Some(CanonCall::StartSync { pitch }) => {
                     let bad = || TraceError::CanonPitch { line: self.line, pitch };
-                    let mut mantissa = pitch
-                        .checked_mul(Decimal::from(1_000_000))
-                        .filter(|s| s.fract().is_zero())
+                    let mut mantissa = whole_multiple(pitch, 1_000_000)
                         .and_then(|s| u64::try_from(s).ok())
                         .filter(|m| *m > 0)
                         .ok_or_else(bad)?;

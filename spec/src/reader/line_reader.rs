@@ -212,29 +212,66 @@ impl<'m> LineReader<'m> {
         match self.step(piece, None) {
             Ok(Step::Item(item)) => Some(Ok(item)),
             Ok(Step::Piece) => None,
-            Ok(Step::Subprograms) => {
-                self.done = true;
-                let at = self.at.take();
-                let mut lexer = match at {
-                    Some(at) => Lexer::resume(piece, at),
-                    None => Lexer::at_line(piece, self.line + 1),
-                };
-                let mut block = Block::empty();
-                let line = match lexer.next_into(&mut block) {
-                    Some(Ok(())) => block.line,
-                    _ => self.line + 1,
-                };
-                Some(Err(ProgramError {
-                    line,
-                    word: Some("M98".into()),
-                    kind: ErrorKind::Unsupported(
-                        "a subprogram call read without the program's subprograms (LineReader::next_in; \
-                         LineReader::step follows calls)"
-                            .into(),
-                    ),
-                }))
-            }
+            Ok(Step::Subprograms) => Some(Err(self.no_subprograms(piece))),
             Err(e) => Some(Err(e)),
+        }
+    }
+
+    /// [`LineReader::next_in`] with the item lent to `f` where it was
+    /// returned, not moved (an item is a few hundred bytes): what `f`
+    /// makes of it, or `None` when the piece has no more.
+    ///
+    /// ```
+    /// use cycleref_spec::reader::{Item, LineReader};
+    /// use cycleref_spec::{Machine, ProfileName};
+    ///
+    /// let machine = Machine::new(ProfileName::Gsk988);
+    /// let mut reader = LineReader::new(&machine);
+    /// let piece = b"M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+    /// let mut cycle_lines = Vec::new();
+    /// while let Some(line) = reader.next_in_with(piece, |item| matches!(item, Item::G76(_)).then(|| item.block().line)) {
+    ///     cycle_lines.extend(line?);
+    /// }
+    /// reader.finish()?;
+    /// assert_eq!(cycle_lines, [4]);
+    /// # Ok::<(), cycleref_spec::ProgramError>(())
+    /// ```
+    pub fn next_in_with<'a, T>(
+        &mut self,
+        piece: &'a [u8],
+        f: impl FnOnce(&Item<'a>) -> T,
+    ) -> Option<Result<T, ProgramError>> {
+        match self.step(piece, None) {
+            Ok(Step::Item(ref item)) => Some(Ok(f(item))),
+            Ok(Step::Piece) => None,
+            Ok(Step::Subprograms) => Some(Err(self.no_subprograms(piece))),
+            Err(e) => Some(Err(e)),
+        }
+    }
+
+    /// The error of a subprogram call met by [`LineReader::next_in`],
+    /// which is given no subprograms; the reader yields nothing more.
+    #[cold]
+    fn no_subprograms(&mut self, piece: &[u8]) -> ProgramError {
+        self.done = true;
+        let at = self.at.take();
+        let mut lexer = match at {
+            Some(at) => Lexer::resume(piece, at),
+            None => Lexer::at_line(piece, self.line + 1),
+        };
+        let mut block = Block::empty();
+        let line = match lexer.next_into(&mut block) {
+            Some(Ok(())) => block.line,
+            _ => self.line + 1,
+        };
+        ProgramError {
+            line,
+            word: Some("M98".into()),
+            kind: ErrorKind::Unsupported(
+                "a subprogram call read without the program's subprograms (LineReader::next_in; \
+                 LineReader::step follows calls)"
+                    .into(),
+            ),
         }
     }
 
