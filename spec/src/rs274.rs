@@ -39,18 +39,120 @@ pub struct CanonMove {
     pub line: usize,
 }
 
-/// Why a canonical output could not be read.
+/// Why a canonical output could not be read: where, and what.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CanonError {
     /// The 1-based line of the output.
     pub line: usize,
     /// What was wrong.
-    pub message: String,
+    pub kind: CanonErrorKind,
+}
+
+/// What was wrong with a line of a canonical output. Its `Display` names
+/// the call, the offending argument or value, and what `check` reads.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CanonErrorKind {
+    /// Not `<sequence> N..... CALL(arguments)`.
+    NotACall,
+    /// An argument of `call` is not a number.
+    NotANumber {
+        /// The call.
+        call: String,
+        /// The argument, as shown (cut and escaped).
+        argument: String,
+        /// The number reader's reason, as it says it.
+        reason: String,
+    },
+    /// `call` has `count` arguments where it takes one of `takes`.
+    ArgumentCount {
+        /// The call.
+        call: String,
+        /// The arguments given.
+        count: usize,
+        /// The counts it takes.
+        takes: &'static [usize],
+    },
+    /// A motion of `call` moves U, V or W.
+    UvwMoves {
+        /// The call.
+        call: String,
+    },
+    /// An arc's rotation is not a whole number.
+    RotationNotWhole {
+        /// The call.
+        call: String,
+        /// The rotation.
+        rotation: Decimal,
+    },
+    /// A synchronisation call with other than 2 or 3 arguments.
+    SyncArguments {
+        /// The call.
+        call: String,
+    },
+    /// A synchronisation in velocity mode (not 0).
+    VelocityMode {
+        /// The call.
+        call: String,
+        /// The mode.
+        mode: Decimal,
+    },
+    /// A unit other than `CANON_UNITS_MM` or `CANON_UNITS_INCHES`.
+    Unit {
+        /// The call.
+        call: String,
+        /// The unit, as shown.
+        unit: String,
+    },
+    /// A call `check` does not read and that is not known to leave the
+    /// tool where it is (reading R-CHECKLCNC-CALLS).
+    UnknownCall {
+        /// The call, as shown.
+        call: String,
+    },
+    /// An arc where [`read`] takes straight moves only.
+    ArcInRead,
+}
+
+impl std::fmt::Display for CanonErrorKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CanonErrorKind::NotACall => f.write_str(
+                "not a line of rs274's canonical output (`<sequence> N..... CALL(arguments)`, as `rs274 -g` \
+                 prints it)",
+            ),
+            CanonErrorKind::NotANumber { call, argument, reason } => {
+                write!(f, "{call}: argument `{argument}` is not a number ({reason})")
+            }
+            CanonErrorKind::ArgumentCount { call, count, takes } => {
+                write!(f, "{call}: {count} arguments, the call takes {takes:?}")
+            }
+            CanonErrorKind::UvwMoves { call } => {
+                write!(f, "{call}: U, V or W moves; a lathe trace moves X and Z only")
+            }
+            CanonErrorKind::RotationNotWhole { call, rotation } => {
+                write!(f, "{call}: rotation {rotation} is not a whole number")
+            }
+            CanonErrorKind::SyncArguments { call } => write!(f, "{call}: expected 2 or 3 arguments"),
+            CanonErrorKind::VelocityMode { call, mode } => {
+                write!(f, "{call}: velocity mode {mode}: a thread is compared at a constant pitch (0)")
+            }
+            CanonErrorKind::Unit { call, unit } => {
+                write!(f, "{call}: unit `{unit}` (CANON_UNITS_MM or CANON_UNITS_INCHES)")
+            }
+            CanonErrorKind::UnknownCall { call } => write!(
+                f,
+                "the call `{call}` is not read by the check and is not one known to leave the tool where it \
+                 is (reading R-CHECKLCNC-CALLS)"
+            ),
+            CanonErrorKind::ArcInRead => f.write_str("ARC_FEED: read() takes straight moves only"),
+        }
+    }
 }
 
 impl std::fmt::Display for CanonError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "line {}: {}", self.line, self.message)
+        write!(f, "line {}: {}", self.line, self.kind)
     }
 }
 
@@ -85,9 +187,7 @@ pub fn read(text: &str) -> Result<Vec<CanonMove>, CanonError> {
             }
             Some(CanonCall::StartSync { pitch: p }) => pitch = Some(p),
             Some(CanonCall::StopSync) => pitch = None,
-            Some(CanonCall::Arc { .. }) => {
-                return Err(CanonError { line, message: "ARC_FEED: read() takes straight moves only".into() })
-            }
+            Some(CanonCall::Arc { .. }) => return Err(CanonError { line, kind: CanonErrorKind::ArcInRead }),
             _ => {}
         }
     }
@@ -451,6 +551,35 @@ mod scan {
 
     #[cfg(test)]
     mod tests {
+        /// A refused line carries its line and a typed kind; the message reads
+        /// as it always did.
+        #[test]
+        fn refusals_are_typed() {
+            let e = crate::rs274::call("   12 N..... TELEPORT(1)", 12).expect_err("unknown call");
+            assert_eq!(e.line, 12);
+            assert_eq!(e.kind, crate::rs274::CanonErrorKind::UnknownCall { call: "TELEPORT".into() });
+            assert_eq!(
+            e.to_string(),
+            "line 12: the call `TELEPORT` is not read by the check and is not one known to leave the tool \
+             where it is (reading R-CHECKLCNC-CALLS)"
+        );
+            let e = crate::rs274::call("   3 N..... STRAIGHT_FEED(1, 0, 1)", 3).expect_err("three arguments");
+            assert_eq!(
+                e.kind,
+                crate::rs274::CanonErrorKind::ArgumentCount {
+                    call: "STRAIGHT_FEED".into(),
+                    count: 3,
+                    takes: &[6, 9]
+                }
+            );
+            assert_eq!(e.to_string(), "line 3: STRAIGHT_FEED: 3 arguments, the call takes [6, 9]");
+            let e = crate::rs274::call("   4 N..... STRAIGHT_FEED(1, 0, x, 0, 0, 0)", 4).expect_err("not a number");
+            assert!(
+                matches!(&e.kind, crate::rs274::CanonErrorKind::NotANumber { argument, .. } if argument == "x"),
+                "{e:?}"
+            );
+        }
+
         use proptest::prelude::*;
 
         use super::{split_at_byte, split_at_whitespace, trim, trim_start};
@@ -519,15 +648,9 @@ mod scan {
 /// assert!(call("STRAIGHT_FEED(1, 0, 1, 0, 0, 0)", 13).is_err());
 /// ```
 pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
-    let fail = |message: String| CanonError { line, message };
+    let fail = |kind: CanonErrorKind| CanonError { line, kind };
     // `<sequence> N<number or .....> <call>`.
-    let form = || {
-        fail(
-            "not a line of rs274's canonical output (`<sequence> N..... CALL(arguments)`, as `rs274 -g` prints \
-             it)"
-                .into(),
-        )
-    };
+    let form = || fail(CanonErrorKind::NotACall);
     let (name, args) = match plain_parts(raw) {
         Some(parts) => parts,
         None => match parts(raw) {
@@ -554,17 +677,21 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             rest = next;
             let a = scan::trim(a);
             let d = number(a).map_err(|e| {
-                fail(format!("{name}: argument `{}` is not a number ({e})", crate::error::shown(a)))
+                fail(CanonErrorKind::NotANumber {
+                    call: name.to_string(),
+                    argument: crate::error::shown(a),
+                    reason: e.to_string(),
+                })
             })?;
             v.push(d);
         }
         Ok(v)
     };
-    let count = |v: &Args, want: &[usize]| {
+    let count = |v: &Args, want: &'static [usize]| {
         if want.contains(&v.len()) {
             Ok(())
         } else {
-            Err(fail(format!("{name}: {} arguments, the call takes {want:?}", v.len())))
+            Err(fail(CanonErrorKind::ArgumentCount { call: name.to_string(), count: v.len(), takes: want }))
         }
     };
     Ok(Some(match name {
@@ -574,7 +701,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             count(&v, &[6, 9])?;
             let v = v.kept();
             if v.len() == 9 && v[6..].iter().any(|d| !d.is_zero()) {
-                return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
+                return Err(fail(CanonErrorKind::UvwMoves { call: name.to_string() }));
             }
             CanonCall::Motion {
                 rapid: name == "STRAIGHT_TRAVERSE",
@@ -590,12 +717,11 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             count(&v, &[9, 12])?;
             let v = v.kept();
             if v.len() == 12 && v[9..].iter().any(|d| !d.is_zero()) {
-                return Err(fail(format!("{name}: U, V or W moves; a lathe trace moves X and Z only")));
+                return Err(fail(CanonErrorKind::UvwMoves { call: name.to_string() }));
             }
-            let rotation = i64::try_from(v[4])
-                .ok()
-                .filter(|_| v[4].fract().is_zero())
-                .ok_or_else(|| fail(format!("{name}: rotation {} is not a whole number", v[4])))?;
+            let rotation = i64::try_from(v[4]).ok().filter(|_| v[4].fract().is_zero()).ok_or_else(|| {
+                fail(CanonErrorKind::RotationNotWhole { call: name.to_string(), rotation: v[4] })
+            })?;
             CanonCall::Arc {
                 z: v[0],
                 x: v[1],
@@ -613,15 +739,15 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             let pitch = match v.len() {
                 2 => v[0],
                 3 => v[1],
-                _ => return Err(fail(format!("{name}: expected 2 or 3 arguments"))),
+                _ => return Err(fail(CanonErrorKind::SyncArguments { call: name.to_string() })),
             };
             if v[v.len() - 1] != Decimal::ZERO {
                 // Velocity mode: the pitch per revolution of the spindle
                 // is a constant lead only without it (G33 prints 0).
-                return Err(fail(format!(
-                    "{name}: velocity mode {}: a thread is compared at a constant pitch (0)",
-                    v[v.len() - 1]
-                )));
+                return Err(fail(CanonErrorKind::VelocityMode {
+                    call: name.to_string(),
+                    mode: v[v.len() - 1],
+                }));
             }
             CanonCall::StartSync { pitch }
         }
@@ -630,10 +756,10 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             "CANON_UNITS_MM" => CanonCall::Units(CanonUnits::Mm),
             "CANON_UNITS_INCHES" => CanonCall::Units(CanonUnits::Inches),
             other => {
-                return Err(fail(format!(
-                    "{name}: unit `{}` (CANON_UNITS_MM or CANON_UNITS_INCHES)",
-                    crate::error::shown(other)
-                )))
+                return Err(fail(CanonErrorKind::Unit {
+                    call: name.to_string(),
+                    unit: crate::error::shown(other),
+                }))
             }
         },
         "SET_XY_ROTATION" => {
@@ -643,13 +769,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
         }
         "SELECT_PLANE" => CanonCall::Plane { xz: scan::trim(args) == "CANON_PLANE_XZ" },
         skipped if SKIPPED_CALLS.contains(&skipped) => CanonCall::Skipped,
-        other => {
-            return Err(fail(format!(
-                "the call `{}` is not read by the check and is not one known to leave the tool where it is \
-                 (reading R-CHECKLCNC-CALLS)",
-                crate::error::shown(other)
-            )))
-        }
+        other => return Err(fail(CanonErrorKind::UnknownCall { call: crate::error::shown(other) })),
     }))
 }
 
