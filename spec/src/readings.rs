@@ -63,6 +63,22 @@ pub enum E980 {
     Signed,
 }
 
+/// Reading R-HIGHSPEED: a G76 or a G78 on the 988TA when parameter 5129
+/// (THM) selects the high-speed threading mode.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum HighSpeed {
+    /// `g92-rules` (default): the run-out words J and K take G92's
+    /// high-speed rules (R-G92RUNOUT), as they take G92's normal-mode rules
+    /// under 5129 = 0. G76 note 9: "存在 J、K 时退尾格式及相关注意事项同
+    /// G92"; 5129 is "螺纹切削循环 G92,G76 的模式" (seed 000, the 988TA G76
+    /// page) and "螺纹切削循环 G92，G76，G78 的模式" (the 988TA G78 page).
+    #[default]
+    G92Rules,
+    /// `refuse`: the cycle is refused at its block 2, since no page spells
+    /// out a G76 or G78 high-speed pass.
+    Refuse,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -73,6 +89,8 @@ pub struct Readings {
     pub x_run_out: XRunOut,
     /// R-E980.
     pub e980: E980,
+    /// R-HIGHSPEED.
+    pub high_speed: HighSpeed,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -156,6 +174,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-HIGHSPEED",
+        point: "G76 and G78 under 5129 = 1 (the 988TA's high-speed threading mode)",
+        values: &[
+            ReadingValue {
+                name: "g92-rules",
+                source: "988TA G76 note 9 \"存在 J、K 时退尾格式及相关注意事项同 G92\"; 5129 \"G92，G76，G78 的模式\": G92's high-speed J/K rules",
+            },
+            ReadingValue {
+                name: "refuse",
+                source: "no page spells out a high-speed G76 or G78 pass: refused at block 2",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
 ];
 
 impl Readings {
@@ -174,6 +207,10 @@ impl Readings {
             "R-E980" => match self.e980 {
                 E980::RefuseNegative => "refuse-negative",
                 E980::Signed => "signed",
+            },
+            "R-HIGHSPEED" => match self.high_speed {
+                HighSpeed::G92Rules => "g92-rules",
+                HighSpeed::Refuse => "refuse",
             },
             _ => return None,
         };
@@ -198,6 +235,8 @@ impl Readings {
             ("R-XRUNOUT", "towards-start") => self.x_run_out = XRunOut::TowardsStart,
             ("R-E980", "refuse-negative") => self.e980 = E980::RefuseNegative,
             ("R-E980", "signed") => self.e980 = E980::Signed,
+            ("R-HIGHSPEED", "g92-rules") => self.high_speed = HighSpeed::G92Rules,
+            ("R-HIGHSPEED", "refuse") => self.high_speed = HighSpeed::Refuse,
             _ => return Err(bad()),
         }
         Ok(())

@@ -203,7 +203,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -243,4 +243,131 @@ fn listing() {
     assert!(all.lines().next().unwrap().starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t"));
     let gsk988 = Listing { profile: Some(ProfileName::Gsk988) }.to_string();
     assert!(!gsk988.contains("R-RUNOUT") && !gsk988.contains("R-E980") && gsk988.contains("R-XRUNOUT"));
+    assert!(gsk988.contains("R-HIGHSPEED\tg92-rules* | refuse\t[gsk988]\t"), "{gsk988}");
+}
+
+/// The 988TA with parameter 5129 (THM) = 1, the high-speed threading mode,
+/// and `readings` chosen.
+fn high_speed(readings: &[&str]) -> Machine {
+    let mut m = machine(ProfileName::Gsk988, readings);
+    m.apply_toml("[parameters]\n5129 = 1\n").unwrap();
+    m
+}
+
+/// A G76 (or G78) of the 988TA: A = (X80, Z10), D = (X60.64, Z-62), k =
+/// 3.68, Δd = 1.8, Δdmin = 0.15, d = 0.1, a = 60° (P020060: m = 2, r = 0,
+/// a = 60), F6, and the run-out words `jk`. Pass 1 (depth Δd = 1.8): X =
+/// X_D + 2·(k - 1.8) = 60.64 + 3.76 = X64.4, on G76 at Z = 10 - round(1.8 ·
+/// tan 30°) = 10 - round(1.03923) = Z8.961 (R-INFEED, right flank).
+fn g76_high_speed(code: &str, jk: &str) -> String {
+    format!("M3 S300\nG00 X80 Z10\n{code} P020060 Q0.15 R0.1\n{code} X60.64 Z-62 P3.68 Q1.8 F6 {jk}\nM30\n")
+}
+
+/// R-HIGHSPEED `g92-rules` (default): G92's high-speed rules (R-G92RUNOUT)
+/// for G76's J and K (note 9: "存在 J、K 时退尾格式及相关注意事项同 G92").
+/// K2 with J omitted: "省略 J 时，长轴方向按 K 退尾": the cut ends at Z-62 + 2
+/// = Z-60; the short axis runs all the way to A's X (J' clamped at the
+/// retract, (80 - 64.4)/2 = 7.8), so the run-out ends at (X80, Z-62), the
+/// retract there is empty (R-ZERO) and Z returns to Z10. Under 5129 = 0
+/// the same block has no run-out at all (normal mode: "省略 J 时，无退尾"):
+/// the cut runs to Z-62, X rapids to X80, Z returns.
+#[test]
+fn g76_high_speed_k_only_under_g92_rules() {
+    let src = g76_high_speed("G76", "K2");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    // Pass 2 (depth round(1.8·√2) = round(2.5456) = 2.546): X = 60.64 +
+    // 2·(3.68 - 2.546) = X62.908, Z = 10 - round(2.546·tan 30°) = 10 -
+    // round(1.46993) = Z8.53; the same run-out to (X80, Z-62).
+    assert_eq!(
+        ends(&got[4..8]),
+        [
+            (Role::Approach, Point::new(62_908, 8_530)),
+            (Role::Cut, Point::new(62_908, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    let normal = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&normal[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// `g92-rules` with J1.5 and K omitted: "省略 K 时，长轴无退尾，短轴方向的退尾
+/// 长度，固定为切削终点到起点的短轴轴向距离，与 J 是多少无关": the cut runs to
+/// Z-62 and the rapid retract of step (3) takes X to A's X80 (J is
+/// ignored). Under 5129 = 0 the normal mode's "省略 K 时，长轴无退尾，短轴方向
+/// 按 J 值退尾" pulls out 2·1.5 = 3 along X by thread motion: X64.4 + 3 =
+/// X67.4 at Z-62, then the rapid to X80.
+#[test]
+fn g76_high_speed_j_only_under_g92_rules() {
+    let src = g76_high_speed("G76", "J1.5");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    let normal = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&normal[..5]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::RunOut, Point::new(67_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// G78 takes the same rules (5129 on the 988TA G78 page: "螺纹切削循环
+/// G92，G76，G78 的模式"). G78's P(r) = 00 is the centre-line infeed: every
+/// pass at the form centre, Z = 10 - round((k - d)·tan 30°) = 10 -
+/// round(3.58·0.57735) = 10 - round(2.06691) = Z7.933; pass 1 at X64.4,
+/// K2 as in the G76 case above.
+#[test]
+fn g78_high_speed_k_only_under_g92_rules() {
+    let src = g76_high_speed("G78", "K2");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 7_933)),
+            (Role::Cut, Point::new(64_400, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// R-HIGHSPEED `refuse`: a G76 or G78 under 5129 = 1 is refused at its
+/// block 2, naming the parameter and the reading.
+#[test]
+fn high_speed_refused_under_refuse() {
+    for code in ["G76", "G78"] {
+        let e = read(&g76_high_speed(code, "K2"), &high_speed(&["R-HIGHSPEED=refuse"])).unwrap_err();
+        assert_eq!(e.line, 4);
+        assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
+        assert!(e.to_string().contains("5129 = 1") && e.to_string().contains(code), "{e}");
+    }
 }
