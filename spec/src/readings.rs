@@ -79,6 +79,23 @@ pub enum HighSpeed {
     Refuse,
 }
 
+/// Reading R-LCNC-READER: what `;` is in a program of the linuxcnc
+/// profile.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LcncSemicolon {
+    /// `comment` (default): a comment to the end of the line, as LinuxCNC's
+    /// interpreter reads it (`rs274 -g` on `G0 X20 Z2 ; approach` makes
+    /// `STRAIGHT_TRAVERSE(20.0000, 0.0000, 2.0000, …)`; a `(` after the `;`
+    /// is part of the comment). LinuxCNC's behaviour is the authority for
+    /// the linuxcnc profile.
+    #[default]
+    Comment,
+    /// `end-of-block`: `;` ends the block, as on the GSK profiles, so the
+    /// text after it is read as the next block (a LinuxCNC `; comment` is
+    /// then refused).
+    EndOfBlock,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -91,6 +108,8 @@ pub struct Readings {
     pub e980: E980,
     /// R-HIGHSPEED.
     pub high_speed: HighSpeed,
+    /// R-LCNC-READER.
+    pub lcnc_semicolon: LcncSemicolon,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -189,6 +208,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk988],
     },
+    ReadingEntry {
+        id: "R-LCNC-READER",
+        point: "`;` in a linuxcnc program",
+        values: &[
+            ReadingValue {
+                name: "comment",
+                source: "LinuxCNC's interpreter: `;` starts a comment to the end of the line (rs274 -g)",
+            },
+            ReadingValue {
+                name: "end-of-block",
+                source: "`;` ends the block, as on the GSK profiles: a `; comment` is refused",
+            },
+        ],
+        profiles: &[ProfileName::LinuxCnc],
+    },
 ];
 
 impl Readings {
@@ -211,6 +245,10 @@ impl Readings {
             "R-HIGHSPEED" => match self.high_speed {
                 HighSpeed::G92Rules => "g92-rules",
                 HighSpeed::Refuse => "refuse",
+            },
+            "R-LCNC-READER" => match self.lcnc_semicolon {
+                LcncSemicolon::Comment => "comment",
+                LcncSemicolon::EndOfBlock => "end-of-block",
             },
             _ => return None,
         };
@@ -237,6 +275,8 @@ impl Readings {
             ("R-E980", "signed") => self.e980 = E980::Signed,
             ("R-HIGHSPEED", "g92-rules") => self.high_speed = HighSpeed::G92Rules,
             ("R-HIGHSPEED", "refuse") => self.high_speed = HighSpeed::Refuse,
+            ("R-LCNC-READER", "comment") => self.lcnc_semicolon = LcncSemicolon::Comment,
+            ("R-LCNC-READER", "end-of-block") => self.lcnc_semicolon = LcncSemicolon::EndOfBlock,
             _ => return Err(bad()),
         }
         Ok(())
@@ -280,6 +320,13 @@ impl Readings {
                 (v != e.default_on(profile)).then_some((e.id, v))
             })
             .collect()
+    }
+
+    /// True when `;` starts a comment to the end of the line in a program
+    /// of a LinuxCNC dialect (`lcnc`), reading R-LCNC-READER `comment`.
+    #[must_use]
+    pub fn semicolon_comments(&self, lcnc: bool) -> bool {
+        lcnc && self.lcnc_semicolon == LcncSemicolon::Comment
     }
 
     /// What a threading cycle of `profile` does under these readings.

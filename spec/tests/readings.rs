@@ -203,7 +203,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -370,4 +370,27 @@ fn high_speed_refused_under_refuse() {
         assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
         assert!(e.to_string().contains("5129 = 1") && e.to_string().contains(code), "{e}");
     }
+}
+
+/// R-LCNC-READER `comment` (default on linuxcnc): `;` starts a comment to
+/// the end of the line, as LinuxCNC's interpreter reads it (`rs274 -g` on
+/// `G0 X20 Z2 ; approach` makes `STRAIGHT_TRAVERSE(20.0000, 0.0000,
+/// 2.0000, …)` and nothing for the comment; cli/tests/linuxcnc.rs compares
+/// a whole program with rs274). The block keeps its comment in its text,
+/// as a `( )` comment. `end-of-block`: the text after `;` is read as the
+/// next block, and `approach` is an address `A` without a number.
+#[test]
+fn semicolon_on_linuxcnc() {
+    let src = "G18 G21 G7\nG0 X20 Z2 ; approach (no closing paren\n; a line of comment\nG0 X30;\nM2\n";
+    let p = read(src, &machine(ProfileName::LinuxCnc, &[])).unwrap();
+    let texts: Vec<String> = p.items.iter().map(|i| i.block().text_lossy().into_owned()).collect();
+    assert!(texts.contains(&"G0 X20 Z2 ; approach (no closing paren".to_string()), "{texts:?}");
+    let e = read(src, &machine(ProfileName::LinuxCnc, &["R-LCNC-READER=end-of-block"])).unwrap_err();
+    assert_eq!(e.line, 2);
+    assert!(matches!(e.kind, ErrorKind::Syntax(_)), "{e}");
+    // The GSK profiles keep `;` as a block end ("；" or ";" between
+    // blocks), whatever the reading: two moves on one line.
+    let gsk = "M3 S300\nG00 X80;G00 Z10\nM30\n";
+    let p = read(gsk, &machine(ProfileName::Gsk988, &["R-LCNC-READER=comment"])).unwrap();
+    assert_eq!(p.items.iter().filter(|i| matches!(i, cycleref_spec::Item::Move(_))).count(), 2);
 }
