@@ -96,6 +96,21 @@ pub enum LcncSemicolon {
     EndOfBlock,
 }
 
+/// Reading R-G92Q: whether the start angle Q of the 988TA's G92 carries
+/// over to the next G92 block.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G92StartAngle {
+    /// `one-shot` (default): G32's rule, to which the G92 page refers Q
+    /// ("取值单位与范围请参考 G32"; 988TA G32 Q: "非模态，省略时为 0°"): a
+    /// G92 block without Q starts at 0°.
+    #[default]
+    OneShot,
+    /// `modal`: Q stays in force until another Q or another motion code,
+    /// as every other word of the G92 page ("R … 模态值", J, K "模态指令",
+    /// L "模态参数", P "模态指令"); the page states no modality for Q.
+    Modal,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -110,6 +125,8 @@ pub struct Readings {
     pub high_speed: HighSpeed,
     /// R-LCNC-READER.
     pub lcnc_semicolon: LcncSemicolon,
+    /// R-G92Q.
+    pub g92_q: G92StartAngle,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -223,6 +240,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::LinuxCnc],
     },
+    ReadingEntry {
+        id: "R-G92Q",
+        point: "whether the 988TA G92's start angle Q carries over to the next G92 block",
+        values: &[
+            ReadingValue {
+                name: "one-shot",
+                source: "988TA G92 Q \"取值单位与范围请参考 G32\"; G32 Q \"非模态，省略时为 0°\"",
+            },
+            ReadingValue {
+                name: "modal",
+                source: "every other 988TA G92 word is modal (R, J, K, L, P); the page states none for Q",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
 ];
 
 impl Readings {
@@ -249,6 +281,10 @@ impl Readings {
             "R-LCNC-READER" => match self.lcnc_semicolon {
                 LcncSemicolon::Comment => "comment",
                 LcncSemicolon::EndOfBlock => "end-of-block",
+            },
+            "R-G92Q" => match self.g92_q {
+                G92StartAngle::OneShot => "one-shot",
+                G92StartAngle::Modal => "modal",
             },
             _ => return None,
         };
@@ -277,6 +313,8 @@ impl Readings {
             ("R-HIGHSPEED", "refuse") => self.high_speed = HighSpeed::Refuse,
             ("R-LCNC-READER", "comment") => self.lcnc_semicolon = LcncSemicolon::Comment,
             ("R-LCNC-READER", "end-of-block") => self.lcnc_semicolon = LcncSemicolon::EndOfBlock,
+            ("R-G92Q", "one-shot") => self.g92_q = G92StartAngle::OneShot,
+            ("R-G92Q", "modal") => self.g92_q = G92StartAngle::Modal,
             _ => return Err(bad()),
         }
         Ok(())

@@ -203,7 +203,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER, R-G92Q)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -393,4 +393,45 @@ fn semicolon_on_linuxcnc() {
     let gsk = "M3 S300\nG00 X80;G00 Z10\nM30\n";
     let p = read(gsk, &machine(ProfileName::Gsk988, &["R-LCNC-READER=comment"])).unwrap();
     assert_eq!(p.items.iter().filter(|i| matches!(i, cycleref_spec::Item::Move(_))).count(), 2);
+}
+
+/// The 988TA G92 page's example with a start angle on its first block:
+/// A = (X65, Z5), `G92 X58.7 Z-28 F3 J3 K1 Q90`, then the repeats `X57.7`
+/// (no Q), `X57 Q45`, and after a G00 (another motion code ends the G92
+/// mode, R-G92MODAL) `G92 X56.9 Z-28` (no Q). Each block is one pass; the
+/// start angle of each pass's cut, in millidegrees, by reading R-G92Q.
+const G92_Q: &str =
+    "M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1 Q90\nX57.7\nX57 Q45\nG00 X65 Z5\nG92 X56.9 Z-28\nM30\n";
+
+fn cut_angles(moves: &[Move]) -> Vec<(i64, u64)> {
+    moves
+        .iter()
+        .filter(|m| m.role == Role::Cut)
+        .map(|m| match m.motion {
+            cycleref::Motion::Thread { start_angle, .. } => (m.to.x, start_angle.rounded_millidegrees()),
+            _ => panic!("a cut that is not a thread move: {m:?}"),
+        })
+        .collect()
+}
+
+/// R-G92Q `one-shot` (default): G32's rule, "非模态，省略时为 0°": the second
+/// pass (X57.7) starts at 0°, a helix 90° (a quarter of the 3 mm lead,
+/// 0.75 mm in Z) away from the first pass's, i.e. another groove; the
+/// third at its own Q45.
+#[test]
+fn g92_q_one_shot_by_default() {
+    let got = run(G92_Q, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(cut_angles(&got), [(58_700, 90_000), (57_700, 0), (57_000, 45_000), (56_900, 0)]);
+}
+
+/// R-G92Q `modal`: Q stays in force like the page's other words: X57.7
+/// cuts at 90° (the first pass's groove), X57 at its own 45°, and the G92
+/// after the G00 starts again at 0° (the modal values are cleared by
+/// another motion code). Only the start angles differ from `one-shot`.
+#[test]
+fn g92_q_modal() {
+    let got = run(G92_Q, &machine(ProfileName::Gsk988, &["R-G92Q=modal"])).unwrap();
+    assert_eq!(cut_angles(&got), [(58_700, 90_000), (57_700, 90_000), (57_000, 45_000), (56_900, 0)]);
+    let default = run(G92_Q, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(ends(&got), ends(&default));
 }
