@@ -25,7 +25,10 @@ fn schema(name: &str) -> jsonschema::Validator {
 fn readings_lists_one_line_per_reading() {
     let all = common::stdout(&["readings"]);
     let ids: Vec<&str> = all.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
-    assert_eq!(ids, ["R-RUNOUT", "R-XRUNOUT", "R-E980", "R-HIGHSPEED", "R-LCNC-READER", "R-G92Q"]);
+    assert_eq!(
+        ids,
+        ["R-RUNOUT", "R-XRUNOUT", "R-E980", "R-HIGHSPEED", "R-LCNC-READER", "R-G92Q", "R-G75ALLOW", "R-G75P"]
+    );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
     let gsk988 = common::stdout(&["readings", "--profile", "gsk988"]);
     let gsk988_ids: Vec<&str> = gsk988.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
@@ -115,7 +118,9 @@ fn an_unknown_id_or_value_names_the_valid_ones() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.contains("unknown reading `R-NOPE`")
-            && err.contains("R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER, R-G92Q"),
+            && err.contains(
+                "R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P"
+            ),
         "{err}"
     );
     assert!(out.stdout.is_empty());

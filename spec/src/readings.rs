@@ -111,6 +111,35 @@ pub enum G92StartAngle {
     Modal,
 }
 
+/// Reading R-G75ALLOW: a negative finishing allowance U or W of the
+/// 980TDi's G75.1, whose page gives each a signed range while calling it
+/// "无符号".
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Allowance {
+    /// `refuse-negative` (default): "无符号" wins, a negative U or W is
+    /// `out_of_range` (as R-E980's default for the same contradiction).
+    #[default]
+    RefuseNegative,
+    /// `magnitude`: the range "-99999.999~99999.999" wins and the value,
+    /// having no direction, is its magnitude, as the same page does for I
+    /// ("输入负值时当成正值处理").
+    Magnitude,
+}
+
+/// Reading R-G75P: which corner each digit of the 980TDi G75.1's
+/// P(a)(b)(d)(e) sets when fewer than four digits are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75PDigits {
+    /// `right-aligned` (default): the last digit is e, so leading zeros may
+    /// be dropped (P11 = P0011), as a number's value and as the 980TDi's
+    /// own P(m)(r)(a) ("地址P输入1位或2位数时取值为a").
+    #[default]
+    RightAligned,
+    /// `left-aligned`: "P 的第一位" is the first digit written (P11 =
+    /// P1100); the missing digits are 0 (chamfer).
+    LeftAligned,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -127,6 +156,10 @@ pub struct Readings {
     pub lcnc_semicolon: LcncSemicolon,
     /// R-G92Q.
     pub g92_q: G92StartAngle,
+    /// R-G75ALLOW.
+    pub g75_allowance: G75Allowance,
+    /// R-G75P.
+    pub g75_p: G75PDigits,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -255,6 +288,33 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk988],
     },
+    ReadingEntry {
+        id: "R-G75ALLOW",
+        point: "a negative finishing allowance U or W of the 980TDi's G75.1",
+        values: &[
+            ReadingValue { name: "refuse-negative", source: "980TDi G75.1: U, W \"无符号\" (unsigned)" },
+            ReadingValue {
+                name: "magnitude",
+                source: "980TDi G75.1: U, W \"-99999.999~99999.999\"; made as |U|, |W| like I (\"输入负值时当成正值处理\")",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-G75P",
+        point: "the corners of a G75.1 P(a)(b)(d)(e) written with fewer than four digits",
+        values: &[
+            ReadingValue {
+                name: "right-aligned",
+                source: "P is a number: the last digit is e, leading zeros dropped (as the 980TDi's P(m)(r)(a))",
+            },
+            ReadingValue {
+                name: "left-aligned",
+                source: "\"P 的第一位\" is the first digit written: P11 sets a and b",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -286,6 +346,14 @@ impl Readings {
                 G92StartAngle::OneShot => "one-shot",
                 G92StartAngle::Modal => "modal",
             },
+            "R-G75ALLOW" => match self.g75_allowance {
+                G75Allowance::RefuseNegative => "refuse-negative",
+                G75Allowance::Magnitude => "magnitude",
+            },
+            "R-G75P" => match self.g75_p {
+                G75PDigits::RightAligned => "right-aligned",
+                G75PDigits::LeftAligned => "left-aligned",
+            },
             _ => return None,
         };
         Some(v)
@@ -315,6 +383,10 @@ impl Readings {
             ("R-LCNC-READER", "end-of-block") => self.lcnc_semicolon = LcncSemicolon::EndOfBlock,
             ("R-G92Q", "one-shot") => self.g92_q = G92StartAngle::OneShot,
             ("R-G92Q", "modal") => self.g92_q = G92StartAngle::Modal,
+            ("R-G75ALLOW", "refuse-negative") => self.g75_allowance = G75Allowance::RefuseNegative,
+            ("R-G75ALLOW", "magnitude") => self.g75_allowance = G75Allowance::Magnitude,
+            ("R-G75P", "right-aligned") => self.g75_p = G75PDigits::RightAligned,
+            ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
             _ => return Err(bad()),
         }
         Ok(())

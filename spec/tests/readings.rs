@@ -203,7 +203,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(e.stable_kind(), "params:unknown_reading");
     assert_eq!(
         e.to_string(),
-        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER, R-G92Q)"
+        "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-HIGHSPEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -434,4 +434,68 @@ fn g92_q_modal() {
     assert_eq!(cut_angles(&got), [(58_700, 90_000), (57_700, 90_000), (57_000, 45_000), (56_900, 0)]);
     let default = run(G92_Q, &machine(ProfileName::Gsk988, &[])).unwrap();
     assert_eq!(ends(&got), ends(&default));
+}
+
+/// The 980TDi's G75.1 (IS-C), with `readings`.
+fn gsk980_is_c(readings: &[&str]) -> Machine {
+    let mut m = machine(ProfileName::Gsk980, readings);
+    m.apply_toml("increment = \"is-c\"\n").unwrap();
+    m
+}
+
+/// A G75.1 groove (the sweep's example): S = (X50, Z30), Δi 3, Δk 5, depth
+/// H-20, width D-10, flanks A45 B30, retract R0.5, and block 2's `extra`.
+fn g75_allowance(extra: &str) -> String {
+    format!("M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG75.1 R0.5 {extra}\nM30\n")
+}
+
+/// R-G75ALLOW `refuse-negative` (default): U "（…直径，无符号）" wins; U-0.2
+/// is out of range (0..), on the U word. `magnitude`: the range
+/// "-9999.9999~9999.9999(IS_C)" wins and U, having no direction, is its
+/// magnitude, as the same page's I ("输入负值时当成正值处理"): U-0.2 cuts what
+/// U0.2 cuts. The bottom is at S's X50 + H-20 = X30; with U0.2 (diameter)
+/// the roughing's deepest point is X30 + 0.2 = X30.2 (IS-C: 302 000
+/// increments), with U0 X30. W likewise.
+#[test]
+fn g75_negative_allowance() {
+    let e = read(&g75_allowance("U-0.2"), &gsk980_is_c(&[])).unwrap_err();
+    assert_eq!(e.word.as_deref(), Some("U-0.2"));
+    let m = gsk980_is_c(&["R-G75ALLOW=magnitude"]);
+    let negative = run(&g75_allowance("U-0.2 W-0.3"), &m).unwrap();
+    let positive = run(&g75_allowance("U0.2 W0.3"), &gsk980_is_c(&[])).unwrap();
+    assert_eq!(negative, positive);
+    let deepest = |moves: &[Move]| moves.iter().map(|m| m.to.x).min().unwrap();
+    assert_eq!(deepest(&run(&g75_allowance("U-0.2"), &m).unwrap()), 302_000);
+    assert_eq!(deepest(&run(&g75_allowance(""), &gsk980_is_c(&[])).unwrap()), 300_000);
+    assert!(read(&g75_allowance("W-0.3"), &gsk980_is_c(&[])).is_err());
+}
+
+/// A G75.1 with a 4 mm tool (I4), roughing and finishing (J1), D and E
+/// (the inner bottom's corners) of 0.5, A and B (the outer ones) of no
+/// size, and P written with two digits (`p`).
+fn g75_p(p: &str) -> String {
+    format!(
+        "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10\nG75.1 R0.5 I4 J1 D0.5 E0.5 {p}\nM30\n"
+    )
+}
+
+fn arcs(moves: &[Move]) -> usize {
+    moves.iter().filter(|m| matches!(m.motion, cycleref::Motion::Arc { .. })).count()
+}
+
+/// R-G75P `right-aligned` (default): P11 = P0011, d = e = 1: the inner
+/// bottom's corners D and E are rounds (R0.5), two arcs in the finishing
+/// contour. `left-aligned`: "P 的第一位" is the first digit written, P11 =
+/// P1100: a = b = 1 (A and B have no size, so they stay sharp) and d = e =
+/// 0, chamfers at D and E: the moves of P1100, no arc.
+#[test]
+fn g75_p_digits() {
+    let right = run(&g75_p("P11"), &gsk980_is_c(&[])).unwrap();
+    assert_eq!(arcs(&right), 2);
+    assert_eq!(right, run(&g75_p("P0011"), &gsk980_is_c(&[])).unwrap());
+    let left = run(&g75_p("P11"), &gsk980_is_c(&["R-G75P=left-aligned"])).unwrap();
+    assert_eq!(arcs(&left), 0);
+    assert_eq!(left, run(&g75_p("P1100"), &gsk980_is_c(&[])).unwrap());
+    // Four digits mean the same under both.
+    assert_eq!(run(&g75_p("P0011"), &gsk980_is_c(&["R-G75P=left-aligned"])).unwrap(), right);
 }
