@@ -394,3 +394,49 @@ fn subroutines_run_as_linuxcnc_runs_them() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Reading R-LCNC-READER: LinuxCNC reads `;` as a comment to the end of
+/// the line (a `(` or an `M2` after it is part of the comment), and so does
+/// the linuxcnc profile by default (`comment`). The program is the
+/// subroutine test's thread with `;` comments on its own lines and after
+/// blocks: rs274 makes 103 motions of the G76 (17 passes × 6 + 1) and the
+/// two G0s, 105; `check` of the program against rs274's canonical output
+/// agrees; our expansion has the same 105 motions and keeps the comments
+/// as written. Under `end-of-block` the text after `;` is a block of its
+/// own and the program is refused (the previous behaviour).
+#[test]
+fn semicolon_comments_as_linuxcnc_reads_them() {
+    if !rs274_installed() {
+        return;
+    }
+    let program = "; a thread, LinuxCNC style\nG18 G21 G7 ; lathe, mm, diameter\nM3 S500\n\
+                   G0 X22 Z2 ; approach (no closing paren\n\
+                   G76 P1.5 Z-20 I-2 J0.3 R1.5 K1.84 Q29.5 H1 E1 L3 ;M2 is a comment here\n\
+                   G0 X30 Z5;\nM5\nM2\n";
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-semi-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let file = dir.join("semi.ngc");
+    std::fs::write(&file, program).expect("write");
+    let canon = dir.join("semi.canon");
+    std::fs::write(&canon, rs274_output(&file)).expect("write");
+    assert_eq!(rs274_motions(&file).len(), 103 + 2, "rs274's motions");
+    let f = file.to_string_lossy();
+    let c = canon.to_string_lossy();
+    let out = run(&["check", "--profile", "linuxcnc", "--tolerance", "1", &f, "--trace", &c], None);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{report}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(report.starts_with("AGREE: "), "{report}");
+    let nc = stdout(&["expand", "--profile", "linuxcnc", &f]);
+    let ours =
+        nc.lines().filter(|l| l.starts_with("G0 ") || l.starts_with("G00 ") || l.starts_with("G33 ")).count();
+    assert_eq!(ours, 103 + 2, "{nc}");
+    assert!(nc.contains("G0 X22 Z2 ; approach (no closing paren\n"), "{nc}");
+    // The expansion, comments and all, is a program LinuxCNC cuts the same.
+    let expanded = dir.join("expanded.ngc");
+    std::fs::write(&expanded, &nc).expect("write");
+    assert_eq!(rs274_motions(&expanded).len(), 103 + 2);
+    let out = run(&["expand", "--profile", "linuxcnc", "--reading", "R-LCNC-READER=end-of-block", &f], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -27,13 +27,31 @@ fn readings_lists_one_line_per_reading() {
     let ids: Vec<&str> = all.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
     assert_eq!(
         ids,
-        ["R-RUNOUT", "R-XRUNOUT", "R-E980", "R-END", "R-LONG988", "R-G78LEFT", "R-G78CENTRE", "R-LEADIN"]
+        [
+            "R-RUNOUT",
+            "R-XRUNOUT",
+            "R-E980",
+            "R-END",
+            "R-LONG988",
+            "R-HIGHSPEED",
+            "R-G78LEFT",
+            "R-G78CENTRE",
+            "R-LEADIN",
+            "R-LCNC-READER",
+            "R-G92Q",
+            "R-G75ALLOW",
+            "R-G75P"
+        ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
     assert!(all.contains("\nR-END\ttravel-i | parallel* | translated\t[fanuc,gsk980,gsk988]\t"), "{all}");
     let gsk988 = common::stdout(&["readings", "--profile", "gsk988"]);
     let ids: Vec<&str> = gsk988.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
-    assert_eq!(ids, ["R-XRUNOUT", "R-END", "R-LONG988", "R-G78LEFT", "R-G78CENTRE", "R-LEADIN"], "{gsk988}");
+    assert_eq!(
+        ids,
+        ["R-XRUNOUT", "R-END", "R-LONG988", "R-HIGHSPEED", "R-G78LEFT", "R-G78CENTRE", "R-LEADIN", "R-G92Q"],
+        "{gsk988}"
+    );
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
 }

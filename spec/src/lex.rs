@@ -10,7 +10,8 @@
 //! Accepted: `%` lines, a program number `O` in a block of its own, a
 //! sequence number `N` at the start of a block, `( )` comments (also the
 //! full-width `（ ）` of the Chinese manuals), `;` (and `；`) or a newline as
-//! block end, blank lines, spaces anywhere between words and between an
+//! block end (on the linuxcnc profile `;` starts a comment to the end of
+//! the line instead, reading R-LCNC-READER), blank lines, spaces anywhere between words and between an
 //! address and its value, words in any order, upper or lower case, a
 //! leading `/` (block delete, treated as switched off) and a UTF-8
 //! byte-order mark at the start of the text.
@@ -71,6 +72,9 @@ pub struct Lexer<'a> {
     /// LinuxCNC's o-word lines are blocks of their own, not read as words
     /// ([`oword`]).
     owords: bool,
+    /// `;` starts a comment to the end of the line instead of ending the
+    /// block (reading R-LCNC-READER `comment`, LinuxCNC's interpreter).
+    semicolon_comments: bool,
 }
 
 /// Where a [`Lexer`] stands in its source, kept while the lexer itself is
@@ -104,7 +108,16 @@ impl<'a> Lexer<'a> {
     #[must_use]
     pub fn new(src: &'a [u8]) -> Lexer<'a> {
         let pos = if src.starts_with(BOM) { BOM.len() } else { 0 };
-        Lexer { src, pos, line: 0, line_start: pos, current: None, done: false, owords: false }
+        Lexer {
+            src,
+            pos,
+            line: 0,
+            line_start: pos,
+            current: None,
+            done: false,
+            owords: false,
+            semicolon_comments: false,
+        }
     }
 
     /// A lexer over one piece of a program (a line read from a stream,
@@ -116,7 +129,16 @@ impl<'a> Lexer<'a> {
         let mut lexer = if first_line <= 1 {
             Lexer::new(src)
         } else {
-            Lexer { src, pos: 0, line: 0, line_start: 0, current: None, done: false, owords: false }
+            Lexer {
+                src,
+                pos: 0,
+                line: 0,
+                line_start: 0,
+                current: None,
+                done: false,
+                owords: false,
+                semicolon_comments: false,
+            }
         };
         lexer.line = first_line.saturating_sub(1);
         lexer
@@ -140,7 +162,16 @@ impl<'a> Lexer<'a> {
             Some((Line { start, bytes }, next))
         });
         let line_start = current.map_or(at.pos, |(l, _)| l.start);
-        Lexer { src, pos: at.pos, line: at.line, line_start, current, done: at.done, owords: false }
+        Lexer {
+            src,
+            pos: at.pos,
+            line: at.line,
+            line_start,
+            current,
+            done: at.done,
+            owords: false,
+            semicolon_comments: false,
+        }
     }
 
     /// The lexer reading LinuxCNC's o-word lines (`o100 call`) as blocks
@@ -149,6 +180,15 @@ impl<'a> Lexer<'a> {
     #[must_use]
     pub(crate) fn with_owords(mut self, on: bool) -> Lexer<'a> {
         self.owords = on;
+        self
+    }
+
+    /// The lexer reading `;` as LinuxCNC does, a comment to the end of the
+    /// line (kept in the block's text, as a `( )` comment), when `on`;
+    /// else `;` ends the block (reading R-LCNC-READER).
+    #[must_use]
+    pub(crate) fn with_semicolon_comments(mut self, on: bool) -> Lexer<'a> {
+        self.semicolon_comments = on;
         self
     }
 
@@ -222,6 +262,7 @@ impl<'a> Lexer<'a> {
         while pos < line.len() {
             let b = line[pos];
             match b {
+                b';' if self.semicolon_comments => return Ok(Segment { end: line.len(), next: None }),
                 b';' => return Ok(Segment { end: pos, next: Some(pos + 1) }),
                 b'(' => {
                     pos =

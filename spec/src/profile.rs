@@ -103,7 +103,8 @@ pub enum RunOutRules {
     /// GSK 988TA G92 in the high-speed mode (5129 = 1): J, K omitted: by
     /// 5130 and 5131; K omitted (or J or K zero): none (the rapid retract
     /// to the X of A); J omitted: K along the long axis and the short axis
-    /// to the X of A; both: J and K (reading R-G92RUNOUT).
+    /// to the X of A; both: J and K (reading R-G92RUNOUT). G76 and G78
+    /// take the same rules in that mode (reading R-HIGHSPEED, `g92-rules`).
     Gsk988HighSpeed,
 }
 

@@ -120,6 +120,83 @@ pub enum LeadIn {
     WholeLeads,
 }
 
+/// Reading R-HIGHSPEED: a G76 or a G78 on the 988TA when parameter 5129
+/// (THM) selects the high-speed threading mode.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum HighSpeed {
+    /// `g92-rules` (default): the run-out words J and K take G92's
+    /// high-speed rules (R-G92RUNOUT), as they take G92's normal-mode rules
+    /// under 5129 = 0. G76 note 9: "存在 J、K 时退尾格式及相关注意事项同
+    /// G92"; 5129 is "螺纹切削循环 G92,G76 的模式" (seed 000, the 988TA G76
+    /// page) and "螺纹切削循环 G92，G76，G78 的模式" (the 988TA G78 page).
+    #[default]
+    G92Rules,
+    /// `refuse`: the cycle is refused at its block 2, since no page spells
+    /// out a G76 or G78 high-speed pass.
+    Refuse,
+}
+
+/// Reading R-LCNC-READER: what `;` is in a program of the linuxcnc
+/// profile.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LcncSemicolon {
+    /// `comment` (default): a comment to the end of the line, as LinuxCNC's
+    /// interpreter reads it (`rs274 -g` on `G0 X20 Z2 ; approach` makes
+    /// `STRAIGHT_TRAVERSE(20.0000, 0.0000, 2.0000, …)`; a `(` after the `;`
+    /// is part of the comment). LinuxCNC's behaviour is the authority for
+    /// the linuxcnc profile.
+    #[default]
+    Comment,
+    /// `end-of-block`: `;` ends the block, as on the GSK profiles, so the
+    /// text after it is read as the next block (a LinuxCNC `; comment` is
+    /// then refused).
+    EndOfBlock,
+}
+
+/// Reading R-G92Q: whether the start angle Q of the 988TA's G92 carries
+/// over to the next G92 block.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G92StartAngle {
+    /// `one-shot` (default): G32's rule, to which the G92 page refers Q
+    /// ("取值单位与范围请参考 G32"; 988TA G32 Q: "非模态，省略时为 0°"): a
+    /// G92 block without Q starts at 0°.
+    #[default]
+    OneShot,
+    /// `modal`: Q stays in force until another Q or another motion code,
+    /// as every other word of the G92 page ("R … 模态值", J, K "模态指令",
+    /// L "模态参数", P "模态指令"); the page states no modality for Q.
+    Modal,
+}
+
+/// Reading R-G75ALLOW: a negative finishing allowance U or W of the
+/// 980TDi's G75.1, whose page gives each a signed range while calling it
+/// "无符号".
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Allowance {
+    /// `refuse-negative` (default): "无符号" wins, a negative U or W is
+    /// `out_of_range` (as R-E980's default for the same contradiction).
+    #[default]
+    RefuseNegative,
+    /// `magnitude`: the range "-99999.999~99999.999" wins and the value,
+    /// having no direction, is its magnitude, as the same page does for I
+    /// ("输入负值时当成正值处理").
+    Magnitude,
+}
+
+/// Reading R-G75P: which corner each digit of the 980TDi G75.1's
+/// P(a)(b)(d)(e) sets when fewer than four digits are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75PDigits {
+    /// `right-aligned` (default): the last digit is e, so leading zeros may
+    /// be dropped (P11 = P0011), as a number's value and as the 980TDi's
+    /// own P(m)(r)(a) ("地址P输入1位或2位数时取值为a").
+    #[default]
+    RightAligned,
+    /// `left-aligned`: "P 的第一位" is the first digit written (P11 =
+    /// P1100); the missing digits are 0 (chamfer).
+    LeftAligned,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -143,6 +220,16 @@ pub struct Readings {
     pub g78_centre: G78Centre,
     /// R-LEADIN.
     pub lead_in: LeadIn,
+    /// R-HIGHSPEED.
+    pub high_speed: HighSpeed,
+    /// R-LCNC-READER.
+    pub lcnc_semicolon: LcncSemicolon,
+    /// R-G92Q.
+    pub g92_q: G92StartAngle,
+    /// R-G75ALLOW.
+    pub g75_allowance: G75Allowance,
+    /// R-G75P.
+    pub g75_p: G75PDigits,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -307,6 +394,21 @@ pub const TABLE: &[ReadingEntry] = &[
         profiles: &[ProfileName::Gsk988],
     },
     ReadingEntry {
+        id: "R-HIGHSPEED",
+        point: "G76 and G78 under 5129 = 1 (the 988TA's high-speed threading mode)",
+        values: &[
+            ReadingValue {
+                name: "g92-rules",
+                source: "988TA G76 note 9 \"存在 J、K 时退尾格式及相关注意事项同 G92\"; 5129 \"G92，G76，G78 的模式\": G92's high-speed J/K rules",
+            },
+            ReadingValue {
+                name: "refuse",
+                source: "no page spells out a high-speed G76 or G78 pass: refused at block 2",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
         id: "R-G78LEFT",
         point: "where a left-flank pass lies (G78 r=1, the left passes of G78 r=3/r=4 and G76 D2)",
         values: &[
@@ -345,6 +447,63 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK_G78,
     },
+    ReadingEntry {
+        id: "R-LCNC-READER",
+        point: "`;` in a linuxcnc program",
+        values: &[
+            ReadingValue {
+                name: "comment",
+                source: "LinuxCNC's interpreter: `;` starts a comment to the end of the line (rs274 -g)",
+            },
+            ReadingValue {
+                name: "end-of-block",
+                source: "`;` ends the block, as on the GSK profiles: a `; comment` is refused",
+            },
+        ],
+        profiles: &[ProfileName::LinuxCnc],
+    },
+    ReadingEntry {
+        id: "R-G92Q",
+        point: "whether the 988TA G92's start angle Q carries over to the next G92 block",
+        values: &[
+            ReadingValue {
+                name: "one-shot",
+                source: "988TA G92 Q \"取值单位与范围请参考 G32\"; G32 Q \"非模态，省略时为 0°\"",
+            },
+            ReadingValue {
+                name: "modal",
+                source: "every other 988TA G92 word is modal (R, J, K, L, P); the page states none for Q",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-G75ALLOW",
+        point: "a negative finishing allowance U or W of the 980TDi's G75.1",
+        values: &[
+            ReadingValue { name: "refuse-negative", source: "980TDi G75.1: U, W \"无符号\" (unsigned)" },
+            ReadingValue {
+                name: "magnitude",
+                source: "980TDi G75.1: U, W \"-99999.999~99999.999\"; made as |U|, |W| like I (\"输入负值时当成正值处理\")",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-G75P",
+        point: "the corners of a G75.1 P(a)(b)(d)(e) written with fewer than four digits",
+        values: &[
+            ReadingValue {
+                name: "right-aligned",
+                source: "P is a number: the last digit is e, leading zeros dropped (as the 980TDi's P(m)(r)(a))",
+            },
+            ReadingValue {
+                name: "left-aligned",
+                source: "\"P 的第一位\" is the first digit written: P11 sets a and b",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -379,6 +538,26 @@ impl Readings {
             "R-LEADIN" => match self.lead_in {
                 LeadIn::SameZ => "same-z",
                 LeadIn::WholeLeads => "whole-leads",
+            },
+            "R-HIGHSPEED" => match self.high_speed {
+                HighSpeed::G92Rules => "g92-rules",
+                HighSpeed::Refuse => "refuse",
+            },
+            "R-LCNC-READER" => match self.lcnc_semicolon {
+                LcncSemicolon::Comment => "comment",
+                LcncSemicolon::EndOfBlock => "end-of-block",
+            },
+            "R-G92Q" => match self.g92_q {
+                G92StartAngle::OneShot => "one-shot",
+                G92StartAngle::Modal => "modal",
+            },
+            "R-G75ALLOW" => match self.g75_allowance {
+                G75Allowance::RefuseNegative => "refuse-negative",
+                G75Allowance::Magnitude => "magnitude",
+            },
+            "R-G75P" => match self.g75_p {
+                G75PDigits::RightAligned => "right-aligned",
+                G75PDigits::LeftAligned => "left-aligned",
             },
             _ => return None,
         };
@@ -422,6 +601,16 @@ impl Readings {
             ("R-G78CENTRE", "under-b") => self.g78_centre = G78Centre::UnderB,
             ("R-LEADIN", "same-z") => self.lead_in = LeadIn::SameZ,
             ("R-LEADIN", "whole-leads") => self.lead_in = LeadIn::WholeLeads,
+            ("R-HIGHSPEED", "g92-rules") => self.high_speed = HighSpeed::G92Rules,
+            ("R-HIGHSPEED", "refuse") => self.high_speed = HighSpeed::Refuse,
+            ("R-LCNC-READER", "comment") => self.lcnc_semicolon = LcncSemicolon::Comment,
+            ("R-LCNC-READER", "end-of-block") => self.lcnc_semicolon = LcncSemicolon::EndOfBlock,
+            ("R-G92Q", "one-shot") => self.g92_q = G92StartAngle::OneShot,
+            ("R-G92Q", "modal") => self.g92_q = G92StartAngle::Modal,
+            ("R-G75ALLOW", "refuse-negative") => self.g75_allowance = G75Allowance::RefuseNegative,
+            ("R-G75ALLOW", "magnitude") => self.g75_allowance = G75Allowance::Magnitude,
+            ("R-G75P", "right-aligned") => self.g75_p = G75PDigits::RightAligned,
+            ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
             _ => return Err(bad()),
         }
         Ok(())
@@ -465,6 +654,13 @@ impl Readings {
                 (v != e.default_on(profile)).then_some((e.id, v))
             })
             .collect()
+    }
+
+    /// True when `;` starts a comment to the end of the line in a program
+    /// of a LinuxCNC dialect (`lcnc`), reading R-LCNC-READER `comment`.
+    #[must_use]
+    pub fn semicolon_comments(&self, lcnc: bool) -> bool {
+        lcnc && self.lcnc_semicolon == LcncSemicolon::Comment
     }
 
     /// What a threading cycle of `profile` does under these readings: a

@@ -573,7 +573,8 @@ mod scan {
                 }
             );
             assert_eq!(e.to_string(), "line 3: STRAIGHT_FEED: 3 arguments, the call takes [6, 9]");
-            let e = crate::rs274::call("   4 N..... STRAIGHT_FEED(1, 0, x, 0, 0, 0)", 4).expect_err("not a number");
+            let e = crate::rs274::call("   4 N..... STRAIGHT_FEED(1, 0, x, 0, 0, 0)", 4)
+                .expect_err("not a number");
             assert!(
                 matches!(&e.kind, crate::rs274::CanonErrorKind::NotANumber { argument, .. } if argument == "x"),
                 "{e:?}"

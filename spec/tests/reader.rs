@@ -325,17 +325,19 @@ fn unsupported_codes_and_unknown_positions() {
     assert_eq!(e.word.as_deref(), Some("X"));
 }
 
-/// 5129 = 1 (the 988TA's high-speed threading mode): a G76 or a G78 is
-/// refused at its block 2 (no source gives their high-speed rules); G92
-/// follows it (spec/tests/g92.rs).
+/// 5129 = 1 (the 988TA's high-speed threading mode) under reading
+/// R-HIGHSPEED=refuse: a G76 or a G78 is refused at its block 2; G92
+/// follows it (spec/tests/g92.rs). The default, `g92-rules`, is worked in
+/// spec/tests/readings.rs.
 #[test]
-fn high_speed_mode_refuses_g76_and_g78() {
+fn high_speed_mode_refuses_g76_and_g78_under_refuse() {
     let mut m = gsk988();
-    m.apply_toml("[parameters]\n5129 = 1\n").unwrap();
+    m.apply_toml("[parameters]\n5129 = 1\n[readings]\n\"R-HIGHSPEED\" = \"refuse\"\n").unwrap();
     let e = error("M3 S300\nG00 X80 Z10\nG76 P020560 Q0.15 R0.1\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n", &m);
     assert_eq!(e.line, 4);
     assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
     assert!(e.to_string().contains("5129 = 1") && e.to_string().contains("G76"), "{e}");
+    assert!(e.to_string().contains("R-HIGHSPEED=refuse"), "{e}");
     let e = error("M3 S300\nG00 X80 Z10\nG78 X60.64 Z-62 P3.68 Q1.8 F6\n", &m);
     assert_eq!(e.line, 3);
     assert!(e.to_string().contains("G78"), "{e}");

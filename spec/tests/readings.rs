@@ -362,7 +362,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-G78LEFT, R-G78CENTRE, R-LEADIN)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -402,6 +402,261 @@ fn listing() {
     assert!(all.lines().next().unwrap().starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t"));
     let gsk988 = Listing { profile: Some(ProfileName::Gsk988) }.to_string();
     assert!(!gsk988.contains("R-RUNOUT") && !gsk988.contains("R-E980") && gsk988.contains("R-XRUNOUT"));
+    assert!(gsk988.contains("R-HIGHSPEED\tg92-rules* | refuse\t[gsk988]\t"), "{gsk988}");
+}
+
+/// The 988TA with parameter 5129 (THM) = 1, the high-speed threading mode,
+/// and `readings` chosen.
+fn high_speed(readings: &[&str]) -> Machine {
+    let mut m = machine(ProfileName::Gsk988, readings);
+    m.apply_toml("[parameters]\n5129 = 1\n").unwrap();
+    m
+}
+
+/// A G76 (or G78) of the 988TA: A = (X80, Z10), D = (X60.64, Z-62), k =
+/// 3.68, Δd = 1.8, Δdmin = 0.15, d = 0.1, a = 60° (P020060: m = 2, r = 0,
+/// a = 60), F6, and the run-out words `jk`. Pass 1 (depth Δd = 1.8): X =
+/// X_D + 2·(k - 1.8) = 60.64 + 3.76 = X64.4, on G76 at Z = 10 - round(1.8 ·
+/// tan 30°) = 10 - round(1.03923) = Z8.961 (R-INFEED, right flank).
+fn g76_high_speed(code: &str, jk: &str) -> String {
+    format!("M3 S300\nG00 X80 Z10\n{code} P020060 Q0.15 R0.1\n{code} X60.64 Z-62 P3.68 Q1.8 F6 {jk}\nM30\n")
+}
+
+/// R-HIGHSPEED `g92-rules` (default): G92's high-speed rules (R-G92RUNOUT)
+/// for G76's J and K (note 9: "存在 J、K 时退尾格式及相关注意事项同 G92").
+/// K2 with J omitted: "省略 J 时，长轴方向按 K 退尾": the cut ends at Z-62 + 2
+/// = Z-60; the short axis runs all the way to A's X (J' clamped at the
+/// retract, (80 - 64.4)/2 = 7.8), so the run-out ends at (X80, Z-62), the
+/// retract there is empty (R-ZERO) and Z returns to Z10. Under 5129 = 0
+/// the same block has no run-out at all (normal mode: "省略 J 时，无退尾"):
+/// the cut runs to Z-62, X rapids to X80, Z returns.
+#[test]
+fn g76_high_speed_k_only_under_g92_rules() {
+    let src = g76_high_speed("G76", "K2");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    // Pass 2 (depth round(1.8·√2) = round(2.5456) = 2.546): X = 60.64 +
+    // 2·(3.68 - 2.546) = X62.908, Z = 10 - round(2.546·tan 30°) = 10 -
+    // round(1.46993) = Z8.53; the same run-out to (X80, Z-62).
+    assert_eq!(
+        ends(&got[4..8]),
+        [
+            (Role::Approach, Point::new(62_908, 8_530)),
+            (Role::Cut, Point::new(62_908, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    let normal = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&normal[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// `g92-rules` with J1.5 and K omitted: "省略 K 时，长轴无退尾，短轴方向的退尾
+/// 长度，固定为切削终点到起点的短轴轴向距离，与 J 是多少无关": the cut runs to
+/// Z-62 and the rapid retract of step (3) takes X to A's X80 (J is
+/// ignored). Under 5129 = 0 the normal mode's "省略 K 时，长轴无退尾，短轴方向
+/// 按 J 值退尾" pulls out 2·1.5 = 3 along X by thread motion: X64.4 + 3 =
+/// X67.4 at Z-62, then the rapid to X80.
+#[test]
+fn g76_high_speed_j_only_under_g92_rules() {
+    let src = g76_high_speed("G76", "J1.5");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+    let normal = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&normal[..5]),
+        [
+            (Role::Approach, Point::new(64_400, 8_961)),
+            (Role::Cut, Point::new(64_400, -62_000)),
+            (Role::RunOut, Point::new(67_400, -62_000)),
+            (Role::Retract, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// G78 takes the same rules (5129 on the 988TA G78 page: "螺纹切削循环
+/// G92，G76，G78 的模式"). G78's P(r) = 00 is the centre-line infeed: every
+/// pass at the form centre, Z = 10 - round((k - d)·tan 30°) = 10 -
+/// round(3.58·0.57735) = 10 - round(2.06691) = Z7.933; pass 1 at X64.4,
+/// K2 as in the G76 case above.
+#[test]
+fn g78_high_speed_k_only_under_g92_rules() {
+    let src = g76_high_speed("G78", "K2");
+    let got = run(&src, &high_speed(&[])).unwrap();
+    assert_eq!(
+        ends(&got[..4]),
+        [
+            (Role::Approach, Point::new(64_400, 7_933)),
+            (Role::Cut, Point::new(64_400, -60_000)),
+            (Role::RunOut, Point::new(80_000, -62_000)),
+            (Role::Return, Point::new(80_000, 10_000)),
+        ]
+    );
+}
+
+/// R-HIGHSPEED `refuse`: a G76 or G78 under 5129 = 1 is refused at its
+/// block 2, naming the parameter and the reading.
+#[test]
+fn high_speed_refused_under_refuse() {
+    for code in ["G76", "G78"] {
+        let e = read(&g76_high_speed(code, "K2"), &high_speed(&["R-HIGHSPEED=refuse"])).unwrap_err();
+        assert_eq!(e.line, 4);
+        assert!(matches!(e.kind, ErrorKind::Parameter(_)), "{e}");
+        assert!(e.to_string().contains("5129 = 1") && e.to_string().contains(code), "{e}");
+    }
+}
+
+/// R-LCNC-READER `comment` (default on linuxcnc): `;` starts a comment to
+/// the end of the line, as LinuxCNC's interpreter reads it (`rs274 -g` on
+/// `G0 X20 Z2 ; approach` makes `STRAIGHT_TRAVERSE(20.0000, 0.0000,
+/// 2.0000, …)` and nothing for the comment; cli/tests/linuxcnc.rs compares
+/// a whole program with rs274). The block keeps its comment in its text,
+/// as a `( )` comment. `end-of-block`: the text after `;` is read as the
+/// next block, and `approach` is an address `A` without a number.
+#[test]
+fn semicolon_on_linuxcnc() {
+    let src = "G18 G21 G7\nG0 X20 Z2 ; approach (no closing paren\n; a line of comment\nG0 X30;\nM2\n";
+    let p = read(src, &machine(ProfileName::LinuxCnc, &[])).unwrap();
+    let texts: Vec<String> = p.items.iter().map(|i| i.block().text_lossy().into_owned()).collect();
+    assert!(texts.contains(&"G0 X20 Z2 ; approach (no closing paren".to_string()), "{texts:?}");
+    let e = read(src, &machine(ProfileName::LinuxCnc, &["R-LCNC-READER=end-of-block"])).unwrap_err();
+    assert_eq!(e.line, 2);
+    assert!(matches!(e.kind, ErrorKind::Syntax(_)), "{e}");
+    // The GSK profiles keep `;` as a block end ("；" or ";" between
+    // blocks), whatever the reading: two moves on one line.
+    let gsk = "M3 S300\nG00 X80;G00 Z10\nM30\n";
+    let p = read(gsk, &machine(ProfileName::Gsk988, &["R-LCNC-READER=comment"])).unwrap();
+    assert_eq!(p.items.iter().filter(|i| matches!(i, cycleref_spec::Item::Move(_))).count(), 2);
+}
+
+/// The 988TA G92 page's example with a start angle on its first block:
+/// A = (X65, Z5), `G92 X58.7 Z-28 F3 J3 K1 Q90`, then the repeats `X57.7`
+/// (no Q), `X57 Q45`, and after a G00 (another motion code ends the G92
+/// mode, R-G92MODAL) `G92 X56.9 Z-28` (no Q). Each block is one pass; the
+/// start angle of each pass's cut, in millidegrees, by reading R-G92Q.
+const G92_Q: &str =
+    "M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1 Q90\nX57.7\nX57 Q45\nG00 X65 Z5\nG92 X56.9 Z-28\nM30\n";
+
+fn cut_angles(moves: &[Move]) -> Vec<(i64, u64)> {
+    moves
+        .iter()
+        .filter(|m| m.role == Role::Cut)
+        .map(|m| match m.motion {
+            cycleref::Motion::Thread { start_angle, .. } => (m.to.x, start_angle.rounded_millidegrees()),
+            _ => panic!("a cut that is not a thread move: {m:?}"),
+        })
+        .collect()
+}
+
+/// R-G92Q `one-shot` (default): G32's rule, "非模态，省略时为 0°": the second
+/// pass (X57.7) starts at 0°, a helix 90° (a quarter of the 3 mm lead,
+/// 0.75 mm in Z) away from the first pass's, i.e. another groove; the
+/// third at its own Q45.
+#[test]
+fn g92_q_one_shot_by_default() {
+    let got = run(G92_Q, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(cut_angles(&got), [(58_700, 90_000), (57_700, 0), (57_000, 45_000), (56_900, 0)]);
+}
+
+/// R-G92Q `modal`: Q stays in force like the page's other words: X57.7
+/// cuts at 90° (the first pass's groove), X57 at its own 45°, and the G92
+/// after the G00 starts again at 0° (the modal values are cleared by
+/// another motion code). Only the start angles differ from `one-shot`.
+#[test]
+fn g92_q_modal() {
+    let got = run(G92_Q, &machine(ProfileName::Gsk988, &["R-G92Q=modal"])).unwrap();
+    assert_eq!(cut_angles(&got), [(58_700, 90_000), (57_700, 90_000), (57_000, 45_000), (56_900, 0)]);
+    let default = run(G92_Q, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(ends(&got), ends(&default));
+}
+
+/// The 980TDi's G75.1 (IS-C), with `readings`.
+fn gsk980_is_c(readings: &[&str]) -> Machine {
+    let mut m = machine(ProfileName::Gsk980, readings);
+    m.apply_toml("increment = \"is-c\"\n").unwrap();
+    m
+}
+
+/// A G75.1 groove (the sweep's example): S = (X50, Z30), Δi 3, Δk 5, depth
+/// H-20, width D-10, flanks A45 B30, retract R0.5, and block 2's `extra`.
+fn g75_allowance(extra: &str) -> String {
+    format!("M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\nG75.1 R0.5 {extra}\nM30\n")
+}
+
+/// R-G75ALLOW `refuse-negative` (default): U "（…直径，无符号）" wins; U-0.2
+/// is out of range (0..), on the U word. `magnitude`: the range
+/// "-9999.9999~9999.9999(IS_C)" wins and U, having no direction, is its
+/// magnitude, as the same page's I ("输入负值时当成正值处理"): U-0.2 cuts what
+/// U0.2 cuts. The bottom is at S's X50 + H-20 = X30; with U0.2 (diameter)
+/// the roughing's deepest point is X30 + 0.2 = X30.2 (IS-C: 302 000
+/// increments), with U0 X30. W likewise.
+#[test]
+fn g75_negative_allowance() {
+    let e = read(&g75_allowance("U-0.2"), &gsk980_is_c(&[])).unwrap_err();
+    assert_eq!(e.word.as_deref(), Some("U-0.2"));
+    let m = gsk980_is_c(&["R-G75ALLOW=magnitude"]);
+    let negative = run(&g75_allowance("U-0.2 W-0.3"), &m).unwrap();
+    let positive = run(&g75_allowance("U0.2 W0.3"), &gsk980_is_c(&[])).unwrap();
+    assert_eq!(negative, positive);
+    let deepest = |moves: &[Move]| moves.iter().map(|m| m.to.x).min().unwrap();
+    assert_eq!(deepest(&run(&g75_allowance("U-0.2"), &m).unwrap()), 302_000);
+    assert_eq!(deepest(&run(&g75_allowance(""), &gsk980_is_c(&[])).unwrap()), 300_000);
+    assert!(read(&g75_allowance("W-0.3"), &gsk980_is_c(&[])).is_err());
+}
+
+/// A G75.1 with a 4 mm tool (I4), roughing and finishing (J1), D and E
+/// (the inner bottom's corners) of 0.5, A and B (the outer ones) of no
+/// size, and P written with two digits (`p`).
+fn g75_p(p: &str) -> String {
+    format!(
+        "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10\nG75.1 R0.5 I4 J1 D0.5 E0.5 {p}\nM30\n"
+    )
+}
+
+fn arcs(moves: &[Move]) -> usize {
+    moves.iter().filter(|m| matches!(m.motion, cycleref::Motion::Arc { .. })).count()
+}
+
+/// R-G75P `right-aligned` (default): P11 = P0011, d = e = 1: the inner
+/// bottom's corners D and E are rounds (R0.5), two arcs in the finishing
+/// contour. `left-aligned`: "P 的第一位" is the first digit written, P11 =
+/// P1100: a = b = 1 (A and B have no size, so they stay sharp) and d = e =
+/// 0, chamfers at D and E: the moves of P1100, no arc.
+#[test]
+fn g75_p_digits() {
+    let right = run(&g75_p("P11"), &gsk980_is_c(&[])).unwrap();
+    assert_eq!(arcs(&right), 2);
+    assert_eq!(right, run(&g75_p("P0011"), &gsk980_is_c(&[])).unwrap());
+    let left = run(&g75_p("P11"), &gsk980_is_c(&["R-G75P=left-aligned"])).unwrap();
+    assert_eq!(arcs(&left), 0);
+    assert_eq!(left, run(&g75_p("P1100"), &gsk980_is_c(&[])).unwrap());
+    // Four digits mean the same under both.
+    assert_eq!(run(&g75_p("P0011"), &gsk980_is_c(&["R-G75P=left-aligned"])).unwrap(), right);
 }
 
 /// R-END on a small taper, 980TDi G76 (P, Q in increments): A = (X40, Z5),

@@ -681,15 +681,12 @@ fn unit_change(rng: &mut Rng) -> Draft {
     Draft::new(ctx, lines).described(format!("{code} after the first motion"))
 }
 
-/// What the reader refuses besides: syntax, a duplicate address, an unsupported G code, a parameter.
+/// What the reader refuses besides: syntax, a duplicate address, an unsupported G code.
 pub(super) const MISC: Template = Template {
     id: "reader",
     // Each variant aims at one of these kinds (`Draft::refused_as`).
     outcome: Expected::Refused(|k| {
-        matches!(
-            k,
-            ErrorKind::Syntax(_) | ErrorKind::Duplicate | ErrorKind::Unsupported(_) | ErrorKind::Parameter(_)
-        )
+        matches!(k, ErrorKind::Syntax(_) | ErrorKind::Duplicate | ErrorKind::Unsupported(_))
     }),
     tags: &["refuse:reader"],
     description: "a program the reader refuses",
@@ -699,7 +696,7 @@ pub(super) const MISC: Template = Template {
 fn misc(rng: &mut Rng) -> Draft {
     let variant = rng.range(0, 3);
     let profile = if variant == 3 { ProfileName::Gsk988 } else { any_profile(rng) };
-    let (mut ctx, t, g) = base(profile, rng);
+    let (ctx, t, g) = base(profile, rng);
     let mut lines = head(rng, &ctx, t.a);
     let (what, kind): (&str, Refusal) = match variant {
         0 => {
@@ -715,8 +712,12 @@ fn misc(rng: &mut Rng) -> Draft {
             ("a G code the reader does not model (G71)", |k| matches!(k, ErrorKind::Unsupported(_)))
         }
         _ => {
-            ctx.params.insert("5129", Param::Int(1));
-            ("parameter 5129 = 1 (high-speed threading mode)", |k| matches!(k, ErrorKind::Parameter(_)))
+            // 5129 = 1 (high-speed mode) was refused here before reading
+            // R-HIGHSPEED gave G76 and G78 G92's high-speed rules; the
+            // 988TA's own G74 (end-face peck drilling) stays outside the
+            // model.
+            lines.push(format!("G74 R{}", ctx.num(ctx.mm(500))));
+            ("a 988TA G code the reader does not model (G74)", |k| matches!(k, ErrorKind::Unsupported(_)))
         }
     };
     lines.extend(g76_lines(&ctx, &t, &g));

@@ -631,11 +631,12 @@ impl Calls {
         &mut self,
         subs: Subprograms<'_>,
         lcnc: bool,
+        semi: bool,
         line: usize,
     ) -> Result<(), ProgramError> {
         let mut index: Vec<Entry> = Vec::new();
         for (region, text, first_line) in [(0, subs.before, 1), (1, subs.after, subs.after_line)] {
-            let mut lexer = Lexer::at_line(text, first_line).with_owords(lcnc);
+            let mut lexer = Lexer::at_line(text, first_line).with_owords(lcnc).with_semicolon_comments(semi);
             while let Some(block) = lexer.next_readable() {
                 let label = if lcnc {
                     match block_oword(&block) {

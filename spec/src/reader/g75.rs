@@ -2,6 +2,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::readings::{G75Allowance, G75PDigits};
 
 /// The values of a G75.1 block 1, kept until block 2 arrives.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -168,8 +169,13 @@ impl State<'_> {
         };
         let retract = opt('R')?.unwrap_or(0);
         let layer = opt('V')?;
-        let allowance_x = opt('U')?.unwrap_or(0);
-        let allowance_z = opt('W')?.unwrap_or(0);
+        // Reading R-G75ALLOW: U and W are "无符号" with a signed range;
+        // under `magnitude` a negative one is its magnitude (as I below),
+        // else the cycle's range check refuses it.
+        let magnitude = self.machine.readings.g75_allowance == G75Allowance::Magnitude;
+        let allowance = |v: i64| if magnitude { v.abs() } else { v };
+        let allowance_x = opt('U')?.map_or(0, allowance);
+        let allowance_z = opt('W')?.map_or(0, allowance);
         // "输入负值时当成正值处理": a negative I is its magnitude.
         let tool_width = opt('I')?.map(i64::abs);
         let path = match block.get('J')? {
@@ -214,7 +220,9 @@ impl State<'_> {
 
     /// Reading R-G75P: the digits of P(a)(b)(d)(e) are read from the right
     /// (e is the last digit), so leading zeros may be dropped (P11 rounds
-    /// D and E); each digit is 0 (chamfer) or 1 (round); omitted: chamfers.
+    /// D and E), or under `left-aligned` from the left ("P 的第一位" the
+    /// first written: P11 rounds A and B); each digit is 0 (chamfer) or 1
+    /// (round); omitted: chamfers.
     pub(super) fn g75_corner_kinds(&self, block: &Block<'_>) -> Result<[CornerKind; 4], ProgramError> {
         let mut kinds = [CornerKind::Chamfer; 4];
         let Some(p) = block.get('P')? else {
@@ -234,8 +242,15 @@ impl State<'_> {
         if digits.len() > 4 || digits.iter().any(|&c| c != b'0' && c != b'1') {
             return Err(bad());
         }
-        for (i, &c) in digits.iter().rev().enumerate() {
-            kinds[3 - i] = if c == b'1' { CornerKind::Round } else { CornerKind::Chamfer };
+        let kind = |c: u8| if c == b'1' { CornerKind::Round } else { CornerKind::Chamfer };
+        if self.machine.readings.g75_p == G75PDigits::LeftAligned {
+            for (i, &c) in digits.iter().enumerate() {
+                kinds[i] = kind(c);
+            }
+        } else {
+            for (i, &c) in digits.iter().rev().enumerate() {
+                kinds[3 - i] = kind(c);
+            }
         }
         Ok(kinds)
     }

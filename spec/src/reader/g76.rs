@@ -3,6 +3,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::readings::HighSpeed;
 use crate::readings::E980;
 use crate::ProfileName;
 
@@ -240,22 +241,30 @@ impl State<'_> {
             }
             e
         };
-        if self.high_speed() {
-            // Reading R-RUNOUT: 5129 switches G76 (seed 000: "螺纹切削循环
-            // G92,G76 的模式") and G78 (the 988TA G78 page: "G92，G76，G78
-            // 的模式"), and no source gives their high-speed rules.
-            let n = profile.params.thread_mode.unwrap_or("5129");
-            return Err(err(
-                &block,
-                None,
-                ErrorKind::Parameter(format!(
-                    "{n} = {} selects the high-speed threading mode, whose {} rules the manuals do not \
-                     give; set it to 0 (G92 follows it)",
-                    self.machine.int_param(n),
-                    code.code()
-                )),
-            ));
-        }
+        // Reading R-HIGHSPEED: 5129 switches G76 (seed 000: "螺纹切削循环
+        // G92,G76 的模式") and G78 (the 988TA G78 page: "G92，G76，G78 的模
+        // 式"); G76 note 9 gives their J/K G92's rules ("存在 J、K 时退尾格式
+        // 及相关注意事项同 G92"), so the high-speed mode gives them G92's
+        // high-speed rules (`g92-rules`), or the cycle is refused (`refuse`).
+        let rules = if self.high_speed() {
+            if self.machine.readings.high_speed == HighSpeed::Refuse {
+                let n = profile.params.thread_mode.unwrap_or("5129");
+                return Err(err(
+                    &block,
+                    None,
+                    ErrorKind::Parameter(format!(
+                        "{n} = {} selects the high-speed threading mode, in which a {} is refused \
+                         under reading R-HIGHSPEED=refuse; set it to 0 (G92 follows it) or choose \
+                         R-HIGHSPEED=g92-rules",
+                        self.machine.int_param(n),
+                        code.code()
+                    )),
+                ));
+            }
+            RunOutRules::Gsk988HighSpeed
+        } else {
+            profile.run_out
+        };
         let (Some(xa), Some(za)) = (self.x, self.z) else {
             return Err(err(&block, None, ErrorKind::PositionUnknown));
         };
@@ -330,7 +339,7 @@ impl State<'_> {
             Some(v) => v,
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
-        let run_out = resolve_run_out(profile.run_out, j, kk, r, angle);
+        let run_out = resolve_run_out(rules, j, kk, r, angle);
         let (infeed, depth_mode) = match g78 {
             None => (one.infeed.unwrap_or(Infeed::RightFlank), DepthMode::Decreasing),
             Some(g78) => {

@@ -337,13 +337,15 @@ impl<'m> LineReader<'m> {
             let mut block = Block::empty();
             let before = self.at;
             let lcnc = self.state.machine.profile.dialect == Dialect::LinuxCnc;
+            let semi = self.state.machine.readings.semicolon_comments(lcnc);
             if self.calls.running() {
                 let (text, at) = self.calls.position(subprograms);
                 let mut lexer = match at {
                     Some(at) => Lexer::resume(text, at),
                     None => Lexer::at_line(text, 1),
                 }
-                .with_owords(lcnc);
+                .with_owords(lcnc)
+                .with_semicolon_comments(semi);
                 match lexer.next_into(&mut block) {
                     Some(Ok(())) => {}
                     Some(Err(e)) => return Err(self.fail(e)),
@@ -361,7 +363,8 @@ impl<'m> LineReader<'m> {
                     Some(at) => Lexer::resume(piece, at),
                     None => Lexer::at_line(piece, self.line + 1),
                 }
-                .with_owords(lcnc);
+                .with_owords(lcnc)
+                .with_semicolon_comments(semi);
                 match lexer.next_into(&mut block) {
                     Some(Ok(())) => {}
                     // A line of a definition the path passes over is not
@@ -394,7 +397,7 @@ impl<'m> LineReader<'m> {
                         self.at = before;
                         return Ok(Step::Subprograms);
                     };
-                    if let Err(e) = self.calls.read_index(subs, lcnc, block.line) {
+                    if let Err(e) = self.calls.read_index(subs, lcnc, semi, block.line) {
                         return Err(self.fail(e));
                     }
                     flow = self.calls.flow(&block, self.state.machine, self.at);

@@ -53,8 +53,9 @@ impl State<'_> {
     }
 
     /// The machine's settings that no program can use (none at present:
-    /// 5129 = 1, the 988TA's high-speed threading mode, is refused by the
-    /// G76 block it would change, and followed by G92).
+    /// 5129 = 1, the 988TA's high-speed threading mode, is followed by G92
+    /// and, under reading R-HIGHSPEED, by G76 and G78 or refused by their
+    /// block 2).
     #[allow(clippy::unnecessary_wraps, clippy::unused_self)]
     pub(super) fn check_machine(&self) -> Result<(), ProgramError> {
         Ok(())

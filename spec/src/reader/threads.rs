@@ -3,6 +3,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::readings::G92StartAngle;
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
 /// and P, kept from block to block while G92 is the motion mode (980TDi:
@@ -19,6 +20,9 @@ pub(super) struct G92Modal {
     pub(super) starts: Option<u32>,
     /// P1 (988TA): a face thread.
     pub(super) face: Option<bool>,
+    /// The start angle Q (988TA), kept only under reading R-G92Q
+    /// `modal`.
+    pub(super) start_angle: Option<StartAngle>,
 }
 
 impl State<'_> {
@@ -153,8 +157,19 @@ impl State<'_> {
             // "螺纹类型，模态指令"; reading R-G92FACE).
             self.g92.face = Some(Self::count(&block, w, 0, 1)? == 1);
         }
+        // Reading R-G92Q: the 988TA G92 page says of Q only "螺纹切削开始角度
+        // 的位差角。取值单位与范围请参考 G32": `one-shot` takes G32's rule
+        // ("非模态，省略时为 0°"), `modal` keeps it as every other G92 word.
+        let modal_q = self.machine.readings.g92_q == G92StartAngle::Modal;
         let start_angle = match block.get('Q')? {
-            Some(w) => self.start_angle(&block, w)?,
+            Some(w) => {
+                let q = self.start_angle(&block, w)?;
+                if modal_q {
+                    self.g92.start_angle = Some(q);
+                }
+                q
+            }
+            None if modal_q => self.g92.start_angle.unwrap_or(StartAngle::ZERO),
             None => StartAngle::ZERO,
         };
         let p = &profile.params;
