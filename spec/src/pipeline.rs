@@ -185,6 +185,10 @@ macro_rules! registry {
                 nc_style -> NcStyle;
                 /// The cycle's `passes` table.
                 pass_table -> PassTable;
+                /// True when the cycle's lead is not along the long axis a
+                /// G32 block of its cut would take
+                /// ([`CycleCall::lead_off_g32_axis`]): the nc output refuses it.
+                lead_off_g32_axis -> bool;
             );
         }
 
@@ -282,28 +286,6 @@ impl Cycle<'_, '_> {
         match (error.field(), self.params_line()) {
             (Some(field), Some(line)) if field.in_block_1() => line,
             _ => self.line(),
-        }
-    }
-
-    /// True when the cycle's lead is not along the long axis that a G32
-    /// block of its cut would take (reading R-G32LONG: by the
-    /// displacements): a 988TA G92 or G78 under R-LONG988 `table` on a
-    /// steep taper (|W| ≤ |i|, radius), whose lead is along Z while its cut,
-    /// written as `G32 X… Z… F…`, would be read with the lead along X. Its
-    /// moves are the cycle's; the nc output refuses it, since no G32 block
-    /// says which axis the lead is on.
-    #[must_use]
-    pub fn lead_off_g32_axis(self) -> bool {
-        match self {
-            Cycle::G76(c) => {
-                let g = &c.cycle;
-                g.readings.long_axis_by_table && (g.end.z - g.start.z).abs() <= g.taper.abs()
-            }
-            Cycle::G92(c) => {
-                let g = &c.cycle;
-                g.readings.long_axis_by_table && !g.face && (g.end.z - g.start.z).abs() <= g.taper.abs()
-            }
-            _ => false,
         }
     }
 

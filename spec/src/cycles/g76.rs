@@ -254,4 +254,10 @@ impl<'a> CycleCall<'a> for G76Call<'a> {
             lead: c.lead,
         }))
     }
+
+    fn lead_off_g32_axis(&self) -> bool {
+        // A G78 under R-LONG988 `table`: Z long on a steep taper.
+        let g = &self.cycle;
+        g.readings.long_axis_by_table && (g.end.z - g.start.z).abs() <= g.taper.abs()
+    }
 }

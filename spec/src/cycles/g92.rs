@@ -118,4 +118,11 @@ impl<'a> CycleCall<'a> for G92Call<'a> {
             rapids: Some("A \u{2192} B, retract, return to A"),
         }))
     }
+
+    fn lead_off_g32_axis(&self) -> bool {
+        // Under R-LONG988 `table`: Z long on a steep taper (a face thread's
+        // long axis is X whatever the reading).
+        let g = &self.cycle;
+        g.readings.long_axis_by_table && !g.face && (g.end.z - g.start.z).abs() <= g.taper.abs()
+    }
 }

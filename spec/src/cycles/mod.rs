@@ -187,6 +187,17 @@ pub trait CycleCall<'a> {
     /// The cycle's `passes` table.
     fn pass_table(&self) -> PassTable;
 
+    /// True when the cycle's lead is not along the long axis that a G32
+    /// block of its cut would take (reading R-G32LONG: by the
+    /// displacements): a 988TA G92 or G78 under R-LONG988 `table` on a
+    /// steep taper (|W| ≤ |i|, radius), whose lead is along Z while its cut,
+    /// written as `G32 X… Z… F…`, would be read with the lead along X. Its
+    /// moves are the cycle's; the nc output refuses it, since no G32 block
+    /// says which axis the lead is on. False for the others.
+    fn lead_off_g32_axis(&self) -> bool {
+        false
+    }
+
     /// The regions the cycle cuts (reading R-CHECKSPLIT), given its moves
     /// by the engine in use (which it may walk).
     ///
