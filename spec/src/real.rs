@@ -77,7 +77,7 @@
 //! `real/interval.rs`, [`TrigFn`], `π` and the sine and cosine series in
 //! `real/trig.rs`, and the power `n^(a/b)` (`atanh2_scaled`, `ln_scaled`,
 //! `exp_scaled`, `power_interval`) in `real/power.rs`: the twins that
-//! `impl/src/engine/real.rs` names in `spec/src/real.rs` are there.
+//! `impl/src/engine/real/` names in `spec/src/real.rs` are there.
 
 use std::cell::RefCell;
 use std::cmp::Ordering;
@@ -190,7 +190,7 @@ impl Real {
     /// for `b ≤ 64`), otherwise enclosed through `exp(ln(n)·a/b)` as
     /// narrowly as asked (the values of LinuxCNC's depth law `n^(1/R)`).
     ///
-    /// Twin: `impl/src/engine/real.rs`, `power` (which tests the exact
+    /// Twin: `impl/src/engine/real/`, `power` (which tests the exact
     /// root as `n = r^b` in integers: the same cases for `a/b` in lowest
     /// terms).
     ///

@@ -99,7 +99,7 @@ impl Interval {
 
     /// `floor` of every number in the interval, if it is the same for all.
     ///
-    /// Twin (with `ceil`, `nearest`): `impl/src/engine/real.rs`,
+    /// Twin (with `ceil`, `nearest`): `impl/src/engine/real/`,
     /// `Interval::round`.
     pub(super) fn floor(&self) -> Option<BigInt> {
         let d = pow2(self.bits);
@@ -125,7 +125,7 @@ impl Interval {
 
     /// The sign of every number in the interval, if it is the same for all.
     ///
-    /// Twin: `impl/src/engine/real.rs`, `Interval::sign`.
+    /// Twin: `impl/src/engine/real/interval.rs`, `Interval::sign`.
     pub(super) fn sign(&self) -> Option<Ordering> {
         if self.lo.is_positive() {
             Some(Ordering::Greater)
@@ -150,7 +150,7 @@ impl Interval {
     /// exactly one integer `k` is taken to be `k`, and `floor(k) = ceil(k)
     /// = k`; `None` for two integers or more.
     ///
-    /// Twin (with `tie_nearest`): `impl/src/engine/real.rs`,
+    /// Twin (with `tie_nearest`): `impl/src/engine/real/`,
     /// `Interval::round_tie`.
     pub(super) fn tie_integer(&self) -> Option<BigInt> {
         self.only_integer()
@@ -170,7 +170,7 @@ impl Interval {
     /// of a sign) is taken to be 0; `None` when it does not hold 0 (then
     /// [`Interval::sign`] decides).
     ///
-    /// Twin: `impl/src/engine/real.rs`, `Interval::sign_tie`.
+    /// Twin: `impl/src/engine/real/interval.rs`, `Interval::sign_tie`.
     pub(super) fn tie_sign(&self) -> Option<Ordering> {
         (!self.lo.is_positive() && !self.hi.is_negative()).then_some(Ordering::Equal)
     }

@@ -21,7 +21,7 @@ const POWER_GUARD_BITS: u32 = 64;
 /// floored terms, the upper end ceiled ones plus a bound of the remainder
 /// (after a term `t`, the rest is at most `t·z²/(1 − z²) ≤ t/8`).
 ///
-/// Twin: `impl/src/engine/real.rs`, `atanh2`.
+/// Twin: `impl/src/engine/real/power.rs`, `atanh2`.
 fn atanh2_scaled(num: &BigInt, den: &BigInt, q: u32) -> (BigInt, BigInt) {
     let one = pow2(q);
     let (n2, d2) = (num * num, den * den);
@@ -46,7 +46,7 @@ fn atanh2_scaled(num: &BigInt, den: &BigInt, q: u32) -> (BigInt, BigInt) {
 /// `e · ln 2 + ln(m / 2^e)` with `m / 2^e` in `[1, 2)`, each logarithm as
 /// `2 atanh((y − 1)/(y + 1))` (`ln 2 = 2 atanh(1/3)`).
 ///
-/// Twin: `impl/src/engine/real.rs`, `ln`.
+/// Twin: `impl/src/engine/real/power.rs`, `ln`.
 fn ln_scaled(m: u64, q: u32) -> (BigInt, BigInt) {
     let e = 63 - m.leading_zeros();
     let p = BigInt::one() << e;
@@ -63,7 +63,7 @@ fn ln_scaled(m: u64, q: u32) -> (BigInt, BigInt) {
 /// when the argument is below 1/2, for the upper end), and the result
 /// squared `h` times.
 ///
-/// Twin: `impl/src/engine/real.rs`, `exp`.
+/// Twin: `impl/src/engine/real/power.rs`, `exp`.
 fn exp_scaled(lo: &BigInt, hi: &BigInt, q: u32) -> (BigInt, BigInt) {
     let one = pow2(q);
     let half = pow2(q - 1);
