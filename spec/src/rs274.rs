@@ -660,14 +660,18 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             Err(NotACall) => return Err(form()),
         },
     };
-    let numbers = || -> Result<Args, CanonError> {
-        let mut v = Args::EMPTY;
-        if plain_numbers(args.as_bytes(), &mut v) {
-            return Ok(v);
+    // The arguments, read into one array in place (returning it by value
+    // copied its 200 bytes for every line).
+    let mut v = Args::EMPTY;
+    let numbers = |v: &mut Args| -> Result<(), CanonError> {
+        if plain_numbers(args.as_bytes(), v) {
+            return Ok(());
         }
-        v = Args::EMPTY;
+        // What the plain reading pushed is dropped: only the first `len`
+        // arguments are ever read.
+        v.len = 0;
         if scan::trim(args).is_empty() {
-            return Ok(v);
+            return Ok(());
         }
         let mut rest = Some(args);
         while let Some(r) = rest {
@@ -686,7 +690,7 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             })?;
             v.push(d);
         }
-        Ok(v)
+        Ok(())
     };
     let count = |v: &Args, want: &'static [usize]| {
         if want.contains(&v.len()) {
@@ -697,9 +701,10 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
     };
     Ok(Some(match name {
         "STRAIGHT_TRAVERSE" | "STRAIGHT_FEED" => {
-            let v = numbers()?;
+            numbers(&mut v)?;
+            let v = &v;
             // X Y Z A B C, and U V W on machines that have them.
-            count(&v, &[6, 9])?;
+            count(v, &[6, 9])?;
             let v = v.kept();
             if v.len() == 9 && v[6..].iter().any(|d| !d.is_zero()) {
                 return Err(fail(CanonErrorKind::UvwMoves { call: name.to_string() }));
@@ -714,8 +719,9 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
         "ARC_FEED" => {
             // first_end, second_end, first_axis, second_axis, rotation,
             // axis_end_point, a, b, c (and u, v, w).
-            let v = numbers()?;
-            count(&v, &[9, 12])?;
+            numbers(&mut v)?;
+            let v = &v;
+            count(v, &[9, 12])?;
             let v = v.kept();
             if v.len() == 12 && v[9..].iter().any(|d| !d.is_zero()) {
                 return Err(fail(CanonErrorKind::UvwMoves { call: name.to_string() }));
@@ -735,7 +741,8 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
         "START_SPEED_FEED_SYNC" | "START_SPEED_FEED_SYNCH" => {
             // Two arguments (pitch, velocity mode), or three with the
             // spindle first (later LinuxCNC versions).
-            let v = numbers()?;
+            numbers(&mut v)?;
+            let v = &v;
             let v = v.kept();
             let pitch = match v.len() {
                 2 => v[0],
@@ -764,8 +771,9 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
             }
         },
         "SET_XY_ROTATION" => {
-            let v = numbers()?;
-            count(&v, &[1])?;
+            numbers(&mut v)?;
+            let v = &v;
+            count(v, &[1])?;
             CanonCall::Rotation(v.kept()[0])
         }
         "SELECT_PLANE" => CanonCall::Plane { xz: scan::trim(args) == "CANON_PLANE_XZ" },

@@ -547,17 +547,20 @@ impl CanonTrace<'_> {
     /// reading as any space is).
     fn next_call(&mut self) -> Result<Option<Option<CanonCall>>, TraceError> {
         let line = self.line;
-        let in_place = self.source.fill_buf().ok().and_then(|b| Some(memchr::memchr(b'\n', b)? + 1));
-        if let Some(len) = in_place {
-            let bytes = self.source.fill_buf().map_err(|error| TraceError::CannotRead { line, error })?;
-            let bytes = bytes.get(..len - 1).unwrap_or_default();
-            let call = match std::str::from_utf8(bytes) {
-                // A byte-order mark may start the first line.
-                Ok(t) => call_of(if line == 1 { t.strip_prefix('\u{feff}').unwrap_or(t) } else { t }, line),
-                Err(e) => Err(not_utf8(line, e.valid_up_to())),
-            };
-            self.source.consume(len);
-            return call.map(Some);
+        // One look at the buffer: a failed look is read again below,
+        // where its error is reported.
+        if let Ok(buffer) = self.source.fill_buf() {
+            if let Some(end) = memchr::memchr(b'\n', buffer) {
+                let call = match std::str::from_utf8(&buffer[..end]) {
+                    // A byte-order mark may start the first line.
+                    Ok(t) => {
+                        call_of(if line == 1 { t.strip_prefix('\u{feff}').unwrap_or(t) } else { t }, line)
+                    }
+                    Err(e) => Err(not_utf8(line, e.valid_up_to())),
+                };
+                self.source.consume(end + 1);
+                return call.map(Some);
+            }
         }
         // The line is read from a buffer taken for the time of its
         // reading (given back below), so that the call can borrow it.
