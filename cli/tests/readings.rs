@@ -37,6 +37,7 @@ fn readings_lists_one_line_per_reading() {
             "R-G78LEFT",
             "R-G78CENTRE",
             "R-LEADIN",
+            "R-INFEED",
             "R-LCNC-READER",
             "R-G92Q",
             "R-G75ALLOW",
@@ -49,11 +50,22 @@ fn readings_lists_one_line_per_reading() {
     let ids: Vec<&str> = gsk988.lines().map(|l| l.split('\t').next().unwrap_or("")).collect();
     assert_eq!(
         ids,
-        ["R-XRUNOUT", "R-END", "R-LONG988", "R-HIGHSPEED", "R-G78LEFT", "R-G78CENTRE", "R-LEADIN", "R-G92Q"],
+        [
+            "R-XRUNOUT",
+            "R-END",
+            "R-LONG988",
+            "R-HIGHSPEED",
+            "R-G78LEFT",
+            "R-G78CENTRE",
+            "R-LEADIN",
+            "R-INFEED",
+            "R-G92Q"
+        ],
         "{gsk988}"
     );
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-INFEED\tright-first* | left-first\t[gsk980,gsk988]\t"), "{gsk988}");
 }
 
 #[test]

@@ -79,6 +79,14 @@ pub struct CycleReadings {
     /// move along X only; E out along X from Bn and whole leads back along
     /// Z when `false` (`whole-leads`).
     pub lead_in_same_z: bool,
+    /// Reading R-INFEED (with R-G78ALT): the modes that cut both flanks in
+    /// turn (G76 D2 and G78 r = 4 左右轮流, the 980TDi's G78 r = 3 交错)
+    /// start each level on the right flank when `false` (`right-first`),
+    /// on the left when `true` (`left-first`, the sides in the order
+    /// "左右" names them). The single last level of D2 / r = 4 takes the
+    /// flank its level starts on, so that `left-first` is the mirror image
+    /// of `right-first` about the left flanks' mirror line.
+    pub left_first: bool,
 }
 
 impl CycleReadings {
@@ -89,7 +97,8 @@ impl CycleReadings {
     /// resolves each profile's own, `parallel`, and `table` on gsk988),
     /// left flanks mirrored about the form's centre line, G78's centre line
     /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
-    /// every profile).
+    /// every profile), each level of the alternating modes right flank first
+    /// (R-INFEED `right-first`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -98,6 +107,7 @@ impl CycleReadings {
         left_mirror_b: false,
         centre_under_b: false,
         lead_in_same_z: true,
+        left_first: false,
     };
 }
 

@@ -326,11 +326,12 @@ proptest! {
     /// The engine equals the reference under every value of the readings
     /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
     /// three pass ends, R-LONG988's table, R-G78LEFT, R-G78CENTRE,
-    /// R-LEADIN), in every combination.
+    /// R-LEADIN, R-INFEED's order), in every combination.
     #[test]
     fn engine_equals_spec_under_every_reading(
         c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
         left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
+        left_first in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -342,6 +343,7 @@ proptest! {
                 left_mirror_b: left_b,
                 centre_under_b: centre_b,
                 lead_in_same_z: same_z,
+                left_first,
             },
             ..c
         };
@@ -349,13 +351,15 @@ proptest! {
     }
 
     /// R-G78LEFT `mirror-b` and R-G78CENTRE `under-b` on the modes with
-    /// left and centre passes, with a lead-in under either R-LEADIN value,
+    /// left and centre passes, with a lead-in under either R-LEADIN value
+    /// and either R-INFEED order,
     /// A near the end of the Z range so that a left pass's start (beyond
     /// the Z of A) or its lead-in start may leave it: both engines refuse
     /// the same coordinate, or make the same moves.
     #[test]
     fn engine_equals_spec_left_and_centre_near_the_range(
         c in cycle(), mode in 0_u8..4, same_z in any::<bool>(), margin in 0_i64..2000,
+        left_first in any::<bool>(),
     ) {
         let infeed = match mode {
             0 => Infeed::LeftFlank,
@@ -375,6 +379,7 @@ proptest! {
                 left_mirror_b: true,
                 centre_under_b: true,
                 lead_in_same_z: same_z,
+                left_first,
                 ..cycleref::CycleReadings::DEFAULT
             },
             ..c

@@ -298,13 +298,16 @@ pub fn flank_shift(depth: Decimal, tool_angle: u32, u: Units) -> Decimal {
 /// * D2 (左右等量轮流切入): every level but the last twice, first on the right
 ///   flank, then on the left flank mirrored about the centre line
 ///   (`2 zc - round(Dn tan(a/2))`); the last level once (the two flanks meet
-///   at `zc`), as the 988TA figure draws Bn1, Bn2 … and a single Bf.
+///   at `zc`), as the 988TA figure draws Bn1, Bn2 … and a single Bf. Under
+///   reading R-INFEED `left-first` each level left then right, and the
+///   last level once on the left (the flank its level starts on).
 /// * G78 r = 0 (中线切入): every rough pass on the centre line, `zc`
 ///   (reading R-G78CENTRE `form-centre`), or under B, 0 (`under-b`).
 /// * G78 r = 1 (左边切入): every rough pass on the left flank, `2 zc -
 ///   round(Dn tan(a/2))`.
 /// * G78 r = 3 on the 980TDi (交错切入, reading R-G78ALT): one pass a level,
-///   odd levels on the right flank, even levels on the left.
+///   odd levels on the right flank, even levels on the left (swapped
+///   under R-INFEED `left-first`).
 /// * Every left flank (r = 1, D2, 交错) is the right flank mirrored about
 ///   the line `mirror`: `2 mirror - round(Dn tan(a/2))`, `mirror` = zc
 ///   (reading R-G78LEFT `mirror-form-centre`) or 0, B (`mirror-b`).
@@ -330,6 +333,11 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
     // Reading R-G78LEFT: the line the right flank is mirrored about.
     let mirror = if c.readings.left_mirror_b { Decimal::ZERO } else { zc };
     let left = |right: Decimal| mirror + mirror - right;
+    // Reading R-INFEED (with R-G78ALT): the flank a level of D2, r = 4 and
+    // 交错 starts on, and the other one.
+    let (first, second) =
+        if c.readings.left_first { (Flank::Left, Flank::Right) } else { (Flank::Right, Flank::Left) };
+    let shift_on = |flank: Flank, right: Decimal| if flank == Flank::Left { left(right) } else { right };
     let mut out = Vec::new();
     let mut number = 0_u32;
     let mut previous = Decimal::ZERO;
@@ -366,10 +374,10 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
             }
             Infeed::LeftRight => {
                 number += 1;
-                push(PassKind::Rough, depth, cut, Flank::Right, right, number);
+                push(PassKind::Rough, depth, cut, first, shift_on(first, right), number);
                 if level < f {
                     number += 1;
-                    push(PassKind::Rough, depth, cut, Flank::Left, left(right), number);
+                    push(PassKind::Rough, depth, cut, second, shift_on(second, right), number);
                 }
             }
             Infeed::Centre => {
@@ -382,11 +390,8 @@ pub fn planned_passes(c: &G76Cycle) -> Result<Vec<PlannedPass>, CycleError> {
             }
             Infeed::Alternating => {
                 number += 1;
-                if level % 2 == 1 {
-                    push(PassKind::Rough, depth, cut, Flank::Right, right, number);
-                } else {
-                    push(PassKind::Rough, depth, cut, Flank::Left, left(right), number);
-                }
+                let flank = if level % 2 == 1 { first } else { second };
+                push(PassKind::Rough, depth, cut, flank, shift_on(flank, right), number);
             }
         }
         previous = depth;

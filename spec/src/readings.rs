@@ -94,6 +94,26 @@ pub enum G78Left {
     MirrorB,
 }
 
+/// Reading R-INFEED (with R-G78ALT): which flank a level of the modes that
+/// cut both flanks in turn starts on (G76 D2 and the 988TA's G78 r = 4
+/// 左右轮流切入, the 980TDi's G78 r = 3 交错切入).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum InfeedOrder {
+    /// `right-first` (default): D2 and r = 4 cut each level on the right
+    /// flank then on the left, the last level once on the right; 交错 cuts
+    /// odd levels on the right, even on the left. D2 starts on the flank D0
+    /// cuts ("0：刀刃沿螺纹牙型右边切入（原 G76 切入方式）"); the figures that
+    /// would say which of Bx1/Bx2 is left are lost.
+    #[default]
+    RightFirst,
+    /// `left-first`: the sides in the order the names list them ("左右轮流",
+    /// "左右两边轮流", read as "右中轮流" is read, right first): each level
+    /// left then right, the last level of D2 / r = 4 once on the left; 交错
+    /// odd levels on the left, even on the right. The mirror image of
+    /// `right-first` about the left flanks' mirror line (R-G78LEFT).
+    LeftFirst,
+}
+
 /// Reading R-G78CENTRE: where G78 r = 0's passes lie ("刀刃沿螺纹牙型中线切入").
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum G78Centre {
@@ -220,6 +240,8 @@ pub struct Readings {
     pub g78_centre: G78Centre,
     /// R-LEADIN.
     pub lead_in: LeadIn,
+    /// R-INFEED (and R-G78ALT): the order of the flanks.
+    pub infeed_order: InfeedOrder,
     /// R-HIGHSPEED.
     pub high_speed: HighSpeed,
     /// R-LCNC-READER.
@@ -448,6 +470,21 @@ pub const TABLE: &[ReadingEntry] = &[
         profiles: GSK_G78,
     },
     ReadingEntry {
+        id: "R-INFEED",
+        point: "which flank a level starts on in G76 D2, G78 r=4 (左右轮流) and the 980TDi's G78 r=3 (交错)",
+        values: &[
+            ReadingValue {
+                name: "right-first",
+                source: "D2 starts on D0's flank (\"右边切入（原 G76 切入方式）\"); the figures naming Bx1/Bx2 are lost",
+            },
+            ReadingValue {
+                name: "left-first",
+                source: "the sides in the names' order, \"左右轮流\", \"左右两边轮流\" (as \"右中轮流\" is read right first)",
+            },
+        ],
+        profiles: GSK_G78,
+    },
+    ReadingEntry {
         id: "R-LCNC-READER",
         point: "`;` in a linuxcnc program",
         values: &[
@@ -527,6 +564,10 @@ impl Readings {
             },
             "R-END" => pass_end_name(self.pass_end?),
             "R-LONG988" => long988_name(self.long988?),
+            "R-INFEED" => match self.infeed_order {
+                InfeedOrder::RightFirst => "right-first",
+                InfeedOrder::LeftFirst => "left-first",
+            },
             "R-G78LEFT" => match self.g78_left {
                 G78Left::MirrorFormCentre => "mirror-form-centre",
                 G78Left::MirrorB => "mirror-b",
@@ -595,6 +636,8 @@ impl Readings {
             ("R-END", "translated") => self.pass_end = Some(PassEnd::Translated),
             ("R-LONG988", "displacement") => self.long988 = Some(Long988::Displacement),
             ("R-LONG988", "table") => self.long988 = Some(Long988::Table),
+            ("R-INFEED", "right-first") => self.infeed_order = InfeedOrder::RightFirst,
+            ("R-INFEED", "left-first") => self.infeed_order = InfeedOrder::LeftFirst,
             ("R-G78LEFT", "mirror-form-centre") => self.g78_left = G78Left::MirrorFormCentre,
             ("R-G78LEFT", "mirror-b") => self.g78_left = G78Left::MirrorB,
             ("R-G78CENTRE", "form-centre") => self.g78_centre = G78Centre::FormCentre,
@@ -681,6 +724,7 @@ impl Readings {
             left_mirror_b: self.g78_left == G78Left::MirrorB,
             centre_under_b: self.g78_centre == G78Centre::UnderB,
             lead_in_same_z: self.lead_in == LeadIn::SameZ,
+            left_first: self.infeed_order == InfeedOrder::LeftFirst,
         }
     }
 }

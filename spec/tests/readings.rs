@@ -281,6 +281,54 @@ fn g78_alternate_flanks_mirrored_about_b() {
     assert_eq!(starts(&g76), points(z([289, -289, 408, -408, 462, 462])));
 }
 
+/// R-INFEED `left-first` on G78 r = 4 and G76 D2 (左右等量轮流, "左右" read in
+/// the order it names the sides): each level left then right, the last
+/// level once on the left (the flank its level starts on), the finishing
+/// pass at the last rough pass's Z. Right shifts 289, 408, 462 as above;
+/// left ones 2·462 - right = 635, 516, 462 (`mirror-form-centre`): the
+/// passes 635, 289, 516, 408, 462, finishing 462. Under `mirror-b` the
+/// left ones are -289, -408, -462: passes -289, 289, -408, 408, -462 and
+/// the finishing pass at -462, the mirror image about B of the
+/// `right-first` passes under `mirror-b` (289, -289, 408, -408, 462, 462)
+/// but for the finishing pass, which follows the last rough pass.
+#[test]
+fn alternate_flanks_left_first() {
+    let src = small_g78(4);
+    let z = |shifts: [i64; 6]| shifts.map(|s| 5_000 - s);
+    let x = [31_000, 31_000, 30_586, 30_586, 30_400, 30_000];
+    let points = |zs: [i64; 6]| x.iter().zip(zs).map(|(&x, z)| Point::new(x, z)).collect::<Vec<_>>();
+    let left_first = run(&src, &machine(ProfileName::Gsk988, &["R-INFEED=left-first"])).unwrap();
+    assert_eq!(starts(&left_first), points(z([635, 289, 516, 408, 462, 462])));
+    let both = machine(ProfileName::Gsk988, &["R-INFEED=left-first", "R-G78LEFT=mirror-b"]);
+    let b = run(&src, &both).unwrap();
+    assert_eq!(starts(&b), points(z([-289, 289, -408, 408, -462, -462])));
+    let g76 = "M3 S300\nG00 X40 Z5\nG76 P010060 Q0.1 R0.2 D2\nG76 X30 Z-20 P1 Q0.5 F2\nM30\n";
+    assert_eq!(starts(&run(g76, &both).unwrap()), points(z([-289, 289, -408, 408, -462, -462])));
+}
+
+/// R-INFEED `left-first` on the 980TDi's G78 r = 3 (交错切入, "P(r)=3：左右两边
+/// 轮流切入"): one pass a level, odd levels on the left, even on the right.
+/// The 980TDi's P(m) is the depth mode (01 递减式), its Q Δd: `G78 P010360 Q100
+/// R0.1` / `G78 X60 Z-30 P1000 Q500 F2` from (X80, Z10): k = 1, Δd = 0.5,
+/// Δdmin = 0.1, d = 0.1, a = 60°. Levels round(500·√n): 500, 707, 866, then
+/// 900 = k - d (round(500·√4) = 1000 ≥ 900). Right shifts round(Dn·tan
+/// 30°): 288.675 → 289, 408.186 → 408, 499.985 → 500, 519.615 → 520 = zc;
+/// lefts 2·520 - right: 751, 632, 540, 520.
+/// `right-first`: R289, L632, R500, L520 (Z9.711, Z9.368, Z9.5, Z9.48);
+/// `left-first`: L751, R408, L540, R520 (Z9.249, Z9.592, Z9.46, Z9.48);
+/// the finishing pass at 520. X = X60 + 2·(1 - Dn): X61, X60.586,
+/// X60.268, X60.2, X60.
+#[test]
+fn g78_interleaved_left_first() {
+    let src = "M3 S300\nG00 X80 Z10\nG78 P010360 Q100 R0.1\nG78 X60 Z-30 P1000 Q500 F2\nM30\n";
+    let x = [61_000, 60_586, 60_268, 60_200, 60_000];
+    let pts = |zs: [i64; 5]| x.iter().zip(zs).map(|(&x, s)| Point::new(x, 10_000 - s)).collect::<Vec<_>>();
+    let default = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(starts(&default), pts([289, 632, 500, 520, 520]));
+    let left_first = run(src, &machine(ProfileName::Gsk980, &["R-INFEED=left-first"])).unwrap();
+    assert_eq!(starts(&left_first), pts([751, 408, 540, 520, 520]));
+}
+
 /// R-G78CENTRE on G78 r = 0 (中线切入): `form-centre` (default) cuts every
 /// pass at zc = 462 (Z4.538); `under-b` radially under B, at Z5, the
 /// finishing pass too (the last rough pass's Z). r = 3 (右中轮流) keeps its
@@ -362,7 +410,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");

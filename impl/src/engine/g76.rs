@@ -301,11 +301,13 @@ fn check_coordinate(v: i128, units: Units) -> Result<(), CycleError> {
 /// Where the pass sequence is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Stage {
-    /// Rough passes; `left_pending`: the D2 left pass of the current level
-    /// comes next.
+    /// Rough passes; `second_pending`: the D2 pass of the current level on
+    /// its second flank comes next.
     Rough {
-        /// The D2 left pass of the current level is still to come.
-        left_pending: bool,
+        /// The D2 pass of the current level on its second flank (the left
+        /// one, the right one under reading R-INFEED `left-first`) is
+        /// still to come.
+        second_pending: bool,
     },
     /// Finishing passes.
     Finish,
@@ -332,6 +334,9 @@ pub struct G76Moves {
     /// The line left flanks mirror the right flank about (reading
     /// R-G78LEFT): `zc`, or 0 (B) under `mirror-b`.
     mirror: i64,
+    /// The flank a level of D2, r = 4 and 交错 starts on (reading
+    /// R-INFEED): the right one, the left under `left-first`.
+    first: Flank,
     /// Z shift of the last rough pass planned (0 before the first): where
     /// the finishing passes start ("精车 Z 轴起切点与最后一刀粗车一致").
     finish: i64,
@@ -397,23 +402,34 @@ fn plan_extremes(
     // deepest at level f - 1), r = 1 at every level, the 980TDi's 交错 at
     // the even levels. The finishing passes repeat the last rough shift.
     let left = |right: i64| 2 * mirror - right;
+    // Reading R-INFEED: the flanks of D2's and 交错's levels in their order;
+    // each shift is monotonic in the depth, so its extremes over a run of
+    // levels are at the run's ends.
+    let left_first = c.readings.left_first;
+    let first = |right: i64| if left_first { left(right) } else { right };
+    let second = |right: i64| if left_first { right } else { left(right) };
     let two_levels = d1 < last;
+    let ends = |a: i64, b: i64, c: i64, d: i64| (a.min(b).min(c).min(d), a.max(b).max(c).max(d));
     let (min_shift, max_shift) = match c.infeed {
         Infeed::LeftRight if two_levels => {
-            (right1.min(left(flank_shift(count.penultimate, c.tool_angle))), zc.max(left(right1)))
+            // first at every level, second at levels 1 … f - 1.
+            let pen = flank_shift(count.penultimate, c.tool_angle);
+            ends(first(right1), first(zc), second(right1), second(pen))
         }
-        Infeed::LeftRight | Infeed::RightFlank | Infeed::RightCentre => (right1, zc),
+        Infeed::LeftRight => (first(zc), first(zc)),
+        Infeed::RightFlank | Infeed::RightCentre => (right1, zc),
         Infeed::Centre => (centre, centre),
         Infeed::LeftFlank => (left(zc), left(right1)),
         Infeed::Alternating if two_levels => {
             let mut levels = schedule_of(c);
             let d2 = levels.next_level().and_then(|_| levels.next_level()).unwrap_or(last);
-            // The deepest odd (right) and even (left) levels: f and f - 1.
+            // The deepest odd (first flank) and even (second) levels: f
+            // and f - 1.
             let pen = flank_shift(count.penultimate, c.tool_angle);
             let (odd, even) = if count.passes % 2 == 1 { (zc, pen) } else { (pen, zc) };
-            (right1.min(left(even)), odd.max(left(flank_shift(d2, c.tool_angle))))
+            ends(first(right1), first(odd), second(flank_shift(d2, c.tool_angle)), second(even))
         }
-        Infeed::Alternating => (right1, zc),
+        Infeed::Alternating => (first(zc), first(zc)),
     };
     Some(PlanExtremes { shallowest: d1, min_shift, max_shift })
 }
@@ -612,10 +628,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         infeed: c.infeed,
         centre,
         mirror,
+        first: if c.readings.left_first { Flank::Left } else { Flank::Right },
         finish: 0,
         allowance: c.finishing_allowance,
         finishing_passes: c.finishing_passes,
-        stage: Stage::Rough { left_pending: false },
+        stage: Stage::Rough { second_pending: false },
         previous: 0,
         number: 0,
         // Replaced by next_pass below before any use.
@@ -688,18 +705,18 @@ impl G76Moves {
         loop {
             count.tick();
             match self.stage {
-                Stage::Rough { left_pending: true } => {
-                    self.stage = Stage::Rough { left_pending: false };
+                Stage::Rough { second_pending: true } => {
+                    self.stage = Stage::Rough { second_pending: false };
                     let depth = self.schedule.depth;
                     let right = flank_shift(depth, self.tool_angle);
                     // The rough count is at most pass_limit ≤ u32::MAX.
                     self.number = self.number.saturating_add(1);
-                    let pass = self.rough(depth, Flank::Left);
-                    // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
-                    self.finish = 2 * self.mirror - right;
+                    let flank = self.second();
+                    let pass = self.rough(depth, flank);
+                    self.finish = self.shift_on(flank, right);
                     return Some((pass, self.finish));
                 }
-                Stage::Rough { left_pending: false } => {
+                Stage::Rough { second_pending: false } => {
                     let previous = self.schedule.depth;
                     let Some(depth) = self.schedule.next_level() else {
                         self.stage = Stage::Finish;
@@ -717,13 +734,13 @@ impl G76Moves {
                         // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
                         Infeed::LeftFlank => (Flank::Left, 2 * self.mirror - right),
                         Infeed::Alternating if self.schedule.n % 2 == 0 => {
-                            (Flank::Left, 2 * self.mirror - right)
+                            (self.second(), self.shift_on(self.second(), right))
                         }
-                        Infeed::Alternating => (Flank::Right, right),
+                        Infeed::Alternating => (self.first, self.shift_on(self.first, right)),
                         Infeed::LeftRight => {
                             // Every level but the last (the one at k - d) twice.
-                            self.stage = Stage::Rough { left_pending: depth < self.schedule.last };
-                            (Flank::Right, right)
+                            self.stage = Stage::Rough { second_pending: depth < self.schedule.last };
+                            (self.first, self.shift_on(self.first, right))
                         }
                     };
                     self.finish = shift;
@@ -749,6 +766,27 @@ impl G76Moves {
                 }
                 Stage::Done => return None,
             }
+        }
+    }
+
+    /// The flank a level of D2, r = 4 and 交错 takes second (reading
+    /// R-INFEED).
+    fn second(&self) -> Flank {
+        if self.first == Flank::Left {
+            Flank::Right
+        } else {
+            Flank::Left
+        }
+    }
+
+    /// The Z shift of a pass on `flank` whose right-flank shift is `right`:
+    /// `right`, or `2 mirror - right` on the left flank (R-G78LEFT).
+    fn shift_on(&self, flank: Flank, right: i64) -> i64 {
+        // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
+        if flank == Flank::Left {
+            2 * self.mirror - right
+        } else {
+            right
         }
     }
 
