@@ -42,6 +42,7 @@ pub(crate) use block::letter_bit;
 pub use block::{Block, Words, INLINE_WORDS};
 use lines::{comment_end, decode, trim, Line, FULL_OPEN, FULL_SEMI};
 pub use lines::{last_line_end, oword, split_line, OLabel};
+use number::SLOW;
 pub use number::{Number, Word};
 use scan::{other_word, read_word, MARK_RULE};
 
@@ -243,9 +244,109 @@ impl<'a> Lexer<'a> {
     }
 
     /// Reads one segment of `line` from `start` (up to a block end or the
-    /// line's end): its words and the offset after its block end, or
-    /// `None` for the offset when the line is finished.
+    /// line's end) into `words` (empty on entry): its words and the offset
+    /// after its block end, or `None` for the offset when the line is
+    /// finished.
+    ///
+    /// The usual segment is read by [`segment_fast`](Lexer::segment_fast),
+    /// which gives up on anything else; the segment is then read again from
+    /// its start by the general scanner, which alone makes every error.
+    #[inline(always)]
     fn segment(&self, whole: Line<'a>, start: usize, words: &mut Words<'a>) -> Result<Segment, ProgramError> {
+        debug_assert!(words.is_empty());
+        #[cfg(test)]
+        if tests::GENERAL_ONLY.with(std::cell::Cell::get) {
+            return self.segment_general(whole, start, words);
+        }
+        if let Some(seg) = self.segment_fast(whole.bytes, start, words) {
+            return Ok(seg);
+        }
+        *words = Words::new();
+        self.segment_general(whole, start, words)
+    }
+
+    /// [`segment`](Lexer::segment) of a segment made only of ASCII white
+    /// space, `( )` comments and words whose letter (not N or O) is followed
+    /// at once by a number with at least one digit, ended by `;` or the
+    /// line's end: one loop over its bytes that pushes each word as it
+    /// reads it, the word as [`read_word`] makes it (the same text, digits'
+    /// place, point and sign). `None`, with some of the words pushed, at
+    /// anything else (`%`, `/`, N, O, a space after a letter, a letter
+    /// without digits, a number longer than a byte's offsets, an unclosed
+    /// comment, a byte outside ASCII, any other character): the general
+    /// scanner reads that segment. Held equal to it by the proptest in
+    /// this module's tests (issue 33: the lexer was a third of a reading).
+    #[inline(always)]
+    fn segment_fast(&self, line: &'a [u8], start: usize, words: &mut Words<'a>) -> Option<Segment> {
+        let n = line.len();
+        let mut pos = start;
+        while pos < n {
+            let b = line[pos];
+            let up = b & !0x20;
+            if up.wrapping_sub(b'A') < 26 && up != b'N' && up != b'O' {
+                // `b` is an ASCII letter: only 0x41..=0x5A and 0x61..=0x7A
+                // map into A..=Z under `& !0x20`.
+                let word_start = pos;
+                let mut p = pos + 1;
+                let negative = match line.get(p) {
+                    Some(b'-') => {
+                        p += 1;
+                        true
+                    }
+                    Some(b'+') => {
+                        p += 1;
+                        false
+                    }
+                    _ => false,
+                };
+                let digits_start = p;
+                while p < n && line[p].wrapping_sub(b'0') < 10 {
+                    p += 1;
+                }
+                let int_len = p - digits_start;
+                let mut point = SLOW;
+                let mut has_digits = int_len > 0;
+                if p < n && line[p] == b'.' {
+                    p += 1;
+                    let frac_start = p;
+                    while p < n && line[p].wrapping_sub(b'0') < 10 {
+                        p += 1;
+                    }
+                    has_digits |= p > frac_start;
+                    // `SLOW` itself is no offset (as in `read_word`).
+                    point = u8::try_from(int_len).ok().filter(|&i| i != SLOW)?;
+                } else if int_len >= usize::from(SLOW) {
+                    return None;
+                }
+                if !has_digits {
+                    return None;
+                }
+                // 1 or 2: the letter, perhaps a sign.
+                let at = (digits_start - word_start) as u8;
+                words.push(Word { letter: char::from(up), raw: &line[word_start..p], at, point, negative });
+                pos = p;
+                continue;
+            }
+            match b {
+                b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
+                b';' if self.semicolon_comments => return Some(Segment { end: n, next: None }),
+                b';' => return Some(Segment { end: pos, next: Some(pos + 1) }),
+                b'(' => pos = comment_end(line, pos + 1)?,
+                _ => return None,
+            }
+        }
+        Some(Segment { end: n, next: None })
+    }
+
+    /// [`segment`](Lexer::segment) of any segment, with every rule and
+    /// every error.
+    #[inline(never)]
+    fn segment_general(
+        &self,
+        whole: Line<'a>,
+        start: usize,
+        words: &mut Words<'a>,
+    ) -> Result<Segment, ProgramError> {
         let line = whole.bytes;
         let line_no = self.line;
         let syntax = |msg: String| ProgramError { line: line_no, word: None, kind: ErrorKind::Syntax(msg) };
@@ -409,6 +510,156 @@ impl<'a> Lexer<'a> {
                 self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
             }
             return Some(Ok(()));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The lexer's fast segment reader held equal to the general one.
+
+    use std::cell::Cell;
+
+    use proptest::prelude::*;
+
+    use super::{Block, Lexer, ProgramError};
+
+    thread_local! {
+        /// Set: every segment is read by the general scanner alone.
+        pub(super) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
+    }
+
+    /// A block with every field of its words (a word's `==` compares its
+    /// letter and text only).
+    type Seen = (usize, Vec<u8>, Vec<(char, Vec<u8>, u8, u8, bool)>, Vec<String>);
+
+    fn seen(b: &Block<'_>) -> Seen {
+        let words = b.words.iter().map(|w| (w.letter, w.raw.to_vec(), w.at, w.point, w.negative)).collect();
+        let numbers = b.words.iter().map(|w| format!("{:?}", w.number())).collect();
+        (b.line, b.text.to_vec(), words, numbers)
+    }
+
+    fn read(
+        src: &[u8],
+        semicolon_comments: bool,
+        owords: bool,
+        general: bool,
+    ) -> Vec<Result<Seen, ProgramError>> {
+        GENERAL_ONLY.with(|g| g.set(general));
+        let out = Lexer::new(src)
+            .with_semicolon_comments(semicolon_comments)
+            .with_owords(owords)
+            .map(|r| r.map(|b| seen(&b)))
+            .collect();
+        GENERAL_ONLY.with(|g| g.set(false));
+        out
+    }
+
+    fn assert_same(src: &[u8]) {
+        for semi in [false, true] {
+            for owords in [false, true] {
+                assert_eq!(
+                    read(src, semi, owords, false),
+                    read(src, semi, owords, true),
+                    "{:?} (semicolon comments {semi}, o-words {owords})",
+                    String::from_utf8_lossy(src)
+                );
+            }
+        }
+    }
+
+    /// Pieces a program is made of, the adversarial ones included: every
+    /// letter in both cases, signs, points, spaces and tabs between a
+    /// letter and its number, comments (also unclosed and full-width),
+    /// `%`, `/`, `;` and `；`, line ends, Unicode white space and letters,
+    /// a byte that is not UTF-8, numbers too long for a byte's offsets.
+    fn piece() -> impl Strategy<Value = Vec<u8>> {
+        let fixed: Vec<&'static [u8]> = vec![
+            b" ",
+            b"  ",
+            b"\t",
+            b"\x0b",
+            b"\x0c",
+            b"\r",
+            b"\n",
+            b"\r\n",
+            b";",
+            b"(",
+            b")",
+            b"(note)",
+            b"(G01 X1;)",
+            b"%",
+            b"/",
+            b"-",
+            b"+",
+            b".",
+            b"0",
+            b"1",
+            b"9",
+            b"00",
+            b"12.5",
+            b"-0.001",
+            b"+7",
+            b"..",
+            b"--",
+            "；".as_bytes(),
+            "（注）".as_bytes(),
+            "（".as_bytes(),
+            "）".as_bytes(),
+            "\u{3000}".as_bytes(),
+            "é".as_bytes(),
+            "中".as_bytes(),
+            b"\xff",
+            b"\xef\xbb\xbf",
+            b"#",
+            b"=",
+            b"N10",
+            b"O0100",
+            b"o100 call",
+            b"M98 P1000",
+            b"G76",
+            b"G75.1",
+            b"X",
+            b"x-",
+            b"F.",
+            b"F0.",
+            b"Z-.5",
+            b"u+.25",
+        ];
+        prop_oneof![
+            4 => proptest::sample::select(fixed).prop_map(<[u8]>::to_vec),
+            3 => (proptest::char::range('A', 'Z'), any::<bool>()).prop_map(|(c, lower)| {
+                let c = if lower { c.to_ascii_lowercase() } else { c };
+                vec![c as u8]
+            }),
+            2 => "[A-Za-z][-+]?[0-9]{0,6}(\\.[0-9]{0,6})?".prop_map(String::into_bytes),
+            1 => (0_usize..300, proptest::sample::select(vec![b'0', b'7', b' '])).prop_map(|(n, b)| vec![b; n]),
+            1 => (proptest::char::range('A', 'Z'), 250_usize..260, any::<bool>()).prop_map(|(c, n, point)| {
+                let mut v = vec![c as u8];
+                v.extend(std::iter::repeat_n(b'4', n));
+                if point {
+                    v.extend_from_slice(b".5");
+                }
+                v
+            }),
+            1 => any::<char>().prop_map(|c| c.to_string().into_bytes()),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        #[test]
+        fn fast_segments_are_the_general_ones(pieces in proptest::collection::vec(piece(), 0..24)) {
+            assert_same(&pieces.concat());
+        }
+
+        #[test]
+        fn fast_segments_of_program_lines(lines in proptest::collection::vec(
+            "(N[0-9]{1,4} )?(G0[0-3] )?([XZUWF]-?[0-9]{1,3}(\\.[0-9]{0,4})? ?){0,5}(;|\\(c\\))?",
+            0..12,
+        )) {
+            assert_same(lines.join("\n").as_bytes());
         }
     }
 }

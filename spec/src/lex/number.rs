@@ -319,6 +319,27 @@ impl<'a> Word<'a> {
         }
     }
 
+    /// The sign, the digits before the point and those after it (`None`
+    /// for no point) where the lexer found them, or `None` for a word whose
+    /// offsets it did not keep ([`SLOW`]): the caller then reads
+    /// [`Word::number`].
+    #[inline]
+    pub(crate) fn parts(&self) -> Option<(bool, &'a [u8], Option<&'a [u8]>)> {
+        if self.at == SLOW {
+            return None;
+        }
+        let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();
+        if self.point == SLOW {
+            return Some((self.negative, digits, None));
+        }
+        let p = usize::from(self.point);
+        Some((
+            self.negative,
+            digits.get(..p).unwrap_or_default(),
+            Some(digits.get(p + 1..).unwrap_or_default()),
+        ))
+    }
+
     /// [`Number::scaled`] of [`Word::number`], without making the number
     /// on the usual path (where the lexer found the digits and the point).
     #[inline]

@@ -389,7 +389,10 @@ impl<'m> LineReader<'m> {
                     return Err(self.fail(e));
                 }
             }
-            if self.state.follows_calls() {
+            // A block of FANUC or GSK without an M word neither calls nor
+            // returns (`Calls::flow` would say `None`): most blocks, read
+            // without the call.
+            if self.state.follows_calls() && (lcnc || block.words.has('M')) {
                 let mut flow = self.calls.flow(&block, self.state.machine, self.at);
                 if matches!(flow, Some(Ok(Flow::NeedsIndex))) {
                     let Some(subs) = subprograms else {

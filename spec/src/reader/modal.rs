@@ -245,7 +245,11 @@ impl State<'_> {
             };
         }
         if let Some(f) = block.get('F')? {
-            if f.number().is_positive() {
+            // The usual lead in one reading of its digits (a lead within
+            // its range table is positive); any other as before.
+            if let Some(lead) = self.lead_short(f) {
+                self.lead = Some(lead);
+            } else if f.number().is_positive() {
                 self.lead =
                     Some(self.lead(block, f).unwrap_or(Lead { word: LeadWord::F, mantissa: 0, scale: 0 }));
             }

@@ -63,14 +63,65 @@ pub(super) fn letter_mask(letters: &str) -> u32 {
 
 /// A length word in increments. `bare_increments` says what a value
 /// without a decimal point means.
-#[inline]
+#[inline(always)]
 pub(super) fn to_increments(
     units: Units,
     block: &Block<'_>,
     w: &Word<'_>,
     bare_increments: bool,
 ) -> Result<i64, ProgramError> {
-    // The usual word (inlined): a value in increments within range.
+    match increments_short(units, w, bare_increments) {
+        Some(v) => Ok(v),
+        None => increments_usual(units, block, w, bare_increments),
+    }
+}
+
+/// [`to_increments`] of the usual word, inlined where a block's axes are
+/// read: a word the lexer kept the offsets of, whose value is read in
+/// increments (a decimal point, or a profile whose bare values are
+/// lengths), with no more decimals than the increment, at most 18
+/// digits once scaled, within range. `None` for any other (which
+/// [`increments_usual`] reads); where this gives a value, that gives the
+/// same ([`crate::lex::Number::scaled`]'s digits times 10^(decimals − their
+/// decimals); issue 33: a call and a `Result` through memory per axis
+/// word were a tenth of a reading).
+#[inline(always)]
+fn increments_short(units: Units, w: &Word<'_>, bare_increments: bool) -> Option<i64> {
+    let (negative, int, frac) = w.parts()?;
+    if bare_increments && frac.is_none() {
+        return None;
+    }
+    let frac = frac.unwrap_or_default();
+    let d = units.decimals() as usize;
+    if int.len() + d > 18 || frac.len() > d {
+        return None;
+    }
+    // At most 18 digits once scaled: no overflow.
+    let mut v = 0_i64;
+    for &b in int {
+        v = v * 10 + i64::from(b - b'0');
+    }
+    for &b in frac {
+        v = v * 10 + i64::from(b - b'0');
+    }
+    for _ in frac.len()..d {
+        v *= 10;
+    }
+    if v > MAX_LENGTH {
+        return None;
+    }
+    Some(if negative { -v } else { v })
+}
+
+/// [`to_increments`] of a word [`increments_short`] does not read.
+#[inline(never)]
+fn increments_usual(
+    units: Units,
+    block: &Block<'_>,
+    w: &Word<'_>,
+    bare_increments: bool,
+) -> Result<i64, ProgramError> {
+    // A value in increments within range.
     if !bare_increments || w.has_point() {
         if let Some(Some(v)) = w.scaled(units.decimals()) {
             if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() {
@@ -201,7 +252,59 @@ impl State<'_> {
         }
     }
 
+    /// The lead of an F or I word `w` (its range table, at most
+    /// [`MAX_LEAD_SCALE`] decimals).
     pub(super) fn lead(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
+        match self.lead_short(w) {
+            Some(lead) => Ok(lead),
+            None => self.lead_general(block, w),
+        }
+    }
+
+    /// The range table of a lead word in the units in force: its bounds in
+    /// units of 10^-[`MAX_LEAD_SCALE`] (6 decimals), and its text.
+    fn lead_range(&self, word: LeadWord) -> (i128, i128, &'static str) {
+        // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
+        // I 0.0001..254 (metric) / 0.0001..100 (inch).
+        match (word, self.units.unit) {
+            // K is LinuxCNC's and never read here (`word` is F or I).
+            (LeadWord::F | LeadWord::K, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
+            (LeadWord::F | LeadWord::K, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
+            (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
+            (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
+        }
+    }
+
+    /// [`State::lead`] of the usual lead, in one reading of its digits: a
+    /// word the lexer kept the offsets of, not negative, at most 12 digits
+    /// before the point and [`MAX_LEAD_SCALE`] after it (trailing zeros
+    /// dropped), within its range table. `None` for any other, which
+    /// [`State::lead_general`] reads (and whose errors it makes); where
+    /// this gives a lead, that gives the same (the value and mantissa of
+    /// the same digits; issue 33: an F word's digits were read three
+    /// times).
+    #[inline]
+    pub(super) fn lead_short(&self, w: &Word<'_>) -> Option<Lead> {
+        let (negative, int, frac) = w.parts()?;
+        let mut frac = frac.unwrap_or_default();
+        while let [rest @ .., b'0'] = frac {
+            frac = rest;
+        }
+        if negative || frac.len() > MAX_LEAD_SCALE as usize || int.len() > 12 {
+            return None;
+        }
+        // At most 18 digits: no overflow, in the mantissa or the value.
+        let mantissa = int.iter().chain(frac).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
+        let scale = frac.len() as u32;
+        let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
+        let value = i128::from(mantissa) * 10_i128.pow(MAX_LEAD_SCALE - scale);
+        let (lo, hi, _) = self.lead_range(word);
+        (lo..=hi).contains(&value).then_some(Lead { word, mantissa, scale })
+    }
+
+    /// [`State::lead`] of any word, with every error.
+    #[inline(never)]
+    fn lead_general(&self, block: &Block<'_>, w: &Word<'_>) -> Result<Lead, ProgramError> {
         let n = &w.number();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
         let mut frac = n.frac_bytes().unwrap_or_default();
@@ -210,16 +313,7 @@ impl State<'_> {
         }
         let scale = u32::try_from(frac.len()).unwrap_or(u32::MAX);
         let out = |range: &str| err(block, Some(w), ErrorKind::OutOfRange { range: range.into() });
-        // Range tables of seed 000: F 0.0001..9999 mm / 0.00001..9.99 inch;
-        // I 0.0001..254 (metric) / 0.0001..100 (inch).
-        // The bounds in units of 10^-MAX_LEAD_SCALE (6 decimals).
-        let (lo, hi, range) = match (word, self.units.unit) {
-            // K is LinuxCNC's and never read here (`word` is F or I).
-            (LeadWord::F | LeadWord::K, InputUnit::Metric) => (100, 9_999_000_000, "F 0.0001..9999 mm"),
-            (LeadWord::F | LeadWord::K, InputUnit::Inch) => (10, 9_990_000, "F 0.00001..9.99 inch"),
-            (LeadWord::I, InputUnit::Metric) => (100, 254_000_000, "I 0.0001..254 threads per inch"),
-            (LeadWord::I, InputUnit::Inch) => (100, 100_000_000, "I 0.0001..100 threads per inch"),
-        };
+        let (lo, hi, range) = self.lead_range(word);
         // Finer than 10^-6: said so (it is no range of a table that is
         // wrong but the decimals; issue 30 found 6).
         if scale > MAX_LEAD_SCALE {
