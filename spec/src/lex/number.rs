@@ -323,7 +323,7 @@ impl<'a> Word<'a> {
     /// for no point) where the lexer found them, or `None` for a word whose
     /// offsets it did not keep ([`SLOW`]): the caller then reads
     /// [`Word::number`].
-    #[inline]
+    #[inline(always)]
     pub(crate) fn parts(&self) -> Option<(bool, &'a [u8], Option<&'a [u8]>)> {
         if self.at == SLOW {
             return None;
@@ -361,7 +361,7 @@ impl<'a> Word<'a> {
 
     /// [`Number::integer`] of [`Word::number`], without making the number
     /// for a word of at most 18 digits without a point (a G or M code).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn integer(&self) -> Option<i64> {
         if self.at != SLOW && self.point == SLOW {
             let digits = self.raw.get(usize::from(self.at)..).unwrap_or_default();

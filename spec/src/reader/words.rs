@@ -410,3 +410,74 @@ pub(super) fn depth_mode(v: u32) -> DepthMode {
         DepthMode::Decreasing
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The inlined readings of the usual lead and length word held equal
+    //! to the general ones wherever they give a value.
+
+    use cycleref::{IncrementSystem, InputUnit, Units};
+    use proptest::prelude::*;
+
+    use super::{increments_short, increments_usual};
+    use crate::lex::Lexer;
+    use crate::reader::LineReader;
+    use crate::{Machine, ProfileName};
+
+    /// Words as a program may write them: every sign, leading and trailing
+    /// zeros, no digits before or after the point, long numbers, spaces
+    /// between the letter and the number (which the lexer keeps no
+    /// offsets for past a byte).
+    fn word() -> impl Strategy<Value = String> {
+        prop_oneof![
+            "[FIXZUW] {0,2}[-+]?[0-9]{0,8}(\\.[0-9]{0,9})?",
+            "[FIXZ][-+]?0{0,20}[0-9]{0,22}(\\.[0-9]{0,12}0{0,20})?",
+            "[FX] {250,260}[0-9]{1,3}\\.[0-9]",
+            "[FX]0{255,258}\\.5",
+        ]
+    }
+
+    fn units() -> impl Strategy<Value = Units> {
+        (any::<bool>(), any::<bool>()).prop_map(|(c, inch)| Units {
+            system: if c { IncrementSystem::IsC } else { IncrementSystem::IsB },
+            unit: if inch { InputUnit::Inch } else { InputUnit::Metric },
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(5000))]
+
+        #[test]
+        fn short_readings_are_the_general_ones(text in word(), units in units(), bare in any::<bool>()) {
+            let Some(Ok(block)) = Lexer::new(text.as_bytes()).next() else { return Ok(()) };
+            let machine = Machine::new(ProfileName::Gsk988);
+            let mut state = LineReader::new(&machine).state;
+            state.units = units;
+            for w in block.words.iter() {
+                if let Some(lead) = state.lead_short(w) {
+                    prop_assert_eq!(Ok(lead), state.lead_general(&block, w), "{}", text);
+                }
+                if let Some(v) = increments_short(units, w, bare) {
+                    prop_assert_eq!(Ok(v), increments_usual(units, &block, w, bare), "{}", text);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn short_readings_read_the_usual_words() {
+        let machine = Machine::new(ProfileName::Gsk988);
+        let state = LineReader::new(&machine).state;
+        let block = Lexer::new(b"X-60.64 Z.5 F6 F0.150")
+            .next()
+            .and_then(Result::ok)
+            .unwrap_or_else(|| unreachable!());
+        let w = |i: usize| &block.words[i];
+        // IS-B metric: 0.001 mm.
+        assert_eq!(increments_short(Units::IS_B_METRIC, w(0), false), Some(-60_640));
+        assert_eq!(increments_short(Units::IS_B_METRIC, w(1), true), Some(500));
+        // F6: 6 mm, mantissa 6, no decimals; F0.150: 0.15 mm.
+        assert_eq!(state.lead_short(w(2)).map(|l| (l.mantissa, l.scale)), Some((6, 0)));
+        assert_eq!(state.lead_short(w(3)).map(|l| (l.mantissa, l.scale)), Some((15, 2)));
+    }
+}
