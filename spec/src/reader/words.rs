@@ -285,6 +285,8 @@ impl State<'_> {
     /// times).
     #[inline]
     pub(super) fn lead_short(&self, w: &Word<'_>) -> Option<Lead> {
+        /// 10^(MAX_LEAD_SCALE - scale), by scale.
+        const TO_MICRO: [u64; MAX_LEAD_SCALE as usize + 1] = [1_000_000, 100_000, 10_000, 1_000, 100, 10, 1];
         let (negative, int, frac) = w.parts()?;
         let mut frac = frac.unwrap_or_default();
         while let [rest @ .., b'0'] = frac {
@@ -294,12 +296,18 @@ impl State<'_> {
             return None;
         }
         // At most 18 digits: no overflow, in the mantissa or the value.
-        let mantissa = int.iter().chain(frac).fold(0_u64, |m, b| m * 10 + u64::from(b - b'0'));
-        let scale = frac.len() as u32;
+        let mut mantissa = 0_u64;
+        for &b in int {
+            mantissa = mantissa * 10 + u64::from(b - b'0');
+        }
+        for &b in frac {
+            mantissa = mantissa * 10 + u64::from(b - b'0');
+        }
+        let scale = frac.len();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
-        let value = i128::from(mantissa) * 10_i128.pow(MAX_LEAD_SCALE - scale);
+        let value = i128::from(mantissa * TO_MICRO[scale]);
         let (lo, hi, _) = self.lead_range(word);
-        (lo..=hi).contains(&value).then_some(Lead { word, mantissa, scale })
+        (lo..=hi).contains(&value).then_some(Lead { word, mantissa, scale: scale as u32 })
     }
 
     /// [`State::lead`] of any word, with every error.
