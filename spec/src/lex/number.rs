@@ -285,6 +285,10 @@ fn scaled_short(int: &[u8], frac: &[u8], negative: bool, d: usize) -> Option<Opt
     Some(Some(if negative { -v } else { v }))
 }
 
+/// A word's number as [`Word::parts`] gives it: the sign, the digits before
+/// the point, and those after it (`None` for no point).
+pub(crate) type Parts<'a> = (bool, &'a [u8], Option<&'a [u8]>);
+
 /// "Not known": see [`Word`].
 pub(super) const SLOW: u8 = u8::MAX;
 
@@ -324,7 +328,7 @@ impl<'a> Word<'a> {
     /// offsets it did not keep ([`SLOW`]): the caller then reads
     /// [`Word::number`].
     #[inline(always)]
-    pub(crate) fn parts(&self) -> Option<(bool, &'a [u8], Option<&'a [u8]>)> {
+    pub(crate) fn parts(&self) -> Option<Parts<'a>> {
         if self.at == SLOW {
             return None;
         }
