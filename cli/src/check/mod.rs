@@ -52,6 +52,7 @@
 mod align;
 mod compare;
 mod error;
+mod fast_nc;
 mod ours;
 mod report;
 #[cfg(test)]

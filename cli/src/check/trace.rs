@@ -16,6 +16,7 @@ use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
 use super::error::TraceError;
+use super::fast_nc::FastNc;
 use super::ours::Follow;
 use super::{Context, Kind, Step, TraceFormat};
 
@@ -52,7 +53,7 @@ fn trace_line<'b>(
 /// The vendor's toolpath from an expanded program, read in pieces of whole
 /// lines (as the program is, `job::next_piece`), each checked to be UTF-8
 /// at once and lexed a line at a time.
-struct NcTrace<'t, 'm> {
+pub(super) struct NcTrace<'t, 'm> {
     source: Box<dyn BufRead + 't>,
     /// The current piece (`..piece`) and what was read beyond it.
     buf: Vec<u8>,
@@ -69,12 +70,20 @@ struct NcTrace<'t, 'm> {
     /// reader and one set of rules for programs and traces.
     reader: LineReader<'m>,
     follow: Follow<'m>,
+    /// The plain lines our writer writes, read without the reader
+    /// (reading R-FASTPATH); it declines every other line to the reader.
+    fast: FastNc,
     /// The steps of the current line (a line may hold several blocks).
     ready: VecDeque<Step>,
 }
 
 impl<'t, 'm> NcTrace<'t, 'm> {
-    fn new(source: Box<dyn BufRead + 't>, machine: &'m Machine, units: Units) -> NcTrace<'t, 'm> {
+    pub(super) fn new(
+        source: Box<dyn BufRead + 't>,
+        machine: &'m Machine,
+        units: Units,
+        fast: bool,
+    ) -> NcTrace<'t, 'm> {
         NcTrace {
             source,
             buf: Vec::new(),
@@ -85,6 +94,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             line: 0,
             reader: LineReader::for_trace(machine, units),
             follow: Follow::new(machine, units),
+            fast: FastNc::new(machine, units, fast),
             ready: VecDeque::new(),
         }
     }
@@ -120,22 +130,34 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             if self.line == 1 {
                 text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
             }
+            // A plain line of our writer's: taken without the reader.
+            if let Some(step) = self.fast.take(text, self.line) {
+                self.ready.extend(step);
+                continue;
+            }
+            // The reader first reads what the lines taken so left.
+            if let Err(error) = self.fast.sync(&mut self.reader, self.line) {
+                return Err(TraceError::Program { error, csv_header: false });
+            }
             // A CSV header read as a program: say how to read it as a CSV.
             let csv_header =
                 || text.contains(&b',') && text.to_ascii_lowercase().windows(6).any(|w| w == b"motion");
             // The line is one piece of the reader's, so that its numbers
             // are the trace's.
             // Each item is lent where the reader returned it (not moved).
-            let follow = &mut self.follow;
-            while let Some(step) = self.reader.next_in_with(text, |item| match item {
-                Item::Move(m) => {
-                    follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() })
+            let (follow, fast) = (&mut self.follow, &mut self.fast);
+            while let Some(step) = self.reader.next_in_with(text, |item| {
+                fast.learn(item);
+                match item {
+                    Item::Move(m) => {
+                        follow.plain(m).map_err(|error| TraceError::Step { error, csv_header: csv_header() })
+                    }
+                    Item::G32(call) => Ok(Some(follow.thread(call))),
+                    Item::Source(_) => Ok(None),
+                    // The trace mode refuses every cycle's block; were one
+                    // read, it is refused here rather than passed over.
+                    other => Err(TraceError::CannedCycle { line: other.block().line }),
                 }
-                Item::G32(call) => Ok(Some(follow.thread(call))),
-                Item::Source(_) => Ok(None),
-                // The trace mode refuses every cycle's block; were one
-                // read, it is refused here rather than passed over.
-                other => Err(TraceError::CannedCycle { line: other.block().line }),
             }) {
                 let step =
                     step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
@@ -692,6 +714,6 @@ pub(super) fn trace_steps<'t, 'm: 't>(
     } else if format == TraceFormat::Csv {
         Box::new(CsvTrace::new(source, machine, units)?)
     } else {
-        Box::new(NcTrace::new(source, machine, units))
+        Box::new(NcTrace::new(source, machine, units, true))
     })
 }

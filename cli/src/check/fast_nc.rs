@@ -1,0 +1,624 @@
+//! The fast path of an nc trace (reading R-FASTPATH, "the plain lines of
+//! an nc trace"): the lines our own writer writes, `G00 X… Z…`,
+//! `G01 X… Z… F…`, `G32 X… Z… F…`, `X…`, a comment, read here in one pass
+//! over their bytes instead of by the program reader; every other line, and
+//! every line whose reading would need what this path does not know, is
+//! declined and read by the program reader as before. The reader stays the
+//! reference: a line is taken here only where its steps and the state it
+//! leaves are the reader's, and the two are held equal by a property test
+//! (`tests::fast_path_is_the_reader`, adversarial lines included).
+//!
+//! What is known here is only what the lines taken here, and the reader's
+//! items, show: where the tool is, the motion mode, the lead in force, and
+//! whether a thread run is going on (the modal state a plain line reads and
+//! sets in a trace, `State::scan` and `State::g32_block`). A lead is known
+//! by value only as the reader resolved it: the text of a G32 block's F
+//! word is kept with the lead the reader gave it, and a later F of the same
+//! text is that lead (one home for the lead's rule, `State::lead`).
+//!
+//! The reader does not see the lines taken here, so before it reads a
+//! declined line it is brought to the state those lines left, by reading
+//! lines that set the same values (the last F, then the last move, and for
+//! a thread its run), and renumbered ([`LineReader::start_at`]) so that the
+//! declined line keeps its number: nothing of the reader is changed.
+
+use cycleref::g32::G32RunOut;
+use cycleref::units::MAX_LENGTH;
+use cycleref::{Lead, Point, StartAngle, Units};
+use cycleref_spec::reader::{Item, LineReader, MainStart, MotionMode};
+use cycleref_spec::{Machine, ProgramError};
+
+use super::{Context, Kind, Step};
+
+/// The most F texts whose leads are kept (a trace has a few leads).
+const LEADS: usize = 8;
+
+/// The most bytes of an F word taken here (its letter included).
+const F_BYTES: usize = 16;
+
+/// An F word's text (its letter included), at most [`F_BYTES`].
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct FText {
+    len: u8,
+    bytes: [u8; F_BYTES],
+}
+
+impl FText {
+    fn new(text: &[u8]) -> Option<FText> {
+        let mut bytes = [0; F_BYTES];
+        bytes.get_mut(..text.len())?.copy_from_slice(text);
+        Some(FText { len: u8::try_from(text.len()).ok()?, bytes })
+    }
+
+    fn as_bytes(&self) -> &[u8] {
+        self.bytes.get(..usize::from(self.len)).unwrap_or_default()
+    }
+}
+
+/// The last move taken here, which the reader has not read.
+#[derive(Clone, Copy)]
+struct Unread {
+    motion: MotionMode,
+    from: Point,
+    to: Point,
+}
+
+/// A line taken here.
+#[derive(Debug, PartialEq, Eq)]
+enum Line<'a> {
+    /// Empty, or a comment alone: no block, no change.
+    Nothing,
+    /// A plain line: its G code (G00, G01, G32), X, Z (in increments) and
+    /// F word (its text).
+    Move { g: Option<MotionMode>, x: Option<i64>, z: Option<i64>, f: Option<&'a [u8]> },
+}
+
+/// The fast path's state (see the module's documentation).
+pub(super) struct FastNc {
+    /// False: every line is declined (the reader alone).
+    enabled: bool,
+    /// A length without a decimal point is in increments (reading R-POINT:
+    /// the rule of `length_word`).
+    bare_increments: bool,
+    decimals: u32,
+    per_unit: i64,
+    /// Where the tool is, when known.
+    x: Option<i64>,
+    z: Option<i64>,
+    /// The motion mode in force, when known.
+    motion: Option<MotionMode>,
+    /// The lead in force, when known.
+    lead: Option<Lead>,
+    /// The thread run in force (`Some(None)`: none), when known.
+    thread_run: Option<Option<StartAngle>>,
+    /// F texts and the leads the reader gave them.
+    leads: Vec<(FText, Lead)>,
+    /// What the reader has not read: the last F, the last move.
+    unread_f: Option<FText>,
+    unread_move: Option<Unread>,
+}
+
+impl FastNc {
+    /// The fast path of a trace read for `machine` in `units` (`enabled`
+    /// false: none; the linuxcnc profile has none either).
+    pub(super) fn new(machine: &Machine, units: Units, enabled: bool) -> FastNc {
+        let linuxcnc = machine.profile.dialect == cycleref_spec::profile::Dialect::LinuxCnc;
+        FastNc {
+            enabled: enabled && !linuxcnc,
+            bare_increments: machine.profile.bare_length_is_increments && !machine.calculator_input,
+            decimals: units.decimals(),
+            per_unit: units.per_unit(),
+            x: None,
+            z: None,
+            motion: None,
+            lead: None,
+            thread_run: None,
+            leads: Vec::new(),
+            unread_f: None,
+            unread_move: None,
+        }
+    }
+
+    fn cached(&self, f: &[u8]) -> Option<Lead> {
+        self.leads.iter().find(|(t, _)| t.as_bytes() == f).map(|(_, l)| *l)
+    }
+
+    /// A length word's number (after its letter) in increments, when it is
+    /// `-`? digits (`.` digits)? within the range tables and the
+    /// increment; else `None`.
+    fn length(&self, s: &[u8]) -> Option<i64> {
+        let (negative, s) = match s.split_first() {
+            Some((b'-', rest)) => (true, rest),
+            _ => (false, s),
+        };
+        let (int, frac) = match s.iter().position(|&b| b == b'.') {
+            Some(p) => (s.get(..p)?, Some(s.get(p + 1..)?)),
+            None => (s, None),
+        };
+        if int.is_empty() || int.len() > 9 || !int.iter().all(u8::is_ascii_digit) {
+            return None;
+        }
+        let whole = int.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+        let v = match frac {
+            None if self.bare_increments => whole,
+            None => whole.checked_mul(self.per_unit)?,
+            Some(frac) => {
+                if frac.is_empty()
+                    || frac.len() > self.decimals as usize
+                    || !frac.iter().all(u8::is_ascii_digit)
+                {
+                    return None;
+                }
+                let digits = frac.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
+                let scale = 10_i64.pow(self.decimals - u32::try_from(frac.len()).ok()?);
+                whole.checked_mul(self.per_unit)?.checked_add(digits * scale)?
+            }
+        };
+        if v > MAX_LENGTH {
+            return None;
+        }
+        Some(if negative { -v } else { v })
+    }
+
+    /// The line, when it has one of the shapes taken here.
+    fn parse<'a>(&self, line: &'a [u8]) -> Option<Line<'a>> {
+        // A comment: printable ASCII without parentheses and semicolons,
+        // to the end of the line.
+        let comment = |c: &[u8]| {
+            c.len() >= 2
+                && c.first() == Some(&b'(')
+                && c.last() == Some(&b')')
+                && c.get(1..c.len() - 1)
+                    .is_some_and(|t| t.iter().all(|&b| (b' '..=b'~').contains(&b) && !b"();".contains(&b)))
+        };
+        if line.is_empty() {
+            return Some(Line::Nothing);
+        }
+        if line.first() == Some(&b'(') {
+            return comment(line).then_some(Line::Nothing);
+        }
+        let (mut g, mut x, mut z, mut f) = (None, None, None, None);
+        // Words in the order G X Z F, one space between them, a comment
+        // last.
+        let mut order = 0;
+        let mut rest = line;
+        loop {
+            let (word, next) = match rest.iter().position(|&b| b == b' ') {
+                Some(p) => (rest.get(..p)?, rest.get(p + 1..)),
+                None => (rest, None),
+            };
+            let (&letter, value) = word.split_first()?;
+            let rank = match letter {
+                b'G' => 1,
+                b'X' => 2,
+                b'Z' => 3,
+                b'F' => 4,
+                _ => return None,
+            };
+            if rank <= order {
+                return None;
+            }
+            order = rank;
+            match letter {
+                b'G' => {
+                    g = Some(match value {
+                        b"00" => MotionMode::G00,
+                        b"01" => MotionMode::G01,
+                        b"32" => MotionMode::G32,
+                        _ => return None,
+                    });
+                }
+                b'X' => x = Some(self.length(value)?),
+                b'Z' => z = Some(self.length(value)?),
+                _ => {
+                    // F: digits (. digits)?, not zero.
+                    let (int, frac) = match value.iter().position(|&b| b == b'.') {
+                        Some(p) => (value.get(..p)?, value.get(p + 1..)?),
+                        None => (value, &b"0"[..]),
+                    };
+                    let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
+                    if !digits(int) || !digits(frac) || !value.iter().any(|b| (b'1'..=b'9').contains(b)) {
+                        return None;
+                    }
+                    FText::new(word)?;
+                    f = Some(word);
+                }
+            }
+            match next {
+                None => break,
+                Some(c) if c.first() == Some(&b'(') => {
+                    if !comment(c) {
+                        return None;
+                    }
+                    break;
+                }
+                Some(n) => rest = n,
+            }
+        }
+        if x.is_none() && z.is_none() {
+            return None;
+        }
+        Some(Line::Move { g, x, z, f })
+    }
+
+    /// The steps of `line` (line number `number`) when it is taken here:
+    /// `Some(None)` for a line taken without a step, `None` when declined.
+    pub(super) fn take(&mut self, line: &[u8], number: usize) -> Option<Option<Step>> {
+        if !self.enabled || number == 1 {
+            return None;
+        }
+        let Line::Move { g, x, z, f } = self.parse(line)? else {
+            return Some(None);
+        };
+        let motion = g.or(self.motion)?;
+        let from = Point::new(self.x?, self.z?);
+        let to = Point::new(x.unwrap_or(from.x), z.unwrap_or(from.z));
+        let context = Context::Source { line: number };
+        let f_text = f.and_then(FText::new);
+        let step = match motion {
+            MotionMode::G00 | MotionMode::G01 => {
+                // F sets the lead in force (`State::scan`): its value is
+                // known when the reader gave this text's.
+                if let Some(f) = f {
+                    self.lead = self.cached(f);
+                }
+                self.thread_run = Some(None);
+                let kind = if motion == MotionMode::G00 { Kind::Rapid } else { Kind::Feed };
+                (from != to).then_some(Step {
+                    kind,
+                    from: Some(from),
+                    to,
+                    centre: None,
+                    lead: None,
+                    angle: StartAngle::ZERO,
+                    sync: false,
+                    context,
+                })
+            }
+            MotionMode::G32 => {
+                let sync = match self.thread_run? {
+                    None => true,
+                    Some(a) if a == StartAngle::ZERO => false,
+                    Some(_) => return None,
+                };
+                let lead = match f {
+                    Some(f) => self.cached(f)?,
+                    None => self.lead?,
+                };
+                if from == to {
+                    return None;
+                }
+                self.lead = Some(lead);
+                self.thread_run = Some(Some(StartAngle::ZERO));
+                Some(Step {
+                    kind: Kind::Thread,
+                    from: Some(from),
+                    to,
+                    centre: None,
+                    lead: Some(lead),
+                    angle: StartAngle::ZERO,
+                    sync,
+                    context,
+                })
+            }
+            _ => return None,
+        };
+        if f_text.is_some() {
+            self.unread_f = f_text;
+        }
+        self.motion = Some(motion);
+        (self.x, self.z) = (Some(to.x), Some(to.z));
+        self.unread_move = Some(Unread { motion, from, to });
+        Some(step)
+    }
+
+    /// A length in increments as a word's number (with its decimal point).
+    fn number(&self, v: i64, out: &mut Vec<u8>) {
+        if v < 0 {
+            out.push(b'-');
+        }
+        let (int, frac) = (
+            v.unsigned_abs() / self.per_unit.unsigned_abs(),
+            v.unsigned_abs() % self.per_unit.unsigned_abs(),
+        );
+        out.extend_from_slice(int.to_string().as_bytes());
+        out.push(b'.');
+        let frac = frac.to_string();
+        for _ in frac.len()..self.decimals as usize {
+            out.push(b'0');
+        }
+        out.extend_from_slice(frac.as_bytes());
+    }
+
+    /// Brings `reader` to the state the lines taken here left, and numbers
+    /// its next line `number`: before it reads a declined line.
+    ///
+    /// # Errors
+    ///
+    /// None where this path takes only what the reader reads alike (the
+    /// property test); an error of the lines read is passed on.
+    pub(super) fn sync(&mut self, reader: &mut LineReader<'_>, number: usize) -> Result<(), ProgramError> {
+        let mut lines: Vec<Vec<u8>> = Vec::new();
+        if let Some(f) = self.unread_f.take() {
+            lines.push(f.as_bytes().to_vec());
+        }
+        if let Some(m) = self.unread_move.take() {
+            let mut line = Vec::with_capacity(32);
+            let point = |code: &[u8], p: Point, line: &mut Vec<u8>| {
+                line.extend_from_slice(code);
+                line.extend_from_slice(b" X");
+                self.number(p.x, line);
+                line.extend_from_slice(b" Z");
+                self.number(p.z, line);
+            };
+            match m.motion {
+                // A thread run, as the last thread block began it or went
+                // on with it: a fresh run from where that block started.
+                MotionMode::G32 => {
+                    point(b"G00", m.from, &mut line);
+                    lines.push(std::mem::take(&mut line));
+                    point(b"G32", m.to, &mut line);
+                }
+                MotionMode::G00 => point(b"G00", m.to, &mut line),
+                _ => point(b"G01", m.to, &mut line),
+            }
+            lines.push(line);
+        }
+        for line in &lines {
+            while let Some(r) = reader.next_in_with(line, |_| ()) {
+                r?;
+            }
+        }
+        reader.start_at(MainStart { offset: 0, lines_before: number - 1 });
+        Ok(())
+    }
+
+    /// What the reader's `item` shows of the state (the items of a
+    /// declined line, in order).
+    pub(super) fn learn(&mut self, item: &Item<'_>) {
+        match item {
+            Item::Move(m) => {
+                (self.x, self.z) = m.to;
+                self.motion = Some(m.motion);
+                self.thread_run = Some(None);
+                if m.block.words.has('F') {
+                    self.lead = None;
+                }
+            }
+            Item::G32(c) if c.g32.run_out == G32RunOut::None => {
+                (self.x, self.z) = (Some(c.g32.end.x), Some(c.g32.end.z));
+                self.motion = Some(MotionMode::G32);
+                self.thread_run = Some(Some(c.g32.start_angle));
+                self.lead = Some(c.g32.lead);
+                if let (Ok(Some(f)), false) = (c.block.get('F'), c.block.words.has('I')) {
+                    let text = f.text();
+                    if let Some(t) = FText::new(text.as_bytes()) {
+                        if self.cached(t.as_bytes()).is_none() && self.leads.len() < LEADS {
+                            self.leads.push((t, c.g32.lead));
+                        }
+                    }
+                }
+            }
+            Item::Source(b) if b.words.is_empty() => {}
+            _ => {
+                (self.x, self.z, self.motion, self.lead, self.thread_run) = (None, None, None, None, None);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use cycleref::units::{IncrementSystem, InputUnit};
+    use cycleref::XMode;
+    use cycleref_spec::ProfileName;
+    use proptest::prelude::*;
+
+    use super::super::trace::NcTrace;
+    use super::*;
+
+    /// Every step and the first error of `text` read as a trace, with or
+    /// without the fast path.
+    fn read(text: &str, machine: &Machine, units: Units, fast: bool) -> Vec<String> {
+        let trace = NcTrace::new(Box::new(text.as_bytes()), machine, units, fast);
+        let mut out = Vec::new();
+        for r in trace {
+            match r {
+                Ok(s) => out.push(format!("{s:?}")),
+                Err(e) => {
+                    out.push(format!("{e:?} / {e}"));
+                    break;
+                }
+            }
+        }
+        out
+    }
+
+    fn machine(profile: u8, calculator: bool, radius: bool) -> Machine {
+        let name = match profile % 3 {
+            0 => ProfileName::Gsk980,
+            1 => ProfileName::Gsk988,
+            _ => ProfileName::Fanuc,
+        };
+        let mut m = Machine::new(name);
+        m.calculator_input = calculator;
+        if radius {
+            m.x_mode = XMode::Radius;
+        }
+        m
+    }
+
+    fn units(inch: bool, is_c: bool) -> Units {
+        Units {
+            system: if is_c { IncrementSystem::IsC } else { IncrementSystem::IsB },
+            unit: if inch { InputUnit::Inch } else { InputUnit::Metric },
+        }
+    }
+
+    /// Numbers: the writer's, and adversarial ones.
+    fn number() -> impl Strategy<Value = String> {
+        prop_oneof![
+            4 => prop::sample::select(vec![
+                "10.000", "10.0", "10", "-5.5", "-5.500", "0", "0.0", "-0.000", "20.001", "64.400",
+                "-37.000", "8.961", "10.0001", "10.00001", "10.000000", "999999.999", "1000000.000",
+                "999999999", "1000000000", "99999999999999999999", "9999.9999", "99999.99999",
+                "007.5", ".5", "5.", "+5.0", "-", "1e5", "1.2.3", "--1", "0.1", "1.10",
+            ]).prop_map(str::to_string),
+            2 => ("-?[0-9]{1,3}", "[0-9]{1,4}").prop_map(|(i, f)| format!("{i}.{f}")),
+            1 => "[-+.0-9]{0,12}",
+        ]
+    }
+
+    fn lead() -> impl Strategy<Value = String> {
+        prop::sample::select(vec![
+            "6.0",
+            "6",
+            "2",
+            "2.0",
+            "0.15",
+            "0.2",
+            "0",
+            "0.0",
+            "1.5",
+            "6.00",
+            "06.0",
+            "0.0000001",
+            "99999",
+            "10000",
+            "1.2345678",
+            ".5",
+            "5.",
+            "-2",
+            "12345678901234567",
+        ])
+        .prop_map(str::to_string)
+    }
+
+    fn comment() -> impl Strategy<Value = String> {
+        prop_oneof![
+            3 => prop::sample::select(vec![
+                "(rough 1 start 1 depth 1.800 cut 1.800)", "(part 0)", "()", "(a;b)", "(a(b)c)", "(unclosed",
+                "(ü)", "(日本語)", "(tab\there)", "(%)", "(/)", "(G00 X1 Z1)", "(MSG, hi)", "(a) (b)",
+                "(a)x", ")",
+            ]).prop_map(str::to_string),
+            1 => "\\([ -~]{0,12}\\)",
+            1 => "\\(\\PC{0,6}\\)",
+        ]
+    }
+
+    /// A word of any letter.
+    fn any_word() -> impl Strategy<Value = String> {
+        ("[A-Za-z]", number()).prop_map(|(l, n)| format!("{l}{n}"))
+    }
+
+    /// A line of the writer's shape, or near it.
+    fn plain_line() -> impl Strategy<Value = String> {
+        (
+            prop::sample::select(vec![
+                "", "G00", "G01", "G32", "G0", "G1", "G02", "G33", "g00", "G04", "G50",
+            ]),
+            prop::option::of(number()),
+            prop::option::of(number()),
+            prop::option::of(lead()),
+            prop::option::of(comment()),
+            prop::sample::select(vec![" ", " ", " ", " ", "  ", "\t", ""]),
+        )
+            .prop_map(|(g, x, z, f, c, sep)| {
+                let mut words: Vec<String> = Vec::new();
+                if !g.is_empty() {
+                    words.push(g.to_string());
+                }
+                words.extend(x.map(|x| format!("X{x}")));
+                words.extend(z.map(|z| format!("Z{z}")));
+                words.extend(f.map(|f| format!("F{f}")));
+                words.extend(c);
+                words.join(sep)
+            })
+    }
+
+    fn line() -> impl Strategy<Value = String> {
+        prop_oneof![
+            12 => plain_line(),
+            3 => comment(),
+            1 => Just(String::new()),
+            2 => prop::collection::vec(any_word(), 1..4).prop_map(|w| w.join(" ")),
+            1 => (plain_line(), any_word()).prop_map(|(l, w)| format!("{l} {w}")),
+            1 => (any_word(), plain_line()).prop_map(|(w, l)| format!("{w} {l}")),
+            2 => prop::sample::select(vec![
+                "G50 X100 Z50", "G50 X10.0 Z-5.0", "M03 S500", "O0100", "F2", "F6.0", "G01", "G32",
+                "G32 X1.0 Z2.0 F2 Q5", "G00 U1.0 W2.0", "G04 P1", "G32 X10.0 Z-20.0 I5", "%",
+                "/G00 X1.0 Z1.0", "N10 G00 X1.0 Z1.0", "G00 X1.0 Z1.0;G01 Z2.0", "G02 X1.0 Z1.0 I1.0 K1.0",
+                " G00 X1.0 Z1.0", "G00 X1.0 Z1.0 ", "G00 X1.0 Z1.0 F6.0 (c)", "G76 P020560 Q150 R0.1",
+                "G20", "G21", "G00 X1.0 X2.0", "G00 G01 X1.0", "X1.0 G00", "Z1.0 X1.0", "G32 F6.0 X1.0",
+                "G00 X10.000 Z10.000", "G32 X10.000 Z-20.000 F6.0", "G32 X12.000 Z-23.000 F6.0",
+                "G32 X10.000 Z-20.000", "G32 Z-25.000 F2.0", "X12.000", "Z-2.000", "M30", "M02",
+                "G00 X\u{e9}1.0", "G00 X1.0 Z1.0\r",
+            ]).prop_map(str::to_string),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The fast path gives the reader's steps and errors, line for
+        /// line, on lines of the writer's shapes and on adversarial ones
+        /// (every word letter, odd spacing, comments, Unicode, huge and
+        /// malformed numbers), under every profile of the FANUC-style
+        /// dialects, both units and increment systems, calculator input
+        /// and radius X.
+        #[test]
+        fn fast_path_is_the_reader(
+            lines in prop::collection::vec(line(), 1..40),
+            profile in 0_u8..3,
+            calculator in any::<bool>(),
+            radius in any::<bool>(),
+            inch in any::<bool>(),
+            is_c in any::<bool>(),
+            start in prop::sample::select(vec!["G50 X100.0 Z50.0", "G00 X80.000 Z10.000", "O0100", ""]),
+        ) {
+            let m = machine(profile, calculator, radius);
+            let u = units(inch, is_c);
+            let text = std::iter::once(start.to_string()).chain(lines).collect::<Vec<_>>().join("\n");
+            prop_assert_eq!(read(&text, &m, u, true), read(&text, &m, u, false), "{}", text);
+        }
+    }
+
+    #[test]
+    fn the_writers_lines_are_taken_and_the_reader_agrees() {
+        let m = Machine::new(ProfileName::Gsk980);
+        let u = m.units();
+        let text = "O0100\nG50 X100 Z50\nM03 S500\n(part 0)\nG00 X80 Z10\n(G76 line 7)\n\
+                    G00 X64.400 Z8.961\nG32 X64.400 Z-37.000 F6.0\nG32 X70.400 Z-40.000 F6.0\n\
+                    G00 X80.000 Z-40.000\nG00 X80.000 Z10.000\nG00 X62.908 Z8.530\n\
+                    G32 X62.908 Z-37.000 F6.0\nG32 X68.908 Z-40.000 F6.0\nG00 X80.000 Z-40.000\n\
+                    G01 X21.001 Z-3.25 F0.15 (finish 1)\nX24.004\nG01 Z-9.003\nG00 X100 Z50\n\
+                    G32 X62.908 Z-37.000\nG00 X10.0 Z1.0 ; x\n";
+        let fast = read(text, &m, u, true);
+        assert_eq!(fast, read(text, &m, u, false));
+        // The last line's `;` ends a block whose `x` the reader refuses:
+        // declined, and the reader's error stands.
+        assert!(fast.last().is_some_and(|e| e.starts_with("Program { error: ProgramError { line: 21")));
+        // The shapes taken here.
+        let mut f = FastNc::new(&m, u, true);
+        f.x = Some(1);
+        f.z = Some(1);
+        f.motion = Some(MotionMode::G00);
+        assert_eq!(
+            f.parse(b"G00 X64.400 Z8.961"),
+            Some(Line::Move { g: Some(MotionMode::G00), x: Some(64_400), z: Some(8_961), f: None })
+        );
+        assert_eq!(
+            f.parse(b"G01 X21.001 Z-3.25 F0.15 (finish 1)"),
+            Some(Line::Move {
+                g: Some(MotionMode::G01),
+                x: Some(21_001),
+                z: Some(-3_250),
+                f: Some(&b"F0.15"[..])
+            })
+        );
+        assert_eq!(f.parse(b"(part 0)"), Some(Line::Nothing));
+        assert_eq!(f.parse(b"G00 X10.0 Z1.0 ; x"), None);
+        assert_eq!(f.parse(b"G00  X10.0"), None);
+        assert_eq!(f.parse(b"G00 X10.0001"), None);
+    }
+}
