@@ -75,15 +75,17 @@
 //!
 //! * Up front: O(1) plus one square root per rough level in the law phase,
 //!   at most `pass_limit + 1` of them, as in the reference.
-//! * Per move: a bounded number of steps. Each pass of each start is a fixed
-//!   list of at most six candidate moves (approach, lead-in, cut, run-out,
-//!   retract, return), of which the zero-length ones are skipped; at least
-//!   two remain (the pass start Bn is never A, since A is clear of B by at
-//!   least the depth of the pass, at least one increment). Moving on to the
-//!   next pass takes at most one square root; the next start, a binary gcd
+//! * Per move: a bounded number of steps. Each pass is a fixed list of at
+//!   most six candidate moves (approach, lead-in, cut, run-out, retract,
+//!   return), of which the zero-length ones are left out once per pass,
+//!   when its walk is made (every start walks the same path from A); at
+//!   least two remain (the pass start Bn is never A, since A is clear of B
+//!   by at least the depth of the pass, at least one increment). A move is
+//!   then copied out of the walk; moving on to the next pass takes at most
+//!   one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (448 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (592 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -596,7 +598,6 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     }
 
     let frame = Frame {
-        lead: c.lead,
         a,
         home: a,
         transposed: false,
@@ -636,7 +637,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         previous: 0,
         number: 0,
         // Replaced by next_pass below before any use.
-        walk: Walk::new(frame.path(0, 0), placeholder, StartAngle::ZERO, a),
+        walk: Walk::new(frame.path(0, 0), placeholder, c.lead, StartAngle::ZERO, a),
         start: 0,
         rough_passes,
     };
@@ -682,7 +683,8 @@ impl G76Moves {
             self.stage = Stage::Done;
             return;
         };
-        self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.home);
+        let path = self.frame.path(pass.depth, shift);
+        self.walk.load(path, pass, StartAngle::ZERO, self.frame.home);
         self.begin_start(0);
     }
 
@@ -693,7 +695,7 @@ impl G76Moves {
         self.frame.spacing.record_angle_gcd(start);
         // start < L ≤ 999.
         let number = u16::try_from(start + 1).unwrap_or(u16::MAX);
-        self.walk.restart(number, self.frame.spacing.angle(start), self.frame.home);
+        self.walk.restart(number, self.frame.spacing.angle(start));
     }
 
     /// The next planned pass and its Z shift, as the reference's
@@ -819,7 +821,7 @@ impl Iterator for G76Moves {
             if self.stage == Stage::Done {
                 return None;
             }
-            if let Some(m) = self.walk.next_move(&self.frame) {
+            if let Some(m) = self.walk.next_move() {
                 return Some(m);
             }
             self.advance();
