@@ -245,10 +245,8 @@ mod tests {
     #[test]
     fn round_div_narrow_equals_wide() {
         let w: i128 = 1 << 62;
-        let mut values = vec![0_i128, 1, 2, 3, 5, 7, 10, 999, 1_000, 1_001, w - 1, w, w + 1, w - 2, 1 << 34];
-        for v in values.clone() {
-            values.push(-v);
-        }
+        let base = [0_i128, 1, 2, 3, 5, 7, 10, 999, 1_000, 1_001, w - 2, w - 1, w, w + 1, 1 << 34];
+        let values = base.iter().flat_map(|&v| [v, -v]);
         let dens = [
             1_i128,
             2,
@@ -271,7 +269,7 @@ mod tests {
             0,
         ];
         for &d in &dens {
-            for &n in &values {
+            for n in values.clone() {
                 for e in -3..=3 {
                     let n = n + e * d.abs().min(1 << 20);
                     assert_eq!(round_div_unchecked(n, d), round_div_wide(n, d), "{n} / {d}");
