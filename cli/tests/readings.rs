@@ -41,7 +41,8 @@ fn readings_lists_one_line_per_reading() {
             "R-LCNC-READER",
             "R-G92Q",
             "R-G75ALLOW",
-            "R-G75P"
+            "R-G75P",
+            "R-NOROUGH"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -59,13 +60,15 @@ fn readings_lists_one_line_per_reading() {
             "R-G78CENTRE",
             "R-LEADIN",
             "R-INFEED",
-            "R-G92Q"
+            "R-G92Q",
+            "R-NOROUGH"
         ],
         "{gsk988}"
     );
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-INFEED\tright-first* | left-first\t[gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-NOROUGH\tnone | one-at-zero*\t[fanuc,gsk980,gsk988]\t"), "{gsk988}");
 }
 
 #[test]

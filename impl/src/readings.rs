@@ -87,6 +87,13 @@ pub struct CycleReadings {
     /// flank its level starts on, so that `left-first` is the mirror image
     /// of `right-first` about the left flanks' mirror line.
     pub left_first: bool,
+    /// Reading R-NOROUGH: a cycle with d = k (nothing left to rough) cuts
+    /// one rough pass at depth k - d = 0, at B (shift 0), before its
+    /// finishing passes when `true` (`one-at-zero`: 988TA and 980TDi
+    /// steps ①-⑧ always cut a first rough pass, and DOMAIN decision 3
+    /// "if Δd >= k - d there is exactly one rough pass, at k - d"); no
+    /// rough pass when `false` (`none`, the reading before issue 34).
+    pub one_rough_at_zero: bool,
 }
 
 impl CycleReadings {
@@ -98,7 +105,9 @@ impl CycleReadings {
     /// left flanks mirrored about the form's centre line, G78's centre line
     /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
     /// every profile), each level of the alternating modes right flank first
-    /// (R-INFEED `right-first`).
+    /// (R-INFEED `right-first`), no rough pass when d = k (R-NOROUGH
+    /// `none`, the reading before issue 34: the reader resolves
+    /// `one-at-zero`, the default on every profile).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -108,6 +117,7 @@ impl CycleReadings {
         centre_under_b: false,
         lead_in_same_z: true,
         left_first: false,
+        one_rough_at_zero: false,
     };
 }
 

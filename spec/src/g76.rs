@@ -181,8 +181,9 @@ pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
 /// The depths of the rough levels, in order: they strictly increase and the
 /// last is exactly `k - d` (seed 000: "X 轴切深 = 牙高 P(k) − 精车切削量
 /// R(d)"; 988TA note 5: "当设定第一次螺纹切削深度大于螺纹总切削深度时，只进行
-/// 一次粗车"). With `d = k` there is nothing to rough and the list is empty
-/// (reading R-NOROUGH).
+/// 一次粗车"). With `d = k` (k - d = 0) the list is one level at 0 under
+/// reading R-NOROUGH `one-at-zero` (steps ①-⑤ always cut a first rough
+/// pass, "按切深（k-d）进刀到 Bf 点"), and empty under `none`.
 ///
 /// # Errors
 ///
@@ -197,7 +198,9 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
     let mut levels = Vec::new();
     let mut depth = Decimal::ZERO;
     let mut n = 0_u64;
-    while depth < last {
+    // Reading R-NOROUGH `one-at-zero`: the first level is cut even when it
+    // is already at k - d = 0.
+    while depth < last || (n == 0 && c.readings.one_rough_at_zero) {
         n += 1;
         depth = next_depth(c, n, depth);
         levels.push(depth);
@@ -252,6 +255,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
             }
         }
     };
+    // Reading R-NOROUGH `one-at-zero`: one level at 0 when k - d = 0 (the
+    // only case with no level above).
+    let levels = levels.max(u64::from(c.readings.one_rough_at_zero));
     let passes = passes_of(levels);
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });

@@ -217,6 +217,25 @@ pub enum G75PDigits {
     LeftAligned,
 }
 
+/// Reading R-NOROUGH: whether a G76 or G78 with d = k (nothing left to
+/// rough, k - d = 0) cuts a rough pass.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum NoRough {
+    /// `none`: no rough pass, the m finishing passes at the Z of B (the
+    /// reading before issue 34; the pass at depth 0 cuts only the crest
+    /// line).
+    None,
+    /// `one-at-zero` (default on every profile): one rough pass at depth
+    /// k - d = 0, at B (shift 0), then the finishing passes. 988TA and
+    /// 980TDi steps ①-⑧ always cut a first rough pass ("⑤ … 如果切深大于
+    /// 或等于（k-d），按切深（k-d）进刀到 Bf 点，转⑥执行最后一次螺纹粗车"), R(d)
+    /// is measured from the last rough pass Bf ("螺纹精车切入点 Be 与最后一次
+    /// 螺纹粗车切入点 Bf 的 X 轴绝对坐标的差值"), and DOMAIN decision 3 says
+    /// "if Δd >= k - d there is exactly one rough pass, at k - d".
+    #[default]
+    OneAtZero,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -252,6 +271,8 @@ pub struct Readings {
     pub g75_allowance: G75Allowance,
     /// R-G75P.
     pub g75_p: G75PDigits,
+    /// R-NOROUGH.
+    pub no_rough: NoRough,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -271,7 +292,9 @@ pub struct ReadingEntry {
     /// What it decides, in a few words.
     pub point: &'static str,
     /// Its values, the default first unless the default depends on the
-    /// profile ([`ReadingEntry::default_on`]).
+    /// profile or was changed on the text, the reading before issue 34
+    /// kept first ([`ReadingEntry::default_on`]: R-END, R-LONG988,
+    /// R-NOROUGH).
     pub values: &'static [ReadingValue],
     /// The profiles on which the choice changes anything.
     pub profiles: &'static [ProfileName],
@@ -279,13 +302,16 @@ pub struct ReadingEntry {
 
 impl ReadingEntry {
     /// The default value on `profile`: the first value, except where the
-    /// evidence decides another per profile (docs/INTERPRETATIONS.md,
-    /// R-END and R-LONG988).
+    /// evidence decides another (docs/INTERPRETATIONS.md, R-END and
+    /// R-LONG988 per profile, R-NOROUGH on every profile).
     #[must_use]
     pub fn default_on(&self, profile: ProfileName) -> &'static str {
         match self.id {
             "R-END" => pass_end_name(default_pass_end(profile)),
             "R-LONG988" => long988_name(default_long988(profile)),
+            // Decided on the text (docs/INTERPRETATIONS.md, R-NOROUGH): the
+            // first value is the reading before issue 34.
+            "R-NOROUGH" => "one-at-zero",
             _ => self.values.first().map_or("", |v| v.name),
         }
     }
@@ -541,6 +567,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-NOROUGH",
+        point: "a G76 or G78 with d = k (nothing left to rough)",
+        values: &[
+            ReadingValue {
+                name: "none",
+                source: "no rough pass, the finishing passes at B's Z (before issue 34; a pass at depth 0 cuts the crest line only)",
+            },
+            ReadingValue {
+                name: "one-at-zero",
+                source: "988TA/980TDi steps ①-⑧ always cut a first rough pass, to Bf at k-d; DOMAIN decision 3 \"if Δd >= k - d there is exactly one rough pass, at k - d\"",
+            },
+        ],
+        profiles: GSK,
+    },
 ];
 
 impl Readings {
@@ -600,6 +641,10 @@ impl Readings {
                 G75PDigits::RightAligned => "right-aligned",
                 G75PDigits::LeftAligned => "left-aligned",
             },
+            "R-NOROUGH" => match self.no_rough {
+                NoRough::None => "none",
+                NoRough::OneAtZero => "one-at-zero",
+            },
             _ => return None,
         };
         Some(v)
@@ -654,6 +699,8 @@ impl Readings {
             ("R-G75ALLOW", "magnitude") => self.g75_allowance = G75Allowance::Magnitude,
             ("R-G75P", "right-aligned") => self.g75_p = G75PDigits::RightAligned,
             ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
+            ("R-NOROUGH", "none") => self.no_rough = NoRough::None,
+            ("R-NOROUGH", "one-at-zero") => self.no_rough = NoRough::OneAtZero,
             _ => return Err(bad()),
         }
         Ok(())
@@ -725,6 +772,7 @@ impl Readings {
             centre_under_b: self.g78_centre == G78Centre::UnderB,
             lead_in_same_z: self.lead_in == LeadIn::SameZ,
             left_first: self.infeed_order == InfeedOrder::LeftFirst,
+            one_rough_at_zero: self.no_rough == NoRough::OneAtZero,
         }
     }
 }

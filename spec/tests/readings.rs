@@ -410,7 +410,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -900,4 +900,45 @@ fn end_and_long988_defaults_and_listing() {
     assert!(all.contains("\nR-LONG988\tdisplacement | table*\t[gsk988]\t"), "{all}");
     let gsk980 = Listing { profile: Some(ProfileName::Gsk980) }.to_string();
     assert!(gsk980.contains("R-END") && !gsk980.contains("R-LONG988"));
+}
+
+/// R-NOROUGH (sweep entry 4), gsk988: `G00 X80 Z10` / `G76 P010060 Q0
+/// R0.5` / `G76 X60 Z-60 P0.5 Q0.2 F2`: d = k = 0.5, so k - d = 0; m = 1,
+/// r = 00 (no run-out: J and K not programmed, K = 0 × 0.1 × 2 = 0), a =
+/// 60. B = X60 + 2·0.5 = X61 at Z10 (C = D's X, i = 0).
+const NO_ROUGH: &str = "M3 S300\nG00 X80 Z10\nG76 P010060 Q0 R0.5\nG76 X60 Z-60 P0.5 Q0.2 F2\nM30\n";
+
+/// `one-at-zero` (default): steps ①-④ cut a first rough pass ("① 从起点快速
+/// 移动到 B1"), and step ⑤ stops the roughing at depth k - d = 0 ("如果切深
+/// 大于或等于（k-d），按切深（k-d）进刀到 Bf 点"): one rough pass at depth 0,
+/// shift round(0 × tan 30°) = 0, at B = (X61, Z10), cut to Z-60 (X61: no
+/// taper), ③ X to E = X80, ④ Z to A; then ⑨ the finishing pass at depth
+/// k = 0.5 from the Z of the last rough pass (Z10): X60.
+#[test]
+fn no_rough_one_pass_at_zero_by_default() {
+    let finishing = [
+        (Role::Approach, Point::new(60_000, 10_000)),
+        (Role::Cut, Point::new(60_000, -60_000)),
+        (Role::Retract, Point::new(80_000, -60_000)),
+        (Role::Return, Point::new(80_000, 10_000)),
+    ];
+    let mut rough = vec![
+        (Role::Approach, Point::new(61_000, 10_000)),
+        (Role::Cut, Point::new(61_000, -60_000)),
+        (Role::Retract, Point::new(80_000, -60_000)),
+        (Role::Return, Point::new(80_000, 10_000)),
+    ];
+    let got = run(NO_ROUGH, &machine(ProfileName::Gsk988, &[])).unwrap();
+    rough.extend(finishing);
+    assert_eq!(ends(&got), rough);
+    assert_eq!(got[0].pass.map(|p| (p.depth, p.cut)), Some((0, 0)));
+    // `none`: the finishing pass alone.
+    let got = run(NO_ROUGH, &machine(ProfileName::Gsk988, &["R-NOROUGH=none"])).unwrap();
+    assert_eq!(ends(&got), finishing);
+    // The default is `one-at-zero` on every profile with G76.
+    let r = Readings::default();
+    for p in [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988] {
+        assert_eq!(r.get_on("R-NOROUGH", p), Some("one-at-zero"));
+        assert!(r.for_cycle(p, false).one_rough_at_zero);
+    }
 }

@@ -78,8 +78,10 @@
 //! * Per move: a bounded number of steps. Each pass of each start is a fixed
 //!   list of at most six candidate moves (approach, lead-in, cut, run-out,
 //!   retract, return), of which the zero-length ones are skipped; at least
-//!   two remain (the pass start Bn is never A, since A is clear of B by at
-//!   least the depth of the pass, at least one increment). Moving on to the
+//!   one remains (the cut and the run-out go from Bn to the end line, Z of
+//!   D or beyond on a Z-long thread, X of the pass end on an X-long one;
+//!   the pass start Bn is A only for a pass at depth 0, R-NOROUGH
+//!   `one-at-zero`, with A on B). Moving on to the
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
@@ -173,6 +175,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             }
         }
     };
+    // Reading R-NOROUGH `one-at-zero`: one level at 0 when k - d = 0 (the
+    // only case with no level above).
+    let levels = levels.max(u64::from(c.readings.one_rough_at_zero));
     // levels < 2^33: doubling cannot overflow.
     let passes = c.infeed.passes(levels);
     if passes > limit {
@@ -383,10 +388,13 @@ fn plan_extremes(
     mirror: i64,
 ) -> Option<PlanExtremes> {
     if last <= 0 {
-        // No rough level: the finishing passes (if any) at depth k and the
-        // shift of the last rough pass, none: 0.
-        return (c.finishing_passes > 0).then_some(PlanExtremes {
-            shallowest: c.thread_height,
+        // d = k: one rough level at depth 0 (reading R-NOROUGH
+        // `one-at-zero`) or none, then the finishing passes (if any) at
+        // depth k; every pass at shift 0 (zc = 0, so every mode's shift
+        // and mirror line is 0).
+        let rough = c.readings.one_rough_at_zero;
+        return (rough || c.finishing_passes > 0).then_some(PlanExtremes {
+            shallowest: if rough { 0 } else { c.thread_height },
             min_shift: 0,
             max_shift: 0,
         });
@@ -443,11 +451,20 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
     let q = c.first_depth.unsigned_abs();
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
+    let one_at_zero = c.readings.one_rough_at_zero;
     match c.depth_mode {
-        DepthMode::Decreasing => Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false },
-        DepthMode::Equal => {
-            Schedule { q2: q * q, min: c.first_depth.max(min), last, n: 0, depth: 0, min_phase: true }
+        DepthMode::Decreasing => {
+            Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false, one_at_zero }
         }
+        DepthMode::Equal => Schedule {
+            q2: q * q,
+            min: c.first_depth.max(min),
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: true,
+            one_at_zero,
+        },
     }
 }
 

@@ -47,6 +47,9 @@ pub struct Schedule {
     pub(super) depth: i64,
     /// True once the minimum cut has taken over.
     pub(super) min_phase: bool,
+    /// Reading R-NOROUGH `one-at-zero`: the first level is made even when
+    /// it is already at `k - d` (= 0: d = k).
+    pub(super) one_at_zero: bool,
 }
 
 impl Schedule {
@@ -77,7 +80,15 @@ impl Schedule {
             && level <= MAX_LENGTH.unsigned_abs();
         // Δd < 2^30: Δd² < 2^60.
         let q = first_depth.unsigned_abs();
-        ok.then_some(Schedule { q2: q * q, min: min_cut.max(1), last, n: level, depth, min_phase })
+        ok.then_some(Schedule {
+            q2: q * q,
+            min: min_cut.max(1),
+            last,
+            n: level,
+            depth,
+            min_phase,
+            one_at_zero: false,
+        })
     }
 
     /// The same words (Δd, Δdmin, k - d) at another state: `level` levels
@@ -95,7 +106,12 @@ impl Schedule {
     #[inline]
     pub fn next_level(&mut self) -> Option<i64> {
         if self.depth >= self.last {
-            return None;
+            // Reading R-NOROUGH `one-at-zero`: level 1 at k - d = 0.
+            if self.n > 0 || !self.one_at_zero {
+                return None;
+            }
+            self.n = 1;
+            return Some(self.depth);
         }
         // At most k - d < 2^30 levels: the depth grows by at least 1.
         self.n += 1;
