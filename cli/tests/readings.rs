@@ -42,7 +42,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G92Q",
             "R-G75ALLOW",
             "R-G75P",
-            "R-NOROUGH"
+            "R-NOROUGH",
+            "R-DEPTH"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -61,7 +62,8 @@ fn readings_lists_one_line_per_reading() {
             "R-LEADIN",
             "R-INFEED",
             "R-G92Q",
-            "R-NOROUGH"
+            "R-NOROUGH",
+            "R-DEPTH"
         ],
         "{gsk988}"
     );
@@ -69,6 +71,7 @@ fn readings_lists_one_line_per_reading() {
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-INFEED\tright-first* | left-first\t[gsk980,gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-NOROUGH\tnone | one-at-zero*\t[fanuc,gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-DEPTH\tprevious-plus-min* | formula\t[gsk980,gsk988]\t"), "{gsk988}");
 }
 
 #[test]

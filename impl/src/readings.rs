@@ -94,6 +94,14 @@ pub struct CycleReadings {
     /// "if Δd >= k - d there is exactly one rough pass, at k - d"); no
     /// rough pass when `false` (`none`, the reading before issue 34).
     pub one_rough_at_zero: bool,
+    /// Reading R-DEPTH: the rough depths of G76 and G78 递减 follow the
+    /// 988TA page's formula when `true` (`formula`, step (5) "切深取（√n×△d）、
+    /// （√(n-1)×△d+△dmin）中的较大值"): `D(n) = min(k - d, max(round(Δd √n),
+    /// round(Δd √(n-1)) + m, D(n-1) + 1))`; DOMAIN decision 3 when `false`
+    /// (`previous-plus-min`, the default): `min(k - d, max(round(Δd √n),
+    /// D(n-1) + m))`, `m = max(Δdmin, 1)`. G78's equal steps are not
+    /// concerned.
+    pub depth_formula: bool,
 }
 
 impl CycleReadings {
@@ -107,7 +115,8 @@ impl CycleReadings {
     /// every profile), each level of the alternating modes right flank first
     /// (R-INFEED `right-first`), no rough pass when d = k (R-NOROUGH
     /// `none`, the reading before issue 34: the reader resolves
-    /// `one-at-zero`, the default on every profile).
+    /// `one-at-zero`, the default on every profile), the depths of DOMAIN
+    /// decision 3 (R-DEPTH `previous-plus-min`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -118,6 +127,7 @@ impl CycleReadings {
         lead_in_same_z: true,
         left_first: false,
         one_rough_at_zero: false,
+        depth_formula: false,
     };
 }
 

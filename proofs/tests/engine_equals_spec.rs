@@ -326,12 +326,13 @@ proptest! {
     /// The engine equals the reference under every value of the readings
     /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
     /// three pass ends, R-LONG988's table, R-G78LEFT, R-G78CENTRE,
-    /// R-LEADIN, R-INFEED's order, R-NOROUGH), in every combination.
+    /// R-LEADIN, R-INFEED's order, R-NOROUGH, R-DEPTH), in every
+    /// combination.
     #[test]
     fn engine_equals_spec_under_every_reading(
         c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
         left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
-        left_first in any::<bool>(), one_at_zero in any::<bool>(),
+        left_first in any::<bool>(), one_at_zero in any::<bool>(), formula in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -345,6 +346,7 @@ proptest! {
                 lead_in_same_z: same_z,
                 left_first,
                 one_rough_at_zero: one_at_zero,
+                depth_formula: formula,
             },
             ..c
         };
@@ -389,11 +391,16 @@ proptest! {
     }
 
     /// The up-front count equals the reference's: its error, or the number of
-    /// rough passes the reference plans (under either R-NOROUGH value).
+    /// rough passes the reference plans (under either R-NOROUGH and R-DEPTH
+    /// value).
     #[test]
-    fn rough_pass_count_equals_spec(c in cycle(), one_at_zero in any::<bool>()) {
+    fn rough_pass_count_equals_spec(c in cycle(), one_at_zero in any::<bool>(), formula in any::<bool>()) {
         let c = G76Cycle {
-            readings: cycleref::CycleReadings { one_rough_at_zero: one_at_zero, ..c.readings },
+            readings: cycleref::CycleReadings {
+                one_rough_at_zero: one_at_zero,
+                depth_formula: formula,
+                ..c.readings
+            },
             ..c
         };
         let spec = c.validate().and_then(|()| cycleref_spec::g76::planned_passes(&c)).map(|plan| {
@@ -909,7 +916,7 @@ fn huge_lead_is_refused_by_both() {
 fn constant_size_and_fused() {
     let size = std::mem::size_of::<G76Moves>();
     eprintln!("size_of::<G76Moves>() = {size}");
-    assert_eq!(size, 448, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
+    assert_eq!(size, 456, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
     let mut it = expand_g76(&m68x6()).unwrap();
     assert_eq!(it.by_ref().count(), 30);
     assert_eq!(it.next(), None);

@@ -236,6 +236,24 @@ pub enum NoRough {
     OneAtZero,
 }
 
+/// Reading R-DEPTH: the depth of a rough level of G76 (and G78 递减) once
+/// the minimum cut Δdmin takes over.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum DepthLaw {
+    /// `previous-plus-min` (default, DOMAIN decision 3, normative): `Dn =
+    /// min(k - d, max(round(Δd √n), D(n-1) + max(Δdmin, 1)))`: seed 000
+    /// 注意 1 "下一刀的 X 轴切深 … = 最小切削量 + 前一刀的切深", the 980TDi
+    /// "以△dmin 作为本次以及后续粗车的切削量，后续的进刀深度将不再按公式计算".
+    #[default]
+    PreviousPlusMin,
+    /// `formula`: `Dn = min(k - d, max(round(Δd √n), round(Δd √(n-1)) +
+    /// Δdmin, D(n-1) + 1))`: the 988TA G76 step (5) and the 980TDi step ⑤
+    /// "切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值", the 988TA's Q(Δdmin)
+    /// "以△dmin 作为本次粗车的切削量，即：本次螺纹切深为 √(n-1)×△d+△dmin"; the
+    /// last term keeps every level at least one increment deeper.
+    Formula,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -273,6 +291,8 @@ pub struct Readings {
     pub g75_p: G75PDigits,
     /// R-NOROUGH.
     pub no_rough: NoRough,
+    /// R-DEPTH.
+    pub depth_law: DepthLaw,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -582,6 +602,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK,
     },
+    ReadingEntry {
+        id: "R-DEPTH",
+        point: "the depth of a rough level of G76 and G78 递减 once the minimum cut takes over",
+        values: &[
+            ReadingValue {
+                name: "previous-plus-min",
+                source: "DOMAIN decision 3: D(n-1) + Δdmin (seed 000 注意 1 \"最小切削量 + 前一刀的切深\"; 980TDi \"本次以及后续粗车\")",
+            },
+            ReadingValue {
+                name: "formula",
+                source: "988TA/980TDi step (5) \"切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值\" on every level",
+            },
+        ],
+        profiles: GSK_G78,
+    },
 ];
 
 impl Readings {
@@ -645,6 +680,10 @@ impl Readings {
                 NoRough::None => "none",
                 NoRough::OneAtZero => "one-at-zero",
             },
+            "R-DEPTH" => match self.depth_law {
+                DepthLaw::PreviousPlusMin => "previous-plus-min",
+                DepthLaw::Formula => "formula",
+            },
             _ => return None,
         };
         Some(v)
@@ -701,6 +740,8 @@ impl Readings {
             ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
             ("R-NOROUGH", "none") => self.no_rough = NoRough::None,
             ("R-NOROUGH", "one-at-zero") => self.no_rough = NoRough::OneAtZero,
+            ("R-DEPTH", "previous-plus-min") => self.depth_law = DepthLaw::PreviousPlusMin,
+            ("R-DEPTH", "formula") => self.depth_law = DepthLaw::Formula,
             _ => return Err(bad()),
         }
         Ok(())
@@ -773,6 +814,12 @@ impl Readings {
             lead_in_same_z: self.lead_in == LeadIn::SameZ,
             left_first: self.infeed_order == InfeedOrder::LeftFirst,
             one_rough_at_zero: self.no_rough == NoRough::OneAtZero,
+            // R-DEPTH: the formula is the GSK pages' (988TA, 980TDi step
+            // (5)); the FANUC notes (seed 004) give only the fixed
+            // increment "以固定增量d min … 直至粗加工结束", so fanuc keeps
+            // DOMAIN decision 3 under either value.
+            depth_formula: self.depth_law == DepthLaw::Formula
+                && matches!(profile, ProfileName::Gsk980 | ProfileName::Gsk988),
         }
     }
 }

@@ -85,7 +85,7 @@
 //!   next pass takes at most one square root; the next start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (448 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (456 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -94,7 +94,7 @@ use core::iter::FusedIterator;
 
 use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
-use super::schedule::{law, Schedule};
+use super::schedule::{formula_levels, law, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
@@ -145,6 +145,15 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             penultimate = (levels - 1) * step;
         }
         levels.unsigned_abs()
+    } else if c.readings.depth_formula {
+        // Reading R-DEPTH `formula`: exact, in closed form.
+        if last > 0 {
+            let (levels, pen) = formula_levels(q2, min, last);
+            penultimate = pen;
+            levels
+        } else {
+            0
+        }
     } else {
         loop {
             count.tick();
@@ -453,9 +462,18 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
     let min = c.min_cut.max(1);
     let one_at_zero = c.readings.one_rough_at_zero;
     match c.depth_mode {
-        DepthMode::Decreasing => {
-            Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false, one_at_zero }
-        }
+        DepthMode::Decreasing => Schedule {
+            q2: q * q,
+            min,
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: false,
+            one_at_zero,
+            // Reading R-DEPTH.
+            formula: c.readings.depth_formula,
+            law_n: 0,
+        },
         DepthMode::Equal => Schedule {
             q2: q * q,
             min: c.first_depth.max(min),
@@ -464,6 +482,8 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
             depth: 0,
             min_phase: true,
             one_at_zero,
+            formula: false,
+            law_n: 0,
         },
     }
 }
