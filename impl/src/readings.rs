@@ -102,6 +102,12 @@ pub struct CycleReadings {
     /// D(n-1) + m))`, `m = max(Δdmin, 1)`. G78's equal steps are not
     /// concerned.
     pub depth_formula: bool,
+    /// Reading R-STARTS: the order of the passes of a multi-start G76 or
+    /// G78 (L > 1). Every pass for all starts before the next pass when
+    /// `false` (`pass-major`, the default); all passes of start 1 (rough
+    /// and finishing), then all of start 2, … when `true` (`start-major`).
+    /// The same moves, in another order; no page gives the order.
+    pub start_major: bool,
 }
 
 impl CycleReadings {
@@ -116,7 +122,8 @@ impl CycleReadings {
     /// (R-INFEED `right-first`), no rough pass when d = k (R-NOROUGH
     /// `none`, the reading before issue 34: the reader resolves
     /// `one-at-zero`, the default on every profile), the depths of DOMAIN
-    /// decision 3 (R-DEPTH `previous-plus-min`).
+    /// decision 3 (R-DEPTH `previous-plus-min`), every pass for all starts
+    /// before the next (R-STARTS `pass-major`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -128,6 +135,7 @@ impl CycleReadings {
         left_first: false,
         one_rough_at_zero: false,
         depth_formula: false,
+        start_major: false,
     };
 }
 

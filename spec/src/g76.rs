@@ -613,7 +613,8 @@ fn pass_end_point(
 /// Expands a G76 cycle into moves.
 ///
 /// Each pass, for each start (reading R-STARTS: all starts at one depth
-/// before the next depth), follows seed 000 "执行过程" (4)-(5) and 988TA
+/// before the next depth under `pass-major`, all passes of one start
+/// before the next start under `start-major`), follows seed 000 "执行过程" (4)-(5) and 988TA
 /// steps ①-⑩:
 ///
 /// 1. rapid from A to Bn, X and Z together ("如果 a≠0，X 轴和 Z 轴同时移动，
@@ -765,10 +766,18 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         units: u,
     };
     let starts = c.starts;
+    // Reading R-STARTS: every pass for all starts (`pass-major`), or every
+    // pass of one start before the next start (`start-major`).
+    let start_major = c.readings.start_major;
     let (mut index, mut start) = (0_usize, 0_u32);
     Ok(PassStream::new(move |moves: &mut Vec<Move>| {
-        if start == starts {
+        if start_major && index == plan.len() {
+            (index, start) = (0, start + 1);
+        } else if !start_major && start == starts {
             (index, start) = (index + 1, 0);
+        }
+        if start >= starts {
+            return false;
         }
         let Some(planned) = plan.get(index) else { return false };
         {
@@ -784,7 +793,11 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
             let lead_in_start = lead_in.map(|lz| (bn.0 + s * xf * e, bn.1 - t * lz));
             pass_path(moves, &frame, bn, end, lead_in_start, pass, angle);
         }
-        start += 1;
+        if start_major {
+            index += 1;
+        } else {
+            start += 1;
+        }
         true
     }))
 }

@@ -254,6 +254,21 @@ pub enum DepthLaw {
     Formula,
 }
 
+/// Reading R-STARTS: the order of the passes of a multi-start G76 or G78.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum StartsOrder {
+    /// `pass-major` (default): every pass for all starts, 0°, 360°/L, …,
+    /// before the next pass: the starts stay at the same depth, so no crest
+    /// between two starts is thinned by a start that is ahead.
+    #[default]
+    PassMajor,
+    /// `start-major`: all passes of start 1 (rough and finishing), then
+    /// all of start 2, …: each start cut as a single-start thread at its
+    /// angle. The same moves in another order; no page gives the order
+    /// (seed 000 L: "螺纹头数"; 988TA G32 Q: "指定 Q 的不同值可以切削出多头螺纹").
+    StartMajor,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -293,6 +308,8 @@ pub struct Readings {
     pub no_rough: NoRough,
     /// R-DEPTH.
     pub depth_law: DepthLaw,
+    /// R-STARTS.
+    pub starts_order: StartsOrder,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -617,6 +634,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK_G78,
     },
+    ReadingEntry {
+        id: "R-STARTS",
+        point: "the order of the passes of a multi-start G76 or G78 (L > 1)",
+        values: &[
+            ReadingValue {
+                name: "pass-major",
+                source: "every pass for all starts before the next pass: the starts stay at one depth (no page gives the order)",
+            },
+            ReadingValue {
+                name: "start-major",
+                source: "all passes of start 1, then of start 2, …: each start a single-start thread at its angle (no page gives the order)",
+            },
+        ],
+        profiles: GSK,
+    },
 ];
 
 impl Readings {
@@ -684,6 +716,10 @@ impl Readings {
                 DepthLaw::PreviousPlusMin => "previous-plus-min",
                 DepthLaw::Formula => "formula",
             },
+            "R-STARTS" => match self.starts_order {
+                StartsOrder::PassMajor => "pass-major",
+                StartsOrder::StartMajor => "start-major",
+            },
             _ => return None,
         };
         Some(v)
@@ -742,6 +778,8 @@ impl Readings {
             ("R-NOROUGH", "one-at-zero") => self.no_rough = NoRough::OneAtZero,
             ("R-DEPTH", "previous-plus-min") => self.depth_law = DepthLaw::PreviousPlusMin,
             ("R-DEPTH", "formula") => self.depth_law = DepthLaw::Formula,
+            ("R-STARTS", "pass-major") => self.starts_order = StartsOrder::PassMajor,
+            ("R-STARTS", "start-major") => self.starts_order = StartsOrder::StartMajor,
             _ => return Err(bad()),
         }
         Ok(())
@@ -820,6 +858,7 @@ impl Readings {
             // DOMAIN decision 3 under either value.
             depth_formula: self.depth_law == DepthLaw::Formula
                 && matches!(profile, ProfileName::Gsk980 | ProfileName::Gsk988),
+            start_major: self.starts_order == StartsOrder::StartMajor,
         }
     }
 }

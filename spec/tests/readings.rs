@@ -410,7 +410,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1047,4 +1047,76 @@ fn depth_formula_count_is_exact() {
             }
         }
     }
+}
+
+/// R-STARTS (sweep entry 7), gsk988 `G00 X80 Z10` / `G76 P010060 Q0.1
+/// R0.1 L2` / `G76 X60 Z-30 P1 Q0.5 F2`: k - d = 0.9, Δd = 0.5, Δdmin =
+/// 0.1: levels round(500 √n) = 500, 707, 866, then 1000 → 900 (k - d): 4
+/// rough passes and m = 1 finishing pass, each for starts 1 and 2 (0° and
+/// 180°).
+const TWO_STARTS: &str = "M3 S300\nG00 X80 Z10\nG76 P010060 Q0.1 R0.1 L2\nG76 X60 Z-30 P1 Q0.5 F2\nM30\n";
+
+/// The passes in cutting order: (rough?, number, start), once a pass.
+fn pass_order(moves: &[Move]) -> Vec<(bool, u32, u16)> {
+    let mut out: Vec<(bool, u32, u16)> = Vec::new();
+    for p in moves.iter().filter_map(|m| m.pass) {
+        let key = (p.kind == cycleref::moves::PassKind::Rough, p.number, p.start);
+        if out.last() != Some(&key) {
+            out.push(key);
+        }
+    }
+    out
+}
+
+/// `pass-major` (default): each pass for both starts before the next;
+/// `start-major`: the five passes of start 1, then those of start 2. The
+/// moves of each pass of each start are the same under both.
+#[test]
+fn starts_order() {
+    let pass_major = run(TWO_STARTS, &machine(ProfileName::Gsk988, &[])).unwrap();
+    let start_major = run(TWO_STARTS, &machine(ProfileName::Gsk988, &["R-STARTS=start-major"])).unwrap();
+    let (r, f) = (true, false);
+    assert_eq!(
+        pass_order(&pass_major),
+        [
+            (r, 1, 1),
+            (r, 1, 2),
+            (r, 2, 1),
+            (r, 2, 2),
+            (r, 3, 1),
+            (r, 3, 2),
+            (r, 4, 1),
+            (r, 4, 2),
+            (f, 1, 1),
+            (f, 1, 2)
+        ]
+    );
+    assert_eq!(
+        pass_order(&start_major),
+        [
+            (r, 1, 1),
+            (r, 2, 1),
+            (r, 3, 1),
+            (r, 4, 1),
+            (f, 1, 1),
+            (r, 1, 2),
+            (r, 2, 2),
+            (r, 3, 2),
+            (r, 4, 2),
+            (f, 1, 2)
+        ]
+    );
+    let of = |moves: &[Move], key: (bool, u32, u16)| -> Vec<Move> {
+        moves
+            .iter()
+            .filter(|m| {
+                m.pass.is_some_and(|p| (p.kind == cycleref::moves::PassKind::Rough, p.number, p.start) == key)
+            })
+            .copied()
+            .collect()
+    };
+    for key in pass_order(&pass_major) {
+        assert_eq!(of(&pass_major, key), of(&start_major, key), "{key:?}");
+    }
+    assert_eq!(pass_major.len(), start_major.len());
 }

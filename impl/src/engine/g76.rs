@@ -370,6 +370,10 @@ pub struct G76Moves {
     start: u32,
     /// The number of rough passes, found before any move (reading R-LIMIT).
     rough_passes: u64,
+    /// Reading R-STARTS: `None` under `pass-major`; under `start-major`,
+    /// whether the schedule starts in its minimum-cut phase (G78's equal
+    /// steps), to restart it for each start.
+    start_major: Option<bool>,
 }
 
 /// What the up-front checks need of the planned passes: the depth of the
@@ -676,6 +680,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         walk: Walk::new(frame.path(0, 0), placeholder, StartAngle::ZERO, a),
         start: 0,
         rough_passes,
+        start_major: c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal),
     };
     moves.next_pass();
     Ok(moves)
@@ -702,25 +707,44 @@ impl G76Moves {
         self.rough_passes
     }
 
-    /// The path of this start is done: the next start, or the next pass.
+    /// The path of this start is done: the next start, or the next pass
+    /// (reading R-STARTS `pass-major`); the next pass of this start
+    /// (`start-major`).
     #[inline(never)]
     fn advance(&mut self) {
         let next = self.start.saturating_add(1);
-        if next < self.frame.starts {
+        if self.start_major.is_none() && next < self.frame.starts {
             self.begin_start(next);
         } else {
             self.next_pass();
         }
     }
 
-    /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
+    /// Moves on to the next planned pass (at start 1, or at the current
+    /// start under R-STARTS `start-major`), or to [`Stage::Done`]. Under
+    /// `start-major`, after the last pass of a start the plan restarts
+    /// from its first level for the next start (the schedule's state at
+    /// level 0, `Schedule::with_state`): constant memory, whatever L.
     fn next_pass(&mut self) {
-        let Some((pass, shift)) = self.plan_next() else {
+        let mut planned = self.plan_next();
+        if let (None, Some(min_phase)) = (planned, self.start_major) {
+            let next = self.start.saturating_add(1);
+            if next < self.frame.starts {
+                if let Some(s) = self.schedule.with_state(0, 0, min_phase) {
+                    self.schedule = s;
+                    self.stage = Stage::Rough { second_pending: false };
+                    (self.previous, self.number, self.finish, self.start) = (0, 0, 0, next);
+                    planned = self.plan_next();
+                }
+            }
+        }
+        let Some((pass, shift)) = planned else {
             self.stage = Stage::Done;
             return;
         };
         self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.home);
-        self.begin_start(0);
+        // start < L ≤ 999; 0 under `pass-major`.
+        self.begin_start(if self.start_major.is_some() { self.start } else { 0 });
     }
 
     /// Starts the path of the current pass for start `start` (0-based).
