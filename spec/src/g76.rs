@@ -169,8 +169,8 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// "切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值", on every level):
 /// `Dn = min(k - d, max(round(Δd √n), round(Δd √(n-1)) + m, D(n-1) + 1
 /// increment))`. The page's Δdmin is taken as `m = max(Δdmin, 1
-/// increment)`, which changes nothing: with Δdmin = 0, `round(Δd √(n-1))
-/// + 1 ≤ D(n-1) + 1`, the last term, since every level is at least as deep
+/// increment)`, which changes nothing: with Δdmin = 0, `round(Δd √(n-1)) +
+/// 1 ≤ D(n-1) + 1`, the last term, since every level is at least as deep
 /// as the law.
 ///
 /// Restated in integers: `proofs/src/g76_exact.rs`, `next_depth`.

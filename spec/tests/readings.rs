@@ -944,10 +944,10 @@ fn no_rough_one_pass_at_zero_by_default() {
 }
 
 /// R-DEPTH `formula` (sweep entry 3), gsk988 IS-B: `G00 X80 Z10` / `G76
-/// P010060 Q0.3 R0` / `G76 X60 Z-60 P3 Q1 F6`: Δd = 1000, Δdmin = 300, k
-/// - d = 3000 (increments of 0.001 mm), P(m) = 01: one finishing pass. By
-/// hand, Nn = round(1000 √n) and the larger of
-/// Nn and N(n-1) + 300 (step (5)):
+/// P010060 Q0.3 R0` / `G76 X60 Z-60 P3 Q1 F6`: Δd = 1000, Δdmin = 300,
+/// k - d = 3000 (increments of 0.001 mm), P(m) = 01: one finishing pass.
+/// By hand, Nn = round(1000 √n) and the larger of Nn and N(n-1) + 300
+/// (step (5)):
 ///
 /// | n | Nn | N(n-1) + 300 | Dn |
 /// |---|---|---|---|
@@ -1003,7 +1003,7 @@ fn nearest_root(x: u128) -> u128 {
     let (mut lo, mut hi) = (0_u128, 1_u128 << 32);
     // The largest s with (2s - 1)² ≤ 4x.
     while lo < hi {
-        let mid = (lo + hi + 1) / 2;
+        let mid = (lo + hi).div_ceil(2);
         if (2 * mid - 1) * (2 * mid - 1) <= 4 * x {
             lo = mid;
         } else {
