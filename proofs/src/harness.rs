@@ -232,13 +232,14 @@ pub const PLAIN_CYCLE: G76Cycle = G76Cycle {
 /// `none`, R-DEPTH `previous-plus-min`, R-STARTS `pass-major`. The
 /// harnesses do not take the readings as inputs because several
 /// properties are stated for these values and are false, by design, under
-/// the others: P1's "every rough cut is at least min(Δdmin, what remains)
-/// and at least one increment" fails under R-NOROUGH `one-at-zero` (the
-/// pass at depth 0 with d = k cuts 0) and under R-DEPTH `formula` (its
-/// cuts after the first clamped level fall below Δdmin, which is what
-/// tells it apart); P1's strictly increasing depths and P3's "no rough
-/// pass after a finishing pass" fail under R-STARTS `start-major` (each
-/// start begins again at the first level); P5 measures every pass against
+/// the others (each checked through the shim with an engine that swaps
+/// the reading in): P1's depths strictly increasing from 0 fail under
+/// R-NOROUGH `one-at-zero` (the pass at depth 0 with d = k cuts 0), its
+/// "every rough cut is at least min(Δdmin, what remains)" under R-DEPTH
+/// `formula` (its cuts after the first clamped level fall below Δdmin,
+/// which is what tells it apart), and P3's "no rough pass after a
+/// finishing pass" under R-STARTS `start-major` (each start begins again
+/// at the first level); P5 measures every pass against
 /// zc, the finishing Z under these values only (R-G78LEFT `mirror-b` and
 /// R-G78CENTRE `under-b` move the finishing passes with the last rough
 /// pass, R-FINISH); P6's
