@@ -79,13 +79,15 @@
 //!   most six candidate moves (approach, lead-in, cut, run-out, retract,
 //!   return), of which the zero-length ones are left out once per pass,
 //!   when its walk is made (every start walks the same path from A); at
-//!   least two remain (the pass start Bn is never A, since A is clear of B
-//!   by at least the depth of the pass, at least one increment). A move is
-//!   then copied out of the walk; moving on to the next pass takes at most
-//!   one square root; the next start, a binary gcd
+//!   least one remains (the cut and the run-out go from Bn to the end line,
+//!   Z of D or beyond on a Z-long thread, X of the pass end on an X-long
+//!   one; the pass start Bn is A only for a pass at depth 0, R-NOROUGH
+//!   `one-at-zero`, with A on B). A move is then copied out of the walk;
+//!   moving on to the next pass takes at most one square root; the next
+//!   start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (592 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (600 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -94,7 +96,7 @@ use core::iter::FusedIterator;
 
 use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
-use super::schedule::{law, Schedule};
+use super::schedule::{formula_levels, law, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
@@ -145,6 +147,15 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             penultimate = (levels - 1) * step;
         }
         levels.unsigned_abs()
+    } else if c.readings.depth_formula {
+        // Reading R-DEPTH `formula`: exact, in closed form.
+        if last > 0 {
+            let (levels, pen) = formula_levels(q2, min, last);
+            penultimate = pen;
+            levels
+        } else {
+            0
+        }
     } else {
         loop {
             count.tick();
@@ -175,6 +186,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             }
         }
     };
+    // Reading R-NOROUGH `one-at-zero`: one level at 0 when k - d = 0 (the
+    // only case with no level above).
+    let levels = levels.max(u64::from(c.readings.one_rough_at_zero));
     // levels < 2^33: doubling cannot overflow.
     let passes = c.infeed.passes(levels);
     if passes > limit {
@@ -358,6 +372,10 @@ pub struct G76Moves {
     start: u32,
     /// The number of rough passes, found before any move (reading R-LIMIT).
     rough_passes: u64,
+    /// Reading R-STARTS: `None` under `pass-major`; under `start-major`,
+    /// whether the schedule starts in its minimum-cut phase (G78's equal
+    /// steps), to restart it for each start.
+    start_major: Option<bool>,
 }
 
 /// What the up-front checks need of the planned passes: the depth of the
@@ -385,10 +403,13 @@ fn plan_extremes(
     mirror: i64,
 ) -> Option<PlanExtremes> {
     if last <= 0 {
-        // No rough level: the finishing passes (if any) at depth k and the
-        // shift of the last rough pass, none: 0.
-        return (c.finishing_passes > 0).then_some(PlanExtremes {
-            shallowest: c.thread_height,
+        // d = k: one rough level at depth 0 (reading R-NOROUGH
+        // `one-at-zero`) or none, then the finishing passes (if any) at
+        // depth k; every pass at shift 0 (zc = 0, so every mode's shift
+        // and mirror line is 0).
+        let rough = c.readings.one_rough_at_zero;
+        return (rough || c.finishing_passes > 0).then_some(PlanExtremes {
+            shallowest: if rough { 0 } else { c.thread_height },
             min_shift: 0,
             max_shift: 0,
         });
@@ -445,11 +466,31 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
     let q = c.first_depth.unsigned_abs();
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
+    let one_at_zero = c.readings.one_rough_at_zero;
     match c.depth_mode {
-        DepthMode::Decreasing => Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false },
-        DepthMode::Equal => {
-            Schedule { q2: q * q, min: c.first_depth.max(min), last, n: 0, depth: 0, min_phase: true }
-        }
+        DepthMode::Decreasing => Schedule {
+            q2: q * q,
+            min,
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: false,
+            one_at_zero,
+            // Reading R-DEPTH.
+            formula: c.readings.depth_formula,
+            law_n: 0,
+        },
+        DepthMode::Equal => Schedule {
+            q2: q * q,
+            min: c.first_depth.max(min),
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: true,
+            one_at_zero,
+            formula: false,
+            law_n: 0,
+        },
     }
 }
 
@@ -640,6 +681,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         walk: Walk::new(frame.path(0, 0), placeholder, c.lead, StartAngle::ZERO, a),
         start: 0,
         rough_passes,
+        start_major: c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal),
     };
     moves.next_pass();
     Ok(moves)
@@ -666,26 +708,45 @@ impl G76Moves {
         self.rough_passes
     }
 
-    /// The path of this start is done: the next start, or the next pass.
+    /// The path of this start is done: the next start, or the next pass
+    /// (reading R-STARTS `pass-major`); the next pass of this start
+    /// (`start-major`).
     #[inline(never)]
     fn advance(&mut self) {
         let next = self.start.saturating_add(1);
-        if next < self.frame.starts {
+        if self.start_major.is_none() && next < self.frame.starts {
             self.begin_start(next);
         } else {
             self.next_pass();
         }
     }
 
-    /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
+    /// Moves on to the next planned pass (at start 1, or at the current
+    /// start under R-STARTS `start-major`), or to [`Stage::Done`]. Under
+    /// `start-major`, after the last pass of a start the plan restarts
+    /// from its first level for the next start (the schedule's state at
+    /// level 0, `Schedule::with_state`): constant memory, whatever L.
     fn next_pass(&mut self) {
-        let Some((pass, shift)) = self.plan_next() else {
+        let mut planned = self.plan_next();
+        if let (None, Some(min_phase)) = (planned, self.start_major) {
+            let next = self.start.saturating_add(1);
+            if next < self.frame.starts {
+                if let Some(s) = self.schedule.with_state(0, 0, min_phase) {
+                    self.schedule = s;
+                    self.stage = Stage::Rough { second_pending: false };
+                    (self.previous, self.number, self.finish, self.start) = (0, 0, 0, next);
+                    planned = self.plan_next();
+                }
+            }
+        }
+        let Some((pass, shift)) = planned else {
             self.stage = Stage::Done;
             return;
         };
         let path = self.frame.path(pass.depth, shift);
         self.walk.load(path, pass, StartAngle::ZERO, self.frame.home);
-        self.begin_start(0);
+        // start < L ≤ 999; 0 under `pass-major`.
+        self.begin_start(if self.start_major.is_some() { self.start } else { 0 });
     }
 
     /// Starts the path of the current pass for start `start` (0-based).
