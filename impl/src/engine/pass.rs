@@ -353,9 +353,7 @@ impl Walk {
         else {
             return None;
         };
-        let Some(&motion) = self.motions.get(usize::from(m)) else {
-            return None;
-        };
+        let &motion = self.motions.get(usize::from(m))?;
         // i < len ≤ 6.
         self.next = i + 1;
         Some(Move { motion, to: Point::new(x, z), role, pass: Some(self.pass) })
