@@ -567,11 +567,12 @@ fn one_pass_schedule() {
     }
 }
 
-/// d = k: nothing to rough (reading R-NOROUGH); the finishing passes remove
-/// d at depth k from the Z of depth 0.
+/// d = k: nothing to rough (reading R-NOROUGH `none`); the finishing passes
+/// remove d at depth k from the Z of depth 0.
 #[test]
 fn allowance_equals_height() {
-    let c = G76Cycle { finishing_allowance: 3680, ..m68x6() };
+    let none = cycleref::CycleReadings { one_rough_at_zero: false, ..m68x6().readings };
+    let c = G76Cycle { finishing_allowance: 3680, readings: none, ..m68x6() };
     let moves = same(&c).unwrap();
     assert_eq!(
         passes(&moves),
