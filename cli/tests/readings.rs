@@ -41,7 +41,10 @@ fn readings_lists_one_line_per_reading() {
             "R-LCNC-READER",
             "R-G92Q",
             "R-G75ALLOW",
-            "R-G75P"
+            "R-G75P",
+            "R-NOROUGH",
+            "R-DEPTH",
+            "R-STARTS"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -59,13 +62,19 @@ fn readings_lists_one_line_per_reading() {
             "R-G78CENTRE",
             "R-LEADIN",
             "R-INFEED",
-            "R-G92Q"
+            "R-G92Q",
+            "R-NOROUGH",
+            "R-DEPTH",
+            "R-STARTS"
         ],
         "{gsk988}"
     );
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-INFEED\tright-first* | left-first\t[gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-NOROUGH\tnone | one-at-zero*\t[fanuc,gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-DEPTH\tprevious-plus-min* | formula\t[gsk980,gsk988]\t"), "{gsk988}");
+    assert!(gsk988.contains("R-STARTS\tpass-major* | start-major\t[fanuc,gsk980,gsk988]\t"), "{gsk988}");
 }
 
 #[test]

@@ -691,7 +691,8 @@ typedef struct CyclerefError {
  * each pass parallel to C→D until D–E (R-END `parallel`), J clamped at the
  * retract (R-RUNOUT), an X-long run-out into the work refused (R-XRUNOUT),
  * the long axis by the displacements (R-LONG988 is a 988TA G92/G78
- * reading, which a G76 does not take).
+ * reading, which a G76 does not take), one rough pass at depth 0 when d =
+ * k (R-NOROUGH `one-at-zero`).
  */
 typedef struct CyclerefG76Params {
     /**

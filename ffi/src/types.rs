@@ -474,7 +474,8 @@ impl CyclerefMove {
 /// each pass parallel to C→D until D–E (R-END `parallel`), J clamped at the
 /// retract (R-RUNOUT), an X-long run-out into the work refused (R-XRUNOUT),
 /// the long axis by the displacements (R-LONG988 is a 988TA G92/G78
-/// reading, which a G76 does not take).
+/// reading, which a G76 does not take), one rough pass at depth 0 when d =
+/// k (R-NOROUGH `one-at-zero`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct CyclerefG76Params {
@@ -654,9 +655,11 @@ impl CyclerefG76Params {
             lead,
             run_out,
             pass_limit: if self.pass_limit == 0 { DEFAULT_PASS_LIMIT } else { self.pass_limit },
-            // R-END `parallel`: the default on every profile.
+            // R-END `parallel` and R-NOROUGH `one-at-zero`: the defaults on
+            // every profile.
             readings: cycleref::CycleReadings {
                 pass_end: cycleref::readings::PassEnd::Parallel,
+                one_rough_at_zero: true,
                 ..cycleref::CycleReadings::DEFAULT
             },
         })

@@ -83,7 +83,12 @@ impl StartSpacing {
     /// The spacing of `starts` starts (`starts` ≥ 1; 0 counts as 1).
     #[must_use]
     pub const fn new(starts: u32) -> StartSpacing {
-        let l = if starts == 0 { 1 } else { starts as u64 };
+        if starts <= 1 {
+            // gcd(360 000, 1) = 1: one start (the common case) without
+            // Stein's loop.
+            return StartSpacing { step: FULL_TURN_MILLIDEGREES as u32, den: 1 };
+        }
+        let l = starts as u64;
         let g = gcd(FULL_TURN_MILLIDEGREES, l);
         // g divides both, so the quotients fit u32 (≤ 360 000 and ≤ L).
         #[allow(clippy::cast_possible_truncation)]

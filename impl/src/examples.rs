@@ -44,9 +44,11 @@ pub const M68X6: G76Cycle = G76Cycle {
     run_out: RunOut::Chamfer { tenths_of_lead: 5, angle_degrees: 45, long: None },
     pass_limit: DEFAULT_PASS_LIMIT,
     // The gsk988 profile's readings: R-END `parallel` (a straight thread:
-    // the same moves as `travel-i`).
+    // the same moves as `travel-i`), R-NOROUGH `one-at-zero` (d < k here:
+    // the same moves as `none`).
     readings: crate::CycleReadings {
         pass_end: crate::readings::PassEnd::Parallel,
+        one_rough_at_zero: true,
         ..crate::CycleReadings::DEFAULT
     },
 };

@@ -56,9 +56,6 @@ pub static PLAN_NEXT: Site = Site::new("G76Moves::plan_next: stages");
 /// `G76Moves::next`: passes and starts moved on to before the next move.
 #[cfg(feature = "loop-counters")]
 pub static G76_NEXT: Site = Site::new("G76Moves::next: passes and starts");
-/// `engine::pass::Walk::next_move`: path steps skipped to the next move.
-#[cfg(feature = "loop-counters")]
-pub static PASS_WALK: Site = Site::new("pass::Walk::next_move: steps");
 /// `G92Moves::next`: starts moved on to before the next move.
 #[cfg(feature = "loop-counters")]
 pub static G92_NEXT: Site = Site::new("G92Moves::next: starts");
@@ -118,13 +115,12 @@ pub static G75_CONTOUR: Site = Site::new("g75: contour points");
 
 /// Every site.
 #[cfg(feature = "loop-counters")]
-pub static SITES: [&Site; 22] = [
+pub static SITES: [&Site; 21] = [
     &ISQRT_U128,
     &ISQRT_U64,
     &PASS_COUNT,
     &PLAN_NEXT,
     &G76_NEXT,
-    &PASS_WALK,
     &G92_NEXT,
     &GCD,
     &G32_VALIDATE,

@@ -87,6 +87,27 @@ pub struct CycleReadings {
     /// flank its level starts on, so that `left-first` is the mirror image
     /// of `right-first` about the left flanks' mirror line.
     pub left_first: bool,
+    /// Reading R-NOROUGH: a cycle with d = k (nothing left to rough) cuts
+    /// one rough pass at depth k - d = 0, at B (shift 0), before its
+    /// finishing passes when `true` (`one-at-zero`: 988TA and 980TDi
+    /// steps ①-⑧ always cut a first rough pass, and DOMAIN decision 3
+    /// "if Δd >= k - d there is exactly one rough pass, at k - d"); no
+    /// rough pass when `false` (`none`, the reading before issue 34).
+    pub one_rough_at_zero: bool,
+    /// Reading R-DEPTH: the rough depths of G76 and G78 递减 follow the
+    /// 988TA page's formula when `true` (`formula`, step (5) "切深取（√n×△d）、
+    /// （√(n-1)×△d+△dmin）中的较大值"): `D(n) = min(k - d, max(round(Δd √n),
+    /// round(Δd √(n-1)) + m, D(n-1) + 1))`; DOMAIN decision 3 when `false`
+    /// (`previous-plus-min`, the default): `min(k - d, max(round(Δd √n),
+    /// D(n-1) + m))`, `m = max(Δdmin, 1)`. G78's equal steps are not
+    /// concerned.
+    pub depth_formula: bool,
+    /// Reading R-STARTS: the order of the passes of a multi-start G76 or
+    /// G78 (L > 1). Every pass for all starts before the next pass when
+    /// `false` (`pass-major`, the default); all passes of start 1 (rough
+    /// and finishing), then all of start 2, … when `true` (`start-major`).
+    /// The same moves, in another order; no page gives the order.
+    pub start_major: bool,
 }
 
 impl CycleReadings {
@@ -98,7 +119,11 @@ impl CycleReadings {
     /// left flanks mirrored about the form's centre line, G78's centre line
     /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
     /// every profile), each level of the alternating modes right flank first
-    /// (R-INFEED `right-first`).
+    /// (R-INFEED `right-first`), no rough pass when d = k (R-NOROUGH
+    /// `none`, the reading before issue 34: the reader resolves
+    /// `one-at-zero`, the default on every profile), the depths of DOMAIN
+    /// decision 3 (R-DEPTH `previous-plus-min`), every pass for all starts
+    /// before the next (R-STARTS `pass-major`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -108,6 +133,9 @@ impl CycleReadings {
         centre_under_b: false,
         lead_in_same_z: true,
         left_first: false,
+        one_rough_at_zero: false,
+        depth_formula: false,
+        start_major: false,
     };
 }
 

@@ -22,6 +22,9 @@ use crate::windows::{
 use cycleref::engine::arith;
 
 /// One body per infeed mode of a G76 property: `$name_d0` … `$name_alternating`.
+/// Every G76 body pins the readings at `CycleReadings::DEFAULT` (its cycles
+/// come from `harness::any_cycle`, whose doc says which values that is and
+/// why the properties are stated for them).
 macro_rules! per_infeed {
     ($what:literal, $($name:ident = $mode:literal),* => |$w:ident| $body:expr, $window:expr) => {
         $(

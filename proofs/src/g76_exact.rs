@@ -20,6 +20,16 @@
 //! this restatement and this restatement against the decimal reference, so
 //! the restatement is held to the reference over every cycle the shim runs
 //! (`proofs/tests/harnesses.rs`, `proofs/tests/g78.rs`).
+//!
+//! *Readings.* It restates R-LEADIN's two values and every other reading
+//! at `CycleReadings::DEFAULT` only (R-END `travel-i`, R-RUNOUT clamped,
+//! R-XRUNOUT `refuse`, the long axis by the displacements, left flanks
+//! about zc, centre passes at zc, R-INFEED `right-first`, R-NOROUGH
+//! `none`, R-DEPTH `previous-plus-min`, R-STARTS `pass-major`): the
+//! harnesses build their cycles under those values
+//! (`crate::harness::any_cycle`, which says why), and the other values are
+//! compared engine against reference by the differential tests
+//! (`proofs/tests/engine_equals_spec.rs`).
 
 use cycleref::angle::StartAngle;
 use cycleref::error::{CycleError, Field};

@@ -224,6 +224,34 @@ pub const PLAIN_CYCLE: G76Cycle = G76Cycle {
 ///
 /// The depth words (k, Δd, Δdmin, d) are chosen first, in that order, so the
 /// enumeration of a small domain walks the schedule's inputs fastest.
+///
+/// *Readings pinned.* Every cycle takes `CycleReadings::DEFAULT`: R-RUNOUT
+/// clamped, R-XRUNOUT `refuse`, R-END `travel-i`, R-LONG displacement (no
+/// R-LONG988 `table`), R-G78LEFT `mirror-form-centre`, R-G78CENTRE
+/// `form-centre`, R-LEADIN `same-z`, R-INFEED `right-first`, R-NOROUGH
+/// `none`, R-DEPTH `previous-plus-min`, R-STARTS `pass-major`. The
+/// harnesses do not take the readings as inputs because several
+/// properties are stated for these values and are false, by design, under
+/// the others (each checked through the shim with an engine that swaps
+/// the reading in): P1's depths strictly increasing from 0 fail under
+/// R-NOROUGH `one-at-zero` (the pass at depth 0 with d = k cuts 0), its
+/// "every rough cut is at least min(Δdmin, what remains)" under R-DEPTH
+/// `formula` (its cuts after the first clamped level fall below Δdmin,
+/// which is what tells it apart), and P3's "no rough pass after a
+/// finishing pass" under R-STARTS `start-major` (each start begins again
+/// at the first level); P5 measures every pass against
+/// zc, the finishing Z under these values only (R-G78LEFT `mirror-b` and
+/// R-G78CENTRE `under-b` move the finishing passes with the last rough
+/// pass, R-FINISH); P6's
+/// integer restatement (`crate::g76_exact`) restates R-LEADIN's two values
+/// and the others at these values only. Each reading's other values are
+/// held instead by the differential tests, which compare the engine with
+/// the decimal reference under every combination of every reading
+/// (`proofs/tests/engine_equals_spec.rs`,
+/// `engine_equals_spec_under_every_reading`), and by the hand-worked tests
+/// of `spec/tests/readings.rs`. A symbolic bit per reading would also
+/// double Kani's paths through the schedule and the pass planning for
+/// each reading.
 pub fn any_cycle(d: &Domain) -> G76Cycle {
     let pick = |r: (i64, i64)| any_in(r.0, r.1);
     let count = |r: (i64, i64)| u32::try_from(any_in(r.0, r.1)).unwrap_or(0);

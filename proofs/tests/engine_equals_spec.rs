@@ -326,12 +326,14 @@ proptest! {
     /// The engine equals the reference under every value of the readings
     /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
     /// three pass ends, R-LONG988's table, R-G78LEFT, R-G78CENTRE,
-    /// R-LEADIN, R-INFEED's order), in every combination.
+    /// R-LEADIN, R-INFEED's order, R-NOROUGH, R-DEPTH, R-STARTS), in every
+    /// combination.
     #[test]
     fn engine_equals_spec_under_every_reading(
         c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
         left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
-        left_first in any::<bool>(),
+        left_first in any::<bool>(), one_at_zero in any::<bool>(), formula in any::<bool>(),
+        start_major in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -344,6 +346,9 @@ proptest! {
                 centre_under_b: centre_b,
                 lead_in_same_z: same_z,
                 left_first,
+                one_rough_at_zero: one_at_zero,
+                depth_formula: formula,
+                start_major,
             },
             ..c
         };
@@ -388,9 +393,18 @@ proptest! {
     }
 
     /// The up-front count equals the reference's: its error, or the number of
-    /// rough passes the reference plans.
+    /// rough passes the reference plans (under either R-NOROUGH and R-DEPTH
+    /// value).
     #[test]
-    fn rough_pass_count_equals_spec(c in cycle()) {
+    fn rough_pass_count_equals_spec(c in cycle(), one_at_zero in any::<bool>(), formula in any::<bool>()) {
+        let c = G76Cycle {
+            readings: cycleref::CycleReadings {
+                one_rough_at_zero: one_at_zero,
+                depth_formula: formula,
+                ..c.readings
+            },
+            ..c
+        };
         let spec = c.validate().and_then(|()| cycleref_spec::g76::planned_passes(&c)).map(|plan| {
             u64::try_from(plan.iter().filter(|p| p.pass.kind == PassKind::Rough).count()).unwrap()
         });
@@ -553,11 +567,12 @@ fn one_pass_schedule() {
     }
 }
 
-/// d = k: nothing to rough (reading R-NOROUGH); the finishing passes remove
-/// d at depth k from the Z of depth 0.
+/// d = k: nothing to rough (reading R-NOROUGH `none`); the finishing passes
+/// remove d at depth k from the Z of depth 0.
 #[test]
 fn allowance_equals_height() {
-    let c = G76Cycle { finishing_allowance: 3680, ..m68x6() };
+    let none = cycleref::CycleReadings { one_rough_at_zero: false, ..m68x6().readings };
+    let c = G76Cycle { finishing_allowance: 3680, readings: none, ..m68x6() };
     let moves = same(&c).unwrap();
     assert_eq!(
         passes(&moves),
@@ -565,6 +580,26 @@ fn allowance_equals_height() {
     );
     assert_eq!(moves.first().map(|m| m.to), Some(Point::new(60_640, 10_000)));
     assert_eq!(rough_pass_count(&c), Ok(0));
+    // Under R-NOROUGH `one-at-zero`: first one rough pass at depth k - d =
+    // 0 (cut 0), at B: X = 60.640 + 2·3.680 = X68.000, Z10 (shift 0); then
+    // the same finishing passes.
+    let one = G76Cycle { readings: cycleref::CycleReadings { one_rough_at_zero: true, ..c.readings }, ..c };
+    let moves = same(&one).unwrap();
+    assert_eq!(
+        passes(&moves),
+        vec![
+            (PassKind::Rough, 1, 0, 0, Flank::Right),
+            (PassKind::Finish, 1, 3680, 3680, Flank::Centre),
+            (PassKind::Finish, 2, 3680, 0, Flank::Centre)
+        ]
+    );
+    assert_eq!(moves.first().map(|m| m.to), Some(Point::new(68_000, 10_000)));
+    assert_eq!(rough_pass_count(&one), Ok(1));
+    // With no finishing pass, the rough pass alone: approach, cut, run-out
+    // (r = 05: K = 0.5 × 6 = 3, J = K tan 45° = 3, X68 + 2·3 = X74),
+    // retract, return.
+    let one = G76Cycle { finishing_passes: 0, ..one };
+    assert_eq!(same(&one).map(|m| m.len()), Ok(5));
     // And with no finishing pass either: no move at all.
     let c = G76Cycle { finishing_passes: 0, ..c };
     assert_eq!(same(&c), Ok(Vec::new()));
@@ -884,7 +919,7 @@ fn huge_lead_is_refused_by_both() {
 fn constant_size_and_fused() {
     let size = std::mem::size_of::<G76Moves>();
     eprintln!("size_of::<G76Moves>() = {size}");
-    assert_eq!(size, 448, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
+    assert_eq!(size, 600, "G76Moves is now {size} bytes: update the module docs of cycleref::engine::g76");
     let mut it = expand_g76(&m68x6()).unwrap();
     assert_eq!(it.by_ref().count(), 30);
     assert_eq!(it.next(), None);

@@ -165,6 +165,14 @@ pub fn effective_min_cut(min_cut: Decimal, u: Units) -> Decimal {
 /// 本次粗车的切削量"): `Dn = min(k - d, D(n-1) + max(Δd, Δdmin, 1
 /// increment))`.
 ///
+/// Under reading R-DEPTH `formula` (988TA G76 step (5), 980TDi step ⑤:
+/// "切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值", on every level):
+/// `Dn = min(k - d, max(round(Δd √n), round(Δd √(n-1)) + m, D(n-1) + 1
+/// increment))`. The page's Δdmin is taken as `m = max(Δdmin, 1
+/// increment)`, which changes nothing: with Δdmin = 0, `round(Δd √(n-1)) +
+/// 1 ≤ D(n-1) + 1`, the last term, since every level is at least as deep
+/// as the law.
+///
 /// Restated in integers: `proofs/src/g76_exact.rs`, `next_depth`.
 #[must_use]
 pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
@@ -173,16 +181,69 @@ pub fn next_depth(c: &G76Cycle, n: u64, previous: Decimal) -> Decimal {
     let first = from_increments(c.first_depth, u);
     let min = effective_min_cut(from_increments(c.min_cut, u), u);
     match c.depth_mode {
+        DepthMode::Decreasing if c.readings.depth_formula => {
+            let by_formula = depth_by_law(first, n - 1, u) + min;
+            last.min(depth_by_law(first, n, u).max(by_formula).max(previous + from_increments(1, u)))
+        }
         DepthMode::Decreasing => last.min(depth_by_law(first, n, u).max(previous + min)),
         DepthMode::Equal => last.min(previous + first.max(min)),
     }
 }
 
+/// Reading R-DEPTH `formula`: the number of rough levels of a schedule with
+/// Δd = `q`, `m = max(Δdmin, 1)` and `k - d` = `last` (increments, `last >
+/// 0`), in closed form. With `N(n) = round(q √n)` (`N(0) = 0`), `E(n) =
+/// max(N(n), N(n-1) + m)` and `F(n) = max(E(n), F(n-1) + 1)` (`F(0) = 0`),
+/// the levels are `min(k - d, F(n))` until the first `F(n) ≥ k - d`.
+///
+/// * `δ(j) = q (√j - √(j-1))` decreases; `N(j) - N(j-1)` lies strictly
+///   between `δ(j) - 1` and `δ(j) + 1`, so it is at least 1 while `δ(j) ≥
+///   1` and at most 1 after. `δ(j) ≥ 1 ⟺ √j + √(j-1) ≤ q ⟺ j ≤ (q² + 1)² /
+///   (4q²)` (square twice; both sides non-negative there), so `j1 =
+///   ⌊(q² + 1)² / 4q²⌋` is the last such `j`.
+/// * `E(j) - E(j-1) ≥ min(m, N(j-1) - N(j-2)) ≥ 1` for `j ≤ p = j1 + 1`
+///   (`E(1) = max(q, m) ≥ 1`, `E(2) ≥ q + m ≥ E(1) + 1`), and `E(j) - E(j-1)
+///   ≤ max(N(j) - N(j-1), N(j-1) - N(j-2)) ≤ 1` for `j > p`.
+/// * `F(n) = max over j ≤ n of E(j) + n - j`; `E(j) - j` does not decrease
+///   up to `p` and does not increase after, so `F(n) = E(n)` for `n ≤ p`
+///   and `F(n) = E(p) + n - p` for `n ≥ p`.
+/// * Hence the count is the first `n` with `E(n) ≥ k - d`, `min(n_N(k -
+///   d), 1 + n_N(k - d - m))` with `n_N(v) = ⌈(2v - 1)² / 4q²⌉` the first
+///   `n` with `N(n) ≥ v` (`round(q √n) ≥ v ⟺ 4q²n ≥ (2v - 1)²`; 0 for `v ≤
+///   0`), when that is at most `p`; otherwise `p + (k - d) - E(p)`.
+///
+/// Held against counting the levels one by one (`spec/tests/readings.rs`,
+/// `depth_formula_count_is_exact`).
+///
+/// Twin: `impl/src/engine/schedule.rs`, `formula_levels`.
+#[must_use]
+pub fn formula_level_count(q: i64, m: i64, last: i64) -> u64 {
+    let q2 = u128::from(q.unsigned_abs()).pow(2);
+    let law = |n: u128| i128::try_from(round_sqrt(q2 * n)).unwrap_or(i128::MAX);
+    let first_at_least = |v: i64| -> u128 {
+        if v <= 0 {
+            return 0;
+        }
+        u128::from((2 * v - 1).unsigned_abs()).pow(2).div_ceil(4 * q2)
+    };
+    let p = (q2 + 1).pow(2) / (4 * q2) + 1;
+    let by_e = first_at_least(last).min(1 + first_at_least(last - m));
+    let levels = if by_e <= p {
+        by_e
+    } else {
+        // E(p) < k - d < 2^30.
+        let e_p = law(p).max(law(p - 1) + i128::from(m));
+        p + u128::try_from(i128::from(last) - e_p).unwrap_or(0)
+    };
+    u64::try_from(levels).unwrap_or(u64::MAX)
+}
+
 /// The depths of the rough levels, in order: they strictly increase and the
 /// last is exactly `k - d` (seed 000: "X 轴切深 = 牙高 P(k) − 精车切削量
 /// R(d)"; 988TA note 5: "当设定第一次螺纹切削深度大于螺纹总切削深度时，只进行
-/// 一次粗车"). With `d = k` there is nothing to rough and the list is empty
-/// (reading R-NOROUGH).
+/// 一次粗车"). With `d = k` (k - d = 0) the list is one level at 0 under
+/// reading R-NOROUGH `one-at-zero` (steps ①-⑤ always cut a first rough
+/// pass, "按切深（k-d）进刀到 Bf 点"), and empty under `none`.
 ///
 /// # Errors
 ///
@@ -197,7 +258,9 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
     let mut levels = Vec::new();
     let mut depth = Decimal::ZERO;
     let mut n = 0_u64;
-    while depth < last {
+    // Reading R-NOROUGH `one-at-zero`: the first level is cut even when it
+    // is already at k - d = 0.
+    while depth < last || (n == 0 && c.readings.one_rough_at_zero) {
         n += 1;
         depth = next_depth(c, n, depth);
         levels.push(depth);
@@ -211,7 +274,8 @@ pub fn rough_levels(c: &G76Cycle) -> Result<Vec<Decimal>, CycleError> {
 /// every level adds exactly Δdmin (proved in docs/INTERPRETATIONS.md and by
 /// the proof harnesses), so the count is `n - 1 + ceil((k - d - D(n-1)) /
 /// Δdmin)`. If the law alone runs past the limit, the count is only known
-/// to exceed it.
+/// to exceed it. Under reading R-DEPTH `formula` the count is in closed
+/// form ([`formula_level_count`]) and always exact.
 ///
 /// Twin: `impl/src/engine/g76.rs`, `check_pass_count`.
 ///
@@ -230,6 +294,14 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
         let step = to_increments(first.max(min), u);
         let rest = to_increments(last, u);
         u64::try_from(ceil_div(i128::from(rest), i128::from(step))).unwrap_or(u64::MAX)
+    } else if c.readings.depth_formula {
+        // Reading R-DEPTH `formula`: exact, in closed form.
+        let last = to_increments(last, u);
+        if last > 0 {
+            formula_level_count(c.first_depth, to_increments(min, u), last)
+        } else {
+            0
+        }
     } else {
         loop {
             if depth >= last {
@@ -252,6 +324,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<(), CycleError> {
             }
         }
     };
+    // Reading R-NOROUGH `one-at-zero`: one level at 0 when k - d = 0 (the
+    // only case with no level above).
+    let levels = levels.max(u64::from(c.readings.one_rough_at_zero));
     let passes = passes_of(levels);
     if passes > limit {
         return Err(CycleError::TooManyPasses { passes, exact: true, limit: c.pass_limit });
@@ -538,7 +613,8 @@ fn pass_end_point(
 /// Expands a G76 cycle into moves.
 ///
 /// Each pass, for each start (reading R-STARTS: all starts at one depth
-/// before the next depth), follows seed 000 "执行过程" (4)-(5) and 988TA
+/// before the next depth under `pass-major`, all passes of one start
+/// before the next start under `start-major`), follows seed 000 "执行过程" (4)-(5) and 988TA
 /// steps ①-⑩:
 ///
 /// 1. rapid from A to Bn, X and Z together ("如果 a≠0，X 轴和 Z 轴同时移动，
@@ -690,10 +766,18 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
         units: u,
     };
     let starts = c.starts;
+    // Reading R-STARTS: every pass for all starts (`pass-major`), or every
+    // pass of one start before the next start (`start-major`).
+    let start_major = c.readings.start_major;
     let (mut index, mut start) = (0_usize, 0_u32);
     Ok(PassStream::new(move |moves: &mut Vec<Move>| {
-        if start == starts {
+        if start_major && index == plan.len() {
+            (index, start) = (0, start + 1);
+        } else if !start_major && start == starts {
             (index, start) = (index + 1, 0);
+        }
+        if start >= starts {
+            return false;
         }
         let Some(planned) = plan.get(index) else { return false };
         {
@@ -709,7 +793,11 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
             let lead_in_start = lead_in.map(|lz| (bn.0 + s * xf * e, bn.1 - t * lz));
             pass_path(moves, &frame, bn, end, lead_in_start, pass, angle);
         }
-        start += 1;
+        if start_major {
+            index += 1;
+        } else {
+            start += 1;
+        }
         true
     }))
 }

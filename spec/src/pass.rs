@@ -107,7 +107,7 @@ impl<F: FnMut(&mut Vec<Move>) -> bool> Iterator for PassStream<F> {
 /// thread to the end line at `end`, the run-out, the retract to the X of A
 /// and the return to A, each carrying `pass`.
 ///
-/// Twin: `impl/src/engine/pass.rs`, `Frame::path` and `Walk::next_move`.
+/// Twin: `impl/src/engine/pass.rs`, `Frame::path` and `Walk::new`.
 ///
 /// Restated in integers: `proofs/src/g76_exact.rs`, `pass_path`.
 pub fn pass_path(

@@ -217,6 +217,58 @@ pub enum G75PDigits {
     LeftAligned,
 }
 
+/// Reading R-NOROUGH: whether a G76 or G78 with d = k (nothing left to
+/// rough, k - d = 0) cuts a rough pass.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum NoRough {
+    /// `none`: no rough pass, the m finishing passes at the Z of B (the
+    /// reading before issue 34; the pass at depth 0 cuts only the crest
+    /// line).
+    None,
+    /// `one-at-zero` (default on every profile): one rough pass at depth
+    /// k - d = 0, at B (shift 0), then the finishing passes. 988TA and
+    /// 980TDi steps ①-⑧ always cut a first rough pass ("⑤ … 如果切深大于
+    /// 或等于（k-d），按切深（k-d）进刀到 Bf 点，转⑥执行最后一次螺纹粗车"), R(d)
+    /// is measured from the last rough pass Bf ("螺纹精车切入点 Be 与最后一次
+    /// 螺纹粗车切入点 Bf 的 X 轴绝对坐标的差值"), and DOMAIN decision 3 says
+    /// "if Δd >= k - d there is exactly one rough pass, at k - d".
+    #[default]
+    OneAtZero,
+}
+
+/// Reading R-DEPTH: the depth of a rough level of G76 (and G78 递减) once
+/// the minimum cut Δdmin takes over.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum DepthLaw {
+    /// `previous-plus-min` (default, DOMAIN decision 3, normative): `Dn =
+    /// min(k - d, max(round(Δd √n), D(n-1) + max(Δdmin, 1)))`: seed 000
+    /// 注意 1 "下一刀的 X 轴切深 … = 最小切削量 + 前一刀的切深", the 980TDi
+    /// "以△dmin 作为本次以及后续粗车的切削量，后续的进刀深度将不再按公式计算".
+    #[default]
+    PreviousPlusMin,
+    /// `formula`: `Dn = min(k - d, max(round(Δd √n), round(Δd √(n-1)) +
+    /// Δdmin, D(n-1) + 1))`: the 988TA G76 step (5) and the 980TDi step ⑤
+    /// "切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值", the 988TA's Q(Δdmin)
+    /// "以△dmin 作为本次粗车的切削量，即：本次螺纹切深为 √(n-1)×△d+△dmin"; the
+    /// last term keeps every level at least one increment deeper.
+    Formula,
+}
+
+/// Reading R-STARTS: the order of the passes of a multi-start G76 or G78.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum StartsOrder {
+    /// `pass-major` (default): every pass for all starts, 0°, 360°/L, …,
+    /// before the next pass: the starts stay at the same depth, so no crest
+    /// between two starts is thinned by a start that is ahead.
+    #[default]
+    PassMajor,
+    /// `start-major`: all passes of start 1 (rough and finishing), then
+    /// all of start 2, …: each start cut as a single-start thread at its
+    /// angle. The same moves in another order; no page gives the order
+    /// (seed 000 L: "螺纹头数"; 988TA G32 Q: "指定 Q 的不同值可以切削出多头螺纹").
+    StartMajor,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -252,6 +304,12 @@ pub struct Readings {
     pub g75_allowance: G75Allowance,
     /// R-G75P.
     pub g75_p: G75PDigits,
+    /// R-NOROUGH.
+    pub no_rough: NoRough,
+    /// R-DEPTH.
+    pub depth_law: DepthLaw,
+    /// R-STARTS.
+    pub starts_order: StartsOrder,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -271,7 +329,9 @@ pub struct ReadingEntry {
     /// What it decides, in a few words.
     pub point: &'static str,
     /// Its values, the default first unless the default depends on the
-    /// profile ([`ReadingEntry::default_on`]).
+    /// profile or was changed on the text, the reading before issue 34
+    /// kept first ([`ReadingEntry::default_on`]: R-END, R-LONG988,
+    /// R-NOROUGH).
     pub values: &'static [ReadingValue],
     /// The profiles on which the choice changes anything.
     pub profiles: &'static [ProfileName],
@@ -279,13 +339,16 @@ pub struct ReadingEntry {
 
 impl ReadingEntry {
     /// The default value on `profile`: the first value, except where the
-    /// evidence decides another per profile (docs/INTERPRETATIONS.md,
-    /// R-END and R-LONG988).
+    /// evidence decides another (docs/INTERPRETATIONS.md, R-END and
+    /// R-LONG988 per profile, R-NOROUGH on every profile).
     #[must_use]
     pub fn default_on(&self, profile: ProfileName) -> &'static str {
         match self.id {
             "R-END" => pass_end_name(default_pass_end(profile)),
             "R-LONG988" => long988_name(default_long988(profile)),
+            // Decided on the text (docs/INTERPRETATIONS.md, R-NOROUGH): the
+            // first value is the reading before issue 34.
+            "R-NOROUGH" => "one-at-zero",
             _ => self.values.first().map_or("", |v| v.name),
         }
     }
@@ -541,6 +604,51 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-NOROUGH",
+        point: "a G76 or G78 with d = k (nothing left to rough)",
+        values: &[
+            ReadingValue {
+                name: "none",
+                source: "no rough pass, the finishing passes at B's Z (before issue 34; a pass at depth 0 cuts the crest line only)",
+            },
+            ReadingValue {
+                name: "one-at-zero",
+                source: "988TA/980TDi steps ①-⑧ always cut a first rough pass, to Bf at k-d; DOMAIN decision 3 \"if Δd >= k - d there is exactly one rough pass, at k - d\"",
+            },
+        ],
+        profiles: GSK,
+    },
+    ReadingEntry {
+        id: "R-DEPTH",
+        point: "the depth of a rough level of G76 and G78 递减 once the minimum cut takes over",
+        values: &[
+            ReadingValue {
+                name: "previous-plus-min",
+                source: "DOMAIN decision 3: D(n-1) + Δdmin (seed 000 注意 1 \"最小切削量 + 前一刀的切深\"; 980TDi \"本次以及后续粗车\")",
+            },
+            ReadingValue {
+                name: "formula",
+                source: "988TA/980TDi step (5) \"切深取（√n×△d）、（√(n-1)×△d+△dmin）中的较大值\" on every level",
+            },
+        ],
+        profiles: GSK_G78,
+    },
+    ReadingEntry {
+        id: "R-STARTS",
+        point: "the order of the passes of a multi-start G76 or G78 (L > 1)",
+        values: &[
+            ReadingValue {
+                name: "pass-major",
+                source: "every pass for all starts before the next pass: the starts stay at one depth (no page gives the order)",
+            },
+            ReadingValue {
+                name: "start-major",
+                source: "all passes of start 1, then of start 2, …: each start a single-start thread at its angle (no page gives the order)",
+            },
+        ],
+        profiles: GSK,
+    },
 ];
 
 impl Readings {
@@ -600,6 +708,18 @@ impl Readings {
                 G75PDigits::RightAligned => "right-aligned",
                 G75PDigits::LeftAligned => "left-aligned",
             },
+            "R-NOROUGH" => match self.no_rough {
+                NoRough::None => "none",
+                NoRough::OneAtZero => "one-at-zero",
+            },
+            "R-DEPTH" => match self.depth_law {
+                DepthLaw::PreviousPlusMin => "previous-plus-min",
+                DepthLaw::Formula => "formula",
+            },
+            "R-STARTS" => match self.starts_order {
+                StartsOrder::PassMajor => "pass-major",
+                StartsOrder::StartMajor => "start-major",
+            },
             _ => return None,
         };
         Some(v)
@@ -654,6 +774,12 @@ impl Readings {
             ("R-G75ALLOW", "magnitude") => self.g75_allowance = G75Allowance::Magnitude,
             ("R-G75P", "right-aligned") => self.g75_p = G75PDigits::RightAligned,
             ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
+            ("R-NOROUGH", "none") => self.no_rough = NoRough::None,
+            ("R-NOROUGH", "one-at-zero") => self.no_rough = NoRough::OneAtZero,
+            ("R-DEPTH", "previous-plus-min") => self.depth_law = DepthLaw::PreviousPlusMin,
+            ("R-DEPTH", "formula") => self.depth_law = DepthLaw::Formula,
+            ("R-STARTS", "pass-major") => self.starts_order = StartsOrder::PassMajor,
+            ("R-STARTS", "start-major") => self.starts_order = StartsOrder::StartMajor,
             _ => return Err(bad()),
         }
         Ok(())
@@ -725,6 +851,14 @@ impl Readings {
             centre_under_b: self.g78_centre == G78Centre::UnderB,
             lead_in_same_z: self.lead_in == LeadIn::SameZ,
             left_first: self.infeed_order == InfeedOrder::LeftFirst,
+            one_rough_at_zero: self.no_rough == NoRough::OneAtZero,
+            // R-DEPTH: the formula is the GSK pages' (988TA, 980TDi step
+            // (5)); the FANUC notes (seed 004) give only the fixed
+            // increment "以固定增量d min … 直至粗加工结束", so fanuc keeps
+            // DOMAIN decision 3 under either value.
+            depth_formula: self.depth_law == DepthLaw::Formula
+                && matches!(profile, ProfileName::Gsk980 | ProfileName::Gsk988),
+            start_major: self.starts_order == StartsOrder::StartMajor,
         }
     }
 }

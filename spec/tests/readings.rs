@@ -410,7 +410,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -900,4 +900,223 @@ fn end_and_long988_defaults_and_listing() {
     assert!(all.contains("\nR-LONG988\tdisplacement | table*\t[gsk988]\t"), "{all}");
     let gsk980 = Listing { profile: Some(ProfileName::Gsk980) }.to_string();
     assert!(gsk980.contains("R-END") && !gsk980.contains("R-LONG988"));
+}
+
+/// R-NOROUGH (sweep entry 4), gsk988: `G00 X80 Z10` / `G76 P010060 Q0
+/// R0.5` / `G76 X60 Z-60 P0.5 Q0.2 F2`: d = k = 0.5, so k - d = 0; m = 1,
+/// r = 00 (no run-out: J and K not programmed, K = 0 × 0.1 × 2 = 0), a =
+/// 60. B = X60 + 2·0.5 = X61 at Z10 (C = D's X, i = 0).
+const NO_ROUGH: &str = "M3 S300\nG00 X80 Z10\nG76 P010060 Q0 R0.5\nG76 X60 Z-60 P0.5 Q0.2 F2\nM30\n";
+
+/// `one-at-zero` (default): steps ①-④ cut a first rough pass ("① 从起点快速
+/// 移动到 B1"), and step ⑤ stops the roughing at depth k - d = 0 ("如果切深
+/// 大于或等于（k-d），按切深（k-d）进刀到 Bf 点"): one rough pass at depth 0,
+/// shift round(0 × tan 30°) = 0, at B = (X61, Z10), cut to Z-60 (X61: no
+/// taper), ③ X to E = X80, ④ Z to A; then ⑨ the finishing pass at depth
+/// k = 0.5 from the Z of the last rough pass (Z10): X60.
+#[test]
+fn no_rough_one_pass_at_zero_by_default() {
+    let finishing = [
+        (Role::Approach, Point::new(60_000, 10_000)),
+        (Role::Cut, Point::new(60_000, -60_000)),
+        (Role::Retract, Point::new(80_000, -60_000)),
+        (Role::Return, Point::new(80_000, 10_000)),
+    ];
+    let mut rough = vec![
+        (Role::Approach, Point::new(61_000, 10_000)),
+        (Role::Cut, Point::new(61_000, -60_000)),
+        (Role::Retract, Point::new(80_000, -60_000)),
+        (Role::Return, Point::new(80_000, 10_000)),
+    ];
+    let got = run(NO_ROUGH, &machine(ProfileName::Gsk988, &[])).unwrap();
+    rough.extend(finishing);
+    assert_eq!(ends(&got), rough);
+    assert_eq!(got[0].pass.map(|p| (p.depth, p.cut)), Some((0, 0)));
+    // `none`: the finishing pass alone.
+    let got = run(NO_ROUGH, &machine(ProfileName::Gsk988, &["R-NOROUGH=none"])).unwrap();
+    assert_eq!(ends(&got), finishing);
+    // The default is `one-at-zero` on every profile with G76.
+    let r = Readings::default();
+    for p in [ProfileName::Fanuc, ProfileName::Gsk980, ProfileName::Gsk988] {
+        assert_eq!(r.get_on("R-NOROUGH", p), Some("one-at-zero"));
+        assert!(r.for_cycle(p, false).one_rough_at_zero);
+    }
+}
+
+/// R-DEPTH `formula` (sweep entry 3), gsk988 IS-B: `G00 X80 Z10` / `G76
+/// P010060 Q0.3 R0` / `G76 X60 Z-60 P3 Q1 F6`: Δd = 1000, Δdmin = 300,
+/// k - d = 3000 (increments of 0.001 mm), P(m) = 01: one finishing pass.
+/// By hand, Nn = round(1000 √n) and the larger of Nn and N(n-1) + 300
+/// (step (5)):
+///
+/// | n | Nn | N(n-1) + 300 | Dn |
+/// |---|---|---|---|
+/// | 1 | 1000 | 0 + 300 | 1000 |
+/// | 2 | 1414 (1414.21) | 1300 | 1414 |
+/// | 3 | 1732 (1732.05) | 1714 | 1732 |
+/// | 4 | 2000 | 2032 | 2032 |
+/// | 5 | 2236 (2236.07) | 2300 | 2300 |
+/// | 6 | 2449 (2449.49) | 2536 | 2536 |
+/// | 7 | 2646 (2645.75) | 2749 | 2749 |
+/// | 8 | 2828 (2828.43) | 2946 | 2946 |
+/// | 9 | 3000 | 3128 | min(3000, 3128) = 3000, k - d |
+///
+/// 9 levels. DOMAIN decision 3 (`previous-plus-min`, the default) adds 300
+/// to the previous depth once the minimum cut takes over at n = 4: 1000,
+/// 1414, 1732, 2032, 2332, 2632, 2932, then 3000: 8 levels.
+const DEPTH_988: &str = "M3 S300\nG00 X80 Z10\nG76 P010060 Q0.3 R0\nG76 X60 Z-60 P3 Q1 F6\nM30\n";
+
+fn rough_depths(moves: &[Move]) -> Vec<i64> {
+    let mut out: Vec<i64> = Vec::new();
+    for p in moves.iter().filter_map(|m| m.pass) {
+        if p.kind == cycleref::moves::PassKind::Rough && out.last() != Some(&p.depth) {
+            out.push(p.depth);
+        }
+    }
+    out
+}
+
+#[test]
+fn depth_formula_on_gsk988() {
+    let formula = run(DEPTH_988, &machine(ProfileName::Gsk988, &["R-DEPTH=formula"])).unwrap();
+    assert_eq!(rough_depths(&formula), [1000, 1414, 1732, 2032, 2300, 2536, 2749, 2946, 3000]);
+    let default = run(DEPTH_988, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(rough_depths(&default), [1000, 1414, 1732, 2032, 2332, 2632, 2932, 3000]);
+    // The same words on the 980TDi (P and Q in increments without a
+    // point: P3000 Q1000, Q300) follow the formula too; on fanuc the value
+    // changes nothing (seed 004: "以固定增量d min … 直至粗加工结束").
+    let gsk980 = DEPTH_988.replace("Q0.3", "Q300").replace("P3 Q1", "P3000 Q1000");
+    let got = run(&gsk980, &machine(ProfileName::Gsk980, &["R-DEPTH=formula"])).unwrap();
+    assert_eq!(rough_depths(&got), [1000, 1414, 1732, 2032, 2300, 2536, 2749, 2946, 3000]);
+    // FANUC: a coordinate without a decimal point is in increments.
+    let fanuc = "M3 S300\nG00 X80. Z10.\nG76 P010060 Q300 R0\nG76 X60. Z-60. P3000 Q1000 F6.\nM30\n";
+    let a = run(fanuc, &machine(ProfileName::Fanuc, &["R-DEPTH=formula"])).unwrap();
+    let b = run(fanuc, &machine(ProfileName::Fanuc, &[])).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(rough_depths(&a), [1000, 1414, 1732, 2032, 2332, 2632, 2932, 3000]);
+}
+
+/// `round(√x)`, by bisection on its definition `(2s - 1)² ≤ 4x < (2s +
+/// 1)²` (independent of the crates' kernels).
+fn nearest_root(x: u128) -> u128 {
+    // x < 2^62 here: the root is below 2^31.
+    let (mut lo, mut hi) = (0_u128, 1_u128 << 32);
+    // The largest s with (2s - 1)² ≤ 4x.
+    while lo < hi {
+        let mid = (lo + hi).div_ceil(2);
+        if (2 * mid - 1) * (2 * mid - 1) <= 4 * x {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    lo
+}
+
+/// The levels of the `formula` schedule counted one by one.
+fn formula_levels_by_hand(q: i64, dmin: i64, last: i64) -> u64 {
+    let q2 = u128::from(q.unsigned_abs()).pow(2);
+    let law = |n: u64| i64::try_from(nearest_root(q2 * u128::from(n))).unwrap();
+    // The sweep's words: Δdmin itself, and D(n-1) + 1.
+    let (mut depth, mut n) = (0_i64, 0_u64);
+    while depth < last {
+        n += 1;
+        depth = last.min(law(n).max(law(n - 1) + dmin).max(depth + 1));
+    }
+    n
+}
+
+/// R-DEPTH `formula`'s closed-form count (R-LIMIT) against counting the
+/// levels one by one: every Δd ≤ 30, Δdmin ≤ 10, k - d ≤ 200, and sampled
+/// large values.
+#[test]
+fn depth_formula_count_is_exact() {
+    for q in 1..=30_i64 {
+        for dmin in 0..=10_i64 {
+            for last in 1..=200_i64 {
+                let got = cycleref_spec::g76::formula_level_count(q, dmin.max(1), last);
+                assert_eq!(got, formula_levels_by_hand(q, dmin, last), "Δd {q} Δdmin {dmin} k-d {last}");
+            }
+        }
+    }
+    for q in [1_i64, 3, 100, 1000, 31_623, 999_999_999] {
+        for dmin in [0_i64, 5, 300] {
+            for last in [999_i64, 4_321, 100_000] {
+                let got = cycleref_spec::g76::formula_level_count(q, dmin.max(1), last);
+                assert_eq!(got, formula_levels_by_hand(q, dmin, last), "Δd {q} Δdmin {dmin} k-d {last}");
+            }
+        }
+    }
+}
+
+/// R-STARTS (sweep entry 7), gsk988 `G00 X80 Z10` / `G76 P010060 Q0.1
+/// R0.1 L2` / `G76 X60 Z-30 P1 Q0.5 F2`: k - d = 0.9, Δd = 0.5, Δdmin =
+/// 0.1: levels round(500 √n) = 500, 707, 866, then 1000 → 900 (k - d): 4
+/// rough passes and m = 1 finishing pass, each for starts 1 and 2 (0° and
+/// 180°).
+const TWO_STARTS: &str = "M3 S300\nG00 X80 Z10\nG76 P010060 Q0.1 R0.1 L2\nG76 X60 Z-30 P1 Q0.5 F2\nM30\n";
+
+/// The passes in cutting order: (rough?, number, start), once a pass.
+fn pass_order(moves: &[Move]) -> Vec<(bool, u32, u16)> {
+    let mut out: Vec<(bool, u32, u16)> = Vec::new();
+    for p in moves.iter().filter_map(|m| m.pass) {
+        let key = (p.kind == cycleref::moves::PassKind::Rough, p.number, p.start);
+        if out.last() != Some(&key) {
+            out.push(key);
+        }
+    }
+    out
+}
+
+/// `pass-major` (default): each pass for both starts before the next;
+/// `start-major`: the five passes of start 1, then those of start 2. The
+/// moves of each pass of each start are the same under both.
+#[test]
+fn starts_order() {
+    let pass_major = run(TWO_STARTS, &machine(ProfileName::Gsk988, &[])).unwrap();
+    let start_major = run(TWO_STARTS, &machine(ProfileName::Gsk988, &["R-STARTS=start-major"])).unwrap();
+    let (r, f) = (true, false);
+    assert_eq!(
+        pass_order(&pass_major),
+        [
+            (r, 1, 1),
+            (r, 1, 2),
+            (r, 2, 1),
+            (r, 2, 2),
+            (r, 3, 1),
+            (r, 3, 2),
+            (r, 4, 1),
+            (r, 4, 2),
+            (f, 1, 1),
+            (f, 1, 2)
+        ]
+    );
+    assert_eq!(
+        pass_order(&start_major),
+        [
+            (r, 1, 1),
+            (r, 2, 1),
+            (r, 3, 1),
+            (r, 4, 1),
+            (f, 1, 1),
+            (r, 1, 2),
+            (r, 2, 2),
+            (r, 3, 2),
+            (r, 4, 2),
+            (f, 1, 2)
+        ]
+    );
+    let of = |moves: &[Move], key: (bool, u32, u16)| -> Vec<Move> {
+        moves
+            .iter()
+            .filter(|m| {
+                m.pass.is_some_and(|p| (p.kind == cycleref::moves::PassKind::Rough, p.number, p.start) == key)
+            })
+            .copied()
+            .collect()
+    };
+    for key in pass_order(&pass_major) {
+        assert_eq!(of(&pass_major, key), of(&start_major, key), "{key:?}");
+    }
+    assert_eq!(pass_major.len(), start_major.len());
 }

@@ -145,7 +145,28 @@ pub fn round_div(num: i128, den: i128) -> i128 {
 }
 
 /// [`round_div`] without the contract checks.
+#[inline]
 fn round_div_unchecked(num: i128, den: i128) -> i128 {
+    // Both below 2^62 in magnitude (every caller's divisor, and most
+    // numerators): the steps of `round_div_wide` in `i64`, whose division
+    // is one instruction where `i128`'s is a library call. No negation,
+    // product or sum below can overflow; `tests::round_div_narrow_equals_wide`
+    // holds the two equal.
+    const WORD: i128 = 1 << 62;
+    if (-WORD..WORD).contains(&num) && (-WORD..WORD).contains(&den) && den != 0 {
+        // In range: checked just above.
+        #[allow(clippy::cast_possible_truncation)]
+        let (n, d) = (num as i64, den as i64);
+        let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+        let (q, r) = (n / d, n % d);
+        let q = if r.unsigned_abs() * 2 >= d.unsigned_abs() { q + n.signum() } else { q };
+        return i128::from(q);
+    }
+    round_div_wide(num, den)
+}
+
+/// [`round_div`] in `i128`, for every argument.
+fn round_div_wide(num: i128, den: i128) -> i128 {
     let (n, d) = if den < 0 { (num.checked_neg(), den.checked_neg()) } else { (Some(num), Some(den)) };
     let (Some(n), Some(d)) = (n, d) else {
         return 0;
@@ -213,4 +234,53 @@ pub fn ceil_div(a: i128, b: i128) -> i128 {
     #[cfg(feature = "contract-checks")]
     assert!(super::contracts::ceil_div_ensures(a, b, q), "ceil_div: ensures");
     q
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `i64` steps of `round_div_unchecked` equal the `i128` ones on
+    /// both sides of its range, at ties and next to them, for every sign.
+    #[test]
+    fn round_div_narrow_equals_wide() {
+        let w: i128 = 1 << 62;
+        let base = [0_i128, 1, 2, 3, 5, 7, 10, 999, 1_000, 1_001, w - 2, w - 1, w, w + 1, 1 << 34];
+        let values = base.iter().flat_map(|&v| [v, -v]);
+        let dens = [
+            1_i128,
+            2,
+            3,
+            4,
+            7,
+            10,
+            1_000,
+            2_001,
+            (1 << 34) - 1,
+            w - 1,
+            w,
+            -1,
+            -2,
+            -3,
+            -7,
+            -1_000,
+            -(w - 1),
+            -w,
+            0,
+        ];
+        for &d in &dens {
+            for n in values.clone() {
+                for e in -3..=3 {
+                    let n = n + e * d.abs().min(1 << 20);
+                    assert_eq!(round_div_unchecked(n, d), round_div_wide(n, d), "{n} / {d}");
+                }
+            }
+            // Ties: k·d ± d/2 for even d.
+            for k in [-5_i128, -1, 0, 1, 5, 1 << 20] {
+                let n = k * d + d / 2;
+                assert_eq!(round_div_unchecked(n, d), round_div_wide(n, d), "{n} / {d}");
+                assert_eq!(round_div_unchecked(-n, d), round_div_wide(-n, d), "{} / {d}", -n);
+            }
+        }
+    }
 }

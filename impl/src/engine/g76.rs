@@ -75,15 +75,19 @@
 //!
 //! * Up front: O(1) plus one square root per rough level in the law phase,
 //!   at most `pass_limit + 1` of them, as in the reference.
-//! * Per move: a bounded number of steps. Each pass of each start is a fixed
-//!   list of at most six candidate moves (approach, lead-in, cut, run-out,
-//!   retract, return), of which the zero-length ones are skipped; at least
-//!   two remain (the pass start Bn is never A, since A is clear of B by at
-//!   least the depth of the pass, at least one increment). Moving on to the
-//!   next pass takes at most one square root; the next start, a binary gcd
+//! * Per move: a bounded number of steps. Each pass is a fixed list of at
+//!   most six candidate moves (approach, lead-in, cut, run-out, retract,
+//!   return), of which the zero-length ones are left out once per pass,
+//!   when its walk is made (every start walks the same path from A); at
+//!   least one remains (the cut and the run-out go from Bn to the end line,
+//!   Z of D or beyond on a Z-long thread, X of the pass end on an X-long
+//!   one; the pass start Bn is A only for a pass at depth 0, R-NOROUGH
+//!   `one-at-zero`, with A on B). A move is then copied out of the walk;
+//!   moving on to the next pass takes at most one square root; the next
+//!   start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (448 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (600 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -92,7 +96,7 @@ use core::iter::FusedIterator;
 
 use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
-use super::schedule::{law, Schedule};
+use super::schedule::{formula_levels, law, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
@@ -143,6 +147,15 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             penultimate = (levels - 1) * step;
         }
         levels.unsigned_abs()
+    } else if c.readings.depth_formula {
+        // Reading R-DEPTH `formula`: exact, in closed form.
+        if last > 0 {
+            let (levels, pen) = formula_levels(q2, min, last);
+            penultimate = pen;
+            levels
+        } else {
+            0
+        }
     } else {
         loop {
             count.tick();
@@ -173,6 +186,9 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             }
         }
     };
+    // Reading R-NOROUGH `one-at-zero`: one level at 0 when k - d = 0 (the
+    // only case with no level above).
+    let levels = levels.max(u64::from(c.readings.one_rough_at_zero));
     // levels < 2^33: doubling cannot overflow.
     let passes = c.infeed.passes(levels);
     if passes > limit {
@@ -356,6 +372,10 @@ pub struct G76Moves {
     start: u32,
     /// The number of rough passes, found before any move (reading R-LIMIT).
     rough_passes: u64,
+    /// Reading R-STARTS: `None` under `pass-major`; under `start-major`,
+    /// whether the schedule starts in its minimum-cut phase (G78's equal
+    /// steps), to restart it for each start.
+    start_major: Option<bool>,
 }
 
 /// What the up-front checks need of the planned passes: the depth of the
@@ -383,10 +403,13 @@ fn plan_extremes(
     mirror: i64,
 ) -> Option<PlanExtremes> {
     if last <= 0 {
-        // No rough level: the finishing passes (if any) at depth k and the
-        // shift of the last rough pass, none: 0.
-        return (c.finishing_passes > 0).then_some(PlanExtremes {
-            shallowest: c.thread_height,
+        // d = k: one rough level at depth 0 (reading R-NOROUGH
+        // `one-at-zero`) or none, then the finishing passes (if any) at
+        // depth k; every pass at shift 0 (zc = 0, so every mode's shift
+        // and mirror line is 0).
+        let rough = c.readings.one_rough_at_zero;
+        return (rough || c.finishing_passes > 0).then_some(PlanExtremes {
+            shallowest: if rough { 0 } else { c.thread_height },
             min_shift: 0,
             max_shift: 0,
         });
@@ -443,11 +466,31 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
     let q = c.first_depth.unsigned_abs();
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
+    let one_at_zero = c.readings.one_rough_at_zero;
     match c.depth_mode {
-        DepthMode::Decreasing => Schedule { q2: q * q, min, last, n: 0, depth: 0, min_phase: false },
-        DepthMode::Equal => {
-            Schedule { q2: q * q, min: c.first_depth.max(min), last, n: 0, depth: 0, min_phase: true }
-        }
+        DepthMode::Decreasing => Schedule {
+            q2: q * q,
+            min,
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: false,
+            one_at_zero,
+            // Reading R-DEPTH.
+            formula: c.readings.depth_formula,
+            law_n: 0,
+        },
+        DepthMode::Equal => Schedule {
+            q2: q * q,
+            min: c.first_depth.max(min),
+            last,
+            n: 0,
+            depth: 0,
+            min_phase: true,
+            one_at_zero,
+            formula: false,
+            law_n: 0,
+        },
     }
 }
 
@@ -596,7 +639,6 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     }
 
     let frame = Frame {
-        lead: c.lead,
         a,
         home: a,
         transposed: false,
@@ -636,9 +678,10 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         previous: 0,
         number: 0,
         // Replaced by next_pass below before any use.
-        walk: Walk::new(frame.path(0, 0), placeholder, StartAngle::ZERO, a),
+        walk: Walk::new(frame.path(0, 0), placeholder, c.lead, StartAngle::ZERO, a),
         start: 0,
         rough_passes,
+        start_major: c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal),
     };
     moves.next_pass();
     Ok(moves)
@@ -665,25 +708,45 @@ impl G76Moves {
         self.rough_passes
     }
 
-    /// The path of this start is done: the next start, or the next pass.
+    /// The path of this start is done: the next start, or the next pass
+    /// (reading R-STARTS `pass-major`); the next pass of this start
+    /// (`start-major`).
     #[inline(never)]
     fn advance(&mut self) {
         let next = self.start.saturating_add(1);
-        if next < self.frame.starts {
+        if self.start_major.is_none() && next < self.frame.starts {
             self.begin_start(next);
         } else {
             self.next_pass();
         }
     }
 
-    /// Moves on to the next planned pass (start 1), or to [`Stage::Done`].
+    /// Moves on to the next planned pass (at start 1, or at the current
+    /// start under R-STARTS `start-major`), or to [`Stage::Done`]. Under
+    /// `start-major`, after the last pass of a start the plan restarts
+    /// from its first level for the next start (the schedule's state at
+    /// level 0, `Schedule::with_state`): constant memory, whatever L.
     fn next_pass(&mut self) {
-        let Some((pass, shift)) = self.plan_next() else {
+        let mut planned = self.plan_next();
+        if let (None, Some(min_phase)) = (planned, self.start_major) {
+            let next = self.start.saturating_add(1);
+            if next < self.frame.starts {
+                if let Some(s) = self.schedule.with_state(0, 0, min_phase) {
+                    self.schedule = s;
+                    self.stage = Stage::Rough { second_pending: false };
+                    (self.previous, self.number, self.finish, self.start) = (0, 0, 0, next);
+                    planned = self.plan_next();
+                }
+            }
+        }
+        let Some((pass, shift)) = planned else {
             self.stage = Stage::Done;
             return;
         };
-        self.walk = Walk::new(self.frame.path(pass.depth, shift), pass, StartAngle::ZERO, self.frame.home);
-        self.begin_start(0);
+        let path = self.frame.path(pass.depth, shift);
+        self.walk.load(path, pass, StartAngle::ZERO, self.frame.home);
+        // start < L ≤ 999; 0 under `pass-major`.
+        self.begin_start(if self.start_major.is_some() { self.start } else { 0 });
     }
 
     /// Starts the path of the current pass for start `start` (0-based).
@@ -693,7 +756,7 @@ impl G76Moves {
         self.frame.spacing.record_angle_gcd(start);
         // start < L ≤ 999.
         let number = u16::try_from(start + 1).unwrap_or(u16::MAX);
-        self.walk.restart(number, self.frame.spacing.angle(start), self.frame.home);
+        self.walk.restart(number, self.frame.spacing.angle(start));
     }
 
     /// The next planned pass and its Z shift, as the reference's
@@ -819,7 +882,7 @@ impl Iterator for G76Moves {
             if self.stage == Stage::Done {
                 return None;
             }
-            if let Some(m) = self.walk.next_move(&self.frame) {
+            if let Some(m) = self.walk.next_move() {
                 return Some(m);
             }
             self.advance();

@@ -160,7 +160,6 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         }
     }
     let frame = Frame {
-        lead: c.lead,
         a,
         home: c.start,
         transposed: c.face,
@@ -185,7 +184,7 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         },
     };
     let pass = Pass { kind: PassKind::Single, number: 1, start: 1, depth: 0, cut: 0, flank: Flank::Centre };
-    let walk = Walk::new(frame.path(0, 0), pass, c.start_angle, c.start);
+    let walk = Walk::new(frame.path(0, 0), pass, c.lead, c.start_angle, c.start);
     Ok(G92Moves { frame, walk, start: 0, first_angle: c.start_angle })
 }
 
@@ -199,7 +198,7 @@ impl Iterator for G92Moves {
         let mut count = crate::loop_counters::count!(G92_NEXT);
         loop {
             count.tick();
-            if let Some(m) = self.walk.next_move(&self.frame) {
+            if let Some(m) = self.walk.next_move() {
                 return Some(m);
             }
             if !self.next_start() {
@@ -224,7 +223,7 @@ impl G92Moves {
         // next < L ≤ 999.
         let number = u16::try_from(next + 1).unwrap_or(u16::MAX);
         let angle = self.first_angle.plus(self.frame.spacing.angle(next));
-        self.walk.restart(number, angle, self.frame.home);
+        self.walk.restart(number, angle);
         true
     }
 }

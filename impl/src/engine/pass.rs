@@ -39,8 +39,6 @@ pub(crate) enum LongAxis {
 /// when they are made.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Frame {
-    /// The cycle's lead, for the thread motions.
-    pub(crate) lead: Lead,
     /// A, in the frame's coordinates.
     pub(crate) a: Point,
     /// A, in X and Z: where every pass returns.
@@ -197,77 +195,167 @@ impl Frame {
     }
 }
 
-/// The moves of one pass of one start, streamed: at most six candidate
-/// moves (approach, lead-in, cut, run-out, retract, return), of which the
-/// zero-length ones are skipped.
+/// The moves of one pass, streamed for each start: the candidate moves
+/// (approach, lead-in, cut, run-out, retract, return) less the zero-length
+/// ones, chosen once per pass when the walk is made. Every start walks the
+/// same path from the same point (A, `frame.home`), so the moves left out
+/// (reading R-ZERO) are the same for every start; a start only changes the
+/// pass's start number and the spindle angle.
+// The bookkeeping fields are words, not bytes, and the end points two
+// arrays of `i64`: a byte stored per move and read back within a wider
+// load, or a point stored as two words and read back as one 16-byte
+// load, cannot be forwarded from the store buffer and stalls each move.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Walk {
+    /// Next move of the current start, `0..=len`.
+    next: usize,
+    /// Number of moves, at most 6.
+    len: usize,
     /// The pass every move carries (its `start` is the current start).
     pub(crate) pass: Pass,
-    /// The path.
-    path: PassPath,
-    /// Spindle angle of the start.
-    angle: StartAngle,
-    /// Next candidate move of the path, 0..=6 (6: path finished).
-    step: u8,
-    /// Tool position.
-    at: Point,
-    /// The path has started its synchronised run.
-    sync_done: bool,
+    /// X (the first coordinate) of the end points of the moves that move,
+    /// in order (`len` of them).
+    x: [i64; 6],
+    /// Z of the same end points.
+    z: [i64; 6],
+    /// Their roles.
+    role: [Role; 6],
+    /// The motion of each move: an index into `motions`.
+    motion: [u8; 6],
+    /// The three motions a move can have, for the current start: a rapid,
+    /// the thread move where synchronisation starts, the thread moves
+    /// after it. Copied whole into each move: a motion assembled per move
+    /// was built in memory field by field and read back whole, a
+    /// store-forwarding stall per move.
+    motions: [Motion; 3],
+}
+
+/// Index in [`Walk::motions`] of a rapid.
+const RAPID: u8 = 0;
+/// Index in [`Walk::motions`] of the thread move where synchronisation
+/// starts.
+const SYNC: u8 = 1;
+/// Index in [`Walk::motions`] of a later thread move of the run.
+const THREAD: u8 = 2;
+
+/// The three motions of a walk at spindle angle `angle` (see
+/// [`Walk::motions`]).
+fn motions(lead: Lead, angle: StartAngle) -> [Motion; 3] {
+    [
+        Motion::Rapid,
+        Motion::Thread { lead, start_angle: angle, sync: true },
+        Motion::Thread { lead, start_angle: angle, sync: false },
+    ]
+}
+
+/// Sets the spindle angle of the thread motions in place (the lead, the
+/// cycle's, does not change): a motion built anew is assembled in a
+/// temporary and copied, which stalls on the copy.
+#[inline(always)]
+fn set_angle(motions: &mut [Motion; 3], angle: StartAngle) {
+    for m in motions {
+        if let Motion::Thread { start_angle, .. } = m {
+            *start_angle = angle;
+        }
+    }
 }
 
 impl Walk {
-    /// A walk of `path` from A for `pass` at spindle angle `angle`.
-    pub(crate) fn new(path: PassPath, pass: Pass, angle: StartAngle, a: Point) -> Walk {
-        Walk { pass, path, angle, step: 0, at: a, sync_done: false }
+    /// A walk of `path` from `a` (A, `frame.home`: where every start
+    /// begins) for `pass` at spindle angle `angle`.
+    pub(crate) fn new(path: PassPath, pass: Pass, lead: Lead, angle: StartAngle, a: Point) -> Walk {
+        let mut walk = Walk {
+            next: 0,
+            len: 0,
+            pass,
+            x: [0; 6],
+            z: [0; 6],
+            role: [Role::Return; 6],
+            motion: [RAPID; 6],
+            motions: motions(lead, angle),
+        };
+        walk.load(path, pass, angle, a);
+        walk
+    }
+
+    /// Makes this the walk of `path` from `a` for `pass` at `angle`, with
+    /// the lead it was made with, as [`Walk::new`] does, in place (a walk returned by value is copied
+    /// whole, once per pass).
+    #[inline(always)]
+    pub(crate) fn load(&mut self, path: PassPath, pass: Pass, angle: StartAngle, a: Point) {
+        self.pass = pass;
+        set_angle(&mut self.motions, angle);
+        self.len = 0;
+        self.next = 0;
+        // The candidates in order, each kept if it moves (the lead-in and
+        // the run-out only when the path has them). Entries at `len` and
+        // beyond are never read.
+        let mut at = a;
+        let mut sync = true;
+        self.push(&mut at, &mut sync, false, path.approach, Role::Approach);
+        if let Some(to) = path.lead_in {
+            self.push(&mut at, &mut sync, true, to, Role::LeadIn);
+        }
+        self.push(&mut at, &mut sync, true, path.cut, Role::Cut);
+        if let Some(to) = path.run_out {
+            self.push(&mut at, &mut sync, true, to, Role::RunOut);
+        }
+        self.push(&mut at, &mut sync, false, path.retract, Role::Retract);
+        self.push(&mut at, &mut sync, false, a, Role::Return);
+    }
+
+    /// Appends the candidate move to `to` unless the tool is already there
+    /// (`at`): reading R-ZERO, moves that would not move are left out.
+    #[inline(always)]
+    fn push(&mut self, at: &mut Point, sync: &mut bool, thread: bool, to: Point, role: Role) {
+        if to == *at {
+            return;
+        }
+        *at = to;
+        let i = self.len;
+        // At most six candidates, so i < 6: the writes stay in the arrays
+        // and the shift in the word.
+        // The first thread move of the path starts the synchronised run.
+        let motion = match (thread, *sync) {
+            (false, _) => RAPID,
+            (true, true) => SYNC,
+            (true, false) => THREAD,
+        };
+        *sync &= !thread;
+        if let (Some(x), Some(z), Some(r), Some(m)) =
+            (self.x.get_mut(i), self.z.get_mut(i), self.role.get_mut(i), self.motion.get_mut(i))
+        {
+            *x = to.x;
+            *z = to.z;
+            *r = role;
+            *m = motion;
+        }
+        self.len = i + 1;
     }
 
     /// The same path again from A, for another start.
-    pub(crate) fn restart(&mut self, start: u16, angle: StartAngle, a: Point) {
+    pub(crate) fn restart(&mut self, start: u16, angle: StartAngle) {
         self.pass.start = start;
-        self.angle = angle;
-        self.step = 0;
-        self.at = a;
-        self.sync_done = false;
+        set_angle(&mut self.motions, angle);
+        self.next = 0;
     }
 
     /// The next move of the path, or `None` once it is back at A.
     // Inlined across crates: a call per move costs more than the move.
     #[inline]
-    pub(crate) fn next_move(&mut self, frame: &Frame) -> Option<Move> {
-        let mut count = crate::loop_counters::count!(PASS_WALK);
-        loop {
-            count.tick();
-            let step = self.step;
-            // (thread?, end point, role); None when the path has no such move.
-            // Only the field needed is read (copying the whole path per move
-            // showed in the profile).
-            let candidate = match step {
-                0 => Some((false, self.path.approach, Role::Approach)),
-                1 => self.path.lead_in.map(|to| (true, to, Role::LeadIn)),
-                2 => Some((true, self.path.cut, Role::Cut)),
-                3 => self.path.run_out.map(|to| (true, to, Role::RunOut)),
-                4 => Some((false, self.path.retract, Role::Retract)),
-                5 => Some((false, frame.home, Role::Return)),
-                _ => return None,
-            };
-            self.step = step.saturating_add(1);
-            let Some((thread, to, role)) = candidate else {
-                continue;
-            };
-            // Reading R-ZERO: moves that would not move are left out.
-            if to == self.at {
-                continue;
-            }
-            self.at = to;
-            let motion = if thread {
-                let sync = !self.sync_done;
-                self.sync_done = true;
-                Motion::Thread { lead: frame.lead, start_angle: self.angle, sync }
-            } else {
-                Motion::Rapid
-            };
-            return Some(Move { motion, to, role, pass: Some(self.pass) });
+    pub(crate) fn next_move(&mut self) -> Option<Move> {
+        let i = self.next;
+        if i >= self.len {
+            return None;
         }
+        let (Some(&x), Some(&z), Some(&role), Some(&m)) =
+            (self.x.get(i), self.z.get(i), self.role.get(i), self.motion.get(i))
+        else {
+            return None;
+        };
+        let &motion = self.motions.get(usize::from(m))?;
+        // i < len ≤ 6.
+        self.next = i + 1;
+        Some(Move { motion, to: Point::new(x, z), role, pass: Some(self.pass) })
     }
 }

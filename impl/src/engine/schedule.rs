@@ -47,6 +47,64 @@ pub struct Schedule {
     pub(super) depth: i64,
     /// True once the minimum cut has taken over.
     pub(super) min_phase: bool,
+    /// Reading R-NOROUGH `one-at-zero`: the first level is made even when
+    /// it is already at `k - d` (= 0: d = k).
+    pub(super) one_at_zero: bool,
+    /// Reading R-DEPTH `formula`: every level is `max(round(Δd √n),
+    /// round(Δd √(n-1)) + m, D(n-1) + 1)` ([`formula_levels`]); the
+    /// minimum-cut phase is not used.
+    pub(super) formula: bool,
+    /// Under `formula`: `round(Δd √n)` of the last level produced (0
+    /// before the first).
+    pub(super) law_n: i64,
+}
+
+/// The first `n ≥ 0` with `round(Δd √n) ≥ v`: 0 for `v ≤ 0`, else `⌈(2v -
+/// 1)² / 4Δd²⌉` (`round(Δd √n) ≥ v ⟺ 4Δd²n ≥ (2v - 1)²`, no tie).
+fn first_law_at_least(q2: u64, v: i64) -> u128 {
+    if v <= 0 {
+        return 0;
+    }
+    // v < 2^30: (2v - 1)² < 2^62; q2 ≥ 1, 4·q2 < 2^62.
+    u128::from((2 * v - 1).unsigned_abs()).pow(2).div_ceil(4 * u128::from(q2))
+}
+
+/// Reading R-DEPTH `formula`: the number of rough levels of a schedule
+/// with `q2 = Δd²`, `min = max(Δdmin, 1)` and `last = k - d > 0`, in
+/// closed form, and the depth of the level before the last (0 when there
+/// are fewer than two). The proof is at the reference's twin; in short,
+/// with `E(n) = max(round(Δd √n), round(Δd √(n-1)) + m)` and `p = ⌊(Δd² +
+/// 1)² / 4Δd²⌋ + 1` (after `p` the law rises by at most one increment a
+/// level), the levels are `E(n)` up to `p` and `E(p) + n - p` after, so
+/// the count is the first `n` with `E(n) ≥ k - d` when that is at most
+/// `p`, else `p + k - d - E(p)`. No square root is taken beyond the
+/// schedule's own levels (`E(n) < k - d` at every `n` it is taken for, so
+/// `Δd² n < 2^62`, within the kernel's contract).
+///
+/// Twin: `spec/src/g76.rs`, `formula_level_count`.
+pub(super) fn formula_levels(q2: u64, min: i64, last: i64) -> (u64, i64) {
+    // q2 < 2^60: (q2 + 1)² < 2^121; p ≤ 2^58 + 1.
+    let q2w = u128::from(q2);
+    let p = u64::try_from((q2w + 1).pow(2) / (4 * q2w)).unwrap_or(u64::MAX).saturating_add(1);
+    // n ≥ 1; E(n) < 2^31 at every n it is asked for (below).
+    let e = |n: u64| law(q2, n).max(law(q2, n - 1) + min);
+    let by_e = first_law_at_least(q2, last).min(1 + first_law_at_least(q2, last - min));
+    // by_e ≤ n_N(k - d) < 2^62.
+    let by_e = u64::try_from(by_e).unwrap_or(u64::MAX);
+    let levels = if by_e <= p {
+        by_e
+    } else {
+        // E(p) < k - d: p + (k - d - E(p)) < 2^59.
+        p + (last - e(p)).unsigned_abs()
+    };
+    // The level before the last is below k - d: F(levels - 1) < k - d.
+    let penultimate = match levels {
+        0 | 1 => 0,
+        n if n - 1 <= p => e(n - 1),
+        // n - 1 - p < k - d < 2^30.
+        n => e(p) + i64::try_from(n - 1 - p).unwrap_or(i64::MAX),
+    };
+    (levels, penultimate)
 }
 
 impl Schedule {
@@ -77,7 +135,17 @@ impl Schedule {
             && level <= MAX_LENGTH.unsigned_abs();
         // Δd < 2^30: Δd² < 2^60.
         let q = first_depth.unsigned_abs();
-        ok.then_some(Schedule { q2: q * q, min: min_cut.max(1), last, n: level, depth, min_phase })
+        ok.then_some(Schedule {
+            q2: q * q,
+            min: min_cut.max(1),
+            last,
+            n: level,
+            depth,
+            min_phase,
+            one_at_zero: false,
+            formula: false,
+            law_n: 0,
+        })
     }
 
     /// The same words (Δd, Δdmin, k - d) at another state: `level` levels
@@ -86,7 +154,10 @@ impl Schedule {
     #[must_use]
     pub fn with_state(self, level: u64, depth: i64, min_phase: bool) -> Option<Schedule> {
         let ok = (0..=self.last).contains(&depth) && level <= MAX_LENGTH.unsigned_abs();
-        ok.then_some(Schedule { n: level, depth, min_phase, ..self })
+        // Under R-DEPTH `formula` the state carries round(Δd √level) (for
+        // the levels the schedule makes, within the root's contract).
+        let law_n = if self.formula && level > 0 { law(self.q2, level) } else { 0 };
+        ok.then_some(Schedule { n: level, depth, min_phase, law_n, ..self })
     }
 
     /// The depth of the next level, or `None` after the level at `k - d`.
@@ -95,13 +166,26 @@ impl Schedule {
     #[inline]
     pub fn next_level(&mut self) -> Option<i64> {
         if self.depth >= self.last {
-            return None;
+            // Reading R-NOROUGH `one-at-zero`: level 1 at k - d = 0.
+            if self.n > 0 || !self.one_at_zero {
+                return None;
+            }
+            self.n = 1;
+            return Some(self.depth);
         }
         // At most k - d < 2^30 levels: the depth grows by at least 1.
         self.n += 1;
         // depth < last < 2^30, min < 2^30.
         let by_min = self.depth + self.min;
-        let next = if self.min_phase {
+        let next = if self.formula {
+            // Reading R-DEPTH `formula`: max(round(Δd √n), round(Δd
+            // √(n-1)) + m, D(n-1) + 1); round(Δd √n) < 2^31 (it rises by
+            // less than Δd + 1 from round(Δd √(n-1)) ≤ D(n-1) < k - d).
+            let law = law(self.q2, self.n);
+            let next = law.max(self.law_n + self.min).max(self.depth + 1);
+            self.law_n = law;
+            next
+        } else if self.min_phase {
             by_min
         } else {
             let law = law(self.q2, self.n);
