@@ -87,6 +87,17 @@ pub struct CycleReadings {
     /// flank its level starts on, so that `left-first` is the mirror image
     /// of `right-first` about the left flanks' mirror line.
     pub left_first: bool,
+    /// Reading R-CHAMFERANGLE: the chamfer angle θ of a run-out by the
+    /// chamfer amount (parameter 5131, "退尾角度") is measured from the long
+    /// axis when `false` (`from-long-axis`, J = round(K·tan θ)), from the
+    /// short axis when `true` (`from-short-axis`, J = round(K·tan(90° -
+    /// θ))). At 45° (5131 = 0) both give J = K.
+    pub chamfer_from_short_axis: bool,
+    /// Reading R-G32LONG at the tie: a G32 whose X travel as a radius
+    /// equals its Z travel has X as its long axis when `false` (`tie-x`),
+    /// Z when `true` (`tie-z`): K then runs along Z and J along X. The
+    /// path is the same (45°).
+    pub g32_tie_z: bool,
 }
 
 impl CycleReadings {
@@ -98,7 +109,9 @@ impl CycleReadings {
     /// left flanks mirrored about the form's centre line, G78's centre line
     /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
     /// every profile), each level of the alternating modes right flank first
-    /// (R-INFEED `right-first`).
+    /// (R-INFEED `right-first`), the chamfer angle from the long axis
+    /// (R-CHAMFERANGLE `from-long-axis`), a G32's tie X long (R-G32LONG
+    /// `tie-x`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -108,6 +121,8 @@ impl CycleReadings {
         centre_under_b: false,
         lead_in_same_z: true,
         left_first: false,
+        chamfer_from_short_axis: false,
+        g32_tie_z: false,
     };
 }
 

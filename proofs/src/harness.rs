@@ -755,6 +755,7 @@ pub fn any_g32(reach: i64, run_out: i64) -> cycleref::G32Block {
         run_out,
         start_angle: StartAngle::ZERO,
         sync: any_in(0, 1) == 1,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 
