@@ -178,6 +178,7 @@ fn g32(cr: &mut Criterion) {
         run_out: G32RunOut::Amounts { short: 1_000, long: 2_000 },
         start_angle: StartAngle::ZERO,
         sync: true,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     assert_eq!(cycleref::expand_g32(&b).expect("valid").count(), 2);
     let mut g = cr.benchmark_group("g32/taper_run_out");

@@ -65,9 +65,10 @@ pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure
             Cause::Usage,
             "usage:lead_not_writable",
             format!(
-                "{}: line {line}, {code}: under reading R-LONG988=table the lead is along Z on a taper whose \
-                 X travel is not shorter than its Z travel, and a G32 block of it would be read with the lead \
-                 along X (the longer displacement): the cycle cannot be written as plain blocks; ask for \
+                "{}: line {line}, {code}: under reading R-LONG988=table the lead is along the axis the 988TA's \
+                 table names (Z on an axial thread, X on a P1 face thread) while the other displacement of the \
+                 cut is not shorter, and a G32 block of it would be read with the lead along that other axis \
+                 (the longer displacement): the cycle cannot be written as plain blocks; ask for \
                  --format json, or --reading R-LONG988=displacement",
                 job.name
             ),

@@ -44,7 +44,14 @@ fn readings_lists_one_line_per_reading() {
             "R-G75P",
             "R-NOROUGH",
             "R-DEPTH",
-            "R-STARTS"
+            "R-STARTS",
+            "R-G92HS-NOK",
+            "R-G92HS-NOJ",
+            "R-G92JK988",
+            "R-G32RUNOUT",
+            "R-CHAMFERANGLE",
+            "R-MODAL",
+            "R-G32LONG"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -65,10 +72,19 @@ fn readings_lists_one_line_per_reading() {
             "R-G92Q",
             "R-NOROUGH",
             "R-DEPTH",
-            "R-STARTS"
+            "R-STARTS",
+            "R-G92HS-NOK",
+            "R-G92HS-NOJ",
+            "R-G92JK988",
+            "R-G32RUNOUT",
+            "R-CHAMFERANGLE",
+            "R-MODAL",
+            "R-G32LONG"
         ],
         "{gsk988}"
     );
+    assert!(gsk988.contains("R-G92HS-NOK	rapid-retract* | pull-out-to-start	[gsk988]	"), "{gsk988}");
+    assert!(gsk988.contains("R-CHAMFERANGLE	from-long-axis* | from-short-axis	[fanuc,gsk988]	"), "{gsk988}");
     assert!(gsk988.contains("R-LONG988\tdisplacement | table*\t[gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-LEADIN\tsame-z* | whole-leads\t[gsk980,gsk988]\t"), "{gsk988}");
     assert!(gsk988.contains("R-INFEED\tright-first* | left-first\t[gsk980,gsk988]\t"), "{gsk988}");
@@ -221,6 +237,31 @@ fn long_axis_table_refuses_plain_blocks() {
     );
     let out = common::run(&["expand", "--profile", "gsk988", "--reading", "R-LONG988=displacement", p], None);
     assert!(String::from_utf8_lossy(&out.stderr).contains("run_out_into_work"));
+}
+
+/// R-G92FACE under R-LONG988 `table` (the gsk988 default): the steep P1
+/// face thread (Z travel 2.001 above its X travel 2, worked in
+/// spec/tests/readings.rs) is made with X long, so the JSON moves and
+/// `check` accept it, while the nc expansion refuses it (its G32 block
+/// would be read Z long), naming the reading; under `displacement` the
+/// cycle itself is refused (steep_face_thread).
+#[test]
+fn steep_face_thread_under_the_table() {
+    let prog = common::tmp("readings-face", "g92.nc", "M3 S300\nG0 X65 Z5\nG92 X61 Z1 R-2.001 F3 P1\nM30\n");
+    let p = prog.to_str().expect("utf-8");
+    let out = common::run(&["expand", "--profile", "gsk988", p], None);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("error[usage:lead_not_writable]") && err.contains("line 3, G92"), "{err}");
+    let json = common::stdout(&["expand", "--profile", "gsk988", "--format", "json", p]);
+    let doc: Value = serde_json::from_str(&json).expect("json");
+    let cut = &doc["cycles"][0]["moves"][1];
+    assert_eq!(
+        (cut["role"].as_str(), cut["x"].as_str(), cut["z"].as_str()),
+        (Some("cut"), Some("61.000"), Some("1.000"))
+    );
+    let out = common::run(&["expand", "--profile", "gsk988", "--reading", "R-LONG988=displacement", p], None);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("steep_face_thread"));
 }
 
 /// R-G78CENTRE and R-LEADIN on the command line, in the nc output

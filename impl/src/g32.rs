@@ -53,6 +53,9 @@ pub struct G32Block {
     /// for the one-revolution signal); false on a continuation block of a
     /// continuous thread.
     pub sync: bool,
+    /// The readings in force (of these, G32 takes R-G32LONG's tie,
+    /// [`CycleReadings::g32_tie_z`](crate::CycleReadings::g32_tie_z)).
+    pub readings: crate::CycleReadings,
 }
 
 impl G32Block {

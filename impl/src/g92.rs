@@ -72,7 +72,8 @@ impl G92Cycle {
     /// lead, then [`CycleError::FaceThread`] when C has the Z of A (980TDi:
     /// "也不能加工端面螺纹") on an axial thread, [`CycleError::NoThreadLength`]
     /// when C has the X of A on a face thread and
-    /// [`CycleError::SteepFaceThread`] when its R exceeds its X travel.
+    /// [`CycleError::SteepFaceThread`] when its R exceeds its X travel
+    /// (but under reading R-LONG988 `table`).
     pub fn validate(&self) -> Result<(), CycleError> {
         let c = self;
         coordinates_in_range(c.units, c.start, c.end, c.taper)?;
@@ -90,9 +91,16 @@ impl G92Cycle {
         // Reading R-G92FACE: a face thread's long axis is X, so its Z travel
         // R must not exceed its X travel as a radius (R-G32LONG would make
         // Z the long axis of the cut, and the lead would apply along Z).
+        // Under reading R-LONG988 `table` the 988TA's table ("P = 1（端面螺纹）
+        // 长轴 纵轴") makes X long whatever the displacements, as it makes Z
+        // long on an axial steep taper: the cycle is made, and only the nc
+        // output, whose G32 blocks would be read Z-long, refuses it.
         let travel = (c.end.x - c.start.x).unsigned_abs();
         // xf ≤ 2 and |R| ≤ MAX_LENGTH (checked above): the product fits.
-        if c.face && c.x_mode.factor().unsigned_abs() * c.taper.unsigned_abs() > travel {
+        if c.face
+            && !c.readings.long_axis_by_table
+            && c.x_mode.factor().unsigned_abs() * c.taper.unsigned_abs() > travel
+        {
             return Err(CycleError::SteepFaceThread {
                 taper: Length::new(c.taper, c.units),
                 travel: Length::new(c.end.x - c.start.x, c.units),

@@ -108,6 +108,17 @@ pub struct CycleReadings {
     /// and finishing), then all of start 2, … when `true` (`start-major`).
     /// The same moves, in another order; no page gives the order.
     pub start_major: bool,
+    /// Reading R-CHAMFERANGLE: the chamfer angle θ of a run-out by the
+    /// chamfer amount (parameter 5131, "退尾角度") is measured from the long
+    /// axis when `false` (`from-long-axis`, J = round(K·tan θ)), from the
+    /// short axis when `true` (`from-short-axis`, J = round(K·tan(90° -
+    /// θ))). At 45° (5131 = 0) both give J = K.
+    pub chamfer_from_short_axis: bool,
+    /// Reading R-G32LONG at the tie: a G32 whose X travel as a radius
+    /// equals its Z travel has X as its long axis when `false` (`tie-x`),
+    /// Z when `true` (`tie-z`): K then runs along Z and J along X. The
+    /// path is the same (45°).
+    pub g32_tie_z: bool,
 }
 
 impl CycleReadings {
@@ -123,7 +134,9 @@ impl CycleReadings {
     /// `none`, the reading before issue 34: the reader resolves
     /// `one-at-zero`, the default on every profile), the depths of DOMAIN
     /// decision 3 (R-DEPTH `previous-plus-min`), every pass for all starts
-    /// before the next (R-STARTS `pass-major`).
+    /// before the next (R-STARTS `pass-major`), the chamfer angle from the long axis
+    /// (R-CHAMFERANGLE `from-long-axis`), a G32's tie X long (R-G32LONG
+    /// `tie-x`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -136,6 +149,8 @@ impl CycleReadings {
         one_rough_at_zero: false,
         depth_formula: false,
         start_major: false,
+        chamfer_from_short_axis: false,
+        g32_tie_z: false,
     };
 }
 

@@ -253,7 +253,7 @@ fn round_ratio(num: i128, r: Ratio) -> i128 {
 /// The reference's `run_out_amounts`: `(J, K)` in increments (radius where X).
 ///
 /// Twin: `spec/src/g76.rs`, `run_out_amounts`.
-fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(i64, i64)> {
+fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units, from_short_axis: bool) -> Option<(i64, i64)> {
     let (j, k) = match run_out {
         RunOut::None => return None,
         RunOut::Amounts { short, long } => (short, long),
@@ -262,7 +262,9 @@ fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(i64, i64)> 
             let chamfer =
                 round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
             let chamfer = i64::try_from(chamfer).unwrap_or(i64::MAX);
-            let short = cycleref_spec::tan::mul_tan_round(chamfer, 2 * angle_degrees).unwrap_or(i64::MAX);
+            // Reading R-CHAMFERANGLE.
+            let half_degrees = if from_short_axis { 180 - 2 * angle_degrees } else { 2 * angle_degrees };
+            let short = cycleref_spec::tan::mul_tan_round(chamfer, half_degrees).unwrap_or(i64::MAX);
             (short, long.unwrap_or(chamfer))
         }
     };
@@ -420,7 +422,7 @@ pub fn expand(c: &G76Cycle) -> Result<Vec<Move>, CycleError> {
     let (s, t, xf) = (g.side, g.direction, g.xf);
     let (k, i) = (c.thread_height, c.taper);
     let w = g.d.1 - g.a.1;
-    let run_out = run_out_amounts(c.run_out, c.lead, u);
+    let run_out = run_out_amounts(c.run_out, c.lead, u, c.readings.chamfer_from_short_axis);
     let lead_in = (c.lead_in > 0).then(|| lead_in_length(c));
     // Note 7 and reading R-SHORT.
     let max_shift = plan.iter().map(|p| p.z_shift).max().unwrap_or(0);

@@ -763,7 +763,10 @@ pub fn units_of(code: i64) -> (Units, XMode) {
 
 /// A G32 block of a small domain: start and end within `reach` increments
 /// of the origin (any direction, straight, tapered, face), a run-out with
-/// `|J|, K <= run_out`, IS-B/IS-C, mm/inch, diameter/radius.
+/// `|J|, K <= run_out`, IS-B/IS-C, mm/inch, diameter/radius. The readings
+/// are pinned at their defaults (`CycleReadings::DEFAULT`, R-G32LONG
+/// `tie-x`); [`g32_run_out`] restates the long axis under either value of
+/// the tie, and `proofs/tests/g32.rs` checks `tie-z` against the reference.
 pub fn any_g32(reach: i64, run_out: i64) -> cycleref::G32Block {
     use cycleref::{G32Block, G32RunOut, StartAngle};
     let (units, x_mode) = units_of(any_in(0, 7));
@@ -783,6 +786,7 @@ pub fn any_g32(reach: i64, run_out: i64) -> cycleref::G32Block {
         run_out,
         start_angle: StartAngle::ZERO,
         sync: any_in(0, 1) == 1,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 
@@ -808,7 +812,8 @@ where
     // Streamed (no `Vec` under Kani): the count, the first and the last end.
     let xf = b.x_mode.factor();
     let (dx, dz) = (b.end.x - b.start.x, b.end.z - b.start.z);
-    let z_long = xf * dz.abs() > dx.abs();
+    // Reading R-G32LONG: the tie is Z under `tie-z`.
+    let z_long = xf * dz.abs() > dx.abs() || (b.readings.g32_tie_z && xf * dz.abs() == dx.abs());
     let (mut count, mut first, mut last) = (0_usize, None, None);
     for m in moves {
         let Motion::Thread { sync, .. } = m.motion else { panic!("G32 moves are thread moves") };

@@ -47,6 +47,7 @@ fn g32(start: Point, end: Point, short: i64, long: i64) -> cycleref::G32Block {
         run_out: cycleref::G32RunOut::Amounts { short, long },
         start_angle: cycleref::StartAngle::ZERO,
         sync: true,
+        readings: cycleref::CycleReadings::DEFAULT,
     }
 }
 

@@ -326,14 +326,14 @@ proptest! {
     /// The engine equals the reference under every value of the readings
     /// a cycle carries (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-END's
     /// three pass ends, R-LONG988's table, R-G78LEFT, R-G78CENTRE,
-    /// R-LEADIN, R-INFEED's order, R-NOROUGH, R-DEPTH, R-STARTS), in every
+    /// R-LEADIN, R-INFEED's order, R-NOROUGH, R-DEPTH, R-STARTS, R-CHAMFERANGLE's axis), in every
     /// combination.
     #[test]
     fn engine_equals_spec_under_every_reading(
         c in cycle(), clamp in any::<bool>(), towards in any::<bool>(), end in 0..3_u8, table in any::<bool>(),
         left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
         left_first in any::<bool>(), one_at_zero in any::<bool>(), formula in any::<bool>(),
-        start_major in any::<bool>(),
+        start_major in any::<bool>(), from_short in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -349,6 +349,8 @@ proptest! {
                 one_rough_at_zero: one_at_zero,
                 depth_formula: formula,
                 start_major,
+                chamfer_from_short_axis: from_short,
+                g32_tie_z: false,
             },
             ..c
         };

@@ -28,6 +28,7 @@ fn blocks() -> impl Strategy<Value = G32Block> {
                 StartAngle::from_millidegrees(u64::from(q))
             },
             sync,
+            readings: cycleref::CycleReadings::DEFAULT,
         })
 }
 
@@ -37,6 +38,23 @@ proptest! {
     /// Both engines give the same moves or the same error.
     #[test]
     fn engine_equals_spec(b in blocks()) {
+        let ours = cycleref::expand_g32(&b).map(Iterator::collect::<Vec<_>>);
+        prop_assert_eq!(ours, cycleref_spec::g32::expand(&b));
+    }
+
+    /// Both engines agree at the tie of R-G32LONG (the X travel as a radius
+    /// equal to the Z travel), under `tie-x` and `tie-z`.
+    #[test]
+    fn engine_equals_spec_at_the_tie(b in blocks(), tie_z in any::<bool>(), down in any::<bool>()) {
+        let xf = b.x_mode.factor();
+        // An X travel the factor divides, and the Z travel its radius.
+        let dx = (b.end.x - b.start.x) / xf * xf;
+        let dz = if down { -dx.abs() / xf } else { dx.abs() / xf };
+        let b = G32Block {
+            end: Point::new(b.start.x + dx, b.start.z + dz),
+            readings: cycleref::CycleReadings { g32_tie_z: tie_z, ..cycleref::CycleReadings::DEFAULT },
+            ..b
+        };
         let ours = cycleref::expand_g32(&b).map(Iterator::collect::<Vec<_>>);
         prop_assert_eq!(ours, cycleref_spec::g32::expand(&b));
     }

@@ -78,8 +78,10 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(5000))]
 
     /// Both engines agree under every value of the readings a block carries
-    /// (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-LONG988's table; R-END has
-    /// no effect on G92's unshifted pass, and both engines take every value),
+    /// (issue 34: R-RUNOUT's clamp, R-XRUNOUT, R-LONG988's table, which
+    /// also accepts the steep face thread (R-G92FACE), R-CHAMFERANGLE's
+    /// axis; R-END has no effect on G92's unshifted pass, and both engines
+    /// take every value),
     /// on every block size and near the boundaries, where the clamp, the
     /// long axis and the X-long run-out switch.
     #[test]
@@ -87,7 +89,7 @@ proptest! {
         c in cycles(), clamp in any::<bool>(), towards in any::<bool>(), table in any::<bool>(),
         end in 0..3_u8,
         x0 in -6_i64..=6, z0 in -6_i64..=6, x1 in -6_i64..=6, z1 in -6_i64..=6, r in -6_i64..=6,
-        j in 0_i64..=6, k in 0_i64..=6, small in any::<bool>(),
+        j in 0_i64..=6, k in 0_i64..=6, small in any::<bool>(), from_short in any::<bool>(),
     ) {
         let pass_end = [
             cycleref::readings::PassEnd::TravelI,
@@ -99,6 +101,7 @@ proptest! {
             x_run_out_towards_start: towards,
             pass_end,
             long_axis_by_table: table,
+            chamfer_from_short_axis: from_short,
             ..cycleref::CycleReadings::DEFAULT
         };
         let c = if small {

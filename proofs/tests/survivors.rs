@@ -1326,6 +1326,7 @@ fn a_g32_move_at_45_degrees_has_x_as_its_long_axis() {
         run_out: G32RunOut::Amounts { short: 2_000, long: 3_000 },
         start_angle: StartAngle::ZERO,
         sync: true,
+        readings: cycleref::CycleReadings::DEFAULT,
     };
     assert_eq!(cycleref_spec::g32::long_axis(&block), LongAxis::X);
     let reference = cycleref_spec::g32::expand(&block).expect("the reference expands it");

@@ -38,7 +38,7 @@ def test_the_keyword_wins_over_the_parameter_file(tmp_path):
 def test_unknown_id_or_value_names_the_valid_ones():
     with pytest.raises(ValueError) as e:
         cycleref.expand(PROGRAM, profile="gsk980", readings={"R-NOPE": "x"})
-    assert "R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS" in str(e.value)
+    assert "R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG" in str(e.value)
     with pytest.raises(ValueError) as e:
         cycleref.expand(PROGRAM, profile="gsk980", readings={"R-XRUNOUT": "never"})
     assert "its values are refuse, towards-start" in str(e.value)

@@ -20,14 +20,14 @@ use crate::g76::LongAxis;
 /// The long axis of a G32 move (reading R-G32LONG): Z when its displacement
 /// is larger than X's as a radius, X otherwise (seed 002: "位移量(X轴按半径值)
 /// 较大的坐标轴称为长轴"; an equal displacement counts for X, as G76's rule
-/// "反之，X 轴为长轴").
+/// "反之，X 轴为长轴"), or for Z under reading R-G32LONG `tie-z`.
 #[must_use]
 pub fn long_axis(b: &G32Block) -> LongAxis {
     let u = b.units;
     let xf = Decimal::from(b.x_mode.factor());
     let dx = (from_increments(b.end.x, u) - from_increments(b.start.x, u)) / xf;
     let dz = from_increments(b.end.z, u) - from_increments(b.start.z, u);
-    if dz.abs() > dx.abs() {
+    if dz.abs() > dx.abs() || (b.readings.g32_tie_z && dz.abs() == dx.abs()) {
         LongAxis::Z
     } else {
         LongAxis::X

@@ -516,7 +516,12 @@ fn round_ratio(num: i128, r: Ratio) -> i128 {
 ///
 /// Restated in integers: `proofs/src/g76_exact.rs`, `run_out_amounts`.
 #[must_use]
-pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal, Decimal)> {
+pub fn run_out_amounts(
+    run_out: RunOut,
+    lead: Lead,
+    u: Units,
+    from_short_axis: bool,
+) -> Option<(Decimal, Decimal)> {
     let (j, k) = match run_out {
         RunOut::None => return None,
         RunOut::Amounts { short, long } => (short, long),
@@ -526,7 +531,10 @@ pub fn run_out_amounts(run_out: RunOut, lead: Lead, u: Units) -> Option<(Decimal
                 round_ratio(i128::from(tenths_of_lead), Ratio { num: lead.num, den: lead.den * 10 });
             // validate() has refused a chamfer beyond the range table.
             let chamfer = i64::try_from(chamfer).unwrap_or(i64::MAX);
-            let short = crate::tan::mul_tan_round(chamfer, 2 * angle_degrees).unwrap_or(i64::MAX);
+            // Reading R-CHAMFERANGLE: θ from the long axis, J = round(K·tan θ),
+            // or from the short axis, J = round(K·tan(90° - θ)) (half degrees).
+            let half_degrees = if from_short_axis { 180 - 2 * angle_degrees } else { 2 * angle_degrees };
+            let short = crate::tan::mul_tan_round(chamfer, half_degrees).unwrap_or(i64::MAX);
             (short, long.unwrap_or(chamfer))
         }
     };
@@ -659,7 +667,7 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     let k = from_increments(c.thread_height, u);
     let i = from_increments(c.taper, u);
     let w = g.d.1 - g.a.1;
-    let run_out = run_out_amounts(c.run_out, c.lead, u);
+    let run_out = run_out_amounts(c.run_out, c.lead, u, c.readings.chamfer_from_short_axis);
     let lead_in = if c.lead_in > 0 { Some(lead_in_length(c)) } else { None };
 
     // Note 7 and reading R-SHORT: the shortest pass must be longer than the

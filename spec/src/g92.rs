@@ -97,7 +97,8 @@ pub fn moves(c: &G92Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     let long_axis =
         if c.face || w.abs() > r.abs() || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     // K along the long axis, in its units (X words on a face thread).
-    let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, k * lf));
+    let run_out =
+        run_out_amounts(c.run_out, c.lead, u, c.readings.chamfer_from_short_axis).map(|(j, k)| (j, k * lf));
     if let Some((_, kk)) = run_out {
         let length = match long_axis {
             LongAxis::Z => w.abs(),

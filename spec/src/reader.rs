@@ -49,14 +49,14 @@ pub use calls::{
     DEFAULT_SUBPROGRAM_BLOCK_LIMIT, DEFAULT_SUBPROGRAM_NESTING, LINUXCNC_SUBPROGRAM_NESTING,
     MAX_SUBPROGRAM_NESTING, MAX_SUBPROGRAM_TEXT,
 };
-pub use g76::resolve_run_out;
+pub use g76::{resolve_run_out, resolve_run_out_under};
 pub use items::{
     G32Call, G75Call, G76Call, G92Call, Item, LinuxCncCall, MotionMode, Multipass, PlainMove, Program,
     Restore,
 };
 pub use line_reader::{LineReader, Step, SubprogramText};
 pub use program::{check_parameters, read, Reader};
-pub use threads::resolve_g32_run_out;
+pub use threads::{resolve_g32_run_out, resolve_g32_run_out_under};
 pub use words::{check_axis_words, length_word, q_word};
 #[allow(clippy::wildcard_imports)]
 use {g75::*, g76::*, threads::*, words::*};

@@ -269,6 +269,103 @@ pub enum StartsOrder {
     StartMajor,
 }
 
+/// Reading R-G92HS-NOK: the 988TA's high-speed G92 (5129 = 1) with K
+/// omitted ("省略 K 时，长轴无退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴
+/// 轴向距离，与 J 是多少无关"); G76 and G78 take it under R-HIGHSPEED
+/// `g92-rules`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G92HighSpeedNoK {
+    /// `rapid-retract` (default): no run-out; the "退尾长度" to the start's
+    /// short-axis coordinate is step (3)'s rapid retract ("高速 G92：X 轴以
+    /// 快速移动速度退刀 … 返回到 X 轴绝对坐标与起点相同处 D").
+    #[default]
+    RapidRetract,
+    /// `pull-out-to-start`: a "退尾" is a thread move, as the normal mode's
+    /// "短轴方向按 J 值退尾": the cut end pulls out along the short axis by
+    /// thread motion all the way to the start's short-axis coordinate,
+    /// whatever J is (J = 0 included); the rapid retract is then empty.
+    PullOutToStart,
+}
+
+/// Reading R-G92HS-NOJ: the short axis of the 988TA's high-speed G92
+/// (5129 = 1) with J omitted ("省略 J 时，长轴方向按 K 退尾", nothing said
+/// of the short axis).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G92HighSpeedNoJ {
+    /// `to-start` (default): the short axis all the way to the start's
+    /// short-axis coordinate (J' clamped at the retract, 988TA G92 note 5),
+    /// as the K-omitted sentence fixes it for the other word.
+    #[default]
+    ToStart,
+    /// `by-parameter`: the short axis from 5130/5131, J = round(5130 · 0.1
+    /// · F · tan θ), as the 980TDi G92 note 3 says with the same first
+    /// clause ("省略J时，长轴方向按K退尾，短轴方向按№.19号参数设定值退尾");
+    /// 5130 = 0 gives no run-out (J = 0).
+    ByParameter,
+}
+
+/// Reading R-G92JK988: a negative J or K on the 988TA's G92, whose page
+/// calls them "（半径值，不带方向）" and gives no range table.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G92JK988 {
+    /// `refuse-negative` (default): without direction, a negative value is
+    /// `out_of_range`, as the 988TA G76/G78 range table ("J、K 0～999999.999").
+    #[default]
+    RefuseNegative,
+    /// `magnitude`: made as its magnitude, as the 980TDi G92 note 10 ("J、
+    /// K输入负值时，按正值处理") and R-E980's `signed`.
+    Magnitude,
+}
+
+/// Reading R-G32RUNOUT (gsk988): a G32 with J ≠ 0 and K = 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G32KZero {
+    /// `pull-out` (default): K = 0 read as K omitted, "（2）只省略 K（J≠0）时，
+    /// 长轴无退尾，短轴按 J 值退尾": a pull-out of J along the short axis.
+    #[default]
+    PullOut,
+    /// `none`: no run-out, as the same manual's G92 normal mode ("J≠0，
+    /// K=0 时，无退尾"), to which G76 note 9 sends the run-out rules.
+    None,
+}
+
+/// Reading R-CHAMFERANGLE: the axis the chamfer angle θ (5131, "退尾角度",
+/// "倒角角度") is measured from, on a run-out by the chamfer amount.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ChamferAngle {
+    /// `from-long-axis` (default): J = round(K · tan θ).
+    #[default]
+    FromLongAxis,
+    /// `from-short-axis`: J = round(K · tan(90° - θ)).
+    FromShortAxis,
+}
+
+/// Reading R-MODAL for E: whether the lead-in E (988TA G76/G78 block 1,
+/// 980TDi G78 block 1) carries over to the next cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LeadInModal {
+    /// `one-shot` (default): E applies to the next block 2 only, with D
+    /// and L, whose omission gives their defaults (seed 000 "未输入时，以右
+    /// 边切入方式", "省略 L 时默认为单头螺纹").
+    #[default]
+    OneShot,
+    /// `modal`: E is a block-1 word like Q(Δdmin) and R(d), which persist;
+    /// no page gives E a default for its omission.
+    Modal,
+}
+
+/// Reading R-G32LONG at the tie: the long axis of a G32 whose X travel as
+/// a radius equals its Z travel, where seed 002's "位移量 … 较大的坐标轴称为长轴" decides nothing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G32LongTie {
+    /// `tie-x` (default): X, as G76's and G92's "反之，X 轴为长轴".
+    #[default]
+    TieX,
+    /// `tie-z`: Z. The path is the same at exactly 45°; only the axes of
+    /// the run-out words change (K along the long axis, J along the short).
+    TieZ,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -310,6 +407,20 @@ pub struct Readings {
     pub depth_law: DepthLaw,
     /// R-STARTS.
     pub starts_order: StartsOrder,
+    /// R-G92HS-NOK.
+    pub g92_hs_no_k: G92HighSpeedNoK,
+    /// R-G92HS-NOJ.
+    pub g92_hs_no_j: G92HighSpeedNoJ,
+    /// R-G92JK988.
+    pub g92_jk988: G92JK988,
+    /// R-G32RUNOUT (gsk988's K = 0).
+    pub g32_k_zero: G32KZero,
+    /// R-CHAMFERANGLE.
+    pub chamfer_angle: ChamferAngle,
+    /// R-MODAL (E).
+    pub lead_in_modal: LeadInModal,
+    /// R-G32LONG (the tie).
+    pub g32_long_tie: G32LongTie,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -649,6 +760,105 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK,
     },
+    ReadingEntry {
+        id: "R-G92HS-NOK",
+        point: "the 988TA's high-speed G92 (5129 = 1) with K omitted",
+        values: &[
+            ReadingValue {
+                name: "rapid-retract",
+                source: "step (3) \"高速 G92：X 轴以快速移动速度退刀…返回到 X 轴绝对坐标与起点相同处\": no run-out",
+            },
+            ReadingValue {
+                name: "pull-out-to-start",
+                source: "\"短轴方向的退尾长度，固定为切削终点到起点的短轴轴向距离\": a 退尾 by thread motion to the start's X",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-G92HS-NOJ",
+        point: "the short axis of the 988TA's high-speed G92 (5129 = 1) with J omitted",
+        values: &[
+            ReadingValue {
+                name: "to-start",
+                source: "\"省略 J 时，长轴方向按 K 退尾\" says nothing of J: the short axis to the start's X (note 5's clamp)",
+            },
+            ReadingValue {
+                name: "by-parameter",
+                source: "as the 980TDi G92 note 3 \"省略J时，长轴方向按K退尾，短轴方向按№.19号参数设定值退尾\": J from 5130/5131",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-G92JK988",
+        point: "a negative J or K on the 988TA's G92 (\"半径值，不带方向\", no range table)",
+        values: &[
+            ReadingValue {
+                name: "refuse-negative",
+                source: "without direction; the 988TA G76/G78 range table \"J、K 0～999999.999\"",
+            },
+            ReadingValue {
+                name: "magnitude",
+                source: "made as |J|, |K| like the 980TDi G92 note 10 \"J、K输入负值时，按正值处理\"",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-G32RUNOUT",
+        point: "a 988TA G32 with J != 0 and K = 0",
+        values: &[
+            ReadingValue {
+                name: "pull-out",
+                source: "988TA G32 \"只省略 K（J≠0）时，长轴无退尾，短轴按 J 值退尾\": K = 0 read as K omitted",
+            },
+            ReadingValue {
+                name: "none",
+                source: "988TA G92 normal mode \"J≠0，K=0 时，无退尾\": no run-out",
+            },
+        ],
+        profiles: &[ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-CHAMFERANGLE",
+        point: "the axis the chamfer angle 5131 is measured from (run-out by the chamfer amount)",
+        values: &[
+            ReadingValue {
+                name: "from-long-axis",
+                source: "J = round(K tan θ); the text does not decide (5131 \"倒角角度\", \"退尾角度\"; only 45° is pinned)",
+            },
+            ReadingValue { name: "from-short-axis", source: "J = round(K tan(90° - θ))" },
+        ],
+        profiles: &[ProfileName::Fanuc, ProfileName::Gsk988],
+    },
+    ReadingEntry {
+        id: "R-MODAL",
+        point: "whether the lead-in E of a G76/G78 block 1 carries over to the next cycle",
+        values: &[
+            ReadingValue {
+                name: "one-shot",
+                source: "E in the list with D and L, which apply to the next block 2 only (seed 000)",
+            },
+            ReadingValue {
+                name: "modal",
+                source: "E a block-1 word like Q(Δdmin) and R(d), which persist; no page gives E a default",
+            },
+        ],
+        profiles: GSK_G78,
+    },
+    ReadingEntry {
+        id: "R-G32LONG",
+        point: "the long axis of a G32 whose X travel (radius) equals its Z travel",
+        values: &[
+            ReadingValue {
+                name: "tie-x",
+                source: "X, as G76's and G92's \"反之，X 轴为长轴\"; seed 002 \"较大的坐标轴\" decides no tie",
+            },
+            ReadingValue { name: "tie-z", source: "Z: the path is the same at 45°, J and K change axes" },
+        ],
+        profiles: GSK_G78,
+    },
 ];
 
 impl Readings {
@@ -720,6 +930,34 @@ impl Readings {
                 StartsOrder::PassMajor => "pass-major",
                 StartsOrder::StartMajor => "start-major",
             },
+            "R-G92HS-NOK" => match self.g92_hs_no_k {
+                G92HighSpeedNoK::RapidRetract => "rapid-retract",
+                G92HighSpeedNoK::PullOutToStart => "pull-out-to-start",
+            },
+            "R-G92HS-NOJ" => match self.g92_hs_no_j {
+                G92HighSpeedNoJ::ToStart => "to-start",
+                G92HighSpeedNoJ::ByParameter => "by-parameter",
+            },
+            "R-G92JK988" => match self.g92_jk988 {
+                G92JK988::RefuseNegative => "refuse-negative",
+                G92JK988::Magnitude => "magnitude",
+            },
+            "R-G32RUNOUT" => match self.g32_k_zero {
+                G32KZero::PullOut => "pull-out",
+                G32KZero::None => "none",
+            },
+            "R-CHAMFERANGLE" => match self.chamfer_angle {
+                ChamferAngle::FromLongAxis => "from-long-axis",
+                ChamferAngle::FromShortAxis => "from-short-axis",
+            },
+            "R-MODAL" => match self.lead_in_modal {
+                LeadInModal::OneShot => "one-shot",
+                LeadInModal::Modal => "modal",
+            },
+            "R-G32LONG" => match self.g32_long_tie {
+                G32LongTie::TieX => "tie-x",
+                G32LongTie::TieZ => "tie-z",
+            },
             _ => return None,
         };
         Some(v)
@@ -780,6 +1018,20 @@ impl Readings {
             ("R-DEPTH", "formula") => self.depth_law = DepthLaw::Formula,
             ("R-STARTS", "pass-major") => self.starts_order = StartsOrder::PassMajor,
             ("R-STARTS", "start-major") => self.starts_order = StartsOrder::StartMajor,
+            ("R-G92HS-NOK", "rapid-retract") => self.g92_hs_no_k = G92HighSpeedNoK::RapidRetract,
+            ("R-G92HS-NOK", "pull-out-to-start") => self.g92_hs_no_k = G92HighSpeedNoK::PullOutToStart,
+            ("R-G92HS-NOJ", "to-start") => self.g92_hs_no_j = G92HighSpeedNoJ::ToStart,
+            ("R-G92HS-NOJ", "by-parameter") => self.g92_hs_no_j = G92HighSpeedNoJ::ByParameter,
+            ("R-G92JK988", "refuse-negative") => self.g92_jk988 = G92JK988::RefuseNegative,
+            ("R-G92JK988", "magnitude") => self.g92_jk988 = G92JK988::Magnitude,
+            ("R-G32RUNOUT", "pull-out") => self.g32_k_zero = G32KZero::PullOut,
+            ("R-G32RUNOUT", "none") => self.g32_k_zero = G32KZero::None,
+            ("R-CHAMFERANGLE", "from-long-axis") => self.chamfer_angle = ChamferAngle::FromLongAxis,
+            ("R-CHAMFERANGLE", "from-short-axis") => self.chamfer_angle = ChamferAngle::FromShortAxis,
+            ("R-MODAL", "one-shot") => self.lead_in_modal = LeadInModal::OneShot,
+            ("R-MODAL", "modal") => self.lead_in_modal = LeadInModal::Modal,
+            ("R-G32LONG", "tie-x") => self.g32_long_tie = G32LongTie::TieX,
+            ("R-G32LONG", "tie-z") => self.g32_long_tie = G32LongTie::TieZ,
             _ => return Err(bad()),
         }
         Ok(())
@@ -859,6 +1111,8 @@ impl Readings {
             depth_formula: self.depth_law == DepthLaw::Formula
                 && matches!(profile, ProfileName::Gsk980 | ProfileName::Gsk988),
             start_major: self.starts_order == StartsOrder::StartMajor,
+            chamfer_from_short_axis: self.chamfer_angle == ChamferAngle::FromShortAxis,
+            g32_tie_z: self.g32_long_tie == G32LongTie::TieZ,
         }
     }
 }

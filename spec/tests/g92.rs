@@ -467,9 +467,13 @@ fn alarms() {
     let e = error(&format!("{head}G92 X65 Z1 F3 P1\n"), &m988);
     assert_eq!((e.line, e.kind), (3, ErrorKind::Cycle(CycleError::NoThreadLength)));
     // X65 → X61: 2 mm of X travel as a radius; R-2 is as much (45°, X still
-    // the long axis by R-G32LONG's tie), R-2.001 more: refused.
-    assert!(blocks(&format!("{head}G92 X61 Z1 R-2 F3 P1\n"), &m988).len() == 1);
-    let e = error(&format!("{head}G92 X61 Z1 R-2.001 F3 P1\n"), &m988);
+    // the long axis by R-G32LONG's tie), R-2.001 more: refused under
+    // R-LONG988 `displacement` (under the default `table` it is made with
+    // X long, spec/tests/readings.rs).
+    let mut m988d = machine(ProfileName::Gsk988);
+    m988d.readings.apply_pair("R-LONG988=displacement").unwrap();
+    assert!(blocks(&format!("{head}G92 X61 Z1 R-2 F3 P1\n"), &m988d).len() == 1);
+    let e = error(&format!("{head}G92 X61 Z1 R-2.001 F3 P1\n"), &m988d);
     let ErrorKind::Cycle(CycleError::SteepFaceThread { taper, travel }) = e.kind else { panic!("{e}") };
     assert_eq!((taper.increments, travel.increments), (-2_001, -4_000));
     let e = error(&format!("{head}G92 F3\n"), &m980);

@@ -410,7 +410,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1119,4 +1119,236 @@ fn starts_order() {
         assert_eq!(of(&pass_major, key), of(&start_major, key), "{key:?}");
     }
     assert_eq!(pass_major.len(), start_major.len());
+}
+
+/// The 988TA under 5129 (THM) = 1 with `extra` parameters and `readings`.
+fn high_speed_with(params: &str, readings: &[&str]) -> Machine {
+    let mut m = machine(ProfileName::Gsk988, readings);
+    m.apply_toml(&format!("[parameters]\n5129 = 1\n{params}")).unwrap();
+    m
+}
+
+/// The 988TA G92 example's first block without K (`G92 X58.7 Z-28 F3 J3`
+/// from A = (X65, Z5)) in the high-speed mode (5129 = 1): "省略 K 时，长轴无
+/// 退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴轴向距离，与 J 是多少无关".
+/// R-G92HS-NOK `rapid-retract` (default): the cut to C (X58.7, Z-28), then
+/// step (3)'s "X 轴以快速移动速度退刀 … 返回到 X 轴绝对坐标与起点相同处" to
+/// X65, Z back to Z5. `pull-out-to-start`: the 退尾 from C by thread
+/// motion along X to the start's X65 ((65 - 58.7)/2 = 3.15 of radius,
+/// whatever J: J0 gives the same), the rapid retract then empty (R-ZERO).
+#[test]
+fn g92_high_speed_without_k() {
+    let src = |j: &str| format!("M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 {j}\nM30\n");
+    let rapid = run(&src("J3"), &high_speed_with("", &[])).unwrap();
+    assert_eq!(
+        ends(&rapid),
+        [
+            (Role::Approach, Point::new(58_700, 5_000)),
+            (Role::Cut, Point::new(58_700, -28_000)),
+            (Role::Retract, Point::new(65_000, -28_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    let m = high_speed_with("", &["R-G92HS-NOK=pull-out-to-start"]);
+    let pulled = run(&src("J3"), &m).unwrap();
+    assert_eq!(
+        ends(&pulled),
+        [
+            (Role::Approach, Point::new(58_700, 5_000)),
+            (Role::Cut, Point::new(58_700, -28_000)),
+            (Role::RunOut, Point::new(65_000, -28_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    assert!(matches!(pulled[2].motion, cycleref::Motion::Thread { .. }));
+    assert_eq!(run(&src("J0"), &m).unwrap(), pulled);
+    // The normal mode is not concerned: "省略 K 时，长轴无退尾，短轴方向按 J 值
+    // 退尾", X58.7 + 2·3 = X64.7.
+    let normal = run(&src("J3"), &machine(ProfileName::Gsk988, &["R-G92HS-NOK=pull-out-to-start"])).unwrap();
+    assert_eq!(normal[2].to, Point::new(64_700, -28_000));
+}
+
+/// The same block with K1 and J omitted in the high-speed mode: "省略 J 时，
+/// 长轴方向按 K 退尾". R-G92HS-NOJ `to-start` (default): the cut ends K = 1
+/// before C, at Z-27, and the short axis runs to the start's X65
+/// (J' clamped at the retract, 3.15). `by-parameter` with 5130 = 10 and
+/// 5131 = 0 (45°, "当参数 5131（退尾角度）设置为零时，长轴和短轴以 45°角退尾"),
+/// as the 980TDi note 3 "短轴方向按№.19号参数设定值退尾": J = round(10 · 0.1 ·
+/// 3 · tan 45°) = 3.000, the run-out to X58.7 + 2·3 = X64.7 at Z-28, then
+/// the rapid to X65. With 5130 = 0, J = 0: no run-out, the cut to C.
+#[test]
+fn g92_high_speed_without_j() {
+    let src = "M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 K1\nM30\n";
+    let params = "5130 = 10\n5131 = 0\n";
+    let to_start = run(src, &high_speed_with(params, &[])).unwrap();
+    assert_eq!(
+        ends(&to_start),
+        [
+            (Role::Approach, Point::new(58_700, 5_000)),
+            (Role::Cut, Point::new(58_700, -27_000)),
+            (Role::RunOut, Point::new(65_000, -28_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    let by_parameter = run(src, &high_speed_with(params, &["R-G92HS-NOJ=by-parameter"])).unwrap();
+    assert_eq!(
+        ends(&by_parameter),
+        [
+            (Role::Approach, Point::new(58_700, 5_000)),
+            (Role::Cut, Point::new(58_700, -27_000)),
+            (Role::RunOut, Point::new(64_700, -28_000)),
+            (Role::Retract, Point::new(65_000, -28_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    let none = run(src, &high_speed_with("5130 = 0\n", &["R-G92HS-NOJ=by-parameter"])).unwrap();
+    assert_eq!(none[1].to, Point::new(58_700, -28_000));
+}
+
+/// R-G92JK988 on the 988TA's G92 (normal mode): J, K "（半径值，不带方向）".
+/// `refuse-negative` (default): J-3 is out of range. `magnitude` (as the
+/// 980TDi note 10 "J、K输入负值时，按正值处理"): J-3 K-1 is the page's example
+/// J3 K1: the cut to Z-28 + 1 = Z-27, the run-out to X58.7 + 2·3 = X64.7
+/// at Z-28, the retract to X65, Z back to Z5.
+#[test]
+fn g92_negative_j_k_on_gsk988() {
+    let src = "M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 J-3 K-1\nM30\n";
+    let e = run(src, &machine(ProfileName::Gsk988, &[])).unwrap_err();
+    assert!(matches!(e, ErrorKind::OutOfRange { .. }), "{e}");
+    let got = run(src, &machine(ProfileName::Gsk988, &["R-G92JK988=magnitude"])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(58_700, 5_000)),
+            (Role::Cut, Point::new(58_700, -27_000)),
+            (Role::RunOut, Point::new(64_700, -28_000)),
+            (Role::Retract, Point::new(65_000, -28_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    let positive = "M3 S300\nG00 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nM30\n";
+    assert_eq!(got, run(positive, &machine(ProfileName::Gsk988, &[])).unwrap());
+}
+
+/// R-G32RUNOUT on the 988TA, `G32 Z-20 F2 J1 K0` from X30 Z0. `pull-out`
+/// (default, K = 0 read as "只省略 K（J≠0）时，长轴无退尾，短轴按 J 值退尾"): the
+/// cut to Z-20, then a pull-out of J = 1 (radius) along X to X32. `none`
+/// (the G92 normal mode's "J≠0，K=0 时，无退尾"): the cut to Z-20 only.
+#[test]
+fn g32_k_zero_on_gsk988() {
+    let src = "M3 S300\nG00 X30 Z0\nG32 Z-20 F2 J1 K0\nM30\n";
+    let pulled = run(src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&pulled),
+        [(Role::Cut, Point::new(30_000, -20_000)), (Role::RunOut, Point::new(32_000, -20_000))]
+    );
+    let none = run(src, &machine(ProfileName::Gsk988, &["R-G32RUNOUT=none"])).unwrap();
+    assert_eq!(ends(&none), [(Role::Cut, Point::new(30_000, -20_000))]);
+}
+
+/// R-CHAMFERANGLE on the 988TA's G92 without J and K ("按参数 5130（倒角量）和
+/// 参数 5131（退尾角度）确定退尾"): 5130 = 10, F2, so K = 10 · 0.1 · 2 =
+/// 2.000; 5131 = 30. A = (X40, Z5), C = (X30, Z-20). `from-long-axis`
+/// (default): J = round(2 · tan 30°) = round(1.1547) = 1.155; the cut to Z-18,
+/// the run-out to X30 + 2·1.155 = X32.31 at Z-20. `from-short-axis`: J =
+/// round(2 · tan 60°) = round(3.4641) = 3.464, to X30 + 2·3.464 = X36.928.
+/// Both below the retract (40 - 30)/2 = 5: no clamp. The same on fanuc
+/// (G76's r and 5131).
+#[test]
+fn chamfer_angle_axis() {
+    let src = "M3 S300\nG00 X40 Z5\nG92 X30 Z-20 F2\nM30\n";
+    let m = |readings: &[&str]| {
+        let mut m = machine(ProfileName::Gsk988, readings);
+        m.apply_toml("[parameters]\n5130 = 10\n5131 = 30\n").unwrap();
+        m
+    };
+    let pass = |x: i64| {
+        [
+            (Role::Approach, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -18_000)),
+            (Role::RunOut, Point::new(x, -20_000)),
+            (Role::Retract, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    };
+    assert_eq!(ends(&run(src, &m(&[])).unwrap()), pass(32_310));
+    assert_eq!(ends(&run(src, &m(&["R-CHAMFERANGLE=from-short-axis"])).unwrap()), pass(36_928));
+}
+
+/// R-G92FACE under R-LONG988 `table` (the 988TA default): the P1 face
+/// thread `G92 X61 Z1 R-2.001 F3 P1` from A = (X65, Z5) has 2 of X travel
+/// (radius) and 2.001 along Z. The table ("P = 1（端面螺纹）长轴 纵轴") makes X
+/// long whatever the displacements, so it is made: B on A's X65 at the Z
+/// of C plus R, 1 - 2.001 = Z-1.001 (Z is the short axis, "锥度 R 决定了锥螺纹
+/// 起点短轴的位置"); the cut from B to C (X61, Z1) with the lead F3 along X;
+/// Z back to A's Z5 (step (3) on the short axis), X back to X65 (step
+/// (4) on the long axis). Under `displacement` it is refused
+/// (SteepFaceThread), as before.
+#[test]
+fn steep_face_thread_under_the_table() {
+    let src = "M3 S300\nG0 X65 Z5\nG92 X61 Z1 R-2.001 F3 P1\nM30\n";
+    let got = run(src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(65_000, -1_001)),
+            (Role::Cut, Point::new(61_000, 1_000)),
+            (Role::Retract, Point::new(61_000, 5_000)),
+            (Role::Return, Point::new(65_000, 5_000)),
+        ]
+    );
+    assert!(matches!(got[1].motion, cycleref::Motion::Thread { .. }));
+    let e = run(src, &machine(ProfileName::Gsk988, &["R-LONG988=displacement"])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::SteepFaceThread { .. })), "{e}");
+}
+
+/// R-MODAL for E on the 988TA's G76 (the program of `lead_in_at_the_z_of_bn`
+/// twice, the second block 1 without E). `one-shot` (default): the second
+/// cycle has no lead-in, its passes approach Bn = (X30, Z5) directly.
+/// `modal`: E0.5 stays in force like Q and R, and the second cycle's
+/// passes start at An = (X31, Z5) with the screw-in to Bn, as the first.
+#[test]
+fn lead_in_e_modal() {
+    let cycle = "G76 X30 Z-20 P1 Q1 F2\n";
+    let src =
+        format!("M3 S300\nG00 X40 Z5\nG76 P010000 Q0.1 R0 E0.5\n{cycle}G76 P010000 Q0.1 R0\n{cycle}M30\n");
+    let with_e = [
+        (Role::Approach, Point::new(31_000, 5_000)),
+        (Role::LeadIn, Point::new(30_000, 5_000)),
+        (Role::Cut, Point::new(30_000, -20_000)),
+        (Role::Retract, Point::new(40_000, -20_000)),
+        (Role::Return, Point::new(40_000, 5_000)),
+    ];
+    let without = [
+        (Role::Approach, Point::new(30_000, 5_000)),
+        (Role::Cut, Point::new(30_000, -20_000)),
+        (Role::Retract, Point::new(40_000, -20_000)),
+        (Role::Return, Point::new(40_000, 5_000)),
+    ];
+    let one_shot = run(&src, &machine(ProfileName::Gsk988, &[])).unwrap();
+    assert_eq!(ends(&one_shot), [&with_e[..], &with_e, &without, &without].concat());
+    let modal = run(&src, &machine(ProfileName::Gsk988, &["R-MODAL=modal"])).unwrap();
+    assert_eq!(ends(&modal), [with_e, with_e, with_e, with_e].concat());
+}
+
+/// R-G32LONG at the tie on the 980TDi: `G32 U-20 W-10 F2 J1 K1` from (X40,
+/// Z0): 10 of X travel as a radius, 10 along Z. Both values stop the cut
+/// on the line at (X22, Z-9): `tie-x` K = 1 (radius) before X20 along X,
+/// 20 + 2·1 = X22, Z = -10·(22 - 40)/(-20) = -9; `tie-z` K = 1 before
+/// Z-10, X = 40 - 20·9/10 = 22. The run-out (seed 002: J "带正负方向" along
+/// the short axis): `tie-x` J along Z, to (X20, Z-10 + 1) = (X20, Z-9);
+/// `tie-z` J along X (radius), to (X20 + 2·1, Z-10) = (X22, Z-10).
+#[test]
+fn g32_tie() {
+    let src = "M3 S300\nG00 X40 Z0\nG32 U-20 W-10 F2 J1 K1\nM30\n";
+    let x = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        ends(&x),
+        [(Role::Cut, Point::new(22_000, -9_000)), (Role::RunOut, Point::new(20_000, -9_000))]
+    );
+    let z = run(src, &machine(ProfileName::Gsk980, &["R-G32LONG=tie-z"])).unwrap();
+    assert_eq!(
+        ends(&z),
+        [(Role::Cut, Point::new(22_000, -9_000)), (Role::RunOut, Point::new(22_000, -10_000))]
+    );
 }

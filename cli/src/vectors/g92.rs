@@ -498,13 +498,17 @@ pub(super) const STEEP_FACE: Template = Template {
     id: "g92-steep-face-thread",
     outcome: Expected::Refused(|k| matches!(k, ErrorKind::Cycle(CycleError::SteepFaceThread { .. }))),
     tags: &["refuse:g92-steep-face-thread"],
-    description: "GSK 988TA G92 P1 face thread whose taper R along Z exceeds its X travel (radius): Z would \
-                  be its long axis (R-G92FACE)",
+    description: "GSK 988TA G92 P1 face thread whose taper R along Z exceeds its X travel (radius), under \
+                  R-LONG988=displacement: Z would be its long axis (R-G92FACE; under the default `table` it is \
+                  made with X long)",
     generate: steep_face,
 };
 
 fn steep_face(rng: &mut Rng) -> Draft {
-    let ctx = MachineStyle::new(ProfileName::Gsk988, rng);
+    let mut ctx = MachineStyle::new(ProfileName::Gsk988, rng);
+    // The refusal is R-LONG988 `displacement`'s: under `table` (the
+    // default) the 988TA's table makes X long whatever the displacements.
+    ctx.readings.long988 = Some(cycleref_spec::readings::Long988::Displacement);
     let (lead, k, x0, dir, za) = face_start(rng, &ctx);
     let xf = ctx.xf();
     let a = (xf * x0, za);

@@ -54,8 +54,9 @@ pub fn expand_g32(b: &G32Block) -> Result<G32Moves, CycleError> {
     let (s, e) = (b.start, b.end);
     // |coordinates| < 2^30, so differences < 2^31 and products < 2^62.
     let (dx, dz) = (e.x - s.x, e.z - s.z);
-    // Long axis (reading R-G32LONG): Z when |dz| > |dx| / xf, i.e. xf|dz| > |dx|.
-    let z_long = xf * dz.abs() > dx.abs();
+    // Long axis (reading R-G32LONG): Z when |dz| > |dx| / xf, i.e. xf|dz| >
+    // |dx|, or at the tie under `tie-z`.
+    let z_long = xf * dz.abs() > dx.abs() || (b.readings.g32_tie_z && xf * dz.abs() == dx.abs());
     let thread = |sync| Motion::Thread { lead: b.lead, start_angle: b.start_angle, sync };
     let mut out = G32Moves { moves: [None, None], next: 0 };
     let mut at = s;

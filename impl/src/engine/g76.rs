@@ -255,7 +255,12 @@ fn round_ratio(num: u128, r: Ratio) -> Option<u128> {
 /// validated cycle.
 ///
 /// Twin: `spec/src/g76.rs`, `run_out_amounts`.
-pub(crate) fn run_out_amounts(run_out: RunOut, lead: Lead, units: Units) -> Option<(i64, i64)> {
+pub(crate) fn run_out_amounts(
+    run_out: RunOut,
+    lead: Lead,
+    units: Units,
+    from_short_axis: bool,
+) -> Option<(i64, i64)> {
     let (j, k) = match run_out {
         RunOut::None => return None,
         RunOut::Amounts { short, long } => (short, long),
@@ -268,8 +273,12 @@ pub(crate) fn run_out_amounts(run_out: RunOut, lead: Lead, units: Units) -> Opti
                 .and_then(|den| round_ratio(u128::from(tenths_of_lead), Ratio { num: lead.num, den }))
                 .and_then(|v| i64::try_from(v).ok())
                 .unwrap_or(i64::MAX);
-            // angle_degrees ≤ 89 (validate), so 2 × angle ≤ 178.
-            let short = mul_tan_round(chamfer, angle_degrees.saturating_mul(2)).unwrap_or(i64::MAX);
+            // angle_degrees ≤ 89 (validate), so 2 × angle ≤ 178. Reading
+            // R-CHAMFERANGLE: θ from the long axis, J = round(K·tan θ), or
+            // from the short axis, J = round(K·tan(90° - θ)) (half degrees).
+            let twice = angle_degrees.saturating_mul(2);
+            let half_degrees = if from_short_axis { 180_u32.saturating_sub(twice) } else { twice };
+            let short = mul_tan_round(chamfer, half_degrees).unwrap_or(i64::MAX);
             (short, long.unwrap_or(chamfer))
         }
     };
@@ -549,7 +558,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let mirror = if c.readings.left_mirror_b { 0 } else { zc };
     let extremes = plan_extremes(c, last, count, zc, centre, mirror);
     let max_shift = extremes.map_or(0, |p| p.max_shift);
-    let run_out = run_out_amounts(c.run_out, c.lead, c.units);
+    let run_out = run_out_amounts(c.run_out, c.lead, c.units, c.readings.chamfer_from_short_axis);
     let lead_in = if c.lead_in > 0 { Some((c.lead_in, lead_in_length(c))) } else { None };
 
     // Note 7 and reading R-SHORT; on either long axis a pass whose shift

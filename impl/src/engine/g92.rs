@@ -124,7 +124,8 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
     let long_axis =
         if c.face || w_abs > taper_abs || c.readings.long_axis_by_table { LongAxis::Z } else { LongAxis::X };
     // K in the long axis's coordinate increments (X words on a face thread).
-    let run_out = run_out_amounts(c.run_out, c.lead, u).map(|(j, k)| (j, lf.saturating_mul(k)));
+    let run_out = run_out_amounts(c.run_out, c.lead, u, c.readings.chamfer_from_short_axis)
+        .map(|(j, k)| (j, lf.saturating_mul(k)));
     if let Some((_, kk)) = run_out {
         let length = match long_axis {
             LongAxis::Z => w_abs,

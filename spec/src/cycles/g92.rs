@@ -120,9 +120,17 @@ impl<'a> CycleCall<'a> for G92Call<'a> {
     }
 
     fn lead_off_g32_axis(&self) -> bool {
-        // Under R-LONG988 `table`: Z long on a steep taper (a face thread's
-        // long axis is X whatever the reading).
+        // Under R-LONG988 `table`: Z long on a steep taper, X long on a steep
+        // face thread (its Z travel |R| above its X travel as a radius,
+        // reading R-G92FACE), where a G32 block of the cut is read with the
+        // other axis long (R-G32LONG).
         let g = &self.cycle;
-        g.readings.long_axis_by_table && !g.face && (g.end.z - g.start.z).abs() <= g.taper.abs()
+        let xf = g.x_mode.factor();
+        g.readings.long_axis_by_table
+            && if g.face {
+                xf * g.taper.abs() > (g.end.x - g.start.x).abs()
+            } else {
+                (g.end.z - g.start.z).abs() <= g.taper.abs()
+            }
     }
 }

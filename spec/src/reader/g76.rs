@@ -3,8 +3,8 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use crate::readings::HighSpeed;
 use crate::readings::E980;
+use crate::readings::{G92HighSpeedNoJ, G92HighSpeedNoK, HighSpeed, LeadInModal, Readings};
 use crate::ProfileName;
 
 /// Modal values of G76 block 1 and, on the 988TA, J and K (reading R-MODAL).
@@ -21,6 +21,8 @@ pub(super) struct G76Modal {
     pub(super) allowance: Option<i64>,
     pub(super) j: Option<i64>,
     pub(super) k: Option<i64>,
+    /// The lead-in E, kept only under reading R-MODAL `modal`.
+    pub(super) lead_in: Option<i64>,
 }
 
 /// One-shot values of the last block 1 (D, L, E; J, K on the 980TDi).
@@ -76,6 +78,12 @@ impl State<'_> {
         }
         if allowance.is_some() {
             modal.allowance = allowance;
+        }
+        // Reading R-MODAL `modal`: E persists like Q(Δdmin) and R(d), until
+        // another E; `one-shot`: it goes with D and L to the next block 2.
+        // (Block 2 takes it from the modal values.)
+        if lead_in.is_some() {
+            modal.lead_in = lead_in;
         }
         let mut one =
             G76OneShot { code: Some(code), line: Some(block.line), lead_in, j, k, ..G76OneShot::default() };
@@ -339,7 +347,7 @@ impl State<'_> {
             Some(v) => v,
             None => self.param_length(p.finishing_allowance).map_err(with_line)?,
         };
-        let run_out = resolve_run_out(rules, j, kk, r, angle);
+        let run_out = resolve_run_out_under(rules, j, kk, r, angle, &self.machine.readings);
         let (infeed, depth_mode) = match g78 {
             None => (one.infeed.unwrap_or(Infeed::RightFlank), DepthMode::Decreasing),
             Some(g78) => {
@@ -373,7 +381,14 @@ impl State<'_> {
             tool_angle: a,
             infeed,
             depth_mode,
-            lead_in: one.lead_in.unwrap_or(0),
+            // Reading R-MODAL (E): the last E of this cycle's block 1 under
+            // `modal`, this block 1's under `one-shot`.
+            lead_in: if self.machine.readings.lead_in_modal == LeadInModal::Modal {
+                modal.lead_in
+            } else {
+                one.lead_in
+            }
+            .unwrap_or(0),
             starts: one.starts.unwrap_or(1),
             lead,
             run_out,
@@ -387,9 +402,24 @@ impl State<'_> {
 }
 
 /// Reading R-RUNOUT: the profile's rules for J, K and r, turned into what
-/// the cycle must do.
+/// the cycle must do, under the default readings
+/// ([`resolve_run_out_under`]).
 #[must_use]
 pub fn resolve_run_out(rules: RunOutRules, j: Option<i64>, k: Option<i64>, r: u32, angle: u32) -> RunOut {
+    resolve_run_out_under(rules, j, k, r, angle, &Readings::default())
+}
+
+/// [`resolve_run_out`] under `readings`: the 988TA's high-speed rules
+/// with K omitted (R-G92HS-NOK) or J omitted (R-G92HS-NOJ).
+#[must_use]
+pub fn resolve_run_out_under(
+    rules: RunOutRules,
+    j: Option<i64>,
+    k: Option<i64>,
+    r: u32,
+    angle: u32,
+    readings: &Readings,
+) -> RunOut {
     let chamfer = |long: Option<i64>| {
         if r == 0 && long.is_none() {
             RunOut::None
@@ -420,6 +450,23 @@ pub fn resolve_run_out(rules: RunOutRules, j: Option<i64>, k: Option<i64>, r: u3
         RunOutRules::Gsk988HighSpeed => match (j, k) {
             // As the normal mode: the chamfer of 5130 and 5131.
             (None, None) => chamfer(None),
+            // Reading R-G92HS-NOK `pull-out-to-start`: the "退尾长度 … 固定为
+            // 切削终点到起点的短轴轴向距离，与 J 是多少无关" is a thread move,
+            // all the way to A's short-axis coordinate (J' clamped there),
+            // whatever J is.
+            (Some(_), None) if readings.g92_hs_no_k == G92HighSpeedNoK::PullOutToStart => {
+                RunOut::Amounts { short: MAX_LENGTH, long: 0 }
+            }
+            // Reading R-G92HS-NOJ `by-parameter`: the short axis by 5130 and
+            // 5131, as the 980TDi G92 note 3 ("省略J时，长轴方向按K退尾，短轴
+            // 方向按№.19号参数设定值退尾"); 5130 = 0 gives J = 0, none.
+            (None, Some(k)) if k != 0 && readings.g92_hs_no_j == G92HighSpeedNoJ::ByParameter => {
+                if r == 0 {
+                    RunOut::None
+                } else {
+                    RunOut::Chamfer { tenths_of_lead: r, angle_degrees: angle, long: Some(k) }
+                }
+            }
             // "省略 K 时，长轴无退尾，短轴方向的退尾长度，固定为切削终点到起点的短轴轴向
             // 距离，与 J 是多少无关": the rapid retract to the X of A is all
             // there is (step (3)); J = 0 or K = 0 likewise.

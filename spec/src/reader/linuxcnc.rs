@@ -238,6 +238,8 @@ impl State<'_> {
             run_out: G32RunOut::None,
             start_angle: StartAngle::ZERO,
             sync: !continuing,
+            // G33 has no run-out, so R-G32LONG's tie moves nothing.
+            readings: cycleref::CycleReadings::DEFAULT,
         };
         g32.validate().map_err(|e| err(&block, None, ErrorKind::Cycle(e)))?;
         self.x = Some(end.x);

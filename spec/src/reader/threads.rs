@@ -3,7 +3,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use crate::readings::G92StartAngle;
+use crate::readings::{G32KZero, G92StartAngle, Readings, G92JK988};
 
 /// The modal values of G92 (reading R-G92MODAL): the cut end, R, J, K, L
 /// and P, kept from block to block while G92 is the motion mode (980TDi:
@@ -60,7 +60,7 @@ impl State<'_> {
         if let Some(w) = block.get('K')? {
             self.g32_k = Some(self.unsigned_length(&block, w)?);
         }
-        let run_out = resolve_g32_run_out(rules, self.g32_j, self.g32_k);
+        let run_out = resolve_g32_run_out_under(rules, self.g32_j, self.g32_k, &self.machine.readings);
         // Q: only the first block of a continuous thread counts (seed 002 rule 2).
         let q = match block.get('Q')? {
             Some(w) => Some(self.start_angle(&block, w)?),
@@ -79,6 +79,7 @@ impl State<'_> {
             run_out,
             start_angle,
             sync,
+            readings: self.machine.readings.for_cycle(self.machine.profile.name, false),
         };
         // The position after the block is where the run-out ends (seed 002,
         // figure 3-82): the reference model says where.
@@ -132,8 +133,12 @@ impl State<'_> {
         };
         let lead = self.block_lead(&block)?;
         // 980TDi note 10: "J、K输入负值时，按正值处理"; elsewhere J and K are
-        // unsigned ("不带方向") and a negative one is refused.
-        let negative_as_positive = profile.run_out == RunOutRules::Gsk980;
+        // unsigned ("不带方向") and a negative one is refused, but on the
+        // 988TA (no range table on its G92 page) under reading R-G92JK988
+        // `magnitude`, which takes the 980TDi's note.
+        let negative_as_positive = profile.run_out == RunOutRules::Gsk980
+            || (profile.run_out == RunOutRules::Gsk988
+                && self.machine.readings.g92_jk988 == G92JK988::Magnitude);
         let run_out_word = |w: &Word<'_>| {
             if negative_as_positive {
                 self.length(&block, w).map(i64::abs)
@@ -184,7 +189,7 @@ impl State<'_> {
         // 988TA: 5129 (THM) = 1 is the high-speed G92 mode, with its own
         // J/K rules (reading R-G92RUNOUT).
         let rules = if self.high_speed() { RunOutRules::Gsk988HighSpeed } else { profile.run_out };
-        let run_out = resolve_run_out(rules, self.g92.j, self.g92.k, r, angle);
+        let run_out = resolve_run_out_under(rules, self.g92.j, self.g92.k, r, angle, &self.machine.readings);
         let cycle = G92Cycle {
             units: self.units,
             x_mode: self.machine.x_mode,
@@ -213,11 +218,27 @@ impl State<'_> {
     }
 }
 
-/// Reading R-G32RUNOUT: the profile's rules for G32's modal J and K.
+/// Reading R-G32RUNOUT: the profile's rules for G32's modal J and K,
+/// under the default readings ([`resolve_g32_run_out_under`]).
 #[must_use]
 pub fn resolve_g32_run_out(rules: G32Rules, j: Option<i64>, k: Option<i64>) -> G32RunOut {
+    resolve_g32_run_out_under(rules, j, k, &Readings::default())
+}
+
+/// [`resolve_g32_run_out`] under `readings`: the 988TA's K = 0 with J ≠ 0
+/// (R-G32RUNOUT `pull-out` or `none`).
+#[must_use]
+pub fn resolve_g32_run_out_under(
+    rules: G32Rules,
+    j: Option<i64>,
+    k: Option<i64>,
+    readings: &Readings,
+) -> G32RunOut {
     match (rules, j, k) {
         (G32Rules::NoRunOut, _, _) | (_, None | Some(0), _) => G32RunOut::None,
+        // Reading R-G32RUNOUT `none`: the 988TA G92 normal mode's "J≠0，K=0
+        // 时，无退尾".
+        (G32Rules::Gsk988, Some(_), Some(0)) if readings.g32_k_zero == G32KZero::None => G32RunOut::None,
         // Seed 002: K omitted, or K = 0 with J != 0: K = J.
         (G32Rules::Gsk980, Some(j), None | Some(0)) => G32RunOut::Amounts { short: j, long: j.abs() },
         (G32Rules::Gsk980, Some(j), Some(k)) => G32RunOut::Amounts { short: j, long: k },
