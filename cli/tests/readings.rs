@@ -41,7 +41,8 @@ fn readings_lists_one_line_per_reading() {
             "R-LCNC-READER",
             "R-G92Q",
             "R-G75ALLOW",
-            "R-G75P"
+            "R-G75P",
+            "R-SIDE"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -59,7 +60,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G78CENTRE",
             "R-LEADIN",
             "R-INFEED",
-            "R-G92Q"
+            "R-G92Q",
+            "R-SIDE"
         ],
         "{gsk988}"
     );

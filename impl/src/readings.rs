@@ -87,6 +87,14 @@ pub struct CycleReadings {
     /// flank its level starts on, so that `left-first` is the mirror image
     /// of `right-first` about the left flanks' mirror line.
     pub left_first: bool,
+    /// Reading R-SIDE: a start point A inside the thread's crest (between C
+    /// and B, or inside D's crest) is refused
+    /// ([`crate::CycleError::StartInsideThread`]) when `false`
+    /// (`refuse-inside`); accepted when `true` (`accept`: no page lists A's
+    /// position among its alarms), the moves the cycle's own formulas with
+    /// A where it is. A on the X of C, which gives no side, is refused
+    /// either way.
+    pub accept_start_inside: bool,
 }
 
 impl CycleReadings {
@@ -98,7 +106,8 @@ impl CycleReadings {
     /// left flanks mirrored about the form's centre line, G78's centre line
     /// at `zc`, the lead-in at the Z of Bn (R-LEADIN `same-z`, the default on
     /// every profile), each level of the alternating modes right flank first
-    /// (R-INFEED `right-first`).
+    /// (R-INFEED `right-first`), an A inside the crest refused (R-SIDE
+    /// `refuse-inside`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -108,6 +117,7 @@ impl CycleReadings {
         centre_under_b: false,
         lead_in_same_z: true,
         left_first: false,
+        accept_start_inside: false,
     };
 }
 

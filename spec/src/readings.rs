@@ -217,6 +217,27 @@ pub enum G75PDigits {
     LeftAligned,
 }
 
+/// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
+/// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
+/// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
+/// ("根据程序起点位置自动确定退尾方向"), and A on C's X, which gives no
+/// side, is refused under both values.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum StartSide {
+    /// `refuse-inside` (default): refused with `start_inside_thread`:
+    /// seed 004's advice "螺纹切削循环起始点坐标X向，在切削外螺纹时，应比螺纹
+    /// 大径大" and the retract of step ⑦ ("X 轴快速移动到 E 点"), which would
+    /// run inside the work. The text does not decide (no page lists A's
+    /// position among its alarms).
+    #[default]
+    RefuseInside,
+    /// `accept`: no page calls it an alarm; the moves are the cycle's own
+    /// formulas with A where it is (A → Bn, the cut, the retract to E at the
+    /// X of A, the return along Z), so the retract and the return may run
+    /// through the crest that has just been cut.
+    Accept,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -252,6 +273,8 @@ pub struct Readings {
     pub g75_allowance: G75Allowance,
     /// R-G75P.
     pub g75_p: G75PDigits,
+    /// R-SIDE: an A inside the thread's crest.
+    pub start_side: StartSide,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -541,6 +564,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-SIDE",
+        point: "a G76/G78 start point A inside the thread's crest (between C and B, or inside D's crest)",
+        values: &[
+            ReadingValue {
+                name: "refuse-inside",
+                source: "seed 004 \"起始点坐标X向…应比螺纹大径大\"; the retract to E would run inside the work",
+            },
+            ReadingValue {
+                name: "accept",
+                source: "no page lists A's position among its alarms: the cycle's formulas with A where it is",
+            },
+        ],
+        profiles: GSK,
+    },
 ];
 
 impl Readings {
@@ -600,6 +638,10 @@ impl Readings {
                 G75PDigits::RightAligned => "right-aligned",
                 G75PDigits::LeftAligned => "left-aligned",
             },
+            "R-SIDE" => match self.start_side {
+                StartSide::RefuseInside => "refuse-inside",
+                StartSide::Accept => "accept",
+            },
             _ => return None,
         };
         Some(v)
@@ -654,6 +696,8 @@ impl Readings {
             ("R-G75ALLOW", "magnitude") => self.g75_allowance = G75Allowance::Magnitude,
             ("R-G75P", "right-aligned") => self.g75_p = G75PDigits::RightAligned,
             ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
+            ("R-SIDE", "refuse-inside") => self.start_side = StartSide::RefuseInside,
+            ("R-SIDE", "accept") => self.start_side = StartSide::Accept,
             _ => return Err(bad()),
         }
         Ok(())
@@ -725,6 +769,7 @@ impl Readings {
             centre_under_b: self.g78_centre == G78Centre::UnderB,
             lead_in_same_z: self.lead_in == LeadIn::SameZ,
             left_first: self.infeed_order == InfeedOrder::LeftFirst,
+            accept_start_inside: self.start_side == StartSide::Accept,
         }
     }
 }

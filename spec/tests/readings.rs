@@ -410,7 +410,8 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
+         R-SIDE)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -900,4 +901,50 @@ fn end_and_long988_defaults_and_listing() {
     assert!(all.contains("\nR-LONG988\tdisplacement | table*\t[gsk988]\t"), "{all}");
     let gsk980 = Listing { profile: Some(ProfileName::Gsk980) }.to_string();
     assert!(gsk980.contains("R-END") && !gsk980.contains("R-LONG988"));
+}
+
+/// R-SIDE on the sweep's program (docs/readings-sweep.md entry 1), gsk988
+/// IS-B: A = (X61, Z10); D = (X60, Z-30), i = 0, so C = (X60, Z10); A lies
+/// outside C (61 > 60): external, s = +1. k = 1 mm, so B = X60 + 2·1 =
+/// X62 and the crest at D is X62 too: A lies inside the crest.
+/// P010060: m = 1 finishing pass, r = 0 (no run-out), a = 60°; Q0 (Δdmin
+/// 0, so the least cut is one increment), R0 (d = 0); Q0.5: Δd = 500
+/// increments, k - d = 1000.
+///
+/// Depths (seed 000 "X 轴切深: √n × Q(Δd)"): round(500·√1) = 500,
+/// round(500·√2) = round(707.1) = 707, round(500·√3) = round(866.03) =
+/// 866, round(500·√4) = 1000 = k - d. Z shifts along the right flank
+/// (D0), round(Dn·tan 30°), tan 30° = 0.57735: 288.68 → 289, 408.19 →
+/// 408, 499.99 → 500, 577.35 → 577, towards D (W < 0): Z10 - shift.
+/// Bn's X = X of C + 2·(k - Dn): 61.000, 60.586, 60.268, 60.000. The
+/// passes run parallel to C→D (R-END `parallel`, i = 0) to Z-30, the
+/// retract to E (X of A, 61) and the return to A along Z (step ⑦ "X 轴快
+/// 速移动到 E 点", ⑧ "Z 轴快速移动到 A 点"); pass 1 ends at X61 already, so
+/// its retract does not move (R-ZERO). The finishing pass takes the last
+/// rough pass's Z ("精车 Z 轴起切点与最后一刀粗车一致").
+#[test]
+fn start_inside_the_crest() {
+    let src = "M3 S300\nG00 X61 Z10\nG76 P010060 Q0 R0\nG76 X60 Z-30 P1 Q0.5 F2\nM30\n";
+    let e = run(src, &machine(ProfileName::Gsk988, &[])).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::StartInsideThread));
+    let got = run(src, &machine(ProfileName::Gsk988, &["R-SIDE=accept"])).unwrap();
+    let pass = |x: i64, z: i64| {
+        [
+            (Role::Approach, Point::new(x, z)),
+            (Role::Cut, Point::new(x, -30_000)),
+            (Role::Retract, Point::new(61_000, -30_000)),
+            (Role::Return, Point::new(61_000, 10_000)),
+        ]
+    };
+    let mut want =
+        vec![(Role::Approach, Point::new(61_000, 9_711)), (Role::Cut, Point::new(61_000, -30_000))];
+    want.push((Role::Return, Point::new(61_000, 10_000)));
+    for (x, z) in [(60_586, 9_592), (60_268, 9_500), (60_000, 9_423), (60_000, 9_423)] {
+        want.extend(pass(x, z));
+    }
+    assert_eq!(ends(&got), want);
+    // A on the X of C gives no side: refused under either value.
+    let on_c = src.replace("X61 Z10", "X60 Z10");
+    let e = run(&on_c, &machine(ProfileName::Gsk988, &["R-SIDE=accept"])).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::StartInsideThread));
 }
