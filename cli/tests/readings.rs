@@ -42,7 +42,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G92Q",
             "R-G75ALLOW",
             "R-G75P",
-            "R-SIDE"
+            "R-SIDE",
+            "R-G75RIDGE"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");

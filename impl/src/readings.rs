@@ -126,3 +126,29 @@ impl Default for CycleReadings {
         CycleReadings::DEFAULT
     }
 }
+
+/// What a G75.1 cycle (the 980TDi's trapezoid groove, seed 001) does at the
+/// points its page leaves open (docs/INTERPRETATIONS.md, issue 34),
+/// resolved by the program reader; each is decided once for the cycle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct G75Readings {
+    /// Reading R-G75RIDGE: layered roughing whose step Δk is wider than the
+    /// tool (ridges between a layer's plunges) is refused
+    /// ([`crate::CycleError::RidgesInLayers`]) when `false` (`refuse`);
+    /// made as steps ②⑦⑧ write it when `true` (`as-written`: no page calls
+    /// it an alarm), the rapids of the next layers then crossing the
+    /// ridges.
+    pub ridges_as_written: bool,
+}
+
+impl G75Readings {
+    /// The reading of every point before readings were selectable, the
+    /// default on the gsk980 profile: ridges in layers refused.
+    pub const DEFAULT: G75Readings = G75Readings { ridges_as_written: false };
+}
+
+impl Default for G75Readings {
+    fn default() -> G75Readings {
+        G75Readings::DEFAULT
+    }
+}

@@ -251,7 +251,8 @@ fn check_tool_fits(g: &Square) -> Result<(), CycleError> {
 /// Twin: `spec/src/g75/roughing.rs`, `check_ridges` (R-G75RIDGE).
 fn check_ridges(g: &Square) -> Result<(), CycleError> {
     let c = &g.cycle;
-    if !c.path.roughs() || layer_count(g) < 2 || c.step <= g.tool {
+    // Reading R-G75RIDGE `as-written`: no refusal.
+    if c.readings.ridges_as_written || !c.path.roughs() || layer_count(g) < 2 || c.step <= g.tool {
         return Ok(());
     }
     let range = plunge_range(g, 1);

@@ -15,7 +15,7 @@
 
 use core::fmt;
 use cycleref::readings::PassEnd;
-use cycleref::CycleReadings;
+use cycleref::{CycleReadings, G75Readings};
 
 use crate::profile::{ParamsError, ProfileName};
 
@@ -217,6 +217,22 @@ pub enum G75PDigits {
     LeftAligned,
 }
 
+/// Reading R-G75RIDGE: layered roughing (V) of the 980TDi's G75.1 whose
+/// step Δk is wider than the tool, so that a layer's plunges leave ridges
+/// the next layer's rapids cross.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Ridges {
+    /// `refuse` (default): refused with `ridges_in_layers`: the page says
+    /// its path is approximate, "代码大致走刀过程（从安全角度考虑，实际走刀路径
+    /// 存在部分偏差）", and does not give the deviation that would keep the
+    /// rapids out of the ridges.
+    #[default]
+    Refuse,
+    /// `as-written`: steps ②⑦⑧ as written (no page calls it an alarm): the
+    /// roughing path of every other groove, its rapids across the ridges.
+    AsWritten,
+}
+
 /// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
 /// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
 /// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
@@ -275,6 +291,8 @@ pub struct Readings {
     pub g75_p: G75PDigits,
     /// R-SIDE: an A inside the thread's crest.
     pub start_side: StartSide,
+    /// R-G75RIDGE: ridges in layered roughing.
+    pub g75_ridges: G75Ridges,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -579,6 +597,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK,
     },
+    ReadingEntry {
+        id: "R-G75RIDGE",
+        point: "G75.1 layers (V) with a step Q(Δk) wider than the tool: ridges the next layer's rapids cross",
+        values: &[
+            ReadingValue {
+                name: "refuse",
+                source: "\"代码大致走刀过程（从安全角度考虑，实际走刀路径存在部分偏差）\": the safe path is not given",
+            },
+            ReadingValue {
+                name: "as-written",
+                source: "steps ②⑦⑧ as written; no page calls it an alarm: the rapids cross the ridges",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -642,6 +675,10 @@ impl Readings {
                 StartSide::RefuseInside => "refuse-inside",
                 StartSide::Accept => "accept",
             },
+            "R-G75RIDGE" => match self.g75_ridges {
+                G75Ridges::Refuse => "refuse",
+                G75Ridges::AsWritten => "as-written",
+            },
             _ => return None,
         };
         Some(v)
@@ -698,6 +735,8 @@ impl Readings {
             ("R-G75P", "left-aligned") => self.g75_p = G75PDigits::LeftAligned,
             ("R-SIDE", "refuse-inside") => self.start_side = StartSide::RefuseInside,
             ("R-SIDE", "accept") => self.start_side = StartSide::Accept,
+            ("R-G75RIDGE", "refuse") => self.g75_ridges = G75Ridges::Refuse,
+            ("R-G75RIDGE", "as-written") => self.g75_ridges = G75Ridges::AsWritten,
             _ => return Err(bad()),
         }
         Ok(())
@@ -771,6 +810,15 @@ impl Readings {
             left_first: self.infeed_order == InfeedOrder::LeftFirst,
             accept_start_inside: self.start_side == StartSide::Accept,
         }
+    }
+}
+
+impl Readings {
+    /// What a G75.1 cycle does under these readings (the 980TDi's page;
+    /// on another profile the reader refuses G75.1).
+    #[must_use]
+    pub fn for_g75(&self) -> G75Readings {
+        G75Readings { ridges_as_written: self.g75_ridges == G75Ridges::AsWritten }
     }
 }
 

@@ -411,7 +411,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
-         R-SIDE)"
+         R-SIDE, R-G75RIDGE)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -947,4 +947,83 @@ fn start_inside_the_crest() {
     let on_c = src.replace("X61 Z10", "X60 Z10");
     let e = run(&on_c, &machine(ProfileName::Gsk988, &["R-SIDE=accept"])).unwrap_err();
     assert_eq!(e, ErrorKind::Cycle(CycleError::StartInsideThread));
+}
+
+/// Each move as (rapid?, X, Z).
+fn kinds(moves: &[Move]) -> Vec<(bool, i64, i64)> {
+    moves.iter().map(|m| (m.motion == cycleref::Motion::Rapid, m.to.x, m.to.z)).collect()
+}
+
+/// R-G75RIDGE on the sweep's program (docs/readings-sweep.md entry 36),
+/// 980TDi IS-C (0.0001 mm): S = (X50, Z30), P30000 = Δi 3 (diameter, 1.5
+/// of radius a peck), Q50000 = Δk 5, H-20 (bottom X30), D-10 (towards -Z,
+/// far flank Z20), 90° flanks, R0.5 (e, radius: 1 on the diameter), V8
+/// (layers to X42, X34, X30), I4, J0 (rough only), from X60 Z40.
+///
+/// Plunges (R-G75TOOL, R-G75PLUNGE): the start-side corner at Z30, the
+/// last where the tool's far side meets flank B, Z20 + 4 = Z24; steps ⑤⑦:
+/// Z30, Z30 - 5 = Z25, then Z20 is past Amf so "Z 轴快速移动至 Amf 点":
+/// Z24. The plunges at Z30 (tool over Z30..Z26) and Z25 (Z25..Z21) leave
+/// a ridge Z26..Z25: Δk 5 > I 4 with three layers, refused by default
+/// (`ridges_in_layers`). `as-written` makes steps ②⑦⑧ as written.
+///
+/// Pecks of a layer from its top T to its bottom: feed T - 3, retract +1
+/// (e), feed (Δi/2 + e) deeper, …, the last feed clamped at the bottom,
+/// then the rapid back to T (step ⑥). Layer 1, T = X50, bottom X42: 47,
+/// 48, 44, 45, 42, 50. Layer 2, T = X42, bottom X34: 39, 40, 36, 37, 34,
+/// 42. Layer 3, T = X34, bottom X30: 31, 32, 30, 34. Between plunges the
+/// axial rapid at T (step ⑦); between layers Z back to Z30 at the old T,
+/// then down to the new T (step ②). In layer 2 the rapid from Z30 to Z25
+/// at X42 runs the tool's body across the ridge Z26..Z25 left above X42:
+/// the move `refuse` prevents. Then the rough contour (step ⑨, J0): back
+/// up to X50 at Z24, to Z30, the feeds around the region X30 Z30, X30
+/// Z24, X50 Z24, the rapid to Z30 and the return to X60 Z40 (step ⑩).
+#[test]
+fn g75_ridges_as_written() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10\nG75.1 R0.5 V8 I4\nM30\n";
+    let e = run(src, &gsk980_is_c(&[])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::RidgesInLayers { .. })), "{e:?}");
+    let got = run(src, &gsk980_is_c(&["R-G75RIDGE=as-written"])).unwrap();
+    let mm = |v: i64| v * 10_000;
+    let mut want = vec![(true, mm(50), mm(30))];
+    let pecks = |top: i64, bottom: i64| -> Vec<(bool, i64)> {
+        let (mut out, mut at) = (Vec::new(), top);
+        loop {
+            at = (at - 3).max(bottom);
+            out.push((false, at));
+            if at == bottom {
+                break;
+            }
+            at += 1;
+            out.push((true, at));
+            at -= 1;
+        }
+        out.push((true, top));
+        out
+    };
+    let mut previous_top = None;
+    for (top, bottom) in [(50, 42), (42, 34), (34, 30)] {
+        if let Some(previous) = previous_top {
+            // Step ②: Z back to Z30 at the old top, then down to this top.
+            want.push((true, mm(previous), mm(30)));
+            want.push((true, mm(top), mm(30)));
+        }
+        previous_top = Some(top);
+        for (n, z) in [30, 25, 24].into_iter().enumerate() {
+            if n > 0 {
+                want.push((true, mm(top), mm(z)));
+            }
+            want.extend(pecks(top, bottom).into_iter().map(|(rapid, x)| (rapid, mm(x), mm(z))));
+        }
+    }
+    want.extend([
+        (true, mm(50), mm(24)),
+        (true, mm(50), mm(30)),
+        (false, mm(30), mm(30)),
+        (false, mm(30), mm(24)),
+        (false, mm(50), mm(24)),
+        (true, mm(50), mm(30)),
+        (true, mm(60), mm(40)),
+    ]);
+    assert_eq!(kinds(&got), want);
 }

@@ -157,12 +157,15 @@ pub fn check_tool_fits(g: &Groove) -> Result<PlungeRange, CycleError> {
 ///
 /// # Errors
 ///
-/// [`CycleError::RidgesInLayers`]; [`CycleError::UndecidedRounding`].
+/// [`CycleError::RidgesInLayers`] (reading R-G75RIDGE `refuse`, the
+/// default; none under `as-written`); [`CycleError::UndecidedRounding`].
 ///
 /// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `check_ridges`.
 pub fn check_ridges(g: &Groove) -> Result<(), CycleError> {
     let c = &g.cycle;
-    if !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool {
+    // Reading R-G75RIDGE `as-written`: the path as steps ②⑦⑧ write it.
+    if c.readings.ridges_as_written || !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool
+    {
         return Ok(());
     }
     let range = plunge_range(g, 1)?;

@@ -269,8 +269,14 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     let y1 = layers.bottom(1);
     let (a11, a1f) = if layers.count == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
     // R-G75RIDGE: layered roughing with a step wider than the tool leaves
-    // ridges in layer 1 that the next layer's rapids would cross.
-    if c.path.roughs() && layers.count >= 2 && c.step > g.w && a1f - a11 > i128::from(g.w) {
+    // ridges in layer 1 that the next layer's rapids would cross (refused
+    // unless the reading is `as-written`).
+    if !c.readings.ridges_as_written
+        && c.path.roughs()
+        && layers.count >= 2
+        && c.step > g.w
+        && a1f - a11 > i128::from(g.w)
+    {
         return Err(CycleError::RidgesInLayers {
             step: Length::new(c.step, c.units),
             tool_width: Length::new(g.w, c.units),
