@@ -43,7 +43,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G75ALLOW",
             "R-G75P",
             "R-SIDE",
-            "R-G75RIDGE"
+            "R-G75RIDGE",
+            "R-G75PECK"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");

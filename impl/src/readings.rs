@@ -139,12 +139,19 @@ pub struct G75Readings {
     /// it an alarm), the rapids of the next layers then crossing the
     /// ridges.
     pub ridges_as_written: bool,
+    /// Reading R-G75PECK: the retract e after a peck is clamped at the
+    /// plunge's start (Amn) when `false` (`clamped`); made as step ④
+    /// writes it when `true` (`as-written`: "径向(X 轴)快速移动退刀 e", even
+    /// above Amn, so the next feed is the written Δi/2 + e). The ends of
+    /// the pecks are the same under both.
+    pub peck_retract_as_written: bool,
 }
 
 impl G75Readings {
     /// The reading of every point before readings were selectable, the
-    /// default on the gsk980 profile: ridges in layers refused.
-    pub const DEFAULT: G75Readings = G75Readings { ridges_as_written: false };
+    /// default on the gsk980 profile: ridges in layers refused, the peck
+    /// retract clamped at the plunge's start.
+    pub const DEFAULT: G75Readings = G75Readings { ridges_as_written: false, peck_retract_as_written: false };
 }
 
 impl Default for G75Readings {

@@ -374,7 +374,14 @@ fn rough_moves(g: &Square, path: &mut Path, layers: &[Layer], a11: At, y_top: i6
                 }
                 path.go(Local::Feed, (a, to), Role::Peck(plunge));
                 if g.retract > 0 {
-                    path.rapid((a, layer.top.max(to - g.retract)), Role::PeckRetract(plunge));
+                    // Reading R-G75PECK: clamped at the plunge's start
+                    // unless `as-written`.
+                    let y = if g.cycle.readings.peck_retract_as_written {
+                        to - g.retract
+                    } else {
+                        layer.top.max(to - g.retract)
+                    };
+                    path.rapid((a, y), Role::PeckRetract(plunge));
                 }
                 j += 1;
             }

@@ -84,7 +84,8 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
     let shape = (angle(1, 900_000), angle(1, 900_000), prop_oneof![Just(0_u32), angle(0, 899_999)]);
     let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(max), corner(max), corner(max), corner(max)]);
     // The readings of the G75.1 page (issue 34), each value as often as
-    // the default: bit 0 R-G75RIDGE `as-written`.
+    // the default: bit 0 R-G75RIDGE `as-written`, bit 1 R-G75PECK
+    // `as-written`.
     let readings = any::<u8>();
     (units, sizes, allowances, shape, rest, readings).prop_map(
         |(
@@ -121,7 +122,10 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
                     _ => PathType::Finish,
                 },
                 corners,
-                readings: cycleref::G75Readings { ridges_as_written: bits & 1 != 0 },
+                readings: cycleref::G75Readings {
+                    ridges_as_written: bits & 1 != 0,
+                    peck_retract_as_written: bits & 2 != 0,
+                },
             }
         },
     )

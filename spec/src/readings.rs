@@ -233,6 +233,20 @@ pub enum G75Ridges {
     AsWritten,
 }
 
+/// Reading R-G75PECK: the retract e after a peck of the 980TDi's G75.1
+/// when e exceeds the depth cut so far in the plunge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75PeckRetract {
+    /// `clamped` (default): the retract ends at the plunge's start Amn at
+    /// the highest, so the tool stays in the space the plunge has cut; the
+    /// next feed is then shorter than Δi/2 + e.
+    #[default]
+    Clamped,
+    /// `as-written`: step ④ "径向(X 轴)快速移动退刀 e" and step ⑤ "X 轴再次切削
+    /// 进给(Δi/2+e)" as written: the retract is e even above Amn.
+    AsWritten,
+}
+
 /// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
 /// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
 /// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
@@ -293,6 +307,8 @@ pub struct Readings {
     pub start_side: StartSide,
     /// R-G75RIDGE: ridges in layered roughing.
     pub g75_ridges: G75Ridges,
+    /// R-G75PECK: the retract after a peck.
+    pub g75_peck: G75PeckRetract,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -612,6 +628,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-G75PECK",
+        point: "the G75.1 retract e after a peck when e exceeds the depth the plunge has cut",
+        values: &[
+            ReadingValue {
+                name: "clamped",
+                source: "the retract ends at the plunge's start Amn at the highest (the next feed shorter than Δi/2+e)",
+            },
+            ReadingValue {
+                name: "as-written",
+                source: "steps ④⑤ \"快速移动退刀 e\", \"再次切削进给(Δi/2+e)\" as written, even above Amn",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -679,6 +710,10 @@ impl Readings {
                 G75Ridges::Refuse => "refuse",
                 G75Ridges::AsWritten => "as-written",
             },
+            "R-G75PECK" => match self.g75_peck {
+                G75PeckRetract::Clamped => "clamped",
+                G75PeckRetract::AsWritten => "as-written",
+            },
             _ => return None,
         };
         Some(v)
@@ -737,6 +772,8 @@ impl Readings {
             ("R-SIDE", "accept") => self.start_side = StartSide::Accept,
             ("R-G75RIDGE", "refuse") => self.g75_ridges = G75Ridges::Refuse,
             ("R-G75RIDGE", "as-written") => self.g75_ridges = G75Ridges::AsWritten,
+            ("R-G75PECK", "clamped") => self.g75_peck = G75PeckRetract::Clamped,
+            ("R-G75PECK", "as-written") => self.g75_peck = G75PeckRetract::AsWritten,
             _ => return Err(bad()),
         }
         Ok(())
@@ -818,7 +855,10 @@ impl Readings {
     /// on another profile the reader refuses G75.1).
     #[must_use]
     pub fn for_g75(&self) -> G75Readings {
-        G75Readings { ridges_as_written: self.g75_ridges == G75Ridges::AsWritten }
+        G75Readings {
+            ridges_as_written: self.g75_ridges == G75Ridges::AsWritten,
+            peck_retract_as_written: self.g75_peck == G75PeckRetract::AsWritten,
+        }
     }
 }
 

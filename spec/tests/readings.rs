@@ -411,7 +411,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
-         R-SIDE, R-G75RIDGE)"
+         R-SIDE, R-G75RIDGE, R-G75PECK)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1026,4 +1026,69 @@ fn g75_ridges_as_written() {
         (true, mm(60), mm(40)),
     ]);
     assert_eq!(kinds(&got), want);
+}
+
+/// R-G75PECK (docs/readings-sweep.md entry 37), 980TDi IS-C, from X60
+/// Z40: S = (X50, Z30), P10000 = Δi 1 (diameter: Δi/2 = 0.5 of radius a
+/// peck), Q40000 = Δk 4, H-4 (bottom X46), D-8 (far flank Z22), I4, R1 (e
+/// = 1 of radius, 2 on the diameter), one layer, J0.
+///
+/// Plunges: Z30, then Z30 - 4 = Z26 = Z22 + I4 = Amf. Pecks (step ③ "切削
+/// 进给 Δi/2", ⑤ "再次切削进给(Δi/2+e)"): ends X50 - 1·j, X49, X48, X47 and
+/// X46 (the bottom, then ⑥ back to Amn X50). Retracts (④ "快速移动退刀 e"):
+/// X49 + 2 = X51, X48 + 2 = X50, X47 + 2 = X49. The first is above Amn
+/// (X50): `clamped` (default) stops it at X50 and the next feed is 2 on
+/// the diameter; `as-written` goes to X51 and the next feed is the written
+/// Δi/2 + e = 0.5 + 1 = 1.5 of radius (X51 → X48). The peck ends are the
+/// same under both. Then the step ⑦ to Z26 at X50, the same pecks, and
+/// the rough contour X46 Z30, X46 Z26, X50 Z26, back to Z30 and X60 Z40.
+#[test]
+fn g75_peck_retract_as_written() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P10000 Q40000 H-4 D-8\nG75.1 R1 I4\nM30\n";
+    let mm = |v: i64| v * 10_000;
+    let want = |first_retract: i64| {
+        let mut want = vec![(true, mm(50), mm(30))];
+        for (n, z) in [30, 26].into_iter().enumerate() {
+            if n > 0 {
+                want.push((true, mm(50), mm(z)));
+            }
+            for (rapid, x) in [
+                (false, 49),
+                (true, first_retract),
+                (false, 48),
+                (true, 50),
+                (false, 47),
+                (true, 49),
+                (false, 46),
+            ] {
+                want.push((rapid, mm(x), mm(z)));
+            }
+            want.push((true, mm(50), mm(z)));
+        }
+        want.extend([
+            (true, mm(50), mm(30)),
+            (false, mm(46), mm(30)),
+            (false, mm(46), mm(26)),
+            (false, mm(50), mm(26)),
+            (true, mm(50), mm(30)),
+            (true, mm(60), mm(40)),
+        ]);
+        want
+    };
+    assert_eq!(kinds(&run(src, &gsk980_is_c(&[])).unwrap()), want(50));
+    assert_eq!(kinds(&run(src, &gsk980_is_c(&["R-G75PECK=as-written"])).unwrap()), want(51));
+}
+
+/// R-G75PECK `as-written` near the end of the range (R-RANGE): the same
+/// groove at S = X99999.9 (999 999 000 at IS-C): the first retract, X of
+/// the first peck + 2 = S + 1 (10 000 increments), is 1 000 009 000,
+/// beyond 999 999 999: refused there, by both engines alike; `clamped`
+/// stays within it.
+#[test]
+fn g75_peck_retract_beyond_the_range() {
+    let src = "M3 S300\nG00 X99999.9 Z40\nG75.1 X99999.9 Z30 P10000 Q40000 H-4 D-8\nG75.1 R1 I4\nM30\n";
+    assert!(run(src, &gsk980_is_c(&[])).is_ok());
+    let e = run(src, &gsk980_is_c(&["R-G75PECK=as-written"])).unwrap_err();
+    let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
+    assert_eq!(value.increments, 1_000_009_000);
 }

@@ -211,8 +211,9 @@ pub struct Peck {
 ///
 /// Peck j (1-based) feeds to `min(top + j·Δi, bottom)`; after every peck
 /// that did not reach the bottom the tool retracts at rapid to
-/// `max(top, end − e_x)` (no retract when e = 0), so every peck takes at
-/// most Δi (Δi/2 of radius) of new depth. Step ⑥ (the retract to Amn) is
+/// `max(top, end − e_x)` (no retract when e = 0; `end − e_x` under
+/// R-G75PECK `as-written`, [`retract_to`]), so every peck takes at most Δi
+/// (Δi/2 of radius) of new depth. Step ⑥ (the retract to Amn) is
 /// the caller's.
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`.
@@ -226,9 +227,25 @@ pub fn pecks(g: &Groove, top: i128, bottom: i128) -> Vec<Peck> {
             out.push(Peck { to: bottom, retract: None });
             return out;
         }
-        let retract = (g.retract > 0).then(|| top.max(to - g.retract));
+        let retract = (g.retract > 0).then(|| retract_to(&g.cycle, top, to, g.retract));
         out.push(Peck { to, retract });
         j += 1;
+    }
+}
+
+/// Where the retract e (`e_x` in X-word units) after a peck ending at `to`
+/// ends, in a plunge from `top` (R-G75PECK): `max(top, to − e_x)`
+/// (`clamped`, the default), or `to − e_x` (`as-written`: step ④ "径向(X
+/// 轴)快速移动退刀 e", even above Amn).
+///
+/// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`
+/// (`RoughStep::Retract`).
+#[must_use]
+pub fn retract_to(c: &G75Cycle, top: i128, to: i128, retract: i128) -> i128 {
+    if c.readings.peck_retract_as_written {
+        to - retract
+    } else {
+        top.max(to - retract)
     }
 }
 

@@ -377,6 +377,7 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
         di: c.peck,
         dk: c.step,
         ex: g.f * c.retract,
+        peck_as_written: c.readings.peck_retract_as_written,
         prev_top: saturate_i64(y_top),
         top: saturate_i64(y_top),
         bottom: y1,

@@ -144,6 +144,9 @@ pub(super) struct Roughing {
     pub(super) dk: i64,
     /// `e_x = f·e`.
     pub(super) ex: i64,
+    /// Reading R-G75PECK `as-written`: the retract e not clamped at the
+    /// plunge's start.
+    pub(super) peck_as_written: bool,
     /// Top of the previous layer (for the LayerChange along Z).
     pub(super) prev_top: i64,
     /// Top of this layer.
@@ -196,6 +199,13 @@ pub(super) fn check_roughing(
         let j = floor_div(y_lim - top, di) + 1;
         frame.coordinate(frame.x((top + j * di).min(bottom))).map(|_| ())
     };
+    // Reading R-G75PECK `as-written`: a retract above the plunge's start,
+    // highest after layer 1's first peck when it stops short of the
+    // bottom (e_x > Δi): the move after that peck, before any other.
+    let ex = i128::from(c.x_mode.factor()) * i128::from(c.retract);
+    if c.readings.peck_retract_as_written && ex > di && y_top + di < y1 && y_top + di <= y_lim {
+        frame.coordinate(frame.x(y_top + di - ex))?;
+    }
     if y1 > y_lim {
         return peck_beyond(y_top, y1);
     }
@@ -270,7 +280,9 @@ impl G75Moves {
                 }
                 RoughStep::Retract => {
                     self.rough.sub = RoughStep::Peck;
-                    let y = r.top.max(r.depth - r.ex);
+                    // R-G75PECK: clamped at the plunge's start, or e as
+                    // written (`peck_as_written`, decided once per cycle).
+                    let y = if r.peck_as_written { r.depth - r.ex } else { r.top.max(r.depth - r.ex) };
                     let role = Role::PeckRetract(self.plunge());
                     if let Some(mv) = self.rough_move(Motion::Rapid, r.u, y, role) {
                         return Some(mv);
