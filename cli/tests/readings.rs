@@ -44,7 +44,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G75P",
             "R-SIDE",
             "R-G75RIDGE",
-            "R-G75PECK"
+            "R-G75PECK",
+            "R-SPINDLE"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -63,7 +64,8 @@ fn readings_lists_one_line_per_reading() {
             "R-LEADIN",
             "R-INFEED",
             "R-G92Q",
-            "R-SIDE"
+            "R-SIDE",
+            "R-SPINDLE"
         ],
         "{gsk988}"
     );

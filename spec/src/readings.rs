@@ -247,6 +247,21 @@ pub enum G75PeckRetract {
     AsWritten,
 }
 
+/// Reading R-SPINDLE: what a thread block (G32, G92, G76, G78) needs of
+/// the spindle on the FANUC-style profiles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Spindle {
+    /// `speed-and-running` (default): a speed S > 0 and the spindle running
+    /// (M03/M04 since the last M05): the 988TA G92's "如果无速度信号反馈到
+    /// 系统…时，产生报警" alarms a stopped spindle, and DOMAIN lists "no
+    /// spindle speed commanded" among the alarms.
+    #[default]
+    SpeedAndRunning,
+    /// `speed-only`: a speed S > 0 suffices: 988TA G76 note 8 / G32 note 7
+    /// "如果没有指令主轴速度，产生报警" speaks of the commanded speed only.
+    SpeedOnly,
+}
+
 /// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
 /// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
 /// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
@@ -309,6 +324,8 @@ pub struct Readings {
     pub g75_ridges: G75Ridges,
     /// R-G75PECK: the retract after a peck.
     pub g75_peck: G75PeckRetract,
+    /// R-SPINDLE: what a thread block needs of the spindle.
+    pub spindle: Spindle,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -643,6 +660,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-SPINDLE",
+        point: "what a thread block (G32, G92, G76, G78) needs of the spindle",
+        values: &[
+            ReadingValue {
+                name: "speed-and-running",
+                source: "S > 0 and M03/M04 since the last M05: 988TA G92 \"如果无速度信号反馈到系统…时，产生报警\"",
+            },
+            ReadingValue {
+                name: "speed-only",
+                source: "S > 0 suffices: 988TA G76 note 8, G32 note 7 \"如果没有指令主轴速度，产生报警\"",
+            },
+        ],
+        profiles: GSK,
+    },
 ];
 
 impl Readings {
@@ -714,6 +746,10 @@ impl Readings {
                 G75PeckRetract::Clamped => "clamped",
                 G75PeckRetract::AsWritten => "as-written",
             },
+            "R-SPINDLE" => match self.spindle {
+                Spindle::SpeedAndRunning => "speed-and-running",
+                Spindle::SpeedOnly => "speed-only",
+            },
             _ => return None,
         };
         Some(v)
@@ -774,6 +810,8 @@ impl Readings {
             ("R-G75RIDGE", "as-written") => self.g75_ridges = G75Ridges::AsWritten,
             ("R-G75PECK", "clamped") => self.g75_peck = G75PeckRetract::Clamped,
             ("R-G75PECK", "as-written") => self.g75_peck = G75PeckRetract::AsWritten,
+            ("R-SPINDLE", "speed-and-running") => self.spindle = Spindle::SpeedAndRunning,
+            ("R-SPINDLE", "speed-only") => self.spindle = Spindle::SpeedOnly,
             _ => return Err(bad()),
         }
         Ok(())

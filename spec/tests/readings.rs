@@ -411,7 +411,8 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
-         R-SIDE, R-G75RIDGE, R-G75PECK)"
+         R-SIDE, R-G75RIDGE, R-G75PECK, \
+         R-SPINDLE)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1091,4 +1092,37 @@ fn g75_peck_retract_beyond_the_range() {
     let e = run(src, &gsk980_is_c(&["R-G75PECK=as-written"])).unwrap_err();
     let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
     assert_eq!(value.increments, 1_000_009_000);
+}
+
+/// R-SPINDLE (docs/readings-sweep.md entry 13): [`G92_LONG_J`] without its
+/// M3, on the 980TDi. `speed-and-running` (default): S300 was commanded
+/// but the spindle was never started, refused on the G92 block (line 3)
+/// with `no_spindle_speed`. `speed-only` ("如果没有指令主轴速度，产生报警"
+/// speaks of the commanded speed only): the moves of the program with M3,
+/// worked in `run_out_clamped_by_default` (X30 Z5, X30 Z-18, X40 Z-20, X40
+/// Z5). Without S (or after `S0`) it is refused under both; an M05 stops
+/// the spindle, which only `speed-and-running` looks at.
+#[test]
+fn spindle_speed_only() {
+    let stopped = G92_LONG_J.replace("M3 S300", "S300");
+    let e = read(&stopped, &machine(ProfileName::Gsk980, &[])).unwrap_err();
+    assert_eq!((e.kind.clone(), e.line), (ErrorKind::NoSpindleSpeed, 3));
+    let m = machine(ProfileName::Gsk980, &["R-SPINDLE=speed-only"]);
+    let got = run(&stopped, &m).unwrap();
+    assert_eq!(got, run(G92_LONG_J, &machine(ProfileName::Gsk980, &[])).unwrap());
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -18_000)),
+            (Role::RunOut, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    );
+    let m05 = G92_LONG_J.replace("G00 X40 Z5", "M05\nG00 X40 Z5");
+    assert_eq!(read(&m05, &machine(ProfileName::Gsk980, &[])).unwrap_err().kind, ErrorKind::NoSpindleSpeed);
+    assert!(run(&m05, &m).is_ok());
+    let no_speed = G92_LONG_J.replace("M3 S300", "M3");
+    let e = read(&no_speed, &m).unwrap_err();
+    assert_eq!((e.kind, e.line), (ErrorKind::NoSpindleSpeed, 3));
 }
