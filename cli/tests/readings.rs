@@ -45,7 +45,8 @@ fn readings_lists_one_line_per_reading() {
             "R-SIDE",
             "R-G75RIDGE",
             "R-G75PECK",
-            "R-SPINDLE"
+            "R-SPINDLE",
+            "R-G75LAYER"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");

@@ -145,13 +145,22 @@ pub struct G75Readings {
     /// above Amn, so the next feed is the written Δi/2 + e). The ends of
     /// the pecks are the same under both.
     pub peck_retract_as_written: bool,
+    /// Reading R-G75LAYER: the layers of V(Δv) are Δv deep from S's level,
+    /// the last taking the remainder, when `false` (`full-then-remainder`);
+    /// `M = ceil(D/Δv)` layers of equal depth when `true` (`equal`), D =
+    /// Y − Δu in increments: each D div M deep, the first D mod M one
+    /// increment deeper, so the bottom of layer m is `m·(D div M) + min(m,
+    /// D mod M)`.
+    pub equal_layers: bool,
 }
 
 impl G75Readings {
     /// The reading of every point before readings were selectable, the
     /// default on the gsk980 profile: ridges in layers refused, the peck
-    /// retract clamped at the plunge's start.
-    pub const DEFAULT: G75Readings = G75Readings { ridges_as_written: false, peck_retract_as_written: false };
+    /// retract clamped at the plunge's start, layers Δv deep and the last
+    /// the remainder.
+    pub const DEFAULT: G75Readings =
+        G75Readings { ridges_as_written: false, peck_retract_as_written: false, equal_layers: false };
 }
 
 impl Default for G75Readings {

@@ -190,6 +190,11 @@ const fn layer_count(g: &Square) -> i64 {
 /// Twin: `spec/src/g75/roughing.rs`, `layer_bottom`: `min(m·Δv, Y − Δu)`.
 fn layer_bottom(g: &Square, m: i64) -> i64 {
     match g.layer {
+        // Reading R-G75LAYER `equal`.
+        Some(_) if g.cycle.readings.equal_layers => {
+            let (d, count) = (bottom_rough(g), layer_count(g));
+            m * (d / count) + m.min(d % count)
+        }
         Some(v) => m.saturating_mul(v).min(bottom_rough(g)),
         None => bottom_rough(g),
     }

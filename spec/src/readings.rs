@@ -262,6 +262,21 @@ pub enum Spindle {
     SpeedOnly,
 }
 
+/// Reading R-G75LAYER: how V(Δv), "单次切削循环时的最大允许切深距离（分层次进行
+/// 切削，单层最大深度）", divides the roughing depth D = Y − Δu (from S's
+/// level) of the 980TDi's G75.1.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Layers {
+    /// `full-then-remainder` (default): layers Δv deep, the last the
+    /// remainder (G75's own 分层: each Δv, then what is left).
+    #[default]
+    FullThenRemainder,
+    /// `equal`: ceil(D/Δv) layers of equal depth, "最大" (maximum) allowing
+    /// less than Δv; in increments each D div M, the first D mod M one
+    /// increment deeper.
+    Equal,
+}
+
 /// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
 /// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
 /// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
@@ -326,6 +341,8 @@ pub struct Readings {
     pub g75_peck: G75PeckRetract,
     /// R-SPINDLE: what a thread block needs of the spindle.
     pub spindle: Spindle,
+    /// R-G75LAYER: the depths of the layers.
+    pub g75_layers: G75Layers,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -675,6 +692,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK,
     },
+    ReadingEntry {
+        id: "R-G75LAYER",
+        point: "the depths of G75.1's layers V(Δv) (\"单层最大深度\")",
+        values: &[
+            ReadingValue {
+                name: "full-then-remainder",
+                source: "layers Δv deep from S's level, the last the remainder (G75's 分层)",
+            },
+            ReadingValue {
+                name: "equal",
+                source: "\"最大\" allows less: ceil(D/Δv) equal layers, the first D mod M one increment deeper",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -750,6 +782,10 @@ impl Readings {
                 Spindle::SpeedAndRunning => "speed-and-running",
                 Spindle::SpeedOnly => "speed-only",
             },
+            "R-G75LAYER" => match self.g75_layers {
+                G75Layers::FullThenRemainder => "full-then-remainder",
+                G75Layers::Equal => "equal",
+            },
             _ => return None,
         };
         Some(v)
@@ -812,6 +848,8 @@ impl Readings {
             ("R-G75PECK", "as-written") => self.g75_peck = G75PeckRetract::AsWritten,
             ("R-SPINDLE", "speed-and-running") => self.spindle = Spindle::SpeedAndRunning,
             ("R-SPINDLE", "speed-only") => self.spindle = Spindle::SpeedOnly,
+            ("R-G75LAYER", "full-then-remainder") => self.g75_layers = G75Layers::FullThenRemainder,
+            ("R-G75LAYER", "equal") => self.g75_layers = G75Layers::Equal,
             _ => return Err(bad()),
         }
         Ok(())
@@ -896,6 +934,7 @@ impl Readings {
         G75Readings {
             ridges_as_written: self.g75_ridges == G75Ridges::AsWritten,
             peck_retract_as_written: self.g75_peck == G75PeckRetract::AsWritten,
+            equal_layers: self.g75_layers == G75Layers::Equal,
         }
     }
 }

@@ -412,7 +412,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
          R-SIDE, R-G75RIDGE, R-G75PECK, \
-         R-SPINDLE)"
+         R-SPINDLE, R-G75LAYER)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1125,4 +1125,73 @@ fn spindle_speed_only() {
     let no_speed = G92_LONG_J.replace("M3 S300", "M3");
     let e = read(&no_speed, &m).unwrap_err();
     assert_eq!((e.kind, e.line), (ErrorKind::NoSpindleSpeed, 3));
+}
+
+/// R-G75LAYER on the sweep's numbers (docs/readings-sweep.md entry 34:
+/// depth 10 mm, V4), 980TDi IS-B, from X60 Z40: S = (X50, Z30), H-10 (D =
+/// 10 000 increments on the diameter, bottom X40), D-6 (far flank Z24),
+/// I3: plunges Z30 and Z24 + 3 = Z27 (= Z30 - Q3); P4000: Δi 4 ≥ every
+/// layer, one peck a plunge; R omitted (no retract); J0.
+///
+/// `full-then-remainder` (default): M = ceil(10/4) = 3, bottoms 4, 8, 10:
+/// X46, X42, X40. `equal`: M = 3 layers of 10 000 / 3: q = 3 333, r = 1,
+/// the first layer one increment deeper: bottoms 3 334, 6 667, 10 000:
+/// X46.666, X43.333, X40. Each layer: the plunge at Z30 and back (⑥),
+/// the step to Z27 and its plunge and back; between layers Z30 at the old
+/// top then down to the new (②); after the last, up to X50 at Z27, Z30,
+/// the rough contour X40 Z30, X40 Z27, X50 Z27, Z30 and X60 Z40.
+#[test]
+fn g75_equal_layers() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P4000 Q3000 H-10 D-6\nG75.1 V4 I3\nM30\n";
+    let want = |bottoms: [i64; 3]| {
+        let mut want = vec![(true, 50_000, 30_000)];
+        let (mut previous_top, mut top) = (None, 50_000);
+        for bottom in bottoms {
+            if let Some(previous) = previous_top {
+                // Step ②: Z30 at the old top, then down to this top.
+                want.extend([(true, previous, 30_000), (true, top, 30_000)]);
+            }
+            want.extend([
+                (false, bottom, 30_000),
+                (true, top, 30_000),
+                (true, top, 27_000),
+                (false, bottom, 27_000),
+                (true, top, 27_000),
+            ]);
+            (previous_top, top) = (Some(top), bottom);
+        }
+        want.extend([
+            (true, 50_000, 27_000),
+            (true, 50_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 27_000),
+            (false, 50_000, 27_000),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]);
+        want
+    };
+    assert_eq!(kinds(&run(src, &machine(ProfileName::Gsk980, &[])).unwrap()), want([46_000, 42_000, 40_000]));
+    let equal = run(src, &machine(ProfileName::Gsk980, &["R-G75LAYER=equal"])).unwrap();
+    assert_eq!(kinds(&equal), want([46_666, 43_333, 40_000]));
+}
+
+/// R-G75LAYER `equal` near the end of the range (R-RANGE), 980TDi IS-C:
+/// S = X-99999.89 (-999 998 900), H-0.25 (D = 2 500), V0.1 (Δv 1 000):
+/// M = 3. Default bottoms 1 000, 2 000, 2 500: layer 2's first peck, 1 000
+/// + Δi (P1000) = 2 000, is X -1 000 000 900, the first coordinate out of
+/// range. `equal`: q = 833, r = 1, bottoms 834, 1 667, 2 500: layer 2's
+/// first peck from 834 to min(1 834, 1 667) = 1 667, X -1 000 000 567.
+/// Both engines refuse at the same coordinate.
+#[test]
+fn g75_equal_layers_beyond_the_range() {
+    let src =
+        "M3 S300\nG00 X-99999.89 Z40\nG75.1 X-99999.89 Z30 P1000 Q5000 H-0.25 D-1\nG75.1 V0.1 I0.5\nM30\n";
+    for (reading, want) in
+        [("R-G75LAYER=full-then-remainder", -1_000_000_900), ("R-G75LAYER=equal", -1_000_000_567)]
+    {
+        let e = run(src, &gsk980_is_c(&[reading])).unwrap_err();
+        let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
+        assert_eq!(value.increments, want);
+    }
 }

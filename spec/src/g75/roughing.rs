@@ -44,7 +44,9 @@ pub fn layer_count(g: &Groove) -> i128 {
 }
 
 /// `y_m = min(m·Δv, Y − Δu)`, the bottom of layer `m` (1-based); `Y − Δu`
-/// without V (R-G75LAYER).
+/// without V (R-G75LAYER). Under R-G75LAYER `equal`, with D = Y − Δu and
+/// M = [`layer_count`]: `m·(D div M) + min(m, D mod M)` (the first D mod M
+/// layers one increment deeper).
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `Layers::bottom`.
 ///
@@ -52,6 +54,10 @@ pub fn layer_count(g: &Groove) -> i128 {
 #[must_use]
 pub fn layer_bottom(g: &Groove, m: i128) -> i128 {
     match g.layer {
+        Some(_) if g.cycle.readings.equal_layers => {
+            let (d, count) = (bottom_rough(g), layer_count(g));
+            m * (d / count) + m.min(d % count)
+        }
         Some(v) => (m.saturating_mul(v)).min(bottom_rough(g)),
         None => bottom_rough(g),
     }

@@ -301,7 +301,7 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     let a11_local = (a11, y_top);
     let a11_abs = frame.point(a11_local)?;
     if roughs {
-        check_roughing(c, &frame, y_top, (a11, a1f), layers.count)?;
+        check_roughing(c, &frame, y_top, (a11, a1f), &layers)?;
     }
     let w = i128::from(g.w);
     let top_last = if layers.count >= 2 { i128::from(layers.bottom(layers.count - 1)) } else { y_top };
@@ -378,6 +378,7 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
         dk: c.step,
         ex: g.f * c.retract,
         peck_as_written: c.readings.peck_retract_as_written,
+        equal_layers: layers.equal,
         prev_top: saturate_i64(y_top),
         top: saturate_i64(y_top),
         bottom: y1,
