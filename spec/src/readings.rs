@@ -277,6 +277,22 @@ pub enum G75Layers {
     Equal,
 }
 
+/// Reading R-G75ARC: which code names an arc of G75.1's rounds in the nc
+/// output and in an nc trace `check` reads. An output convention: the
+/// moves (`Motion::Arc`'s `clockwise`, seen with +Z right and +X up) are
+/// the same under both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ArcNames {
+    /// `rear-post` (default): G02 clockwise seen with +Z right and +X up
+    /// (the view of a rear-post lathe, +X away from the operator). The
+    /// sources are silent (no G02 page).
+    #[default]
+    RearPost,
+    /// `front-post`: the codes exchanged, as a front-post lathe's control
+    /// names the same arc (its +X towards the operator mirrors the view).
+    FrontPost,
+}
+
 /// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
 /// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
 /// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
@@ -343,6 +359,8 @@ pub struct Readings {
     pub spindle: Spindle,
     /// R-G75LAYER: the depths of the layers.
     pub g75_layers: G75Layers,
+    /// R-G75ARC: G02/G03 in the nc output and nc traces.
+    pub arc_names: ArcNames,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -707,6 +725,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-G75ARC",
+        point: "which of G02/G03 names a G75.1 round's arc in the nc output and in check's nc traces",
+        values: &[
+            ReadingValue {
+                name: "rear-post",
+                source: "G02 clockwise seen with +Z right and +X up; the sources are silent (no G02 page)",
+            },
+            ReadingValue {
+                name: "front-post",
+                source: "the codes exchanged, as a front-post lathe names the same arc (+X towards the operator)",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -786,6 +819,10 @@ impl Readings {
                 G75Layers::FullThenRemainder => "full-then-remainder",
                 G75Layers::Equal => "equal",
             },
+            "R-G75ARC" => match self.arc_names {
+                ArcNames::RearPost => "rear-post",
+                ArcNames::FrontPost => "front-post",
+            },
             _ => return None,
         };
         Some(v)
@@ -850,6 +887,8 @@ impl Readings {
             ("R-SPINDLE", "speed-only") => self.spindle = Spindle::SpeedOnly,
             ("R-G75LAYER", "full-then-remainder") => self.g75_layers = G75Layers::FullThenRemainder,
             ("R-G75LAYER", "equal") => self.g75_layers = G75Layers::Equal,
+            ("R-G75ARC", "rear-post") => self.arc_names = ArcNames::RearPost,
+            ("R-G75ARC", "front-post") => self.arc_names = ArcNames::FrontPost,
             _ => return Err(bad()),
         }
         Ok(())

@@ -412,7 +412,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, \
          R-SIDE, R-G75RIDGE, R-G75PECK, \
-         R-SPINDLE, R-G75LAYER)"
+         R-SPINDLE, R-G75LAYER, R-G75ARC)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
