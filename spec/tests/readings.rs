@@ -1178,8 +1178,8 @@ fn g75_equal_layers() {
 
 /// R-G75LAYER `equal` near the end of the range (R-RANGE), 980TDi IS-C:
 /// S = X-99999.89 (-999 998 900), H-0.25 (D = 2 500), V0.1 (Δv 1 000):
-/// M = 3. Default bottoms 1 000, 2 000, 2 500: layer 2's first peck, 1 000
-/// + Δi (P1000) = 2 000, is X -1 000 000 900, the first coordinate out of
+/// M = 3. Default bottoms 1 000, 2 000, 2 500: layer 2's first peck, at
+/// 1 000 + Δi (P1000) = 2 000, is X -1 000 000 900, the first coordinate out of
 /// range. `equal`: q = 833, r = 1, bottoms 834, 1 667, 2 500: layer 2's
 /// first peck from 834 to min(1 834, 1 667) = 1 667, X -1 000 000 567.
 /// Both engines refuse at the same coordinate.
