@@ -155,7 +155,8 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
             _ => nc_aux(out, item.block(), false)?,
         }
         if let Some(cycle) = cycle {
-            nc_cycle(out, t, cycle, moves(job, cycle)?, job.q_unit, &readings)?;
+            let front_post = job.machine.readings.arc_names == cycleref_spec::readings::ArcNames::FrontPost;
+            nc_cycle(out, t, cycle, moves(job, cycle)?, (job.q_unit, front_post), &readings)?;
         }
         nc_aux(out, item.block(), true)
     })
@@ -166,13 +167,14 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// plunge and contour announced by a comment as the cycle's style asks
 /// ([`NcStyle`]), then what restores the modal state the cycle changed.
 /// `readings` (the non-default readings, `ID=VALUE, …`) is named on a
-/// comment line after the heading when it is not empty.
+/// comment line after the heading when it is not empty; `front_post`:
+/// reading R-G75ARC `front-post` (G02/G03 exchanged).
 fn nc_cycle<W: Write>(
     out: &mut W,
     t: &mut NcText,
     cycle: Cycle<'_, '_>,
     moves: Moves,
-    q: QUnit,
+    (q, front_post): (QUnit, bool),
     readings: &str,
 ) -> io::Result<()> {
     let u = cycle.units();
@@ -212,7 +214,7 @@ fn nc_cycle<W: Write>(
         match style.words {
             MoveWords::Fanuc => nc_move(out, t, &m, u, q)?,
             MoveWords::LinuxCnc => nc_g33_move(out, t, &m, u)?,
-            MoveWords::Groove => nc_groove_move(out, t, &m, at, x_factor, u)?,
+            MoveWords::Groove => nc_groove_move(out, t, &m, at, (x_factor, front_post), u)?,
         }
         at = m.to;
     }
@@ -277,18 +279,20 @@ fn nc_g33_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units) -> io:
     out.write_all(b"\n")
 }
 
-/// One G75.1 move: arcs with I/K, the rest as [`nc_move`].
+/// One G75.1 move: arcs with I/K, the rest as [`nc_move`]. Reading
+/// R-G75ARC: G02 for an arc clockwise seen with +Z right and +X up
+/// (`rear-post`), the codes exchanged under `front-post`.
 fn nc_groove_move<W: Write>(
     out: &mut W,
     t: &mut NcText,
     m: &Move,
     from: Point,
-    x_factor: i64,
+    (x_factor, front_post): (i64, bool),
     u: Units,
 ) -> io::Result<()> {
     if let Motion::Arc { centre, clockwise } = m.motion {
         let (i, k) = arc_ik(from, centre, x_factor, u);
-        let g = if clockwise { "G02" } else { "G03" };
+        let g = if clockwise != front_post { "G02" } else { "G03" };
         writeln!(out, "{g} X{} Z{} I{i} K{k}", Fixed::new(m.to.x, u), Fixed::new(m.to.z, u))
     } else {
         nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true })

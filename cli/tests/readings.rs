@@ -51,7 +51,13 @@ fn readings_lists_one_line_per_reading() {
             "R-G32RUNOUT",
             "R-CHAMFERANGLE",
             "R-MODAL",
-            "R-G32LONG"
+            "R-G32LONG",
+            "R-SIDE",
+            "R-G75RIDGE",
+            "R-G75PECK",
+            "R-SPINDLE",
+            "R-G75LAYER",
+            "R-G75ARC"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");
@@ -79,7 +85,9 @@ fn readings_lists_one_line_per_reading() {
             "R-G32RUNOUT",
             "R-CHAMFERANGLE",
             "R-MODAL",
-            "R-G32LONG"
+            "R-G32LONG",
+            "R-SIDE",
+            "R-SPINDLE"
         ],
         "{gsk988}"
     );
@@ -307,4 +315,54 @@ fn g78_centre_and_lead_in_readings_in_the_nc_output() {
         p,
     ]);
     assert!(text.starts_with("AGREE") && text.contains("\nreadings: R-LEADIN=whole-leads\n"), "{text}");
+}
+
+/// R-G75ARC (an output convention): a G75.1 with rounds at the inner
+/// bottom's corners D and E (P0011: d = e = 1, R0.5) on the 980TDi, IS-C.
+/// Its finishing contour has two arcs; under `front-post` each arc's code
+/// is exchanged (G02 ↔ G03), every coordinate, I and K unchanged; `check`
+/// of that output agrees under `front-post` and differs under the default,
+/// which reads its G02 as clockwise seen with +Z right and +X up.
+#[test]
+fn arc_codes_front_post() {
+    let prog = common::tmp(
+        "readings-arc",
+        "g75.nc",
+        "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10\nG75.1 R0.5 I4 J1 D0.5 E0.5 P0011\nM30\n",
+    );
+    let p = prog.to_str().expect("utf-8");
+    let base = ["expand", "--profile", "gsk980", "--increment", "is-c"];
+    let rear = common::stdout(&[&base[..], &[p]].concat());
+    let front = common::stdout(&[&base[..], &["--reading", "R-G75ARC=front-post", p]].concat());
+    let arcs = |text: &str| -> Vec<String> {
+        text.lines().filter(|l| l.starts_with("G02") || l.starts_with("G03")).map(str::to_string).collect()
+    };
+    let (rear_arcs, front_arcs) = (arcs(&rear), arcs(&front));
+    assert_eq!(rear_arcs.len(), 2, "{rear}");
+    let exchanged: Vec<String> = rear_arcs
+        .iter()
+        .map(|l| {
+            if let Some(rest) = l.strip_prefix("G02") {
+                format!("G03{rest}")
+            } else {
+                format!("G02{}", &l[3..])
+            }
+        })
+        .collect();
+    assert_eq!(front_arcs, exchanged);
+    // Every other line the same, but the readings' comment.
+    let others = |text: &str| -> Vec<String> {
+        text.lines()
+            .filter(|l| !l.starts_with("G02") && !l.starts_with("G03") && !l.starts_with("(readings:"))
+            .map(str::to_string)
+            .collect()
+    };
+    assert_eq!(others(&rear), others(&front));
+    let trace = common::tmp("readings-arc", "trace.nc", &front);
+    let t = trace.to_str().expect("utf-8");
+    let check = ["check", "--profile", "gsk980", "--increment", "is-c", "--trace", t];
+    let text = common::stdout(&[&check[..], &["--reading", "R-G75ARC=front-post", p]].concat());
+    assert!(text.starts_with("AGREE"), "{text}");
+    let out = common::run(&[&check[..], &[p]].concat(), None);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stdout));
 }

@@ -76,6 +76,7 @@ pub const G75_SEED: G75Cycle = G75Cycle {
     tool_width: None,
     path: PathType::Rough,
     corners: [Corner::SHARP; 4],
+    readings: crate::G75Readings::DEFAULT,
 };
 
 /// The trapezoidal groove on a slope of `examples/gsk980-g75-slope.nc` at
@@ -108,6 +109,7 @@ pub const G75_SLOPE: G75Cycle = G75Cycle {
         Corner { size: 400, kind: CornerKind::Round },
         Corner { size: 400, kind: CornerKind::Round },
     ],
+    readings: crate::G75Readings::DEFAULT,
 };
 
 /// A LinuxCNC G76 with every feature of its passes

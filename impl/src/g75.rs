@@ -8,6 +8,7 @@
 //! (`R-G75…`) are listed in `docs/INTERPRETATIONS.md`.
 
 use crate::error::{CycleError, Field};
+use crate::readings::G75Readings;
 use crate::units::{IncrementSystem, Length, Point, Units, XMode, MAX_LENGTH};
 
 /// J: which paths the cycle runs (走刀路径类型).
@@ -125,6 +126,10 @@ pub struct G75Cycle {
     pub path: PathType,
     /// A(r1), B(r2), D(r3), E(r4) with their P digits; index with [`corner`].
     pub corners: [Corner; 4],
+    /// The readings of the points the page leaves open (issue 34), as the
+    /// program reader resolves them; [`G75Readings::DEFAULT`] for a cycle
+    /// built without the reader.
+    pub readings: G75Readings,
 }
 
 /// Largest |H| or |D|, and largest Δv, in increments: 9999.999 at IS-B,

@@ -83,5 +83,5 @@ pub use g92::G92Cycle;
 pub use lead::{Lead, LeadWord, Ratio};
 pub use linuxcnc::LinuxCncG76;
 pub use moves::{Flank, Motion, Move, Pass, PassKind, Plunge, Role};
-pub use readings::CycleReadings;
+pub use readings::{CycleReadings, G75Readings};
 pub use units::{IncrementSystem, InputUnit, Length, Point, Units, XMode};

@@ -119,6 +119,14 @@ pub struct CycleReadings {
     /// Z when `true` (`tie-z`): K then runs along Z and J along X. The
     /// path is the same (45°).
     pub g32_tie_z: bool,
+    /// Reading R-SIDE: a start point A inside the thread's crest (between C
+    /// and B, or inside D's crest) is refused
+    /// ([`crate::CycleError::StartInsideThread`]) when `false`
+    /// (`refuse-inside`); accepted when `true` (`accept`: no page lists A's
+    /// position among its alarms), the moves the cycle's own formulas with
+    /// A where it is. A on the X of C, which gives no side, is refused
+    /// either way.
+    pub accept_start_inside: bool,
 }
 
 impl CycleReadings {
@@ -136,7 +144,7 @@ impl CycleReadings {
     /// decision 3 (R-DEPTH `previous-plus-min`), every pass for all starts
     /// before the next (R-STARTS `pass-major`), the chamfer angle from the long axis
     /// (R-CHAMFERANGLE `from-long-axis`), a G32's tie X long (R-G32LONG
-    /// `tie-x`).
+    /// `tie-x`), an A inside the crest refused (R-SIDE `refuse-inside`).
     pub const DEFAULT: CycleReadings = CycleReadings {
         clamp_run_out: true,
         x_run_out_towards_start: false,
@@ -151,11 +159,54 @@ impl CycleReadings {
         start_major: false,
         chamfer_from_short_axis: false,
         g32_tie_z: false,
+        accept_start_inside: false,
     };
 }
 
 impl Default for CycleReadings {
     fn default() -> CycleReadings {
         CycleReadings::DEFAULT
+    }
+}
+
+/// What a G75.1 cycle (the 980TDi's trapezoid groove, seed 001) does at the
+/// points its page leaves open (docs/INTERPRETATIONS.md, issue 34),
+/// resolved by the program reader; each is decided once for the cycle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct G75Readings {
+    /// Reading R-G75RIDGE: layered roughing whose step Δk is wider than the
+    /// tool (ridges between a layer's plunges) is refused
+    /// ([`crate::CycleError::RidgesInLayers`]) when `false` (`refuse`);
+    /// made as steps ②⑦⑧ write it when `true` (`as-written`: no page calls
+    /// it an alarm), the rapids of the next layers then crossing the
+    /// ridges.
+    pub ridges_as_written: bool,
+    /// Reading R-G75PECK: the retract e after a peck is clamped at the
+    /// plunge's start (Amn) when `false` (`clamped`); made as step ④
+    /// writes it when `true` (`as-written`: "径向(X 轴)快速移动退刀 e", even
+    /// above Amn, so the next feed is the written Δi/2 + e). The ends of
+    /// the pecks are the same under both.
+    pub peck_retract_as_written: bool,
+    /// Reading R-G75LAYER: the layers of V(Δv) are Δv deep from S's level,
+    /// the last taking the remainder, when `false` (`full-then-remainder`);
+    /// `M = ceil(D/Δv)` layers of equal depth when `true` (`equal`), D =
+    /// Y − Δu in increments: each D div M deep, the first D mod M one
+    /// increment deeper, so the bottom of layer m is `m·(D div M) + min(m,
+    /// D mod M)`.
+    pub equal_layers: bool,
+}
+
+impl G75Readings {
+    /// The reading of every point before readings were selectable, the
+    /// default on the gsk980 profile: ridges in layers refused, the peck
+    /// retract clamped at the plunge's start, layers Δv deep and the last
+    /// the remainder.
+    pub const DEFAULT: G75Readings =
+        G75Readings { ridges_as_written: false, peck_retract_as_written: false, equal_layers: false };
+}
+
+impl Default for G75Readings {
+    fn default() -> G75Readings {
+        G75Readings::DEFAULT
     }
 }

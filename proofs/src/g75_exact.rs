@@ -190,6 +190,11 @@ const fn layer_count(g: &Square) -> i64 {
 /// Twin: `spec/src/g75/roughing.rs`, `layer_bottom`: `min(m·Δv, Y − Δu)`.
 fn layer_bottom(g: &Square, m: i64) -> i64 {
     match g.layer {
+        // Reading R-G75LAYER `equal`.
+        Some(_) if g.cycle.readings.equal_layers => {
+            let (d, count) = (bottom_rough(g), layer_count(g));
+            m * (d / count) + m.min(d % count)
+        }
         Some(v) => m.saturating_mul(v).min(bottom_rough(g)),
         None => bottom_rough(g),
     }
@@ -251,7 +256,8 @@ fn check_tool_fits(g: &Square) -> Result<(), CycleError> {
 /// Twin: `spec/src/g75/roughing.rs`, `check_ridges` (R-G75RIDGE).
 fn check_ridges(g: &Square) -> Result<(), CycleError> {
     let c = &g.cycle;
-    if !c.path.roughs() || layer_count(g) < 2 || c.step <= g.tool {
+    // Reading R-G75RIDGE `as-written`: no refusal.
+    if c.readings.ridges_as_written || !c.path.roughs() || layer_count(g) < 2 || c.step <= g.tool {
         return Ok(());
     }
     let range = plunge_range(g, 1);
@@ -373,7 +379,14 @@ fn rough_moves(g: &Square, path: &mut Path, layers: &[Layer], a11: At, y_top: i6
                 }
                 path.go(Local::Feed, (a, to), Role::Peck(plunge));
                 if g.retract > 0 {
-                    path.rapid((a, layer.top.max(to - g.retract)), Role::PeckRetract(plunge));
+                    // Reading R-G75PECK: clamped at the plunge's start
+                    // unless `as-written`.
+                    let y = if g.cycle.readings.peck_retract_as_written {
+                        to - g.retract
+                    } else {
+                        layer.top.max(to - g.retract)
+                    };
+                    path.rapid((a, y), Role::PeckRetract(plunge));
                 }
                 j += 1;
             }

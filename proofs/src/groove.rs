@@ -214,6 +214,7 @@ pub fn any_groove(d: &GrooveDomain) -> G75Cycle {
             _ => PathType::Finish,
         },
         corners,
+        readings: cycleref::G75Readings::DEFAULT,
     }
 }
 
@@ -488,6 +489,12 @@ fn sweeps(from: (i64, i64), to: (i64, i64), w2: i64, p: (i64, i64)) -> bool {
 ///   less than `1 + 1/f` beside K1 and K4, which sit at the integer depth
 ///   above the exact corner of flank and chord. The check allows 2, the
 ///   bound at f = 1.
+///
+/// The groove carries `G75Readings::DEFAULT` (`any_groove`), so reading
+/// R-G75RIDGE is pinned to its default `refuse`: R-G75RIDGE `as-written`
+/// is exempt by design, since it makes layered roughing with ridges as
+/// steps ②⑦⑧ write it and the next layer's rapids then cross the ridges
+/// (docs/INTERPRETATIONS.md R-G75RIDGE), which the first point forbids.
 pub fn groove_material(d: &GrooveDomain, engine: &(impl GrooveEngine + ?Sized)) {
     declare(&[
         "a ridge between plunges",

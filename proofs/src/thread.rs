@@ -186,6 +186,12 @@ fn cmp(a: (i128, i128), b: (i128, i128)) -> i32 {
 /// must follow a run-out above its pass's cut line (`s·i < 0`, module docs)
 /// and is counted instead. The moves are
 /// checked as they stream, not collected.
+///
+/// The cycle carries `CycleReadings::DEFAULT` (`any_cycle`), so reading
+/// R-SIDE is pinned to its default `refuse-inside`: R-SIDE `accept` is
+/// exempt by design, since it makes an A inside the crest as written and
+/// its retract to E and return along Z then run through the thread (the
+/// page's own moves, docs/INTERPRETATIONS.md R-SIDE).
 pub fn no_rapid_in_thread<E: Engine>(d: &Domain, engine: &E) {
     declare(&[
         "external thread, towards -Z",

@@ -334,6 +334,7 @@ proptest! {
         left_b in any::<bool>(), centre_b in any::<bool>(), same_z in any::<bool>(),
         left_first in any::<bool>(), one_at_zero in any::<bool>(), formula in any::<bool>(),
         start_major in any::<bool>(), from_short in any::<bool>(),
+        accept_inside in any::<bool>(),
     ) {
         let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
         let c = G76Cycle {
@@ -351,6 +352,41 @@ proptest! {
                 start_major,
                 chamfer_from_short_axis: from_short,
                 g32_tie_z: false,
+                accept_start_inside: accept_inside,
+            },
+            ..c
+        };
+        let _ = same(&c);
+    }
+
+    /// R-SIDE `accept`: A moved inside the crest (between the X of C and
+    /// the crest at B or at D, `place` in thousandths of that span), under
+    /// every value of the readings the pass shape depends on: both engines
+    /// make the same moves or refuse alike (a pass coordinate out of range
+    /// included).
+    #[test]
+    fn engine_equals_spec_start_inside_the_crest(
+        c in cycle(), place in 1_i64..1000, clamp in any::<bool>(), towards in any::<bool>(),
+        end in 0..3_u8, same_z in any::<bool>(), accept_inside in any::<bool>(),
+    ) {
+        let xf = c.x_mode.factor();
+        let c_x = c.end.x + xf * c.taper;
+        let side = if c.start.x >= c_x { 1 } else { -1 };
+        // The crest at B or at D, whichever lies further out.
+        let (b_x, crest_d) = (c_x + side * xf * c.thread_height, c.end.x + side * xf * c.thread_height);
+        let far = if side * (b_x - crest_d) >= 0 { b_x } else { crest_d };
+        let span = far - c_x;
+        let a_x = c_x + span * place / 1000;
+        let pass_end = [PassEnd::TravelI, PassEnd::Parallel, PassEnd::Translated][usize::from(end)];
+        let c = G76Cycle {
+            start: Point::new(a_x, c.start.z),
+            readings: cycleref::CycleReadings {
+                clamp_run_out: clamp,
+                x_run_out_towards_start: towards,
+                pass_end,
+                lead_in_same_z: same_z,
+                accept_start_inside: accept_inside,
+                ..cycleref::CycleReadings::DEFAULT
             },
             ..c
         };

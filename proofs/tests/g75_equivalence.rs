@@ -83,13 +83,18 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
     );
     let shape = (angle(1, 900_000), angle(1, 900_000), prop_oneof![Just(0_u32), angle(0, 899_999)]);
     let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(max), corner(max), corner(max), corner(max)]);
-    (units, sizes, allowances, shape, rest).prop_map(
+    // The readings of the G75.1 page (issue 34), each value as often as
+    // the default: bit 0 R-G75RIDGE `as-written`, bit 1 R-G75PECK
+    // `as-written`, bit 2 R-G75LAYER `equal`.
+    let readings = any::<u8>();
+    (units, sizes, allowances, shape, rest, readings).prop_map(
         |(
             (units, x_mode),
             (depth, width, peck, step, retract, layer),
             (u, w, tool),
             (a, b, l),
             (sx, sz, j, corners),
+            bits,
         )| {
             let sx = if sx { 1 } else { -1 };
             let sz = if sz { 1 } else { -1 };
@@ -117,6 +122,11 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
                     _ => PathType::Finish,
                 },
                 corners,
+                readings: cycleref::G75Readings {
+                    ridges_as_written: bits & 1 != 0,
+                    peck_retract_as_written: bits & 2 != 0,
+                    equal_layers: bits & 4 != 0,
+                },
             }
         },
     )

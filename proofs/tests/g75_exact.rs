@@ -159,6 +159,7 @@ fn range_and_peck_alarms_agree() {
         tool_width: Some(2),
         path: PathType::RoughAndFinish,
         corners: [round, round, Corner { size: 1, kind: CornerKind::Chamfer }, round],
+        readings: cycleref::G75Readings::DEFAULT,
     };
     let same = |c: &G75Cycle| {
         let ours = cycleref::expand_g75(c).map(Iterator::collect::<Vec<_>>);

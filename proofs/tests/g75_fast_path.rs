@@ -160,6 +160,7 @@ fn generated_grooves() {
                 _ => PathType::Finish,
             },
             corners,
+            readings: cycleref::G75Readings::DEFAULT,
         };
         let (got, s) = both(&c);
         if got.is_ok() {

@@ -92,6 +92,7 @@ fn square_groove() -> cycleref::G75Cycle {
         tool_width: None,
         path: PathType::Rough,
         corners: [Corner::SHARP; 4],
+        readings: cycleref::G75Readings::DEFAULT,
     }
 }
 
@@ -1216,6 +1217,7 @@ fn angled_groove_with_a_zero_bottom_corner(on_flank_b: bool) -> cycleref::G75Cyc
         tool_width: Some(54),
         path: PathType::RoughAndFinish,
         corners: [chamfer, chamfer, r3, r4],
+        readings: cycleref::G75Readings::DEFAULT,
     }
 }
 
@@ -1265,6 +1267,7 @@ fn chords_meeting_the_flanks_at_the_layer_top_add_no_vertex() {
         tool_width: Some(1_000),
         path: PathType::RoughAndFinish,
         corners: [Corner::SHARP, Corner::SHARP, chamfer, chamfer],
+        readings: cycleref::G75Readings::DEFAULT,
     };
     let by_hand = [
         Point::new(30_000, -200),

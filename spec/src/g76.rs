@@ -94,7 +94,8 @@ fn len(v: Decimal, u: Units) -> Length {
 /// # Errors
 ///
 /// [`CycleError::StartInsideThread`] when A is not clear of the thread
-/// (reading R-SIDE).
+/// (reading R-SIDE `refuse-inside`), or on the X of C (no side, under
+/// either value).
 ///
 /// Twin: `impl/src/engine/g76.rs`, `expand_g76` (the same checks in
 /// integers).
@@ -116,7 +117,9 @@ pub fn geometry(c: &G76Cycle) -> Result<Geometry, CycleError> {
     let s = Decimal::from(side);
     let b_x = c_x + s * xf * k;
     let crest_at_end = d.0 + s * xf * k;
-    if s * (a.0 - b_x) < Decimal::ZERO || s * (a.0 - crest_at_end) < Decimal::ZERO {
+    // Reading R-SIDE `accept`: an A inside the crest is made as written.
+    let inside = s * (a.0 - b_x) < Decimal::ZERO || s * (a.0 - crest_at_end) < Decimal::ZERO;
+    if inside && !c.readings.accept_start_inside {
         return Err(CycleError::StartInsideThread);
     }
     let w = d.1 - a.1;
@@ -723,6 +726,14 @@ pub fn moves(c: &G76Cycle) -> Result<impl Iterator<Item = Move> + Clone + Send +
     // words within range and B lies between A and C, so X of C (the
     // finishing passes' start) and the lead-in start are the extremes.
     check_coordinate(g.c_x, u)?;
+    // Reading R-SIDE `accept`: A may lie inside the crest, B beyond it; the
+    // shallowest pass (the first) starts and ends furthest out (a
+    // `parallel` end lies between the two).
+    if let (true, Some(first)) = (c.readings.accept_start_inside, plan.first()) {
+        let shallowest = from_increments(first.pass.depth, u);
+        check_coordinate(g.c_x + s * xf * (k - shallowest), u)?;
+        check_coordinate(g.d.0 + s * xf * (k - shallowest), u)?;
+    }
     if let (Some(lz), Some(first)) = (lead_in, plan.first()) {
         // The shallowest pass (the first) has the lead-in start furthest out.
         let shallowest = from_increments(first.pass.depth, u);

@@ -15,7 +15,7 @@
 
 use core::fmt;
 use cycleref::readings::PassEnd;
-use cycleref::CycleReadings;
+use cycleref::{CycleReadings, G75Readings};
 
 use crate::profile::{ParamsError, ProfileName};
 
@@ -366,6 +366,103 @@ pub enum G32LongTie {
     TieZ,
 }
 
+/// Reading R-G75RIDGE: layered roughing (V) of the 980TDi's G75.1 whose
+/// step Δk is wider than the tool, so that a layer's plunges leave ridges
+/// the next layer's rapids cross.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Ridges {
+    /// `refuse` (default): refused with `ridges_in_layers`: the page says
+    /// its path is approximate, "代码大致走刀过程（从安全角度考虑，实际走刀路径
+    /// 存在部分偏差）", and does not give the deviation that would keep the
+    /// rapids out of the ridges.
+    #[default]
+    Refuse,
+    /// `as-written`: steps ②⑦⑧ as written (no page calls it an alarm): the
+    /// roughing path of every other groove, its rapids across the ridges.
+    AsWritten,
+}
+
+/// Reading R-G75PECK: the retract e after a peck of the 980TDi's G75.1
+/// when e exceeds the depth cut so far in the plunge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75PeckRetract {
+    /// `clamped` (default): the retract ends at the plunge's start Amn at
+    /// the highest, so the tool stays in the space the plunge has cut; the
+    /// next feed is then shorter than Δi/2 + e.
+    #[default]
+    Clamped,
+    /// `as-written`: step ④ "径向(X 轴)快速移动退刀 e" and step ⑤ "X 轴再次切削
+    /// 进给(Δi/2+e)" as written: the retract is e even above Amn.
+    AsWritten,
+}
+
+/// Reading R-SPINDLE: what a thread block (G32, G92, G76, G78) needs of
+/// the spindle on the FANUC-style profiles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Spindle {
+    /// `speed-and-running` (default): a speed S > 0 and the spindle running
+    /// (M03/M04 since the last M05): the 988TA G92's "如果无速度信号反馈到
+    /// 系统…时，产生报警" alarms a stopped spindle, and DOMAIN lists "no
+    /// spindle speed commanded" among the alarms.
+    #[default]
+    SpeedAndRunning,
+    /// `speed-only`: a speed S > 0 suffices: 988TA G76 note 8 / G32 note 7
+    /// "如果没有指令主轴速度，产生报警" speaks of the commanded speed only.
+    SpeedOnly,
+}
+
+/// Reading R-G75LAYER: how V(Δv), "单次切削循环时的最大允许切深距离（分层次进行
+/// 切削，单层最大深度）", divides the roughing depth D = Y − Δu (from S's
+/// level) of the 980TDi's G75.1.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Layers {
+    /// `full-then-remainder` (default): layers Δv deep, the last the
+    /// remainder (G75's own 分层: each Δv, then what is left).
+    #[default]
+    FullThenRemainder,
+    /// `equal`: ceil(D/Δv) layers of equal depth, "最大" (maximum) allowing
+    /// less than Δv; in increments each D div M, the first D mod M one
+    /// increment deeper.
+    Equal,
+}
+
+/// Reading R-G75ARC: which code names an arc of G75.1's rounds in the nc
+/// output and in an nc trace `check` reads. An output convention: the
+/// moves (`Motion::Arc`'s `clockwise`, seen with +Z right and +X up) are
+/// the same under both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ArcNames {
+    /// `rear-post` (default): G02 clockwise seen with +Z right and +X up
+    /// (the view of a rear-post lathe, +X away from the operator). The
+    /// sources are silent (no G02 page).
+    #[default]
+    RearPost,
+    /// `front-post`: the codes exchanged, as a front-post lathe's control
+    /// names the same arc (its +X towards the operator mirrors the view).
+    FrontPost,
+}
+
+/// Reading R-SIDE: a G76 (or G78) start point A inside the thread's crest
+/// (between C and B, or inside D's crest: s·(X_A − X_B) < 0 or
+/// s·(X_A − X_D − s·xf·k) < 0). The side itself is read from A against C
+/// ("根据程序起点位置自动确定退尾方向"), and A on C's X, which gives no
+/// side, is refused under both values.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum StartSide {
+    /// `refuse-inside` (default): refused with `start_inside_thread`:
+    /// seed 004's advice "螺纹切削循环起始点坐标X向，在切削外螺纹时，应比螺纹
+    /// 大径大" and the retract of step ⑦ ("X 轴快速移动到 E 点"), which would
+    /// run inside the work. The text does not decide (no page lists A's
+    /// position among its alarms).
+    #[default]
+    RefuseInside,
+    /// `accept`: no page calls it an alarm; the moves are the cycle's own
+    /// formulas with A where it is (A → Bn, the cut, the retract to E at the
+    /// X of A, the return along Z), so the retract and the return may run
+    /// through the crest that has just been cut.
+    Accept,
+}
+
 /// The readings chosen for a machine. [`Readings::default`] is the
 /// project's reading of every point on every profile: where a reading's
 /// default depends on the profile (R-END, R-LONG988) its field is `None`
@@ -421,6 +518,18 @@ pub struct Readings {
     pub lead_in_modal: LeadInModal,
     /// R-G32LONG (the tie).
     pub g32_long_tie: G32LongTie,
+    /// R-SIDE: an A inside the thread's crest.
+    pub start_side: StartSide,
+    /// R-G75RIDGE: ridges in layered roughing.
+    pub g75_ridges: G75Ridges,
+    /// R-G75PECK: the retract after a peck.
+    pub g75_peck: G75PeckRetract,
+    /// R-SPINDLE: what a thread block needs of the spindle.
+    pub spindle: Spindle,
+    /// R-G75LAYER: the depths of the layers.
+    pub g75_layers: G75Layers,
+    /// R-G75ARC: G02/G03 in the nc output and nc traces.
+    pub arc_names: ArcNames,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -859,6 +968,96 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: GSK_G78,
     },
+    ReadingEntry {
+        id: "R-SIDE",
+        point: "a G76/G78 start point A inside the thread's crest (between C and B, or inside D's crest)",
+        values: &[
+            ReadingValue {
+                name: "refuse-inside",
+                source: "seed 004 \"起始点坐标X向…应比螺纹大径大\"; the retract to E would run inside the work",
+            },
+            ReadingValue {
+                name: "accept",
+                source: "no page lists A's position among its alarms: the cycle's formulas with A where it is",
+            },
+        ],
+        profiles: GSK,
+    },
+    ReadingEntry {
+        id: "R-G75RIDGE",
+        point: "G75.1 layers (V) with a step Q(Δk) wider than the tool: ridges the next layer's rapids cross",
+        values: &[
+            ReadingValue {
+                name: "refuse",
+                source: "\"代码大致走刀过程（从安全角度考虑，实际走刀路径存在部分偏差）\": the safe path is not given",
+            },
+            ReadingValue {
+                name: "as-written",
+                source: "steps ②⑦⑧ as written; no page calls it an alarm: the rapids cross the ridges",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-G75PECK",
+        point: "the G75.1 retract e after a peck when e exceeds the depth the plunge has cut",
+        values: &[
+            ReadingValue {
+                name: "clamped",
+                source: "the retract ends at the plunge's start Amn at the highest (the next feed shorter than Δi/2+e)",
+            },
+            ReadingValue {
+                name: "as-written",
+                source: "steps ④⑤ \"快速移动退刀 e\", \"再次切削进给(Δi/2+e)\" as written, even above Amn",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-SPINDLE",
+        point: "what a thread block (G32, G92, G76, G78) needs of the spindle",
+        values: &[
+            ReadingValue {
+                name: "speed-and-running",
+                source: "S > 0 and M03/M04 since the last M05: 988TA G92 \"如果无速度信号反馈到系统…时，产生报警\"",
+            },
+            ReadingValue {
+                name: "speed-only",
+                source: "S > 0 suffices: 988TA G76 note 8, G32 note 7 \"如果没有指令主轴速度，产生报警\"",
+            },
+        ],
+        profiles: GSK,
+    },
+    ReadingEntry {
+        id: "R-G75LAYER",
+        point: "the depths of G75.1's layers V(Δv) (\"单层最大深度\")",
+        values: &[
+            ReadingValue {
+                name: "full-then-remainder",
+                source: "layers Δv deep from S's level, the last the remainder (G75's 分层)",
+            },
+            ReadingValue {
+                name: "equal",
+                source: "\"最大\" allows less: ceil(D/Δv) equal layers, the first D mod M one increment deeper",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-G75ARC",
+        point: "which of G02/G03 names a G75.1 round's arc in the nc output and in check's nc traces",
+        values: &[
+            ReadingValue {
+                name: "rear-post",
+                source: "G02 clockwise seen with +Z right and +X up; the sources are silent (no G02 page)",
+            },
+            ReadingValue {
+                name: "front-post",
+                source: "the codes exchanged, as a front-post lathe names the same arc (+X towards the operator)",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -958,6 +1157,30 @@ impl Readings {
                 G32LongTie::TieX => "tie-x",
                 G32LongTie::TieZ => "tie-z",
             },
+            "R-SIDE" => match self.start_side {
+                StartSide::RefuseInside => "refuse-inside",
+                StartSide::Accept => "accept",
+            },
+            "R-G75RIDGE" => match self.g75_ridges {
+                G75Ridges::Refuse => "refuse",
+                G75Ridges::AsWritten => "as-written",
+            },
+            "R-G75PECK" => match self.g75_peck {
+                G75PeckRetract::Clamped => "clamped",
+                G75PeckRetract::AsWritten => "as-written",
+            },
+            "R-SPINDLE" => match self.spindle {
+                Spindle::SpeedAndRunning => "speed-and-running",
+                Spindle::SpeedOnly => "speed-only",
+            },
+            "R-G75LAYER" => match self.g75_layers {
+                G75Layers::FullThenRemainder => "full-then-remainder",
+                G75Layers::Equal => "equal",
+            },
+            "R-G75ARC" => match self.arc_names {
+                ArcNames::RearPost => "rear-post",
+                ArcNames::FrontPost => "front-post",
+            },
             _ => return None,
         };
         Some(v)
@@ -1032,6 +1255,18 @@ impl Readings {
             ("R-MODAL", "modal") => self.lead_in_modal = LeadInModal::Modal,
             ("R-G32LONG", "tie-x") => self.g32_long_tie = G32LongTie::TieX,
             ("R-G32LONG", "tie-z") => self.g32_long_tie = G32LongTie::TieZ,
+            ("R-SIDE", "refuse-inside") => self.start_side = StartSide::RefuseInside,
+            ("R-SIDE", "accept") => self.start_side = StartSide::Accept,
+            ("R-G75RIDGE", "refuse") => self.g75_ridges = G75Ridges::Refuse,
+            ("R-G75RIDGE", "as-written") => self.g75_ridges = G75Ridges::AsWritten,
+            ("R-G75PECK", "clamped") => self.g75_peck = G75PeckRetract::Clamped,
+            ("R-G75PECK", "as-written") => self.g75_peck = G75PeckRetract::AsWritten,
+            ("R-SPINDLE", "speed-and-running") => self.spindle = Spindle::SpeedAndRunning,
+            ("R-SPINDLE", "speed-only") => self.spindle = Spindle::SpeedOnly,
+            ("R-G75LAYER", "full-then-remainder") => self.g75_layers = G75Layers::FullThenRemainder,
+            ("R-G75LAYER", "equal") => self.g75_layers = G75Layers::Equal,
+            ("R-G75ARC", "rear-post") => self.arc_names = ArcNames::RearPost,
+            ("R-G75ARC", "front-post") => self.arc_names = ArcNames::FrontPost,
             _ => return Err(bad()),
         }
         Ok(())
@@ -1113,6 +1348,20 @@ impl Readings {
             start_major: self.starts_order == StartsOrder::StartMajor,
             chamfer_from_short_axis: self.chamfer_angle == ChamferAngle::FromShortAxis,
             g32_tie_z: self.g32_long_tie == G32LongTie::TieZ,
+            accept_start_inside: self.start_side == StartSide::Accept,
+        }
+    }
+}
+
+impl Readings {
+    /// What a G75.1 cycle does under these readings (the 980TDi's page;
+    /// on another profile the reader refuses G75.1).
+    #[must_use]
+    pub fn for_g75(&self) -> G75Readings {
+        G75Readings {
+            ridges_as_written: self.g75_ridges == G75Ridges::AsWritten,
+            peck_retract_as_written: self.g75_peck == G75PeckRetract::AsWritten,
+            equal_layers: self.g75_layers == G75Layers::Equal,
         }
     }
 }

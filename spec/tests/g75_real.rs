@@ -526,6 +526,7 @@ fn sixty_degree_round_corner_with_an_integer_k1_depth() {
         tool_width: None,
         path: PathType::RoughAndFinish,
         corners: [Corner::SHARP; 4],
+        readings: cycleref::G75Readings::DEFAULT,
     };
     c.corners[corner::R3] = Corner { size: 1_000, kind: CornerKind::Round };
     let g = g75::groove(&c);
@@ -669,6 +670,7 @@ fn rough_contour_top_points_lie_in_the_region() {
         tool_width: None,
         path: PathType::Rough,
         corners: [Corner::SHARP; 4],
+        readings: cycleref::G75Readings::DEFAULT,
     };
     c.corners[corner::R3] = Corner { size: 2_002, kind: CornerKind::Chamfer };
     c.corners[corner::R4] = Corner { size: 2_304, kind: CornerKind::Chamfer };
@@ -742,6 +744,7 @@ fn arb_cycle() -> impl Strategy<Value = G75Cycle> {
                 tool_width,
                 path: [PathType::Rough, PathType::RoughAndFinish, PathType::Finish][usize::from(j)],
                 corners,
+                readings: cycleref::G75Readings::DEFAULT,
             }
         })
 }

@@ -410,7 +410,8 @@ fn unknown_reading_or_value_names_the_valid_ones() {
     assert_eq!(
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
-         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG)"
+         R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG, \
+         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1351,4 +1352,296 @@ fn g32_tie() {
         ends(&z),
         [(Role::Cut, Point::new(22_000, -9_000)), (Role::RunOut, Point::new(22_000, -10_000))]
     );
+}
+
+/// R-SIDE on the sweep's program (docs/readings-sweep.md entry 1), gsk988
+/// IS-B: A = (X61, Z10); D = (X60, Z-30), i = 0, so C = (X60, Z10); A lies
+/// outside C (61 > 60): external, s = +1. k = 1 mm, so B = X60 + 2·1 =
+/// X62 and the crest at D is X62 too: A lies inside the crest.
+/// P010060: m = 1 finishing pass, r = 0 (no run-out), a = 60°; Q0 (Δdmin
+/// 0, so the least cut is one increment), R0 (d = 0); Q0.5: Δd = 500
+/// increments, k - d = 1000.
+///
+/// Depths (seed 000 "X 轴切深: √n × Q(Δd)"): round(500·√1) = 500,
+/// round(500·√2) = round(707.1) = 707, round(500·√3) = round(866.03) =
+/// 866, round(500·√4) = 1000 = k - d. Z shifts along the right flank
+/// (D0), round(Dn·tan 30°), tan 30° = 0.57735: 288.68 → 289, 408.19 →
+/// 408, 499.99 → 500, 577.35 → 577, towards D (W < 0): Z10 - shift.
+/// Bn's X = X of C + 2·(k - Dn): 61.000, 60.586, 60.268, 60.000. The
+/// passes run parallel to C→D (R-END `parallel`, i = 0) to Z-30, the
+/// retract to E (X of A, 61) and the return to A along Z (step ⑦ "X 轴快
+/// 速移动到 E 点", ⑧ "Z 轴快速移动到 A 点"); pass 1 ends at X61 already, so
+/// its retract does not move (R-ZERO). The finishing pass takes the last
+/// rough pass's Z ("精车 Z 轴起切点与最后一刀粗车一致").
+#[test]
+fn start_inside_the_crest() {
+    let src = "M3 S300\nG00 X61 Z10\nG76 P010060 Q0 R0\nG76 X60 Z-30 P1 Q0.5 F2\nM30\n";
+    let e = run(src, &machine(ProfileName::Gsk988, &[])).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::StartInsideThread));
+    let got = run(src, &machine(ProfileName::Gsk988, &["R-SIDE=accept"])).unwrap();
+    let pass = |x: i64, z: i64| {
+        [
+            (Role::Approach, Point::new(x, z)),
+            (Role::Cut, Point::new(x, -30_000)),
+            (Role::Retract, Point::new(61_000, -30_000)),
+            (Role::Return, Point::new(61_000, 10_000)),
+        ]
+    };
+    let mut want =
+        vec![(Role::Approach, Point::new(61_000, 9_711)), (Role::Cut, Point::new(61_000, -30_000))];
+    want.push((Role::Return, Point::new(61_000, 10_000)));
+    for (x, z) in [(60_586, 9_592), (60_268, 9_500), (60_000, 9_423), (60_000, 9_423)] {
+        want.extend(pass(x, z));
+    }
+    assert_eq!(ends(&got), want);
+    // A on the X of C gives no side: refused under either value.
+    let on_c = src.replace("X61 Z10", "X60 Z10");
+    let e = run(&on_c, &machine(ProfileName::Gsk988, &["R-SIDE=accept"])).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::StartInsideThread));
+}
+
+/// Each move as (rapid?, X, Z).
+fn kinds(moves: &[Move]) -> Vec<(bool, i64, i64)> {
+    moves.iter().map(|m| (m.motion == cycleref::Motion::Rapid, m.to.x, m.to.z)).collect()
+}
+
+/// R-G75RIDGE on the sweep's program (docs/readings-sweep.md entry 36),
+/// 980TDi IS-C (0.0001 mm): S = (X50, Z30), P30000 = Δi 3 (diameter, 1.5
+/// of radius a peck), Q50000 = Δk 5, H-20 (bottom X30), D-10 (towards -Z,
+/// far flank Z20), 90° flanks, R0.5 (e, radius: 1 on the diameter), V8
+/// (layers to X42, X34, X30), I4, J0 (rough only), from X60 Z40.
+///
+/// Plunges (R-G75TOOL, R-G75PLUNGE): the start-side corner at Z30, the
+/// last where the tool's far side meets flank B, Z20 + 4 = Z24; steps ⑤⑦:
+/// Z30, Z30 - 5 = Z25, then Z20 is past Amf so "Z 轴快速移动至 Amf 点":
+/// Z24. The plunges at Z30 (tool over Z30..Z26) and Z25 (Z25..Z21) leave
+/// a ridge Z26..Z25: Δk 5 > I 4 with three layers, refused by default
+/// (`ridges_in_layers`). `as-written` makes steps ②⑦⑧ as written.
+///
+/// Pecks of a layer from its top T to its bottom: feed T - 3, retract +1
+/// (e), feed (Δi/2 + e) deeper, …, the last feed clamped at the bottom,
+/// then the rapid back to T (step ⑥). Layer 1, T = X50, bottom X42: 47,
+/// 48, 44, 45, 42, 50. Layer 2, T = X42, bottom X34: 39, 40, 36, 37, 34,
+/// 42. Layer 3, T = X34, bottom X30: 31, 32, 30, 34. Between plunges the
+/// axial rapid at T (step ⑦); between layers Z back to Z30 at the old T,
+/// then down to the new T (step ②). In layer 2 the rapid from Z30 to Z25
+/// at X42 runs the tool's body across the ridge Z26..Z25 left above X42:
+/// the move `refuse` prevents. Then the rough contour (step ⑨, J0): back
+/// up to X50 at Z24, to Z30, the feeds around the region X30 Z30, X30
+/// Z24, X50 Z24, the rapid to Z30 and the return to X60 Z40 (step ⑩).
+#[test]
+fn g75_ridges_as_written() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10\nG75.1 R0.5 V8 I4\nM30\n";
+    let e = run(src, &gsk980_is_c(&[])).unwrap_err();
+    assert!(matches!(e, ErrorKind::Cycle(CycleError::RidgesInLayers { .. })), "{e:?}");
+    let got = run(src, &gsk980_is_c(&["R-G75RIDGE=as-written"])).unwrap();
+    let mm = |v: i64| v * 10_000;
+    let mut want = vec![(true, mm(50), mm(30))];
+    let pecks = |top: i64, bottom: i64| -> Vec<(bool, i64)> {
+        let (mut out, mut at) = (Vec::new(), top);
+        loop {
+            at = (at - 3).max(bottom);
+            out.push((false, at));
+            if at == bottom {
+                break;
+            }
+            at += 1;
+            out.push((true, at));
+            at -= 1;
+        }
+        out.push((true, top));
+        out
+    };
+    let mut previous_top = None;
+    for (top, bottom) in [(50, 42), (42, 34), (34, 30)] {
+        if let Some(previous) = previous_top {
+            // Step ②: Z back to Z30 at the old top, then down to this top.
+            want.push((true, mm(previous), mm(30)));
+            want.push((true, mm(top), mm(30)));
+        }
+        previous_top = Some(top);
+        for (n, z) in [30, 25, 24].into_iter().enumerate() {
+            if n > 0 {
+                want.push((true, mm(top), mm(z)));
+            }
+            want.extend(pecks(top, bottom).into_iter().map(|(rapid, x)| (rapid, mm(x), mm(z))));
+        }
+    }
+    want.extend([
+        (true, mm(50), mm(24)),
+        (true, mm(50), mm(30)),
+        (false, mm(30), mm(30)),
+        (false, mm(30), mm(24)),
+        (false, mm(50), mm(24)),
+        (true, mm(50), mm(30)),
+        (true, mm(60), mm(40)),
+    ]);
+    assert_eq!(kinds(&got), want);
+}
+
+/// R-G75PECK (docs/readings-sweep.md entry 37), 980TDi IS-C, from X60
+/// Z40: S = (X50, Z30), P10000 = Δi 1 (diameter: Δi/2 = 0.5 of radius a
+/// peck), Q40000 = Δk 4, H-4 (bottom X46), D-8 (far flank Z22), I4, R1 (e
+/// = 1 of radius, 2 on the diameter), one layer, J0.
+///
+/// Plunges: Z30, then Z30 - 4 = Z26 = Z22 + I4 = Amf. Pecks (step ③ "切削
+/// 进给 Δi/2", ⑤ "再次切削进给(Δi/2+e)"): ends X50 - 1·j, X49, X48, X47 and
+/// X46 (the bottom, then ⑥ back to Amn X50). Retracts (④ "快速移动退刀 e"):
+/// X49 + 2 = X51, X48 + 2 = X50, X47 + 2 = X49. The first is above Amn
+/// (X50): `clamped` (default) stops it at X50 and the next feed is 2 on
+/// the diameter; `as-written` goes to X51 and the next feed is the written
+/// Δi/2 + e = 0.5 + 1 = 1.5 of radius (X51 → X48). The peck ends are the
+/// same under both. Then the step ⑦ to Z26 at X50, the same pecks, and
+/// the rough contour X46 Z30, X46 Z26, X50 Z26, back to Z30 and X60 Z40.
+#[test]
+fn g75_peck_retract_as_written() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P10000 Q40000 H-4 D-8\nG75.1 R1 I4\nM30\n";
+    let mm = |v: i64| v * 10_000;
+    let want = |first_retract: i64| {
+        let mut want = vec![(true, mm(50), mm(30))];
+        for (n, z) in [30, 26].into_iter().enumerate() {
+            if n > 0 {
+                want.push((true, mm(50), mm(z)));
+            }
+            for (rapid, x) in [
+                (false, 49),
+                (true, first_retract),
+                (false, 48),
+                (true, 50),
+                (false, 47),
+                (true, 49),
+                (false, 46),
+            ] {
+                want.push((rapid, mm(x), mm(z)));
+            }
+            want.push((true, mm(50), mm(z)));
+        }
+        want.extend([
+            (true, mm(50), mm(30)),
+            (false, mm(46), mm(30)),
+            (false, mm(46), mm(26)),
+            (false, mm(50), mm(26)),
+            (true, mm(50), mm(30)),
+            (true, mm(60), mm(40)),
+        ]);
+        want
+    };
+    assert_eq!(kinds(&run(src, &gsk980_is_c(&[])).unwrap()), want(50));
+    assert_eq!(kinds(&run(src, &gsk980_is_c(&["R-G75PECK=as-written"])).unwrap()), want(51));
+}
+
+/// R-G75PECK `as-written` near the end of the range (R-RANGE): the same
+/// groove at S = X99999.9 (999 999 000 at IS-C): the first retract, X of
+/// the first peck + 2 = S + 1 (10 000 increments), is 1 000 009 000,
+/// beyond 999 999 999: refused there, by both engines alike; `clamped`
+/// stays within it.
+#[test]
+fn g75_peck_retract_beyond_the_range() {
+    let src = "M3 S300\nG00 X99999.9 Z40\nG75.1 X99999.9 Z30 P10000 Q40000 H-4 D-8\nG75.1 R1 I4\nM30\n";
+    assert!(run(src, &gsk980_is_c(&[])).is_ok());
+    let e = run(src, &gsk980_is_c(&["R-G75PECK=as-written"])).unwrap_err();
+    let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
+    assert_eq!(value.increments, 1_000_009_000);
+}
+
+/// R-SPINDLE (docs/readings-sweep.md entry 13): [`G92_LONG_J`] without its
+/// M3, on the 980TDi. `speed-and-running` (default): S300 was commanded
+/// but the spindle was never started, refused on the G92 block (line 3)
+/// with `no_spindle_speed`. `speed-only` ("如果没有指令主轴速度，产生报警"
+/// speaks of the commanded speed only): the moves of the program with M3,
+/// worked in `run_out_clamped_by_default` (X30 Z5, X30 Z-18, X40 Z-20, X40
+/// Z5). Without S (or after `S0`) it is refused under both; an M05 stops
+/// the spindle, which only `speed-and-running` looks at.
+#[test]
+fn spindle_speed_only() {
+    let stopped = G92_LONG_J.replace("M3 S300", "S300");
+    let e = read(&stopped, &machine(ProfileName::Gsk980, &[])).unwrap_err();
+    assert_eq!((e.kind.clone(), e.line), (ErrorKind::NoSpindleSpeed, 3));
+    let m = machine(ProfileName::Gsk980, &["R-SPINDLE=speed-only"]);
+    let got = run(&stopped, &m).unwrap();
+    assert_eq!(got, run(G92_LONG_J, &machine(ProfileName::Gsk980, &[])).unwrap());
+    assert_eq!(
+        ends(&got),
+        [
+            (Role::Approach, Point::new(30_000, 5_000)),
+            (Role::Cut, Point::new(30_000, -18_000)),
+            (Role::RunOut, Point::new(40_000, -20_000)),
+            (Role::Return, Point::new(40_000, 5_000)),
+        ]
+    );
+    let m05 = G92_LONG_J.replace("G00 X40 Z5", "M05\nG00 X40 Z5");
+    assert_eq!(read(&m05, &machine(ProfileName::Gsk980, &[])).unwrap_err().kind, ErrorKind::NoSpindleSpeed);
+    assert!(run(&m05, &m).is_ok());
+    let no_speed = G92_LONG_J.replace("M3 S300", "M3");
+    let e = read(&no_speed, &m).unwrap_err();
+    assert_eq!((e.kind, e.line), (ErrorKind::NoSpindleSpeed, 3));
+}
+
+/// R-G75LAYER on the sweep's numbers (docs/readings-sweep.md entry 34:
+/// depth 10 mm, V4), 980TDi IS-B, from X60 Z40: S = (X50, Z30), H-10 (D =
+/// 10 000 increments on the diameter, bottom X40), D-6 (far flank Z24),
+/// I3: plunges Z30 and Z24 + 3 = Z27 (= Z30 - Q3); P4000: Δi 4 ≥ every
+/// layer, one peck a plunge; R omitted (no retract); J0.
+///
+/// `full-then-remainder` (default): M = ceil(10/4) = 3, bottoms 4, 8, 10:
+/// X46, X42, X40. `equal`: M = 3 layers of 10 000 / 3: q = 3 333, r = 1,
+/// the first layer one increment deeper: bottoms 3 334, 6 667, 10 000:
+/// X46.666, X43.333, X40. Each layer: the plunge at Z30 and back (⑥),
+/// the step to Z27 and its plunge and back; between layers Z30 at the old
+/// top then down to the new (②); after the last, up to X50 at Z27, Z30,
+/// the rough contour X40 Z30, X40 Z27, X50 Z27, Z30 and X60 Z40.
+#[test]
+fn g75_equal_layers() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P4000 Q3000 H-10 D-6\nG75.1 V4 I3\nM30\n";
+    let want = |bottoms: [i64; 3]| {
+        let mut want = vec![(true, 50_000, 30_000)];
+        let (mut previous_top, mut top) = (None, 50_000);
+        for bottom in bottoms {
+            if let Some(previous) = previous_top {
+                // Step ②: Z30 at the old top, then down to this top.
+                want.extend([(true, previous, 30_000), (true, top, 30_000)]);
+            }
+            want.extend([
+                (false, bottom, 30_000),
+                (true, top, 30_000),
+                (true, top, 27_000),
+                (false, bottom, 27_000),
+                (true, top, 27_000),
+            ]);
+            (previous_top, top) = (Some(top), bottom);
+        }
+        want.extend([
+            (true, 50_000, 27_000),
+            (true, 50_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 27_000),
+            (false, 50_000, 27_000),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]);
+        want
+    };
+    assert_eq!(kinds(&run(src, &machine(ProfileName::Gsk980, &[])).unwrap()), want([46_000, 42_000, 40_000]));
+    let equal = run(src, &machine(ProfileName::Gsk980, &["R-G75LAYER=equal"])).unwrap();
+    assert_eq!(kinds(&equal), want([46_666, 43_333, 40_000]));
+}
+
+/// R-G75LAYER `equal` near the end of the range (R-RANGE), 980TDi IS-C:
+/// S = X-99999.89 (-999 998 900), H-0.25 (D = 2 500), V0.1 (Δv 1 000):
+/// M = 3. Default bottoms 1 000, 2 000, 2 500: layer 2's first peck, at
+/// 1 000 + Δi (P1000) = 2 000, is X -1 000 000 900, the first coordinate out of
+/// range. `equal`: q = 833, r = 1, bottoms 834, 1 667, 2 500: layer 2's
+/// first peck from 834 to min(1 834, 1 667) = 1 667, X -1 000 000 567.
+/// Both engines refuse at the same coordinate.
+#[test]
+fn g75_equal_layers_beyond_the_range() {
+    let src =
+        "M3 S300\nG00 X-99999.89 Z40\nG75.1 X-99999.89 Z30 P1000 Q5000 H-0.25 D-1\nG75.1 V0.1 I0.5\nM30\n";
+    for (reading, want) in
+        [("R-G75LAYER=full-then-remainder", -1_000_000_900), ("R-G75LAYER=equal", -1_000_000_567)]
+    {
+        let e = run(src, &gsk980_is_c(&[reading])).unwrap_err();
+        let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
+        assert_eq!(value.increments, want);
+    }
 }

@@ -62,6 +62,11 @@ pub(super) struct Follow<'m> {
 }
 
 impl<'m> Follow<'m> {
+    /// Reading R-G75ARC `front-post`: G02/G03 exchanged.
+    fn front_post(&self) -> bool {
+        self.machine.readings.arc_names == cycleref_spec::readings::ArcNames::FrontPost
+    }
+
     pub(super) fn new(machine: &'m Machine, units: Units) -> Follow<'m> {
         Follow { machine, units, linuxcnc: machine.profile.dialect == Dialect::LinuxCnc, at: (None, None) }
     }
@@ -96,6 +101,10 @@ impl<'m> Follow<'m> {
         let kind = match m.motion {
             MotionMode::G00 => Kind::Rapid,
             MotionMode::G01 => Kind::Feed,
+            // Reading R-G75ARC: under `front-post` the trace's G02 is
+            // counter-clockwise seen with +Z right and +X up.
+            MotionMode::G02 if self.front_post() => Kind::ArcCcw,
+            MotionMode::G03 if self.front_post() => Kind::ArcCw,
             MotionMode::G02 => Kind::ArcCw,
             MotionMode::G03 => Kind::ArcCcw,
             // The reader makes G32 and G92 blocks cycles, never plain

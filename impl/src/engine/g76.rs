@@ -533,7 +533,9 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     };
     let b_x = c_x + side * xf * c.thread_height;
     let crest_at_end = d.x + side * xf * c.thread_height;
-    if side * (a.x - b_x) < 0 || side * (a.x - crest_at_end) < 0 {
+    // Reading R-SIDE `accept`: an A inside the crest is made as written.
+    let inside = side * (a.x - b_x) < 0 || side * (a.x - crest_at_end) < 0;
+    if inside && !c.readings.accept_start_inside {
         return Err(CycleError::StartInsideThread);
     }
     // W ≠ 0 (validate: no face thread), |W| < 2^31.
@@ -610,6 +612,14 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     // or, under R-G78LEFT `mirror-b`, beyond A by at most zc (checked
     // below).
     check_coordinate(i128::from(c_x), u)?;
+    // Reading R-SIDE `accept`: A may lie inside the crest, B beyond it; the
+    // shallowest pass starts and ends furthest out (a `parallel` end lies
+    // between the two).
+    if let (true, Some(p)) = (c.readings.accept_start_inside, extremes) {
+        let out = i128::from(side * xf) * i128::from(c.thread_height - p.shallowest);
+        check_coordinate(i128::from(c_x) + out, u)?;
+        check_coordinate(i128::from(d.x) + out, u)?;
+    }
     if let (Some((e, lz)), Some(p)) = (lead_in, extremes) {
         let out = i128::from(side * xf);
         let x = i128::from(c_x) + out * i128::from(c.thread_height - p.shallowest) + out * i128::from(e);

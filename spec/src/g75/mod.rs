@@ -349,7 +349,8 @@ impl Cursor {
             Stage::Peck(layer, n, a, j) => {
                 // R-G75PECK: peck j feeds to min(top + j·Δi, bottom); after a
                 // peck short of the bottom the tool retracts to
-                // max(top, end − e) (none when e = 0).
+                // max(top, end − e) (none when e = 0), to end − e under
+                // `as-written`.
                 let role = plunge(&layer, n);
                 let to = (layer.top + j * p.peck).min(layer.bottom);
                 path.go(LocalMotion::Feed, LocalPoint::new(a, to), Role::Peck(role));
@@ -359,7 +360,7 @@ impl Cursor {
                 } else {
                     if p.retract > 0 {
                         path.rapid(
-                            LocalPoint::new(a, layer.top.max(to - p.retract)),
+                            LocalPoint::new(a, retract_to(&p.cycle, layer.top, to, p.retract)),
                             Role::PeckRetract(role),
                         );
                     }

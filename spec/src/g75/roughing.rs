@@ -44,7 +44,9 @@ pub fn layer_count(g: &Groove) -> i128 {
 }
 
 /// `y_m = min(m·Δv, Y − Δu)`, the bottom of layer `m` (1-based); `Y − Δu`
-/// without V (R-G75LAYER).
+/// without V (R-G75LAYER). Under R-G75LAYER `equal`, with D = Y − Δu and
+/// M = [`layer_count`]: `m·(D div M) + min(m, D mod M)` (the first D mod M
+/// layers one increment deeper).
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `Layers::bottom`.
 ///
@@ -52,6 +54,10 @@ pub fn layer_count(g: &Groove) -> i128 {
 #[must_use]
 pub fn layer_bottom(g: &Groove, m: i128) -> i128 {
     match g.layer {
+        Some(_) if g.cycle.readings.equal_layers => {
+            let (d, count) = (bottom_rough(g), layer_count(g));
+            m * (d / count) + m.min(d % count)
+        }
         Some(v) => (m.saturating_mul(v)).min(bottom_rough(g)),
         None => bottom_rough(g),
     }
@@ -157,12 +163,15 @@ pub fn check_tool_fits(g: &Groove) -> Result<PlungeRange, CycleError> {
 ///
 /// # Errors
 ///
-/// [`CycleError::RidgesInLayers`]; [`CycleError::UndecidedRounding`].
+/// [`CycleError::RidgesInLayers`] (reading R-G75RIDGE `refuse`, the
+/// default; none under `as-written`); [`CycleError::UndecidedRounding`].
 ///
 /// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, `check_ridges`.
 pub fn check_ridges(g: &Groove) -> Result<(), CycleError> {
     let c = &g.cycle;
-    if !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool {
+    // Reading R-G75RIDGE `as-written`: the path as steps ②⑦⑧ write it.
+    if c.readings.ridges_as_written || !c.path.roughs() || layer_count(g) < 2 || i128::from(c.step) <= g.tool
+    {
         return Ok(());
     }
     let range = plunge_range(g, 1)?;
@@ -208,8 +217,9 @@ pub struct Peck {
 ///
 /// Peck j (1-based) feeds to `min(top + j·Δi, bottom)`; after every peck
 /// that did not reach the bottom the tool retracts at rapid to
-/// `max(top, end − e_x)` (no retract when e = 0), so every peck takes at
-/// most Δi (Δi/2 of radius) of new depth. Step ⑥ (the retract to Amn) is
+/// `max(top, end − e_x)` (no retract when e = 0; `end − e_x` under
+/// R-G75PECK `as-written`, [`retract_to`]), so every peck takes at most Δi
+/// (Δi/2 of radius) of new depth. Step ⑥ (the retract to Amn) is
 /// the caller's.
 ///
 /// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`.
@@ -223,9 +233,25 @@ pub fn pecks(g: &Groove, top: i128, bottom: i128) -> Vec<Peck> {
             out.push(Peck { to: bottom, retract: None });
             return out;
         }
-        let retract = (g.retract > 0).then(|| top.max(to - g.retract));
+        let retract = (g.retract > 0).then(|| retract_to(&g.cycle, top, to, g.retract));
         out.push(Peck { to, retract });
         j += 1;
+    }
+}
+
+/// Where the retract e (`e_x` in X-word units) after a peck ending at `to`
+/// ends, in a plunge from `top` (R-G75PECK): `max(top, to − e_x)`
+/// (`clamped`, the default), or `to − e_x` (`as-written`: step ④ "径向(X
+/// 轴)快速移动退刀 e", even above Amn).
+///
+/// Twin: `impl/src/engine/g75/roughing.rs`, `G75Moves::next_rough`
+/// (`RoughStep::Retract`).
+#[must_use]
+pub fn retract_to(c: &G75Cycle, top: i128, to: i128, retract: i128) -> i128 {
+    if c.readings.peck_retract_as_written {
+        to - retract
+    } else {
+        top.max(to - retract)
     }
 }
 

@@ -210,6 +210,7 @@ impl State<'_> {
             tool_width,
             path,
             corners,
+            readings: self.machine.readings.for_g75(),
         };
         cycle.validate().map_err(|e| cycle_err(&block, Some(first.line), e))?;
         let restore = self.restore();

@@ -15,6 +15,7 @@ use super::{err, subprogram, Item, MotionMode, Multipass, PlainMove, State};
 use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{letter_bit, Block, Word};
 use crate::profile::Dialect;
+use crate::readings::Spindle;
 
 /// X, Z, U and W of a block.
 type AxisWords<'b, 'a> =
@@ -405,7 +406,10 @@ impl State<'_> {
 
     pub(super) fn check_spindle(&self, block: &Block<'_>) -> Result<(), ProgramError> {
         // A trace is a log of moves: it need not hold the spindle's words.
-        if self.trace || (self.speed && self.spindle_on) {
+        // Reading R-SPINDLE: the spindle running too (M03/M04 since the
+        // last M05), unless `speed-only`.
+        let running = self.spindle_on || self.machine.readings.spindle == Spindle::SpeedOnly;
+        if self.trace || (self.speed && running) {
             Ok(())
         } else {
             Err(err(block, None, ErrorKind::NoSpindleSpeed))

@@ -269,8 +269,14 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     let y1 = layers.bottom(1);
     let (a11, a1f) = if layers.count == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
     // R-G75RIDGE: layered roughing with a step wider than the tool leaves
-    // ridges in layer 1 that the next layer's rapids would cross.
-    if c.path.roughs() && layers.count >= 2 && c.step > g.w && a1f - a11 > i128::from(g.w) {
+    // ridges in layer 1 that the next layer's rapids would cross (refused
+    // unless the reading is `as-written`).
+    if !c.readings.ridges_as_written
+        && c.path.roughs()
+        && layers.count >= 2
+        && c.step > g.w
+        && a1f - a11 > i128::from(g.w)
+    {
         return Err(CycleError::RidgesInLayers {
             step: Length::new(c.step, c.units),
             tool_width: Length::new(g.w, c.units),
@@ -295,7 +301,7 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     let a11_local = (a11, y_top);
     let a11_abs = frame.point(a11_local)?;
     if roughs {
-        check_roughing(c, &frame, y_top, (a11, a1f), layers.count)?;
+        check_roughing(c, &frame, y_top, (a11, a1f), &layers)?;
     }
     let w = i128::from(g.w);
     let top_last = if layers.count >= 2 { i128::from(layers.bottom(layers.count - 1)) } else { y_top };
@@ -371,6 +377,8 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
         di: c.peck,
         dk: c.step,
         ex: g.f * c.retract,
+        peck_as_written: c.readings.peck_retract_as_written,
+        equal_layers: layers.equal,
         prev_top: saturate_i64(y_top),
         top: saturate_i64(y_top),
         bottom: y1,

@@ -29,6 +29,25 @@ pub(super) struct Layers {
     pub(super) dv: i64,
     /// M.
     pub(super) count: i128,
+    /// Reading R-G75LAYER `equal`: M layers of equal depth.
+    pub(super) equal: bool,
+}
+
+/// The bottom `y_m` of layer `m` (1-based) of `count` layers: `min(m·Δv,
+/// Y − Δu)`, or under R-G75LAYER `equal` (`equal`) `m·(D div M) + min(m,
+/// D mod M)` with D = Y − Δu; `Y − Δu` without V (`dv` = 0).
+///
+/// Twin: `spec/src/g75/roughing.rs`, `layer_bottom`.
+pub(super) fn layer_bottom(m: i128, dv: i64, rough_bottom: i64, count: i128, equal: bool) -> i64 {
+    let d = i128::from(rough_bottom);
+    if dv <= 0 {
+        rough_bottom
+    } else if equal {
+        // count = ceil(D/Δv) ≥ 1.
+        saturate_i64(m * (d / count) + m.min(d % count))
+    } else {
+        saturate_i64((m * i128::from(dv)).min(d))
+    }
 }
 
 impl Layers {
@@ -38,15 +57,29 @@ impl Layers {
         let rough_bottom = g.depth - g.du;
         let dv = c.layer.unwrap_or(0);
         let count = if dv > 0 { ceil_div(i128::from(rough_bottom), i128::from(dv)) } else { 1 };
-        Layers { rough_bottom, dv, count }
+        Layers { rough_bottom, dv, count, equal: c.readings.equal_layers }
     }
 
     /// The bottom `y_m` of layer `m` (1-based).
     pub(super) fn bottom(&self, m: i128) -> i64 {
-        if self.dv > 0 {
-            saturate_i64((m * i128::from(self.dv)).min(i128::from(self.rough_bottom)))
+        layer_bottom(m, self.dv, self.rough_bottom, self.count, self.equal)
+    }
+
+    /// The first layer (2..=M) whose bottom lies beyond `y`, for `y` below
+    /// Y − Δu and at least layer 1's bottom, in closed form.
+    fn first_below(&self, y: i128) -> i128 {
+        let dv = i128::from(self.dv);
+        if !self.equal {
+            return floor_div(y, dv) + 1;
+        }
+        // Bottoms m·(q + 1) for m ≤ r, then m·q + r (q ≥ 1: M ≤ D).
+        let d = i128::from(self.rough_bottom);
+        let (q, r) = (d / self.count, d % self.count);
+        let m = floor_div(y, q + 1) + 1;
+        if m <= r {
+            m
         } else {
-            self.rough_bottom
+            floor_div(y - r, q) + 1
         }
     }
 }
@@ -75,7 +108,14 @@ pub(super) fn check_peck_count(
     // Every layer has at least one plunge: the pecks of one plunge per
     // layer are a lower bound, in closed form (layers 2..M−1 are Δv deep).
     let mut lower = pecks(y_top, i128::from(layers.bottom(1)));
-    if count >= 2 {
+    if count >= 2 && layers.equal {
+        // R-G75LAYER `equal`: layers 2..=M, the first r one increment
+        // deeper than q (layer 1 among them when r ≥ 1).
+        let d = i128::from(rough_bottom);
+        let (q, r) = (d / count, d % count);
+        let deeper = (r - 1).max(0);
+        lower += deeper * pecks(0, q + 1) + (count - 1 - deeper) * pecks(0, q);
+    } else if count >= 2 {
         let dvi = i128::from(dv);
         lower += (count - 2) * pecks(0, dvi) + pecks((count - 1) * dvi, i128::from(rough_bottom));
     }
@@ -144,6 +184,11 @@ pub(super) struct Roughing {
     pub(super) dk: i64,
     /// `e_x = f·e`.
     pub(super) ex: i64,
+    /// Reading R-G75PECK `as-written`: the retract e not clamped at the
+    /// plunge's start.
+    pub(super) peck_as_written: bool,
+    /// Reading R-G75LAYER `equal`: layers of equal depth.
+    pub(super) equal_layers: bool,
     /// Top of the previous layer (for the LayerChange along Z).
     pub(super) prev_top: i64,
     /// Top of this layer.
@@ -180,7 +225,7 @@ pub(super) fn check_roughing(
     frame: &Frame,
     y_top: i128,
     (a11, a1f): (i128, i128),
-    layers: i128,
+    layers: &Layers,
 ) -> Result<(), CycleError> {
     let max = i128::from(MAX_LENGTH);
     // The deepest y whose X is in range, and the furthest u whose Z is.
@@ -189,13 +234,20 @@ pub(super) fn check_roughing(
     let (di, dk) = (i128::from(c.peck), i128::from(c.step));
     let rough_bottom = i128::from(c.depth.abs() - c.allowance_x);
     let dv = i128::from(c.layer.unwrap_or(0));
-    let y1 = if dv > 0 { dv.min(rough_bottom) } else { rough_bottom };
+    let y1 = i128::from(layers.bottom(1));
     // The first peck end beyond y_lim in a plunge from `top` to `bottom`
     // (top ≤ y_lim < bottom).
     let peck_beyond = |top: i128, bottom: i128| -> Result<(), CycleError> {
         let j = floor_div(y_lim - top, di) + 1;
         frame.coordinate(frame.x((top + j * di).min(bottom))).map(|_| ())
     };
+    // Reading R-G75PECK `as-written`: a retract above the plunge's start,
+    // highest after layer 1's first peck when it stops short of the
+    // bottom (e_x > Δi): the move after that peck, before any other.
+    let ex = i128::from(c.x_mode.factor()) * i128::from(c.retract);
+    if c.readings.peck_retract_as_written && ex > di && y_top + di < y1 && y_top + di <= y_lim {
+        frame.coordinate(frame.x(y_top + di - ex))?;
+    }
     if y1 > y_lim {
         return peck_beyond(y_top, y1);
     }
@@ -203,11 +255,11 @@ pub(super) fn check_roughing(
         let u = a11 + (floor_div(u_lim - a11, dk) + 1) * dk;
         return frame.coordinate(frame.z(if u < a1f { u } else { a1f })).map(|_| ());
     }
-    if rough_bottom > y_lim && layers >= 2 && dv > 0 {
-        // The first layer whose bottom m·Δv (or Y − Δu) is beyond y_lim: m ≥ 2.
-        let m = floor_div(y_lim, dv) + 1;
-        let top = (m - 1) * dv;
-        return peck_beyond(top, (m * dv).min(rough_bottom));
+    if rough_bottom > y_lim && layers.count >= 2 && dv > 0 {
+        // The first layer whose bottom m·Δv (or Y − Δu; under R-G75LAYER
+        // `equal` its own) is beyond y_lim: m ≥ 2.
+        let m = layers.first_below(y_lim);
+        return peck_beyond(i128::from(layers.bottom(m - 1)), i128::from(layers.bottom(m)));
     }
     Ok(())
 }
@@ -270,7 +322,9 @@ impl G75Moves {
                 }
                 RoughStep::Retract => {
                     self.rough.sub = RoughStep::Peck;
-                    let y = r.top.max(r.depth - r.ex);
+                    // R-G75PECK: clamped at the plunge's start, or e as
+                    // written (`peck_as_written`, decided once per cycle).
+                    let y = if r.peck_as_written { r.depth - r.ex } else { r.top.max(r.depth - r.ex) };
                     let role = Role::PeckRetract(self.plunge());
                     if let Some(mv) = self.rough_move(Motion::Rapid, r.u, y, role) {
                         return Some(mv);
@@ -310,8 +364,7 @@ impl G75Moves {
     pub(super) fn next_layer(&mut self) {
         let r = self.rough;
         let m = r.m.saturating_add(1);
-        let bottom =
-            if r.dv > 0 { (i64::from(m).saturating_mul(r.dv)).min(r.rough_bottom) } else { r.rough_bottom };
+        let bottom = layer_bottom(i128::from(m), r.dv, r.rough_bottom, i128::from(r.layers), r.equal_layers);
         // Decided in expand_g75 for every layer (the peck count), so the
         // fallback to the previous range is unreachable.
         let (first, last) = plunges_at(&self.geometry, self.region.as_ref(), bottom, &mut self.stats)

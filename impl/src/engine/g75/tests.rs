@@ -56,6 +56,7 @@ fn square() -> G75Cycle {
             Corner { size: 400, kind: CornerKind::Round },
             Corner { size: 300, kind: CornerKind::Round },
         ],
+        readings: crate::G75Readings::DEFAULT,
     }
 }
 
@@ -579,6 +580,7 @@ fn sixty_degree_round_with_an_integer_k1_depth() {
             Corner { size: 1_000, kind: CornerKind::Round },
             Corner::SHARP,
         ],
+        readings: crate::G75Readings::DEFAULT,
     };
     let g = Geometry::new(&c);
     // Undecided at 512 bits without the rule.
@@ -675,6 +677,7 @@ fn k_vertices_use_the_integer_depth() {
             Corner::SHARP,
             Corner { size: 8, kind: CornerKind::Round },
         ],
+        readings: crate::G75Readings::DEFAULT,
     };
     let p = groove_profile(&c).unwrap();
     // R0, Q1, K3, K4, R3: K4 = (200, 95) → X = 50000 − 95, Z = 1000 − 200.
@@ -709,6 +712,7 @@ fn empty_arc_is_dropped() {
         tool_width: None,
         path: PathType::Finish,
         corners: [Corner::SHARP, Corner::SHARP, Corner { size: 1, kind: CornerKind::Round }, Corner::SHARP],
+        readings: crate::G75Readings::DEFAULT,
     };
     // The profile keeps the round (R-G75PROFILE), of zero length.
     let p = groove_profile(&c).unwrap();
@@ -754,6 +758,7 @@ fn k1_above_the_top_is_not_a_vertex() {
             Corner { size: 3, kind: CornerKind::Chamfer },
             Corner { size: 3, kind: CornerKind::Chamfer },
         ],
+        readings: crate::G75Readings::DEFAULT,
     };
     // left(0) = max(0, 3 − (3 − 0)·cot 45°) = 0; right(0) = min(10, 7 +
     // 3) = 10. R0 (0, 0), K2 (3, 3), K3 (7, 3), R3 (10, 0): X = 100 − y,
@@ -857,6 +862,7 @@ fn wide_example() -> G75Cycle {
         tool_width: Some(3_000),
         path: PathType::RoughAndFinish,
         corners: [Corner::SHARP; 4],
+        readings: crate::G75Readings::DEFAULT,
     }
 }
 
@@ -953,6 +959,7 @@ fn random_cycle(r: &mut Rng, square: bool) -> G75Cycle {
             _ => PathType::Finish,
         },
         corners,
+        readings: crate::G75Readings::DEFAULT,
     }
 }
 
