@@ -614,12 +614,15 @@ pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
         // (zeroing each chunk was 2 % of a reading, issue 33): up to CHUNK
         // bytes, fewer only at the end of the source (`read_to_end` of the
         // `take` reads until it has them or the source has no more, retrying
-        // an interrupted read).
+        // an interrupted read). The end is only where a read gives nothing
+        // at the time the next piece is wanted: a short read is not the end,
+        // so that bytes written to the file since (a tool appending) are
+        // read and seen as a change (R-CHANGED), as before issue 33.
         buf.reserve(CHUNK);
         let n = std::io::Read::take(&mut *file, CHUNK as u64)
             .read_to_end(buf)
             .inspect_err(|_| buf.truncate(have))?;
-        *eof = n < CHUNK;
+        *eof = n == 0;
     }
 }
 
