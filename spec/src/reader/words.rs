@@ -76,6 +76,14 @@ pub(super) fn to_increments(
     }
 }
 
+/// The value of the decimal digits `int` then `frac` read as one integer
+/// (the point dropped). The fast readings call it with at most 18 digits in
+/// all, so it cannot overflow.
+#[inline]
+fn digits_value(int: &[u8], frac: &[u8]) -> u64 {
+    int.iter().chain(frac).fold(0, |v, &b| v * 10 + u64::from(b - b'0'))
+}
+
 /// [`to_increments`] of the usual word, inlined where a block's axes are
 /// read: a word the lexer kept the offsets of, whose value is read in
 /// increments (a decimal point, or a profile whose bare values are
@@ -97,13 +105,7 @@ fn increments_short(units: Units, w: &Word<'_>, bare_increments: bool) -> Option
         return None;
     }
     // At most 18 digits once scaled: no overflow.
-    let mut v = 0_i64;
-    for &b in int {
-        v = v * 10 + i64::from(b - b'0');
-    }
-    for &b in frac {
-        v = v * 10 + i64::from(b - b'0');
-    }
+    let mut v = i64::try_from(digits_value(int, frac)).ok()?;
     for _ in frac.len()..d {
         v *= 10;
     }
@@ -296,13 +298,7 @@ impl State<'_> {
             return None;
         }
         // At most 18 digits: no overflow, in the mantissa or the value.
-        let mut mantissa = 0_u64;
-        for &b in int {
-            mantissa = mantissa * 10 + u64::from(b - b'0');
-        }
-        for &b in frac {
-            mantissa = mantissa * 10 + u64::from(b - b'0');
-        }
+        let mantissa = digits_value(int, frac);
         let scale = frac.len();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
         let value = i128::from(mantissa * TO_MICRO[scale]);
