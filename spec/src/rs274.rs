@@ -333,20 +333,41 @@ fn plain_number_at(b: &[u8], at: &mut usize) -> Option<Decimal> {
         i += 1;
     }
     let start = i;
-    let (mut mantissa, mut scale, mut point) = (0_i64, 0_u32, false);
-    while let Some(&c) = b.get(i) {
-        let digit = c.wrapping_sub(b'0');
-        if digit < 10 {
-            // Exact within 18 digits, the most a plain form has (checked
-            // below; beyond them the value is not used).
-            mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(digit));
-            scale += u32::from(point);
-        } else if c == b'.' && !point {
-            point = true;
-        } else {
-            break;
+    // Exact within 18 digits, the most a plain form has (checked below;
+    // beyond them the value is not used).
+    let (mut mantissa, mut scale) = (0_i64, 0_u32);
+    let digits = |i: &mut usize, mantissa: &mut i64, scale: &mut u32, fraction: bool| {
+        while let Some(&c) = b.get(*i) {
+            let digit = c.wrapping_sub(b'0');
+            if digit >= 10 {
+                break;
+            }
+            *mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(digit));
+            *scale += u32::from(fraction);
+            *i += 1;
         }
+    };
+    digits(&mut i, &mut mantissa, &mut scale, false);
+    let point = b.get(i) == Some(&b'.');
+    if point {
         i += 1;
+        // Four digits at a time while there are four (`rs274` prints four
+        // decimals, six for a pitch): every byte of `v` in `0x30..=0x39`
+        // (high nibble 3, and adding 6 to the low one carries nowhere),
+        // then the pairs and the two pairs combined.
+        while let Some(&[a, b1, c, d]) = b.get(i..i + 4) {
+            let v = u32::from_le_bytes([a, b1, c, d]);
+            if v & 0xF0F0_F0F0 != 0x3030_3030 || v.wrapping_add(0x0606_0606) & 0xF0F0_F0F0 != 0x3030_3030 {
+                break;
+            }
+            let v = v - 0x3030_3030;
+            let v = (v.wrapping_mul(10) + (v >> 8)) & 0x00FF_00FF;
+            let v = (v.wrapping_mul(100) + (v >> 16)) & 0xFFFF;
+            mantissa = mantissa.wrapping_mul(10_000).wrapping_add(i64::from(v));
+            scale += 4;
+            i += 4;
+        }
+        digits(&mut i, &mut mantissa, &mut scale, true);
     }
     let length = i - start;
     if length > 18 || length == usize::from(point) || (negative && mantissa == 0) {
@@ -782,6 +803,101 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
     }))
 }
 
+/// The call of a line as `rs274 -g` prints its most frequent ones, read
+/// in one pass over its bytes: `<spaces><sequence> N<digits or points>
+/// <name>(<arguments>)`, with one optional `\r` at the end, for a
+/// `STRAIGHT_FEED` or `STRAIGHT_TRAVERSE` of six [`plain_number`]s
+/// separated by `", "`, a `START_SPEED_FEED_SYNC` of two separated by
+/// `","` in constant-pitch mode (the second 0), a
+/// `STOP_SPEED_FEED_SYNCH()`, or a call of [`SKIPPED_CALLS`]; `None` for
+/// any other line, which [`call`] then reads (and is the one that names
+/// every error).
+///
+/// Where it gives a call, the line is ASCII (so valid UTF-8) and the
+/// call is the one [`call`] gives for the same line read as text (the
+/// test `plain_calls_are_the_general_ones` compares them on adversarial
+/// lines). It is given bytes because `check` reads a trace's lines where
+/// they lie in its read buffer, and validating UTF-8 first was a
+/// twentieth of its time on `rs274`'s output.
+///
+/// ```
+/// use cycleref_spec::rs274::{call, plain_call, CanonCall};
+/// let line = "   17 N..... STRAIGHT_FEED(10.7700, 0.0000, 1.9151, 0.0000, 0.0000, 0.0000)";
+/// let c = plain_call(line.as_bytes()).unwrap();
+/// assert_eq!(Ok(Some(c)), call(line, 17));
+/// assert!(matches!(c, CanonCall::Motion { rapid: false, .. }));
+/// // A form it does not read is left to `call`.
+/// assert_eq!(plain_call(b"   18 N..... STRAIGHT_FEED(1, 0, 1, 0, 0, 0, 0, 0, 0)"), None);
+/// ```
+#[must_use]
+pub fn plain_call(raw: &[u8]) -> Option<CanonCall> {
+    let b = raw.strip_suffix(b"\r").unwrap_or(raw);
+    let mut i = 0;
+    while b.get(i) == Some(&b' ') {
+        i += 1;
+    }
+    let sequence = i;
+    while b.get(i).is_some_and(u8::is_ascii_digit) {
+        i += 1;
+    }
+    if i == sequence || b.get(i) != Some(&b' ') {
+        return None;
+    }
+    while b.get(i) == Some(&b' ') {
+        i += 1;
+    }
+    if b.get(i) != Some(&b'N') {
+        return None;
+    }
+    i += 1;
+    while b.get(i).is_some_and(|&c| c.is_ascii_digit() || c == b'.') {
+        i += 1;
+    }
+    if b.get(i) != Some(&b' ') {
+        return None;
+    }
+    let body = b.get(i + 1..)?.strip_suffix(b")")?;
+    let open = body.iter().position(|&c| c == b'(')?;
+    let (name, args) = (&body[..open], &body[open + 1..]);
+    // Plain numbers separated by a comma (and a space when `spaced`),
+    // as many as `out` holds, and nothing else.
+    let numbers = |spaced: bool, out: &mut [Decimal]| -> Option<()> {
+        let mut at = 0;
+        for (k, slot) in out.iter_mut().enumerate() {
+            if k > 0 {
+                if args.get(at) != Some(&b',') || (spaced && args.get(at + 1) != Some(&b' ')) {
+                    return None;
+                }
+                at += 1 + usize::from(spaced);
+            }
+            *slot = plain_number_at(args, &mut at)?;
+        }
+        (at == args.len()).then_some(())
+    };
+    match name {
+        b"STRAIGHT_FEED" | b"STRAIGHT_TRAVERSE" => {
+            let mut v = [Decimal::ZERO; 6];
+            numbers(true, &mut v)?;
+            Some(CanonCall::Motion {
+                rapid: name == b"STRAIGHT_TRAVERSE",
+                x: v[0],
+                z: v[2],
+                others: [v[1], v[3], v[4], v[5]],
+            })
+        }
+        b"START_SPEED_FEED_SYNC" => {
+            let mut v = [Decimal::ZERO; 2];
+            numbers(false, &mut v)?;
+            // Velocity mode is an error, named by `call`.
+            v[1].is_zero().then_some(CanonCall::StartSync { pitch: v[0] })
+        }
+        // The arguments are not read (as by `call`), only required ASCII.
+        b"STOP_SPEED_FEED_SYNCH" => args.is_ascii().then_some(CanonCall::StopSync),
+        _ => (args.is_ascii() && SKIPPED_CALLS.iter().any(|s| s.as_bytes() == name))
+            .then_some(CanonCall::Skipped),
+    }
+}
+
 /// Our moves against `rs274`'s motions, call by call: the same kind
 /// (rapid, or feed synchronised at a pitch), X as a radius (ours divided by
 /// 2 in diameter mode) and Z within one increment of `units` plus half of
@@ -1004,6 +1120,162 @@ mod plain_tests {
         }
     }
 
+    /// Lines of the forms [`plain_call`] reads, each part drawn with what
+    /// may replace it.
+    fn call_line() -> impl Strategy<Value = String> {
+        let number = prop_oneof![
+            6 => prop::sample::select(vec!["0.0000", "-12.3456", "2.038235", "0", "7", "123456789012345678"]),
+            1 => prop::sample::select(vec![
+                "-0.0000", "5.", ".5", "-", "", "1e3", "+4", "1.2.3", "1234567890123456789", "\u{e9}", "-0",
+            ]),
+        ];
+        let separator = prop_oneof![
+            8 => Just(", "),
+            4 => Just(","),
+            1 => prop::sample::select(vec![" ,", ",  ", "\t", ", \u{a0}", ""]),
+        ];
+        let args = (
+            prop_oneof![2 => Just(6_usize), 2 => Just(2), 1 => 0_usize..9],
+            prop::collection::vec((separator, number), 9),
+        )
+            .prop_map(|(n, v)| {
+                v.iter()
+                    .take(n)
+                    .enumerate()
+                    .map(|(k, (s, n))| if k == 0 { (*n).to_string() } else { format!("{s}{n}") })
+                    .collect::<String>()
+            });
+        let name = prop::sample::select(vec![
+            "STRAIGHT_FEED",
+            "STRAIGHT_TRAVERSE",
+            "START_SPEED_FEED_SYNC",
+            "STOP_SPEED_FEED_SYNCH",
+            "ENABLE_FEED_OVERRIDE",
+            "COMMENT",
+            "TELEPORT",
+            "STRAIGHT_FEED ",
+            " STRAIGHT_FEED",
+            "ARC_FEED",
+            "USE_LENGTH_UNITS",
+        ]);
+        let formed = (
+            prop::sample::select(vec!["   ", "   ", " ", "", "\t", "\u{feff}"]),
+            prop::sample::select(vec!["17", "17", "7", "", "1a"]),
+            prop::sample::select(vec![" ", " ", " ", "  ", "", "\u{a0}"]),
+            prop::sample::select(vec!["N.....", "N.....", "N10", "N", "M", ""]),
+            prop::sample::select(vec![" ", " ", " ", "  ", "\t", ""]),
+            name,
+            prop::sample::select(vec!["(", "(", "((", ""]),
+            prop_oneof![3 => args, 1 => prop::sample::select(vec!["\"\u{e9}\"", "\"a(b)\"", "CANON_UNITS_MM", ")"]).prop_map(String::from)],
+            prop::sample::select(vec![")", ")", ")\r", ") ", "", "))", ")\r\r"]),
+        )
+            .prop_map(|(a, b, c, d, e, f, g, h, i)| format!("{a}{b}{c}{d}{e}{f}{g}{h}{i}"));
+        // rs274's own lines, some with one character replaced, inserted
+        // or removed.
+        let good = prop::sample::select(vec!["0.0000", "-12.3456", "2.038235", "0", "7", "9.8500", "-0.5"]);
+        let clean = (
+            prop::sample::select(vec![
+                "STRAIGHT_FEED",
+                "STRAIGHT_TRAVERSE",
+                "START_SPEED_FEED_SYNC",
+                "STOP_SPEED_FEED_SYNCH",
+                "ENABLE_FEED_OVERRIDE",
+            ]),
+            prop::collection::vec(good, 6),
+        )
+            .prop_map(|(name, v)| {
+                let args = match name {
+                    "STRAIGHT_FEED" | "STRAIGHT_TRAVERSE" => v.join(", "),
+                    "START_SPEED_FEED_SYNC" => format!("{},{}", v[0], if v[1] == "7" { "1" } else { "0" }),
+                    _ => String::new(),
+                };
+                format!("   17 N..... {name}({args})")
+            });
+        let edit = (
+            0_usize..80,
+            prop::sample::select(vec![
+                "", "", " ", ",", ".", "-", "0", "9", "(", ")", "\r", "\u{a0}", "\u{e9}", "e",
+            ]),
+            0_usize..2,
+        );
+        let edited = (clean.clone(), edit).prop_map(|(line, (at, with, remove))| {
+            let mut chars: Vec<char> = line.chars().collect();
+            let at = at.min(chars.len());
+            chars.drain(at..(at + remove).min(chars.len()));
+            chars.splice(at..at, with.chars());
+            chars.into_iter().collect::<String>()
+        });
+        prop_oneof![2 => formed, 1 => clean, 3 => edited]
+    }
+
+    /// The strategy reaches the plain reading often (and every value of
+    /// it), so that the comparison above is not vacuous.
+    #[test]
+    fn call_lines_reach_the_plain_reading() {
+        use proptest::strategy::ValueTree;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let strategy = call_line();
+        let mut kinds = [0_usize; 4];
+        for _ in 0..4000 {
+            let raw = strategy.new_tree(&mut runner).unwrap().current();
+            match super::plain_call(raw.as_bytes()) {
+                Some(super::CanonCall::Motion { .. }) => kinds[0] += 1,
+                Some(super::CanonCall::StartSync { .. }) => kinds[1] += 1,
+                Some(super::CanonCall::StopSync) => kinds[2] += 1,
+                Some(super::CanonCall::Skipped) => kinds[3] += 1,
+                _ => {}
+            }
+        }
+        assert!(kinds.iter().all(|&k| k >= 20), "{kinds:?}");
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(8192))]
+        #[test]
+        fn plain_calls_are_the_general_ones(raw in call_line()) {
+            if let Some(c) = super::plain_call(raw.as_bytes()) {
+                prop_assert!(raw.is_ascii(), "{:?}", raw);
+                let general = super::call(&raw, 3);
+                // Debug shows each decimal's scale as well as its value.
+                prop_assert_eq!(format!("{:?}", Ok::<_, super::CanonError>(Some(c))), format!("{general:?}"), "{:?}", raw);
+            }
+        }
+    }
+
+    /// Every line of two traces `rs274 -g` printed (LinuxCNC 2.9) is
+    /// read plainly unless it is a call [`plain_call`] leaves to [`call`],
+    /// and read as [`call`] reads it.
+    #[test]
+    fn rs274s_traces_are_read_plainly() {
+        for trace in
+            [include_str!("../tests/data/m20-taper.canon"), include_str!("../tests/data/lcnc-taper.canon")]
+        {
+            let (mut plain, mut left) = (0, 0);
+            for (i, raw) in trace.lines().enumerate() {
+                match super::plain_call(raw.as_bytes()) {
+                    Some(c) => {
+                        plain += 1;
+                        assert_eq!(
+                            format!("{:?}", super::call(raw, i + 1)),
+                            format!("{:?}", Ok::<_, ()>(Some(c)))
+                        );
+                    }
+                    None => {
+                        left += 1;
+                        let name = raw.split_whitespace().nth(2).unwrap_or("");
+                        assert!(
+                            ["USE_LENGTH_UNITS", "SET_XY_ROTATION", "SELECT_PLANE", "ARC_FEED"]
+                                .iter()
+                                .any(|n| name.starts_with(&format!("{n}("))),
+                            "{raw:?}"
+                        );
+                    }
+                }
+            }
+            assert!(plain > 100 && left < 10, "{plain} {left}");
+        }
+    }
+
     #[test]
     fn rs274s_lines_are_read_plainly() {
         let line = "   13 N..... STRAIGHT_TRAVERSE(11.0000, 0.0000, -2.0000, 0.0000, 0.0000, 0.0000) ";
@@ -1064,6 +1336,19 @@ mod number_tests {
             "1,5",
             " 1",
             "007.0100",
+            // Four digits at a time, and what is left after them.
+            "1.23456",
+            "2.038235",
+            "12.345678",
+            "0.12345678",
+            "0.1234567890123456",
+            "0.12345678901234567",
+            "3.14159265358979323",
+            "1.2345.6",
+            "1.234:",
+            "1.23/4",
+            "-0.0000001",
+            "9999.99999999",
         ];
         for s in forms {
             let ours = number(s);
@@ -1072,6 +1357,11 @@ mod number_tests {
             if let (Ok(a), Ok(b)) = (ours, parser) {
                 assert_eq!((a, a.to_string()), (b, b.to_string()), "{s}");
             }
+        }
+        // Every pitch of six decimals over a range.
+        for m in (0_i64..=3_000_000).step_by(997) {
+            let s = format!("{}.{:06}", m / 1_000_000, m % 1_000_000);
+            assert_eq!(number(&s).map(|d| d.to_string()), s.parse::<Decimal>().map(|d| d.to_string()), "{s}");
         }
         // Every value of four decimals over a range, both signs.
         for m in -20_000_i64..=20_000 {

@@ -573,6 +573,12 @@ impl CanonTrace<'_> {
         // where its error is reported.
         if let Ok(buffer) = self.source.fill_buf() {
             if let Some(end) = memchr::memchr(b'\n', buffer) {
+                // `rs274`'s usual lines, read where they lie (the same
+                // call as below: `plain_call`'s test).
+                if let Some(c) = cycleref_spec::rs274::plain_call(&buffer[..end]) {
+                    self.source.consume(end + 1);
+                    return Ok(Some(Some(c)));
+                }
                 let call = match std::str::from_utf8(&buffer[..end]) {
                     // A byte-order mark may start the first line.
                     Ok(t) => {
