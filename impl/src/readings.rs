@@ -194,15 +194,26 @@ pub struct G75Readings {
     /// increment deeper, so the bottom of layer m is `m·(D div M) + min(m,
     /// D mod M)`.
     pub equal_layers: bool,
+    /// Reading R-G75CHAMFER: a chamfer corner of size c has legs c along
+    /// both its edges from the virtual sharp corner when `false`
+    /// (`equal-legs`); its extent along Z is c when `true` (`axial-width`):
+    /// the legs are `c / (cos θ1 + cos θ2)`, θ1, θ2 its edges' angles to the
+    /// Z axis (r1: a and L, r2: b and L, r3: a and 0, r4: b and 0). Rounds
+    /// are the same under both.
+    pub chamfer_axial_width: bool,
 }
 
 impl G75Readings {
     /// The reading of every point before readings were selectable, the
     /// default on the gsk980 profile: ridges in layers refused, the peck
     /// retract clamped at the plunge's start, layers Δv deep and the last
-    /// the remainder.
-    pub const DEFAULT: G75Readings =
-        G75Readings { ridges_as_written: false, peck_retract_as_written: false, equal_layers: false };
+    /// the remainder, chamfers of equal legs.
+    pub const DEFAULT: G75Readings = G75Readings {
+        ridges_as_written: false,
+        peck_retract_as_written: false,
+        equal_layers: false,
+        chamfer_axial_width: false,
+    };
 }
 
 impl Default for G75Readings {

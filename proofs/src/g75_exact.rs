@@ -104,7 +104,8 @@ const fn ceil_div(num: i64, den: i64) -> i64 {
 }
 
 /// Twin: `spec/src/g75/geometry.rs`, `groove` and `tangent_length`. The
-/// tangent length is the size for a chamfer (R-G75CHAMFER) and `ρ·tan 45°
+/// tangent length is the size for a chamfer (R-G75CHAMFER: under
+/// `axial-width` too, `c / (cos 90° + cos 0°) = c`) and `ρ·tan 45°
 /// = ρ` for a round at every corner ((a + L)/2 = (b − L)/2 = a/2 = b/2 =
 /// 45°); 0 for a sharp corner.
 fn square(c: &G75Cycle, slip: Slip) -> Square {

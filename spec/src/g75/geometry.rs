@@ -225,8 +225,19 @@ pub fn p3(g: &Groove) -> RealPoint {
 }
 
 /// The tangent length `t` of a corner (`docs/G75.md` §3), in radius
-/// increments: its size `c` for a chamfer (R-G75CHAMFER, equal legs along
-/// both edges from the virtual sharp corner, as `,C` on G01), and
+/// increments: its size `c` for a chamfer (R-G75CHAMFER `equal-legs`,
+/// equal legs along both edges from the virtual sharp corner, as `,C` on
+/// G01; under `axial-width` `c / (cos θ1 + cos θ2)`, the legs of the
+/// symmetric chamfer whose extent along Z is c:
+///
+/// | corner | t (chamfer, `axial-width`) |
+/// |---|---|
+/// | r1 (A) | `c / (cos a + cos L)` |
+/// | r2 (B) | `c / (cos b + cos L)` |
+/// | r3 (D) | `c / (1 + cos a)` |
+/// | r4 (E) | `c / (1 + cos b)` |
+///
+/// ), and
 /// `ρ·cot(φ/2)` for a round of radius ρ tangent to both edges:
 ///
 /// | corner | t (round) |
@@ -248,6 +259,20 @@ pub fn tangent_length(c: &G75Cycle, index: usize) -> Real {
     let size = c.corners[index].size;
     let rho = Real::int(size);
     match c.corners[index].kind {
+        // R-G75CHAMFER `axial-width`: the symmetric chamfer whose extent
+        // along Z ("宽度") is c: its legs t run along edges at θ1, θ2 to the
+        // Z axis, so its Z extent is t·(cos θ1 + cos θ2) (r1: flank A and
+        // the surface before S, r2: flank B and the surface beyond P3, r3:
+        // flank A and the bottom, r4: flank B and the bottom).
+        CornerKind::Chamfer if size > 0 && c.readings.chamfer_axial_width => {
+            let (first, second) = match index {
+                corner::R1 => (c.flank_a, c.slope),
+                corner::R2 => (c.flank_b, c.slope),
+                corner::R3 => (c.flank_a, 0),
+                _ => (c.flank_b, 0),
+            };
+            &rho / &(Real::cos(2 * first) + Real::cos(2 * second))
+        }
         CornerKind::Chamfer => rho,
         CornerKind::Round if size == 0 => rho,
         CornerKind::Round => {

@@ -49,6 +49,9 @@ pub(super) struct Geometry {
     pub(super) size: [i64; 4],
     /// True for a round, false for a chamfer.
     pub(super) round: [bool; 4],
+    /// Reading R-G75CHAMFER `axial-width`: a chamfer's size is its extent
+    /// along Z.
+    pub(super) axial_chamfer: bool,
 }
 
 impl Geometry {
@@ -65,6 +68,7 @@ impl Geometry {
             l: c.slope,
             size: c.corners.map(|k| k.size),
             round: c.corners.map(|k| k.kind == CornerKind::Round),
+            axial_chamfer: c.readings.chamfer_axial_width,
         }
     }
 
@@ -353,32 +357,44 @@ impl<R: Real> Enclosures<R> {
         let cot_a = R::cot_of(ka, &sin_a, &cos_a);
         let cot_b = R::cot_of(kb, &sin_b, &cos_b);
         let tan_l = R::tan_of(kl, &sin_l, &cos_l);
-        // Tangent lengths (§3): a chamfer's is its size, a round's ρ·tan(…).
-        let t = |i: usize, half: u32| -> R {
+        // A chamfer's tangent length (§3): its size, or under R-G75CHAMFER
+        // `axial-width` c / (cos θ1 + cos θ2), θ1, θ2 its edges' angles to
+        // the Z axis (`cos_edges`).
+        // Written (c/2) / ((cos θ1 + cos θ2)/2): the fast path divides by
+        // values of magnitude at most 1 only.
+        let chamfer = |c: i64, cos_edges: &R| -> R {
+            if g.axial_chamfer {
+                int::<R>(c).div_int(2).div(&cos_edges.div_int(2))
+            } else {
+                int(c)
+            }
+        };
+        // Tangent lengths (§3): a chamfer's as above, a round's ρ·tan(…).
+        let t = |i: usize, half: u32, cos_edges: &R| -> R {
             let c = g.size(i);
             if c == 0 {
                 int(0)
             } else if g.is_round(i) {
                 R::tan_cot(half).0.mul_int(c)
             } else {
-                int(c)
+                chamfer(c, cos_edges)
             }
         };
-        let t1 = t(corner::R1, g.a + g.l);
+        let t1 = t(corner::R1, g.a + g.l, &cos_a.add(&cos_l));
         // validate(): L < B.
-        let t2 = t(corner::R2, g.b.saturating_sub(g.l));
+        let t2 = t(corner::R2, g.b.saturating_sub(g.l), &cos_b.add(&cos_l));
         // t3 and cot(a/2) (and t4, cot(b/2)) share one series.
-        let half = |i: usize, k: u32| -> (R, R) {
+        let half = |i: usize, k: u32, cos_edge: &R| -> (R, R) {
             let c = g.size(i);
             if c == 0 {
                 return (int(0), R::poison());
             }
             let (tan_h, cot_h) = R::tan_cot(k);
-            let t = if g.is_round(i) { tan_h.mul_int(c) } else { int(c) };
+            let t = if g.is_round(i) { tan_h.mul_int(c) } else { chamfer(c, &int::<R>(1).add(cos_edge)) };
             (t, cot_h)
         };
-        let (t3, cot_ha) = half(corner::R3, g.a);
-        let (t4, cot_hb) = half(corner::R4, g.b);
+        let (t3, cot_ha) = half(corner::R3, g.a, &cos_a);
+        let (t4, cot_hb) = half(corner::R4, g.b, &cos_b);
         // P1.u = (Y/f)·cot a.
         let hr = int::<R>(g.depth).div_int(g.fu());
         let p1u = hr.mul(&cot_a);

@@ -90,7 +90,9 @@
 //!
 //! After `validate()`: `Y, d, Δu, Δw, w, Δi, Δk, Δv < 2^27`, corner sizes
 //! `< 2^20`, `f ≤ 2`; every tangent or cotangent used is at most
-//! `cot(0.00005°) < 2^21`; `1 − tan L·cot b = sin(b − L)/(sin b·cos L) ≥
+//! `cot(0.00005°) < 2^21`; a chamfer's tangent length under R-G75CHAMFER
+//! `axial-width`, `c / (cos θ1 + cos θ2)`, is below `c / cos 89.9999° <
+//! 2^40`; `1 − tan L·cot b = sin(b − L)/(sin b·cos L) ≥
 //! sin(0.0001°) > 2^-20`. So `(Y/f)·cot a < 2^47`, `u3 < 2^69`, `y3 =
 //! −f·u3·tan L` has `|y3| = f·(…)·sin L·sin b / sin(b − L) < 2^70`, and no
 //! formula exceeds `2^96`: far inside the `2^127` of an [`Interval`](crate::engine::real::Interval), so no
