@@ -201,18 +201,26 @@ pub struct G75Readings {
     /// Z axis (r1: a and L, r2: b and L, r3: a and 0, r4: b and 0). Rounds
     /// are the same under both.
     pub chamfer_axial_width: bool,
+    /// Reading R-G75SLOPE: the opening (the line through S at L) rises
+    /// towards −y (away from the bottom) in D's direction when `false`
+    /// (`rises-towards-d`: the groove deepest at flank B, L < B); falls
+    /// towards +y in D's direction when `true` (`falls-towards-d`: deepest
+    /// at flank A, L < A, and the opening must meet flank B above the
+    /// bottom).
+    pub slope_falls_towards_d: bool,
 }
 
 impl G75Readings {
     /// The reading of every point before readings were selectable, the
     /// default on the gsk980 profile: ridges in layers refused, the peck
     /// retract clamped at the plunge's start, layers Δv deep and the last
-    /// the remainder, chamfers of equal legs.
+    /// the remainder, chamfers of equal legs, the opening rising towards D.
     pub const DEFAULT: G75Readings = G75Readings {
         ridges_as_written: false,
         peck_retract_as_written: false,
         equal_layers: false,
         chamfer_axial_width: false,
+        slope_falls_towards_d: false,
     };
 }
 

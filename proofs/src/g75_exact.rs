@@ -18,7 +18,8 @@
 //!   corner chords `t3 + Δw − (Y − Δu − y)/f`, `d − t4 − Δw + (Y − Δu −
 //!   y)/f`, whole or half increments (f = 2); their roundings in (`ceil`,
 //!   `floor`) are exact integer divisions by f here;
-//! * the opening is the line y = 0 (y3 = 0, `y_top = floor(y3) = 0`), and
+//! * the opening is the line y = 0 (y3 = 0, `y_top = floor(y3) = 0`, under
+//!   either value of R-G75SLOPE: at L = 0 it neither rises nor falls), and
 //!   the corner alarms compare integers once multiplied by f.
 //!
 //! Nothing is left out for being inexact: every corner (chamfer or round,

@@ -86,7 +86,7 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
     // The readings of the G75.1 page (issue 34), each value as often as
     // the default: bit 0 R-G75RIDGE `as-written`, bit 1 R-G75PECK
     // `as-written`, bit 2 R-G75LAYER `equal`, bit 3 R-G75CHAMFER
-    // `axial-width`.
+    // `axial-width`, bit 4 R-G75SLOPE `falls-towards-d`.
     let readings = any::<u8>();
     (units, sizes, allowances, shape, rest, readings).prop_map(
         |(
@@ -128,6 +128,7 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
                     peck_retract_as_written: bits & 2 != 0,
                     equal_layers: bits & 4 != 0,
                     chamfer_axial_width: bits & 8 != 0,
+                    slope_falls_towards_d: bits & 16 != 0,
                 },
             }
         },

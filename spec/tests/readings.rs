@@ -411,7 +411,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG, \
-         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC, R-G75CHAMFER)"
+         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC, R-G75CHAMFER, R-G75SLOPE)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1779,4 +1779,131 @@ fn g75_chamfer_axial_width_corner_limits() {
     too_large(&flank("0.401"), &axial, GrooveEdge::FlankA);
     assert!(run(&flank("0.4"), &default).is_ok());
     assert!(run(&flank("0.401"), &default).is_ok());
+}
+
+/// R-G75SLOPE `falls-towards-d`, 980TDi IS-B, from X60 Z40: S = (X50,
+/// Z30), H-10 (Y = 10 000 on the diameter, Y/f = 5 000), D-4 (d = 4 000),
+/// A90 B60 L30, J2, a 0.5 mm chamfer at A(r1) and a 0.5 mm round at B(r2)
+/// (P0100). Local frame: u towards -Z from Z30, y towards -X from X50 (f =
+/// 2). cot 90° = 0, cot 60° = 1/√3, tan 30° = 1/√3: P1 = (0, 10 000), P2 =
+/// (4 000, 10 000).
+///
+/// Falling (y = +f·u·tan L): u3 = (4 000 + 5 000/√3)/(1 + tan 30°·cot 60°)
+/// = (4 000 + 2 886.751)·3/4 = 5 165.064, y3 = 2·u3/√3 = 5 964.102 < Y
+/// (the opening meets flank B above the bottom). r1 (chamfer) t1 = 500:
+/// T1s = (−500·cos 30°, −2·500·sin 30°) = (−433.013, −500): X50.5 Z30.433;
+/// T1a = (0, 1 000): X49 Z30. r2 (round ρ = 500): t2 = 500·tan((60° +
+/// 30°)/2) = 500: T2b = (u3 − 500·cos 60°, y3 + 2·500·sin 60°) =
+/// (4 915.064, 6 830.127): X43.170 Z25.085; T2s = (u3 + 500·cos 30°, y3 +
+/// 2·500·sin 30°) = (5 598.076, 6 464.102): X43.536 Z24.402; C2 = T2b +
+/// 500·(sin 60°, 2·cos 60°) = (5 348.076, 7 330.127): X42.670 Z24.652. The
+/// round turns as the default's (cross product ρ²·sin(b + L) > 0; sx·sz =
+/// +1: G03, R-G75ARCDIR).
+///
+/// Moves: y_top = 0 (S is the opening's highest point); A11 = (ceil(left(Y)),
+/// 0) = (0, 0): rapid to X50 Z30; along X to min(0, −500): X50.5, along Z
+/// to Z30.433 (T1s); feeds to T1a, P1 (X40 Z30), P2 (X40 Z26), T2b, the
+/// arc to T2s; back along X to min(0, 6 464) = 0: X50 Z24.402, along Z to
+/// Z30; rapid to X60 Z40.
+///
+/// Rising (default): u3 = 6 886.751/(1 − 1/3) = 10 330.127, y3 =
+/// −11 928.203, y_top = −11 929 (X61.929); T1s = (−433.013, +500): X49.5
+/// Z30.433; t2 = 500·tan 15° = 133.975: T2b = (10 263.140, −11 696.152):
+/// X61.696 Z19.737; T2s = (10 446.152, −12 062.178): X62.062 Z19.554; C2 =
+/// (10 696.152, −11 196.152): X61.196 Z19.304.
+#[test]
+fn g75_slope_falls_towards_d() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 H-10 D-4 A90 B60 L30\n\
+               G75.1 J2 A0.5 B0.5 P0100\nM30\n";
+    let arcs = |moves: &[Move]| -> Vec<(Point, bool)> {
+        moves
+            .iter()
+            .filter_map(|m| match m.motion {
+                cycleref::Motion::Arc { centre, clockwise } => Some((centre, clockwise)),
+                _ => None,
+            })
+            .collect()
+    };
+    let falls = run(src, &machine(ProfileName::Gsk980, &["R-G75SLOPE=falls-towards-d"])).unwrap();
+    assert_eq!(
+        kinds(&falls),
+        [
+            (true, 50_000, 30_000),
+            (true, 50_500, 30_000),
+            (true, 50_500, 30_433),
+            (false, 49_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 26_000),
+            (false, 43_170, 25_085),
+            (false, 43_536, 24_402),
+            (true, 50_000, 24_402),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]
+    );
+    assert_eq!(arcs(&falls), [(Point::new(42_670, 24_652), false)]);
+    let rises = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        kinds(&rises),
+        [
+            (true, 61_929, 30_000),
+            (true, 61_929, 30_433),
+            (true, 49_500, 30_433),
+            (false, 49_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 26_000),
+            (false, 61_696, 19_737),
+            (false, 62_062, 19_554),
+            (true, 62_062, 30_000),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]
+    );
+    assert_eq!(arcs(&rises), [(Point::new(61_196, 19_304), false)]);
+}
+
+/// R-G75SLOPE's alarms at their edges, 980TDi IS-B, S = (X50, Z30).
+///
+/// L < A under `falls-towards-d` (flank A must go down from S below the
+/// falling opening), L < B under `rises-towards-d`: A30 B90 L30 is refused
+/// falling (`slope_not_below_flank_a`) and accepted rising; A90 B30 L45 the
+/// other way round.
+///
+/// The opening must meet flank B above the bottom, y3 < Y: A90 B90 L45, H-8
+/// (Y = 8 000), D-4: u3 = 4 000/(1 + 1·0) = 4 000, y3 = 2·4 000·tan 45° =
+/// 8 000 = Y: refused (`opening_below_bottom`, flank B would have no
+/// length); D-3.999: y3 = 7 998 < 8 000, accepted.
+///
+/// CornerTooLarge on flank B with the falling y3: H-8 D-3, A90 B90 L45:
+/// y3 = 6 000, flank B = ((8 000 − 6 000)/2)/sin 90° = 1 000; E(r4) 0.6
+/// and B(r2) 0.4 chamfers (equal legs): 600 + 400 = 1 000, accepted; B0.401
+/// refused (flank B). Rising, y3 = −6 000 and flank B is 7 000 long: both
+/// accepted.
+#[test]
+fn g75_slope_falls_alarms() {
+    use cycleref::GrooveEdge;
+    let falls = machine(ProfileName::Gsk980, &["R-G75SLOPE=falls-towards-d"]);
+    let rises = machine(ProfileName::Gsk980, &[]);
+    let groove = |words: &str, block2: &str| {
+        format!("M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 {words}\nG75.1 J2 {block2}\nM30\n")
+    };
+    let a30 = groove("H-8 D-4 A30 B90 L30", "");
+    let e = run(&a30, &falls).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::SlopeNotBelowFlankA { slope: 300_000, flank_a: 300_000 }));
+    assert!(run(&a30, &rises).is_ok());
+    let b30 = groove("H-8 D-1 A90 B30 L45", "");
+    assert!(run(&b30, &falls).is_ok());
+    let e = run(&b30, &rises).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::SlopeNotBelowFlank { slope: 450_000, flank_b: 300_000 }));
+    let edge = groove("H-8 D-4 A90 B90 L45", "");
+    assert_eq!(run(&edge, &falls).unwrap_err(), ErrorKind::Cycle(CycleError::OpeningBelowBottom));
+    assert!(run(&edge, &rises).is_ok());
+    assert!(run(&groove("H-8 D-3.999 A90 B90 L45", ""), &falls).is_ok());
+    let corners = |r2: &str| groove("H-8 D-3 A90 B90 L45", &format!("B{r2} E0.6 P0000"));
+    assert!(run(&corners("0.4"), &falls).is_ok());
+    assert_eq!(
+        run(&corners("0.401"), &falls).unwrap_err(),
+        ErrorKind::Cycle(CycleError::CornerTooLarge { edge: GrooveEdge::FlankB })
+    );
+    assert!(run(&corners("0.401"), &rises).is_ok());
 }
