@@ -57,7 +57,9 @@ fn readings_lists_one_line_per_reading() {
             "R-G75PECK",
             "R-SPINDLE",
             "R-G75LAYER",
-            "R-G75ARC"
+            "R-G75ARC",
+            "R-G75CHAMFER",
+            "R-G75SLOPE"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");

@@ -233,6 +233,8 @@ fn kind(k: &ErrorKind) -> String {
         CycleError::AngleOutOfRange { .. } => "angle_out_of_range",
         CycleError::NoGrooveDepth => "no_groove_depth",
         CycleError::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
+        CycleError::SlopeNotBelowFlankA { .. } => "slope_not_below_flank_a",
+        CycleError::OpeningBelowBottom => "opening_below_bottom",
         CycleError::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
         CycleError::CornerTooLarge { .. } => "corner_too_large",
         CycleError::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",

@@ -331,6 +331,19 @@ pub enum CycleError {
         /// B in 0.0001 degree.
         flank_b: u32,
     },
+    /// G75.1 under reading R-G75SLOPE `falls-towards-d`: the slope L not
+    /// below flank angle A, so flank A never goes down from S into the
+    /// groove below the falling opening.
+    SlopeNotBelowFlankA {
+        /// L in 0.0001 degree.
+        slope: u32,
+        /// A in 0.0001 degree.
+        flank_a: u32,
+    },
+    /// G75.1 under reading R-G75SLOPE `falls-towards-d`: the opening,
+    /// falling at L in D's direction, reaches the bottom's level at or
+    /// before flank B: the groove has no far flank.
+    OpeningBelowBottom,
     /// G75.1 U(Δu) at least the depth |H|: no room is left to rough.
     AllowanceExceedsDepth {
         /// Δu.
@@ -494,6 +507,18 @@ impl fmt::Display for CycleError {
                 crate::units::write_fixed(f, i128::from(flank_b), 4)?;
                 write!(f, " degrees: flank B never meets the slope of the opening")
             }
+            CycleError::SlopeNotBelowFlankA { slope, flank_a } => {
+                write!(f, "L(∠p) = ")?;
+                crate::units::write_fixed(f, i128::from(slope), 4)?;
+                write!(f, " degrees is not below A(∠a) = ")?;
+                crate::units::write_fixed(f, i128::from(flank_a), 4)?;
+                write!(f, " degrees: with the opening falling towards D (R-G75SLOPE falls-towards-d) flank A never goes down into the groove")
+            }
+            CycleError::OpeningBelowBottom => write!(
+                f,
+                "the opening, falling at L(∠p) towards D (R-G75SLOPE falls-towards-d), reaches the bottom's \
+                 level H(h) at or before flank B: the groove has no far flank"
+            ),
             CycleError::AllowanceExceedsDepth { allowance, depth } => write!(
                 f,
                 "U(Δu) = {allowance} is not smaller than the groove depth |H| = {depth}: the allowance \
@@ -578,6 +603,8 @@ impl CycleError {
             Self::AngleOutOfRange { .. } => "angle_out_of_range",
             Self::NoGrooveDepth => "no_groove_depth",
             Self::SlopeNotBelowFlank { .. } => "slope_not_below_flank",
+            Self::SlopeNotBelowFlankA { .. } => "slope_not_below_flank_a",
+            Self::OpeningBelowBottom => "opening_below_bottom",
             Self::AllowanceExceedsDepth { .. } => "allowance_exceeds_depth",
             Self::CornerTooLarge { .. } => "corner_too_large",
             Self::GrooveNarrowerThanTool { .. } => "groove_narrower_than_tool",

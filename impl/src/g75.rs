@@ -243,9 +243,16 @@ impl G75Cycle {
         {
             range(field, corner.size, 0, small, small_rule)?;
         }
-        // L is the slope of the opening: flank B must be steeper or it
-        // never meets the opening (R-G75SLOPE).
-        if c.slope >= c.flank_b {
+        // L is the slope of the opening (R-G75SLOPE). Rising towards D
+        // (default): flank B must be steeper or it never meets the opening.
+        // Falling towards D: flank A must be steeper or it never goes down
+        // from S into the groove (flank B always meets the opening; that it
+        // meets it above the bottom is the engines' check, it needs y3).
+        if c.readings.slope_falls_towards_d {
+            if c.slope >= c.flank_a {
+                return Err(CycleError::SlopeNotBelowFlankA { slope: c.slope, flank_a: c.flank_a });
+            }
+        } else if c.slope >= c.flank_b {
             return Err(CycleError::SlopeNotBelowFlank { slope: c.slope, flank_b: c.flank_b });
         }
         // Allowances larger than the groove: the roughing bottom must lie

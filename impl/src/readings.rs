@@ -194,15 +194,34 @@ pub struct G75Readings {
     /// increment deeper, so the bottom of layer m is `m·(D div M) + min(m,
     /// D mod M)`.
     pub equal_layers: bool,
+    /// Reading R-G75CHAMFER: a chamfer corner of size c has legs c along
+    /// both its edges from the virtual sharp corner when `false`
+    /// (`equal-legs`); its extent along Z is c when `true` (`axial-width`):
+    /// the legs are `c / (cos θ1 + cos θ2)`, θ1, θ2 its edges' angles to the
+    /// Z axis (r1: a and L, r2: b and L, r3: a and 0, r4: b and 0). Rounds
+    /// are the same under both.
+    pub chamfer_axial_width: bool,
+    /// Reading R-G75SLOPE: the opening (the line through S at L) rises
+    /// towards −y (away from the bottom) in D's direction when `false`
+    /// (`rises-towards-d`: the groove deepest at flank B, L < B); falls
+    /// towards +y in D's direction when `true` (`falls-towards-d`: deepest
+    /// at flank A, L < A, and the opening must meet flank B above the
+    /// bottom).
+    pub slope_falls_towards_d: bool,
 }
 
 impl G75Readings {
     /// The reading of every point before readings were selectable, the
     /// default on the gsk980 profile: ridges in layers refused, the peck
     /// retract clamped at the plunge's start, layers Δv deep and the last
-    /// the remainder.
-    pub const DEFAULT: G75Readings =
-        G75Readings { ridges_as_written: false, peck_retract_as_written: false, equal_layers: false };
+    /// the remainder, chamfers of equal legs, the opening rising towards D.
+    pub const DEFAULT: G75Readings = G75Readings {
+        ridges_as_written: false,
+        peck_retract_as_written: false,
+        equal_layers: false,
+        chamfer_axial_width: false,
+        slope_falls_towards_d: false,
+    };
 }
 
 impl Default for G75Readings {

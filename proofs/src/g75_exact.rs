@@ -18,7 +18,8 @@
 //!   corner chords `t3 + Δw − (Y − Δu − y)/f`, `d − t4 − Δw + (Y − Δu −
 //!   y)/f`, whole or half increments (f = 2); their roundings in (`ceil`,
 //!   `floor`) are exact integer divisions by f here;
-//! * the opening is the line y = 0 (y3 = 0, `y_top = floor(y3) = 0`), and
+//! * the opening is the line y = 0 (y3 = 0, `y_top = floor(y3) = 0`, under
+//!   either value of R-G75SLOPE: at L = 0 it neither rises nor falls), and
 //!   the corner alarms compare integers once multiplied by f.
 //!
 //! Nothing is left out for being inexact: every corner (chamfer or round,
@@ -104,7 +105,8 @@ const fn ceil_div(num: i64, den: i64) -> i64 {
 }
 
 /// Twin: `spec/src/g75/geometry.rs`, `groove` and `tangent_length`. The
-/// tangent length is the size for a chamfer (R-G75CHAMFER) and `ρ·tan 45°
+/// tangent length is the size for a chamfer (R-G75CHAMFER: under
+/// `axial-width` too, `c / (cos 90° + cos 0°) = c`) and `ρ·tan 45°
 /// = ρ` for a round at every corner ((a + L)/2 = (b − L)/2 = a/2 = b/2 =
 /// 45°); 0 for a sharp corner.
 fn square(c: &G75Cycle, slip: Slip) -> Square {

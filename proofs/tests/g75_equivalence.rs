@@ -85,7 +85,8 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
     let rest = (any::<bool>(), any::<bool>(), 0_u8..3, [corner(max), corner(max), corner(max), corner(max)]);
     // The readings of the G75.1 page (issue 34), each value as often as
     // the default: bit 0 R-G75RIDGE `as-written`, bit 1 R-G75PECK
-    // `as-written`, bit 2 R-G75LAYER `equal`.
+    // `as-written`, bit 2 R-G75LAYER `equal`, bit 3 R-G75CHAMFER
+    // `axial-width`, bit 4 R-G75SLOPE `falls-towards-d`.
     let readings = any::<u8>();
     (units, sizes, allowances, shape, rest, readings).prop_map(
         |(
@@ -126,6 +127,8 @@ fn groove(max: i64) -> impl Strategy<Value = G75Cycle> {
                     ridges_as_written: bits & 1 != 0,
                     peck_retract_as_written: bits & 2 != 0,
                     equal_layers: bits & 4 != 0,
+                    chamfer_axial_width: bits & 8 != 0,
+                    slope_falls_towards_d: bits & 16 != 0,
                 },
             }
         },

@@ -160,7 +160,12 @@ fn generated_grooves() {
                 _ => PathType::Finish,
             },
             corners,
-            readings: cycleref::G75Readings::DEFAULT,
+            // R-G75CHAMFER `axial-width` on half the grooves: its tangent
+            // lengths are quotients on the fast path.
+            readings: cycleref::G75Readings {
+                chamfer_axial_width: rng.next(2) == 0,
+                ..cycleref::G75Readings::DEFAULT
+            },
         };
         let (got, s) = both(&c);
         if got.is_ok() {

@@ -426,6 +426,35 @@ pub enum G75Layers {
     Equal,
 }
 
+/// Reading R-G75CHAMFER: what the size of a G75.1 chamfer corner, "A(r1)：
+/// 外底起点处的倒棱宽度" (and B(r2), D(r3), E(r4)), measures. The chamfer is
+/// symmetric under both (equal legs t along its two edges from the virtual
+/// sharp corner); rounds (radius) are the same under both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Chamfer {
+    /// `equal-legs` (default): the legs are the size c (as `,C` on G01).
+    #[default]
+    EqualLegs,
+    /// `axial-width`: "宽度" is the chamfer's extent along Z: the legs are
+    /// `c / (cos θ1 + cos θ2)`, θ1, θ2 the angles of its two edges to the
+    /// Z axis.
+    AxialWidth,
+}
+
+/// Reading R-G75SLOPE: which way the opening of the 980TDi's G75.1 slopes,
+/// "L(∠p)：斜面的角度，斜面与底边延长线形成的夹角" (the direction is not said).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum G75Slope {
+    /// `rises-towards-d` (default): the line through S at L rises away
+    /// from the bottom in D's direction: deepest at flank B; L < B.
+    #[default]
+    RisesTowardsD,
+    /// `falls-towards-d`: the line through S at L falls towards the bottom
+    /// in D's direction: deepest at flank A; L < A, and the opening must
+    /// meet flank B above the bottom.
+    FallsTowardsD,
+}
+
 /// Reading R-G75ARC: which code names an arc of G75.1's rounds in the nc
 /// output and in an nc trace `check` reads. An output convention: the
 /// moves (`Motion::Arc`'s `clockwise`, seen with +Z right and +X up) are
@@ -530,6 +559,10 @@ pub struct Readings {
     pub g75_layers: G75Layers,
     /// R-G75ARC: G02/G03 in the nc output and nc traces.
     pub arc_names: ArcNames,
+    /// R-G75CHAMFER: what a chamfer corner's size measures.
+    pub g75_chamfer: G75Chamfer,
+    /// R-G75SLOPE: which way the opening slopes.
+    pub g75_slope: G75Slope,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -1058,6 +1091,36 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-G75CHAMFER",
+        point: "what the size of a G75.1 chamfer corner A(r1) B(r2) D(r3) E(r4) (\"倒棱宽度\") measures",
+        values: &[
+            ReadingValue {
+                name: "equal-legs",
+                source: "legs c along both edges from the virtual sharp corner, as ,C on G01",
+            },
+            ReadingValue {
+                name: "axial-width",
+                source: "\"宽度\" as the extent along Z: the symmetric chamfer whose Z extent is c",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
+    ReadingEntry {
+        id: "R-G75SLOPE",
+        point: "which way G75.1's opening slopes at L (\"斜面与底边延长线形成的夹角\")",
+        values: &[
+            ReadingValue {
+                name: "rises-towards-d",
+                source: "rising away from the bottom in D's direction: H at S, deepest at flank B; L < B",
+            },
+            ReadingValue {
+                name: "falls-towards-d",
+                source: "falling in D's direction (the direction is not said): deepest at flank A; L < A",
+            },
+        ],
+        profiles: &[ProfileName::Gsk980],
+    },
 ];
 
 impl Readings {
@@ -1181,6 +1244,14 @@ impl Readings {
                 ArcNames::RearPost => "rear-post",
                 ArcNames::FrontPost => "front-post",
             },
+            "R-G75CHAMFER" => match self.g75_chamfer {
+                G75Chamfer::EqualLegs => "equal-legs",
+                G75Chamfer::AxialWidth => "axial-width",
+            },
+            "R-G75SLOPE" => match self.g75_slope {
+                G75Slope::RisesTowardsD => "rises-towards-d",
+                G75Slope::FallsTowardsD => "falls-towards-d",
+            },
             _ => return None,
         };
         Some(v)
@@ -1267,6 +1338,10 @@ impl Readings {
             ("R-G75LAYER", "equal") => self.g75_layers = G75Layers::Equal,
             ("R-G75ARC", "rear-post") => self.arc_names = ArcNames::RearPost,
             ("R-G75ARC", "front-post") => self.arc_names = ArcNames::FrontPost,
+            ("R-G75CHAMFER", "equal-legs") => self.g75_chamfer = G75Chamfer::EqualLegs,
+            ("R-G75CHAMFER", "axial-width") => self.g75_chamfer = G75Chamfer::AxialWidth,
+            ("R-G75SLOPE", "rises-towards-d") => self.g75_slope = G75Slope::RisesTowardsD,
+            ("R-G75SLOPE", "falls-towards-d") => self.g75_slope = G75Slope::FallsTowardsD,
             _ => return Err(bad()),
         }
         Ok(())
@@ -1362,6 +1437,8 @@ impl Readings {
             ridges_as_written: self.g75_ridges == G75Ridges::AsWritten,
             peck_retract_as_written: self.g75_peck == G75PeckRetract::AsWritten,
             equal_layers: self.g75_layers == G75Layers::Equal,
+            chamfer_axial_width: self.g75_chamfer == G75Chamfer::AxialWidth,
+            slope_falls_towards_d: self.g75_slope == G75Slope::FallsTowardsD,
         }
     }
 }

@@ -411,7 +411,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG, \
-         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC)"
+         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC, R-G75CHAMFER, R-G75SLOPE)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1644,4 +1644,266 @@ fn g75_equal_layers_beyond_the_range() {
         let ErrorKind::Cycle(CycleError::OutOfRange { value, .. }) = e else { panic!("{e:?}") };
         assert_eq!(value.increments, want);
     }
+}
+
+/// R-G75CHAMFER on the manual's example groove (seed 001: S = (X50, Z30),
+/// H-20, D-10, A45, B30), 980TDi IS-B, from X60 Z40, J2 (finishing only),
+/// a 1 mm chamfer at each of the four corners (A1 B1 D1 E1, P0000). Local
+/// frame (docs/G75.md §2): u towards -Z from Z30, y towards -X from X50 on
+/// the diameter (f = 2): Y = 20 000, Y/f = 10 000, d = 10 000, cot 45° = 1,
+/// cot 30° = √3, L = 0: P1 = (10 000, Y), P2 = (20 000, Y), P3 = (20 000 +
+/// 10 000·√3, 0) = (37 320.508, 0).
+///
+/// `equal-legs` (default): t = 1 000 at every corner. `axial-width`: the
+/// chamfer's extent along Z is 1 000, t·(cos θ1 + cos θ2) = 1 000:
+/// t1 = t3 = 1 000/(1 + cos 45°) = 1 000·(2 − √2) = 585.786,
+/// t2 = t4 = 1 000/(1 + cos 30°) = 1 000·(4 − 2√3) = 535.898.
+///
+/// Points (nearest), axial-width:
+/// T1s = (−t1, 0) = (−585.786, 0): Z30.586;
+/// T1a = (t1·cos 45°, 2·t1·sin 45°) = (1 000·(√2 − 1), 2 000·(√2 − 1)) =
+///   (414.214, 828.427): X49.172 Z29.586;
+/// T3a = (10 000 − 414.214, 20 000 − 828.427) = (9 585.786, 19 171.573):
+///   X30.828 Z20.414;
+/// T3b = (10 000 + 585.786, 20 000): X30 Z19.414 (Z extent T3a → T3b 1);
+/// T4b = (20 000 − 535.898, 20 000): X30 Z10.536;
+/// T4c = (20 000 + t4·cos 30°, 20 000 − 2·t4·sin 30°) = (20 464.102,
+///   19 464.102): X30.536 Z9.536;
+/// T2b = (37 320.508 − 464.102, 2·t2·sin 30°) = (36 856.406, 535.898):
+///   X49.464 Z-6.856;
+/// T2s = (37 320.508 + 535.898, 0) = (37 856.406, 0): X50 Z-7.856.
+/// A11 = (ceil(left(Y)), 0), left(Y) = chord3 = P1.u + t3 = 10 585.786:
+/// u 10 586, Z19.414.
+///
+/// Equal legs: T1s Z31, T1a (707.107, 1 414.214) X48.586 Z29.293, T3a
+/// (9 292.893, 18 585.786) X31.414 Z20.707, T3b Z19, T4b Z11, T4c
+/// (20 866.025, 19 000) X31 Z9.134, T2b (36 454.483, 1 000) X49 Z-6.454,
+/// T2s (38 320.508, 0) X50 Z-8.321; A11 Z19.
+///
+/// Moves: rapid to A11 (X50), rapid along Z to T1s (X50), feeds through
+/// the seven points, rapid along Z to Z30 (S), rapid to X60 Z40.
+#[test]
+fn g75_chamfer_axial_width() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P30000 Q50000 H-20 D-10 A45 B30\n\
+               G75.1 R0.5 J2 A1 B1 D1 E1 P0000\nM30\n";
+    let want = |a11: i64, t1s: i64, feeds: [(i64, i64); 7]| {
+        let mut want = vec![(true, 50_000, a11), (true, 50_000, t1s)];
+        want.extend(feeds.map(|(x, z)| (false, x, z)));
+        want.extend([(true, 50_000, 30_000), (true, 60_000, 40_000)]);
+        want
+    };
+    let default = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        kinds(&default),
+        want(
+            19_000,
+            31_000,
+            [
+                (48_586, 29_293),
+                (31_414, 20_707),
+                (30_000, 19_000),
+                (30_000, 11_000),
+                (31_000, 9_134),
+                (49_000, -6_454),
+                (50_000, -8_321)
+            ]
+        )
+    );
+    let axial = run(src, &machine(ProfileName::Gsk980, &["R-G75CHAMFER=axial-width"])).unwrap();
+    assert_eq!(
+        kinds(&axial),
+        want(
+            19_414,
+            30_586,
+            [
+                (49_172, 29_586),
+                (30_828, 20_414),
+                (30_000, 19_414),
+                (30_000, 10_536),
+                (30_536, 9_536),
+                (49_464, -6_856),
+                (50_000, -7_856)
+            ]
+        )
+    );
+    // Rounds have no width: the same under both.
+    let rounds = src.replace("P0000", "P1111");
+    assert_eq!(
+        run(&rounds, &machine(ProfileName::Gsk980, &[])).unwrap(),
+        run(&rounds, &machine(ProfileName::Gsk980, &["R-G75CHAMFER=axial-width"])).unwrap()
+    );
+}
+
+/// R-G75CHAMFER's corner alarms at their edge (docs/G75.md §3, the same
+/// comparisons of tangent lengths): 980TDi IS-B, S = (X50, Z30), H-10 (Y/f
+/// = 5 000), D-4 (d = 4 000), A90, B60, D(r3) 2, E(r4) 3 (chamfers). The
+/// bottom alarm is t3 + t4 > d.
+///
+/// `equal-legs`: t3 + t4 = 2 000 + 3 000 = 5 000 > 4 000: CornerTooLarge
+/// (bottom). `axial-width`: t3 = 2 000/(1 + cos 90°) = 2 000, t4 =
+/// 3 000/(1 + cos 60°) = 2 000: t3 + t4 = 4 000 = d, the corners meet:
+/// accepted (the single plunge at u = t3 = 2 000 = d − t4, Z28); E3.001:
+/// t4 = 3 001/1.5 = 2 000.667 > 2 000: CornerTooLarge (bottom).
+///
+/// Flank A (t1 + t3 > (Y/f)/sin a), with a slope: H-2 (Y/f = 1 000), D-5,
+/// A90 B90 L60, A(r1) 0.3, D(r3) 0.4. `axial-width`: t1 = 300/(cos 90° +
+/// cos 60°) = 600, t3 = 400/(1 + 0) = 400: t1 + t3 = 1 000 = 1 000/sin 90°:
+/// accepted; D0.401: 1 001 > 1 000, CornerTooLarge (flank A). `equal-legs`
+/// accepts both (700 and 701).
+#[test]
+fn g75_chamfer_axial_width_corner_limits() {
+    use cycleref::GrooveEdge;
+    let axial = machine(ProfileName::Gsk980, &["R-G75CHAMFER=axial-width"]);
+    let default = machine(ProfileName::Gsk980, &[]);
+    let too_large = |src: &str, m: &Machine, edge: GrooveEdge| {
+        let e = run(src, m).unwrap_err();
+        assert_eq!(e, ErrorKind::Cycle(CycleError::CornerTooLarge { edge }), "{src}");
+    };
+    let bottom = |e: &str| {
+        format!(
+            "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 H-10 D-4 A90 B60\nG75.1 D2 E{e} P0000\nM30\n"
+        )
+    };
+    too_large(&bottom("3"), &default, GrooveEdge::Bottom);
+    let meet = run(&bottom("3"), &axial).unwrap();
+    let pecks: Vec<Point> = meet.iter().filter(|m| matches!(m.role, Role::Peck(_))).map(|m| m.to).collect();
+    assert!(pecks.iter().all(|p| p.z == 28_000), "{pecks:?}");
+    assert_eq!(pecks.last(), Some(&Point::new(40_000, 28_000)));
+    too_large(&bottom("3.001"), &axial, GrooveEdge::Bottom);
+    let flank = |r3: &str| {
+        format!(
+            "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 H-2 D-5 A90 B90 L60\nG75.1 J2 A0.3 D{r3} P0000\nM30\n"
+        )
+    };
+    assert!(run(&flank("0.4"), &axial).is_ok());
+    too_large(&flank("0.401"), &axial, GrooveEdge::FlankA);
+    assert!(run(&flank("0.4"), &default).is_ok());
+    assert!(run(&flank("0.401"), &default).is_ok());
+}
+
+/// R-G75SLOPE `falls-towards-d`, 980TDi IS-B, from X60 Z40: S = (X50,
+/// Z30), H-10 (Y = 10 000 on the diameter, Y/f = 5 000), D-4 (d = 4 000),
+/// A90 B60 L30, J2, a 0.5 mm chamfer at A(r1) and a 0.5 mm round at B(r2)
+/// (P0100). Local frame: u towards -Z from Z30, y towards -X from X50 (f =
+/// 2). cot 90° = 0, cot 60° = 1/√3, tan 30° = 1/√3: P1 = (0, 10 000), P2 =
+/// (4 000, 10 000).
+///
+/// Falling (y = +f·u·tan L): u3 = (4 000 + 5 000/√3)/(1 + tan 30°·cot 60°)
+/// = (4 000 + 2 886.751)·3/4 = 5 165.064, y3 = 2·u3/√3 = 5 964.102 < Y
+/// (the opening meets flank B above the bottom). r1 (chamfer) t1 = 500:
+/// T1s = (−500·cos 30°, −2·500·sin 30°) = (−433.013, −500): X50.5 Z30.433;
+/// T1a = (0, 1 000): X49 Z30. r2 (round ρ = 500): t2 = 500·tan((60° +
+/// 30°)/2) = 500: T2b = (u3 − 500·cos 60°, y3 + 2·500·sin 60°) =
+/// (4 915.064, 6 830.127): X43.170 Z25.085; T2s = (u3 + 500·cos 30°, y3 +
+/// 2·500·sin 30°) = (5 598.076, 6 464.102): X43.536 Z24.402; C2 = T2b +
+/// 500·(sin 60°, 2·cos 60°) = (5 348.076, 7 330.127): X42.670 Z24.652. The
+/// round turns as the default's (cross product ρ²·sin(b + L) > 0; sx·sz =
+/// +1: G03, R-G75ARCDIR).
+///
+/// Moves: y_top = 0 (S is the opening's highest point); A11 = (ceil(left(Y)),
+/// 0) = (0, 0): rapid to X50 Z30; along X to min(0, −500): X50.5, along Z
+/// to Z30.433 (T1s); feeds to T1a, P1 (X40 Z30), P2 (X40 Z26), T2b, the
+/// arc to T2s; back along X to min(0, 6 464) = 0: X50 Z24.402, along Z to
+/// Z30; rapid to X60 Z40.
+///
+/// Rising (default): u3 = 6 886.751/(1 − 1/3) = 10 330.127, y3 =
+/// −11 928.203, y_top = −11 929 (X61.929); T1s = (−433.013, +500): X49.5
+/// Z30.433; t2 = 500·tan 15° = 133.975: T2b = (10 263.140, −11 696.152):
+/// X61.696 Z19.737; T2s = (10 446.152, −12 062.178): X62.062 Z19.554; C2 =
+/// (10 696.152, −11 196.152): X61.196 Z19.304.
+#[test]
+fn g75_slope_falls_towards_d() {
+    let src = "M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 H-10 D-4 A90 B60 L30\n\
+               G75.1 J2 A0.5 B0.5 P0100\nM30\n";
+    let arcs = |moves: &[Move]| -> Vec<(Point, bool)> {
+        moves
+            .iter()
+            .filter_map(|m| match m.motion {
+                cycleref::Motion::Arc { centre, clockwise } => Some((centre, clockwise)),
+                _ => None,
+            })
+            .collect()
+    };
+    let falls = run(src, &machine(ProfileName::Gsk980, &["R-G75SLOPE=falls-towards-d"])).unwrap();
+    assert_eq!(
+        kinds(&falls),
+        [
+            (true, 50_000, 30_000),
+            (true, 50_500, 30_000),
+            (true, 50_500, 30_433),
+            (false, 49_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 26_000),
+            (false, 43_170, 25_085),
+            (false, 43_536, 24_402),
+            (true, 50_000, 24_402),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]
+    );
+    assert_eq!(arcs(&falls), [(Point::new(42_670, 24_652), false)]);
+    let rises = run(src, &machine(ProfileName::Gsk980, &[])).unwrap();
+    assert_eq!(
+        kinds(&rises),
+        [
+            (true, 61_929, 30_000),
+            (true, 61_929, 30_433),
+            (true, 49_500, 30_433),
+            (false, 49_000, 30_000),
+            (false, 40_000, 30_000),
+            (false, 40_000, 26_000),
+            (false, 61_696, 19_737),
+            (false, 62_062, 19_554),
+            (true, 62_062, 30_000),
+            (true, 50_000, 30_000),
+            (true, 60_000, 40_000),
+        ]
+    );
+    assert_eq!(arcs(&rises), [(Point::new(61_196, 19_304), false)]);
+}
+
+/// R-G75SLOPE's alarms at their edges, 980TDi IS-B, S = (X50, Z30).
+///
+/// L < A under `falls-towards-d` (flank A must go down from S below the
+/// falling opening), L < B under `rises-towards-d`: A30 B90 L30 is refused
+/// falling (`slope_not_below_flank_a`) and accepted rising; A90 B30 L45 the
+/// other way round.
+///
+/// The opening must meet flank B above the bottom, y3 < Y: A90 B90 L45, H-8
+/// (Y = 8 000), D-4: u3 = 4 000/(1 + 1·0) = 4 000, y3 = 2·4 000·tan 45° =
+/// 8 000 = Y: refused (`opening_below_bottom`, flank B would have no
+/// length); D-3.999: y3 = 7 998 < 8 000, accepted.
+///
+/// CornerTooLarge on flank B with the falling y3: H-8 D-3, A90 B90 L45:
+/// y3 = 6 000, flank B = ((8 000 − 6 000)/2)/sin 90° = 1 000; E(r4) 0.6
+/// and B(r2) 0.4 chamfers (equal legs): 600 + 400 = 1 000, accepted; B0.401
+/// refused (flank B). Rising, y3 = −6 000 and flank B is 7 000 long: both
+/// accepted.
+#[test]
+fn g75_slope_falls_alarms() {
+    use cycleref::GrooveEdge;
+    let falls = machine(ProfileName::Gsk980, &["R-G75SLOPE=falls-towards-d"]);
+    let rises = machine(ProfileName::Gsk980, &[]);
+    let groove = |words: &str, block2: &str| {
+        format!("M3 S300\nG00 X60 Z40\nG75.1 X50 Z30 P1000 Q1000 {words}\nG75.1 J2 {block2}\nM30\n")
+    };
+    let a30 = groove("H-8 D-4 A30 B90 L30", "");
+    let e = run(&a30, &falls).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::SlopeNotBelowFlankA { slope: 300_000, flank_a: 300_000 }));
+    assert!(run(&a30, &rises).is_ok());
+    let b30 = groove("H-8 D-1 A90 B30 L45", "");
+    assert!(run(&b30, &falls).is_ok());
+    let e = run(&b30, &rises).unwrap_err();
+    assert_eq!(e, ErrorKind::Cycle(CycleError::SlopeNotBelowFlank { slope: 450_000, flank_b: 300_000 }));
+    let edge = groove("H-8 D-4 A90 B90 L45", "");
+    assert_eq!(run(&edge, &falls).unwrap_err(), ErrorKind::Cycle(CycleError::OpeningBelowBottom));
+    assert!(run(&edge, &rises).is_ok());
+    assert!(run(&groove("H-8 D-3.999 A90 B90 L45", ""), &falls).is_ok());
+    let corners = |r2: &str| groove("H-8 D-3 A90 B90 L45", &format!("B{r2} E0.6 P0000"));
+    assert!(run(&corners("0.4"), &falls).is_ok());
+    assert_eq!(
+        run(&corners("0.401"), &falls).unwrap_err(),
+        ErrorKind::Cycle(CycleError::CornerTooLarge { edge: GrooveEdge::FlankB })
+    );
+    assert!(run(&corners("0.401"), &rises).is_ok());
 }

@@ -208,14 +208,31 @@ pub fn p2(g: &Groove) -> RealPoint {
 pub fn u3(g: &Groove) -> Real {
     let t = &g.angles;
     let num = p2(g).u + depth_radius(g) * &t.cot_b;
-    num / (int(1) - &t.tan_l * &t.cot_b)
+    if falls(g) {
+        // R-G75SLOPE `falls-towards-d`: y = +f·u·tan L meets flank B at
+        // u = P2.u + ((Y − y)/f)·cot b.
+        num / (int(1) + &t.tan_l * &t.cot_b)
+    } else {
+        num / (int(1) - &t.tan_l * &t.cot_b)
+    }
+}
+
+/// True under R-G75SLOPE `falls-towards-d`: the opening falls towards +y
+/// in the direction `sz`.
+pub(super) fn falls(g: &Groove) -> bool {
+    g.cycle.readings.slope_falls_towards_d
 }
 
 /// `y3 = −f·u3·tan L`: the depth of P3, on the slope line through S
 /// (R-G75SLOPE); 0 when L = 0.
 #[must_use]
 pub fn y3(g: &Groove) -> Real {
-    -(int(g.f) * u3(g) * &g.angles.tan_l)
+    let y = int(g.f) * u3(g) * &g.angles.tan_l;
+    if falls(g) {
+        y
+    } else {
+        -y
+    }
 }
 
 /// P3 = (u3, y3), the far corner of the opening (外底另一端).
@@ -225,8 +242,19 @@ pub fn p3(g: &Groove) -> RealPoint {
 }
 
 /// The tangent length `t` of a corner (`docs/G75.md` §3), in radius
-/// increments: its size `c` for a chamfer (R-G75CHAMFER, equal legs along
-/// both edges from the virtual sharp corner, as `,C` on G01), and
+/// increments: its size `c` for a chamfer (R-G75CHAMFER `equal-legs`,
+/// equal legs along both edges from the virtual sharp corner, as `,C` on
+/// G01; under `axial-width` `c / (cos θ1 + cos θ2)`, the legs of the
+/// symmetric chamfer whose extent along Z is c:
+///
+/// | corner | t (chamfer, `axial-width`) |
+/// |---|---|
+/// | r1 (A) | `c / (cos a + cos L)` |
+/// | r2 (B) | `c / (cos b + cos L)` |
+/// | r3 (D) | `c / (1 + cos a)` |
+/// | r4 (E) | `c / (1 + cos b)` |
+///
+/// ), and
 /// `ρ·cot(φ/2)` for a round of radius ρ tangent to both edges:
 ///
 /// | corner | t (round) |
@@ -248,10 +276,30 @@ pub fn tangent_length(c: &G75Cycle, index: usize) -> Real {
     let size = c.corners[index].size;
     let rho = Real::int(size);
     match c.corners[index].kind {
+        // R-G75CHAMFER `axial-width`: the symmetric chamfer whose extent
+        // along Z ("宽度") is c: its legs t run along edges at θ1, θ2 to the
+        // Z axis, so its Z extent is t·(cos θ1 + cos θ2) (r1: flank A and
+        // the surface before S, r2: flank B and the surface beyond P3, r3:
+        // flank A and the bottom, r4: flank B and the bottom).
+        CornerKind::Chamfer if size > 0 && c.readings.chamfer_axial_width => {
+            let (first, second) = match index {
+                corner::R1 => (c.flank_a, c.slope),
+                corner::R2 => (c.flank_b, c.slope),
+                corner::R3 => (c.flank_a, 0),
+                _ => (c.flank_b, 0),
+            };
+            &rho / &(Real::cos(2 * first) + Real::cos(2 * second))
+        }
         CornerKind::Chamfer => rho,
         CornerKind::Round if size == 0 => rho,
         CornerKind::Round => {
+            // R-G75SLOPE: the surface beyond r1 and r2 falls towards D under
+            // `falls-towards-d`, so their angles φ are 180° − (a − L) and
+            // 180° − (b + L).
+            let falls = c.readings.slope_falls_towards_d;
             let half = match index {
+                corner::R1 if falls => c.flank_a - c.slope,
+                corner::R2 if falls => c.flank_b + c.slope,
                 corner::R1 => c.flank_a + c.slope,
                 corner::R2 => c.flank_b - c.slope,
                 corner::R3 => c.flank_a,
@@ -277,7 +325,10 @@ pub(super) fn rho(g: &Groove, index: usize) -> Real {
 #[must_use]
 pub fn t1s(g: &Groove) -> RealPoint {
     let (t, a) = (&g.tangents[corner::R1], &g.angles);
-    RealPoint::new(-(t * &a.cos_l), int(g.f) * t * &a.sin_l)
+    let y = int(g.f) * t * &a.sin_l;
+    // R-G75SLOPE: the surface before S lies above S's level when the
+    // opening falls towards D: T1s = (−t1·cos L, −f·t1·sin L).
+    RealPoint::new(-(t * &a.cos_l), if falls(g) { -y } else { y })
 }
 
 /// `T1a = (t1·cos a, f·t1·sin a)`: the tangent point of r1 on flank A.
@@ -348,7 +399,10 @@ pub fn t2b(g: &Groove) -> RealPoint {
 #[must_use]
 pub fn t2s(g: &Groove) -> RealPoint {
     let (t, a) = (&g.tangents[corner::R2], &g.angles);
-    RealPoint::new(u3(g) + t * &a.cos_l, y3(g) - int(g.f) * t * &a.sin_l)
+    let rise = int(g.f) * t * &a.sin_l;
+    // R-G75SLOPE: beyond P3 the surface keeps falling when the opening
+    // falls towards D: T2s = (u3 + t2·cos L, y3 + f·t2·sin L).
+    RealPoint::new(u3(g) + t * &a.cos_l, if falls(g) { y3(g) + rise } else { y3(g) - rise })
 }
 
 /// `C2 = T2b + ρ2·(sin b, f·cos b)`: the centre of the round r2, in the
@@ -404,7 +458,9 @@ pub fn flank_b_length(g: &Groove) -> Real {
     (int(g.depth) - y3(g)) / int(g.f) / &g.angles.sin_b
 }
 
-/// The corner alarms (`docs/G75.md` §3), in this order:
+/// Under R-G75SLOPE `falls-towards-d` first the opening, `y3 ≥ Y`
+/// ([`CycleError::OpeningBelowBottom`]); then the corner alarms
+/// (`docs/G75.md` §3), in this order:
 /// `t1 + t3 > (Y/f)/sin a` (flank A), `t3 + t4 > d` (the bottom),
 /// `t4 + t2 > ((Y − y3)/f)/sin b` (flank B): the corners may meet but not
 /// overlap. Decided on exact values (§6).
@@ -416,6 +472,11 @@ pub fn flank_b_length(g: &Groove) -> Real {
 ///
 /// Twin: `impl/src/engine/g75/exact.rs`, `Evaluator::check_corners`.
 pub fn check_corners(g: &Groove) -> Result<(), CycleError> {
+    // R-G75SLOPE `falls-towards-d`: the opening must meet flank B above the
+    // bottom, `y3 < Y`, before the corners are measured on flank B.
+    if falls(g) && y3(g).compare(&int(g.depth))? != Ordering::Less {
+        return Err(CycleError::OpeningBelowBottom);
+    }
     let t = &g.tangents;
     let checks = [
         (GrooveEdge::FlankA, &t[corner::R1] + &t[corner::R3], flank_a_length(g)),

@@ -82,8 +82,9 @@ pub use rounding::*;
 ///
 /// No move ends where the tool already is (R-G75ZERO).
 ///
-/// Errors come in the order of `docs/G75.md`: `validate()`; the corner
-/// alarms (flank A, bottom, flank B); the groove narrower than the tool;
+/// Errors come in the order of `docs/G75.md`: `validate()`; the opening
+/// below the bottom (R-G75SLOPE `falls-towards-d`); the corner alarms
+/// (flank A, bottom, flank B); the groove narrower than the tool;
 /// too many pecks; a coordinate beyond the range tables.
 ///
 /// R-G75DECIDE: the values are decided in this order, so that an
@@ -380,6 +381,9 @@ impl Cursor {
             }
             Stage::Finish => {
                 if let Some((start, moves)) = &p.finish {
+                    // Along X to min(y_top, F0's y) first: F0 lies above
+                    // y_top only when the opening falls (R-G75SLOPE).
+                    path.rapid_y(p.y_top.min(start.y), Role::FinishContour);
                     path.rapid_u(start.u, Role::FinishContour);
                     path.rapid_y(start.y, Role::FinishContour);
                     for m in moves {

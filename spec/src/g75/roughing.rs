@@ -25,6 +25,10 @@ use super::*;
 ///
 /// Restated in integers (right-angle grooves): `proofs/src/g75_exact.rs`, in `expand_with` (0).
 pub fn y_top(g: &Groove) -> Result<i128, CycleError> {
+    // R-G75SLOPE `falls-towards-d`: the opening's highest point is S.
+    if g.cycle.readings.slope_falls_towards_d {
+        return Ok(0);
+    }
     floor(&y3(g))
 }
 

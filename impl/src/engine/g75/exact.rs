@@ -49,6 +49,12 @@ pub(super) struct Geometry {
     pub(super) size: [i64; 4],
     /// True for a round, false for a chamfer.
     pub(super) round: [bool; 4],
+    /// Reading R-G75CHAMFER `axial-width`: a chamfer's size is its extent
+    /// along Z.
+    pub(super) axial_chamfer: bool,
+    /// Reading R-G75SLOPE `falls-towards-d`: the opening falls towards +y
+    /// in D's direction.
+    pub(super) falls: bool,
 }
 
 impl Geometry {
@@ -65,6 +71,8 @@ impl Geometry {
             l: c.slope,
             size: c.corners.map(|k| k.size),
             round: c.corners.map(|k| k.kind == CornerKind::Round),
+            axial_chamfer: c.readings.chamfer_axial_width,
+            falls: c.readings.slope_falls_towards_d,
         }
     }
 
@@ -353,41 +361,63 @@ impl<R: Real> Enclosures<R> {
         let cot_a = R::cot_of(ka, &sin_a, &cos_a);
         let cot_b = R::cot_of(kb, &sin_b, &cos_b);
         let tan_l = R::tan_of(kl, &sin_l, &cos_l);
-        // Tangent lengths (§3): a chamfer's is its size, a round's ρ·tan(…).
-        let t = |i: usize, half: u32| -> R {
+        // A chamfer's tangent length (§3): its size, or under R-G75CHAMFER
+        // `axial-width` c / (cos θ1 + cos θ2), θ1, θ2 its edges' angles to
+        // the Z axis (`cos_edges`).
+        // Written (c/2) / ((cos θ1 + cos θ2)/2): the fast path divides by
+        // values of magnitude at most 1 only.
+        let chamfer = |c: i64, cos_edges: &R| -> R {
+            if g.axial_chamfer {
+                int::<R>(c).div_int(2).div(&cos_edges.div_int(2))
+            } else {
+                int(c)
+            }
+        };
+        // Tangent lengths (§3): a chamfer's as above, a round's ρ·tan(…).
+        let t = |i: usize, half: u32, cos_edges: &R| -> R {
             let c = g.size(i);
             if c == 0 {
                 int(0)
             } else if g.is_round(i) {
                 R::tan_cot(half).0.mul_int(c)
             } else {
-                int(c)
+                chamfer(c, cos_edges)
             }
         };
-        let t1 = t(corner::R1, g.a + g.l);
-        // validate(): L < B.
-        let t2 = t(corner::R2, g.b.saturating_sub(g.l));
+        // The round's half angles (a ± L)/2, (b ∓ L)/2 (R-G75SLOPE: the
+        // surface beyond the corner rises or falls); validate(): L < B
+        // (rising), L < A (falling).
+        let (half1, half2) =
+            if g.falls { (g.a.saturating_sub(g.l), g.b + g.l) } else { (g.a + g.l, g.b.saturating_sub(g.l)) };
+        let t1 = t(corner::R1, half1, &cos_a.add(&cos_l));
+        let t2 = t(corner::R2, half2, &cos_b.add(&cos_l));
         // t3 and cot(a/2) (and t4, cot(b/2)) share one series.
-        let half = |i: usize, k: u32| -> (R, R) {
+        let half = |i: usize, k: u32, cos_edge: &R| -> (R, R) {
             let c = g.size(i);
             if c == 0 {
                 return (int(0), R::poison());
             }
             let (tan_h, cot_h) = R::tan_cot(k);
-            let t = if g.is_round(i) { tan_h.mul_int(c) } else { int(c) };
+            let t = if g.is_round(i) { tan_h.mul_int(c) } else { chamfer(c, &int::<R>(1).add(cos_edge)) };
             (t, cot_h)
         };
-        let (t3, cot_ha) = half(corner::R3, g.a);
-        let (t4, cot_hb) = half(corner::R4, g.b);
+        let (t3, cot_ha) = half(corner::R3, g.a, &cos_a);
+        let (t4, cot_hb) = half(corner::R4, g.b, &cos_b);
         // P1.u = (Y/f)·cot a.
         let hr = int::<R>(g.depth).div_int(g.fu());
         let p1u = hr.mul(&cot_a);
-        // u3 = ((Y/f)·cot a + d + (Y/f)·cot b) / (1 − tan L·cot b).
+        // u3 = ((Y/f)·cot a + d + (Y/f)·cot b) / (1 ∓ tan L·cot b), y3 =
+        // ∓f·u3·tan L (R-G75SLOPE: − rising, + falling towards D). Falling,
+        // the divisor exceeds 1 when L > 0, which the fast path does not
+        // divide by: those values fall back to the intervals.
         let num = p1u.add(&int(g.width)).add(&hr.mul(&cot_b));
-        let den = int::<R>(1).sub(&tan_l.mul(&cot_b));
-        let u3 = num.div(&den);
-        // y3 = −f·u3·tan L.
-        let y3 = u3.mul(&tan_l).mul_int(g.f).neg();
+        let (u3, y3) = if g.falls {
+            let u3 = num.div(&int::<R>(1).add(&tan_l.mul(&cot_b)));
+            (u3, u3.mul(&tan_l).mul_int(g.f))
+        } else {
+            let u3 = num.div(&int::<R>(1).sub(&tan_l.mul(&cot_b)));
+            (u3, u3.mul(&tan_l).mul_int(g.f).neg())
+        };
         Enclosures {
             r: Region { p1u, cot_a, cot_b, cot_ha, cot_hb, t3, t4 },
             sin_a,
@@ -426,6 +456,7 @@ impl<R: Real> Enclosures<R> {
                 self.t1.add(&r.t3).sub(&edge)
             }
             Quantity::CheckBottom => r.t3.add(&r.t4).sub(&int(g.width)),
+            Quantity::CheckOpening => self.y3.sub(&int(g.depth)),
             Quantity::CheckFlankB => {
                 let edge = int::<R>(g.depth).sub(&self.y3).div_int(g.fu()).div(&self.sin_b);
                 r.t4.add(&self.t2).sub(&edge)
@@ -443,6 +474,8 @@ impl<R: Real> Enclosures<R> {
             Quantity::P1U => r.p1u,
             Quantity::P2U => r.p1u.add(&int(g.width)),
             Quantity::T1sU => self.t1.mul(&self.cos_l).neg(),
+            // T1s.y = ±f·t1·sin L: below S's level rising, above falling.
+            Quantity::T1sY if g.falls => self.t1.mul(&self.sin_l).mul_int(f).neg(),
             Quantity::T1sY => self.t1.mul(&self.sin_l).mul_int(f),
             Quantity::T1aU => self.t1.mul(&self.cos_a),
             Quantity::T1aY => self.t1.mul(&self.sin_a).mul_int(f),
@@ -464,6 +497,8 @@ impl<R: Real> Enclosures<R> {
             Quantity::T2bU => self.u3.sub(&self.t2.mul(&self.cos_b)),
             Quantity::T2bY => self.y3.add(&self.t2.mul(&self.sin_b).mul_int(f)),
             Quantity::T2sU => self.u3.add(&self.t2.mul(&self.cos_l)),
+            // T2s.y = y3 ∓ f·t2·sin L.
+            Quantity::T2sY if g.falls => self.y3.add(&self.t2.mul(&self.sin_l).mul_int(f)),
             Quantity::T2sY => self.y3.sub(&self.t2.mul(&self.sin_l).mul_int(f)),
             // C2 = T2b + ρ2·(sin b, f·cos b).
             Quantity::C2U => self.u3.sub(&self.t2.mul(&self.cos_b)).add(&self.sin_b.mul_int(rho(corner::R2))),
@@ -483,6 +518,9 @@ pub(super) enum Quantity {
     CheckFlankA,
     /// `t3 + t4 − d`.
     CheckBottom,
+    /// `y3 − Y` (R-G75SLOPE `falls-towards-d`: the opening meets flank B
+    /// above the bottom when negative).
+    CheckOpening,
     /// `t4 + t2 − ((Y − y3)/f)/sin b`.
     CheckFlankB,
     /// `left(y)`.
@@ -648,6 +686,11 @@ impl Evaluator {
     ///
     /// Twin: `spec/src/g75/geometry.rs`, `check_corners`.
     pub(super) fn check_corners(&mut self) -> Result<(), CycleError> {
+        // R-G75SLOPE `falls-towards-d`: the opening must meet flank B above
+        // the bottom (y3 < Y), before the corners (flank B's length).
+        if self.g.falls && self.sign(Quantity::CheckOpening)? != Ordering::Less {
+            return Err(CycleError::OpeningBelowBottom);
+        }
         for (q, edge) in [
             (Quantity::CheckFlankA, GrooveEdge::FlankA),
             (Quantity::CheckBottom, GrooveEdge::Bottom),
@@ -658,6 +701,19 @@ impl Evaluator {
             }
         }
         Ok(())
+    }
+
+    /// `y_top`, the top of layer 1 (R-G75LAYER): the highest point of the
+    /// opening, `floor(y3)` when it rises towards D, S's level (0) when it
+    /// falls (R-G75SLOPE).
+    ///
+    /// Twin: `spec/src/g75/roughing.rs`, `y_top`.
+    pub(super) fn y_top(&mut self) -> Result<i128, CycleError> {
+        if self.g.falls {
+            Ok(0)
+        } else {
+            self.floor(Quantity::Y3)
+        }
     }
 
     /// The plunge range of the layer ending at `y` (R-G75PLUNGE):

@@ -29,8 +29,9 @@
 //! in this order (reading R-G75ORDER):
 //!
 //! 1. [`G75Cycle::validate`];
-//! 2. [`CycleError::CornerTooLarge`]: flank A, then the bottom, then flank B
-//!    (§3);
+//! 2. [`CycleError::OpeningBelowBottom`] under R-G75SLOPE `falls-towards-d`
+//!    (y3 ≥ Y), then [`CycleError::CornerTooLarge`]: flank A, then the
+//!    bottom, then flank B (§3);
 //! 3. [`CycleError::GrooveNarrowerThanTool`] at the last layer (§7), for
 //!    every J: the approach point A11 of step 1 needs layer 1's plunge
 //!    range whatever J is (reading R-G75NARROW);
@@ -90,8 +91,11 @@
 //!
 //! After `validate()`: `Y, d, Δu, Δw, w, Δi, Δk, Δv < 2^27`, corner sizes
 //! `< 2^20`, `f ≤ 2`; every tangent or cotangent used is at most
-//! `cot(0.00005°) < 2^21`; `1 − tan L·cot b = sin(b − L)/(sin b·cos L) ≥
-//! sin(0.0001°) > 2^-20`. So `(Y/f)·cot a < 2^47`, `u3 < 2^69`, `y3 =
+//! `cot(0.00005°) < 2^21`; a chamfer's tangent length under R-G75CHAMFER
+//! `axial-width`, `c / (cos θ1 + cos θ2)`, is below `c / cos 89.9999° <
+//! 2^40`; `1 − tan L·cot b = sin(b − L)/(sin b·cos L) ≥
+//! sin(0.0001°) > 2^-20` (under R-G75SLOPE `falls-towards-d` the divisor
+//! is `1 + tan L·cot b ≥ 1`). So `(Y/f)·cot a < 2^47`, `u3 < 2^69`, `y3 =
 //! −f·u3·tan L` has `|y3| = f·(…)·sin L·sin b / sin(b − L) < 2^70`, and no
 //! formula exceeds `2^96`: far inside the `2^127` of an [`Interval`](crate::engine::real::Interval), so no
 //! interval operation overflows (an overflow would poison the interval and
@@ -160,7 +164,7 @@ mod tests;
 pub use profile::{groove_profile, GrooveProfile, ProfilePoint, ProfileSegment};
 
 use contour::{finish_profile, rough_vertices, Local, LocalSegment};
-use exact::{Evaluator, Geometry, Quantity, Region};
+use exact::{Evaluator, Geometry, Region};
 use frame::Frame;
 use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
 use tail::{Leg, LegKind, TailBuilder, TAIL};
@@ -227,6 +231,7 @@ pub struct G75Moves {
 /// # Errors
 ///
 /// In this order (R-G75ORDER): [`G75Cycle::validate`]'s errors,
+/// [`CycleError::OpeningBelowBottom`] (R-G75SLOPE `falls-towards-d`),
 /// [`CycleError::CornerTooLarge`], [`CycleError::GrooveNarrowerThanTool`],
 /// [`CycleError::RidgesInLayers`], [`CycleError::TooManyPecks`], [`CycleError::OutOfRange`] for a move
 /// coordinate; [`CycleError::UndecidedRounding`] where a needed value cannot
@@ -282,8 +287,9 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
             tool_width: Length::new(g.w, c.units),
         });
     }
-    // Layer tops: y_top = floor(y3) (R-G75LAYER).
-    let y_top = ev.floor(Quantity::Y3)?;
+    // Layer tops: y_top = floor(y3), or 0 when the opening falls
+    // (R-G75LAYER, R-G75SLOPE).
+    let y_top = ev.y_top()?;
 
     // §9, only when roughing (R-G75PECKS).
     let roughs = c.path.roughs();
@@ -338,7 +344,12 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
             match p.seg {
                 LocalSegment::Start => {
                     if i == 0 {
-                        b.rapid((to.0, y_top), Role::FinishContour)?;
+                        // Along X to min(y_top, F0's y) first: F0 lies
+                        // above y_top only when the opening falls
+                        // (R-G75SLOPE), where T1s is above S.
+                        let y_in = y_top.min(to.1);
+                        b.rapid((b.at.0, y_in), Role::FinishContour)?;
+                        b.rapid((to.0, y_in), Role::FinishContour)?;
                         b.rapid(to, Role::FinishContour)?;
                     }
                 }

@@ -6,7 +6,7 @@
 //! beside the rounded ones.
 
 use super::contour::{finish_profile, rough_vertices, LocalSegment};
-use super::exact::{Evaluator, Quantity};
+use super::exact::Evaluator;
 use super::frame::Frame;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
@@ -90,7 +90,7 @@ pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
     let mut ev = Evaluator::checked(c, true)?;
     let frame = Frame::new(c);
     let (pts, n) = finish_profile(&mut ev)?;
-    let y_top = ev.floor(Quantity::Y3)?;
+    let y_top = ev.y_top()?;
     let (vs, m) = rough_vertices(&mut ev, y_top)?;
     let mut out = GrooveProfile {
         finish: [ProfilePoint { at: c.start, segment: ProfileSegment::Start }; 8],
