@@ -14,7 +14,34 @@ use crate::units::Point;
 pub(super) enum LegKind {
     Rapid,
     Feed,
-    Arc { centre: Point, clockwise: bool },
+    /// A round about `centres[centre]` (the centres are kept apart, so that
+    /// a leg stays small).
+    Arc {
+        centre: u8,
+        clockwise: bool,
+    },
+}
+
+/// The role of a leg of the tail: the field-less [`Role`]s it can have
+/// (R-G75ROLES), in one byte.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum TailRole {
+    Approach,
+    RoughContour,
+    FinishContour,
+    Return,
+}
+
+impl TailRole {
+    /// The move's [`Role`].
+    pub(super) fn role(self) -> Role {
+        match self {
+            TailRole::Approach => Role::Approach,
+            TailRole::RoughContour => Role::RoughContour,
+            TailRole::FinishContour => Role::FinishContour,
+            TailRole::Return => Role::Return,
+        }
+    }
 }
 
 /// One precomputed move of the tail (after the pecks).
@@ -22,8 +49,11 @@ pub(super) enum LegKind {
 pub(super) struct Leg {
     pub(super) kind: LegKind,
     pub(super) to: Point,
-    pub(super) role: Role,
+    pub(super) role: TailRole,
 }
+
+/// Most rounds of a tail: the finishing contour's r1..r4.
+pub(super) const ARCS: usize = 4;
 
 /// Longest tail: 2 approach + 5 rough contour + 1 back to A11 + 2 finishing
 /// approach + 7 contour + 3 return + 1 to `from` = 21.
@@ -36,6 +66,10 @@ pub(super) struct TailBuilder {
     pub(super) at: Local,
     pub(super) legs: [Leg; TAIL],
     pub(super) len: usize,
+    /// The centres of the arcs among `legs`, in order.
+    pub(super) centres: [Point; ARCS],
+    /// How many of `centres` are set.
+    pub(super) arcs: usize,
 }
 
 impl TailBuilder {
@@ -48,14 +82,23 @@ impl TailBuilder {
         to: Local,
         motion: Option<(Local, bool)>,
         feed: bool,
-        role: Role,
+        role: TailRole,
     ) -> Result<(), CycleError> {
         if to == self.at {
             return Ok(());
         }
         let p = self.frame.point(to)?;
         let kind = match motion {
-            Some((centre, clockwise)) => LegKind::Arc { centre: self.frame.point(centre)?, clockwise },
+            Some((centre, clockwise)) => {
+                let at = self.frame.point(centre)?;
+                let i = self.arcs;
+                if let Some(slot) = self.centres.get_mut(i) {
+                    *slot = at;
+                    self.arcs += 1;
+                }
+                // i < ARCS = 4.
+                LegKind::Arc { centre: u8::try_from(i).unwrap_or(u8::MAX), clockwise }
+            }
             None if feed => LegKind::Feed,
             None => LegKind::Rapid,
         };
@@ -67,11 +110,11 @@ impl TailBuilder {
         Ok(())
     }
 
-    pub(super) fn rapid(&mut self, to: Local, role: Role) -> Result<(), CycleError> {
+    pub(super) fn rapid(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
         self.go(to, None, false, role)
     }
 
-    pub(super) fn feed(&mut self, to: Local, role: Role) -> Result<(), CycleError> {
+    pub(super) fn feed(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
         self.go(to, None, true, role)
     }
 }
