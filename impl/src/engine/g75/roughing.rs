@@ -336,7 +336,10 @@ impl G75Moves {
         }
     }
 
-    /// Moves on to the next layer (steps 8 and 2).
+    /// Moves on to the next layer (steps 8 and 2). Kept out of line: once
+    /// a layer, with the fallback's contexts in its frame, so that the
+    /// per-move path stays small.
+    #[inline(never)]
     pub(super) fn next_layer(&mut self) {
         let r = self.rough;
         let m = r.m.saturating_add(1);

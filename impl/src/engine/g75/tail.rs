@@ -84,12 +84,13 @@ impl TailBuilder {
         feed: bool,
         role: TailRole,
     ) -> Result<(), CycleError> {
-        if to == self.at {
-            return Ok(());
-        }
-        let p = self.frame.point(to)?;
-        let kind = match motion {
+        match motion {
+            None => self.line(to, if feed { LegKind::Feed } else { LegKind::Rapid }, role),
             Some((centre, clockwise)) => {
+                if to == self.at {
+                    return Ok(());
+                }
+                let p = self.frame.point(to)?;
                 let at = self.frame.point(centre)?;
                 let i = self.arcs;
                 if let Some(slot) = self.centres.get_mut(i) {
@@ -97,24 +98,41 @@ impl TailBuilder {
                     self.arcs += 1;
                 }
                 // i < ARCS = 4.
-                LegKind::Arc { centre: u8::try_from(i).unwrap_or(u8::MAX), clockwise }
+                let kind = LegKind::Arc { centre: u8::try_from(i).unwrap_or(u8::MAX), clockwise };
+                self.push(p, kind, role);
+                self.at = to;
+                Ok(())
             }
-            None if feed => LegKind::Feed,
-            None => LegKind::Rapid,
-        };
-        if let Some(slot) = self.legs.get_mut(self.len) {
-            *slot = Leg { kind, to: p, role };
-            self.len += 1;
         }
+    }
+
+    /// [`TailBuilder::go`] for a straight move (`kind` a rapid or a feed):
+    /// its end range-checked, nothing appended when it would not move.
+    #[inline]
+    fn line(&mut self, to: Local, kind: LegKind, role: TailRole) -> Result<(), CycleError> {
+        if to == self.at {
+            return Ok(());
+        }
+        let p = self.frame.point(to)?;
+        self.push(p, kind, role);
         self.at = to;
         Ok(())
     }
 
+    /// Appends a leg (at most [`TAIL`], the longest tail).
+    #[inline]
+    fn push(&mut self, to: Point, kind: LegKind, role: TailRole) {
+        if let Some(slot) = self.legs.get_mut(self.len) {
+            *slot = Leg { kind, to, role };
+            self.len += 1;
+        }
+    }
+
     pub(super) fn rapid(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
-        self.go(to, None, false, role)
+        self.line(to, LegKind::Rapid, role)
     }
 
     pub(super) fn feed(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
-        self.go(to, None, true, role)
+        self.line(to, LegKind::Feed, role)
     }
 }
