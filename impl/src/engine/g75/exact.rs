@@ -596,6 +596,7 @@ impl<'f> Evaluator<'f> {
     }
 
     /// The fast path's decision on `q`, counted (`None`: fall back).
+    #[inline]
     fn quick<T>(&mut self, q: Quantity, decide: impl Fn(&Approx) -> Option<T>) -> Option<T> {
         let quick = self.quick.as_ref()?;
         let v = decide(&quick.eval(&self.g, q));
@@ -608,9 +609,18 @@ impl<'f> Evaluator<'f> {
     /// at 512 bits with reading R-G75TIE (a value whose 512-bit enclosure
     /// holds exactly one rounding boundary lies on it).
     pub(super) fn round(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
-        if let Some(v) = self.quick(q, |a| a.round(r)) {
-            return Ok(v);
+        match self.quick(q, |a| a.round(r)) {
+            Some(v) => Ok(v),
+            None => self.round_exact(q, r),
         }
+    }
+
+    /// [`Evaluator::round`] by the intervals alone (128 bits, then 512
+    /// with R-G75TIE): out of line, so that the fast path's caller keeps a
+    /// small frame.
+    #[cold]
+    #[inline(never)]
+    fn round_exact(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
         let g = self.g;
         if let Some(v) = self.fast().eval(&g, q).round(r) {
             return Ok(v);
@@ -637,9 +647,16 @@ impl<'f> Evaluator<'f> {
     /// 512 bits with reading R-G75TIE (a 512-bit enclosure that holds 0 is
     /// taken to be 0).
     pub(super) fn sign(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
-        if let Some(v) = self.quick(q, Approx::sign) {
-            return Ok(v);
+        match self.quick(q, Approx::sign) {
+            Some(v) => Ok(v),
+            None => self.sign_exact(q),
         }
+    }
+
+    /// [`Evaluator::sign`] by the intervals alone, out of line.
+    #[cold]
+    #[inline(never)]
+    fn sign_exact(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
         let g = self.g;
         if let Some(v) = self.fast().eval(&g, q).sign() {
             return Ok(v);
