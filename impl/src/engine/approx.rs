@@ -136,6 +136,15 @@ const fn mul_hi(a: u64, b: u64) -> u64 {
 
 /// `⌈a·b / 2^64⌉`, saturating.
 fn mul_up(a: u128, b: u128) -> u128 {
+    const M: u128 = u64::MAX as u128;
+    // A factor below 2^64 (every bound in practice): two 64-bit products,
+    // `a·b = a₁·b·2^64 + a₀·b` with `a₁·b < 2^128`; the same value.
+    let (a, b) = if a <= M { (b, a) } else { (a, b) };
+    if b <= M {
+        let p = (a & M) * b;
+        let q = (p >> 64) + u128::from(p & M != 0);
+        return ((a >> 64) * b).saturating_add(q);
+    }
     let (hi, lo) = mul_wide(a, b);
     let q = (lo >> 64) + u128::from(lo & u128::from(u64::MAX) != 0);
     if hi >> 64 != 0 {
@@ -673,6 +682,43 @@ mod tests {
         let lo = Interval::<SLOW>::int(lo).div_int(1 << 32).div_int(1 << 32);
         assert!(lo.is_point());
         Fixed::from_int(hi).checked_add(lo.lower()).unwrap()
+    }
+
+    /// [`mul_up`]'s short form (a factor below 2^64) gives what the full
+    /// 256-bit product gives: `⌈a·b/2^64⌉`, saturated at `u128::MAX`.
+    #[test]
+    fn mul_up_is_the_wide_ceiling() {
+        let wide = |a: u128, b: u128| -> u128 {
+            let (hi, lo) = mul_wide(a, b);
+            let q = (lo >> 64) + u128::from(lo & u128::from(u64::MAX) != 0);
+            if hi >> 64 != 0 {
+                return u128::MAX;
+            }
+            (hi << 64).saturating_add(q)
+        };
+        let vals = [
+            0_u128,
+            1,
+            2,
+            3,
+            (1 << 63) - 1,
+            1 << 63,
+            u128::from(u64::MAX) - 1,
+            u128::from(u64::MAX),
+            1 << 64,
+            (1 << 64) + 1,
+            (1 << 64) * 3 + 12_345,
+            0x1234_5678_9abc_def0_0fed_cba9_8765_4321,
+            (1 << 127) - 1,
+            1 << 127,
+            u128::MAX - 1,
+            u128::MAX,
+        ];
+        for &a in &vals {
+            for &b in &vals {
+                assert_eq!(mul_up(a, b), wide(a, b), "{a:#x} · {b:#x}");
+            }
+        }
     }
 
     #[test]

@@ -44,7 +44,7 @@ pub(super) struct ProfileLocal {
 /// B, r2. At most 8 points.
 ///
 /// Twin: `spec/src/g75/contour.rs`, `finish_contour`.
-pub(super) fn finish_profile(ev: &mut Evaluator) -> Result<([ProfileLocal; 8], usize), CycleError> {
+pub(super) fn finish_profile(ev: &mut Evaluator<'_>) -> Result<([ProfileLocal; 8], usize), CycleError> {
     let g = ev.g;
     let start = ProfileLocal { at: (0, 0), seg: LocalSegment::Start, far: false };
     let mut pts = [start; 8];
@@ -137,7 +137,7 @@ pub(super) struct RoughLocal {
 ///
 /// Twin: `spec/src/g75/contour.rs`, `rough_vertices`.
 pub(super) fn rough_vertices(
-    ev: &mut Evaluator,
+    ev: &mut Evaluator<'_>,
     y_top: i128,
 ) -> Result<([RoughLocal; 6], usize), CycleError> {
     let g = ev.g;

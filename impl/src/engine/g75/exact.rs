@@ -589,39 +589,52 @@ pub(super) enum Quantity {
     C2Y,
 }
 
+/// The interval contexts of the fallback (128 and 512 fraction bits), each
+/// built from the words at most once per expansion, when a decision first
+/// needs it. Kept apart from the [`Evaluator`] (several kilobytes that are
+/// almost never filled): the caller owns it and lends it, so that nothing
+/// copies it.
+#[derive(Default)]
+pub(super) struct Fallback {
+    fast: Option<Enclosures<Interval<FAST>>>,
+    slow: Option<Enclosures<Interval<SLOW>>>,
+}
+
 /// Decides roundings and signs of the cycle's quantities: first on the fast
 /// path (R-FASTPATH: 64-bit fixed point with a bound, [`Approx`]), then, if
 /// that does not decide, at 128 fraction bits, then at 512 with R-G75TIE
 /// (R-G75ROUND). Each context is built at most once per expansion, when a
-/// decision first needs it.
-pub(super) struct Evaluator {
+/// decision first needs it (in the [`Fallback`] it borrows).
+pub(super) struct Evaluator<'f> {
     pub(super) g: Geometry,
     /// The fast path's values (`None`: the fast path is off).
     pub(super) quick: Option<Enclosures<Approx>>,
-    pub(super) fast: Option<Enclosures<Interval<FAST>>>,
-    pub(super) slow: Option<Enclosures<Interval<SLOW>>>,
+    /// The 128- and 512-bit contexts.
+    fallback: &'f mut Fallback,
     /// The values decided and the fast path's fallbacks.
     pub(super) stats: FastPathStats,
 }
 
-impl Evaluator {
-    /// The evaluator of a geometry, with the fast path on or off.
-    pub(super) fn new(g: Geometry, fast_path: bool) -> Evaluator {
+impl<'f> Evaluator<'f> {
+    /// The evaluator of a geometry, with the fast path on or off, building
+    /// its interval contexts in `fallback` when needed.
+    pub(super) fn new(g: Geometry, fast_path: bool, fallback: &'f mut Fallback) -> Evaluator<'f> {
         let quick = fast_path.then(|| Enclosures::new(&g));
-        Evaluator { g, quick, fast: None, slow: None, stats: FastPathStats::default() }
+        Evaluator { g, quick, fallback, stats: FastPathStats::default() }
     }
 
     pub(super) fn fast(&mut self) -> &Enclosures<Interval<FAST>> {
         let g = &self.g;
-        self.fast.get_or_insert_with(|| Enclosures::new(g))
+        self.fallback.fast.get_or_insert_with(|| Enclosures::new(g))
     }
 
     pub(super) fn slow(&mut self) -> &Enclosures<Interval<SLOW>> {
         let g = &self.g;
-        self.slow.get_or_insert_with(|| Enclosures::new(g))
+        self.fallback.slow.get_or_insert_with(|| Enclosures::new(g))
     }
 
     /// The fast path's decision on `q`, counted (`None`: fall back).
+    #[inline]
     fn quick<T>(&mut self, q: Quantity, decide: impl Fn(&Approx) -> Option<T>) -> Option<T> {
         let quick = self.quick.as_ref()?;
         let v = decide(&quick.eval(&self.g, q));
@@ -634,9 +647,18 @@ impl Evaluator {
     /// at 512 bits with reading R-G75TIE (a value whose 512-bit enclosure
     /// holds exactly one rounding boundary lies on it).
     pub(super) fn round(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
-        if let Some(v) = self.quick(q, |a| a.round(r)) {
-            return Ok(v);
+        match self.quick(q, |a| a.round(r)) {
+            Some(v) => Ok(v),
+            None => self.round_exact(q, r),
         }
+    }
+
+    /// [`Evaluator::round`] by the intervals alone (128 bits, then 512
+    /// with R-G75TIE): out of line, so that the fast path's caller keeps a
+    /// small frame.
+    #[cold]
+    #[inline(never)]
+    fn round_exact(&mut self, q: Quantity, r: Rounding) -> Result<i128, CycleError> {
         let g = self.g;
         if let Some(v) = self.fast().eval(&g, q).round(r) {
             return Ok(v);
@@ -663,9 +685,16 @@ impl Evaluator {
     /// 512 bits with reading R-G75TIE (a 512-bit enclosure that holds 0 is
     /// taken to be 0).
     pub(super) fn sign(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
-        if let Some(v) = self.quick(q, Approx::sign) {
-            return Ok(v);
+        match self.quick(q, Approx::sign) {
+            Some(v) => Ok(v),
+            None => self.sign_exact(q),
         }
+    }
+
+    /// [`Evaluator::sign`] by the intervals alone, out of line.
+    #[cold]
+    #[inline(never)]
+    fn sign_exact(&mut self, q: Quantity) -> Result<Ordering, CycleError> {
         let g = self.g;
         if let Some(v) = self.fast().eval(&g, q).sign() {
             return Ok(v);
@@ -675,9 +704,13 @@ impl Evaluator {
 
     /// The evaluator of a cycle after the checks that every use of its
     /// geometry starts with: `validate()`, then the corners (§3).
-    pub(super) fn checked(c: &G75Cycle, fast_path: bool) -> Result<Evaluator, CycleError> {
+    pub(super) fn checked(
+        c: &G75Cycle,
+        fast_path: bool,
+        fallback: &'f mut Fallback,
+    ) -> Result<Evaluator<'f>, CycleError> {
         c.validate()?;
-        let mut ev = Evaluator::new(Geometry::new(c), fast_path);
+        let mut ev = Evaluator::new(Geometry::new(c), fast_path, fallback);
         ev.check_corners()?;
         Ok(ev)
     }

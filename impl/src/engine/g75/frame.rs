@@ -16,9 +16,9 @@ use crate::units::{Length, Point, Units, MAX_LENGTH};
 pub(super) struct Frame {
     /// S.
     pub(super) start: Point,
-    /// `sx`.
+    /// `sx` (±1, [`G75Cycle::radial_sign`]).
     pub(super) sx: i64,
-    /// `sz`.
+    /// `sz` (±1, [`G75Cycle::axial_sign`]).
     pub(super) sz: i64,
     /// For error values.
     pub(super) units: Units,
@@ -29,14 +29,14 @@ impl Frame {
         Frame { start: c.start, sx: c.radial_sign(), sz: c.axial_sign(), units: c.units }
     }
 
-    /// Absolute X of local `y`.
+    /// Absolute X of local `y` (`sx` is ±1: a negation, not a product).
     pub(super) fn x(&self, y: i128) -> i128 {
-        i128::from(self.start.x) + i128::from(self.sx) * y
+        i128::from(self.start.x) + if self.sx < 0 { -y } else { y }
     }
 
-    /// Absolute Z of local `u`.
+    /// Absolute Z of local `u` (`sz` is ±1).
     pub(super) fn z(&self, u: i128) -> i128 {
-        i128::from(self.start.z) + i128::from(self.sz) * u
+        i128::from(self.start.z) + if self.sz < 0 { -u } else { u }
     }
 
     /// An absolute coordinate within the range, as `i64`.

@@ -115,9 +115,12 @@
 //! words for that layer, and when 128 bits do not decide either, in
 //! practice only for a boundary exactly on an integer (R-G75TIE), the
 //! 512-bit one: a bounded amount of work). A [`G75Moves`] is a fixed-size
-//! value (1 840 bytes on 64-bit targets: the precomputed tail of at most 22
-//! moves and the fast path's values of the region's boundaries; the test
-//! `size_of_the_iterator` bounds it).
+//! value (1 184 bytes on 64-bit targets: the precomputed tail of at most 22
+//! moves, 24 bytes each with their arcs' centres kept apart, and the fast
+//! path's values of the region's boundaries; the test
+//! `size_of_the_iterator` bounds it). The interval contexts of the
+//! fallback (several kilobytes) live in a `Fallback` on the stack of
+//! [`expand_g75`], lent to the evaluator and never copied.
 //!
 //! # Readings added by this engine
 //!
@@ -164,10 +167,10 @@ mod tests;
 pub use profile::{groove_profile, GrooveProfile, ProfilePoint, ProfileSegment};
 
 use contour::{finish_profile, rough_vertices, Local, LocalSegment};
-use exact::{Evaluator, Geometry, Region};
+use exact::{Evaluator, Fallback, Geometry, Region};
 use frame::Frame;
 use roughing::{check_peck_count, check_roughing, Layers, RoughStep, Roughing};
-use tail::{Leg, LegKind, TailBuilder, TAIL};
+use tail::{Leg, LegKind, TailBuilder, TailRole, ARCS, TAIL};
 
 use crate::engine::approx::Approx;
 use crate::engine::arith::saturate_i64;
@@ -219,6 +222,8 @@ pub struct G75Moves {
     tail: [Leg; TAIL],
     /// How many of `tail` are moves.
     tail_len: usize,
+    /// The centres of the tail's arcs ([`LegKind::Arc`]).
+    centres: [crate::units::Point; ARCS],
     /// The next move of `tail`.
     tail_next: usize,
     /// The plunges of the roughing (0 when the cycle does not rough).
@@ -257,7 +262,8 @@ pub fn expand_g75_exact(c: &G75Cycle) -> Result<G75Moves, CycleError> {
 
 /// [`expand_g75`], the fast path on or off.
 fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
-    let mut ev = Evaluator::checked(c, fast_path)?;
+    let mut fallback = Fallback::default();
+    let mut ev = Evaluator::checked(c, fast_path, &mut fallback)?;
     let g = ev.g;
     let frame = Frame::new(c);
 
@@ -314,25 +320,27 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     let mut b = TailBuilder {
         frame,
         at: if roughs { (last_last, top_last) } else { a11_local },
-        legs: [Leg { kind: LegKind::Rapid, to: c.from, role: Role::Return }; TAIL],
+        legs: [Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return }; TAIL],
         len: 0,
+        centres: [c.from; ARCS],
+        arcs: 0,
     };
     if let Some((v, n)) = rough_pts {
         // Step 8: back along X to y_top and along Z to A11.
-        b.rapid((b.at.0, y_top), Role::Approach)?;
-        b.rapid(a11_local, Role::Approach)?;
+        b.rapid((b.at.0, y_top), TailRole::Approach)?;
+        b.rapid(a11_local, TailRole::Approach)?;
         // Step 9: rapid to R0, feeds along the contour, rapid back to A11.
         let mut loops = crate::loop_counters::count!(G75_CONTOUR);
         for (i, p) in v.iter().take(n).enumerate() {
             loops.tick();
             let to = if p.far { (p.at.0 - w, p.at.1) } else { p.at };
             if i == 0 {
-                b.rapid(to, Role::RoughContour)?;
+                b.rapid(to, TailRole::RoughContour)?;
             } else {
-                b.feed(to, Role::RoughContour)?;
+                b.feed(to, TailRole::RoughContour)?;
             }
         }
-        b.rapid(a11_local, Role::RoughContour)?;
+        b.rapid(a11_local, TailRole::RoughContour)?;
     }
     if let Some((pts, n)) = finish_pts {
         // Step 10: along Z to F0's u at y_top, along X to F0, the contour.
@@ -348,37 +356,37 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
                         // above y_top only when the opening falls
                         // (R-G75SLOPE), where T1s is above S.
                         let y_in = y_top.min(to.1);
-                        b.rapid((b.at.0, y_in), Role::FinishContour)?;
-                        b.rapid((to.0, y_in), Role::FinishContour)?;
-                        b.rapid(to, Role::FinishContour)?;
+                        b.rapid((b.at.0, y_in), TailRole::FinishContour)?;
+                        b.rapid((to.0, y_in), TailRole::FinishContour)?;
+                        b.rapid(to, TailRole::FinishContour)?;
                     }
                 }
-                LocalSegment::Line => b.feed(to, Role::FinishContour)?,
+                LocalSegment::Line => b.feed(to, TailRole::FinishContour)?,
                 LocalSegment::Arc { centre, convex } => {
                     let cw = frame.clockwise(convex);
-                    b.go(to, Some((shift(centre, p.far), cw)), true, Role::FinishContour)?;
+                    b.go(to, Some((shift(centre, p.far), cw)), true, TailRole::FinishContour)?;
                 }
             }
         }
         // Back: along X to min(y_top, y_end), along Z to u = 0, along X to S.
         let end = b.at;
         let y_back = y_top.min(end.1);
-        b.rapid((end.0, y_back), Role::Return)?;
-        b.rapid((0, y_back), Role::Return)?;
-        b.rapid((0, 0), Role::Return)?;
+        b.rapid((end.0, y_back), TailRole::Return)?;
+        b.rapid((0, y_back), TailRole::Return)?;
+        b.rapid((0, 0), TailRole::Return)?;
     }
     // Step 10's end: back to the point before the cycle, in one move. The
     // builder's position is local; `from` may lie anywhere in range.
     let end_abs = frame.point(b.at)?;
     if end_abs != c.from {
         if let Some(slot) = b.legs.get_mut(b.len) {
-            *slot = Leg { kind: LegKind::Rapid, to: c.from, role: Role::Return };
+            *slot = Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return };
             b.len += 1;
         }
     }
 
     let approach =
-        (a11_abs != c.from).then_some(Leg { kind: LegKind::Rapid, to: a11_abs, role: Role::Approach });
+        (a11_abs != c.from).then_some(Leg { kind: LegKind::Rapid, to: a11_abs, role: TailRole::Approach });
     let rough = Roughing {
         // layers ≤ MAX_PECKS when roughing; 1 otherwise is never read.
         layers: u32::try_from(layers.count).unwrap_or(u32::MAX),
@@ -413,6 +421,7 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
         at: (saturate_i64(a11), saturate_i64(y_top)),
         tail: b.legs,
         tail_len: b.len,
+        centres: b.centres,
         tail_next: 0,
         plunges,
     })
@@ -444,7 +453,12 @@ impl Iterator for G75Moves {
                 Stage::Approach => {
                     self.stage = if self.roughs { Stage::Rough } else { Stage::Tail };
                     if let Some(l) = self.approach {
-                        return Some(Move { motion: Motion::Rapid, to: l.to, role: l.role, pass: None });
+                        return Some(Move {
+                            motion: Motion::Rapid,
+                            to: l.to,
+                            role: l.role.role(),
+                            pass: None,
+                        });
                     }
                 }
                 Stage::Rough => match self.next_rough() {
@@ -461,9 +475,13 @@ impl Iterator for G75Moves {
                     let motion = match leg.kind {
                         LegKind::Rapid => Motion::Rapid,
                         LegKind::Feed => Motion::Feed,
-                        LegKind::Arc { centre, clockwise } => Motion::Arc { centre, clockwise },
+                        LegKind::Arc { centre, clockwise } => Motion::Arc {
+                            centre: self.centres.get(usize::from(centre)).copied().unwrap_or(leg.to),
+                            clockwise,
+                        },
                     };
-                    return Some(Move { motion, to: leg.to, role: leg.role, pass: None });
+                    let role: Role = leg.role.role();
+                    return Some(Move { motion, to: leg.to, role, pass: None });
                 }
                 Stage::Done => return None,
             }

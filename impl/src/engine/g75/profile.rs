@@ -6,7 +6,7 @@
 //! beside the rounded ones.
 
 use super::contour::{finish_profile, rough_vertices, LocalSegment};
-use super::exact::Evaluator;
+use super::exact::{Evaluator, Fallback};
 use super::frame::Frame;
 use crate::error::CycleError;
 use crate::g75::G75Cycle;
@@ -87,7 +87,8 @@ impl GrooveProfile {
 ///
 /// Twin: `spec/src/g75/profile.rs`, `profile`.
 pub fn groove_profile(c: &G75Cycle) -> Result<GrooveProfile, CycleError> {
-    let mut ev = Evaluator::checked(c, true)?;
+    let mut fallback = Fallback::default();
+    let mut ev = Evaluator::checked(c, true, &mut fallback)?;
     let frame = Frame::new(c);
     let (pts, n) = finish_profile(&mut ev)?;
     let y_top = ev.y_top()?;

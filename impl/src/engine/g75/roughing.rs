@@ -94,7 +94,7 @@ impl Layers {
 ///
 /// Twin: `spec/src/g75/roughing.rs`, `rough_layers` (with `peck_count`).
 pub(super) fn check_peck_count(
-    ev: &mut Evaluator,
+    ev: &mut Evaluator<'_>,
     c: &G75Cycle,
     layers: &Layers,
     y_top: i128,
@@ -265,27 +265,11 @@ pub(super) fn check_roughing(
 }
 
 impl G75Moves {
-    /// The absolute point of a local one (range-checked up front).
-    pub(super) fn abs(&self, u: i64, y: i64) -> Point {
-        let p = self.frame;
-        Point::new(p.start.x + p.sx * y, p.start.z + p.sz * u)
-    }
-
-    /// A roughing move to local `(u, y)`, or `None` when it would not move.
-    pub(super) fn rough_move(&mut self, motion: Motion, u: i64, y: i64, role: Role) -> Option<Move> {
-        if (u, y) == self.at {
-            return None;
-        }
-        self.at = (u, y);
-        Some(Move { motion, to: self.abs(u, y), role, pass: None })
-    }
-
-    /// The plunge of the current layer and number.
-    pub(super) fn plunge(&self) -> Plunge {
-        Plunge { layer: self.rough.m, number: self.rough.n }
-    }
-
     /// The next roughing move, or `None` at the end of the roughing.
+    ///
+    /// Each step updates the state in place and names its candidate move
+    /// (motion, local end, role); a candidate that would not move is left
+    /// out (R-G75ZERO) and the next step taken.
     ///
     /// Twin: `spec/src/g75/mod.rs`, `Cursor::step` (with
     /// `spec/src/g75/roughing.rs`, `pecks`).
@@ -293,74 +277,69 @@ impl G75Moves {
         let mut loops = crate::loop_counters::count!(G75_ROUGH_NEXT);
         loop {
             loops.tick();
-            let r = self.rough;
-            match r.sub {
+            let r = &mut self.rough;
+            let plunge = Plunge { layer: r.m, number: r.n };
+            let (motion, u, y, role) = match r.sub {
                 RoughStep::LayerZ => {
-                    self.rough.sub = RoughStep::LayerX;
-                    let role = Role::LayerChange(r.m);
-                    if let Some(mv) = self.rough_move(Motion::Rapid, r.first, r.prev_top, role) {
-                        return Some(mv);
-                    }
+                    r.sub = RoughStep::LayerX;
+                    (Motion::Rapid, r.first, r.prev_top, Role::LayerChange(r.m))
                 }
                 RoughStep::LayerX => {
-                    self.rough.sub = RoughStep::Peck;
-                    let role = Role::LayerChange(r.m);
-                    if let Some(mv) = self.rough_move(Motion::Rapid, r.first, r.top, role) {
-                        return Some(mv);
-                    }
+                    r.sub = RoughStep::Peck;
+                    (Motion::Rapid, r.first, r.top, Role::LayerChange(r.m))
                 }
                 RoughStep::Peck => {
                     // R-G75PECK: peck j to min(top + j·Δi, y_m).
                     let y = r.target.min(r.bottom);
-                    self.rough.target = r.target.saturating_add(r.di);
-                    self.rough.depth = y;
-                    self.rough.sub = if y < r.bottom { RoughStep::Retract } else { RoughStep::PlungeRetract };
-                    let role = Role::Peck(self.plunge());
-                    if let Some(mv) = self.rough_move(Motion::Feed, r.u, y, role) {
-                        return Some(mv);
-                    }
+                    r.target = r.target.saturating_add(r.di);
+                    r.depth = y;
+                    r.sub = if y < r.bottom { RoughStep::Retract } else { RoughStep::PlungeRetract };
+                    (Motion::Feed, r.u, y, Role::Peck(plunge))
                 }
                 RoughStep::Retract => {
-                    self.rough.sub = RoughStep::Peck;
+                    r.sub = RoughStep::Peck;
                     // R-G75PECK: clamped at the plunge's start, or e as
                     // written (`peck_as_written`, decided once per cycle).
                     let y = if r.peck_as_written { r.depth - r.ex } else { r.top.max(r.depth - r.ex) };
-                    let role = Role::PeckRetract(self.plunge());
-                    if let Some(mv) = self.rough_move(Motion::Rapid, r.u, y, role) {
-                        return Some(mv);
-                    }
+                    (Motion::Rapid, r.u, y, Role::PeckRetract(plunge))
                 }
                 RoughStep::PlungeRetract => {
-                    self.rough.sub = RoughStep::After;
-                    let role = Role::PlungeRetract(self.plunge());
-                    if let Some(mv) = self.rough_move(Motion::Rapid, r.u, r.top, role) {
-                        return Some(mv);
-                    }
+                    r.sub = RoughStep::After;
+                    (Motion::Rapid, r.u, r.top, Role::PlungeRetract(plunge))
                 }
                 RoughStep::After => {
                     if r.u < r.last {
                         // Step 7: on by Δk while below A_mf, then to A_mf.
                         let next = r.u.saturating_add(r.dk);
                         let u = if next < r.last { next } else { r.last };
-                        self.rough.u = u;
-                        self.rough.n = r.n.saturating_add(1);
-                        self.rough.target = r.top.saturating_add(r.di);
-                        self.rough.sub = RoughStep::Peck;
-                        let role = Role::Step(self.plunge());
-                        if let Some(mv) = self.rough_move(Motion::Rapid, u, r.top, role) {
-                            return Some(mv);
-                        }
+                        r.u = u;
+                        r.n = r.n.saturating_add(1);
+                        r.target = r.top.saturating_add(r.di);
+                        r.sub = RoughStep::Peck;
+                        (Motion::Rapid, u, r.top, Role::Step(Plunge { layer: r.m, number: r.n }))
                     } else if r.m < r.layers {
                         self.next_layer();
+                        continue;
                     } else {
                         return None;
                     }
                 }
+            };
+            // R-G75ZERO: a move that would not move is left out. The
+            // absolute point of a local one (range-checked up front).
+            if (u, y) != self.at {
+                self.at = (u, y);
+                let p = &self.frame;
+                let to = Point::new(p.start.x + p.sx * y, p.start.z + p.sz * u);
+                return Some(Move { motion, to, role, pass: None });
             }
         }
     }
 
-    /// Moves on to the next layer (steps 8 and 2).
+    /// Moves on to the next layer (steps 8 and 2). Kept out of line: once
+    /// a layer, with the fallback's contexts in its frame, so that the
+    /// per-move path stays small.
+    #[inline(never)]
     pub(super) fn next_layer(&mut self) {
         let r = self.rough;
         let m = r.m.saturating_add(1);
