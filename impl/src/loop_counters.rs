@@ -47,6 +47,9 @@ pub static ISQRT_U128: Site = Site::new("isqrt_floor: Newton on u128");
 /// `engine::arith::isqrt_floor_u64`: Newton's loop on `u64`.
 #[cfg(feature = "loop-counters")]
 pub static ISQRT_U64: Site = Site::new("isqrt_floor_u64: Newton on u64");
+/// `engine::arith::round_sqrt_near`: the guess and its corrections by one.
+#[cfg(feature = "loop-counters")]
+pub static ISQRT_NEAR: Site = Site::new("round_sqrt_near: guess and steps");
 /// `engine::g76::check_pass_count`: the levels counted before any move.
 #[cfg(feature = "loop-counters")]
 pub static PASS_COUNT: Site = Site::new("check_pass_count: levels");
@@ -115,9 +118,10 @@ pub static G75_CONTOUR: Site = Site::new("g75: contour points");
 
 /// Every site.
 #[cfg(feature = "loop-counters")]
-pub static SITES: [&Site; 21] = [
+pub static SITES: [&Site; 22] = [
     &ISQRT_U128,
     &ISQRT_U64,
+    &ISQRT_NEAR,
     &PASS_COUNT,
     &PLAN_NEXT,
     &G76_NEXT,

@@ -15,9 +15,9 @@ use crate::thread;
 use crate::windows::{
     depth_window, equivalence_window, flank_window, DIV_WINDOW, FINISHING_KANI_WINDOW, G32_WINDOW,
     G76_WINDOW, G92_WINDOW, GROOVE_EQUIVALENCE_WINDOW, GROOVE_NO_PANIC_LAYERS, GROOVE_NO_PANIC_MOVES,
-    GROOVE_NO_PANIC_WINDOW, GROOVE_WINDOW, ISQRT_WINDOW, LCNC_DEPTH_WINDOW, LCNC_PASS_WINDOW,
-    LCNC_SPRING_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW, ROUND_DIV_WINDOW,
-    RUN_OUT_KANI_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
+    GROOVE_NO_PANIC_WINDOW, GROOVE_WINDOW, ISQRT_NEAR_WINDOW, ISQRT_WINDOW, LCNC_DEPTH_WINDOW,
+    LCNC_PASS_WINDOW, LCNC_SPRING_WINDOW, MUL_TAN_WINDOW, NO_PANIC_MOVES, NO_PANIC_WINDOW, NO_RAPID_WINDOW,
+    ROUND_DIV_WINDOW, RUN_OUT_KANI_WINDOW, SATURATE_WINDOW, SCHEDULE_STEP_WINDOW,
 };
 use cycleref::engine::arith;
 
@@ -90,6 +90,13 @@ pub fn no_panic() {
 /// P8, the contract of `round_sqrt`, over [`ISQRT_WINDOW`].
 pub fn isqrt_rounds() {
     harness::isqrt_rounds(ISQRT_WINDOW.0, ISQRT_WINDOW.1, arith::round_sqrt);
+}
+
+/// The contract of `round_sqrt_near` over [`ISQRT_NEAR_WINDOW`]: every
+/// `x < 2^62`, every guess.
+pub fn round_sqrt_near_contract() {
+    let (x, guess) = ISQRT_NEAR_WINDOW;
+    contracts::round_sqrt_near(x.0, x.1, guess, arith::round_sqrt_near);
 }
 
 /// The contract of `isqrt_floor` over [`ISQRT_WINDOW`].

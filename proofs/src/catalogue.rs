@@ -73,6 +73,7 @@ pub struct Harness {
 /// The engine kernels the G76 harnesses reach, replaced by their contracts.
 const G76_STUBS: &[&str] = &[
     "cycleref::engine::arith::round_sqrt",
+    "cycleref::engine::arith::round_sqrt_near",
     "cycleref::tan::mul_tan_round",
     "cycleref::engine::arith::round_div",
     "cycleref::engine::arith::saturate_i64",
@@ -274,6 +275,20 @@ pub fn harnesses() -> Vec<Harness> {
         Some("cycleref::engine::arith::round_sqrt"),
         &["cycleref::engine::arith::isqrt_floor"],
         7,
+        true,
+        Required,
+        SAMPLED,
+    );
+    one(
+        "round_sqrt_near_contract",
+        "The contract of round_sqrt_near: round(√x) whatever the guess, (2s − 1)² ≤ 4x < (2s + 1)²",
+        "ISQRT_NEAR_WINDOW",
+        bodies::round_sqrt_near_contract,
+        Some("cycleref::engine::arith::round_sqrt_near"),
+        &["cycleref::engine::arith::round_sqrt"],
+        // The loop checks the guess and NEAR_STEPS = 4 corrections: five
+        // iterations; Newton's method is round_sqrt's, stubbed.
+        6,
         true,
         Required,
         SAMPLED,

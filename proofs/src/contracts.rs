@@ -29,6 +29,28 @@ pub fn isqrt_floor(lo: u128, hi: u128, f: fn(u128) -> u128) {
     cover!(s * s < x, "isqrt_floor: between squares");
 }
 
+/// `round_sqrt_near` over `x in lo..=hi` and `guess in guess.0..=guess.1`:
+/// the rounded root whatever the guess, `(2s - 1)² ≤ 4x < (2s + 1)²`
+/// (`round_sqrt_ensures`), whether the guess is the root, is corrected by
+/// at most `NEAR_STEPS` steps of one, or is left for Newton's method.
+pub fn round_sqrt_near(lo: u128, hi: u128, guess: (u128, u128), f: fn(u128, u128) -> u128) {
+    declare(&[
+        "round_sqrt_near: the guess is the root",
+        "round_sqrt_near: a guess corrected by steps of one",
+        "round_sqrt_near: a guess too far, Newton's method",
+    ]);
+    let x = any_u128_in(lo, hi);
+    let g = any_u128_in(guess.0, guess.1);
+    assume(c::sqrt_requires(x));
+    let s = f(x, g);
+    assert!(c::round_sqrt_ensures(x, s), "round_sqrt_near: the contract of round_sqrt");
+    let off = s.abs_diff(g);
+    cover!(off == 0, "round_sqrt_near: the guess is the root");
+    let near = u128::from(cycleref::engine::arith::NEAR_STEPS);
+    cover!(off > 0 && off <= near, "round_sqrt_near: a guess corrected by steps of one");
+    cover!(off > near, "round_sqrt_near: a guess too far, Newton's method");
+}
+
 /// `round_div` over `num in num_lo..=num_hi`, `den in den_lo..=den_hi`:
 /// the nearest integer to `num / den`, ties away from zero.
 pub fn round_div(num: (i128, i128), den: (i128, i128), f: fn(i128, i128) -> i128) {

@@ -15,6 +15,7 @@
 /// Window: `depth_window(0)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -28,6 +29,7 @@ fn depth_monotonicity_d0() {
 /// Window: `depth_window(1)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -41,6 +43,7 @@ fn depth_monotonicity_d1() {
 /// Window: `depth_window(2)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -54,6 +57,7 @@ fn depth_monotonicity_d2() {
 /// Window: `depth_window(3)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -67,6 +71,7 @@ fn depth_monotonicity_centre() {
 /// Window: `depth_window(4)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -80,6 +85,7 @@ fn depth_monotonicity_left_flank() {
 /// Window: `depth_window(5)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -92,6 +98,7 @@ fn depth_monotonicity_alternating() {
 /// of levels. Window: `depth_window(0)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -104,6 +111,7 @@ fn termination_d0() {
 /// of levels. Window: `depth_window(1)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -116,6 +124,7 @@ fn termination_d1() {
 /// of levels. Window: `depth_window(2)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -128,6 +137,7 @@ fn termination_d2() {
 /// of levels. Window: `depth_window(3)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -140,6 +150,7 @@ fn termination_centre() {
 /// of levels. Window: `depth_window(4)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -152,6 +163,7 @@ fn termination_left_flank() {
 /// of levels. Window: `depth_window(5)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -164,6 +176,7 @@ fn termination_alternating() {
 /// rough Z. Window: `FINISHING_KANI_WINDOW`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -176,6 +189,7 @@ fn finishing() {
 /// cut's X (X long), never beyond E. Window: `RUN_OUT_KANI_WINDOW`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -188,6 +202,7 @@ fn run_out_direction() {
 /// increment. Window: `flank_window(G76_WINDOW)(0)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -200,6 +215,7 @@ fn no_overcut_d0() {
 /// increment. Window: `flank_window(G76_WINDOW)(1)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -212,6 +228,7 @@ fn no_overcut_d1() {
 /// increment. Window: `flank_window(G76_WINDOW)(2)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -224,6 +241,7 @@ fn no_overcut_d2() {
 /// increment. Window: `flank_window(G76_WINDOW)(3)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -236,6 +254,7 @@ fn no_overcut_centre() {
 /// increment. Window: `flank_window(G76_WINDOW)(4)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -248,6 +267,7 @@ fn no_overcut_left_flank() {
 /// increment. Window: `flank_window(G76_WINDOW)(5)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -260,6 +280,7 @@ fn no_overcut_alternating() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(0)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -272,6 +293,7 @@ fn no_rapid_in_thread_d0() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(1)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -284,6 +306,7 @@ fn no_rapid_in_thread_d1() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(2)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -296,6 +319,7 @@ fn no_rapid_in_thread_d2() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(3)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -308,6 +332,7 @@ fn no_rapid_in_thread_centre() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(4)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -320,6 +345,7 @@ fn no_rapid_in_thread_left_flank() {
 /// after an X-long run-out). Window: `flank_window(NO_RAPID_WINDOW)(5)`.
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -333,6 +359,7 @@ fn no_rapid_in_thread_alternating() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -347,6 +374,7 @@ fn equivalence_d0() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -361,6 +389,7 @@ fn equivalence_d1() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -375,6 +404,7 @@ fn equivalence_d2() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -389,6 +419,7 @@ fn equivalence_centre() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -403,6 +434,7 @@ fn equivalence_left_flank() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -418,6 +450,7 @@ fn equivalence_alternating() {
 #[cfg(feature = "kani-scheduled")]
 #[kani::proof]
 #[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt_near)]
 #[kani::stub_verified(cycleref::tan::mul_tan_round)]
 #[kani::stub_verified(cycleref::engine::arith::round_div)]
 #[kani::stub_verified(cycleref::engine::arith::saturate_i64)]
@@ -435,6 +468,16 @@ fn no_panic() {
 #[kani::solver(cadical)]
 fn isqrt_rounds() {
     crate::bodies::isqrt_rounds();
+}
+
+/// The contract of round_sqrt_near: round(√x) whatever the guess, (2s −
+/// 1)² ≤ 4x < (2s + 1)². Window: `ISQRT_NEAR_WINDOW`.
+#[kani::proof_for_contract(cycleref::engine::arith::round_sqrt_near)]
+#[kani::stub_verified(cycleref::engine::arith::round_sqrt)]
+#[kani::unwind(6)]
+#[kani::solver(cadical)]
+fn round_sqrt_near_contract() {
+    crate::bodies::round_sqrt_near_contract();
 }
 
 /// The contract of isqrt_floor: s² ≤ x < (s + 1)². Window: `ISQRT_WINDOW`.

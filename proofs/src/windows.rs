@@ -128,6 +128,10 @@ pub const NO_PANIC_MOVES: usize = 12;
 /// `u128`, which CBMC does not finish.
 pub const ISQRT_WINDOW: (u128, u128) = (0, (1 << 62) - 1);
 
+/// The contract of `round_sqrt_near`: its precondition, `x < 2^62` (as
+/// [`ISQRT_WINDOW`]), and every guess (the guess changes only the speed).
+pub const ISQRT_NEAR_WINDOW: ((u128, u128), (u128, u128)) = (ISQRT_WINDOW, (0, u128::MAX));
+
 /// The contract of `round_div`: its precondition, numerators below `2^67`
 /// and divisors below `2^34` in magnitude (the divisor non-zero). Until
 /// issue 32 both below `2^126`.

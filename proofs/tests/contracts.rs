@@ -10,7 +10,9 @@ use cycleref::engine::arith;
 use cycleref_proofs::contracts;
 use cycleref_proofs::harness;
 use cycleref_proofs::shim::{self, check_and_print as check, Mode};
-use cycleref_proofs::windows::{DIV_WINDOW, ISQRT_WINDOW, MUL_TAN_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW};
+use cycleref_proofs::windows::{
+    DIV_WINDOW, ISQRT_NEAR_WINDOW, ISQRT_WINDOW, MUL_TAN_WINDOW, ROUND_DIV_WINDOW, SATURATE_WINDOW,
+};
 
 const fn sample(seed: u64) -> Mode {
     Mode::Sample { runs: 100_000, seed }
@@ -44,6 +46,51 @@ fn isqrt_floor_contract() {
     shim::check("isqrt_floor (the top of its range)", Mode::Enumerate { max_runs: 16 }, || {
         contracts::isqrt_floor(ISQRT_WINDOW.1 - 5, ISQRT_WINDOW.1, f);
     });
+}
+
+/// The body of `round_sqrt_near`'s `proof_for_contract` over its exact
+/// window (every `x < 2^62`, every guess), sampled; exhaustively over
+/// small values and every guess near the root; and around large squares
+/// with guesses within and beyond the corrections.
+#[test]
+fn round_sqrt_near_contract() {
+    let f = arith::round_sqrt_near;
+    let (x, guess) = ISQRT_NEAR_WINDOW;
+    check("round_sqrt_near (sampled window)", sample(2), || contracts::round_sqrt_near(x.0, x.1, guess, f));
+    check(
+        "round_sqrt_near (exhaustive x ≤ 2^10, guess ≤ 40)",
+        Mode::Exhaustive { max_runs: 50_000 },
+        || {
+            contracts::round_sqrt_near(0, 1 << 10, (0, 40), f);
+        },
+    );
+    // s² ± s, the rounding's edges; s ≤ 2^31 - 1 keeps x < 2^62.
+    for bits in 1..31 {
+        let s = 1_u128 << bits;
+        for x in [s * s - s, s * s + s] {
+            shim::check("round_sqrt_near (around s² ± s)", Mode::Exhaustive { max_runs: 200 }, || {
+                contracts::round_sqrt_near(x - 1, x + 1, (s.saturating_sub(8), s + 8), f);
+            });
+        }
+    }
+    // The largest root of the window: √(2^62 - 1) < 2^31, guesses at and
+    // beyond the clamp at 2^31.
+    shim::check("round_sqrt_near (the top of its range)", Mode::Exhaustive { max_runs: 200 }, || {
+        contracts::round_sqrt_near(x.1 - 2, x.1, ((1 << 31) - 8, (1 << 31) + 8), f);
+    });
+}
+
+/// A kernel that returns its guess unchecked is caught by the body of
+/// `round_sqrt_near`'s contract.
+#[test]
+fn a_guess_taken_unchecked_is_caught() {
+    let mode = Mode::Exhaustive { max_runs: 1 << 12 };
+    let failure = catch_unwind(|| {
+        check("mutant", mode, || contracts::round_sqrt_near(0, 1 << 5, (0, 40), |_, g| g));
+    })
+    .expect_err("a guess taken unchecked must be caught");
+    let text = failure.downcast_ref::<String>().cloned().unwrap_or_default();
+    assert!(text.ends_with("round_sqrt_near: the contract of round_sqrt"), "{text}");
 }
 
 #[test]

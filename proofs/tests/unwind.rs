@@ -500,6 +500,33 @@ fn isqrt_stays_below_its_unwind_bound() {
     newton_maxima(cycleref_proofs::contracts::isqrt_floor, counting_floor).check("isqrt_floor_contract");
 }
 
+/// `round_sqrt_near` counting the iterations of its loop.
+fn counting_near(x: u128, guess: u128) -> u128 {
+    cycleref::engine::record_isqrt_near(x, guess);
+    cycleref::engine::round_sqrt_near(x, guess)
+}
+
+/// The loop of `round_sqrt_near` (the guess, then at most `NEAR_STEPS`
+/// corrections; Newton's method is `round_sqrt`'s, stubbed in its
+/// `proof_for_contract`) over its window: sampled, and every guess near
+/// the root of small values, where it runs longest.
+#[test]
+fn round_sqrt_near_stays_below_its_unwind_bound() {
+    let _one = lock();
+    let (x, guess) = windows::ISQRT_NEAR_WINDOW;
+    let body = cycleref_proofs::contracts::round_sqrt_near;
+    let mut m = Maxima::default();
+    measure(&mut m, "round_sqrt_near (sampled window)", Mode::Sample { runs: 100_000, seed: 7 }, |_| {
+        body(x.0, x.1, guess, counting_near);
+    });
+    measure(&mut m, "round_sqrt_near (small, near)", Mode::Enumerate { max_runs: 50_000 }, |_| {
+        body(0, 1 << 10, (0, 40), counting_near);
+    });
+    let most = m.check("round_sqrt_near_contract");
+    // The guess and NEAR_STEPS corrections, each checked: reached.
+    assert_eq!(most, cycleref::engine::arith::NEAR_STEPS + 1, "the loop's longest run");
+}
+
 /// The G32 run-out harness: every block within 3 increments exhaustively
 /// (all units, run-outs), and sampled over its window.
 #[test]

@@ -124,6 +124,96 @@ pub const fn round_sqrt(x: u128) -> u128 {
     r
 }
 
+/// Corrections by one that [`round_sqrt_near`] tries from its guess before
+/// it takes [`round_sqrt`].
+pub const NEAR_STEPS: u32 = 4;
+
+/// `⌊√(n · 2^64)⌋ = ⌊√n · 2^32⌋` for `n` in `0..=32`: the first levels'
+/// guesses of the depth law (`engine::schedule`), `Δd √n` to within
+/// `Δd · 2^-32 < ¼` increment.
+pub(super) const SQRT_Q32: [u64; 33] = {
+    let mut t = [0_u64; 33];
+    let mut n = 0;
+    while n < 33 {
+        // n · 2^64 < 2^70; its root is below 2^35: lossless.
+        #[allow(clippy::cast_possible_truncation)]
+        let root = isqrt_floor_counted((n as u128) << 64).0 as u64;
+        t[n] = root;
+        n += 1;
+    }
+    t
+};
+
+/// [`round_sqrt`] of `x` from a `guess` of it: the guess is taken when it
+/// is the root, else corrected by one at a time, at most [`NEAR_STEPS`]
+/// times, towards it; then, if still not there, [`round_sqrt`] (Newton's
+/// method from a power of two). The guess changes only the speed, never
+/// the result: a step by one needs two products and no division, where
+/// Newton's method takes five to seven dependent divisions. The depth law
+/// guesses each level from the one before (`engine::schedule`).
+///
+/// Each candidate `r` is tested with [`round_sqrt_ensures`]'s own
+/// inequalities, `r(r - 1) < x ≤ r(r + 1)` (`x = 0` for `r = 0`), so a
+/// returned guess is the rounded root; a candidate too large (`r(r - 1) ≥
+/// x`) steps down, one too small (`r(r + 1) < x`) steps up. Candidates
+/// start at most at `2^31` (`√x < 2^31` for `x < 2^62`), so every product
+/// is below `2^63`.
+///
+/// Contract: [`sqrt_requires`](super::contracts::sqrt_requires),
+/// [`round_sqrt_ensures`](super::contracts::round_sqrt_ensures) (the
+/// guess is any `u128`).
+///
+/// [`round_sqrt_ensures`]: super::contracts::round_sqrt_ensures
+#[must_use]
+#[cfg_attr(kani, kani::requires(crate::engine::contracts::sqrt_requires(x)))]
+#[cfg_attr(kani, kani::ensures(|r: &u128| crate::engine::contracts::round_sqrt_ensures(x, *r)))]
+pub const fn round_sqrt_near(x: u128, guess: u128) -> u128 {
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::sqrt_requires(x), "round_sqrt_near: requires");
+    let r = match round_sqrt_near_steps(x, guess).0 {
+        Some(r) => r,
+        None => round_sqrt(x),
+    };
+    #[cfg(feature = "contract-checks")]
+    assert!(super::contracts::round_sqrt_ensures(x, r), "round_sqrt_near: ensures");
+    r
+}
+
+/// Records the iterations of [`round_sqrt_near`]'s loop on `x` from
+/// `guess` (`loop-counters`): its callers call it, since a `const fn`
+/// cannot record.
+#[cfg(feature = "loop-counters")]
+pub fn record_isqrt_near(x: u128, guess: u128) {
+    crate::loop_counters::ISQRT_NEAR.record(round_sqrt_near_steps(x, guess).1);
+}
+
+/// The steps of [`round_sqrt_near`] from `guess`: the rounded root, or
+/// `None` when [`NEAR_STEPS`] corrections do not reach it (or `x ≥ 2^62`),
+/// with the iterations of the loop (at most `NEAR_STEPS + 1`).
+const fn round_sqrt_near_steps(x: u128, guess: u128) -> (Option<u128>, u32) {
+    if x >= super::contracts::SQRT_LIMIT {
+        return (None, 0);
+    }
+    // Lossless: x < 2^62.
+    #[allow(clippy::cast_possible_truncation)]
+    let x = x as u64;
+    // r ≤ 2^31 + NEAR_STEPS: r(r + 1) < 2^63.
+    #[allow(clippy::cast_possible_truncation)]
+    let mut r = if guess > 1 << 31 { 1 << 31 } else { guess as u64 };
+    let mut step = 0;
+    while step <= NEAR_STEPS {
+        step += 1;
+        if r > 0 && r * (r - 1) >= x {
+            r -= 1;
+        } else if r * (r + 1) < x {
+            r += 1;
+        } else {
+            return (Some(r as u128), step);
+        }
+    }
+    (None, step)
+}
+
 /// `num / den` rounded to the nearest integer, ties away from zero (the
 /// reference's `Decimal` quantisation); `0` for a zero divisor, which no
 /// caller passes. Twin: `spec/src/exact.rs`, `round_div`.

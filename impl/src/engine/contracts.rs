@@ -18,8 +18,8 @@
 //! precision: a harness that holds with the kernels holds with the stubs.
 //! The predicates never overflow or panic (checked or widened arithmetic).
 
-/// The arguments `isqrt_floor` and `round_sqrt` are proved for: `x <
-/// 2^62`. Their one caller in the engine, the depth law
+/// The arguments `isqrt_floor`, `round_sqrt` and `round_sqrt_near` are
+/// proved for: `x < 2^62`. Their one caller in the engine, the depth law
 /// (`engine::schedule`), takes `round(√(Δd²·n))` only in the law's phase,
 /// where `Δd·√n ≤ k − d + Δd < 2^31` (Δd and k below 10^9), so `x = Δd²·n
 /// < 2^62`. The kernels compute the root of every `u128` (their Newton
@@ -54,7 +54,8 @@ pub const fn isqrt_floor_ensures(x: u128, s: u128) -> bool {
     below && above
 }
 
-/// `round_sqrt(x) = s`, the integer nearest to `√x`: `(2s - 1)² ≤ 4x <
+/// `round_sqrt(x) = s` (and `round_sqrt_near(x, guess) = s` for every
+/// guess), the integer nearest to `√x`: `(2s - 1)² ≤ 4x <
 /// (2s + 1)²` (for `s ≥ 1`; `s = 0` only for `x = 0`), stated without
 /// overflow as `s(s - 1) < x ≤ s(s + 1)`. Total (no precondition).
 #[must_use]

@@ -18,8 +18,11 @@
 //! ```
 //!
 //! computed level by level in O(1): `round(Δd √n)` is the exact integer
-//! square root of `Δd² n` rounded to nearest ([`round_sqrt`](super::arith::round_sqrt), Newton's
-//! method on the floor root, then one correction), and once the minimum cut
+//! square root of `Δd² n` rounded to nearest, guessed from the level
+//! before and checked by two products
+//! ([`round_sqrt_near`](super::arith::round_sqrt_near); Newton's method,
+//! [`round_sqrt`](super::arith::round_sqrt), only when the guess is more
+//! than a few increments off), and once the minimum cut
 //! takes over (`round(Δd √n) < D(n-1) + m`) the schedule stops taking roots
 //! and adds `m` per level. That is exact:
 //!
@@ -74,7 +77,8 @@
 //! # Work and memory
 //!
 //! * Up front: O(1) plus one square root per rough level in the law phase,
-//!   at most `pass_limit + 1` of them, as in the reference.
+//!   at most `pass_limit + 1` of them, as in the reference (each guessed
+//!   from the level before: no division for most levels).
 //! * Per move: a bounded number of steps. Each pass is a fixed list of at
 //!   most six candidate moves (approach, lead-in, cut, run-out, retract,
 //!   return), of which the zero-length ones are left out once per pass,
@@ -96,7 +100,7 @@ use core::iter::FusedIterator;
 
 use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
-use super::schedule::{formula_levels, law, Schedule};
+use super::schedule::{formula_levels, law_near, Schedule};
 use crate::angle::{StartAngle, StartSpacing};
 use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
@@ -132,6 +136,8 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
     let q2 = q * q;
     let limit = u64::from(c.pass_limit);
     let mut depth = 0_i64;
+    // The last law step, the guess of the next (law_near): Δd to level 1.
+    let mut step = c.first_depth;
     let mut n = 0_u64;
     let mut count = crate::loop_counters::count!(PASS_COUNT);
     // The depth of the level before the last (0 when there are fewer than
@@ -164,7 +170,8 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
             }
             // n ≤ limit + 1 ≤ 2^32: the loop returns once n > limit.
             n += 1;
-            let law = law(q2, n);
+            // depth = round(Δd √(n - 1)) here, reached by `step`.
+            let law = law_near(q, q2, n, depth, step);
             // depth < last < 2^30 and min < 2^30: the sum is below 2^31.
             if law < depth + min {
                 // 0 < rest < 2^30, 1 ≤ min < 2^30: ceil(rest / min) < 2^30.
@@ -180,6 +187,8 @@ fn check_pass_count(c: &G76Cycle) -> Result<PassCount, CycleError> {
                 penultimate = depth;
                 break n;
             }
+            // depth ≤ law < k - d < 2^30.
+            step = law - depth;
             depth = law;
             if n > limit {
                 return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
@@ -471,14 +480,14 @@ fn plan_extremes(
 /// of `max(Δd, Δdmin, 1)` (G78 等距离), which is the minimum-cut phase with
 /// that step.
 fn schedule_of(c: &G76Cycle) -> Schedule {
-    // Δd < 2^30: Δd² < 2^60.
+    // 1 ≤ Δd < 2^30 (validate()): fits u32.
     let q = c.first_depth.unsigned_abs();
     let last = c.thread_height - c.finishing_allowance;
     let min = c.min_cut.max(1);
     let one_at_zero = c.readings.one_rough_at_zero;
     match c.depth_mode {
         DepthMode::Decreasing => Schedule {
-            q2: q * q,
+            q: u32::try_from(q).unwrap_or(u32::MAX),
             min,
             last,
             n: 0,
@@ -488,9 +497,10 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
             // Reading R-DEPTH.
             formula: c.readings.depth_formula,
             law_n: 0,
+            step: i32::try_from(c.first_depth).unwrap_or(i32::MAX),
         },
         DepthMode::Equal => Schedule {
-            q2: q * q,
+            q: u32::try_from(q).unwrap_or(u32::MAX),
             min: c.first_depth.max(min),
             last,
             n: 0,
@@ -499,6 +509,7 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
             one_at_zero,
             formula: false,
             law_n: 0,
+            step: i32::try_from(c.first_depth).unwrap_or(i32::MAX),
         },
     }
 }
@@ -680,9 +691,15 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
             StartSpacing::new(c.starts)
         },
     };
-    let placeholder =
-        Pass { kind: PassKind::Rough, number: 0, start: 1, depth: 0, cut: 0, flank: Flank::Right };
-    let mut moves = G76Moves {
+    let start_major = c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal);
+    // Made in place as the result (a value built first and then moved
+    // into it was copied whole, 600 bytes, once per cycle), with no pass
+    // loaded yet: the first call of `next` finds the walk empty and
+    // `advance` plans the first pass, at start 1 (`start` is the last
+    // start under `pass-major`, so that `advance` moves on to the next
+    // pass rather than to another start of none; the first under
+    // `start-major`).
+    Ok(G76Moves {
         frame,
         schedule: schedule_of(c),
         tool_angle: c.tool_angle,
@@ -696,14 +713,11 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         stage: Stage::Rough { second_pending: false },
         previous: 0,
         number: 0,
-        // Replaced by next_pass below before any use.
-        walk: Walk::new(frame.path(0, 0), placeholder, c.lead, StartAngle::ZERO, a),
-        start: 0,
+        walk: Walk::idle(c.lead),
+        start: if start_major.is_some() { 0 } else { c.starts.saturating_sub(1) },
         rough_passes,
-        start_major: c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal),
-    };
-    moves.next_pass();
-    Ok(moves)
+        start_major,
+    })
 }
 
 impl G76Moves {
@@ -813,10 +827,10 @@ impl G76Moves {
                         Infeed::RightCentre if self.schedule.n % 2 == 0 => (Flank::Centre, self.centre),
                         Infeed::RightCentre => (Flank::Right, right),
                         Infeed::Centre => (Flank::Centre, self.centre),
-                        // |mirror| < 2^31, 0 ≤ right ≤ zc < 2^31.
-                        Infeed::LeftFlank => (Flank::Left, 2 * self.mirror - right),
+                        Infeed::LeftFlank => (Flank::Left, self.shift_on(Flank::Left, right)),
                         Infeed::Alternating if self.schedule.n % 2 == 0 => {
-                            (self.second(), self.shift_on(self.second(), right))
+                            let second = self.second();
+                            (second, self.shift_on(second, right))
                         }
                         Infeed::Alternating => (self.first, self.shift_on(self.first, right)),
                         Infeed::LeftRight => {

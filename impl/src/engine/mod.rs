@@ -7,7 +7,7 @@
 //!
 //! | module | what it holds | its twin in `cycleref-spec` |
 //! | --- | --- | --- |
-//! | [`arith`] | the shared kernels (public for their contracts' proofs): the one `round_div`, the one saturating narrowing, floor and ceiling division, [`isqrt_floor`], [`round_sqrt`] | `spec/src/exact.rs` |
+//! | [`arith`] | the shared kernels (public for their contracts' proofs): the one `round_div`, the one saturating narrowing, floor and ceiling division, [`isqrt_floor`], [`round_sqrt`], [`round_sqrt_near`] | `spec/src/exact.rs` |
 //! | [`contracts`] | the contracts of the kernels of `arith` and of [`mul_tan_round`](crate::tan::mul_tan_round), as predicates | — |
 //! | [`g76`] | the G76 multi-pass threading cycle ([`expand_g76`], [`G76Moves`], [`rough_pass_count`]) | `spec/src/g76.rs` |
 //! | `pass` (private) | one thread pass, shared by G76 and G92: its path from A through the cut and run-out back to A, and the walk that streams it | `spec/src/pass.rs` |
@@ -61,7 +61,7 @@ pub(crate) mod pass;
 pub mod real;
 pub mod schedule;
 
+pub use arith::{isqrt_floor, round_sqrt, round_sqrt_near};
 #[cfg(feature = "loop-counters")]
-pub use arith::record_isqrt;
-pub use arith::{isqrt_floor, round_sqrt};
+pub use arith::{record_isqrt, record_isqrt_near};
 pub use g76::{expand_g76, rough_pass_count, G76Moves};

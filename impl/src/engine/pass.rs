@@ -19,7 +19,7 @@
 use crate::angle::{StartAngle, StartSpacing};
 use crate::engine::arith::{round_div, saturate_i64};
 use crate::lead::Lead;
-use crate::moves::{Motion, Move, Pass, Role};
+use crate::moves::{Flank, Motion, Move, Pass, PassKind, Role};
 use crate::readings::PassEnd;
 use crate::units::Point;
 
@@ -124,10 +124,16 @@ impl Frame {
             }
             PassEnd::Parallel => {
                 // X of the line at the Z of D: X(D) + sink + xf·i·shift/|W|,
-                // rounded as a whole (|W| ≥ 1; every term below 2^34).
-                let num = (i128::from(self.d.x) + i128::from(sink)) * i128::from(self.w_abs)
-                    + (i128::from(self.c_x) - i128::from(self.d.x)) * i128::from(shift);
-                let x = saturate_i64(round_div(num, i128::from(self.w_abs)));
+                // rounded as a whole (|W| ≥ 1; every term below 2^34). On
+                // a straight thread (X of C = X of D, i = 0) the quotient
+                // is exact, X(D) + sink: no division.
+                let x = if self.c_x == self.d.x {
+                    self.d.x + sink
+                } else {
+                    let num = (i128::from(self.d.x) + i128::from(sink)) * i128::from(self.w_abs)
+                        + (i128::from(self.c_x) - i128::from(self.d.x)) * i128::from(shift);
+                    saturate_i64(round_div(num, i128::from(self.w_abs)))
+                };
                 (Point::new(x, self.d.z), self.c_to_d())
             }
             PassEnd::Translated => (Point::new(self.d.x + sink, self.d.z + t * shift), self.c_to_d()),
@@ -211,8 +217,13 @@ pub(crate) struct Walk {
     next: usize,
     /// Number of moves, at most 6.
     len: usize,
-    /// The pass every move carries (its `start` is the current start).
+    /// The pass every move carries, but for its `start`.
     pub(crate) pass: Pass,
+    /// The current start (1-based), the `start` of every move's pass: kept
+    /// apart, so that a new start does not write into `pass` (a 2-byte
+    /// store that each start's first move read back within the pass's
+    /// wider loads: a store-forwarding stall per start).
+    start: u16,
     /// X (the first coordinate) of the end points of the moves that move,
     /// in order (`len` of them).
     x: [i64; 6],
@@ -268,6 +279,7 @@ impl Walk {
             next: 0,
             len: 0,
             pass,
+            start: pass.start,
             x: [0; 6],
             z: [0; 6],
             role: [Role::Return; 6],
@@ -278,12 +290,31 @@ impl Walk {
         walk
     }
 
+    /// A walk with no move, for the lead `lead`: [`Walk::load`] gives it
+    /// its first path.
+    pub(crate) fn idle(lead: Lead) -> Walk {
+        // A placeholder pass, replaced by `load` before any move is made.
+        let pass = Pass { kind: PassKind::Rough, number: 0, start: 1, depth: 0, cut: 0, flank: Flank::Right };
+        Walk {
+            next: 0,
+            len: 0,
+            pass,
+            start: 1,
+            x: [0; 6],
+            z: [0; 6],
+            role: [Role::Return; 6],
+            motion: [RAPID; 6],
+            motions: motions(lead, StartAngle::ZERO),
+        }
+    }
+
     /// Makes this the walk of `path` from `a` for `pass` at `angle`, with
     /// the lead it was made with, as [`Walk::new`] does, in place (a walk returned by value is copied
     /// whole, once per pass).
     #[inline(always)]
     pub(crate) fn load(&mut self, path: PassPath, pass: Pass, angle: StartAngle, a: Point) {
         self.pass = pass;
+        self.start = pass.start;
         set_angle(&mut self.motions, angle);
         self.len = 0;
         self.next = 0;
@@ -335,7 +366,7 @@ impl Walk {
 
     /// The same path again from A, for another start.
     pub(crate) fn restart(&mut self, start: u16, angle: StartAngle) {
-        self.pass.start = start;
+        self.start = start;
         set_angle(&mut self.motions, angle);
         self.next = 0;
     }
@@ -356,6 +387,6 @@ impl Walk {
         let &motion = self.motions.get(usize::from(m))?;
         // i < len ≤ 6.
         self.next = i + 1;
-        Some(Move { motion, to: Point::new(x, z), role, pass: Some(self.pass) })
+        Some(Move { motion, to: Point::new(x, z), role, pass: Some(Pass { start: self.start, ..self.pass }) })
     }
 }

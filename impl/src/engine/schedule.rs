@@ -18,7 +18,7 @@
 
 #[cfg(feature = "loop-counters")]
 use super::arith::record_isqrt;
-use super::arith::round_sqrt;
+use super::arith::{round_sqrt, round_sqrt_near, SQRT_Q32};
 use crate::units::MAX_LENGTH;
 
 /// `round(Δd √n)` with `q2 = Δd²`: `q2 < 2^60`, `n < 2^33`, so the product
@@ -32,11 +32,37 @@ pub(super) fn law(q2: u64, n: u64) -> i64 {
     i64::try_from(root).unwrap_or(i64::MAX)
 }
 
+/// [`law`] at level `n ≥ 1` from the level before, `previous = round(Δd
+/// √(n - 1))` reached by a `step` from its own predecessor: the same value,
+/// from a guess ([`round_sqrt_near`]). The guess is `Δd √n` from a table of
+/// `√n` for the first 32 levels (within a quarter increment), and
+/// `previous + step` beyond (the law's steps shrink by less than one
+/// increment a level there, so the rounded ones by at most about one).
+/// Any `previous` and `step` give the same result; only the speed differs.
+/// `q = Δd < 2^30`, `q2 = Δd²`.
+///
+/// Twin: `spec/src/g76.rs`, `depth_by_law`.
+pub(super) fn law_near(q: u64, q2: u64, n: u64, previous: i64, step: i64) -> i64 {
+    let x = u128::from(q2) * u128::from(n);
+    #[cfg(feature = "loop-counters")]
+    record_isqrt(x);
+    let guess = match usize::try_from(n).ok().and_then(|i| SQRT_Q32.get(i)) {
+        // q < 2^30, √n · 2^32 < 2^35: below 2^65; rounded to nearest.
+        Some(&root) => (u128::from(q) * u128::from(root) + (1 << 31)) >> 32,
+        // A negative guess (not reached) is as good as any other.
+        None => u128::try_from(previous.saturating_add(step)).unwrap_or(0),
+    };
+    #[cfg(feature = "loop-counters")]
+    super::arith::record_isqrt_near(x, guess);
+    let root = round_sqrt_near(x, guess);
+    i64::try_from(root).unwrap_or(i64::MAX)
+}
+
 /// The rough levels, one at a time (see the module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Schedule {
-    /// Δd² (< 2^60).
-    pub(super) q2: u64,
+    /// Δd (< 2^30; [`Schedule::q2`] is Δd²).
+    pub(super) q: u32,
     /// max(Δdmin, 1).
     pub(super) min: i64,
     /// k - d.
@@ -57,6 +83,10 @@ pub struct Schedule {
     /// Under `formula`: `round(Δd √n)` of the last level produced (0
     /// before the first).
     pub(super) law_n: i64,
+    /// The depth the last level by the law added (Δd before the first
+    /// level): only the guess of the next level's root ([`law_near`]),
+    /// which never changes a level (below 2^31: law levels are).
+    pub(super) step: i32,
 }
 
 /// The first `n ≥ 0` with `round(Δd √n) ≥ v`: 0 for `v ≤ 0`, else `⌈(2v -
@@ -134,9 +164,10 @@ impl Schedule {
             && (0..=last).contains(&depth)
             && level <= MAX_LENGTH.unsigned_abs();
         // Δd < 2^30: Δd² < 2^60.
-        let q = first_depth.unsigned_abs();
+        // 1 ≤ Δd ≤ MAX_LENGTH < 2^30 (checked in `ok`).
+        let q = u32::try_from(first_depth).unwrap_or(u32::MAX);
         ok.then_some(Schedule {
-            q2: q * q,
+            q,
             min: min_cut.max(1),
             last,
             n: level,
@@ -145,6 +176,7 @@ impl Schedule {
             one_at_zero: false,
             formula: false,
             law_n: 0,
+            step: i32::try_from(first_depth).unwrap_or(i32::MAX),
         })
     }
 
@@ -156,7 +188,7 @@ impl Schedule {
         let ok = (0..=self.last).contains(&depth) && level <= MAX_LENGTH.unsigned_abs();
         // Under R-DEPTH `formula` the state carries round(Δd √level) (for
         // the levels the schedule makes, within the root's contract).
-        let law_n = if self.formula && level > 0 { law(self.q2, level) } else { 0 };
+        let law_n = if self.formula && level > 0 { law(self.q2(), level) } else { 0 };
         ok.then_some(Schedule { n: level, depth, min_phase, law_n, ..self })
     }
 
@@ -181,23 +213,32 @@ impl Schedule {
             // Reading R-DEPTH `formula`: max(round(Δd √n), round(Δd
             // √(n-1)) + m, D(n-1) + 1); round(Δd √n) < 2^31 (it rises by
             // less than Δd + 1 from round(Δd √(n-1)) ≤ D(n-1) < k - d).
-            let law = law(self.q2, self.n);
+            let law = law(self.q2(), self.n);
             let next = law.max(self.law_n + self.min).max(self.depth + 1);
             self.law_n = law;
             next
         } else if self.min_phase {
             by_min
         } else {
-            let law = law(self.q2, self.n);
+            let law = law_near(u64::from(self.q), self.q2(), self.n, self.depth, i64::from(self.step));
             if law < by_min {
                 self.min_phase = true;
                 by_min
             } else {
+                // depth ≤ law < 2^31 (a level by the law is below k - d).
+                self.step = i32::try_from(law - self.depth).unwrap_or(i32::MAX);
                 law
             }
         };
         self.depth = next.min(self.last);
         Some(self.depth)
+    }
+
+    /// Δd² (< 2^60).
+    #[inline]
+    fn q2(&self) -> u64 {
+        let q = u64::from(self.q);
+        q * q
     }
 
     /// The number of levels produced so far.
