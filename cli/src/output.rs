@@ -338,7 +338,7 @@ fn nc_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units, q: 
             Motion::Thread { lead, start_angle, sync } => {
                 l.xz(t, b"G32 X", m.to, d);
                 l.put(b" ");
-                l.lead(lead);
+                t.lead(l, lead);
                 // Q only where synchronisation starts: on a continuation
                 // block the control ignores it (seed 002, Q rule 2).
                 if sync && !start_angle.is_zero() {
@@ -385,11 +385,36 @@ struct Recent {
     texts: [[u8; 32]; 8],
 }
 
-/// The X and Z texts of [`Recent`].
+/// The X and Z texts of [`Recent`], and the text of the lead last
+/// written with its word (every G32 block of a cycle has the same lead).
 #[derive(Clone, Default)]
 struct NcText {
     x: Recent,
     z: Recent,
+    lead: Option<(cycleref::Lead, [u8; 32], usize)>,
+}
+
+impl NcText {
+    /// Writes the lead word ([`put_lead`]) into `l`, from the kept text
+    /// when it is the same lead.
+    #[inline]
+    fn lead(&mut self, l: &mut Line<'_>, lead: cycleref::Lead) {
+        // Kept only when its text fits in 32 bytes: a word, at most 20
+        // digits, a point and ".0" with at most 8 decimals.
+        if lead.scale > 8 {
+            return l.lead(lead);
+        }
+        let (_, text, len) = match &mut self.lead {
+            Some(kept) if kept.0 == lead => kept,
+            kept => {
+                let mut text = [0; 32];
+                let len = put_lead(&mut text, lead, true);
+                kept.insert((lead, text, len))
+            }
+        };
+        l.buf[l.at..l.at + 32].copy_from_slice(text);
+        l.at += *len;
+    }
 }
 
 impl Recent {
