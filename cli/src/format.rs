@@ -2,7 +2,6 @@
 
 use std::fmt;
 
-use cycleref::units::write_fixed;
 use cycleref::Point;
 use cycleref::{Flank, IncrementSystem, LeadWord, PassKind, Role, StartAngle, Units};
 use cycleref_spec::profile::QUnit;
@@ -34,7 +33,8 @@ const PAIRS: &[u8; 200] = b"\
 8081828384858687888990919293949596979899";
 
 /// Writes the two digits of `d < 100` before `buf[i]`; returns the new start.
-fn pair_before(buf: &mut [u8; FIXED_BUF], i: usize, d: u64) -> usize {
+#[inline]
+fn pair_before(buf: &mut [u8], i: usize, d: u64) -> usize {
     // d < 100 by the callers, so the index is below 200.
     #[allow(clippy::cast_possible_truncation)]
     let at = 2 * (d as usize);
@@ -42,44 +42,78 @@ fn pair_before(buf: &mut [u8; FIXED_BUF], i: usize, d: u64) -> usize {
     i - 2
 }
 
-/// `mag / 10^decimals` as text, with a leading `-` when `negative`, written
-/// at the end of `buf`; the text is returned. `decimals` is at most 40.
-///
-/// Two digits a step (the nc and JSON writers' hot path: every coordinate
-/// of every move goes through it).
-pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mut mag: u64, decimals: u32) -> &[u8] {
-    let mut i = FIXED_BUF;
+/// The length of the text [`put_fixed`] writes: the sign, the digits of
+/// `mag` (at least `decimals + 1` of them: a zero before the point) and
+/// the point when `decimals > 0`. `decimals` is at most 40.
+#[inline]
+#[must_use]
+pub fn fixed_len(negative: bool, mag: u64, decimals: u32) -> usize {
+    let decimals = decimals.min(40);
+    let digits = (mag.checked_ilog10().unwrap_or(0) + 1).max(decimals + 1);
+    usize::from(negative) + digits as usize + usize::from(decimals > 0)
+}
+
+/// Fills `out`, exactly [`fixed_len`] bytes long, with the text of `mag /
+/// 10^decimals` (a leading `-` when `negative`), from its end: two digits
+/// a step.
+#[inline]
+fn fill_fixed(out: &mut [u8], negative: bool, mut mag: u64, decimals: u32) {
+    let mut i = out.len();
     let decimals = decimals.min(40);
     let mut left = decimals;
     while left >= 2 {
-        i = pair_before(buf, i, mag % 100);
+        i = pair_before(out, i, mag % 100);
         mag /= 100;
         left -= 2;
     }
     if left == 1 {
         i -= 1;
-        buf[i] = b'0' + (mag % 10) as u8;
+        out[i] = b'0' + (mag % 10) as u8;
         mag /= 10;
     }
     if decimals > 0 {
         i -= 1;
-        buf[i] = b'.';
+        out[i] = b'.';
     }
     while mag >= 100 {
-        i = pair_before(buf, i, mag % 100);
+        i = pair_before(out, i, mag % 100);
         mag /= 100;
     }
     if mag >= 10 {
-        i = pair_before(buf, i, mag);
+        pair_before(out, i, mag);
     } else {
-        i -= 1;
-        buf[i] = b'0' + mag as u8;
+        out[i - 1] = b'0' + mag as u8;
     }
     if negative {
-        i -= 1;
-        buf[i] = b'-';
+        out[0] = b'-';
     }
-    &buf[i..]
+}
+
+/// Writes `mag / 10^decimals` as text, with a leading `-` when `negative`,
+/// at the start of `out`, and returns its length ([`fixed_len`], at most
+/// [`FIXED_BUF`] − 2). `decimals` is at most 40.
+///
+/// The nc writer's hot path: every coordinate of every move is written by
+/// it straight into the output buffer, the length first, then the digits
+/// from the last, two a step, with no copy after.
+///
+/// # Panics
+///
+/// When `out` is shorter than the text (the callers keep [`FIXED_BUF`]
+/// bytes of room).
+#[inline]
+pub fn put_fixed(out: &mut [u8], negative: bool, mag: u64, decimals: u32) -> usize {
+    let len = fixed_len(negative, mag, decimals);
+    fill_fixed(&mut out[..len], negative, mag, decimals);
+    len
+}
+
+/// `mag / 10^decimals` as text, with a leading `-` when `negative`, written
+/// at the end of `buf`; the text is returned. `decimals` is at most 40.
+pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mag: u64, decimals: u32) -> &[u8] {
+    let start = FIXED_BUF - fixed_len(negative, mag, decimals);
+    fill_fixed(&mut buf[start..], negative, mag, decimals);
+    &buf[start..]
 }
 
 impl Fixed {
@@ -122,83 +156,48 @@ impl EncodeAtEnd for Fixed {
     }
 }
 
-/// How many texts a [`RecentText`] keeps (a power of two).
-const RECENT: usize = 8;
-
-/// The texts last written for the values of one place of a line (the X of
-/// a move, its lead), so that a value written again is copied, not encoded
-/// again: the passes of a thread return to the same retract X, start Z and
-/// end Z, and every G32 block of a cycle has the same lead. Each value has
-/// one place, chosen by its hash (a direct-mapped cache: one comparison a
-/// look-up); a value that finds another in its place takes it.
-#[derive(Clone, Debug)]
-pub struct RecentText<K> {
-    keys: [Option<K>; RECENT],
-    texts: [[u8; FIXED_BUF]; RECENT],
-    starts: [usize; RECENT],
-}
-
-impl<K: EncodeAtEnd> RecentText<K> {
-    /// Nothing written yet.
-    #[must_use]
-    pub fn new() -> RecentText<K> {
-        RecentText { keys: [None; RECENT], texts: [[0; FIXED_BUF]; RECENT], starts: [FIXED_BUF; RECENT] }
-    }
-
-    /// The text of `key`: the one kept if it is the value in its place,
-    /// else its text encoded (and kept there).
-    #[inline]
-    pub fn text(&mut self, key: K) -> &[u8] {
-        // Fibonacci hashing: the top bits of the product spread values that
-        // differ in their low digits over the places.
-        #[allow(clippy::cast_possible_truncation)]
-        let slot =
-            (key.hash().wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - RECENT.trailing_zeros())) as usize;
-        let slot = slot % RECENT;
-        if self.keys[slot] != Some(key) {
-            self.starts[slot] = FIXED_BUF - key.encode_at_end(&mut self.texts[slot]).len();
-            self.keys[slot] = Some(key);
-        }
-        &self.texts[slot][self.starts[slot]..]
-    }
-}
-
-impl<K: EncodeAtEnd> Default for RecentText<K> {
-    fn default() -> Self {
-        RecentText::new()
-    }
-}
-
 /// The lead word as programmed (`F6.0`, `F1.5`, `I20.0`), displayed without
 /// an allocation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LeadText(pub cycleref::Lead);
 
 impl LeadText {
-    /// The text, written into `buf`.
+    /// The text, written at the end of `buf`.
     pub fn encode(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
-        let lead = self.0;
-        // Always with a decimal point: on FANUC a bare value may be read in
-        // other units. Room for ".0" and the letter is kept at the end.
-        let len = {
-            let text = encode_fixed(buf, false, lead.mantissa, lead.scale);
-            text.len()
-        };
-        let mut start = FIXED_BUF - len;
-        if lead.scale == 0 {
-            buf.copy_within(start.., start - 2);
-            buf[FIXED_BUF - 2] = b'.';
-            buf[FIXED_BUF - 1] = b'0';
-            start -= 2;
-        }
-        start -= 1;
-        buf[start] = match lead.word {
+        let mut text = [0; FIXED_BUF];
+        let len = put_lead(&mut text, self.0, true);
+        buf[FIXED_BUF - len..].copy_from_slice(&text[..len]);
+        &buf[FIXED_BUF - len..]
+    }
+}
+
+/// Writes the lead as programmed at the start of `out`, with its word
+/// (`F6.0`, `F1.5`, `I20.0`) when `word`, else its value alone (`6.0`, the
+/// K of a LinuxCNC G33); returns the length (at most [`FIXED_BUF`] − 3,
+/// the lead's scale being at most 40). Always with a decimal point: on
+/// FANUC a bare value may be read in other units.
+///
+/// # Panics
+///
+/// When `out` is shorter than the text (the callers keep [`FIXED_BUF`]
+/// bytes of room).
+#[inline]
+pub fn put_lead(out: &mut [u8], lead: cycleref::Lead, word: bool) -> usize {
+    let mut at = 0;
+    if word {
+        out[0] = match lead.word {
             LeadWord::F => b'F',
             LeadWord::I => b'I',
             LeadWord::K => b'K',
         };
-        &buf[start..]
+        at = 1;
     }
+    at += put_fixed(&mut out[at..], false, lead.mantissa, lead.scale);
+    if lead.scale == 0 {
+        out[at..at + 2].copy_from_slice(b".0");
+        at += 2;
+    }
+    at
 }
 
 impl EncodeAtEnd for LeadText {
@@ -223,13 +222,15 @@ pub fn lead_word(lead: cycleref::Lead) -> String {
     LeadText(lead).to_string()
 }
 
-/// The value of a Q word for `angle` in the profile's unit: whole
+/// The value of a Q word for `angle` in the profile's unit, as `(v,
+/// decimals)`, its text `v / 10^decimals` ([`put_fixed`]): whole
 /// thousandths of a degree, or degrees with the increment system's
 /// decimals (3 at IS-B, 4 at IS-C), rounded to nearest where the exact
 /// angle has more digits (360°/7).
-pub fn q_word(angle: StartAngle, u: Units, q: QUnit) -> String {
+#[must_use]
+pub fn q_value(angle: StartAngle, u: Units, q: QUnit) -> (u64, u32) {
     match q {
-        QUnit::Millidegrees { .. } => angle.rounded_millidegrees().to_string(),
+        QUnit::Millidegrees { .. } => (angle.rounded_millidegrees(), 0),
         QUnit::Degrees { .. } => {
             let decimals: u32 = match u.system {
                 IncrementSystem::IsB => 3,
@@ -238,10 +239,7 @@ pub fn q_word(angle: StartAngle, u: Units, q: QUnit) -> String {
             // Units of 10^-decimals degree: num / den millidegrees × 10^(decimals - 3).
             let scale = u64::from(10_u32.pow(decimals - 3));
             let den = u64::from(angle.den);
-            let v = (2 * u64::from(angle.num) * scale + den) / (2 * den);
-            let mut s = String::new();
-            let _ = write_fixed(&mut s, i128::from(v), decimals);
-            s
+            ((2 * u64::from(angle.num) * scale + den) / (2 * den), decimals)
         }
     }
 }
@@ -283,19 +281,18 @@ pub fn plunge_of(r: Role) -> Option<cycleref::Plunge> {
 }
 
 /// An arc's I (X distance from the start to the centre, as a radius) and K
-/// (Z distance), as written in the nc format: I may need one more decimal
-/// than the increment when X is a diameter and the distance is odd.
-pub fn arc_ik(from: Point, centre: Point, x_factor: i64, units: Units) -> (String, String) {
+/// (Z distance), as written in the nc format: I as `(v, decimals)`, its
+/// text `v / 10^decimals`, with one more decimal than the increment when
+/// X is a diameter and the distance is odd (half an increment: `dx × 5`);
+/// K in increments.
+pub fn arc_ik(from: Point, centre: Point, x_factor: i64, units: Units) -> ((i128, u32), i64) {
     let dx = centre.x - from.x;
     let i = if dx % x_factor == 0 {
-        fixed(dx / x_factor, units)
+        (i128::from(dx / x_factor), units.decimals())
     } else {
-        // Half an increment: print dx * 5 with one more decimal.
-        let mut s = String::new();
-        let _ = write_fixed(&mut s, i128::from(dx) * 5, units.decimals() + 1);
-        s
+        (i128::from(dx) * 5, units.decimals() + 1)
     };
-    (i, fixed(centre.z - from.z, units))
+    (i, centre.z - from.z)
 }
 
 /// Name of a flank position.
@@ -338,43 +335,6 @@ mod tests {
         }
     }
 
-    /// `RecentText` gives the text a fresh encoding gives, whatever came
-    /// before: values that repeat (as a thread's retract X does), values
-    /// that share a place and push each other out, the same value in other
-    /// units, and leads.
-    #[test]
-    fn recent_text_is_the_text_of_the_value_asked_for() {
-        let mm = Units { system: IncrementSystem::IsB, unit: InputUnit::Metric };
-        let inch = Units { system: IncrementSystem::IsC, unit: InputUnit::Inch };
-        let mut recent = RecentText::<Fixed>::new();
-        let mut x = 0x2545_F491_4F6C_DD1D_u64;
-        let pool: Vec<i64> =
-            (0..40).map(|i| (i * 7_919 - 130_000) * if i % 3 == 0 { -1 } else { 1 }).collect();
-        for step in 0..50_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            // Mostly values from a small pool (hits and collisions), some
-            // fresh ones, both units.
-            let v = if step % 5 == 0 { i64::try_from(x >> 1).unwrap() } else { pool[(x % 40) as usize] };
-            let u = if x & (1 << 40) == 0 { mm } else { inch };
-            let want = Fixed::new(v, u).to_string();
-            assert_eq!(std::str::from_utf8(recent.text(Fixed::new(v, u))).unwrap(), want, "{v}");
-        }
-        let mut leads = RecentText::<LeadText>::new();
-        for (word, mantissa, scale, text) in [
-            (LeadWord::F, 6, 0, "F6.0"),
-            (LeadWord::F, 6, 0, "F6.0"),
-            (LeadWord::I, 6, 0, "I6.0"),
-            (LeadWord::F, 60, 1, "F6.0"),
-            (LeadWord::F, 15, 1, "F1.5"),
-            (LeadWord::F, 6, 0, "F6.0"),
-        ] {
-            let got = leads.text(LeadText(Lead { word, mantissa, scale }));
-            assert_eq!(std::str::from_utf8(got).unwrap(), text);
-        }
-    }
-
     /// `encode_fixed` against the standard library's integer formatting:
     /// the integer part `mag / 10^d` and the fraction `mag % 10^d` padded
     /// to `d` digits, for every digit count, both signs, 0 to 19 decimals
@@ -411,5 +371,51 @@ mod tests {
         let mut buf = [0; FIXED_BUF];
         let got = encode_fixed(&mut buf, true, u64::MAX, 40);
         assert_eq!(got, b"-0.0000000000000000000018446744073709551615");
+    }
+
+    proptest::proptest! {
+        /// The nc writer's formatter ([`put_fixed`], in place, and
+        /// [`encode_fixed`], at the end of a buffer) against the general
+        /// one, `cycleref::units::write_fixed` (the standard library's
+        /// formatting over `i128`): any value, with the edges (zero, the
+        /// extremes of `i64`, one increment, values of nines that a carry
+        /// would lengthen: 9.9995 at 4 decimals, 99.999, -0.001), 0 to 38
+        /// decimals; and [`put_lead`] against [`LeadText`]'s text.
+        #[test]
+        fn put_fixed_is_the_general_formatting(
+            v in proptest::prop_oneof![
+                proptest::prelude::any::<i64>(),
+                -2_000_000_i64..2_000_000,
+                proptest::sample::select(vec![
+                    0_i64, 1, -1, 9, 10, 99, 100, 99_995, 999_950, 99_999, -99_999, 9_999_999,
+                    i64::MAX, i64::MIN, i64::MIN + 1, -1_000, 1_000,
+                ]),
+            ],
+            decimals in 0_u32..=38,
+            scale in 0_u32..=6,
+            mantissa in proptest::prop_oneof![0_u64..100_000_000, proptest::prelude::any::<u64>()],
+        ) {
+            let mut want = String::new();
+            cycleref::units::write_fixed(&mut want, i128::from(v), decimals).unwrap();
+            let mut out = [0xAA_u8; FIXED_BUF];
+            let len = put_fixed(&mut out, v < 0, v.unsigned_abs(), decimals);
+            proptest::prop_assert_eq!(std::str::from_utf8(&out[..len]).unwrap(), want.as_str());
+            proptest::prop_assert_eq!(len, fixed_len(v < 0, v.unsigned_abs(), decimals));
+            let mut buf = [0; FIXED_BUF];
+            proptest::prop_assert_eq!(
+                std::str::from_utf8(encode_fixed(&mut buf, v < 0, v.unsigned_abs(), decimals)).unwrap(),
+                want.as_str()
+            );
+            // The lead: its value with a point always, after its word.
+            let lead = Lead { word: LeadWord::F, mantissa, scale };
+            let mut value = String::new();
+            cycleref::units::write_fixed(&mut value, i128::from(mantissa), scale).unwrap();
+            let want = if scale == 0 { format!("F{value}.0") } else { format!("F{value}") };
+            let len = put_lead(&mut out, lead, true);
+            proptest::prop_assert_eq!(std::str::from_utf8(&out[..len]).unwrap(), want.as_str());
+            proptest::prop_assert_eq!(LeadText(lead).to_string(), want.clone());
+            let len = put_lead(&mut out, lead, false);
+            proptest::prop_assert_eq!(std::str::from_utf8(&out[..len]).unwrap(), &want[1..]);
+        }
     }
 }

@@ -17,7 +17,7 @@ use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{Item, PlainMove, Restore};
 
-use crate::format::{arc_ik, flank_name, kind_name, q_word, Fixed, LeadText, RecentText, FIXED_BUF};
+use crate::format::{arc_ik, flank_name, kind_name, put_fixed, put_lead, q_value, Fixed, FIXED_BUF};
 use crate::job::{Cause, Failure, Job};
 use crate::json::ser::JsonSerializer;
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
@@ -74,9 +74,13 @@ pub fn expand<W: Write>(job: &Job, format: Format, out: W) -> Result<(), Failure
             ),
         ));
     }
+    if format == Format::Nc {
+        let mut out = NcOut::new(out);
+        return nc(job, &mut out).and_then(|()| out.flush()).map_err(|e| Failure::output(&e));
+    }
     let mut out = io::BufWriter::with_capacity(1 << 16, out);
     let written = match format {
-        Format::Nc => nc(job, &mut out),
+        Format::Nc => unreachable!("written above"),
         Format::Json => json(job, summary.units, &mut out),
         Format::Jsonl => jsonl(job, summary.units, &mut out),
     };
@@ -122,7 +126,11 @@ fn after_motion(w: &cycleref_spec::lex::Word<'_>) -> bool {
 /// motion or before it, in the block's order, as a block of their own
 /// (reading R-AUXWORDS): a cycle is replaced by its moves, and these words
 /// are kept where the control executes them.
-fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: bool) -> io::Result<()> {
+fn nc_aux<W: Write>(
+    out: &mut NcOut<W>,
+    block: &cycleref_spec::lex::Block<'_>,
+    after: bool,
+) -> io::Result<()> {
     let mut first = true;
     for w in block.words.iter().filter(|w| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after) {
         if !first {
@@ -138,24 +146,21 @@ fn nc_aux<W: Write>(out: &mut W, block: &cycleref_spec::lex::Block<'_>, after: b
     }
 }
 
-fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
-    let t = &mut NcText::default();
+fn nc<W: Write>(job: &Job, out: &mut NcOut<W>) -> io::Result<()> {
     // The readings in force that differ from the defaults (issue 34),
     // named under each cycle's heading; empty under the defaults.
     let readings: Vec<String> =
         crate::job::readings_in_force(&job.machine).iter().map(|(id, v)| format!("{id}={v}")).collect();
     let readings = readings.join(", ");
+    let front_post = job.machine.readings.arc_names == cycleref_spec::readings::ArcNames::FrontPost;
+    let t = &mut NcText::default();
     each_item(job, |item| {
         let cycle = Cycle::of(item);
         match item {
-            Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => {
-                out.write_all(&b.text)?;
-                return out.write_all(b"\n");
-            }
+            Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => return out.text_line(&b.text),
             _ => nc_aux(out, item.block(), false)?,
         }
         if let Some(cycle) = cycle {
-            let front_post = job.machine.readings.arc_names == cycleref_spec::readings::ArcNames::FrontPost;
             nc_cycle(out, t, cycle, moves(job, cycle)?, (job.q_unit, front_post), &readings)?;
         }
         nc_aux(out, item.block(), true)
@@ -165,12 +170,13 @@ fn nc<W: Write>(job: &Job, out: &mut W) -> io::Result<()> {
 /// The NC blocks of one cycle (the `nc` format contract, in the README):
 /// its heading, its moves in its words ([`MoveWords`]), each pass, start,
 /// plunge and contour announced by a comment as the cycle's style asks
-/// ([`NcStyle`]), then what restores the modal state the cycle changed.
-/// `readings` (the non-default readings, `ID=VALUE, …`) is named on a
-/// comment line after the heading when it is not empty; `front_post`:
-/// reading R-G75ARC `front-post` (G02/G03 exchanged).
+/// ([`NcStyle`](cycleref_spec::cycles::NcStyle)), then what restores the
+/// modal state the cycle changed. `readings` (the non-default readings,
+/// `ID=VALUE, …`) is named on a comment line after the heading when it is
+/// not empty; `front_post`: reading R-G75ARC `front-post` (G02/G03
+/// exchanged).
 fn nc_cycle<W: Write>(
-    out: &mut W,
+    out: &mut NcOut<W>,
     t: &mut NcText,
     cycle: Cycle<'_, '_>,
     moves: Moves,
@@ -196,18 +202,28 @@ fn nc_cycle<W: Write>(
             if let Role::Peck(p) = m.role {
                 if plunge != Some(p) {
                     plunge = Some(p);
-                    writeln!(out, "(layer {} plunge {})", p.layer, p.number)?;
+                    out.line(|l| {
+                        l.put(b"(layer ");
+                        l.number(u64::from(p.layer));
+                        l.put(b" plunge ");
+                        l.number(u64::from(p.number));
+                        l.put(b")\n");
+                    })?;
                 }
             }
         }
         if style.contours {
-            let name = match m.role {
+            let name: Option<&'static str> = match m.role {
                 Role::RoughContour => Some("rough contour"),
                 Role::FinishContour => Some("finishing contour"),
                 _ => None,
             };
             if let Some(n) = name.filter(|_| name != contour) {
-                writeln!(out, "({n})")?;
+                out.line(|l| {
+                    l.put(b"(");
+                    l.put(n.as_bytes());
+                    l.put(b")\n");
+                })?;
             }
             contour = name;
         }
@@ -224,7 +240,7 @@ fn nc_cycle<W: Write>(
 /// The comment before the first move of a pass, in `style`, when the pass
 /// differs from `last` (the pass of the previous comment).
 fn nc_pass_comment<W: Write>(
-    out: &mut W,
+    out: &mut NcOut<W>,
     style: PassComment,
     p: cycleref::Pass,
     last: &mut Option<(PassKind, u32, u16)>,
@@ -240,133 +256,354 @@ fn nc_pass_comment<W: Write>(
         return Ok(());
     }
     *last = Some(key);
-    match style {
-        PassComment::None => Ok(()),
+    let d = u.decimals();
+    out.line(|l| match style {
+        PassComment::None => {}
         PassComment::Full => {
             // `(rough 1 start 1 depth 1.800 cut 1.800)`
-            out.write_all(b"(")?;
-            out.write_all(kind_name(p.kind).as_bytes())?;
-            out.write_all(b" ")?;
-            write_number(out, u64::from(p.number))?;
-            out.write_all(b" start ")?;
-            write_number(out, u64::from(p.start))?;
-            out.write_all(b" depth ")?;
-            write_fixed(out, Fixed::new(p.depth, u))?;
-            out.write_all(b" cut ")?;
-            write_fixed(out, Fixed::new(p.cut, u))?;
-            out.write_all(b")\n")
+            l.put(b"(");
+            l.put(kind_name(p.kind).as_bytes());
+            l.put(b" ");
+            l.number(u64::from(p.number));
+            l.put(b" start ");
+            l.number(u64::from(p.start));
+            l.put(b" depth ");
+            l.fixed(p.depth, d);
+            l.put(b" cut ");
+            l.fixed(p.cut, d);
+            l.put(b")\n");
         }
         PassComment::Numbered => {
-            let kind = if p.kind == PassKind::Rough { "pass" } else { "full depth" };
-            writeln!(out, "({kind} {})", p.number)
+            l.put(if p.kind == PassKind::Rough { b"(pass " } else { b"(full depth " });
+            l.number(u64::from(p.number));
+            l.put(b")\n");
         }
-        PassComment::Starts => writeln!(out, "(start {})", p.start),
-    }
+        PassComment::Starts => {
+            l.put(b"(start ");
+            l.number(u64::from(p.start));
+            l.put(b")\n");
+        }
+    })
 }
 
 /// One move in LinuxCNC's words: `G33 X Z K` for a synchronised move (K
 /// the distance per revolution along it, R-LCNC-SYNC), else as
 /// [`nc_move`] writes it (LinuxCNC reads G00 as G0).
-fn nc_g33_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units) -> io::Result<()> {
+fn nc_g33_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units) -> io::Result<()> {
     let Motion::Thread { lead, .. } = m.motion else {
         return nc_move(out, t, m, u, QUnit::Degrees { wrap: false });
     };
-    xz(out, t, b"G33 ", m.to, u)?;
-    let text = t.lead.text(LeadText(lead));
-    // The lead's text is "F…": K carries the same value.
-    out.write_all(b" K")?;
-    out.write_all(&text[1..])?;
-    out.write_all(b"\n")
+    out.line(|l| {
+        l.xz(t, b"G33 X", m.to, u.decimals());
+        // The lead's value, in the word K.
+        l.put(b" K");
+        l.lead_value(lead);
+        l.put(b"\n");
+    })
 }
 
 /// One G75.1 move: arcs with I/K, the rest as [`nc_move`]. Reading
 /// R-G75ARC: G02 for an arc clockwise seen with +Z right and +X up
 /// (`rear-post`), the codes exchanged under `front-post`.
 fn nc_groove_move<W: Write>(
-    out: &mut W,
+    out: &mut NcOut<W>,
     t: &mut NcText,
     m: &Move,
     from: Point,
     (x_factor, front_post): (i64, bool),
     u: Units,
 ) -> io::Result<()> {
-    if let Motion::Arc { centre, clockwise } = m.motion {
-        let (i, k) = arc_ik(from, centre, x_factor, u);
-        let g = if clockwise != front_post { "G02" } else { "G03" };
-        writeln!(out, "{g} X{} Z{} I{i} K{k}", Fixed::new(m.to.x, u), Fixed::new(m.to.z, u))
-    } else {
-        nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true })
-    }
-}
-
-/// Writes `v`'s text (the hot path of the nc writer: the number is encoded
-/// on the stack and handed to the buffered writer, whose short writes are
-/// copies into its buffer; no formatting machinery, no line assembled
-/// first).
-fn write_fixed<W: Write>(out: &mut W, v: Fixed) -> io::Result<()> {
-    let mut buf = [0; FIXED_BUF];
-    out.write_all(v.encode(&mut buf))
-}
-
-/// Writes `v` in decimal.
-fn write_number<W: Write>(out: &mut W, v: u64) -> io::Result<()> {
-    let mut buf = [0; FIXED_BUF];
-    out.write_all(crate::format::encode_fixed(&mut buf, false, v, 0))
-}
-
-/// The texts the nc writer wrote last for the X and Z of a move and for a
-/// lead ([`RecentText`]): most moves of a thread return to an X or a Z
-/// written before, and every G32 block of a cycle has the same lead.
-#[derive(Default)]
-struct NcText {
-    x: RecentText<Fixed>,
-    z: RecentText<Fixed>,
-    lead: RecentText<LeadText>,
-}
-
-/// Appends `head`, then `X` and `Z` of `to`.
-#[inline]
-fn xz<W: Write>(out: &mut W, t: &mut NcText, head: &[u8], to: Point, u: Units) -> io::Result<()> {
-    out.write_all(head)?;
-    out.write_all(b"X")?;
-    out.write_all(t.x.text(Fixed::new(to.x, u)))?;
-    out.write_all(b" Z")?;
-    out.write_all(t.z.text(Fixed::new(to.z, u)))
+    let Motion::Arc { centre, clockwise } = m.motion else {
+        return nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true });
+    };
+    let d = u.decimals();
+    let ((i, i_decimals), k) = arc_ik(from, centre, x_factor, u);
+    out.line(|l| {
+        l.xz(t, if clockwise != front_post { b"G02 X" } else { b"G03 X" }, m.to, d);
+        l.put(b" I");
+        l.fixed_wide(i, i_decimals);
+        l.put(b" K");
+        l.fixed(k, d);
+        l.put(b"\n");
+    })
 }
 
 /// One move as an NC block.
-fn nc_move<W: Write>(out: &mut W, t: &mut NcText, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
-    match m.motion {
-        Motion::Rapid => xz(out, t, b"G00 ", m.to, u)?,
-        Motion::Feed => xz(out, t, b"G01 ", m.to, u)?,
-        Motion::Thread { lead, start_angle, sync } => {
-            xz(out, t, b"G32 ", m.to, u)?;
-            out.write_all(b" ")?;
-            out.write_all(t.lead.text(LeadText(lead)))?;
-            // Q only where synchronisation starts: on a continuation block
-            // the control ignores it (seed 002, Q rule 2).
-            if sync && !start_angle.is_zero() {
-                out.write_all(b" Q")?;
-                out.write_all(q_word(start_angle, u, q).as_bytes())?;
+fn nc_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
+    let d = u.decimals();
+    out.line(|l| {
+        match m.motion {
+            Motion::Rapid => l.xz(t, b"G00 X", m.to, d),
+            Motion::Feed => l.xz(t, b"G01 X", m.to, d),
+            Motion::Thread { lead, start_angle, sync } => {
+                l.xz(t, b"G32 X", m.to, d);
+                l.put(b" ");
+                t.lead(l, lead);
+                // Q only where synchronisation starts: on a continuation
+                // block the control ignores it (seed 002, Q rule 2).
+                if sync && !start_angle.is_zero() {
+                    l.put(b" Q");
+                    let (v, decimals) = q_value(start_angle, u, q);
+                    l.unsigned(v, decimals);
+                }
+            }
+            Motion::Arc { centre, clockwise } => {
+                // Without the start point the centre is written absolute.
+                l.xz(t, if clockwise { b"G02 X" } else { b"G03 X" }, m.to, d);
+                l.put(b" (centre X");
+                l.fixed(centre.x, d);
+                l.put(b" Z");
+                l.fixed(centre.z, d);
+                l.put(b")");
             }
         }
-        Motion::Arc { centre, clockwise } => {
-            // Without the start point the centre is written absolute.
-            xz(out, t, if clockwise { b"G02 " } else { b"G03 " }, m.to, u)?;
-            out.write_all(b" (centre X")?;
-            write_fixed(out, Fixed::new(centre.x, u))?;
-            out.write_all(b" Z")?;
-            write_fixed(out, Fixed::new(centre.z, u))?;
-            out.write_all(b")")?;
-        }
-    }
-    out.write_all(b"\n")
+        l.put(b"\n");
+    })
 }
 
-fn restore<W: Write>(out: &mut W, r: Restore) -> io::Result<()> {
+fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
     match r.motion {
-        Some(g) => writeln!(out, "{}", g.code()),
+        Some(g) => out.line(|l| {
+            l.put(g.code().as_bytes());
+            l.put(b"\n");
+        }),
         None => Ok(()),
+    }
+}
+
+/// The texts the nc writer wrote last for the X or the Z of a move (a
+/// thread's passes return to the same retract X and start and end Z: most
+/// coordinates were written before): eight places, each value in the one
+/// its hash chooses (one comparison a look-up); a value that finds
+/// another in its place takes it. A text is kept at the start of 32 bytes
+/// and copied whole (a copy of constant length, no call), the line then
+/// advanced by its length.
+#[derive(Clone, Default)]
+struct Recent {
+    keys: [Option<(i64, u32)>; 8],
+    lens: [usize; 8],
+    texts: [[u8; 32]; 8],
+}
+
+/// The X and Z texts of [`Recent`], and the text of the lead last
+/// written with its word (every G32 block of a cycle has the same lead).
+#[derive(Clone, Default)]
+struct NcText {
+    x: Recent,
+    z: Recent,
+    lead: Option<(cycleref::Lead, [u8; 32], usize)>,
+}
+
+impl NcText {
+    /// Writes the lead word ([`put_lead`]) into `l`, from the kept text
+    /// when it is the same lead.
+    #[inline]
+    fn lead(&mut self, l: &mut Line<'_>, lead: cycleref::Lead) {
+        // Kept only when its text fits in 32 bytes: a word, at most 20
+        // digits, a point and ".0" with at most 8 decimals.
+        if lead.scale > 8 {
+            return l.lead(lead);
+        }
+        let (_, text, len) = match &mut self.lead {
+            Some(kept) if kept.0 == lead => kept,
+            kept => {
+                let mut text = [0; 32];
+                let len = put_lead(&mut text, lead, true);
+                kept.insert((lead, text, len))
+            }
+        };
+        l.buf[l.at..l.at + 32].copy_from_slice(text);
+        l.at += *len;
+    }
+}
+
+impl Recent {
+    /// Writes `v` with `decimals` into `l`, from the kept text when it is
+    /// there.
+    #[inline]
+    fn put(&mut self, l: &mut Line<'_>, v: i64, decimals: u32) {
+        // A text longer than 32 bytes is never kept (decimals above 9;
+        // the increment systems have at most 5).
+        if decimals > 9 {
+            return l.fixed(v, decimals);
+        }
+        // Fibonacci hashing: the top bits of the product spread values
+        // that differ in their low digits over the places.
+        #[allow(clippy::cast_possible_truncation)]
+        let slot =
+            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 61) as usize;
+        let slot = slot % 8;
+        if self.keys[slot] != Some((v, decimals)) {
+            // At most 1 + 19 + 1 + 9 = 30 bytes.
+            self.lens[slot] = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
+            self.keys[slot] = Some((v, decimals));
+        }
+        l.buf[l.at..l.at + 32].copy_from_slice(&self.texts[slot]);
+        l.at += self.lens[slot];
+    }
+}
+
+/// How many bytes the nc writer gathers before it hands them to its
+/// output.
+const NC_CAPACITY: usize = 1 << 16;
+
+/// The room a line written by [`NcOut::line`] may take: the longest, a
+/// G02 with a centre or an arc with I and K, has four numbers of at most
+/// [`FIXED_BUF`] bytes each and fewer than 40 other bytes.
+const LINE_ROOM: usize = 8 * FIXED_BUF;
+
+/// The nc writer's buffered output (the hot path of `expand`: about six
+/// lines a cycle's pass, a move a line). Each line is written straight
+/// into the buffer by [`NcOut::line`], its numbers by
+/// [`put_fixed`](crate::format::put_fixed) in place, so that a move is
+/// one bounds check and no copy; other text goes through [`Write`]. The
+/// buffer is handed on when it holds more than [`NC_CAPACITY`] bytes, and
+/// when dropped (as `BufWriter` does: what was written before a failure
+/// of the reader still reaches the output).
+struct NcOut<W: Write> {
+    inner: W,
+    /// [`NC_CAPACITY`] bytes and the room of one line more.
+    buf: Box<[u8]>,
+    /// The bytes of `buf` written.
+    len: usize,
+}
+
+impl<W: Write> NcOut<W> {
+    fn new(inner: W) -> NcOut<W> {
+        NcOut { inner, buf: vec![0; NC_CAPACITY + LINE_ROOM].into_boxed_slice(), len: 0 }
+    }
+
+    /// Hands the bytes written to the output.
+    fn flush_buf(&mut self) -> io::Result<()> {
+        let len = std::mem::take(&mut self.len);
+        self.inner.write_all(&self.buf[..len])
+    }
+
+    /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place.
+    #[inline]
+    fn line(&mut self, f: impl FnOnce(&mut Line<'_>)) -> io::Result<()> {
+        if self.len > NC_CAPACITY {
+            self.flush_buf()?;
+        }
+        // At least LINE_ROOM bytes of room from `len` on.
+        let mut line = Line { buf: &mut self.buf[..], at: self.len };
+        f(&mut line);
+        self.len = line.at;
+        Ok(())
+    }
+
+    /// Writes `text` and a line end (a block of the program as it is).
+    #[inline]
+    fn text_line(&mut self, text: &[u8]) -> io::Result<()> {
+        if text.len() < LINE_ROOM {
+            self.line(|l| {
+                l.put(text);
+                l.put(b"\n");
+            })
+        } else {
+            self.write_all(text)?;
+            self.write_all(b"\n")
+        }
+    }
+}
+
+impl<W: Write> Write for NcOut<W> {
+    fn write(&mut self, bytes: &[u8]) -> io::Result<usize> {
+        self.write_all(bytes)?;
+        Ok(bytes.len())
+    }
+
+    #[inline]
+    fn write_all(&mut self, bytes: &[u8]) -> io::Result<()> {
+        if self.len + bytes.len() > self.buf.len() {
+            self.flush_buf()?;
+            if bytes.len() > NC_CAPACITY {
+                return self.inner.write_all(bytes);
+            }
+        }
+        self.buf[self.len..self.len + bytes.len()].copy_from_slice(bytes);
+        self.len += bytes.len();
+        Ok(())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.flush_buf()?;
+        self.inner.flush()
+    }
+}
+
+impl<W: Write> Drop for NcOut<W> {
+    fn drop(&mut self) {
+        // As BufWriter: an error here has no one to be reported to (the
+        // run's own error, if any, is reported).
+        let _ = self.flush_buf();
+    }
+}
+
+/// One line being written into [`NcOut`]'s buffer, from `at` on.
+struct Line<'b> {
+    buf: &'b mut [u8],
+    at: usize,
+}
+
+impl Line<'_> {
+    #[inline]
+    fn put(&mut self, bytes: &[u8]) {
+        self.buf[self.at..self.at + bytes.len()].copy_from_slice(bytes);
+        self.at += bytes.len();
+    }
+
+    /// `v` increments with `decimals` decimals.
+    #[inline]
+    fn fixed(&mut self, v: i64, decimals: u32) {
+        self.at += put_fixed(&mut self.buf[self.at..], v < 0, v.unsigned_abs(), decimals);
+    }
+
+    /// `v / 10^decimals`.
+    #[inline]
+    fn unsigned(&mut self, v: u64, decimals: u32) {
+        self.at += put_fixed(&mut self.buf[self.at..], false, v, decimals);
+    }
+
+    /// `v` in decimal.
+    #[inline]
+    fn number(&mut self, v: u64) {
+        self.unsigned(v, 0);
+    }
+
+    /// `v / 10^decimals`, where `v` may be wider than 64 bits (an arc's I
+    /// of half an increment, ×5 with one decimal more).
+    fn fixed_wide(&mut self, v: i128, decimals: u32) {
+        match u64::try_from(v.unsigned_abs()) {
+            Ok(mag) => self.at += put_fixed(&mut self.buf[self.at..], v < 0, mag, decimals),
+            Err(_) => {
+                let mut s = String::new();
+                let _ = cycleref::units::write_fixed(&mut s, v, decimals);
+                self.put(s.as_bytes());
+            }
+        }
+    }
+
+    /// `head` (`G00 X`), then X and Z of `to` with `decimals` (their
+    /// texts through `t`).
+    #[inline]
+    fn xz(&mut self, t: &mut NcText, head: &[u8], to: Point, decimals: u32) {
+        self.put(head);
+        t.x.put(self, to.x, decimals);
+        self.put(b" Z");
+        t.z.put(self, to.z, decimals);
+    }
+
+    /// The lead's value as programmed (`6.0`, `1.5`: [`put_lead`]).
+    #[inline]
+    fn lead_value(&mut self, lead: cycleref::Lead) {
+        self.at += put_lead(&mut self.buf[self.at..], lead, false);
+    }
+
+    /// The lead word as programmed (`F6.0`, `I20.0`: [`put_lead`]).
+    #[inline]
+    fn lead(&mut self, lead: cycleref::Lead) {
+        self.at += put_lead(&mut self.buf[self.at..], lead, true);
     }
 }
 
