@@ -126,13 +126,24 @@ fn after_motion(w: &cycleref_spec::lex::Word<'_>) -> bool {
 /// motion or before it, in the block's order, as a block of their own
 /// (reading R-AUXWORDS): a cycle is replaced by its moves, and these words
 /// are kept where the control executes them.
+///
+/// Before the motion of a LinuxCNC G76 block (`x_mode_words`), its G7 or
+/// G8 comes first: the X mode the cycle was read in (a G7/G8 that changes
+/// it is read under R-LCNC-G7 `as-interpreter`; one that does not is kept
+/// as written), so that the expansion read again is in the same mode.
 fn nc_aux<W: Write>(
     out: &mut NcOut<W>,
     block: &cycleref_spec::lex::Block<'_>,
     after: bool,
+    x_mode_words: bool,
 ) -> io::Result<()> {
     let mut first = true;
-    for w in block.words.iter().filter(|w| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after) {
+    let x_mode = |w: &&cycleref_spec::lex::Word<'_>| {
+        x_mode_words && !after && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
+    };
+    let aux =
+        |w: &&cycleref_spec::lex::Word<'_>| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after;
+    for w in block.words.iter().filter(x_mode).chain(block.words.iter().filter(aux)) {
         if !first {
             out.write_all(b" ")?;
         }
@@ -158,12 +169,12 @@ fn nc<W: Write>(job: &Job, out: &mut NcOut<W>) -> io::Result<()> {
         let cycle = Cycle::of(item);
         match item {
             Item::Source(b) | Item::Move(PlainMove { block: b, .. }) => return out.text_line(&b.text),
-            _ => nc_aux(out, item.block(), false)?,
+            _ => nc_aux(out, item.block(), false, matches!(item, Item::LinuxCncG76(_)))?,
         }
         if let Some(cycle) = cycle {
             nc_cycle(out, t, cycle, moves(job, cycle)?, (job.q_unit, front_post), &readings)?;
         }
-        nc_aux(out, item.block(), true)
+        nc_aux(out, item.block(), true, false)
     })
 }
 

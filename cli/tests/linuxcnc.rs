@@ -440,3 +440,61 @@ fn semicolon_comments_as_linuxcnc_reads_them() {
     assert!(out.stdout.is_empty());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// R-LCNC-G7 `as-interpreter`: a G7 or G8 that changes the X mode in the
+/// G76 block is cut as LinuxCNC cuts it (I, J and K halved once more
+/// switching to G7, doubled switching to G8; interp_convert.cc
+/// l.2773-2777), `check` agrees with rs274's output, and the expansion
+/// keeps the G7/G8 before its moves, so LinuxCNC cuts the expansion the
+/// same and it expands to itself. Under the default the block is refused.
+#[test]
+fn x_mode_switch_in_g76_as_linuxcnc_cuts_it() {
+    if !rs274_installed() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("cycleref-lcnc-g7-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    for (name, program, first) in [
+        ("to7", "G18 G8 G21\nG0 X10 Z2\nM3 S500\nG7 G76 P1.5 Z-10 I-2 J0.6 K1.84\nM2\n", "G7\n"),
+        ("to8", "G18 G7 G21\nG0 X20 Z2\nM3 S500\nG8 G76 P1.5 Z-10 I-1 J0.3 K0.92\nM2\n", "G8\n"),
+    ] {
+        let file = dir.join(format!("{name}.ngc"));
+        std::fs::write(&file, program).expect("write");
+        let canon = dir.join(format!("{name}.canon"));
+        std::fs::write(&canon, rs274_output(&file)).expect("write");
+        let f = file.to_string_lossy();
+        let c = canon.to_string_lossy();
+        let reading = ["--reading", "R-LCNC-G7=as-interpreter"];
+        let out = run(
+            &[
+                "check",
+                "--profile",
+                "linuxcnc",
+                reading[0],
+                reading[1],
+                "--tolerance",
+                "1",
+                &f,
+                "--trace",
+                &c,
+            ],
+            None,
+        );
+        let report = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success(), "{report}{}", String::from_utf8_lossy(&out.stderr));
+        assert!(report.starts_with("AGREE: 17 moves"), "{report}");
+        let nc = stdout(&["expand", "--profile", "linuxcnc", reading[0], reading[1], &f]);
+        assert!(nc.contains(&format!("M3 S500\n{first}(G76 line 4")), "{nc}");
+        let expanded = dir.join(format!("{name}-expanded.ngc"));
+        std::fs::write(&expanded, &nc).expect("write");
+        let motions = |p: &std::path::Path| -> Vec<_> {
+            rs274_motions(p).into_iter().map(|m| (m.rapid, m.x, m.z, m.pitch)).collect()
+        };
+        assert_eq!(motions(&expanded), motions(&file), "{name}");
+        assert_eq!(stdout(&["expand", "--profile", "linuxcnc", &expanded.to_string_lossy()]), nc);
+        let out = run(&["expand", "--profile", "linuxcnc", &f], None);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

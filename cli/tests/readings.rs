@@ -59,7 +59,8 @@ fn readings_lists_one_line_per_reading() {
             "R-G75LAYER",
             "R-G75ARC",
             "R-G75CHAMFER",
-            "R-G75SLOPE"
+            "R-G75SLOPE",
+            "R-LCNC-G7"
         ]
     );
     assert!(all.starts_with("R-RUNOUT\tall-profiles* | gsk988-only\t[fanuc,gsk980]\t"), "{all}");

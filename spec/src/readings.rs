@@ -455,6 +455,21 @@ pub enum G75Slope {
     FallsTowardsD,
 }
 
+/// Reading R-LCNC-G7: a G7 or G8 in a LinuxCNC G76 block that changes the
+/// X mode.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LcncG7 {
+    /// `refuse` (default): the block is refused (program G7/G8 on a line of
+    /// its own): the cycle LinuxCNC cuts is not the one its words describe.
+    #[default]
+    Refuse,
+    /// `as-interpreter`: as LinuxCNC's `convert_lathe_diameter_mode` does
+    /// (interp_convert.cc l.2773-2777): switching to G7 halves I, J and K
+    /// once more before the cycle's own halving (a quarter of the words as
+    /// radii), switching to G8 doubles them.
+    AsInterpreter,
+}
+
 /// Reading R-G75ARC: which code names an arc of G75.1's rounds in the nc
 /// output and in an nc trace `check` reads. An output convention: the
 /// moves (`Motion::Arc`'s `clockwise`, seen with +Z right and +X up) are
@@ -563,6 +578,8 @@ pub struct Readings {
     pub g75_chamfer: G75Chamfer,
     /// R-G75SLOPE: which way the opening slopes.
     pub g75_slope: G75Slope,
+    /// R-LCNC-G7: a G7/G8 that changes the X mode in a G76 block.
+    pub lcnc_g7: LcncG7,
 }
 
 /// One value of a reading: its name and where it comes from.
@@ -1121,6 +1138,21 @@ pub const TABLE: &[ReadingEntry] = &[
         ],
         profiles: &[ProfileName::Gsk980],
     },
+    ReadingEntry {
+        id: "R-LCNC-G7",
+        point: "a G7/G8 that changes the X mode in a G76 block",
+        values: &[
+            ReadingValue {
+                name: "refuse",
+                source: "the cycle LinuxCNC cuts is not the one its words describe: program G7/G8 on its own line",
+            },
+            ReadingValue {
+                name: "as-interpreter",
+                source: "interp_convert.cc l.2773-2777: to G7 halves I, J, K once more (a quarter), to G8 doubles them",
+            },
+        ],
+        profiles: &[ProfileName::LinuxCnc],
+    },
 ];
 
 impl Readings {
@@ -1252,6 +1284,10 @@ impl Readings {
                 G75Slope::RisesTowardsD => "rises-towards-d",
                 G75Slope::FallsTowardsD => "falls-towards-d",
             },
+            "R-LCNC-G7" => match self.lcnc_g7 {
+                LcncG7::Refuse => "refuse",
+                LcncG7::AsInterpreter => "as-interpreter",
+            },
             _ => return None,
         };
         Some(v)
@@ -1342,6 +1378,8 @@ impl Readings {
             ("R-G75CHAMFER", "axial-width") => self.g75_chamfer = G75Chamfer::AxialWidth,
             ("R-G75SLOPE", "rises-towards-d") => self.g75_slope = G75Slope::RisesTowardsD,
             ("R-G75SLOPE", "falls-towards-d") => self.g75_slope = G75Slope::FallsTowardsD,
+            ("R-LCNC-G7", "refuse") => self.lcnc_g7 = LcncG7::Refuse,
+            ("R-LCNC-G7", "as-interpreter") => self.lcnc_g7 = LcncG7::AsInterpreter,
             _ => return Err(bad()),
         }
         Ok(())

@@ -411,7 +411,7 @@ fn unknown_reading_or_value_names_the_valid_ones() {
         e.to_string(),
         "unknown reading `R-NOPE` (the selectable readings are R-RUNOUT, R-XRUNOUT, R-E980, R-END, R-LONG988, \
          R-HIGHSPEED, R-G78LEFT, R-G78CENTRE, R-LEADIN, R-INFEED, R-LCNC-READER, R-G92Q, R-G75ALLOW, R-G75P, R-NOROUGH, R-DEPTH, R-STARTS, R-G92HS-NOK, R-G92HS-NOJ, R-G92JK988, R-G32RUNOUT, R-CHAMFERANGLE, R-MODAL, R-G32LONG, \
-         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC, R-G75CHAMFER, R-G75SLOPE)"
+         R-SIDE, R-G75RIDGE, R-G75PECK, R-SPINDLE, R-G75LAYER, R-G75ARC, R-G75CHAMFER, R-G75SLOPE, R-LCNC-G7)"
     );
     let e = r.apply_pair("R-RUNOUT=sometimes").unwrap_err();
     assert_eq!(e.stable_kind(), "params:bad_reading");
@@ -1906,4 +1906,43 @@ fn g75_slope_falls_alarms() {
         ErrorKind::Cycle(CycleError::CornerTooLarge { edge: GrooveEdge::FlankB })
     );
     assert!(run(&corners("0.401"), &rises).is_ok());
+}
+
+/// R-LCNC-G7: from G8 (radius) at X10 Z2, `G7 G76 P1.5 Z-10 I-2 J0.6
+/// K1.84`; and from G7 (diameter) at X20 Z2, `G8 G76 P1.5 Z-10 I-1 J0.3
+/// K0.92`. Under `as-interpreter` LinuxCNC's `convert_lathe_diameter_mode`
+/// (interp_convert.cc l.2773-2777) halves I, J and K when the block
+/// switches to G7 (then the cycle halves them again as diameters, l.5724-
+/// 5728): as radii I = −0.5, J = 0.15, K = 0.46; pass 1 (depth J) goes out
+/// to X0 + K − J = 10 + 0.31 = 10.31 and in to X0 + I − J = 10 − 0.65 =
+/// 9.35 (radii; `rs274 -g` prints STRAIGHT_TRAVERSE(10.3100, …) then
+/// (9.3500, …)), written in G7 as the diameters 20.62 and 18.70. Switching
+/// to G8 doubles them: I = −2, J = 0.6, K = 1.84 as radii from X10 (radius
+/// of X20): out 10 + 1.24 = 11.24, in 10 − 2.6 = 7.40. The default refuses
+/// both blocks; a word whose half is no increment is refused.
+#[test]
+fn x_mode_switch_in_a_linuxcnc_g76() {
+    let to_g7 = "G18 G8 G21\nG0 X10 Z2\nM3 S500\nG7 G76 P1.5 Z-10 I-2 J0.6 K1.84\nM2\n";
+    let to_g8 = "G18 G7 G21\nG0 X20 Z2\nM3 S500\nG8 G76 P1.5 Z-10 I-1 J0.3 K0.92\nM2\n";
+    let lcnc = machine(ProfileName::LinuxCnc, &[]);
+    for src in [to_g7, to_g8] {
+        let e = read(src, &lcnc).unwrap_err();
+        assert_eq!(e.line, 4);
+        assert!(matches!(e.kind, ErrorKind::Unsupported(_)), "{e}");
+    }
+    let interp = machine(ProfileName::LinuxCnc, &["R-LCNC-G7=as-interpreter"]);
+    // 0.0001 mm increments.
+    let first_two = |src: &str| -> Vec<(Role, Point)> { ends(&run(src, &interp).unwrap())[..2].to_vec() };
+    assert_eq!(
+        first_two(to_g7),
+        [(Role::Approach, Point::new(206_200, 20_000)), (Role::Approach, Point::new(187_000, 20_000))]
+    );
+    assert_eq!(
+        first_two(to_g8),
+        [(Role::Approach, Point::new(112_400, 20_000)), (Role::Approach, Point::new(74_000, 20_000))]
+    );
+    let odd = "G18 G8 G21\nG0 X10 Z2\nM3 S500\nG7 G76 P1.5 Z-10 I-2 J0.0001 K1.84\nM2\n";
+    let e = read(odd, &interp).unwrap_err();
+    assert_eq!((e.line, e.word.as_deref()), (4, Some("J0.0001")), "{e}");
+    assert!(matches!(e.kind, ErrorKind::NotInIncrements { .. }), "{e}");
 }

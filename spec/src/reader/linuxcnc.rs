@@ -14,6 +14,7 @@ use rust_decimal::Decimal;
 use super::{err, G32Call, Item, LinuxCncCall, MotionMode, State};
 use crate::error::{ErrorKind, ProgramError};
 use crate::lex::{Block, Word};
+use crate::readings::LcncG7;
 
 /// The G codes this front end reads (anything else is refused by name).
 const KNOWN: &str =
@@ -100,8 +101,13 @@ impl State<'_> {
             let thread = g33 || (self.lcnc_g33 && motion.is_none() && !g76);
             self.trace_block(&block, cycle_word, m, thread, dwell)?;
         }
+        // Reading R-LCNC-G7 `as-interpreter`: the X mode this block's G76
+        // switches to, whose words LinuxCNC scales once more.
+        let mut switched = None;
         if let Some(m) = mode {
-            if g76 && m != self.x_mode {
+            if g76 && m != self.x_mode && self.machine.readings.lcnc_g7 == LcncG7::AsInterpreter {
+                switched = Some(m);
+            } else if g76 && m != self.x_mode {
                 // Reading R-LCNC-G7.
                 return Err(err(
                     &block,
@@ -109,7 +115,7 @@ impl State<'_> {
                     ErrorKind::Unsupported(
                         "a G7/G8 that changes the X mode in the G76 block (LinuxCNC then scales I, J and K \
                          twice, interp_convert.cc l.2773-2777 and l.5724-5728: program G7/G8 in a block of \
-                         its own)"
+                         its own; or --reading R-LCNC-G7=as-interpreter)"
                             .into(),
                     ),
                 ));
@@ -132,7 +138,7 @@ impl State<'_> {
         }
         let axes = block.has('X') || block.has('Z');
         if g76 || (self.lcnc_g76 && axes) {
-            return self.linuxcnc_g76(block).map(Item::LinuxCncG76);
+            return self.linuxcnc_g76(block, switched).map(Item::LinuxCncG76);
         }
         if g33 || (self.lcnc_g33 && axes) {
             return self.linuxcnc_g33(block, continuing).map(Item::G32);
@@ -280,8 +286,17 @@ impl State<'_> {
         Ok(Lead { word: LeadWord::K, mantissa, scale })
     }
 
-    /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle.
-    fn linuxcnc_g76<'a>(&mut self, block: Block<'a>) -> Result<LinuxCncCall<'a>, ProgramError> {
+    /// `G76 P Z I J R K Q H E L` (X optional), LinuxCNC's threading cycle;
+    /// `switched`: the X mode a G7/G8 of this block switched to under
+    /// R-LCNC-G7 `as-interpreter`, where I, J and K are scaled as
+    /// LinuxCNC's `convert_lathe_diameter_mode` scales them (halved to G7,
+    /// a half increment refused as any length finer than the increment;
+    /// doubled to G8).
+    fn linuxcnc_g76<'a>(
+        &mut self,
+        block: Block<'a>,
+        switched: Option<XMode>,
+    ) -> Result<LinuxCncCall<'a>, ProgramError> {
         self.check_addresses(&block, "G76", "GXZPIJRKQHELMSTF", "")?;
         let (x0, z0) = self.turning_at(&block, "LinuxCNC: \"Chosen spindle (0) not turning in G76\"")?;
         let p = block.get('P')?.ok_or_else(|| {
@@ -319,9 +334,29 @@ impl State<'_> {
                 },
             ));
         }
-        let peak_offset = self.length(&block, i)?;
-        let initial_depth = self.length(&block, j)?;
-        let full_depth = self.length(&block, k)?;
+        let scaled = |w: &Word<'_>, v: i64| -> Result<i64, ProgramError> {
+            match switched {
+                None => Ok(v),
+                // Doubled within i64 (a length is below 2^40); the range
+                // table is the cycle's check (`LinuxCncG76::validate`).
+                Some(XMode::Radius) => v.checked_mul(2).ok_or_else(|| {
+                    err(
+                        &block,
+                        Some(w),
+                        ErrorKind::OutOfRange { range: "a length doubled by G8 (R-LCNC-G7)".into() },
+                    )
+                }),
+                Some(XMode::Diameter) if v % 2 == 0 => Ok(v / 2),
+                Some(XMode::Diameter) => Err(err(
+                    &block,
+                    Some(w),
+                    ErrorKind::NotInIncrements { increment: "the word halved by G7 (R-LCNC-G7)".into() },
+                )),
+            }
+        };
+        let peak_offset = scaled(i, self.length(&block, i)?)?;
+        let initial_depth = scaled(j, self.length(&block, j)?)?;
+        let full_depth = scaled(k, self.length(&block, k)?)?;
         // R: below 1 or absent, 1 (R-LCNC-WORDS, l.5748).
         let degression = match block.get('R')? {
             Some(w) => {
