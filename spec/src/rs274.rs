@@ -806,7 +806,8 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
 /// The call of a line as `rs274 -g` prints its most frequent ones, read
 /// in one pass over its bytes: `<spaces><sequence> N<digits or points>
 /// <name>(<arguments>)`, with one optional `\r` at the end, for a
-/// `STRAIGHT_FEED` or `STRAIGHT_TRAVERSE` of six [`plain_number`]s
+/// `STRAIGHT_FEED` or `STRAIGHT_TRAVERSE` of six plain numbers (a sign, at
+/// most 18 digits and one point, as `rs274` prints them)
 /// separated by `", "`, a `START_SPEED_FEED_SYNC` of two separated by
 /// `","` in constant-pitch mode (the second 0), a
 /// `STOP_SPEED_FEED_SYNCH()`, or a call of [`SKIPPED_CALLS`]; `None` for
