@@ -446,9 +446,18 @@ fn parts(raw: &str) -> Result<Option<(&str, &str)>, NotACall> {
 /// [`parts`]. Where it gives them they are those of [`parts`] (the test
 /// `plain_readings_are_the_general_ones` compares them).
 fn plain_parts(raw: &str) -> Option<(&str, &str)> {
+    let (call, open, close) = plain_span(raw.as_bytes())?;
+    Some((scan::trim(&raw[call..open]), &raw[open + 1..close]))
+}
+
+/// Where [`plain_parts`] finds the call in the bytes `b` of a line: the
+/// offsets of the call's first byte, of its `(` and of the `)` that ends
+/// the line (only ASCII spaces after it). Every byte before the call is
+/// ASCII (spaces, digits, `N` and points), and each offset is that of an
+/// ASCII byte, so a line's text can be cut there.
+fn plain_span(b: &[u8]) -> Option<(usize, usize, usize)> {
     // Only ASCII bytes are looked for, and the bytes of other characters
     // are never ASCII: such a character is taken for none of them.
-    let b = raw.as_bytes();
     let spaces = |mut i: usize| {
         while b.get(i).is_some_and(|&c| scan::is_space(c)) {
             i += 1;
@@ -480,7 +489,7 @@ fn plain_parts(raw: &str) -> Option<(&str, &str)> {
     if close <= open || b[close] != b')' {
         return None;
     }
-    Some((scan::trim(&raw[call..open]), &raw[open + 1..close]))
+    Some((call, open, close))
 }
 
 /// Pushes the arguments `args` (the text between a call's parentheses)
@@ -804,22 +813,20 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
 }
 
 /// The call of a line as `rs274 -g` prints its most frequent ones, read
-/// in one pass over its bytes: `<spaces><sequence> N<digits or points>
-/// <name>(<arguments>)`, with one optional `\r` at the end, for a
-/// `STRAIGHT_FEED` or `STRAIGHT_TRAVERSE` of six plain numbers (a sign, at
-/// most 18 digits and one point, as `rs274` prints them)
-/// separated by `", "`, a `START_SPEED_FEED_SYNC` of two separated by
-/// `","` in constant-pitch mode (the second 0), a
-/// `STOP_SPEED_FEED_SYNCH()`, or a call of [`SKIPPED_CALLS`]; `None` for
-/// any other line, which [`call`] then reads (and is the one that names
-/// every error).
+/// from its bytes by the plain readings [`call`] tries first (the line's
+/// form by `plain_parts`, the arguments by `plain_numbers`): a
+/// `STRAIGHT_FEED` or `STRAIGHT_TRAVERSE` of six plain numbers, a
+/// `START_SPEED_FEED_SYNC` of two or three in constant-pitch mode (the
+/// last 0), a `STOP_SPEED_FEED_SYNCH` or a call of [`SKIPPED_CALLS`] whose
+/// arguments are ASCII; `None` for any other line, which [`call`] then
+/// reads (and is the one that names every error).
 ///
 /// Where it gives a call, the line is ASCII (so valid UTF-8) and the
-/// call is the one [`call`] gives for the same line read as text (the
-/// test `plain_calls_are_the_general_ones` compares them on adversarial
-/// lines). It is given bytes because `check` reads a trace's lines where
-/// they lie in its read buffer, and validating UTF-8 first was a
-/// twentieth of its time on `rs274`'s output.
+/// call is the one [`call`] gives for the same line read as text (by
+/// construction, and by the test `plain_calls_are_the_general_ones` on
+/// adversarial lines). It is given bytes because `check` reads a trace's
+/// lines where they lie in its read buffer, and validating UTF-8 first
+/// was a twentieth of its time on `rs274`'s output.
 ///
 /// ```
 /// use cycleref_spec::rs274::{call, plain_call, CanonCall};
@@ -832,66 +839,30 @@ pub fn call(raw: &str, line: usize) -> Result<Option<CanonCall>, CanonError> {
 /// ```
 #[must_use]
 pub fn plain_call(raw: &[u8]) -> Option<CanonCall> {
-    let b = raw.strip_suffix(b"\r").unwrap_or(raw);
-    let mut i = 0;
-    while b.get(i) == Some(&b' ') {
-        i += 1;
+    // The arguments as `plain_numbers` reads them into `v`, when it does.
+    fn numbers<'v>(args: &[u8], v: &'v mut Args) -> Option<&'v [Decimal]> {
+        let read = plain_numbers(args, v);
+        let v: &'v Args = v;
+        read.then(|| v.kept())
     }
-    let sequence = i;
-    while b.get(i).is_some_and(u8::is_ascii_digit) {
-        i += 1;
-    }
-    if i == sequence || b.get(i) != Some(&b' ') {
-        return None;
-    }
-    while b.get(i) == Some(&b' ') {
-        i += 1;
-    }
-    if b.get(i) != Some(&b'N') {
-        return None;
-    }
-    i += 1;
-    while b.get(i).is_some_and(|&c| c.is_ascii_digit() || c == b'.') {
-        i += 1;
-    }
-    if b.get(i) != Some(&b' ') {
-        return None;
-    }
-    let body = b.get(i + 1..)?.strip_suffix(b")")?;
-    let open = body.iter().position(|&c| c == b'(')?;
-    let (name, args) = (&body[..open], &body[open + 1..]);
-    // Plain numbers separated by a comma (and a space when `spaced`),
-    // as many as `out` holds, and nothing else.
-    let numbers = |spaced: bool, out: &mut [Decimal]| -> Option<()> {
-        let mut at = 0;
-        for (k, slot) in out.iter_mut().enumerate() {
-            if k > 0 {
-                if args.get(at) != Some(&b',') || (spaced && args.get(at + 1) != Some(&b' ')) {
-                    return None;
-                }
-                at += 1 + usize::from(spaced);
-            }
-            *slot = plain_number_at(args, &mut at)?;
-        }
-        (at == args.len()).then_some(())
-    };
+    // The bytes before the call and after its `)` are ASCII (`plain_span`),
+    // the name is one of the ASCII names below, and the arguments are
+    // plain numbers or required ASCII: the whole line is ASCII.
+    let (call, open, close) = plain_span(raw)?;
+    let (name, args) = (raw[call..open].trim_ascii(), &raw[open + 1..close]);
+    let mut v = Args::EMPTY;
     match name {
-        b"STRAIGHT_FEED" | b"STRAIGHT_TRAVERSE" => {
-            let mut v = [Decimal::ZERO; 6];
-            numbers(true, &mut v)?;
-            Some(CanonCall::Motion {
-                rapid: name == b"STRAIGHT_TRAVERSE",
-                x: v[0],
-                z: v[2],
-                others: [v[1], v[3], v[4], v[5]],
-            })
-        }
-        b"START_SPEED_FEED_SYNC" => {
-            let mut v = [Decimal::ZERO; 2];
-            numbers(false, &mut v)?;
-            // Velocity mode is an error, named by `call`.
-            v[1].is_zero().then_some(CanonCall::StartSync { pitch: v[0] })
-        }
+        b"STRAIGHT_FEED" | b"STRAIGHT_TRAVERSE" => match numbers(args, &mut v)? {
+            &[x, y, z, a, b, c] => {
+                Some(CanonCall::Motion { rapid: name == b"STRAIGHT_TRAVERSE", x, z, others: [y, a, b, c] })
+            }
+            _ => None,
+        },
+        b"START_SPEED_FEED_SYNC" => match numbers(args, &mut v)? {
+            // Velocity mode (not 0) is an error, named by `call`.
+            &[pitch, mode] | &[_, pitch, mode] if mode.is_zero() => Some(CanonCall::StartSync { pitch }),
+            _ => None,
+        },
         // The arguments are not read (as by `call`), only required ASCII.
         b"STOP_SPEED_FEED_SYNCH" => args.is_ascii().then_some(CanonCall::StopSync),
         _ => (args.is_ascii() && SKIPPED_CALLS.iter().any(|s| s.as_bytes() == name))

@@ -101,25 +101,26 @@ impl State<'_> {
             let thread = g33 || (self.lcnc_g33 && motion.is_none() && !g76);
             self.trace_block(&block, cycle_word, m, thread, dwell)?;
         }
-        // Reading R-LCNC-G7 `as-interpreter`: the X mode this block's G76
-        // switches to, whose words LinuxCNC scales once more.
-        let mut switched = None;
-        if let Some(m) = mode {
-            if g76 && m != self.x_mode && self.machine.readings.lcnc_g7 == LcncG7::AsInterpreter {
-                switched = Some(m);
-            } else if g76 && m != self.x_mode {
-                // Reading R-LCNC-G7.
-                return Err(err(
+        // Reading R-LCNC-G7: a G7/G8 that changes the X mode in a G76
+        // block is refused, or read as LinuxCNC reads it (`switched`: the
+        // mode switched to, whose G76 words LinuxCNC scales once more).
+        let switched = match mode {
+            Some(m) if g76 && m != self.x_mode => match self.machine.readings.lcnc_g7 {
+                LcncG7::AsInterpreter => Some(m),
+                LcncG7::Refuse => return Err(err(
                     &block,
                     None,
                     ErrorKind::Unsupported(
                         "a G7/G8 that changes the X mode in the G76 block (LinuxCNC then scales I, J and K \
-                         twice, interp_convert.cc l.2773-2777 and l.5724-5728: program G7/G8 in a block of \
-                         its own; or --reading R-LCNC-G7=as-interpreter)"
+                             twice, interp_convert.cc l.2773-2777 and l.5724-5728: program G7/G8 in a block \
+                             of its own; or --reading R-LCNC-G7=as-interpreter)"
                             .into(),
                     ),
-                ));
-            }
+                )),
+            },
+            _ => None,
+        };
+        if let Some(m) = mode {
             self.switch_x_mode(&block, m)?;
         }
         if usize::from(g76) + usize::from(g33) + usize::from(motion.is_some()) > 1 {
