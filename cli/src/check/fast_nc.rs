@@ -33,6 +33,10 @@ use super::{Context, Kind, Step};
 /// The most F texts whose leads are kept (a trace has a few leads).
 const LEADS: usize = 8;
 
+/// 10 to the power of its index (a length's scale, at most its decimals).
+const POW10: [i64; 10] =
+    [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000, 10_000_000, 100_000_000, 1_000_000_000];
+
 /// The most bytes of an F word taken here (its letter included).
 const F_BYTES: usize = 16;
 
@@ -123,72 +127,93 @@ impl FastNc {
         self.leads.iter().find(|(t, _)| t.as_bytes() == f).map(|(_, l)| *l)
     }
 
-    /// A length word's number (after its letter) in increments, when it is
-    /// `-`? digits (`.` digits)? within the range tables and the
-    /// increment; else `None`.
-    fn length(&self, s: &[u8]) -> Option<i64> {
-        let (negative, s) = match s.split_first() {
-            Some((b'-', rest)) => (true, rest),
-            _ => (false, s),
-        };
-        let (int, frac) = match s.iter().position(|&b| b == b'.') {
-            Some(p) => (s.get(..p)?, Some(s.get(p + 1..)?)),
-            None => (s, None),
-        };
-        if int.is_empty() || int.len() > 9 || !int.iter().all(u8::is_ascii_digit) {
+    /// A length word's number, from `rest[i]` (after its letter) to the
+    /// first byte that is not a digit or its point, in increments, when it
+    /// is `-`? digits (`.` digits)? within the range tables and the
+    /// increment, and where it ends; else `None`.
+    #[inline(always)]
+    fn length_at(&self, rest: &[u8], mut i: usize) -> Option<(i64, usize)> {
+        let negative = rest.get(i) == Some(&b'-');
+        if negative {
+            i += 1;
+        }
+        // The integer part: 1 to 9 digits.
+        let start = i;
+        let mut whole = 0_i64;
+        while let Some(d) = rest.get(i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9) {
+            if i - start == 9 {
+                return None;
+            }
+            whole = whole * 10 + i64::from(d);
+            i += 1;
+        }
+        if i == start {
             return None;
         }
-        let whole = int.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
-        let v = match frac {
-            None if self.bare_increments => whole,
-            None => whole.checked_mul(self.per_unit)?,
-            Some(frac) => {
-                if frac.is_empty()
-                    || frac.len() > self.decimals as usize
-                    || !frac.iter().all(u8::is_ascii_digit)
-                {
+        let v = if rest.get(i) == Some(&b'.') {
+            // A point and 1 to `decimals` digits.
+            i += 1;
+            let start = i;
+            let mut digits = 0_i64;
+            while let Some(d) = rest.get(i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9) {
+                if i - start == self.decimals as usize {
                     return None;
                 }
-                let digits = frac.iter().fold(0_i64, |v, b| v * 10 + i64::from(b - b'0'));
-                let scale = 10_i64.pow(self.decimals - u32::try_from(frac.len()).ok()?);
-                whole.checked_mul(self.per_unit)?.checked_add(digits * scale)?
+                digits = digits * 10 + i64::from(d);
+                i += 1;
             }
+            let len = i - start;
+            if len == 0 || rest.get(i) == Some(&b'.') {
+                return None;
+            }
+            let scale = POW10.get(self.decimals as usize - len)?;
+            whole.checked_mul(self.per_unit)?.checked_add(digits * scale)?
+        } else if self.bare_increments {
+            whole
+        } else {
+            whole.checked_mul(self.per_unit)?
         };
         if v > MAX_LENGTH {
             return None;
         }
-        Some(if negative { -v } else { v })
+        Some((if negative { -v } else { v }, i))
     }
 
-    /// The line, when it has one of the shapes taken here.
-    fn parse<'a>(&self, line: &'a [u8]) -> Option<Line<'a>> {
-        // A comment: printable ASCII without parentheses and semicolons,
-        // to the end of the line.
-        let comment = |c: &[u8]| {
-            c.len() >= 2
-                && c.first() == Some(&b'(')
-                && c.last() == Some(&b')')
-                && c.get(1..c.len() - 1)
-                    .is_some_and(|t| t.iter().all(|&b| (b' '..=b'~').contains(&b) && !b"();".contains(&b)))
+    /// The line at the start of `rest` (a piece of whole lines), when it
+    /// has one of the shapes taken here, and its length: the line ends
+    /// there, at the end of `rest` or at a line end (`\n` or `\r`, reading
+    /// R-LINEEND: [`FastNc::line_end`]). One pass over the line's bytes,
+    /// which are then all printable ASCII.
+    fn scan<'a>(&self, rest: &'a [u8]) -> Option<(Line<'a>, usize)> {
+        let ends = |i: usize| matches!(rest.get(i), None | Some(b'\n' | b'\r'));
+        // A comment from `i`: printable ASCII without parentheses and
+        // semicolons, then `)` and the end of the line; where it ends.
+        let comment = |i: usize| {
+            let mut j = i + 1;
+            while let Some(&b) = rest.get(j) {
+                if !(b' '..=b'~').contains(&b) || b"(;".contains(&b) {
+                    return None;
+                }
+                if b == b')' {
+                    return ends(j + 1).then_some(j + 1);
+                }
+                j += 1;
+            }
+            None
         };
-        if line.is_empty() {
-            return Some(Line::Nothing);
-        }
-        if line.first() == Some(&b'(') {
-            return comment(line).then_some(Line::Nothing);
+        match rest.first() {
+            None | Some(b'\n' | b'\r') => return Some((Line::Nothing, 0)),
+            Some(b'(') => return comment(0).map(|end| (Line::Nothing, end)),
+            Some(_) => {}
         }
         let (mut g, mut x, mut z, mut f) = (None, None, None, None);
         // Words in the order G X Z F, one space between them, a comment
         // last.
         let mut order = 0;
-        let mut rest = line;
-        loop {
-            let (word, next) = match rest.iter().position(|&b| b == b' ') {
-                Some(p) => (rest.get(..p)?, rest.get(p + 1..)),
-                None => (rest, None),
-            };
-            let (&letter, value) = word.split_first()?;
-            let rank = match letter {
+        let mut i = 0;
+        let end = loop {
+            let (rank, value) = (rest.get(i)?, i + 1);
+            let rank = match rank {
                 b'G' => 1,
                 b'X' => 2,
                 b'Z' => 3,
@@ -199,55 +224,92 @@ impl FastNc {
                 return None;
             }
             order = rank;
-            match letter {
-                b'G' => {
-                    g = Some(match value {
+            match rank {
+                1 => {
+                    g = Some(match rest.get(value..value + 2)? {
                         b"00" => MotionMode::G00,
                         b"01" => MotionMode::G01,
                         b"32" => MotionMode::G32,
                         _ => return None,
                     });
+                    i = value + 2;
                 }
-                b'X' => x = Some(self.length(value)?),
-                b'Z' => z = Some(self.length(value)?),
+                2 => (x, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
+                3 => (z, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
                 _ => {
                     // F: digits (. digits)?, not zero.
-                    let (int, frac) = match value.iter().position(|&b| b == b'.') {
-                        Some(p) => (value.get(..p)?, value.get(p + 1..)?),
-                        None => (value, &b"0"[..]),
+                    i = value;
+                    while !ends(i) && rest.get(i) != Some(&b' ') {
+                        i += 1;
+                    }
+                    let word = rest.get(value - 1..i)?;
+                    let number = word.get(1..)?;
+                    let (int, frac) = match number.iter().position(|&b| b == b'.') {
+                        Some(p) => (number.get(..p)?, number.get(p + 1..)?),
+                        None => (number, &b"0"[..]),
                     };
                     let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
-                    if !digits(int) || !digits(frac) || !value.iter().any(|b| (b'1'..=b'9').contains(b)) {
+                    if !digits(int) || !digits(frac) || !number.iter().any(|b| (b'1'..=b'9').contains(b)) {
                         return None;
                     }
                     FText::new(word)?;
                     f = Some(word);
                 }
             }
-            match next {
-                None => break,
-                Some(c) if c.first() == Some(&b'(') => {
-                    if !comment(c) {
-                        return None;
-                    }
-                    break;
-                }
-                Some(n) => rest = n,
+            if ends(i) {
+                break i;
             }
-        }
+            // A space, then a word or a comment.
+            if rest.get(i) != Some(&b' ') {
+                return None;
+            }
+            i += 1;
+            if rest.get(i) == Some(&b'(') {
+                break comment(i)?;
+            }
+        };
         if x.is_none() && z.is_none() {
             return None;
         }
-        Some(Line::Move { g, x, z, f })
+        Some((Line::Move { g, x, z, f }, end))
+    }
+
+    /// `line` (without its line end), when it is one of the shapes taken
+    /// here ([`FastNc::scan`] of the whole line).
+    #[cfg(test)]
+    fn parse<'a>(&self, line: &'a [u8]) -> Option<Line<'a>> {
+        self.scan(line).filter(|&(_, len)| len == line.len()).map(|(l, _)| l)
+    }
+
+    /// Where the line that ends at `len` in `rest` is followed by the next
+    /// (after its `\n`, `\r\n` or lone `\r`, as [`split_line`] finds it).
+    ///
+    /// [`split_line`]: cycleref_spec::lex::split_line
+    fn line_end(rest: &[u8], len: usize) -> usize {
+        match (rest.get(len), rest.get(len + 1)) {
+            (Some(b'\r'), Some(b'\n')) => len + 2,
+            (Some(_), _) => len + 1,
+            (None, _) => len,
+        }
+    }
+
+    /// The steps of the line at the start of `rest` (a piece of whole
+    /// lines; line number `number`) when it is taken here, and where the
+    /// next line starts in `rest`: `Some((None, _))` for a line taken
+    /// without a step, `None` when declined.
+    pub(super) fn take_at(&mut self, rest: &[u8], number: usize) -> Option<(Option<Step>, usize)> {
+        if !self.enabled || number == 1 {
+            return None;
+        }
+        let (line, len) = self.scan(rest)?;
+        let step = self.take_line(line, number)?;
+        Some((step, Self::line_end(rest, len)))
     }
 
     /// The steps of `line` (line number `number`) when it is taken here:
     /// `Some(None)` for a line taken without a step, `None` when declined.
-    pub(super) fn take(&mut self, line: &[u8], number: usize) -> Option<Option<Step>> {
-        if !self.enabled || number == 1 {
-            return None;
-        }
-        let Line::Move { g, x, z, f } = self.parse(line)? else {
+    fn take_line(&mut self, line: Line<'_>, number: usize) -> Option<Option<Step>> {
+        let Line::Move { g, x, z, f } = line else {
             return Some(None);
         };
         let motion = g.or(self.motion)?;
@@ -463,7 +525,9 @@ mod tests {
                 "-37.000", "8.961", "10.0001", "10.00001", "10.000000", "999999.999", "1000000.000",
                 "999999999", "1000000000", "99999999999999999999", "9999.9999", "99999.99999",
                 "007.5", ".5", "5.", "+5.0", "-", "1e5", "1.2.3", "--1", "0.1", "1.10",
+                "1.00000000000000000000000001", "-0.99999999999999999999999",
             ]).prop_map(str::to_string),
+            1 => ("-?[0-9]{1,3}", "[0-9]{6,30}").prop_map(|(i, f)| format!("{i}.{f}")),
             2 => ("-?[0-9]{1,3}", "[0-9]{1,4}").prop_map(|(i, f)| format!("{i}.{f}")),
             1 => "[-+.0-9]{0,12}",
         ]
@@ -575,10 +639,22 @@ mod tests {
             inch in any::<bool>(),
             is_c in any::<bool>(),
             start in prop::sample::select(vec!["G50 X100.0 Z50.0", "G00 X80.000 Z10.000", "O0100", ""]),
+            ends in prop::collection::vec(prop::sample::select(vec!["\n", "\n", "\n", "\r\n", "\r"]), 41),
+            last_end in any::<bool>(),
         ) {
             let m = machine(profile, calculator, radius);
             let u = units(inch, is_c);
-            let text = std::iter::once(start.to_string()).chain(lines).collect::<Vec<_>>().join("\n");
+            // Each line ended by LF, CR LF or a lone CR (R-LINEEND), the
+            // last with or without one: the fast path finds line ends
+            // itself.
+            let mut text = String::new();
+            let count = lines.len() + 1;
+            for (n, (line, end)) in std::iter::once(start.to_string()).chain(lines).zip(&ends).enumerate() {
+                text.push_str(&line);
+                if n + 1 < count || last_end {
+                    text.push_str(end);
+                }
+            }
             prop_assert_eq!(read(&text, &m, u, true), read(&text, &m, u, false), "{}", text);
         }
     }

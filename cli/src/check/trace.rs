@@ -99,13 +99,18 @@ impl<'t, 'm> NcTrace<'t, 'm> {
         }
     }
 
-    /// Reads lines until one moves; false at the end.
-    fn fill(&mut self) -> Result<bool, TraceError> {
-        while self.ready.is_empty() {
+    /// The next step: the current line's next, else the first of the
+    /// lines after it that move; `None` at the end. A plain line's step
+    /// (the fast path's) is returned as it is, never queued.
+    fn next_step(&mut self) -> Result<Option<Step>, TraceError> {
+        loop {
+            if let Some(step) = self.ready.pop_front() {
+                return Ok(Some(step));
+            }
             if self.at >= self.piece {
                 match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
                 {
-                    Ok(false) => return Ok(false),
+                    Ok(false) => return Ok(None),
                     Ok(true) => {}
                     Err(error) => return Err(TraceError::CannotRead { line: self.line + 1, error }),
                 }
@@ -115,6 +120,16 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             }
             let piece = self.buf.get(..self.piece).unwrap_or_default();
             let rest = piece.get(self.at..).unwrap_or_default();
+            // A plain line of our writer's (all printable ASCII): taken
+            // without the reader, its end found as it is read.
+            if let Some((step, advance)) = self.fast.take_at(rest, self.line + 1) {
+                self.line += 1;
+                self.at += advance;
+                match step {
+                    Some(step) => return Ok(Some(step)),
+                    None => continue,
+                }
+            }
             // LF, CR LF or a lone CR (reading R-LINEEND), as in a program.
             let (line, advance) = cycleref_spec::lex::split_line(rest);
             let (end, next) = (self.at + line.len(), self.at + advance);
@@ -131,10 +146,6 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
             }
             // A plain line of our writer's: taken without the reader.
-            if let Some(step) = self.fast.take(text, self.line) {
-                self.ready.extend(step);
-                continue;
-            }
             // The reader first reads what the lines taken so left.
             if let Err(error) = self.fast.sync(&mut self.reader, self.line) {
                 return Err(TraceError::Program { error, csv_header: false });
@@ -161,10 +172,11 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             }) {
                 let step =
                     step.map_err(|error| TraceError::Program { error, csv_header: csv_header() })??;
-                self.ready.extend(step);
+                if let Some(step) = step {
+                    self.ready.push_back(step);
+                }
             }
         }
-        Ok(true)
     }
 }
 
@@ -172,11 +184,7 @@ impl Iterator for NcTrace<'_, '_> {
     type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        match self.fill() {
-            Ok(true) => self.ready.pop_front().map(|s| Ok((s, 0))),
-            Ok(false) => None,
-            Err(e) => Some(Err(e)),
-        }
+        self.next_step().transpose().map(|s| s.map(|s| (s, 0)))
     }
 }
 
