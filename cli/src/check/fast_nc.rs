@@ -189,15 +189,14 @@ impl FastNc {
         // A comment from `i`: printable ASCII without parentheses and
         // semicolons, then `)` and the end of the line; where it ends.
         let comment = |i: usize| {
-            let mut j = i + 1;
-            while let Some(&b) = rest.get(j) {
-                if !(b' '..=b'~').contains(&b) || b"(;".contains(&b) {
-                    return None;
+            let text = rest.get(i + 1..)?;
+            for (j, &b) in text.iter().enumerate() {
+                match b {
+                    b')' => return ends(i + j + 2).then_some(i + j + 2),
+                    // Printable ASCII but `(` and `;`.
+                    b' '..=b'\'' | b'*'..=b':' | b'<'..=b'~' => {}
+                    _ => return None,
                 }
-                if b == b')' {
-                    return ends(j + 1).then_some(j + 1);
-                }
-                j += 1;
             }
             None
         };
