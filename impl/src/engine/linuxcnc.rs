@@ -998,6 +998,40 @@ mod tests {
         assert_eq!(v.stats, FastPathStats { values: 1, fallbacks: 1 });
     }
 
+    /// Every rough pass's coordinates lie between the first rough pass's
+    /// and the last's (what the checks before the first move rely on),
+    /// in both X modes, both directions, external and internal, with and
+    /// without a compound angle, on the fast path and off it.
+    #[test]
+    fn first_and_last_rough_passes_bound_the_others() {
+        let mut c = cycle();
+        c.degression = 12_345;
+        c.initial_depth = 500;
+        for variant in 0..16 {
+            c.peak_offset = if variant % 2 == 0 { -10_000 } else { 10_000 };
+            c.x_mode = if variant & 2 == 0 { XMode::Radius } else { XMode::Diameter };
+            c.end.z = if variant & 4 == 0 { -200_000 } else { 300_000 };
+            c.compound_angle = if variant & 8 == 0 { 295_000 } else { 0 };
+            for fast in [true, false] {
+                let mut m = if fast { expand_linuxcnc(&c) } else { expand_linuxcnc_exact(&c) }.unwrap();
+                let w = m.words;
+                let points = |n, t: &mut Option<Interval<FAST>>| {
+                    let p = Points::of(&mut Values::new(&w, t, Depth::Rough(n)), &w).unwrap();
+                    [p.x_back, p.x_cut, p.x_rise, p.z_start, p.z_end, p.radius]
+                };
+                assert!(m.rough > 2, "{variant}");
+                let (first, last) = (points(1, &mut m.tan), points(m.rough, &mut m.tan));
+                for n in 2..m.rough {
+                    let p = points(n, &mut m.tan);
+                    for i in 0..6 {
+                        let (lo, hi) = (first[i].min(last[i]), first[i].max(last[i]));
+                        assert!((lo..=hi).contains(&p[i]), "{variant} {fast} pass {n} value {i}");
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn moves_of_a_taper_pass() {
         let moves: std::vec::Vec<Move> = expand_linuxcnc(&cycle()).unwrap().collect();
