@@ -406,7 +406,8 @@ fn engine_equals_reference_long() {
 
 /// The new loops stay within the bounds their documentation gives
 /// (feature `loop-counters`, on for this crate's tests): the iterator moves
-/// on at most twice per move, the wide square root runs 128 steps, the
+/// on at most twice per move, the wide square root runs at most 128 steps
+/// (from the highest pair of bits that is not zero), the
 /// root search and gcd at most 47, the series far below `MAX_TERMS` (400)
 /// even at 576 bits. The counts are process-wide maxima, so the other
 /// tests of this file running meanwhile only add cycles of the same kind.
@@ -428,7 +429,7 @@ fn loop_counts_stay_within_their_bounds() {
         [&LCNC_NEXT, &LCNC_ISQRT, &LCNC_PASSES, &REAL_ROOT, &REAL_LN, &REAL_EXP].map(|s| (s.name, s.max()));
     eprintln!("{counts:?}");
     assert!(LCNC_NEXT.max() <= 2);
-    assert_eq!(LCNC_ISQRT.max(), 128);
+    assert!((1..=128).contains(&LCNC_ISQRT.max()));
     assert!(LCNC_PASSES.max() <= 40);
     assert!(REAL_ROOT.max() <= 47);
     assert!(REAL_LN.max() <= 200 && REAL_EXP.max() <= 200);

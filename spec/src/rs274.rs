@@ -325,7 +325,7 @@ fn plain_number(b: &[u8]) -> Option<Decimal> {
 /// The plain form ([`plain_number`]) that starts at `b[*at]` and ends
 /// before the first byte that cannot continue it, `*at` moved there; or
 /// `None` when what stands there is no plain form.
-#[inline]
+#[inline(always)]
 fn plain_number_at(b: &[u8], at: &mut usize) -> Option<Decimal> {
     let mut i = *at;
     let negative = b.get(i) == Some(&b'-');
@@ -333,6 +333,17 @@ fn plain_number_at(b: &[u8], at: &mut usize) -> Option<Decimal> {
         i += 1;
     }
     let start = i;
+    // `0.0000`, unsigned and not followed by a digit: what the reading
+    // below gives for it (an exact zero of four decimals, ending there),
+    // at once. It is most of `rs274`'s numbers (the axes a lathe does not
+    // move).
+    if !negative
+        && b.get(i..i + 6) == Some(b"0.0000".as_slice())
+        && !b.get(i + 6).is_some_and(u8::is_ascii_digit)
+    {
+        *at = i + 6;
+        return Some(Decimal::new(0, 4));
+    }
     // Exact within 18 digits, the most a plain form has (checked below;
     // beyond them the value is not used).
     let (mut mantissa, mut scale) = (0_i64, 0_u32);
@@ -458,7 +469,10 @@ fn plain_parts(raw: &str) -> Option<(&str, &str)> {
 fn plain_span(b: &[u8]) -> Option<(usize, usize, usize)> {
     // Only ASCII bytes are looked for, and the bytes of other characters
     // are never ASCII: such a character is taken for none of them.
-    let spaces = |mut i: usize| {
+    let spaces = |i: usize| {
+        // ASCII spaces (`rs274` pads with them) eight at a time, then
+        // any space a byte at a time.
+        let mut i = scan::skip_byte(b, i, b' ');
         while b.get(i).is_some_and(|&c| scan::is_space(c)) {
             i += 1;
         }
@@ -477,6 +491,10 @@ fn plain_span(b: &[u8]) -> Option<(usize, usize, usize)> {
         return None;
     }
     i += 1;
+    // `N.....` (no N word) at once, then what may follow.
+    if b.get(i..i + 5) == Some(b".....".as_slice()) {
+        i += 5;
+    }
     while b.get(i).is_some_and(|&c| c.is_ascii_digit() || c == b'.') {
         i += 1;
     }
@@ -484,7 +502,7 @@ fn plain_span(b: &[u8]) -> Option<(usize, usize, usize)> {
         return None;
     }
     let call = spaces(i);
-    let open = call + b.get(call..)?.iter().position(|&c| c == b'(')?;
+    let open = scan::find_byte(b, call, b'(')?;
     let close = b.iter().rposition(|&c| !scan::is_space(c))?;
     if close <= open || b[close] != b')' {
         return None;
@@ -566,6 +584,55 @@ mod scan {
             Some(_) => s.split_once(char::is_whitespace),
             None => None,
         }
+    }
+
+    /// The eight bytes of `b` from `i`, as a little-endian word, when
+    /// there are eight.
+    #[inline]
+    fn word_at(b: &[u8], i: usize) -> Option<u64> {
+        let w: [u8; 8] = b.get(i..i.checked_add(8)?)?.try_into().ok()?;
+        Some(u64::from_le_bytes(w))
+    }
+
+    /// The index of the first byte of `b` from `i` that is not `c` (`b`'s
+    /// length when there is none): eight bytes at a time while there
+    /// are eight (the lowest byte of `w ^ c…c` that is not 0 is the first
+    /// other byte), then a byte at a time.
+    #[inline(always)]
+    pub(super) fn skip_byte(b: &[u8], mut i: usize, c: u8) -> usize {
+        let all = u64::from_le_bytes([c; 8]);
+        while let Some(w) = word_at(b, i) {
+            let x = w ^ all;
+            if x != 0 {
+                return i + (x.trailing_zeros() / 8) as usize;
+            }
+            i += 8;
+        }
+        while b.get(i) == Some(&c) {
+            i += 1;
+        }
+        i.min(b.len())
+    }
+
+    /// The index of the first byte `c` of `b` from `i`, if any: eight
+    /// bytes at a time while there are eight (a byte of `x = w ^ c…c` is
+    /// 0 where `w` holds `c`; `(x − 1…1) & !x & 80…80` has the high bit
+    /// of the lowest zero byte set, and none below it), then a byte at a
+    /// time.
+    #[inline(always)]
+    pub(super) fn find_byte(b: &[u8], mut i: usize, c: u8) -> Option<usize> {
+        const ONES: u64 = u64::from_le_bytes([1; 8]);
+        const HIGHS: u64 = u64::from_le_bytes([0x80; 8]);
+        let all = u64::from_le_bytes([c; 8]);
+        while let Some(w) = word_at(b, i) {
+            let x = w ^ all;
+            let zero = x.wrapping_sub(ONES) & !x & HIGHS;
+            if zero != 0 {
+                return Some(i + (zero.trailing_zeros() / 8) as usize);
+            }
+            i += 8;
+        }
+        Some(i + b.get(i..)?.iter().position(|&d| d == c)?)
     }
 
     /// `s.split_once(c)` for an ASCII `c` (which, in UTF-8, is never part
@@ -655,6 +722,15 @@ mod scan {
                 prop_assert_eq!(split_at_whitespace(&s), s.split_once(char::is_whitespace));
                 for c in [b'(', b','] {
                     prop_assert_eq!(split_at_byte(&s, c), s.split_once(char::from(c)));
+                }
+                let b = s.as_bytes();
+                for i in 0..=b.len() + 1 {
+                    for c in [b'(', b' ', 0x80, 0xe9] {
+                        let want = b.get(i..).and_then(|r| r.iter().position(|&d| d == c)).map(|p| i + p);
+                        prop_assert_eq!(super::find_byte(b, i, c), want);
+                        let skip = b.get(i..).map_or(b.len(), |r| r.iter().position(|&d| d != c).map_or(b.len(), |p| i + p));
+                        prop_assert_eq!(super::skip_byte(b, i, c), skip.max(i.min(b.len())));
+                    }
                 }
             }
         }
@@ -1321,6 +1397,15 @@ mod number_tests {
             "1.23/4",
             "-0.0000001",
             "9999.99999999",
+            // The zero of four decimals, and what may follow it.
+            "+0.0000",
+            "0.00000",
+            "0.00001",
+            "0.0000.",
+            "0.0000.5",
+            "00.0000",
+            "0.000",
+            "-0.00001",
         ];
         for s in forms {
             let ours = number(s);

@@ -14,6 +14,10 @@ use super::{Divergence, Group, Kind, Step};
 /// the same value).
 fn same_lead(a: Option<Lead>, b: Option<Lead>, units: Units) -> bool {
     match (a, b) {
+        // The same word and digits: the same rate, without the products
+        // (`u128` products checked for overflow were half of a canonical
+        // trace's comparison).
+        (Some(a), Some(b)) if a == b => true,
         (Some(a), Some(b)) => {
             let (ra, rb) = (a.increments_per_rev(units), b.increments_per_rev(units));
             ra.num.checked_mul(rb.den) == rb.num.checked_mul(ra.den)

@@ -446,6 +446,7 @@ fn call_of(text: &str, line: usize) -> Result<Option<CanonCall>, TraceError> {
 /// exact: it is computed in `i128` without `Decimal`'s general
 /// multiplication (which was a tenth of `check`'s time on a canonical
 /// trace); any other value goes through `Decimal` as before.
+#[inline]
 fn whole_multiple(value: Decimal, k: i64) -> Option<i128> {
     let (mantissa, scale) = (value.mantissa(), value.scale());
     // The usual case, in `i64` (`i128` division is a library call): the

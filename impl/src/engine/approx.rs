@@ -46,7 +46,9 @@
 //! * `atanh`: 14 terms `s^(2j+1)/(2j+1)`, each truncated; error below 28
 //!   ulps (the rest of the series is below `2^-72`);
 //! * `ln n`: `2·28 + f` (`ln 2` truncated to 64 bits, `f ≤ 63`): below
-//!   119, taken as [`LN_BOUND`] = 128;
+//!   119, taken as [`LN_BOUND`] = 128 (for `n <` [`LN_TABLE_LEN`] the
+//!   series' value is read from a table built at compile time by the
+//!   same series: the same value and bound);
 //! * `x = ⌊ln n · a / b⌋`: below 129;
 //! * `r`: below `129 + k ≤ 192`;
 //! * `exp(r)`: 20 terms `r^i/i!`, each truncated twice; below 71 ulps of
@@ -466,36 +468,74 @@ impl Approx {
 /// `ln n` for `2 ≤ n < 2^63`, in ulps of `2^-64`, with its error below
 /// [`LN_BOUND`] (R-FASTPATH); `None` outside the domain.
 ///
+/// The value of [`ln_series`]: read from a table (which holds that
+/// series' values, computed at compile time) for `n <` [`LN_TABLE_LEN`],
+/// the depth laws' usual pass numbers, and computed for any larger `n`.
+#[must_use]
+pub fn ln(n: u64) -> Option<i128> {
+    match usize::try_from(n).ok().and_then(|i| LN_TABLE.get(i)) {
+        Some(&v) if n >= 2 => Some(v),
+        _ => ln_series(n),
+    }
+}
+
+/// How many values [`ln`]'s table holds (`n` from 0; 0 and 1 unused).
+pub const LN_TABLE_LEN: usize = 256;
+
+/// `ln_series(n)` for `2 ≤ n <` [`LN_TABLE_LEN`] (0 at 0 and 1, which
+/// [`ln`] does not read): the same values, so the same bound
+/// ([`LN_BOUND`]); the test `ln_table_is_the_series` compares them.
+const LN_TABLE: [i128; LN_TABLE_LEN] = {
+    let mut t = [0_i128; LN_TABLE_LEN];
+    let mut n = 2;
+    while n < LN_TABLE_LEN {
+        if let Some(v) = ln_series(n as u64) {
+            t[n] = v;
+        }
+        n += 1;
+    }
+    t
+};
+
+/// `ln n` for `2 ≤ n < 2^63` by its series (the error below [`LN_BOUND`],
+/// R-FASTPATH); `None` outside the domain.
+///
 /// `n = 2^f · m` with `m ∈ [3/4, 3/2)`, `ln m = 2 atanh(s)`, `s = (n −
 /// 2^f)/(n + 2^f)`, `|s| ≤ 1/5`: the series `Σ s^(2j+1)/(2j+1)` over
 /// magnitudes, every step truncated (so every partial result is below the
-/// exact one), then its sign.
+/// exact one), then its sign. A `const fn` (so that [`ln`]'s table is
+/// built at compile time); its loop has 13 rounds (14 terms).
 #[must_use]
-pub fn ln(n: u64) -> Option<i128> {
+pub const fn ln_series(n: u64) -> Option<i128> {
     if n < 2 || n >> 63 != 0 {
         return None;
     }
     let e = 63 - n.leading_zeros();
     // n ≥ 3·2^(e−1) (m ≥ 3/2): divide by 2^(e+1) instead.
-    let f = if u128::from(n) >= 3_u128 << (e - 1) { e + 1 } else { e };
-    let (n, base) = (u128::from(n), 1_u128 << f);
+    let f = if n as u128 >= 3_u128 << (e - 1) { e + 1 } else { e };
+    let (n, base) = (n as u128, 1_u128 << f);
     let (num, negative) = if n >= base { (n - base, false) } else { (base - n, true) };
     // num ≤ 2^(f−1) ≤ 2^62: num·2^64 < 2^127; den < 2^65; s < 2^64/5.
-    let s = u64::try_from((num << 64) / (n + base)).ok()?;
-    let q = mul_hi(s, s);
-    let (mut power, mut sum) = (s, u128::from(s));
-    let mut loops = crate::loop_counters::count!(REAL_LN);
-    for inv in INV_ODD.iter().skip(1) {
-        loops.tick();
-        power = mul_hi(power, q);
-        sum += u128::from(mul_hi(power, *inv));
+    let s = (num << 64) / (n + base);
+    if s > u64::MAX as u128 {
+        return None;
     }
-    let atanh2 = i128::try_from(sum.checked_mul(2)?).ok()?;
-    let base_ln = i128::try_from(LN2.checked_mul(u128::from(f))?).ok()?;
+    let s = s as u64;
+    let q = mul_hi(s, s);
+    // Each term below s < 2^64, 14 of them: the sum stays below 2^68.
+    let (mut power, mut sum) = (s, s as i128);
+    let mut j = 1;
+    while j < ATANH_TERMS {
+        power = mul_hi(power, q);
+        sum += mul_hi(power, INV_ODD[j]) as i128;
+        j += 1;
+    }
+    // LN2 < 2^64 and f ≤ 64: f·LN2 < 2^71.
+    let base_ln = (LN2 as u64) as i128 * f as i128;
     if negative {
-        base_ln.checked_sub(atanh2)
+        base_ln.checked_sub(2 * sum)
     } else {
-        base_ln.checked_add(atanh2)
+        base_ln.checked_add(2 * sum)
     }
 }
 
@@ -764,6 +804,18 @@ mod tests {
         assert!(error_ulps(&m, &Interval::<SLOW>::int(-1)) <= m.bound());
         assert_eq!(Approx::int(3).mul(&Approx::int(-4)), Approx::int(-12));
         assert_eq!(Approx::int(5).div_int(2), Approx::new(5 * ONE / 2, 0));
+    }
+
+    /// [`LN_TABLE`] holds [`ln_series`]'s values: [`ln`] is the series
+    /// on either side of the table's end.
+    #[test]
+    fn ln_table_is_the_series() {
+        for n in 0..(LN_TABLE_LEN as u64 + 64) {
+            assert_eq!(ln(n), ln_series(n), "{n}");
+        }
+        assert_eq!(ln(0), None);
+        assert_eq!(ln(1), None);
+        assert!(ln(2).is_some());
     }
 
     /// The worst cases of [`ln`]: `|s|` at its largest (`n/2^f` at 3/4 and

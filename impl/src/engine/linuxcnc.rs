@@ -39,14 +39,31 @@
 //! [`expand_linuxcnc`] makes every check before the first move, in the
 //! reference's order: [`LinuxCncG76::validate`]; the pass limit
 //! ([`CycleError::TooManyPasses`] when `δ_(limit+1) < K`, reading R-LIMIT);
-//! then every pass's coordinates are computed once, in the reference's
-//! order (each rough pass's `δ_n < K`, then its coordinates, then the
-//! full-depth pass's), so that a coordinate beyond the range table
+//! each rough pass's `δ_n < K` until a pass is not shallower; the
+//! coordinates of the first rough pass and of the last, then the
+//! full-depth pass's, so that a coordinate beyond the range table
 //! ([`CycleError::OutOfRange`]) or an undecidable rounding
 //! ([`CycleError::UndecidedRounding`], never seen) is refused up front.
-//! The iterator then computes each rough pass's coordinates again when the
-//! pass starts (the same deterministic computation, which therefore
-//! succeeds); the full-depth pass's are kept.
+//!
+//! The first and the last rough pass stand for all of them (issue 33:
+//! the coordinates of every pass were computed up front, and again when
+//! the pass started). Every value of a pass is affine in its depth δ
+//! (module documentation above), and `δ_1 < δ_2 < … < δ_last`: each
+//! value of a pass lies between its values at the first and the last
+//! pass, and its rounding, nondecreasing in the value, between theirs.
+//! So when both are within the range table, so is every pass's; and the
+//! reference refuses the same cycles (it computes every pass, and a
+//! coordinate beyond the table is beyond it whichever pass it is in).
+//! Rounding is exact (R-LCNC-EXACT) but for R-G75TIE, which takes a value
+//! within 2^-512 of a boundary to lie on it: that keeps the roundings
+//! nondecreasing too, as two passes' values are either equal (a
+//! coefficient 0: the same exact value) or farther apart than that (δ
+//! grows by at least `J·(n+1)^(1/R − 1)/R`, ≫ 2^-512, and t is 0 or at
+//! least tan 0.00005°). An undecidable rounding needs an enclosure at 512
+//! bits that holds two boundaries or overflows: none at the magnitudes
+//! below. The iterator computes each rough pass's coordinates when the
+//! pass starts (the full-depth pass's are kept); they are then within the
+//! table, as above.
 //!
 //! # Magnitudes
 //!
@@ -62,10 +79,12 @@
 //! # Work and memory
 //!
 //! Up front: one power per rough pass and one for the limit check, on the
-//! fast path (about 70 products of 64-bit words each), rarely at 192 bits
-//! and more rarely at 576; `tan Q` once at 64 fraction bits for the fast
-//! path, and at 128 only once a value falls back. Per move: O(1); a rough
-//! pass's start computes one power again. A [`LinuxCncMoves`] is a
+//! fast path (about 40 products of 64-bit words each, `ln n` read from a
+//! table for `n < 256`), rarely at 192 bits and more rarely at 576, and
+//! the coordinates of three passes; `tan Q` once on the fast path (from
+//! its sine and cosine), and at 128 bits only once a value falls back.
+//! Per move: O(1); a rough pass's start computes its power again and its
+//! coordinates. A [`LinuxCncMoves`] is a
 //! fixed-size value (the words with the fast path's `tan Q`, its 128-bit
 //! enclosure once computed, the leads, the current pass's points and the
 //! fast path's counts; the test `size_of_the_iterator` bounds it by 512
@@ -88,11 +107,6 @@ const FAST_POWER: usize = FAST + 1;
 
 /// Limbs at which the slow path computes a power (one more than [`SLOW`]).
 const SLOW_POWER: usize = SLOW + 1;
-
-/// Limbs of the enclosure of `tan Q` that the fast path starts from (64
-/// fraction bits: its width, 19 units of `2^-64` at 29.5°, is part of
-/// the bound, R-FASTPATH).
-const TAN_QUICK: usize = 3;
 
 /// The depth of a pass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -130,9 +144,12 @@ struct Words {
     tan_negative: bool,
     /// The fast path (R-FASTPATH) is tried before the intervals.
     fast_path: bool,
-    /// `t` on the fast path (from its enclosure at [`TAN_QUICK`] limbs;
-    /// unknown when the fast path is off).
+    /// `t` on the fast path ([`approx::tan_of`] of the fast path's sine
+    /// and cosine; unknown when the fast path is off).
     tan_quick: Approx,
+    /// `Z + (K/ξ)·t` on the fast path, the same for every pass (computed
+    /// once, as [`Words::quick_values`] would for each pass).
+    z_over_quick: Approx,
 }
 
 /// Indices of the values of a pass.
@@ -174,19 +191,26 @@ impl Words {
         ]
     }
 
+    /// `Z + (K/ξ)·t` on the fast path, the part of [`Z_END`] that is the
+    /// same for every pass.
+    fn z_over_quick(&self, t: &Approx) -> Approx {
+        Approx::int(self.z).add(&Approx::int(self.k).div_int(self.xf).mul(t))
+    }
+
     /// The values of a pass at depth `d` on the fast path (R-FASTPATH):
-    /// the formulas of [`Words::values`], each with its error bound.
-    fn quick_values(&self, d: &Approx, t: &Approx) -> [Approx; 6] {
+    /// the formulas of [`Words::values`], each with its error bound (`t`
+    /// is `self.tan_quick`, and `Z + (K/ξ)·t` is `self.z_over_quick`).
+    fn quick_values(&self, d: &Approx) -> [Approx; 6] {
         let k = Approx::int(self.k);
         let s = self.sigma;
         let radius = d.div_int(self.xf);
-        let zeta = radius.mul(t);
+        let zeta = radius.mul(&self.tan_quick);
         [
             d.sub(&k),
             Approx::int(self.x0).add(&k.sub(d).mul_int(s)),
             Approx::int(self.x0 - s * self.i_abs).sub(&d.mul_int(s)),
             Approx::int(self.z0).sub(&zeta),
-            Approx::int(self.z).add(&k.div_int(self.xf).mul(t)).sub(&zeta),
+            self.z_over_quick.sub(&zeta),
             radius,
         ]
     }
@@ -196,6 +220,25 @@ impl Words {
         match depth {
             Depth::Full => Approx::int(self.k),
             Depth::Rough(n) => approx::power(n, DEGRESSION_ONE, self.degression).mul_int(self.j),
+        }
+    }
+
+    /// The sign of `δ − K` at `depth`, its count added to `stats`: on the
+    /// fast path from the depth alone (the value [`Words::quick_values`]
+    /// gives at [`DEEPER`]), else by the intervals as [`Values::sign`]
+    /// decides it.
+    fn deeper_sign(
+        &self,
+        depth: Depth,
+        t: &mut Option<Interval<FAST>>,
+        stats: &mut FastPathStats,
+    ) -> Result<Ordering, CycleError> {
+        let quick =
+            if self.fast_path { self.depth_quick(depth).sub(&Approx::int(self.k)).sign() } else { None };
+        stats.add(FastPathStats { values: 1, fallbacks: u64::from(quick.is_none()) });
+        match quick {
+            Some(o) => Ok(o),
+            None => Values::new(self, t, depth).exact_sign(self, DEEPER),
         }
     }
 
@@ -255,11 +298,7 @@ struct Values<'t> {
 
 impl<'t> Values<'t> {
     fn new(w: &Words, t: &'t mut Option<Interval<FAST>>, depth: Depth) -> Values<'t> {
-        let quick = if w.fast_path {
-            w.quick_values(&w.depth_quick(depth), &w.tan_quick)
-        } else {
-            [Approx::UNKNOWN; 6]
-        };
+        let quick = if w.fast_path { w.quick_values(&w.depth_quick(depth)) } else { [Approx::UNKNOWN; 6] };
         Values { depth, tan: t, quick, fast: None, slow: None, stats: FastPathStats::default() }
     }
 
@@ -292,7 +331,8 @@ impl<'t> Values<'t> {
     }
 
     /// The sign of value `i`: on the fast path, else at 128 bits, else at
-    /// 512 with R-G75TIE.
+    /// 512 with R-G75TIE (as [`Words::deeper_sign`] decides `δ − K`).
+    #[cfg(test)]
     fn sign(&mut self, w: &Words, i: usize) -> Result<Ordering, CycleError> {
         let quick = self.quick(i).sign();
         self.count(quick.is_some());
@@ -346,6 +386,19 @@ impl<'t> Values<'t> {
             },
         )
     }
+}
+
+/// The points of the pass at `depth`, its values' counts added to `stats`.
+fn pass_points(
+    w: &Words,
+    t: &mut Option<Interval<FAST>>,
+    depth: Depth,
+    stats: &mut FastPathStats,
+) -> Result<Points, CycleError> {
+    let mut v = Values::new(w, t, depth);
+    let p = Points::of(&mut v, w);
+    stats.add(v.stats);
+    p
 }
 
 /// The rounded points of one pass.
@@ -524,7 +577,8 @@ pub(crate) const fn mul_wide(x: u128, y: u128) -> (u128, u128) {
     (hi, lo)
 }
 
-/// `⌊√(hi·2^128 + lo)⌋`, digit by digit (two bits at a time, 128 steps),
+/// `⌊√(hi·2^128 + lo)⌋`, digit by digit (two bits at a time, at most 128
+/// steps: from the highest pair of bits that is not zero),
 /// for `hi < 2^120`: the root stays below `2^124` and the remainder, at
 /// most twice the root, below `2^125`, so nothing overflows; `None` for a
 /// larger `hi`.
@@ -532,9 +586,12 @@ fn isqrt_wide(hi: u128, lo: u128) -> Option<u128> {
     if hi >> 120 != 0 {
         return None;
     }
+    // The pairs above the highest that is not zero leave the root and the
+    // remainder 0: the digits start at that pair.
+    let top = if hi != 0 { 255 - hi.leading_zeros() } else { 127_u32.saturating_sub(lo.leading_zeros()) };
     let (mut root, mut rem) = (0_u128, 0_u128);
     let mut loops = crate::loop_counters::count!(LCNC_ISQRT);
-    for i in (0..128_u32).rev() {
+    for i in (0..=top / 2).rev() {
         loops.tick();
         let pair = if i >= 64 { (hi >> (2 * (i - 64))) & 3 } else { (lo >> (2 * i)) & 3 };
         // Invariant: rem = prefix − root² ≤ 2·root.
@@ -634,23 +691,29 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         tan_negative: q < 0,
         fast_path,
         tan_quick: Approx::UNKNOWN,
+        z_over_quick: Approx::UNKNOWN,
     };
     let mut words = words;
     if fast_path {
-        words.tan_quick = Approx::enclosing(&words.tan::<TAN_QUICK>());
+        // t = ±tan |Q| from the fast path's sine and cosine of |Q|.
+        let (sin, cos) = approx::sin_cos(words.tan_angle);
+        let t = approx::tan_of(words.tan_angle, &sin, &cos);
+        words.tan_quick = if words.tan_negative { t.neg() } else { t };
+        words.z_over_quick = words.z_over_quick(&words.tan_quick);
     }
     let mut t = None;
     // Reading R-LIMIT for LinuxCNC: refuse before a move when pass limit + 1
     // would still be shallower than K.
     let limit = u64::from(c.pass_limit);
     let mut stats = FastPathStats::default();
-    let mut v = Values::new(&words, &mut t, Depth::Rough(limit + 1));
-    let beyond = v.sign(&words, DEEPER)?;
-    stats.add(v.stats);
+    let beyond = words.deeper_sign(Depth::Rough(limit + 1), &mut t, &mut stats)?;
     if beyond == Ordering::Less {
         return Err(CycleError::TooManyPasses { passes: limit, exact: false, limit: c.pass_limit });
     }
-    // Every pass once, as the reference computes them (l.5775-5790).
+    // The rough passes, as the reference finds them (l.5775-5790): each
+    // pass's `δ_n < K`, until a pass is not shallower than K; the
+    // coordinates of the first pass and of the last (module
+    // documentation: those of every pass lie between them).
     let mut n = 1_u64;
     {
         let mut loops = crate::loop_counters::count!(LCNC_PASSES);
@@ -658,17 +721,17 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         // the loop ends by n = limit + 1; the bound is a safeguard.
         while n <= limit + 1 {
             loops.tick();
-            let mut v = Values::new(&words, &mut t, Depth::Rough(n));
-            let shallower = v.sign(&words, DEEPER)? == Ordering::Less;
-            if shallower {
-                Points::of(&mut v, &words)?;
-            }
-            stats.add(v.stats);
-            if !shallower {
+            if words.deeper_sign(Depth::Rough(n), &mut t, &mut stats)? != Ordering::Less {
                 break;
+            }
+            if n == 1 {
+                pass_points(&words, &mut t, Depth::Rough(1), &mut stats)?;
             }
             n += 1;
         }
+    }
+    if n > 2 {
+        pass_points(&words, &mut t, Depth::Rough(n - 1), &mut stats)?;
     }
     let full = u64::try_from(i64::from(c.spring_passes) + 1).unwrap_or(0);
     // Reading R-BUDGET: the rough passes and the 1 + H at full depth
@@ -678,10 +741,7 @@ fn expand(c: &LinuxCncG76, fast_path: bool) -> Result<LinuxCncMoves, CycleError>
         return Err(CycleError::TooMuchWork { pass_paths, limit: c.pass_limit });
     }
     let full_points = if full > 0 {
-        let mut v = Values::new(&words, &mut t, Depth::Full);
-        let p = Points::of(&mut v, &words)?;
-        stats.add(v.stats);
-        p
+        pass_points(&words, &mut t, Depth::Full, &mut stats)?
     } else {
         Points { x_back: 0, x_cut: 0, x_rise: 0, z_start: 0, z_end: 0, radius: 0 }
     };
@@ -732,27 +792,25 @@ impl LinuxCncMoves {
     fn pass_move(&self, p: &Points, info: Pass, step: u8) -> Option<Move> {
         let thread = |lead, sync| Motion::Thread { lead, start_angle: StartAngle::ZERO, sync };
         let over_z = if self.exit { p.z_end + self.taper } else { p.z_end };
-        let mut moves = [(Motion::Rapid, Point::new(p.x_back, p.z_start), Role::Approach); 6];
-        let mut len = 1;
-        let mut push = |m: (Motion, Point, Role)| {
-            if let Some(slot) = moves.get_mut(len) {
-                *slot = m;
-                len += 1;
+        // Back (0), in or the entry taper's two moves, then over (at
+        // `over`), the exit taper's move (when there is one) and out.
+        let over = if self.entry { 3 } else { 2 };
+        let (motion, to, role) = match step {
+            0 => (Motion::Rapid, Point::new(p.x_back, p.z_start), Role::Approach),
+            1 if self.entry => (thread(self.taper_lead, true), Point::new(p.x_rise, p.z_start), Role::LeadIn),
+            2 if self.entry => {
+                (thread(self.taper_lead, false), Point::new(p.x_cut, p.z_start - self.taper), Role::LeadIn)
             }
+            1 => (Motion::Rapid, Point::new(p.x_cut, p.z_start), Role::Approach),
+            s if s == over => (thread(self.pitch, !self.entry), Point::new(p.x_cut, over_z), Role::Cut),
+            s if s == over + 1 && self.exit => {
+                (thread(self.taper_lead, false), Point::new(p.x_rise, p.z_end), Role::RunOut)
+            }
+            s if s == over + 1 + u8::from(self.exit) => {
+                (Motion::Rapid, Point::new(p.x_back, p.z_end), Role::Retract)
+            }
+            _ => return None,
         };
-        if self.entry {
-            push((thread(self.taper_lead, true), Point::new(p.x_rise, p.z_start), Role::LeadIn));
-            push((thread(self.taper_lead, false), Point::new(p.x_cut, p.z_start - self.taper), Role::LeadIn));
-            push((thread(self.pitch, false), Point::new(p.x_cut, over_z), Role::Cut));
-        } else {
-            push((Motion::Rapid, Point::new(p.x_cut, p.z_start), Role::Approach));
-            push((thread(self.pitch, true), Point::new(p.x_cut, over_z), Role::Cut));
-        }
-        if self.exit {
-            push((thread(self.taper_lead, false), Point::new(p.x_rise, p.z_end), Role::RunOut));
-        }
-        push((Motion::Rapid, Point::new(p.x_back, p.z_end), Role::Retract));
-        let (motion, to, role) = *moves.get(..len)?.get(usize::from(step))?;
         Some(Move { motion, to, role, pass: Some(info) })
     }
 
@@ -850,6 +908,21 @@ mod tests {
         assert_eq!(isqrt_wide(1 << 120, 0), None);
         let (hi, lo) = mul_wide(u128::MAX, u128::MAX);
         assert_eq!((hi, lo), (u128::MAX - 1, 1));
+        // r² ≤ x < (r + 1)² over values of every length (the digits start
+        // at the highest pair that is not zero).
+        let mut state = 0x9e37_79b9_7f4a_7c15_u128;
+        for bits in 0..248_u32 {
+            state = state.wrapping_mul(0x2545_f491_4f6c_dd1d).wrapping_add(0x1405_7b7e_f767_814f);
+            let (hi, lo) = if bits >= 128 {
+                ((state >> 1) >> (255 - bits), state)
+            } else {
+                (0, (state | 1) >> (127 - bits))
+            };
+            let r = isqrt_wide(hi, lo).unwrap();
+            let le = |a: (u128, u128), b: (u128, u128)| a.0 < b.0 || (a.0 == b.0 && a.1 <= b.1);
+            assert!(le(mul_wide(r, r), (hi, lo)), "{bits}");
+            assert!(!le(mul_wide(r + 1, r + 1), (hi, lo)), "{bits}");
+        }
     }
 
     #[test]
@@ -923,6 +996,40 @@ mod tests {
         let mut v = Values::new(&m.words, &mut m.tan, Depth::Rough(8));
         assert_eq!(v.sign(&m.words, DEEPER), Ok(Ordering::Equal));
         assert_eq!(v.stats, FastPathStats { values: 1, fallbacks: 1 });
+    }
+
+    /// Every rough pass's coordinates lie between the first rough pass's
+    /// and the last's (what the checks before the first move rely on),
+    /// in both X modes, both directions, external and internal, with and
+    /// without a compound angle, on the fast path and off it.
+    #[test]
+    fn first_and_last_rough_passes_bound_the_others() {
+        let mut c = cycle();
+        c.degression = 12_345;
+        c.initial_depth = 500;
+        for variant in 0..16 {
+            c.peak_offset = if variant % 2 == 0 { -10_000 } else { 10_000 };
+            c.x_mode = if variant & 2 == 0 { XMode::Radius } else { XMode::Diameter };
+            c.end.z = if variant & 4 == 0 { -200_000 } else { 300_000 };
+            c.compound_angle = if variant & 8 == 0 { 295_000 } else { 0 };
+            for fast in [true, false] {
+                let mut m = if fast { expand_linuxcnc(&c) } else { expand_linuxcnc_exact(&c) }.unwrap();
+                let w = m.words;
+                let points = |n, t: &mut Option<Interval<FAST>>| {
+                    let p = Points::of(&mut Values::new(&w, t, Depth::Rough(n)), &w).unwrap();
+                    [p.x_back, p.x_cut, p.x_rise, p.z_start, p.z_end, p.radius]
+                };
+                assert!(m.rough > 2, "{variant}");
+                let (first, last) = (points(1, &mut m.tan), points(m.rough, &mut m.tan));
+                for n in 2..m.rough {
+                    let p = points(n, &mut m.tan);
+                    for i in 0..6 {
+                        let (lo, hi) = (first[i].min(last[i]), first[i].max(last[i]));
+                        assert!((lo..=hi).contains(&p[i]), "{variant} {fast} pass {n} value {i}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]
