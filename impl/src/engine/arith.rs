@@ -167,6 +167,9 @@ pub(super) const SQRT_Q32: [u64; 33] = {
 #[must_use]
 #[cfg_attr(kani, kani::requires(crate::engine::contracts::sqrt_requires(x)))]
 #[cfg_attr(kani, kani::ensures(|r: &u128| crate::engine::contracts::round_sqrt_ensures(x, *r)))]
+// Inlined into the depth law (a call per root cost as much again as the
+// root; the G76 up-front count and schedule take one per level).
+#[inline(always)]
 pub const fn round_sqrt_near(x: u128, guess: u128) -> u128 {
     #[cfg(feature = "contract-checks")]
     assert!(super::contracts::sqrt_requires(x), "round_sqrt_near: requires");
@@ -190,6 +193,7 @@ pub fn record_isqrt_near(x: u128, guess: u128) {
 /// The steps of [`round_sqrt_near`] from `guess`: the rounded root, or
 /// `None` when [`NEAR_STEPS`] corrections do not reach it (or `x ≥ 2^62`),
 /// with the iterations of the loop (at most `NEAR_STEPS + 1`).
+#[inline(always)]
 const fn round_sqrt_near_steps(x: u128, guess: u128) -> (Option<u128>, u32) {
     if x >= super::contracts::SQRT_LIMIT {
         return (None, 0);

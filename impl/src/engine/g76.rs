@@ -91,7 +91,7 @@
 //!   start, a binary gcd
 //!   of numbers below 1000 (no division unless the angle must be reduced,
 //!   [`StartSpacing`]).
-//! * Memory: a [`G76Moves`] is a fixed-size value (600 bytes on 64-bit
+//! * Memory: a [`G76Moves`] is a fixed-size value (840 bytes on 64-bit
 //!   targets; `proofs/tests/engine_equals_spec.rs` checks the bound),
 //!   whatever the number of passes and starts.
 
@@ -101,7 +101,7 @@ use core::iter::FusedIterator;
 use super::arith::saturate_i64;
 use super::pass::{Frame, LongAxis, Walk};
 use super::schedule::{formula_levels, law_near, Schedule};
-use crate::angle::{StartAngle, StartSpacing};
+use crate::angle::StartSpacing;
 use crate::error::{CycleError, Field};
 use crate::g76::{DepthMode, G76Cycle, Infeed, RunOut};
 use crate::lead::{Lead, Ratio};
@@ -693,7 +693,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     };
     let start_major = c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal);
     // Made in place as the result (a value built first and then moved
-    // into it was copied whole, 600 bytes, once per cycle), with no pass
+    // into it was copied whole, 840 bytes, once per cycle), with no pass
     // loaded yet: the first call of `next` finds the walk empty and
     // `advance` plans the first pass, at start 1 (`start` is the last
     // start under `pass-major`, so that `advance` moves on to the next
@@ -713,7 +713,8 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         stage: Stage::Rough { second_pending: false },
         previous: 0,
         number: 0,
-        walk: Walk::idle(c.lead),
+        // Start 0's angle, 0° (`StartSpacing::angle`), in the first bank.
+        walk: Walk::idle(c.lead, 0, frame.spacing.angle(0)),
         start: if start_major.is_some() { 0 } else { c.starts.saturating_sub(1) },
         rough_passes,
         start_major,
@@ -777,25 +778,37 @@ impl G76Moves {
             return;
         };
         let path = self.frame.path(pass.depth, shift);
-        self.walk.load(path, pass, StartAngle::ZERO, self.frame.home);
+        self.walk.load(path, pass, self.frame.home);
         // start < L ≤ 999; 0 under `pass-major`.
         self.begin_start(if self.start_major.is_some() { self.start } else { 0 });
     }
 
     /// Starts the path of the current pass for start `start` (0-based).
+    /// The start expected next is the next one, after the last the first
+    /// (`pass-major`: the next pass's; `start-major` repeats a start for
+    /// each pass and then goes on to the next).
+    #[inline(always)]
     fn begin_start(&mut self, start: u32) {
         self.start = start;
-        #[cfg(feature = "loop-counters")]
-        self.frame.spacing.record_angle_gcd(start);
         // start < L ≤ 999.
         let number = u16::try_from(start + 1).unwrap_or(u16::MAX);
-        self.walk.restart(number, self.frame.spacing.angle(start));
+        let next = if start + 1 < self.frame.starts { start + 1 } else { 0 };
+        let spacing = self.frame.spacing;
+        self.walk.restart(number, start, next, |i| {
+            #[cfg(feature = "loop-counters")]
+            spacing.record_angle_gcd(i);
+            spacing.angle(i)
+        });
     }
 
     /// The next planned pass and its Z shift, as the reference's
     /// `planned_passes` (readings R-INFEED, R-FINISH), with `start` 1.
     ///
     /// Twin: `spec/src/g76.rs`, `planned_passes`.
+    // Inlined into `next_pass`: a `(Pass, i64)` returned through memory
+    // was written piece by piece and read back in 16-byte loads (a
+    // store-forwarding stall per pass).
+    #[inline(always)]
     fn plan_next(&mut self) -> Option<(Pass, i64)> {
         let mut count = crate::loop_counters::count!(PLAN_NEXT);
         loop {
@@ -912,11 +925,15 @@ impl Iterator for G76Moves {
         let mut count = crate::loop_counters::count!(G76_NEXT);
         loop {
             count.tick();
-            if self.stage == Stage::Done {
-                return None;
-            }
+            // The walk first: a cycle is done only once its last path has
+            // been walked (`next_pass` ends it when the walk is at its
+            // end, and nothing loads the walk after that), so a move is
+            // made without looking at the stage.
             if let Some(m) = self.walk.next_move() {
                 return Some(m);
+            }
+            if self.stage == Stage::Done {
+                return None;
             }
             self.advance();
         }

@@ -185,7 +185,7 @@ pub fn expand_g92(cycle: &G92Cycle) -> Result<G92Moves, CycleError> {
         },
     };
     let pass = Pass { kind: PassKind::Single, number: 1, start: 1, depth: 0, cut: 0, flank: Flank::Centre };
-    let walk = Walk::new(frame.path(0, 0), pass, c.lead, c.start_angle, c.start);
+    let walk = Walk::new(frame.path(0, 0), pass, c.lead, 0, c.start_angle, c.start);
     Ok(G92Moves { frame, walk, start: 0, first_angle: c.start_angle })
 }
 
@@ -219,12 +219,16 @@ impl G92Moves {
             return false;
         }
         self.start = next;
-        #[cfg(feature = "loop-counters")]
-        self.frame.spacing.record_angle_gcd(next);
         // next < L ≤ 999.
         let number = u16::try_from(next + 1).unwrap_or(u16::MAX);
-        let angle = self.first_angle.plus(self.frame.spacing.angle(next));
-        self.walk.restart(number, angle);
+        // The start after this one, if any, is the one expected next.
+        let after = if next + 1 < self.frame.starts { next + 1 } else { next };
+        let (first, spacing) = (self.first_angle, self.frame.spacing);
+        self.walk.restart(number, next, after, |i| {
+            #[cfg(feature = "loop-counters")]
+            spacing.record_angle_gcd(i);
+            first.plus(spacing.angle(i))
+        });
         true
     }
 }

@@ -226,27 +226,49 @@ pub(crate) struct Walk {
     start: u16,
     /// X (the first coordinate) of the end points of the moves that move,
     /// in order (`len` of them).
-    x: [i64; 6],
+    x: [i64; SLOTS],
     /// Z of the same end points.
-    z: [i64; 6],
+    z: [i64; SLOTS],
     /// Their roles.
-    role: [Role; 6],
-    /// The motion of each move: an index into `motions`.
-    motion: [u8; 6],
-    /// The three motions a move can have, for the current start: a rapid,
-    /// the thread move where synchronisation starts, the thread moves
-    /// after it. Copied whole into each move: a motion assembled per move
-    /// was built in memory field by field and read back whole, a
-    /// store-forwarding stall per move.
-    motions: [Motion; 3],
+    role: [Role; SLOTS],
+    /// The motion of each move: [`RAPID`], [`SYNC`] or [`THREAD`], an
+    /// index into a bank of `motions`.
+    motion: [u8; SLOTS],
+    /// The bank of `motions` the current start's moves take their motion
+    /// from: the index of its first motion, 0 or [`BANK`] (a word: it is
+    /// read per move).
+    bank: usize,
+    /// The start (the caller's key: G76 and G92 use the 0-based start
+    /// index) whose spindle angle each bank holds; [`NO_KEY`] for none.
+    keys: [u32; 2],
+    /// Two banks of the three motions a move can have, each for one start:
+    /// a rapid, the thread move where synchronisation starts, the thread
+    /// moves after it. Copied whole into each move: a motion assembled per
+    /// move was built in memory field by field and read back whole, a
+    /// store-forwarding stall per move. A bank is written one start ahead
+    /// of its use (see [`Walk::restart`]): a spindle angle written when
+    /// its start begins was read back, within the motion's wider loads, by
+    /// that start's first thread move while still in the store buffer (a
+    /// stall per start).
+    motions: [Motion; SLOTS],
 }
 
-/// Index in [`Walk::motions`] of a rapid.
+/// The motions in one bank of [`Walk::motions`] (three, and one unused).
+const BANK: usize = 4;
+/// The length of the arrays of a [`Walk`]: at least six moves and two
+/// banks of motions, a power of two so that an index taken modulo
+/// `SLOTS` is visibly in bounds (no check per move; every index used is
+/// already below it).
+const SLOTS: usize = 8;
+/// The key of a bank of [`Walk::motions`] that holds no start's angle.
+const NO_KEY: u32 = u32::MAX;
+
+/// Index in a bank of [`Walk::motions`] of a rapid.
 const RAPID: u8 = 0;
-/// Index in [`Walk::motions`] of the thread move where synchronisation
+/// Index in a bank of [`Walk::motions`] of the thread move where synchronisation
 /// starts.
 const SYNC: u8 = 1;
-/// Index in [`Walk::motions`] of a later thread move of the run.
+/// Index in a bank of [`Walk::motions`] of a later thread move of the run.
 const THREAD: u8 = 2;
 
 /// The three motions of a walk at spindle angle `angle` (see
@@ -263,7 +285,7 @@ fn motions(lead: Lead, angle: StartAngle) -> [Motion; 3] {
 /// cycle's, does not change): a motion built anew is assembled in a
 /// temporary and copied, which stalls on the copy.
 #[inline(always)]
-fn set_angle(motions: &mut [Motion; 3], angle: StartAngle) {
+fn set_angle(motions: &mut [Motion], angle: StartAngle) {
     for m in motions {
         if let Motion::Thread { start_angle, .. } = m {
             *start_angle = angle;
@@ -273,49 +295,43 @@ fn set_angle(motions: &mut [Motion; 3], angle: StartAngle) {
 
 impl Walk {
     /// A walk of `path` from `a` (A, `frame.home`: where every start
-    /// begins) for `pass` at spindle angle `angle`.
-    pub(crate) fn new(path: PassPath, pass: Pass, lead: Lead, angle: StartAngle, a: Point) -> Walk {
-        let mut walk = Walk {
-            next: 0,
-            len: 0,
-            pass,
-            start: pass.start,
-            x: [0; 6],
-            z: [0; 6],
-            role: [Role::Return; 6],
-            motion: [RAPID; 6],
-            motions: motions(lead, angle),
-        };
-        walk.load(path, pass, angle, a);
+    /// begins) for `pass` at spindle angle `angle`, the angle of the start
+    /// the caller calls `key` (see [`Walk::restart`]).
+    pub(crate) fn new(path: PassPath, pass: Pass, lead: Lead, key: u32, angle: StartAngle, a: Point) -> Walk {
+        let mut walk = Walk::idle(lead, key, angle);
+        walk.load(path, pass, a);
+        walk.start = pass.start;
         walk
     }
 
-    /// A walk with no move, for the lead `lead`: [`Walk::load`] gives it
-    /// its first path.
-    pub(crate) fn idle(lead: Lead) -> Walk {
+    /// A walk with no move, for the lead `lead`, whose first bank holds
+    /// the angle `angle` of the start `key`: [`Walk::load`] gives it its
+    /// first path.
+    pub(crate) fn idle(lead: Lead, key: u32, angle: StartAngle) -> Walk {
         // A placeholder pass, replaced by `load` before any move is made.
         let pass = Pass { kind: PassKind::Rough, number: 0, start: 1, depth: 0, cut: 0, flank: Flank::Right };
+        let [r, s, t] = motions(lead, angle);
         Walk {
             next: 0,
             len: 0,
             pass,
             start: 1,
-            x: [0; 6],
-            z: [0; 6],
-            role: [Role::Return; 6],
-            motion: [RAPID; 6],
-            motions: motions(lead, StartAngle::ZERO),
+            x: [0; SLOTS],
+            z: [0; SLOTS],
+            role: [Role::Return; SLOTS],
+            motion: [RAPID; SLOTS],
+            bank: 0,
+            keys: [key, NO_KEY],
+            motions: [r, s, t, r, r, s, t, r],
         }
     }
 
-    /// Makes this the walk of `path` from `a` for `pass` at `angle`, with
-    /// the lead it was made with, as [`Walk::new`] does, in place (a walk returned by value is copied
-    /// whole, once per pass).
+    /// Makes this the walk of `path` from `a` for `pass`, in place (a walk
+    /// returned by value is copied whole, once per pass), with the motions
+    /// it has: [`Walk::restart`] then starts it.
     #[inline(always)]
-    pub(crate) fn load(&mut self, path: PassPath, pass: Pass, angle: StartAngle, a: Point) {
+    pub(crate) fn load(&mut self, path: PassPath, pass: Pass, a: Point) {
         self.pass = pass;
-        self.start = pass.start;
-        set_angle(&mut self.motions, angle);
         self.len = 0;
         self.next = 0;
         // The candidates in order, each kept if it moves (the lead-in and
@@ -364,11 +380,43 @@ impl Walk {
         self.len = i + 1;
     }
 
-    /// The same path again from A, for another start.
-    pub(crate) fn restart(&mut self, start: u16, angle: StartAngle) {
+    /// The path from A (again) for the start numbered `start` (1-based),
+    /// at the spindle angle of the start the caller calls `key`; `next`
+    /// is the key of the start expected to come next (the same key when
+    /// none is), and `angle` gives the angle of a key.
+    ///
+    /// The angle of `next` is written now, into the bank not in use, so
+    /// that its moves read a bank written a whole path before; `key`'s
+    /// bank is written only when neither bank holds it (the first start
+    /// of a cycle, or a start that was not expected). Either way each move
+    /// carries `angle(key)`: which bank holds it changes only the speed.
+    #[inline(always)]
+    pub(crate) fn restart(&mut self, start: u16, key: u32, next: u32, angle: impl Fn(u32) -> StartAngle) {
         self.start = start;
-        set_angle(&mut self.motions, angle);
         self.next = 0;
+        let held = usize::from(self.bank != 0);
+        let mut other = held ^ 1;
+        if self.keys.get(held) != Some(&key) {
+            if self.keys.get(other) != Some(&key) {
+                self.fill(other, key, angle(key));
+            }
+            self.bank = other * BANK;
+            other = held;
+        }
+        if next != key && self.keys.get(other) != Some(&next) {
+            self.fill(other, next, angle(next));
+        }
+    }
+
+    /// Writes the angle of the start `key` into bank `bank` (0 or 1).
+    #[inline(always)]
+    fn fill(&mut self, bank: usize, key: u32, angle: StartAngle) {
+        // Only the bank's two thread motions (SYNC and THREAD) have an angle.
+        let first = bank * BANK + usize::from(SYNC);
+        if let (Some(k), Some(motions)) = (self.keys.get_mut(bank), self.motions.get_mut(first..first + 2)) {
+            *k = key;
+            set_angle(motions, angle);
+        }
     }
 
     /// The next move of the path, or `None` once it is back at A.
@@ -379,13 +427,11 @@ impl Walk {
         if i >= self.len {
             return None;
         }
-        let (Some(&x), Some(&z), Some(&role), Some(&m)) =
-            (self.x.get(i), self.z.get(i), self.role.get(i), self.motion.get(i))
-        else {
-            return None;
-        };
-        let &motion = self.motions.get(usize::from(m))?;
-        // i < len ≤ 6.
+        // i < len ≤ 6 and m + bank ≤ 2 + BANK < SLOTS: the remainders
+        // change nothing (they let the compiler see the bounds).
+        let k = i % SLOTS;
+        let motion = self.motions[(usize::from(self.motion[k]) + self.bank) % SLOTS];
+        let (x, z, role) = (self.x[k], self.z[k], self.role[k]);
         self.next = i + 1;
         Some(Move { motion, to: Point::new(x, z), role, pass: Some(Pass { start: self.start, ..self.pass }) })
     }

@@ -42,6 +42,8 @@ pub(super) fn law(q2: u64, n: u64) -> i64 {
 /// `q = Δd < 2^30`, `q2 = Δd²`.
 ///
 /// Twin: `spec/src/g76.rs`, `depth_by_law`.
+// Inlined into the up-front count and the schedule (one call per level).
+#[inline(always)]
 pub(super) fn law_near(q: u64, q2: u64, n: u64, previous: i64, step: i64) -> i64 {
     let x = u128::from(q2) * u128::from(n);
     #[cfg(feature = "loop-counters")]
@@ -195,7 +197,7 @@ impl Schedule {
     /// The depth of the next level, or `None` after the level at `k - d`.
     ///
     /// Twin: `spec/src/g76.rs`, `next_depth` (and `rough_levels`).
-    #[inline]
+    #[inline(always)]
     pub fn next_level(&mut self) -> Option<i64> {
         if self.depth >= self.last {
             // Reading R-NOROUGH `one-at-zero`: level 1 at k - d = 0.
