@@ -59,7 +59,10 @@ pub(super) fn range_err(units: Units, signed: bool) -> ErrorKind {
 
 /// The bits ([`letter_bit`]) of the upper-case letters of `letters`.
 pub(super) fn letter_mask(letters: &str) -> u32 {
-    letters.chars().fold(0, |m, c| m | letter_bit(c))
+    // By bytes, not chars (issue 33: no UTF-8 decoding a letter): no byte
+    // of a character outside ASCII is an upper-case ASCII letter, and such
+    // a character has no bit either.
+    letters.bytes().fold(0, |m, b| m | letter_bit(char::from(b)))
 }
 
 /// A length word in increments. `bare_increments` says what a value
