@@ -40,8 +40,9 @@ mod scan;
 
 pub(crate) use block::letter_bit;
 pub use block::{Block, Words, INLINE_WORDS};
-use lines::{comment_end, decode, trim, Line, FULL_OPEN, FULL_SEMI};
+use lines::{comment_end, decode, line_end_len, trim, Line, FULL_OPEN, FULL_SEMI};
 pub use lines::{last_line_end, oword, split_line, OLabel};
+pub(crate) use number::digits_value;
 use number::SLOW;
 pub use number::{Number, Word};
 use scan::{other_word, read_word, MARK_RULE};
@@ -258,7 +259,7 @@ impl<'a> Lexer<'a> {
         if tests::GENERAL_ONLY.with(std::cell::Cell::get) {
             return self.segment_general(whole, start, words);
         }
-        if let Some(seg) = self.segment_fast(whole.bytes, start, words) {
+        if let Some((seg, _)) = self.segment_fast::<false>(whole.bytes, start, words) {
             return Ok(seg);
         }
         *words = Words::new();
@@ -276,8 +277,21 @@ impl<'a> Lexer<'a> {
     /// comment, a byte outside ASCII, any other character): the general
     /// scanner reads that segment. Held equal to it by the proptest in
     /// this module's tests (issue 33: the lexer was a third of a reading).
+    ///
+    /// `FUSED`: `line` is the rest of the text from a line's start, whose
+    /// end is not yet known ([`first_segment_fast`](Lexer::first_segment_fast)):
+    /// a `\n` or `\r` ends the line (and the segment), as [`split_line`]
+    /// ends it, and the line's length and the bytes to skip to the next
+    /// are given with the segment when the segment ends at the line's end
+    /// (`None` after a `;` that more of the line follows; never given
+    /// unless `FUSED`). A `;` that starts a comment gives up (`None`).
     #[inline(always)]
-    fn segment_fast(&self, line: &'a [u8], start: usize, words: &mut Words<'a>) -> Option<Segment> {
+    fn segment_fast<const FUSED: bool>(
+        &self,
+        line: &'a [u8],
+        start: usize,
+        words: &mut Words<'a>,
+    ) -> Option<(Segment, Option<(usize, usize)>)> {
         let n = line.len();
         let mut pos = start;
         while pos < n {
@@ -328,14 +342,67 @@ impl<'a> Lexer<'a> {
                 continue;
             }
             match b {
+                b'\n' | b'\r' if FUSED => {
+                    return Some((
+                        Segment { end: pos, next: None },
+                        Some((pos, pos + line_end_len(line, pos))),
+                    ))
+                }
                 b' ' | b'\t' | b'\x0b' | b'\x0c' | b'\r' => pos += 1,
-                b';' if self.semicolon_comments => return Some(Segment { end: n, next: None }),
-                b';' => return Some(Segment { end: pos, next: Some(pos + 1) }),
+                b';' if self.semicolon_comments => {
+                    return if FUSED { None } else { Some((Segment { end: n, next: None }, None)) }
+                }
+                b';' => {
+                    let after = pos + 1;
+                    let seg = Segment { end: pos, next: Some(after) };
+                    if !FUSED {
+                        return Some((seg, None));
+                    }
+                    let line_end = match line.get(after) {
+                        None => Some((after, after)),
+                        Some(b'\n' | b'\r') => Some((after, after + line_end_len(line, after))),
+                        Some(_) => None,
+                    };
+                    return Some((seg, line_end));
+                }
                 b'(' => pos = comment_end(line, pos + 1)?,
                 _ => return None,
             }
         }
-        Some(Segment { end: n, next: None })
+        Some((Segment { end: n, next: None }, FUSED.then_some((n, n))))
+    }
+
+    /// The next line and its first segment, read by
+    /// [`segment_fast`](Lexer::segment_fast) straight from the text: one
+    /// pass over the line's bytes finds its words and its end (the usual
+    /// line, whose end the scan meets, needs no search for it; issue 33).
+    /// `None` where `segment_fast` gives up (or at the end of the text),
+    /// with the lexer where it was: the caller then reads the line as
+    /// [`next_line`](Lexer::next_line) and [`segment`](Lexer::segment) do.
+    #[inline(always)]
+    fn first_segment_fast(&mut self, words: &mut Words<'a>) -> Option<(Line<'a>, Segment)> {
+        #[cfg(test)]
+        if tests::GENERAL_ONLY.with(std::cell::Cell::get) {
+            return None;
+        }
+        let start = self.pos;
+        let rest = self.src.get(start..).filter(|r| !r.is_empty())?;
+        let (seg, line_end) = self.segment_fast::<true>(rest, 0, words)?;
+        let (len, advance) = match (line_end, seg.next) {
+            (Some(end), _) => end,
+            // A `;` with more of the line after it.
+            (None, Some(after)) => {
+                let (tail, skip) = split_line(&rest[after..]);
+                (after + tail.len(), after + skip)
+            }
+            (None, None) => return None,
+        };
+        #[cfg(test)]
+        tests::FUSED_LINES.with(|n| n.set(n.get() + 1));
+        self.pos += advance;
+        self.line += 1;
+        self.line_start = start;
+        Some((Line { start, bytes: &rest[..len] }, seg))
     }
 
     /// [`segment`](Lexer::segment) of any segment, with every rule and
@@ -465,19 +532,30 @@ impl<'a> Lexer<'a> {
     #[inline(always)]
     fn next_block(&mut self, block: &mut Block<'a>) -> Option<Result<(), ProgramError>> {
         loop {
-            let (line, start) = match self.current.take() {
-                Some(c) => c,
-                None => (self.next_line()?, 0),
-            };
             block.words = Words::new();
-            if self.owords && start == 0 && oword(line.bytes).is_some() {
-                block.line = self.line;
-                block.text = Cow::Borrowed(trim(line.bytes));
-                return Some(Ok(()));
-            }
-            let seg = match self.segment(line, start, &mut block.words) {
-                Ok(s) => s,
-                Err(e) => return Some(Err(e)),
+            let (line, start, seg) = match self.current.take() {
+                Some((line, start)) => match self.segment(line, start, &mut block.words) {
+                    Ok(s) => (line, start, s),
+                    Err(e) => return Some(Err(e)),
+                },
+                // A line whose first segment `segment_fast` reads is no
+                // o-word line: it gives up at an O.
+                None => match self.first_segment_fast(&mut block.words) {
+                    Some((line, seg)) => (line, 0, seg),
+                    None => {
+                        block.words = Words::new();
+                        let line = self.next_line()?;
+                        if self.owords && oword(line.bytes).is_some() {
+                            block.line = self.line;
+                            block.text = Cow::Borrowed(trim(line.bytes));
+                            return Some(Ok(()));
+                        }
+                        match self.segment(line, 0, &mut block.words) {
+                            Ok(s) => (line, 0, s),
+                            Err(e) => return Some(Err(e)),
+                        }
+                    }
+                },
             };
             let text = trim(&line.bytes[start..seg.end]);
             // A block end that ends the line leaves nothing to read in it.
@@ -527,6 +605,8 @@ mod tests {
     thread_local! {
         /// Set: every segment is read by the general scanner alone.
         pub(super) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
+        /// How many lines `first_segment_fast` has read.
+        pub(super) static FUSED_LINES: Cell<usize> = const { Cell::new(0) };
     }
 
     /// A block with every field of its words (a word's `==` compares its
@@ -644,6 +724,27 @@ mod tests {
             }),
             1 => any::<char>().prop_map(|c| c.to_string().into_bytes()),
         ]
+    }
+
+    /// The usual lines are read in one pass (`first_segment_fast`): every
+    /// line end, a comment, a `;` at the line's end; not a `;` with a
+    /// comment after it (its line's end is searched for), nor `%`.
+    #[test]
+    fn usual_lines_are_read_in_one_pass() {
+        let src = b"G00 X80 Z10;\r\nG01 X21.001 Z-3.25 F0.15; (finish 1)\nX24.004\r(part 3)\n%\nZ1";
+        FUSED_LINES.with(|n| n.set(0));
+        let blocks: Vec<_> = Lexer::new(src).map(|r| r.map(|b| seen(&b))).collect();
+        let fused = FUSED_LINES.with(Cell::get);
+        // Lines 1, 2 (its end searched for after the `;`), 3, 4 and 6; not
+        // line 5, `%` (a block of its own, without words).
+        assert_eq!(fused, 5);
+        let lines: Vec<usize> = blocks.iter().map(|b| b.as_ref().map_or(0, |b| b.0)).collect();
+        assert_eq!(lines, [1, 2, 3, 4, 5, 6]);
+        assert_eq!(
+            blocks[1].as_ref().map(|b| b.1.clone()).ok(),
+            Some(b"G01 X21.001 Z-3.25 F0.15 (finish 1)".to_vec())
+        );
+        assert_same(src);
     }
 
     proptest! {

@@ -24,7 +24,7 @@ pub struct Words<'a> {
 }
 
 /// The bit of an address letter in [`Words`]' masks (0 for a non-letter).
-pub(crate) fn letter_bit(letter: char) -> u32 {
+pub(crate) const fn letter_bit(letter: char) -> u32 {
     if letter.is_ascii_uppercase() {
         1 << (letter as u32 - 'A' as u32)
     } else {
@@ -57,6 +57,13 @@ impl<'a> Words<'a> {
     #[must_use]
     pub fn repeats(&self, letter: char) -> bool {
         self.repeated & letter_bit(letter) != 0
+    }
+
+    /// The bits ([`letter_bit`]) of the letters the words have, and of
+    /// those more than one word has.
+    #[inline]
+    pub(crate) fn letter_masks(&self) -> (u32, u32) {
+        (self.present, self.repeated)
     }
 
     /// Adds `w` after the others.

@@ -73,9 +73,19 @@ pub fn split_line(rest: &[u8]) -> (&[u8], usize) {
     // memchr2: a line end is found many bytes a step (a byte loop here was
     // a sixth of the reader's time).
     match memchr::memchr2(b'\n', b'\r', rest) {
-        Some(i) if rest[i] == b'\r' && rest.get(i + 1) == Some(&b'\n') => (&rest[..i], i + 2),
-        Some(i) => (&rest[..i], i + 1),
+        Some(i) => (&rest[..i], i + line_end_len(rest, i)),
         None => (rest, rest.len()),
+    }
+}
+
+/// The length of the line end (`\n` or `\r`) at `i` of `text`: 2 for
+/// `\r\n`, else 1 (reading R-LINEEND).
+#[inline(always)]
+pub(super) fn line_end_len(text: &[u8], i: usize) -> usize {
+    if text[i] == b'\r' && text.get(i + 1) == Some(&b'\n') {
+        2
+    } else {
+        1
     }
 }
 
@@ -109,15 +119,33 @@ pub(super) const FULL_OPEN: &[u8] = "（".as_bytes();
 const FULL_CLOSE: &[u8] = "）".as_bytes();
 
 /// The offset after the comment that starts before `from`, whose bytes are
-/// opaque: it ends at the first `)` or `）`.
+/// opaque: it ends at the first `)` or `）`. `None` when the comment is not
+/// closed before the end of `line` or a line end (`\n`, `\r`): a line holds
+/// none ([`split_line`]), and the lexer's reading of a line's first block
+/// straight from the text (`Lexer::first_segment_fast`) stops there.
 pub(super) fn comment_end(line: &[u8], from: usize) -> Option<usize> {
-    let rest = &line[from..];
-    let close = rest.iter().enumerate().find_map(|(i, &b)| match b {
-        b')' => Some(i + 1),
-        0xEF if rest[i..].starts_with(FULL_CLOSE) => Some(i + FULL_CLOSE.len()),
-        _ => None,
-    })?;
-    Some(from + close)
+    // One table look-up a byte (issue 33); the bytes it marks decide.
+    const STOP: [bool; 256] = {
+        let mut t = [false; 256];
+        t[b')' as usize] = true;
+        t[0xEF] = true;
+        t[b'\n' as usize] = true;
+        t[b'\r' as usize] = true;
+        t
+    };
+    let mut i = from;
+    while let Some(&b) = line.get(i) {
+        if STOP[usize::from(b)] {
+            match b {
+                b')' => return Some(i + 1),
+                b'\n' | b'\r' => return None,
+                _ if line[i..].starts_with(FULL_CLOSE) => return Some(i + FULL_CLOSE.len()),
+                _ => {}
+            }
+        }
+        i += 1;
+    }
+    None
 }
 
 /// The UTF-8 character at the start of `bytes`, if they start with one.

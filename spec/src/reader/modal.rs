@@ -111,6 +111,100 @@ impl State<'_> {
         if self.machine.profile.dialect == Dialect::LinuxCnc {
             return Ok(Next::LinuxCnc);
         }
+        #[cfg(test)]
+        let plain = !tests::GENERAL_ONLY.with(std::cell::Cell::get);
+        #[cfg(not(test))]
+        let plain = true;
+        if plain {
+            if let Some(next) = self.scan_plain(block) {
+                return Ok(next);
+            }
+        }
+        self.scan_general(block)
+    }
+
+    /// [`State::scan`] of the usual block of a program (not a trace): no
+    /// words, or only G00-G03, F, X, Z, U and W, none twice, in the mode
+    /// G00-G03, read without an error (the lead by
+    /// [`lead_short`](State::lead_short), the axes by the general
+    /// [`axis`](State::axis)). It decides before it changes the state and
+    /// then changes it as [`scan_general`](State::scan_general) does, in
+    /// its order; `None`, the state untouched, for any other block, which
+    /// `scan_general` reads. Held equal to it by the proptest in this
+    /// module's tests (issue 33: a move's modal reading was a sixth of a
+    /// reading).
+    #[inline(always)]
+    fn scan_plain(&mut self, block: &Block<'_>) -> Option<Next> {
+        const PLAIN: u32 = letter_bit('G')
+            | letter_bit('F')
+            | letter_bit('X')
+            | letter_bit('Z')
+            | letter_bit('U')
+            | letter_bit('W');
+        let (present, repeated) = block.words.letter_masks();
+        if present & !PLAIN != 0 || repeated != 0 || self.trace {
+            return None;
+        }
+        if present == 0 {
+            // No words (a comment): nothing changes.
+            return Some(Next::Source);
+        }
+        let (mut g, mut f, mut slots) = (None, None, [None; 6]);
+        for w in &block.words {
+            match w.letter {
+                'G' => g = Some(w),
+                'F' => f = Some(w),
+                // U to Z (V and Y are not there).
+                l => *slots.get_mut((l as usize).wrapping_sub('U' as usize))? = Some(w),
+            }
+        }
+        let [uw, _, ww, xw, _, zw] = slots;
+        let motion = match g {
+            Some(w) => Some(MotionMode::plain(w.integer()?)?),
+            None => None,
+        };
+        if !matches!(
+            motion.unwrap_or(self.motion),
+            MotionMode::G00 | MotionMode::G01 | MotionMode::G02 | MotionMode::G03
+        ) {
+            return None;
+        }
+        let lead = match f {
+            Some(w) => Some(self.lead_short(w)?),
+            None => None,
+        };
+        if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
+            return None;
+        }
+        let x = self.axis(block, xw, uw, self.x).ok()?;
+        let z = self.axis(block, zw, ww, self.z).ok()?;
+        // Decided: the changes of `scan_general`, in its order.
+        self.thread_run = None;
+        if motion.is_some() {
+            self.g32_j = None;
+            self.g32_k = None;
+        }
+        if lead.is_some() {
+            self.lead = lead;
+        }
+        if let Some(m) = motion {
+            self.g92 = G92Modal::default();
+            self.motion = m;
+        }
+        if xw.is_none() && zw.is_none() && uw.is_none() && ww.is_none() {
+            return Some(Next::Source);
+        }
+        self.g32_j = None;
+        self.g32_k = None;
+        let from = (self.x, self.z);
+        self.x = x;
+        self.z = z;
+        self.moved = true;
+        Some(Next::Move(from))
+    }
+
+    /// [`State::scan`] of any block, with every rule and every error.
+    fn scan_general(&mut self, block: &Block<'_>) -> Result<Next, ProgramError> {
         // G codes of the block.
         let mut g76: Option<Multipass> = None;
         let mut g75 = false;
@@ -373,17 +467,15 @@ impl State<'_> {
             // `get` names the repeated word.
             (block.get('X')?, block.get('Z')?, block.get('U')?, block.get('W')?)
         } else {
-            // The usual case: one pass over the words.
-            let (mut xw, mut zw, mut uw, mut ww) = (None, None, None, None);
+            // The usual case: one pass over the words, each put in the
+            // slot of its letter, U to Z (V and Y unused).
+            let mut slots = [None; 6];
             for w in &block.words {
-                match w.letter {
-                    'X' => xw = Some(w),
-                    'Z' => zw = Some(w),
-                    'U' => uw = Some(w),
-                    'W' => ww = Some(w),
-                    _ => {}
+                if let Some(slot) = slots.get_mut((w.letter as usize).wrapping_sub('U' as usize)) {
+                    *slot = Some(w);
                 }
             }
+            let [uw, _, ww, xw, _, zw] = slots;
             (xw, zw, uw, ww)
         };
         if xw.is_some() && uw.is_some() || zw.is_some() && ww.is_some() {
@@ -462,5 +554,91 @@ impl State<'_> {
             ));
         }
         Ok(v)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The modal reading of the usual block held equal to the general one.
+
+    use std::cell::Cell;
+
+    use proptest::prelude::*;
+
+    use crate::reader::{LineReader, Step};
+    use crate::{Machine, ProfileName};
+
+    thread_local! {
+        /// Set: every block is read by `scan_general` alone.
+        pub(super) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
+    }
+
+    /// Every step of reading `program` with `profile`: the item or the
+    /// error, and the reader's state after it, as text.
+    fn read(program: &str, profile: ProfileName, general: bool) -> Vec<String> {
+        GENERAL_ONLY.with(|g| g.set(general));
+        let machine = Machine::new(profile);
+        let mut reader = LineReader::new(&machine);
+        let mut out = Vec::new();
+        loop {
+            let step = reader.step(program.as_bytes(), None);
+            let end = matches!(step, Ok(Step::Piece | Step::Subprograms) | Err(_));
+            out.push(format!("{step:?} {:?}", reader.state));
+            if end {
+                break;
+            }
+        }
+        out.push(format!("{:?}", reader.finish()));
+        GENERAL_ONLY.with(|g| g.set(false));
+        out
+    }
+
+    /// Lines of a program: the usual moves (every letter of the fast
+    /// reading, in any order, twice, with other G codes, values out of
+    /// range or finer than the increment, leads out of the table,
+    /// incremental moves before a position is known) and the blocks that
+    /// change what they mean (G32, G92, G50, G04, M, S, T, G20/G21).
+    fn line() -> impl Strategy<Value = String> {
+        let word = prop_oneof![
+            4 => "[XZUW]-?[0-9]{1,4}(\\.[0-9]{0,5})?",
+            2 => "G0?[0-3]",
+            1 => "G(1\\.0|4|04|20|21|32|50|92|96|97|98|99|01\\.5|-1)",
+            2 => "F(0\\.[0-9]{1,7}|[0-9]{1,5}|-1|0)",
+            1 => "[MSTIKJV][0-9]{1,3}",
+            1 => "X9{9}|Z-9{9}\\.9|U0\\.0001",
+        ];
+        prop_oneof![
+            8 => proptest::collection::vec(word, 0..5).prop_map(|w| w.join(" ")),
+            1 => Just("(note)".to_string()),
+            1 => Just("M03 S500".to_string()),
+            1 => Just("G50 X100 Z50".to_string()),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        #[test]
+        fn plain_scans_are_the_general_ones(lines in proptest::collection::vec(line(), 0..16), p in 0_usize..3) {
+            let profile = [ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::Fanuc][p];
+            let program = lines.join("\n");
+            prop_assert_eq!(read(&program, profile, false), read(&program, profile, true), "{}", program);
+        }
+    }
+
+    /// The fast reading is reached: the usual moves are read by
+    /// `scan_plain` (its state untouched by `scan_general` below), and a
+    /// block it does not read is not.
+    #[test]
+    fn plain_scan_reads_the_usual_moves() {
+        let machine = Machine::new(ProfileName::Gsk980);
+        let mut state = LineReader::new(&machine).state;
+        let blocks: Vec<_> =
+            crate::lex::lex("G00 X80 Z10\nG01 X21.001 Z-3.25 F0.15\nU-2\n(c)\nM03 S500\nG32 W-5 F1")
+                .unwrap_or_default();
+        let read: Vec<bool> = blocks.iter().map(|b| state.scan_plain(b).is_some()).collect();
+        assert_eq!(read, [true, true, true, true, false, false]);
+        // X80 (IS-B, 0.001 mm): 80 000; U-2 from X21.001: 19 001.
+        assert_eq!((state.x, state.z), (Some(19_001), Some(-3_250)));
     }
 }

@@ -4,6 +4,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::lex::digits_value;
 
 /// A length word in least increments of `units`, under `machine`'s
 /// decimal-point rule (reading R-POINT): with a decimal point, or without
@@ -58,7 +59,10 @@ pub(super) fn range_err(units: Units, signed: bool) -> ErrorKind {
 
 /// The bits ([`letter_bit`]) of the upper-case letters of `letters`.
 pub(super) fn letter_mask(letters: &str) -> u32 {
-    letters.chars().fold(0, |m, c| m | letter_bit(c))
+    // By bytes, not chars (issue 33: no UTF-8 decoding a letter): no byte
+    // of a character outside ASCII is an upper-case ASCII letter, and such
+    // a character has no bit either.
+    letters.bytes().fold(0, |m, b| m | letter_bit(char::from(b)))
 }
 
 /// A length word in increments. `bare_increments` says what a value
@@ -74,14 +78,6 @@ pub(super) fn to_increments(
         Some(v) => Ok(v),
         None => increments_usual(units, block, w, bare_increments),
     }
-}
-
-/// The value of the decimal digits `int` then `frac` read as one integer
-/// (the point dropped). The fast readings call it with at most 18 digits in
-/// all, so it cannot overflow.
-#[inline]
-fn digits_value(int: &[u8], frac: &[u8]) -> u64 {
-    int.iter().chain(frac).fold(0, |v, &b| v * 10 + u64::from(b - b'0'))
 }
 
 /// [`to_increments`] of the usual word, inlined where a block's axes are
@@ -105,7 +101,7 @@ fn increments_short(units: Units, w: &Word<'_>, bare_increments: bool) -> Option
         return None;
     }
     // At most 18 digits once scaled: no overflow.
-    let mut v = i64::try_from(digits_value(int, frac)).ok()?;
+    let mut v = digits_value(int, frac);
     for _ in frac.len()..d {
         v *= 10;
     }
@@ -298,7 +294,7 @@ impl State<'_> {
             return None;
         }
         // At most 18 digits: no overflow, in the mantissa or the value.
-        let mantissa = digits_value(int, frac);
+        let mantissa = digits_value(int, frac).unsigned_abs();
         let scale = frac.len();
         let word = if w.letter == 'F' { LeadWord::F } else { LeadWord::I };
         let value = i128::from(mantissa * TO_MICRO[scale]);
