@@ -1,8 +1,10 @@
 //! G75.1, the radial trapezoidal groove cycle of the GSK 980TDi (seed 001,
 //! `docs/G75.md`).
 
+use std::cell::RefCell;
 use std::fmt;
 
+use cycleref::engine::g75::{expand_g75_planned, G75Plan};
 use cycleref::g75::RIGHT_ANGLE;
 use cycleref::units::Length;
 use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role};
@@ -40,18 +42,56 @@ impl fmt::Display for GrooveHeading {
             PathType::RoughAndFinish => "J1 rough + finish",
             PathType::Finish => "J2 finish",
         };
-        write!(
-            f,
-            "G75.1 lines {}-{}: {path}, {} layer{} {} plunge{}, tool ",
-            self.params_line,
-            self.line,
-            self.layers,
-            if self.layers == 1 { "," } else { "s," },
-            self.plunges,
-            if self.plunges == 1 { "" } else { "s" },
-        )?;
+        // Into one buffer, then one write (issue 33: a heading a groove,
+        // where `write!` with its seven arguments cost more than the
+        // groove's geometry). At most 4·20 digits and 73 other bytes.
+        let mut text = [0_u8; 160];
+        let mut len = 0;
+        let mut put = |bytes: &[u8]| {
+            if let Some(to) = text.get_mut(len..len + bytes.len()) {
+                to.copy_from_slice(bytes);
+                len += bytes.len();
+            }
+        };
+        let number = |v: u64| {
+            let mut digits = [0_u8; 20];
+            let mut at = digits.len();
+            let mut v = v;
+            loop {
+                at -= 1;
+                // v % 10 < 10: the cast keeps the digit.
+                #[allow(clippy::cast_possible_truncation)]
+                let d = (v % 10) as u8;
+                digits[at] = b'0' + d;
+                v /= 10;
+                if v == 0 {
+                    break;
+                }
+            }
+            (digits, at)
+        };
+        let wide = |v: usize| u64::try_from(v).unwrap_or(u64::MAX);
+        put(b"G75.1 lines ");
+        let (d, at) = number(wide(self.params_line));
+        put(&d[at..]);
+        put(b"-");
+        let (d, at) = number(wide(self.line));
+        put(&d[at..]);
+        put(b": ");
+        put(path.as_bytes());
+        put(b", ");
+        let (d, at) = number(u64::from(self.layers));
+        put(&d[at..]);
+        put(if self.layers == 1 { b" layer, " } else { b" layers, " });
+        let (d, at) = number(self.plunges);
+        put(&d[at..]);
+        put(if self.plunges == 1 { b" plunge, tool " } else { b" plunges, tool " });
+        f.write_str(core::str::from_utf8(&text[..len]).unwrap_or_default())?;
         match self.tool_width {
-            Some(w) => write!(f, "width I{w}"),
+            Some(w) => {
+                f.write_str("width I")?;
+                w.fmt(f)
+            }
             None => f.write_str("pointed"),
         }
     }
@@ -89,7 +129,15 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
     }
 
     fn engine(&self) -> Result<Box<G75Moves>, CycleError> {
-        Ok(Box::new(cycleref::expand_g75(&self.cycle)?))
+        // The plan of the last groove expanded on this thread, reused when
+        // the next has the same words but for its position (both phases of a
+        // run, a program that cuts one groove at several places): the same
+        // moves as `expand_g75` by construction, one plan held at a time.
+        thread_local! {
+            static PLAN: RefCell<Option<G75Plan>> = const { RefCell::new(None) };
+        }
+        let moves = PLAN.with(|plan| expand_g75_planned(&self.cycle, &mut plan.borrow_mut()))?;
+        Ok(Box::new(moves))
     }
 
     fn reference(&self) -> Result<Box<dyn ReferenceMoves>, CycleError> {

@@ -2,6 +2,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::lex::Number;
 use crate::readings::{G75Allowance, G75PDigits};
 
 /// The values of a G75.1 block 1, kept until block 2 arrives.
@@ -49,31 +50,23 @@ impl State<'_> {
                 ErrorKind::OutOfRange { range: "0..90 degrees (A, B: 0 < a <= 90; L: 0 <= L < 90)".into() },
             )
         };
-        let d = w.number().decimal().ok_or_else(out)?;
-        if d.is_sign_negative() && !d.is_zero() {
-            return Err(out());
-        }
         // The range table gives angles to 0.001 degree at IS-B and 0.0001
         // degree at IS-C.
         let decimals: u32 = match self.units.system {
             cycleref::IncrementSystem::IsB => 3,
             cycleref::IncrementSystem::IsC => 4,
         };
-        let t = d.checked_mul(Decimal::from(10_000)).ok_or_else(out)?;
-        if d.normalize().scale() > decimals || !t.fract().is_zero() {
-            return Err(err(
+        match angle_units(&w.number(), decimals) {
+            Ok(t) => Ok(t),
+            Err(AngleFault::OutOfRange) => Err(out()),
+            Err(AngleFault::NotInIncrements) => Err(err(
                 block,
                 Some(w),
                 ErrorKind::NotInIncrements {
                     increment: format!("0.{}1 degree", "0".repeat(decimals as usize - 1)),
                 },
-            ));
+            )),
         }
-        let t = u32::try_from(t.trunc()).map_err(|_| out())?;
-        if t > 4 * RIGHT_ANGLE {
-            return Err(out());
-        }
-        Ok(t)
     }
 
     /// A required length word of G75.1 block 1.
@@ -254,5 +247,131 @@ impl State<'_> {
             }
         }
         Ok(kinds)
+    }
+}
+
+/// Why a G75.1 angle word is refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AngleFault {
+    /// Negative, or beyond 360 degrees.
+    OutOfRange,
+    /// Finer than 10^-`decimals` degree.
+    NotInIncrements,
+}
+
+/// An angle word's value in 0.0001 degree, given to `decimals` (3 or 4)
+/// decimals at most. The usual word (at most 18 digits, none finer than
+/// the increment) in integers (issue 33), else by [`angle_units_decimal`]:
+/// the same value and refusals (the test `angles_by_integers_and_decimals`).
+fn angle_units(n: &Number<'_>, decimals: u32) -> Result<u32, AngleFault> {
+    if n.int_bytes().len() + n.frac_bytes().map_or(0, <[u8]>::len) <= 18 {
+        if let Some(v) = n.exact(decimals) {
+            if n.negative && v != 0 {
+                return Err(AngleFault::OutOfRange);
+            }
+            let t = v * if decimals == 3 { 10 } else { 1 };
+            return match u32::try_from(t) {
+                Ok(t) if t <= 4 * RIGHT_ANGLE => Ok(t),
+                _ => Err(AngleFault::OutOfRange),
+            };
+        }
+    }
+    angle_units_decimal(n, decimals)
+}
+
+/// [`angle_units`] by exact decimals.
+fn angle_units_decimal(n: &Number<'_>, decimals: u32) -> Result<u32, AngleFault> {
+    let d = n.decimal().ok_or(AngleFault::OutOfRange)?;
+    if d.is_sign_negative() && !d.is_zero() {
+        return Err(AngleFault::OutOfRange);
+    }
+    let t = d.checked_mul(Decimal::from(10_000)).ok_or(AngleFault::OutOfRange)?;
+    if d.normalize().scale() > decimals || !t.fract().is_zero() {
+        return Err(AngleFault::NotInIncrements);
+    }
+    let t = u32::try_from(t.trunc()).map_err(|_| AngleFault::OutOfRange)?;
+    if t > 4 * RIGHT_ANGLE {
+        return Err(AngleFault::OutOfRange);
+    }
+    Ok(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The integer reading of an angle word gives what the decimal one
+    /// gives, over words of every shape: signs, points, leading and
+    /// trailing zeros, digits finer than the increment, the 360-degree
+    /// limit, 18 and 19 digits and more.
+    #[test]
+    fn angles_by_integers_and_decimals() {
+        let mut texts: Vec<String> = [
+            "",
+            ".",
+            "0",
+            "00",
+            "0.",
+            ".0",
+            "45",
+            "45.",
+            "45.0",
+            "045.500",
+            "30.25",
+            "0.001",
+            "0.0001",
+            "0.00010",
+            "0.00001",
+            "89.9999",
+            "90",
+            "359.9999",
+            "360",
+            "360.0000",
+            "360.0001",
+            "360.001",
+            "361",
+            "4294967296",
+            "429496.7296",
+            "1.23456",
+            "0.0005",
+            "7.0000000000000000000",
+            "000000000000000045.5",
+            "0000000000000000045.5",
+            "123456789012345678",
+            "1234567890123456789",
+            "99999999999999999999999999999999",
+            "0.000000000000000000000000000001",
+        ]
+        .iter()
+        .map(|s| (*s).to_string())
+        .collect();
+        // Every value 0 … 400 degrees in steps of 0.3217 (to 4 decimals) at
+        // several widths.
+        let mut v: u64 = 0;
+        while v <= 4_000_000 {
+            texts.push(format!("{}.{:04}", v / 10_000, v % 10_000));
+            texts.push(format!("{}.{:03}", v / 10_000, (v % 10_000) / 10));
+            texts.push(format!("{}", v / 10_000));
+            v += 3_217;
+        }
+        for t in &texts {
+            for negative in [false, true] {
+                let n = Number::new(negative, t);
+                for decimals in [3, 4] {
+                    assert_eq!(
+                        angle_units(&n, decimals),
+                        angle_units_decimal(&n, decimals),
+                        "{negative} {t} {decimals}"
+                    );
+                }
+            }
+        }
+        // The cases by hand: 45.5 degrees is 455 000 units; 0.0001 degree
+        // is 1 at IS-C and finer than IS-B's 0.001.
+        assert_eq!(angle_units(&Number::new(false, "45.5"), 3), Ok(455_000));
+        assert_eq!(angle_units(&Number::new(false, "0.0001"), 4), Ok(1));
+        assert_eq!(angle_units(&Number::new(false, "0.0001"), 3), Err(AngleFault::NotInIncrements));
+        assert_eq!(angle_units(&Number::new(true, "1"), 3), Err(AngleFault::OutOfRange));
+        assert_eq!(angle_units(&Number::new(false, "360.0001"), 4), Err(AngleFault::OutOfRange));
     }
 }

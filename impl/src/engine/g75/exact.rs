@@ -710,6 +710,16 @@ impl<'f> Evaluator<'f> {
         fallback: &'f mut Fallback,
     ) -> Result<Evaluator<'f>, CycleError> {
         c.validate()?;
+        Evaluator::corners_checked(c, fast_path, fallback)
+    }
+
+    /// [`Evaluator::checked`] for a cycle that passed `validate()`: the
+    /// corners (§3) only.
+    pub(super) fn corners_checked(
+        c: &G75Cycle,
+        fast_path: bool,
+        fallback: &'f mut Fallback,
+    ) -> Result<Evaluator<'f>, CycleError> {
         let mut ev = Evaluator::new(Geometry::new(c), fast_path, fallback);
         ev.check_corners()?;
         Ok(ev)

@@ -122,6 +122,17 @@
 //! fallback (several kilobytes) live in a `Fallback` on the stack of
 //! [`expand_g75`], lent to the evaluator and never copied.
 //!
+//! [`expand_g75_planned`] keeps the part of an expansion that does not
+//! depend on where the groove is ([`G75Plan`]: every decision of the
+//! geometry in the local frame, and the alarms among them) and reuses it
+//! for the next cycle with the same words but for its start point and the
+//! point before it; only the range checks and the absolute moves are made
+//! again. [`expand_g75`] is the same function with no plan kept, so the
+//! two agree by construction (the test `planned_expansion_is_the_plain_one`
+//! compares them, alarms included). The reader's pipeline keeps one plan
+//! per thread, so a program that cuts one groove at many places decides
+//! its geometry once, not twice per groove (issue 33).
+//!
 //! # Readings added by this engine
 //!
 //! Where `docs/G75.md` leaves a detail open, the simplest reading is taken;
@@ -262,52 +273,181 @@ pub fn expand_g75_exact(c: &G75Cycle) -> Result<G75Moves, CycleError> {
 
 /// [`expand_g75`], the fast path on or off.
 fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
-    let mut fallback = Fallback::default();
-    let mut ev = Evaluator::checked(c, fast_path, &mut fallback)?;
-    let g = ev.g;
+    c.validate()?;
+    place(c, &G75Plan::of_valid(c, fast_path)?)
+}
+
+/// Expands a G75.1 cycle like [`expand_g75`], keeping in `plan` the part of
+/// the work that does not depend on where the groove is (see [`G75Plan`]):
+/// when `plan` holds the plan of a cycle with the same words but for its
+/// start point and the point before it, that plan is used instead of being
+/// computed again (a program that cuts one groove at several places
+/// decides its geometry once). The same result as [`expand_g75`] by
+/// construction: [`expand_g75`] is this function with an empty `plan`.
+///
+/// ```
+/// use cycleref::engine::g75::expand_g75_planned;
+/// use cycleref::examples::G75_SEED;
+/// use cycleref::{expand_g75, Point};
+///
+/// let mut plan = None;
+/// let moves: Vec<_> = expand_g75_planned(&G75_SEED, &mut plan)?.collect();
+/// assert_eq!(moves, expand_g75(&G75_SEED)?.collect::<Vec<_>>());
+/// // The same groove 5 mm further along Z: the plan is reused.
+/// let mut moved = G75_SEED;
+/// moved.start.z -= 5_000;
+/// moved.from.z -= 5_000;
+/// let again: Vec<_> = expand_g75_planned(&moved, &mut plan)?.collect();
+/// assert_eq!(again, expand_g75(&moved)?.collect::<Vec<_>>());
+/// # Ok::<(), cycleref::CycleError>(())
+/// ```
+///
+/// # Errors
+///
+/// Those of [`expand_g75`], in its order.
+pub fn expand_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<G75Moves, CycleError> {
+    c.validate()?;
+    match plan {
+        Some(p) if p.fits(c) => {}
+        _ => {
+            // A failed plan leaves nothing behind: the next cycle plans again.
+            *plan = None;
+            *plan = Some(G75Plan::of_valid(c, true)?);
+        }
+    }
+    match plan {
+        Some(p) => place(c, p),
+        None => Err(CycleError::UndecidedRounding),
+    }
+}
+
+/// The part of a G75.1 expansion that depends only on the groove's words,
+/// not on where it is: every decision of the geometry (the corners, the
+/// plunge ranges, `y_top`, the peck count, the rough and finishing contours
+/// in the local frame), with the alarms among them (R-G75ORDER 1–5 and
+/// `UndecidedRounding`). Its position (the start point and the point before
+/// the cycle) adds only the range checks and the absolute moves
+/// (R-G75RANGE), made for each cycle. [`expand_g75_planned`] keeps one.
+#[derive(Clone, Debug)]
+pub struct G75Plan {
+    /// The cycle it was made for, its start point and the point before it
+    /// at the origin.
+    key: G75Cycle,
+    /// The fast path was on.
+    fast_path: bool,
+    /// The words in the local frame.
+    geometry: Geometry,
+    /// The fast path's region (`None`: off).
+    region: Option<Region<Approx>>,
+    /// The decisions made and the fast path's fallbacks.
+    stats: FastPathStats,
+    /// The layers.
+    layers: Layers,
+    /// The last layer's plunge range.
+    last: (i128, i128),
+    /// Layer 1's plunge range.
+    first: (i128, i128),
+    /// The top of layer 1.
+    y_top: i128,
+    /// The plunges of the roughing (0: J2).
+    plunges: u64,
+    /// The rough contour's vertices (J0, J1).
+    rough_pts: Option<([contour::RoughLocal; 6], usize)>,
+    /// The finishing profile (J1, J2).
+    finish_pts: Option<([contour::ProfileLocal; 8], usize)>,
+}
+
+impl G75Plan {
+    /// The cycle `c` with its position taken out: what a plan depends on.
+    fn key_of(c: &G75Cycle) -> G75Cycle {
+        let origin = crate::units::Point::new(0, 0);
+        G75Cycle { from: origin, start: origin, ..*c }
+    }
+
+    /// True when this plan is that of `c` (its words but for the position).
+    fn fits(&self, c: &G75Cycle) -> bool {
+        self.fast_path && self.key == G75Plan::key_of(c)
+    }
+
+    /// The plan of a cycle that passed [`G75Cycle::validate`], every
+    /// geometric check in the order of R-G75ORDER.
+    fn of_valid(c: &G75Cycle, fast_path: bool) -> Result<G75Plan, CycleError> {
+        let mut fallback = Fallback::default();
+        let mut ev = Evaluator::corners_checked(c, fast_path, &mut fallback)?;
+        let g = ev.g;
+        let layers = Layers::new(c, &g);
+        let rough_bottom = layers.rough_bottom;
+        // R-G75PLUNGE: the last layer is the narrowest (left grows, right
+        // shrinks with depth); R-G75NARROW: checked for every J. This is also
+        // the check K2.u ≤ K3.u (or Q1/Q2): at y = Y − Δu, left is K2's formula
+        // and right K3's plus w.
+        let (last_first, last_last) = ev.plunges(rough_bottom)?;
+        if last_last < last_first {
+            return Err(CycleError::GrooveNarrowerThanTool { tool_width: Length::new(g.w, c.units) });
+        }
+        let y1 = layers.bottom(1);
+        let (a11, a1f) = if layers.count == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
+        // R-G75RIDGE: layered roughing with a step wider than the tool leaves
+        // ridges in layer 1 that the next layer's rapids would cross (refused
+        // unless the reading is `as-written`).
+        if !c.readings.ridges_as_written
+            && c.path.roughs()
+            && layers.count >= 2
+            && c.step > g.w
+            && a1f - a11 > i128::from(g.w)
+        {
+            return Err(CycleError::RidgesInLayers {
+                step: Length::new(c.step, c.units),
+                tool_width: Length::new(g.w, c.units),
+            });
+        }
+        // Layer tops: y_top = floor(y3), or 0 when the opening falls
+        // (R-G75LAYER, R-G75SLOPE).
+        let y_top = ev.y_top()?;
+
+        // §9, only when roughing (R-G75PECKS).
+        let roughs = c.path.roughs();
+        let plunges = if roughs {
+            check_peck_count(&mut ev, c, &layers, y_top, (a11, a1f), (last_first, last_last))?
+        } else {
+            0
+        };
+        // R-G75NEED: the rough contour only for J0/J1, the finishing profile
+        // only for J1/J2.
+        let rough_pts = if roughs { Some(rough_vertices(&mut ev, y_top)?) } else { None };
+        let finish_pts = if c.path.finishes() { Some(finish_profile(&mut ev)?) } else { None };
+        Ok(G75Plan {
+            key: G75Plan::key_of(c),
+            fast_path,
+            geometry: g,
+            region: ev.quick.map(|q| q.r),
+            stats: ev.stats,
+            layers,
+            last: (last_first, last_last),
+            first: (a11, a1f),
+            y_top,
+            plunges,
+            rough_pts,
+            finish_pts,
+        })
+    }
+}
+
+/// The moves of a validated cycle `c` from its plan: the range checks in
+/// move order (R-G75RANGE) and the absolute moves.
+fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
+    let g = plan.geometry;
     let frame = Frame::new(c);
-
-    let layers = Layers::new(c, &g);
+    let layers = plan.layers;
     let rough_bottom = layers.rough_bottom;
-    // R-G75PLUNGE: the last layer is the narrowest (left grows, right
-    // shrinks with depth); R-G75NARROW: checked for every J. This is also
-    // the check K2.u ≤ K3.u (or Q1/Q2): at y = Y − Δu, left is K2's formula
-    // and right K3's plus w.
-    let (last_first, last_last) = ev.plunges(rough_bottom)?;
-    if last_last < last_first {
-        return Err(CycleError::GrooveNarrowerThanTool { tool_width: Length::new(g.w, c.units) });
-    }
+    let last_last = plan.last.1;
+    let (a11, a1f) = plan.first;
     let y1 = layers.bottom(1);
-    let (a11, a1f) = if layers.count == 1 { (last_first, last_last) } else { ev.plunges(y1)? };
-    // R-G75RIDGE: layered roughing with a step wider than the tool leaves
-    // ridges in layer 1 that the next layer's rapids would cross (refused
-    // unless the reading is `as-written`).
-    if !c.readings.ridges_as_written
-        && c.path.roughs()
-        && layers.count >= 2
-        && c.step > g.w
-        && a1f - a11 > i128::from(g.w)
-    {
-        return Err(CycleError::RidgesInLayers {
-            step: Length::new(c.step, c.units),
-            tool_width: Length::new(g.w, c.units),
-        });
-    }
-    // Layer tops: y_top = floor(y3), or 0 when the opening falls
-    // (R-G75LAYER, R-G75SLOPE).
-    let y_top = ev.y_top()?;
-
-    // §9, only when roughing (R-G75PECKS).
+    let y_top = plan.y_top;
     let roughs = c.path.roughs();
-    let plunges = if roughs {
-        check_peck_count(&mut ev, c, &layers, y_top, (a11, a1f), (last_first, last_last))?
-    } else {
-        0
-    };
-    // R-G75NEED: the rough contour only for J0/J1, the finishing profile
-    // only for J1/J2.
-    let rough_pts = if roughs { Some(rough_vertices(&mut ev, y_top)?) } else { None };
-    let finish_pts = if c.path.finishes() { Some(finish_profile(&mut ev)?) } else { None };
+    let plunges = plan.plunges;
+    let rough_pts = plan.rough_pts;
+    let finish_pts = plan.finish_pts;
 
     // R-G75RANGE, in move order. Step 1: the approach to A11.
     let a11_local = (a11, y_top);
@@ -412,8 +552,8 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
     Ok(G75Moves {
         frame,
         geometry: g,
-        region: ev.quick.map(|q| q.r),
-        stats: ev.stats,
+        region: plan.region,
+        stats: plan.stats,
         stage: Stage::Approach,
         approach,
         roughs,

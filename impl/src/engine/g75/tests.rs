@@ -1436,3 +1436,42 @@ fn fast_path_bounds_hold_for_every_formula() {
     std::println!("{checked} values within their bounds ({decided} roundings decided), {unknown} unknown; largest relative bound {worst:.2e}");
     assert!(checked > 150 && decided > 300);
 }
+
+/// `expand_g75_planned` with one plan kept across cycles gives exactly what
+/// `expand_g75` gives each cycle alone (moves, alarm, the fast path's
+/// counts): random grooves, each also moved to other places (the plan
+/// reused) and to places where the moves leave the range (R-G75RANGE after
+/// a reused plan), and cycles that the geometry refuses (no plan kept).
+#[test]
+fn planned_expansion_is_the_plain_one() {
+    let outcome = |r: Result<G75Moves, CycleError>| {
+        r.map(|mut m| {
+            let moves: Vec<Move> = m.by_ref().collect();
+            (moves, m.fast_path_stats(), m.layers_and_plunges())
+        })
+    };
+    let mut r = Rng(0x0F0E_0D0C_0B0A_0908);
+    let mut plan = None;
+    let (mut reused, mut refused, mut out_of_range) = (0, 0, 0);
+    for i in 0..6_000 {
+        let c = random_cycle(&mut r, i % 3 == 0);
+        let far = MAX_LENGTH - 20;
+        let shifts = [(0, 0), (-2_000, 7_000), (far - c.start.x, 0), (0, far - c.start.z), (3, -3)];
+        for (dx, dz) in shifts {
+            let mut m = c;
+            m.start = Point::new(c.start.x + dx, c.start.z + dz);
+            m.from = Point::new(c.from.x + dx, c.from.z + dz);
+            let fits = matches!(&plan, Some(p) if G75Plan::fits(p, &m));
+            let want = outcome(expand_g75(&m));
+            let got = outcome(expand_g75_planned(&m, &mut plan));
+            assert_eq!(got, want, "{m:?}");
+            reused += usize::from(fits);
+            refused += usize::from(want.is_err() && plan.is_none());
+            out_of_range += usize::from(
+                fits && matches!(want, Err(CycleError::OutOfRange { field: Field::PassCoordinate, .. })),
+            );
+        }
+    }
+    // Each kind of case was met (the counts only guard the sweep's reach).
+    assert!(reused > 10_000 && refused > 100 && out_of_range > 1_000, "{reused} {refused} {out_of_range}");
+}
