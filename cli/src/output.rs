@@ -12,7 +12,7 @@ use std::cell::RefCell;
 use std::io::{self, Write};
 
 use cycleref::{Motion, Move, PassKind, Point, Role, Units};
-use cycleref_spec::cycles::{MoveWords, PassComment, PassTable};
+use cycleref_spec::cycles::{MoveWords, PassComment, PassTable, HEADING_BUF};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{Item, PlainMove, Restore};
@@ -197,7 +197,12 @@ fn nc_cycle<W: Write>(
     let u = cycle.units();
     let style = cycle.nc_style();
     if let Some(heading) = cycle.heading(&moves) {
-        writeln!(out, "({heading})")?;
+        let text = heading.text();
+        out.line(|l| {
+            l.put(b"(");
+            l.put(text.as_bytes());
+            l.put(b")\n");
+        })?;
         if !readings.is_empty() {
             writeln!(out, "(readings: {readings})")?;
         }
@@ -460,8 +465,10 @@ const NC_CAPACITY: usize = 1 << 16;
 
 /// The room a line written by [`NcOut::line`] may take: the longest, a
 /// G02 with a centre or an arc with I and K, has four numbers of at most
-/// [`FIXED_BUF`] bytes each and fewer than 40 other bytes.
+/// [`FIXED_BUF`] bytes each and fewer than 40 other bytes; a heading,
+/// [`HEADING_BUF`] bytes and its parentheses.
 const LINE_ROOM: usize = 8 * FIXED_BUF;
+const _: () = assert!(HEADING_BUF + 3 <= LINE_ROOM);
 
 /// The nc writer's buffered output (the hot path of `expand`: about six
 /// lines a cycle's pass, a move a line). Each line is written straight

@@ -69,6 +69,7 @@ pub mod readings;
 pub mod real;
 pub mod rs274;
 pub mod tan;
+pub mod text;
 
 pub use error::{ErrorKind, ProgramError};
 pub use pipeline::{expand, Cycle, Engine, Moves, RunError};

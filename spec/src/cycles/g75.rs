@@ -16,6 +16,7 @@ use super::{
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
 use crate::reader::{G75Call, Restore};
+use crate::text::TextBuf;
 
 /// The `nc` heading of a G75.1: `G75.1 lines 3-4: J1 rough + finish, 2
 /// layers, 9 plunges, tool width I3.000`.
@@ -35,65 +36,38 @@ pub struct GrooveHeading {
     pub tool_width: Option<Length>,
 }
 
-impl fmt::Display for GrooveHeading {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl GrooveHeading {
+    /// Appends the heading's text to `t` ([`Heading::text`]).
+    pub fn put<const N: usize>(&self, t: &mut TextBuf<N>) {
         let path = match self.path {
             PathType::Rough => "J0 rough",
             PathType::RoughAndFinish => "J1 rough + finish",
             PathType::Finish => "J2 finish",
         };
-        // Into one buffer, then one write (issue 33: a heading a groove,
-        // where `write!` with its seven arguments cost more than the
-        // groove's geometry). At most 4·20 digits and 73 other bytes.
-        let mut text = [0_u8; 160];
-        let mut len = 0;
-        let mut put = |bytes: &[u8]| {
-            if let Some(to) = text.get_mut(len..len + bytes.len()) {
-                to.copy_from_slice(bytes);
-                len += bytes.len();
-            }
-        };
-        let number = |v: u64| {
-            let mut digits = [0_u8; 20];
-            let mut at = digits.len();
-            let mut v = v;
-            loop {
-                at -= 1;
-                // v % 10 < 10: the cast keeps the digit.
-                #[allow(clippy::cast_possible_truncation)]
-                let d = (v % 10) as u8;
-                digits[at] = b'0' + d;
-                v /= 10;
-                if v == 0 {
-                    break;
-                }
-            }
-            (digits, at)
-        };
-        let wide = |v: usize| u64::try_from(v).unwrap_or(u64::MAX);
-        put(b"G75.1 lines ");
-        let (d, at) = number(wide(self.params_line));
-        put(&d[at..]);
-        put(b"-");
-        let (d, at) = number(wide(self.line));
-        put(&d[at..]);
-        put(b": ");
-        put(path.as_bytes());
-        put(b", ");
-        let (d, at) = number(u64::from(self.layers));
-        put(&d[at..]);
-        put(if self.layers == 1 { b" layer, " } else { b" layers, " });
-        let (d, at) = number(self.plunges);
-        put(&d[at..]);
-        put(if self.plunges == 1 { b" plunge, tool " } else { b" plunges, tool " });
-        f.write_str(core::str::from_utf8(&text[..len]).unwrap_or_default())?;
+        t.put(b"G75.1 lines ");
+        t.integer(super::count(self.params_line));
+        t.put(b"-");
+        t.integer(super::count(self.line));
+        t.put(b": ");
+        t.put(path.as_bytes());
+        t.put(b", ");
+        t.integer(u64::from(self.layers));
+        t.put(if self.layers == 1 { b" layer, " } else { b" layers, " });
+        t.integer(self.plunges);
+        t.put(if self.plunges == 1 { b" plunge, tool " } else { b" plunges, tool " });
         match self.tool_width {
             Some(w) => {
-                f.write_str("width I")?;
-                w.fmt(f)
+                t.put(b"width I");
+                t.fixed(w.increments < 0, w.increments.unsigned_abs(), w.decimals);
             }
-            None => f.write_str("pointed"),
+            None => t.put(b"pointed"),
         }
+    }
+}
+
+impl fmt::Display for GrooveHeading {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(Heading::Groove(*self).text().as_str().ok_or(fmt::Error)?)
     }
 }
 

@@ -15,6 +15,7 @@ use super::{
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
 use crate::reader::{G76Call, Multipass, Restore};
+use crate::text::TextBuf;
 
 /// The `nc` heading of a G76 or G78: `G76 line 4: 7 rough + 1 finish
 /// passes x 1 start`.
@@ -32,18 +33,25 @@ pub struct MultipassHeading {
     pub starts: u32,
 }
 
+impl MultipassHeading {
+    /// Appends the heading's text to `t` ([`Heading::text`]).
+    pub fn put<const N: usize>(&self, t: &mut TextBuf<N>) {
+        t.put(self.code.as_bytes());
+        t.put(b" line ");
+        t.integer(super::count(self.line));
+        t.put(b": ");
+        t.integer(self.rough_passes);
+        t.put(b" rough + ");
+        t.integer(u64::from(self.finishing_passes));
+        t.put(b" finish passes x ");
+        t.integer(u64::from(self.starts));
+        t.put(if self.starts == 1 { b" start" } else { b" starts" });
+    }
+}
+
 impl fmt::Display for MultipassHeading {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} line {}: {} rough + {} finish passes x {} start{}",
-            self.code,
-            self.line,
-            self.rough_passes,
-            self.finishing_passes,
-            self.starts,
-            if self.starts == 1 { "" } else { "s" }
-        )
+        f.write_str(Heading::Multipass(*self).text().as_str().ok_or(fmt::Error)?)
     }
 }
 

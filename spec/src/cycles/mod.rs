@@ -48,6 +48,7 @@ use cycleref::{CycleError, Move, Point, Units, XMode};
 use crate::lex::Block;
 use crate::pipeline::Engine;
 use crate::reader::Restore;
+use crate::text::TextBuf;
 
 /// The accessors of a call whose typed cycle, `self.cycle`, holds the
 /// start point, units and X mode ([`CycleCall::start`],
@@ -246,17 +247,51 @@ pub enum Heading {
     },
 }
 
+/// Room for the text of any [`Heading`]: the longest, a G75.1's, has
+/// four counts of at most 20 digits, a tool width of at most 62 bytes and
+/// fewer than 90 other bytes.
+pub const HEADING_BUF: usize = 256;
+
+/// A count as [`TextBuf::integer`] takes it (a line number fits: `usize`
+/// is at most 64 bits wide on the targets).
+pub(crate) fn count(v: usize) -> u64 {
+    u64::try_from(v).unwrap_or(u64::MAX)
+}
+
+impl Heading {
+    /// The heading's text, built without `core::fmt` (issue 33: a heading
+    /// a cycle, where `write!` cost more than the cycle's short moves).
+    #[must_use]
+    pub fn text(&self) -> TextBuf<HEADING_BUF> {
+        let mut t = TextBuf::default();
+        match self {
+            Heading::Multipass(h) => h.put(&mut t),
+            Heading::Groove(h) => h.put(&mut t),
+            Heading::SinglePass { code, line, starts } => {
+                // `G92 line 5: 1 pass x 2 starts`
+                t.put(code.as_bytes());
+                t.put(b" line ");
+                t.integer(count(*line));
+                t.put(b": 1 pass x ");
+                t.integer(u64::from(*starts));
+                t.put(if *starts == 1 { b" start" } else { b" starts" });
+            }
+            Heading::Named { code, line, name } => {
+                // `G76 line 6: LinuxCNC threading cycle`
+                t.put(code.as_bytes());
+                t.put(b" line ");
+                t.integer(count(*line));
+                t.put(b": ");
+                t.put(name.as_bytes());
+            }
+        }
+        t
+    }
+}
+
 impl fmt::Display for Heading {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let plural = |n: u64| if n == 1 { "" } else { "s" };
-        match self {
-            Heading::Multipass(h) => h.fmt(f),
-            Heading::Groove(h) => h.fmt(f),
-            Heading::SinglePass { code, line, starts } => {
-                write!(f, "{code} line {line}: 1 pass x {starts} start{}", plural(u64::from(*starts)))
-            }
-            Heading::Named { code, line, name } => write!(f, "{code} line {line}: {name}"),
-        }
+        f.write_str(self.text().as_str().ok_or(fmt::Error)?)
     }
 }
 
