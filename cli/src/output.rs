@@ -210,7 +210,7 @@ fn nc_cycle<W: Write>(
     let x_factor = cycle.x_mode().factor();
     let (mut pass, mut plunge, mut contour) = (None, None, None);
     let mut at = cycle.from();
-    for m in moves {
+    moves.try_for_each_move(|m| {
         if let Some(p) = m.pass {
             nc_pass_comment(out, style.passes, p, &mut pass, u)?;
         }
@@ -249,7 +249,8 @@ fn nc_cycle<W: Write>(
             MoveWords::Groove => nc_groove_move(out, t, &m, at, (x_factor, front_post), u)?,
         }
         at = m.to;
-    }
+        Ok::<(), io::Error>(())
+    })?;
     restore(out, cycle.restore())
 }
 

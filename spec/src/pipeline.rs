@@ -217,6 +217,32 @@ macro_rules! registry {
         }
 
         impl Moves {
+            /// Calls `f` with each move, in order, until it fails: the
+            /// moves the iterator gives, the engine chosen once for the
+            /// cycle instead of once a move (the nc writer's loop: the
+            /// engine's own `next` inlined into it, no match and no copy
+            /// of the move through an `Option` per move; issue 33).
+            ///
+            /// # Errors
+            ///
+            /// The first error `f` returns.
+            #[inline]
+            pub fn try_for_each_move<E>(self, mut f: impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
+                match self.0 {
+                    $(Inner::$variant(m) => {
+                        for x in m {
+                            f(x)?;
+                        }
+                    })*
+                    Inner::Reference(m) => {
+                        for x in m {
+                            f(x)?;
+                        }
+                    }
+                }
+                Ok(())
+            }
+
             /// The number of rough passes of a G76 or G78 cycle (reading
             /// R-LIMIT), when the engine counted them before its first move
             /// (the fixed-point engine does); `None` for the other cycles
