@@ -42,8 +42,8 @@ pub(crate) use block::letter_bit;
 pub use block::{Block, Words, INLINE_WORDS};
 use lines::{comment_end, decode, line_end_len, trim, Line, FULL_OPEN, FULL_SEMI};
 pub use lines::{last_line_end, oword, split_line, OLabel};
-pub(crate) use number::digits_value;
 use number::SLOW;
+pub(crate) use number::{digits_value, POW10};
 pub use number::{Number, Word};
 use scan::{other_word, read_word, MARK_RULE};
 
@@ -103,6 +103,14 @@ impl Position {
 }
 
 const BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// The letters of [`Lexer::next_plain`]'s lines, by bit `letter - 'A'`.
+const PLAIN_LETTERS: u32 = block::letter_bit('G')
+    | block::letter_bit('F')
+    | block::letter_bit('X')
+    | block::letter_bit('Z')
+    | block::letter_bit('U')
+    | block::letter_bit('W');
 
 impl<'a> Lexer<'a> {
     /// A lexer over the bytes of a program. A UTF-8 byte-order mark at the
@@ -259,7 +267,7 @@ impl<'a> Lexer<'a> {
         if tests::GENERAL_ONLY.with(std::cell::Cell::get) {
             return self.segment_general(whole, start, words);
         }
-        if let Some((seg, _)) = self.segment_fast::<false>(whole.bytes, start, words) {
+        if let Some((seg, _)) = self.segment_fast::<false, false>(whole.bytes, start, words) {
             return Ok(seg);
         }
         *words = Words::new();
@@ -286,7 +294,7 @@ impl<'a> Lexer<'a> {
     /// (`None` after a `;` that more of the line follows; never given
     /// unless `FUSED`). A `;` that starts a comment gives up (`None`).
     #[inline(always)]
-    fn segment_fast<const FUSED: bool>(
+    fn segment_fast<const FUSED: bool, const PLAIN: bool>(
         &self,
         line: &'a [u8],
         start: usize,
@@ -300,6 +308,9 @@ impl<'a> Lexer<'a> {
             if up.wrapping_sub(b'A') < 26 && up != b'N' && up != b'O' {
                 // `b` is an ASCII letter: only 0x41..=0x5A and 0x61..=0x7A
                 // map into A..=Z under `& !0x20`.
+                if PLAIN && (PLAIN_LETTERS >> (up - b'A')) & 1 == 0 {
+                    return None;
+                }
                 let word_start = pos;
                 let mut p = pos + 1;
                 let negative = match line.get(p) {
@@ -379,15 +390,21 @@ impl<'a> Lexer<'a> {
     /// `None` where `segment_fast` gives up (or at the end of the text),
     /// with the lexer where it was: the caller then reads the line as
     /// [`next_line`](Lexer::next_line) and [`segment`](Lexer::segment) do.
+    ///
+    /// `PLAIN`: a word of another letter than G, F, X, Z, U and W gives up
+    /// too ([`next_plain`](Lexer::next_plain)).
     #[inline(always)]
-    fn first_segment_fast(&mut self, words: &mut Words<'a>) -> Option<(Line<'a>, Segment)> {
+    fn first_segment_fast<const PLAIN: bool>(
+        &mut self,
+        words: &mut Words<'a>,
+    ) -> Option<(Line<'a>, Segment)> {
         #[cfg(test)]
         if tests::GENERAL_ONLY.with(std::cell::Cell::get) {
             return None;
         }
         let start = self.pos;
         let rest = self.src.get(start..).filter(|r| !r.is_empty())?;
-        let (seg, line_end) = self.segment_fast::<true>(rest, 0, words)?;
+        let (seg, line_end) = self.segment_fast::<true, PLAIN>(rest, 0, words)?;
         let (len, advance) = match (line_end, seg.next) {
             (Some(end), _) => end,
             // A `;` with more of the line after it.
@@ -403,6 +420,63 @@ impl<'a> Lexer<'a> {
         self.line += 1;
         self.line_start = start;
         Some((Line { start, bytes: &rest[..len] }, seg))
+    }
+
+    /// The next block when its line starts with the usual move's words
+    /// (G, F, X, Z, U and W, the reader's plain block), read as
+    /// [`next_into`](Lexer::next_into) reads it (by the same
+    /// [`first_segment_fast`](Lexer::first_segment_fast) and
+    /// [`trailing_segments`](Lexer::trailing_segments)), into `block`
+    /// (empty on entry): true when read so. False, with the lexer and
+    /// `block` to be dropped, for any other (a word of another letter
+    /// gives up where it is read; so does all that
+    /// [`segment_fast`](Lexer::segment_fast) gives up on, a blank line,
+    /// an error and the end of the text): the caller then reads the block
+    /// from where it was by `next_into` (issue 33: the line-fed reader's
+    /// usual step without its general work per block).
+    #[inline(always)]
+    pub(crate) fn next_plain(&mut self, block: &mut Block<'a>) -> bool {
+        if self.done || self.current.is_some() || self.owords {
+            return false;
+        }
+        let Some((line, seg)) = self.first_segment_fast::<true>(&mut block.words) else {
+            return false;
+        };
+        let text = trim(&line.bytes[..seg.end]);
+        if text.is_empty() && block.words.is_empty() {
+            return false;
+        }
+        self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
+        block.line = self.line;
+        block.text = Cow::Borrowed(text);
+        self.trailing_segments(block).is_ok()
+    }
+
+    /// The segments without words that follow a block on its line (a
+    /// comment after its `;`), joined to its text, as
+    /// [`next_into`](Lexer::next_into) reads them.
+    #[inline(always)]
+    fn trailing_segments(&mut self, block: &mut Block<'a>) -> Result<(), ProgramError> {
+        // A comment after a block end on the same line belongs to that
+        // block: take every following segment without words.
+        while let Some((line, start)) = self.current {
+            let mut words = Words::new();
+            let seg = self.segment(line, start, &mut words)?;
+            if !words.is_empty() {
+                break;
+            }
+            let more = trim(&line.bytes[start..seg.end]);
+            if !more.is_empty() {
+                // One allocation of the joined size.
+                let mut t = Vec::with_capacity(block.text.len() + 1 + more.len());
+                t.extend_from_slice(&block.text);
+                t.push(b' ');
+                t.extend_from_slice(more);
+                block.text = Cow::Owned(t);
+            }
+            self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
+        }
+        Ok(())
     }
 
     /// [`segment`](Lexer::segment) of any segment, with every rule and
@@ -540,7 +614,7 @@ impl<'a> Lexer<'a> {
                 },
                 // A line whose first segment `segment_fast` reads is no
                 // o-word line: it gives up at an O.
-                None => match self.first_segment_fast(&mut block.words) {
+                None => match self.first_segment_fast::<false>(&mut block.words) {
                     Some((line, seg)) => (line, 0, seg),
                     None => {
                         block.words = Words::new();
@@ -565,29 +639,7 @@ impl<'a> Lexer<'a> {
             }
             block.line = self.line;
             block.text = Cow::Borrowed(text);
-            // A comment after a block end on the same line belongs to that
-            // block: take every following segment without words.
-            while let Some((line, start)) = self.current {
-                let mut words = Words::new();
-                let seg = match self.segment(line, start, &mut words) {
-                    Ok(s) => s,
-                    Err(e) => return Some(Err(e)),
-                };
-                if !words.is_empty() {
-                    break;
-                }
-                let more = trim(&line.bytes[start..seg.end]);
-                if !more.is_empty() {
-                    // One allocation of the joined size.
-                    let mut t = Vec::with_capacity(block.text.len() + 1 + more.len());
-                    t.extend_from_slice(&block.text);
-                    t.push(b' ');
-                    t.extend_from_slice(more);
-                    block.text = Cow::Owned(t);
-                }
-                self.current = seg.next.filter(|&n| n < line.bytes.len()).map(|n| (line, n));
-            }
-            return Some(Ok(()));
+            return Some(self.trailing_segments(block));
         }
     }
 }

@@ -102,6 +102,13 @@ struct State<'m> {
     program_end: bool,
     /// Reading a trace ([`LineReader::for_trace`]): its rules as well.
     trace: bool,
+    /// The unit of G76's P and Q under the machine's state parameter, read
+    /// once: the machine does not change while it is read with (issue 33:
+    /// a parameter looked up by name per P and Q word).
+    pq_unit: PqUnit,
+    /// The machine's parameter 5129 selects the high-speed threading mode
+    /// (likewise read once).
+    high_speed: bool,
 }
 
 /// Reading R-SUBPROGRAM: a subprogram call or return is refused, with its

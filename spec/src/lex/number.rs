@@ -234,7 +234,7 @@ impl std::fmt::Debug for Word<'_> {
 }
 
 /// 10^k for k up to 18.
-const POW10: [i64; 19] = {
+pub(crate) const POW10: [i64; 19] = {
     let mut p = [1_i64; 19];
     let mut k = 1;
     while k < 19 {

@@ -130,6 +130,10 @@ impl<'m> LineReader<'m> {
                 lcnc_thread_run: false,
                 program_end: false,
                 trace: false,
+                pq_unit: machine
+                    .profile
+                    .pq_unit(machine.profile.params.pq_unit.map_or(0, |p| machine.int_param(p))),
+                high_speed: machine.profile.params.thread_mode.is_some_and(|n| machine.int_param(n) != 0),
             },
             at: None,
             line: 0,
@@ -321,6 +325,30 @@ impl<'m> LineReader<'m> {
         piece: &'a [u8],
         subprograms: Option<Subprograms<'a>>,
     ) -> Result<Step<'a>, ProgramError> {
+        // The usual block in a function of its own size; any other, and
+        // the first, by the general step.
+        if self.started && !self.done && !self.state.program_end {
+            let mut block = Block::empty();
+            // The block moves once, into the item returned (`scan_plain`
+            // gives a move or a block echoed).
+            match self.step_plain(piece, &mut block) {
+                Some(Next::Move(from)) => {
+                    return Ok(Step::Item(Item::Move(self.state.plain_move(block, from))))
+                }
+                Some(_) => return Ok(Step::Item(Item::Source(block))),
+                None => {}
+            }
+        }
+        self.step_general(piece, subprograms)
+    }
+
+    /// [`LineReader::step`] of any block.
+    #[inline(never)]
+    fn step_general<'a>(
+        &mut self,
+        piece: &'a [u8],
+        subprograms: Option<Subprograms<'a>>,
+    ) -> Result<Step<'a>, ProgramError> {
         // Reading R-PROGRAMEND: after M02 or M30 the control runs nothing
         // more; the blocks after it are not read.
         if self.done || self.state.program_end {
@@ -430,6 +458,47 @@ impl<'m> LineReader<'m> {
             };
             return item.map(Step::Item).map_err(|e| self.fail(e));
         }
+    }
+
+    /// [`LineReader::step`] of the usual block: one that starts a line,
+    /// of plain motion's words ([`Lexer::next_plain`]), that
+    /// [`State::scan_plain`] reads, where no subprogram runs and no G75.1
+    /// block 2 is awaited (FANUC and GSK). The block is read into `block`
+    /// (empty on entry) and what `scan_plain` made of it given, as `step`
+    /// reads them (such a block has no M word, so neither calls nor
+    /// returns). `None`, the reader untouched and `block` to be dropped,
+    /// for any other block, which `step` reads from where it was (issue
+    /// 33: `step`'s work for every block, the calls, the block's other
+    /// checks and the general lexer's state, was about a fifth of a
+    /// reading). Held equal to `step`'s general reading by the proptests
+    /// of `modal.rs`.
+    #[inline(always)]
+    fn step_plain<'a>(&mut self, piece: &'a [u8], block: &mut Block<'a>) -> Option<Next> {
+        #[cfg(test)]
+        if super::modal::tests::GENERAL_ONLY.with(std::cell::Cell::get) {
+            return None;
+        }
+        let machine = self.state.machine;
+        if machine.profile.dialect == Dialect::LinuxCnc
+            || self.state.trace
+            || self.state.g75_pending.is_some()
+            || self.calls.running()
+        {
+            return None;
+        }
+        let mut lexer = match self.at {
+            Some(at) => Lexer::resume(piece, at),
+            None => Lexer::at_line(piece, self.line + 1),
+        }
+        .with_semicolon_comments(machine.readings.semicolon_comments(false));
+        if !lexer.next_plain(block) {
+            return None;
+        }
+        let next = self.state.scan_plain(block)?;
+        self.at = Some(lexer.position());
+        #[cfg(test)]
+        super::modal::tests::PLAIN_STEPS.with(|n| n.set(n.get() + 1));
+        Some(next)
     }
 
     /// Ends the reading at error `e`.

@@ -84,7 +84,7 @@ impl State<'_> {
     /// True when the 988TA's parameter 5129 (THM) selects the high-speed
     /// threading mode.
     pub(super) fn high_speed(&self) -> bool {
-        self.machine.profile.params.thread_mode.is_some_and(|n| self.machine.int_param(n) != 0)
+        self.high_speed
     }
 }
 
@@ -134,7 +134,7 @@ impl State<'_> {
     /// module's tests (issue 33: a move's modal reading was a sixth of a
     /// reading).
     #[inline(always)]
-    fn scan_plain(&mut self, block: &Block<'_>) -> Option<Next> {
+    pub(super) fn scan_plain(&mut self, block: &Block<'_>) -> Option<Next> {
         const PLAIN: u32 = letter_bit('G')
             | letter_bit('F')
             | letter_bit('X')
@@ -509,6 +509,7 @@ impl State<'_> {
     }
 
     /// Every word of `block` has an address of `allowed` or `extra`.
+    #[inline(always)]
     pub(super) fn check_addresses(
         &self,
         block: &Block<'_>,
@@ -516,9 +517,23 @@ impl State<'_> {
         allowed: &str,
         extra: &str,
     ) -> Result<(), ProgramError> {
+        // `allowed` is a literal where this is inlined: its mask is folded
+        // (issue 33: the lists' masks were most of the check).
+        self.check_addresses_in(block, cycle, allowed, extra, letter_mask(allowed))
+    }
+
+    /// [`State::check_addresses`] given `allowed`'s mask.
+    fn check_addresses_in(
+        &self,
+        block: &Block<'_>,
+        cycle: &'static str,
+        allowed: &str,
+        extra: &str,
+        allowed_mask: u32,
+    ) -> Result<(), ProgramError> {
         // Most words are upper-case letters of the lists: a bit test each;
         // the lists themselves are read for any other.
-        let listed = letter_mask(allowed) | letter_mask(extra);
+        let listed = allowed_mask | letter_mask(extra);
         for w in &block.words {
             if letter_bit(w.letter) & listed != 0 {
                 continue;
@@ -558,7 +573,7 @@ impl State<'_> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     //! The modal reading of the usual block held equal to the general one.
 
     use std::cell::Cell;
@@ -569,28 +584,80 @@ mod tests {
     use crate::{Machine, ProfileName};
 
     thread_local! {
-        /// Set: every block is read by `scan_general` alone.
-        pub(super) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
+        /// Set: every block is read by `scan_general` alone (and by
+        /// `LineReader::step`'s general reading).
+        pub(in crate::reader) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
+        /// How many blocks `LineReader::step_plain` has read.
+        pub(in crate::reader) static PLAIN_STEPS: Cell<usize> = const { Cell::new(0) };
     }
 
     /// Every step of reading `program` with `profile`: the item or the
     /// error, and the reader's state after it, as text.
     fn read(program: &str, profile: ProfileName, general: bool) -> Vec<String> {
+        read_pieces(&[program], profile, general)
+    }
+
+    /// [`read`] of a program given a piece at a time (each piece until it
+    /// has no more, as a file is read a line at a time).
+    fn read_pieces(pieces: &[&str], profile: ProfileName, general: bool) -> Vec<String> {
         GENERAL_ONLY.with(|g| g.set(general));
         let machine = Machine::new(profile);
         let mut reader = LineReader::new(&machine);
         let mut out = Vec::new();
-        loop {
-            let step = reader.step(program.as_bytes(), None);
-            let end = matches!(step, Ok(Step::Piece | Step::Subprograms) | Err(_));
-            out.push(format!("{step:?} {:?}", reader.state));
-            if end {
-                break;
+        'pieces: for piece in pieces {
+            loop {
+                let step = reader.step(piece.as_bytes(), None);
+                let piece_end = matches!(step, Ok(Step::Piece));
+                let end = matches!(step, Ok(Step::Subprograms) | Err(_));
+                out.push(format!("{step:?} {:?}", reader.state));
+                if end {
+                    break 'pieces;
+                }
+                if piece_end {
+                    break;
+                }
             }
         }
         out.push(format!("{:?}", reader.finish()));
         GENERAL_ONLY.with(|g| g.set(false));
         out
+    }
+
+    /// A line's end and what may stand before it: nothing, `;`, a comment
+    /// after a `;`, another block after a `;`, spaces (every line end of
+    /// reading R-LINEEND).
+    fn ending() -> impl Strategy<Value = String> {
+        let tail = prop_oneof![
+            6 => Just(""),
+            3 => Just(";"),
+            1 => Just("; (finish 1)"),
+            1 => Just(";X1"),
+            1 => Just(" ; "),
+            1 => Just(" (c)"),
+            1 => Just("\t"),
+        ];
+        let end = prop_oneof![4 => Just("\n"), 1 => Just("\r\n"), 1 => Just("\r")];
+        (tail, end).prop_map(|(t, e)| format!("{t}{e}"))
+    }
+
+    /// Lines the general step alone reads among the usual ones: blank, `%`,
+    /// N, lower case, an M word, a G76 block, a comment not closed, a
+    /// space after a letter.
+    fn other_line() -> impl Strategy<Value = String> {
+        proptest::sample::select(vec![
+            "",
+            "%",
+            "N10 G01 X1",
+            "g01 x21.5 z-3",
+            "G01 X1 M05",
+            "G76 P020560 Q150 R0.1",
+            "G76 X60.64 Z-40 P3680 Q1800 F6",
+            "G01 X1 (open",
+            "G01 X 1",
+            "O0100",
+            "M30",
+        ])
+        .prop_map(str::to_string)
     }
 
     /// Lines of a program: the usual moves (every letter of the fast
@@ -624,6 +691,46 @@ mod tests {
             let program = lines.join("\n");
             prop_assert_eq!(read(&program, profile, false), read(&program, profile, true), "{}", program);
         }
+
+        /// The same with every line end, `;` and comments after it, the
+        /// lines the fast step gives up on, and the program read a line a
+        /// piece as well as whole.
+        #[test]
+        fn plain_steps_are_the_general_ones(
+            lines in proptest::collection::vec(
+                (prop_oneof![4 => line(), 1 => other_line()], ending()),
+                0..16,
+            ),
+            p in 0_usize..3,
+        ) {
+            let profile = [ProfileName::Gsk980, ProfileName::Gsk988, ProfileName::Fanuc][p];
+            let pieces: Vec<String> = lines.iter().map(|(l, e)| format!("{l}{e}")).collect();
+            let program = pieces.concat();
+            prop_assert_eq!(read(&program, profile, false), read(&program, profile, true), "{:?}", program);
+            let pieces: Vec<&str> = pieces.iter().map(String::as_str).collect();
+            prop_assert_eq!(
+                read_pieces(&pieces, profile, false),
+                read_pieces(&pieces, profile, true),
+                "{:?}",
+                program
+            );
+        }
+    }
+
+    /// The fast step is reached: a line's first block of the usual moves'
+    /// words, or of none, is read by `step_plain`, a comment after its `;`
+    /// included; not a line with other words, nor a block after a `;`,
+    /// nor a blank line (read with the line after it).
+    #[test]
+    fn plain_step_reads_the_usual_lines() {
+        let program = "G50 X100 Z50;\nM03 S500\n(part 0)\nG00 X80 Z10;\r\nG01 X21.001 Z-3.25 F0.15; (finish 1)\nU-2\rG01 Z-9;X24\n\nX30\nN10 X1\n";
+        PLAIN_STEPS.with(|n| n.set(0));
+        let fast = read(program, ProfileName::Gsk980, false);
+        // Lines 3 to 7 (`(part 0)`, `G00 X80 Z10;`, `G01 ... ; (finish 1)`,
+        // `U-2`, `G01 Z-9`); not `X24` after it on line 7, nor line 9,
+        // `X30`, read with the blank line before it.
+        assert_eq!(PLAIN_STEPS.with(Cell::get), 5);
+        assert_eq!(fast, read(program, ProfileName::Gsk980, true));
     }
 
     /// The fast reading is reached: the usual moves are read by

@@ -4,7 +4,7 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use crate::lex::digits_value;
+use crate::lex::{digits_value, POW10};
 
 /// A length word in least increments of `units`, under `machine`'s
 /// decimal-point rule (reading R-POINT): with a decimal point, or without
@@ -58,6 +58,7 @@ pub(super) fn range_err(units: Units, signed: bool) -> ErrorKind {
 }
 
 /// The bits ([`letter_bit`]) of the upper-case letters of `letters`.
+#[inline(always)]
 pub(super) fn letter_mask(letters: &str) -> u32 {
     // By bytes, not chars (issue 33: no UTF-8 decoding a letter): no byte
     // of a character outside ASCII is an upper-case ASCII letter, and such
@@ -100,11 +101,9 @@ fn increments_short(units: Units, w: &Word<'_>, bare_increments: bool) -> Option
     if int.len() + d > 18 || frac.len() > d {
         return None;
     }
-    // At most 18 digits once scaled: no overflow.
-    let mut v = digits_value(int, frac);
-    for _ in frac.len()..d {
-        v *= 10;
-    }
+    // At most 18 digits once scaled: no overflow. One product, not a
+    // loop of them (issue 33).
+    let v = digits_value(int, frac) * POW10[d - frac.len()];
     if v > MAX_LENGTH {
         return None;
     }
@@ -202,8 +201,8 @@ impl State<'_> {
 
     /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
     pub(super) fn pq_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
-        let bit = self.machine.profile.params.pq_unit.map_or(0, |p| self.machine.int_param(p));
-        let v = match self.machine.profile.pq_unit(bit) {
+        // The state parameter's unit, read when the reading started.
+        let v = match self.pq_unit {
             PqUnit::IncrementsNoPoint => {
                 if w.number().has_point() {
                     return Err(err(
