@@ -77,6 +77,21 @@ enum Line<'a> {
     Move { g: Option<MotionMode>, x: Option<i64>, z: Option<i64>, f: Option<&'a [u8]> },
 }
 
+/// True when `line` (without its line end) has a comment from `i` to its
+/// end: `(`, printable ASCII without parentheses and semicolons, `)`. The
+/// bytes are tested all at once (no branch a byte).
+fn comment_ends(line: &[u8], i: usize) -> bool {
+    let Some(body) = line.get(i + 1..line.len().saturating_sub(1)) else {
+        return false;
+    };
+    line.get(i) == Some(&b'(')
+        && line.len() >= i + 2
+        && line.last() == Some(&b')')
+        && body.iter().fold(true, |ok, &b| {
+            ok & (b.wrapping_sub(b' ') <= b'~' - b' ') & (b != b'(') & (b != b')') & (b != b';')
+        })
+}
+
 /// The fast path's state (see the module's documentation).
 pub(super) struct FastNc {
     /// False: every line is declined (the reader alone).
@@ -123,8 +138,10 @@ impl FastNc {
         }
     }
 
-    fn cached(&self, f: &[u8]) -> Option<Lead> {
-        self.leads.iter().find(|(t, _)| t.as_bytes() == f).map(|(_, l)| *l)
+    /// The lead the reader gave the F text `f`, when known (texts compared
+    /// whole: the bytes after a text's length are zeros in each).
+    fn cached(&self, f: &FText) -> Option<Lead> {
+        self.leads.iter().find(|(t, _)| t == f).map(|(_, l)| *l)
     }
 
     /// A length word's number, from `rest[i]` (after its letter) to the
@@ -182,95 +199,75 @@ impl FastNc {
     /// The line at the start of `rest` (a piece of whole lines), when it
     /// has one of the shapes taken here, and its length: the line ends
     /// there, at the end of `rest` or at a line end (`\n` or `\r`, reading
-    /// R-LINEEND: [`FastNc::line_end`]). One pass over the line's bytes,
-    /// which are then all printable ASCII.
+    /// R-LINEEND: [`FastNc::line_end`]). Its end is found first (many
+    /// bytes a step), then its words are read in order, each at most once;
+    /// its bytes are then all printable ASCII.
     fn scan<'a>(&self, rest: &'a [u8]) -> Option<(Line<'a>, usize)> {
-        let ends = |i: usize| matches!(rest.get(i), None | Some(b'\n' | b'\r'));
-        // A comment from `i`: printable ASCII without parentheses and
-        // semicolons, then `)` and the end of the line; where it ends.
-        let comment = |i: usize| {
-            let text = rest.get(i + 1..)?;
-            for (j, &b) in text.iter().enumerate() {
-                match b {
-                    b')' => return ends(i + j + 2).then_some(i + j + 2),
-                    // Printable ASCII but `(` and `;`.
-                    b' '..=b'\'' | b'*'..=b':' | b'<'..=b'~' => {}
-                    _ => return None,
-                }
-            }
-            None
-        };
-        match rest.first() {
-            None | Some(b'\n' | b'\r') => return Some((Line::Nothing, 0)),
-            Some(b'(') => return comment(0).map(|end| (Line::Nothing, end)),
+        let len = memchr::memchr2(b'\n', b'\r', rest).unwrap_or(rest.len());
+        let line = rest.get(..len)?;
+        match line.first() {
+            None => return Some((Line::Nothing, 0)),
+            Some(b'(') => return comment_ends(line, 0).then_some((Line::Nothing, len)),
             Some(_) => {}
         }
+        // After a word at `i`: the end of the line (`Some(None)`), or a
+        // space and the next word's start; anything else declines.
+        let after = |i: usize| match line.get(i) {
+            None => Some(None),
+            Some(b' ') => Some(Some(i + 1)),
+            Some(_) => None,
+        };
         let (mut g, mut x, mut z, mut f) = (None, None, None, None);
         // Words in the order G X Z F, one space between them, a comment
-        // last.
-        let mut order = 0;
-        let mut i = 0;
-        let end = loop {
-            let (rank, value) = (rest.get(i)?, i + 1);
-            let rank = match rank {
-                b'G' => 1,
-                b'X' => 2,
-                b'Z' => 3,
-                b'F' => 4,
+        // last: where the next one starts (`None`: the line has ended).
+        let mut at = Some(0);
+        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'G')) {
+            g = Some(match line.get(i + 1..i + 3)? {
+                b"00" => MotionMode::G00,
+                b"01" => MotionMode::G01,
+                b"32" => MotionMode::G32,
                 _ => return None,
+            });
+            at = after(i + 3)?;
+        }
+        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'X')) {
+            let (v, end) = self.length_at(line, i + 1)?;
+            x = Some(v);
+            at = after(end)?;
+        }
+        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'Z')) {
+            let (v, end) = self.length_at(line, i + 1)?;
+            z = Some(v);
+            at = after(end)?;
+        }
+        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'F')) {
+            // F: digits (. digits)?, not zero.
+            let word_len = memchr::memchr(b' ', line.get(i..)?).unwrap_or(len - i);
+            let word = line.get(i..i + word_len)?;
+            let number = word.get(1..)?;
+            let (int, frac) = match number.iter().position(|&b| b == b'.') {
+                Some(p) => (number.get(..p)?, number.get(p + 1..)?),
+                None => (number, &b"0"[..]),
             };
-            if rank <= order {
+            let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
+            if !digits(int) || !digits(frac) || !number.iter().any(|b| (b'1'..=b'9').contains(b)) {
                 return None;
             }
-            order = rank;
-            match rank {
-                1 => {
-                    g = Some(match rest.get(value..value + 2)? {
-                        b"00" => MotionMode::G00,
-                        b"01" => MotionMode::G01,
-                        b"32" => MotionMode::G32,
-                        _ => return None,
-                    });
-                    i = value + 2;
-                }
-                2 => (x, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
-                3 => (z, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
-                _ => {
-                    // F: digits (. digits)?, not zero.
-                    i = value;
-                    while !ends(i) && rest.get(i) != Some(&b' ') {
-                        i += 1;
-                    }
-                    let word = rest.get(value - 1..i)?;
-                    let number = word.get(1..)?;
-                    let (int, frac) = match number.iter().position(|&b| b == b'.') {
-                        Some(p) => (number.get(..p)?, number.get(p + 1..)?),
-                        None => (number, &b"0"[..]),
-                    };
-                    let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
-                    if !digits(int) || !digits(frac) || !number.iter().any(|b| (b'1'..=b'9').contains(b)) {
-                        return None;
-                    }
-                    FText::new(word)?;
-                    f = Some(word);
-                }
-            }
-            if ends(i) {
-                break i;
-            }
-            // A space, then a word or a comment.
-            if rest.get(i) != Some(&b' ') {
+            FText::new(word)?;
+            f = Some(word);
+            at = after(i + word_len)?;
+        }
+        // A word after a space that is none of the above (or none at
+        // all): only a comment to the end of the line.
+        if let Some(i) = at {
+            if !comment_ends(line, i) {
                 return None;
             }
-            i += 1;
-            if rest.get(i) == Some(&b'(') {
-                break comment(i)?;
-            }
-        };
+        }
         if x.is_none() && z.is_none() {
             return None;
         }
-        Some((Line::Move { g, x, z, f }, end))
+        Some((Line::Move { g, x, z, f }, len))
     }
 
     /// `line` (without its line end), when it is one of the shapes taken
@@ -320,8 +317,8 @@ impl FastNc {
             MotionMode::G00 | MotionMode::G01 => {
                 // F sets the lead in force (`State::scan`): its value is
                 // known when the reader gave this text's.
-                if let Some(f) = f {
-                    self.lead = self.cached(f);
+                if f.is_some() {
+                    self.lead = f_text.as_ref().and_then(|t| self.cached(t));
                 }
                 self.thread_run = Some(None);
                 let kind = if motion == MotionMode::G00 { Kind::Rapid } else { Kind::Feed };
@@ -343,7 +340,7 @@ impl FastNc {
                     Some(_) => return None,
                 };
                 let lead = match f {
-                    Some(f) => self.cached(f)?,
+                    Some(_) => f_text.as_ref().and_then(|t| self.cached(t))?,
                     None => self.lead?,
                 };
                 if from == to {
@@ -454,7 +451,7 @@ impl FastNc {
                 if let (Ok(Some(f)), false) = (c.block.get('F'), c.block.words.has('I')) {
                     let text = f.text();
                     if let Some(t) = FText::new(text.as_bytes()) {
-                        if self.cached(t.as_bytes()).is_none() && self.leads.len() < LEADS {
+                        if self.cached(&t).is_none() && self.leads.len() < LEADS {
                             self.leads.push((t, c.g32.lead));
                         }
                     }

@@ -51,8 +51,9 @@ fn trace_line<'b>(
 }
 
 /// The vendor's toolpath from an expanded program, read in pieces of whole
-/// lines (as the program is, `job::next_piece`), each checked to be UTF-8
-/// at once and lexed a line at a time.
+/// lines (as the program is, `job::next_piece`), a line at a time: the
+/// fast path's lines are ASCII, every other line is checked to be UTF-8
+/// when it is reached.
 pub(super) struct NcTrace<'t, 'm> {
     source: Box<dyn BufRead + 't>,
     /// The current piece (`..piece`) and what was read beyond it.
@@ -61,10 +62,6 @@ pub(super) struct NcTrace<'t, 'm> {
     /// Where the next line starts in the piece.
     at: usize,
     eof: bool,
-    /// Where the piece's first byte that is not UTF-8 is, if it has one:
-    /// the line that holds it is an error when it is reached (not before:
-    /// the lines above it are read as they would be without it).
-    bad: Option<usize>,
     line: usize,
     /// The program reader in its trace mode (reading R-CHECKWORDS): one
     /// reader and one set of rules for programs and traces.
@@ -90,7 +87,6 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             piece: 0,
             at: 0,
             eof: false,
-            bad: None,
             line: 0,
             reader: LineReader::for_trace(machine, units),
             follow: Follow::new(machine, units),
@@ -115,8 +111,6 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                     Err(error) => return Err(TraceError::CannotRead { line: self.line + 1, error }),
                 }
                 self.at = 0;
-                let piece = self.buf.get(..self.piece).unwrap_or_default();
-                self.bad = std::str::from_utf8(piece).err().map(|e| e.valid_up_to());
             }
             let piece = self.buf.get(..self.piece).unwrap_or_default();
             let rest = piece.get(self.at..).unwrap_or_default();
@@ -134,12 +128,13 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             let (line, advance) = cycleref_spec::lex::split_line(rest);
             let (end, next) = (self.at + line.len(), self.at + advance);
             self.line += 1;
-            if let Some(bad) = self.bad.filter(|&b| b < end) {
-                // A line end is ASCII: the line's own bytes decide, as
-                // `from_utf8` of the line alone would.
-                return Err(not_utf8(self.line, bad - self.at));
-            }
             let mut text = piece.get(self.at..end).unwrap_or_default();
+            // The line's own bytes are checked to be UTF-8 when the reader
+            // reads it (the lines the fast path takes are ASCII); the lines
+            // above it are read as they would be without a bad byte here.
+            if let Err(e) = std::str::from_utf8(text) {
+                return Err(not_utf8(self.line, e.valid_up_to()));
+            }
             self.at = next;
             // A byte-order mark may start the first line.
             if self.line == 1 {
