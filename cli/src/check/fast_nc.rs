@@ -199,30 +199,41 @@ impl FastNc {
     /// The line at the start of `rest` (a piece of whole lines), when it
     /// has one of the shapes taken here, and its length: the line ends
     /// there, at the end of `rest` or at a line end (`\n` or `\r`, reading
-    /// R-LINEEND: [`FastNc::line_end`]). Its end is found first (many
-    /// bytes a step), then its words are read in order, each at most once;
-    /// its bytes are then all printable ASCII.
+    /// R-LINEEND: [`FastNc::line_end`]). Its words are read in order, each
+    /// at most once, and the line's end is found where they end (a
+    /// comment's end many bytes a step); its bytes are then all printable
+    /// ASCII.
     fn scan<'a>(&self, rest: &'a [u8]) -> Option<(Line<'a>, usize)> {
-        let len = memchr::memchr2(b'\n', b'\r', rest).unwrap_or(rest.len());
-        let line = rest.get(..len)?;
-        match line.first() {
-            None => return Some((Line::Nothing, 0)),
-            Some(b'(') => return comment_ends(line, 0).then_some((Line::Nothing, len)),
+        // Where a line that goes on at `i` with a comment ends (the end
+        // of `rest`, or its next line end).
+        let line_len = |i: usize| {
+            let tail = rest.get(i..).unwrap_or_default();
+            i + memchr::memchr2(b'\n', b'\r', tail).unwrap_or(tail.len())
+        };
+        match rest.first() {
+            None | Some(b'\n' | b'\r') => return Some((Line::Nothing, 0)),
+            Some(b'(') => {
+                let len = line_len(0);
+                return comment_ends(rest.get(..len)?, 0).then_some((Line::Nothing, len));
+            }
             Some(_) => {}
         }
-        // After a word at `i`: the end of the line (`Some(None)`), or a
-        // space and the next word's start; anything else declines.
-        let after = |i: usize| match line.get(i) {
-            None => Some(None),
-            Some(b' ') => Some(Some(i + 1)),
+        // After a word that ends at `i`: the end of the line (`Err` of its
+        // length), or a space and the next word's start (`Ok`); anything
+        // else declines.
+        let after = |i: usize| match rest.get(i) {
+            None | Some(b'\n' | b'\r') => Some(Err(i)),
+            Some(b' ') => Some(Ok(i + 1)),
             Some(_) => None,
         };
+        // The next word's start, when the line goes on.
+        let word = |at: Result<usize, usize>, letter: u8| at.ok().filter(|&i| rest.get(i) == Some(&letter));
         let (mut g, mut x, mut z, mut f) = (None, None, None, None);
         // Words in the order G X Z F, one space between them, a comment
-        // last: where the next one starts (`None`: the line has ended).
-        let mut at = Some(0);
-        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'G')) {
-            g = Some(match line.get(i + 1..i + 3)? {
+        // last.
+        let mut at = Ok(0);
+        if let Some(i) = word(at, b'G') {
+            g = Some(match rest.get(i + 1..i + 3)? {
                 b"00" => MotionMode::G00,
                 b"01" => MotionMode::G01,
                 b"32" => MotionMode::G32,
@@ -230,20 +241,23 @@ impl FastNc {
             });
             at = after(i + 3)?;
         }
-        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'X')) {
-            let (v, end) = self.length_at(line, i + 1)?;
+        if let Some(i) = word(at, b'X') {
+            let (v, end) = self.length_at(rest, i + 1)?;
             x = Some(v);
             at = after(end)?;
         }
-        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'Z')) {
-            let (v, end) = self.length_at(line, i + 1)?;
+        if let Some(i) = word(at, b'Z') {
+            let (v, end) = self.length_at(rest, i + 1)?;
             z = Some(v);
             at = after(end)?;
         }
-        if let Some(i) = at.filter(|&i| line.get(i) == Some(&b'F')) {
-            // F: digits (. digits)?, not zero.
-            let word_len = memchr::memchr(b' ', line.get(i..)?).unwrap_or(len - i);
-            let word = line.get(i..i + word_len)?;
+        if let Some(i) = word(at, b'F') {
+            // F: digits (. digits)?, not zero, to a space or the line's end.
+            let mut end = i + 1;
+            while !matches!(rest.get(end), None | Some(b' ' | b'\n' | b'\r')) {
+                end += 1;
+            }
+            let word = rest.get(i..end)?;
             let number = word.get(1..)?;
             let (int, frac) = match number.iter().position(|&b| b == b'.') {
                 Some(p) => (number.get(..p)?, number.get(p + 1..)?),
@@ -255,15 +269,20 @@ impl FastNc {
             }
             FText::new(word)?;
             f = Some(word);
-            at = after(i + word_len)?;
+            at = after(end)?;
         }
-        // A word after a space that is none of the above (or none at
+        // After a space, a word that is none of the above (or none at
         // all): only a comment to the end of the line.
-        if let Some(i) = at {
-            if !comment_ends(line, i) {
-                return None;
+        let len = match at {
+            Err(len) => len,
+            Ok(i) => {
+                let len = line_len(i);
+                if !comment_ends(rest.get(..len)?, i) {
+                    return None;
+                }
+                len
             }
-        }
+        };
         if x.is_none() && z.is_none() {
             return None;
         }
