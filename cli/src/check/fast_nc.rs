@@ -67,6 +67,37 @@ struct Unread {
     to: Point,
 }
 
+/// The move of a plain line taken here: what its [`Step`] holds besides
+/// what every plain line's has (no centre, a start angle of 0 and the
+/// line's number as its context), built into the step only where the
+/// trace hands it on ([`Plain::step`]), so that the smaller value is the
+/// one moved on the way.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Plain {
+    kind: Kind,
+    from: Point,
+    to: Point,
+    lead: Option<Lead>,
+    sync: bool,
+}
+
+impl Plain {
+    /// The step of this move, taken from line `line`.
+    #[inline(always)]
+    pub(super) fn step(self, line: usize) -> Step {
+        Step {
+            kind: self.kind,
+            from: Some(self.from),
+            to: self.to,
+            centre: None,
+            lead: self.lead,
+            angle: StartAngle::ZERO,
+            sync: self.sync,
+            context: Context::Source { line },
+        }
+    }
+}
+
 /// A line taken here.
 #[derive(Debug, PartialEq, Eq)]
 enum Line<'a> {
@@ -308,29 +339,28 @@ impl FastNc {
         }
     }
 
-    /// The steps of the line at the start of `rest` (a piece of whole
+    /// The move of the line at the start of `rest` (a piece of whole
     /// lines; line number `number`) when it is taken here, and where the
     /// next line starts in `rest`: `Some((None, _))` for a line taken
-    /// without a step, `None` when declined.
-    pub(super) fn take_at(&mut self, rest: &[u8], number: usize) -> Option<(Option<Step>, usize)> {
+    /// without a move, `None` when declined.
+    pub(super) fn take_at(&mut self, rest: &[u8], number: usize) -> Option<(Option<Plain>, usize)> {
         if !self.enabled || number == 1 {
             return None;
         }
         let (line, len) = self.scan(rest)?;
-        let step = self.take_line(line, number)?;
+        let step = self.take_line(line)?;
         Some((step, Self::line_end(rest, len)))
     }
 
-    /// The steps of `line` (line number `number`) when it is taken here:
-    /// `Some(None)` for a line taken without a step, `None` when declined.
-    fn take_line(&mut self, line: Line<'_>, number: usize) -> Option<Option<Step>> {
+    /// The move of `line` when it is taken here: `Some(None)` for a line
+    /// taken without a move, `None` when declined.
+    fn take_line(&mut self, line: Line<'_>) -> Option<Option<Plain>> {
         let Line::Move { g, x, z, f } = line else {
             return Some(None);
         };
         let motion = g.or(self.motion)?;
         let from = Point::new(self.x?, self.z?);
         let to = Point::new(x.unwrap_or(from.x), z.unwrap_or(from.z));
-        let context = Context::Source { line: number };
         let f_text = f.and_then(FText::new);
         let step = match motion {
             MotionMode::G00 | MotionMode::G01 => {
@@ -341,16 +371,7 @@ impl FastNc {
                 }
                 self.thread_run = Some(None);
                 let kind = if motion == MotionMode::G00 { Kind::Rapid } else { Kind::Feed };
-                (from != to).then_some(Step {
-                    kind,
-                    from: Some(from),
-                    to,
-                    centre: None,
-                    lead: None,
-                    angle: StartAngle::ZERO,
-                    sync: false,
-                    context,
-                })
+                (from != to).then_some(Plain { kind, from, to, lead: None, sync: false })
             }
             MotionMode::G32 => {
                 let sync = match self.thread_run? {
@@ -367,16 +388,7 @@ impl FastNc {
                 }
                 self.lead = Some(lead);
                 self.thread_run = Some(Some(StartAngle::ZERO));
-                Some(Step {
-                    kind: Kind::Thread,
-                    from: Some(from),
-                    to,
-                    centre: None,
-                    lead: Some(lead),
-                    angle: StartAngle::ZERO,
-                    sync,
-                    context,
-                })
+                Some(Plain { kind: Kind::Thread, from, to, lead: Some(lead), sync })
             }
             _ => return None,
         };

@@ -16,7 +16,7 @@ use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
 use super::error::TraceError;
-use super::fast_nc::FastNc;
+use super::fast_nc::{FastNc, Plain};
 use super::ours::Follow;
 use super::{Context, Kind, Step, TraceFormat};
 
@@ -96,12 +96,13 @@ impl<'t, 'm> NcTrace<'t, 'm> {
     }
 
     /// The next step: the current line's next, else the first of the
-    /// lines after it that move; `None` at the end. A plain line's step
-    /// (the fast path's) is returned as it is, never queued.
-    fn next_step(&mut self) -> Result<Option<Step>, TraceError> {
+    /// lines after it that move; `None` at the end. A plain line's move
+    /// (the fast path's) is returned as it is, never queued, and made a
+    /// step by the caller (line `self.line`).
+    fn next_step(&mut self) -> Result<Option<Next>, TraceError> {
         loop {
             if let Some(step) = self.ready.pop_front() {
-                return Ok(Some(step));
+                return Ok(Some(Next::Step(step)));
             }
             if self.at >= self.piece {
                 match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
@@ -120,7 +121,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 self.line += 1;
                 self.at += advance;
                 match step {
-                    Some(step) => return Ok(Some(step)),
+                    Some(plain) => return Ok(Some(Next::Plain(plain))),
                     None => continue,
                 }
             }
@@ -179,8 +180,22 @@ impl Iterator for NcTrace<'_, '_> {
     type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        self.next_step().transpose().map(|s| s.map(|s| (s, 0)))
+        // A plain line's step is built where it is returned.
+        match self.next_step() {
+            Ok(Some(Next::Plain(plain))) => Some(Ok((plain.step(self.line), 0))),
+            Ok(Some(Next::Step(step))) => Some(Ok((step, 0))),
+            Ok(None) => None,
+            Err(e) => Some(Err(e)),
+        }
     }
+}
+
+/// What [`NcTrace::next_step`] found next.
+enum Next {
+    /// The move of a plain line taken by the fast path (the line just read).
+    Plain(Plain),
+    /// A step the reader gave.
+    Step(Step),
 }
 
 /// The columns a CSV trace may have.
