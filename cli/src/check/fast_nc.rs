@@ -644,6 +644,11 @@ mod tests {
                 "G00 X10.000 Z10.000", "G32 X10.000 Z-20.000 F6.0", "G32 X12.000 Z-23.000 F6.0",
                 "G32 X10.000 Z-20.000", "G32 Z-25.000 F2.0", "X12.000", "Z-2.000", "M30", "M02",
                 "G00 X\u{e9}1.0", "G00 X1.0 Z1.0\r",
+                // Comments after each kind of word, and lines that end
+                // after a space or inside a word.
+                "G01 X1.0 (c)", "G00 (c)", "F0.2 (c)", "Z-2.000 F0.2", "G32 Z-20.000 F2 (x)",
+                "X1.000 (a;b)", "G00 X1.000 Z", "G00 X", "G0", "G00 X1.000 Z2.000 F", "(c) X1.0",
+                "G00 X1.000 (", "G00 X1.000 ( )", "G00 X1.000 ()", "G00 X1.000 Z2.000 (é)",
             ]).prop_map(str::to_string),
         ]
     }
