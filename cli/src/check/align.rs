@@ -41,7 +41,10 @@ const MAX_CELLS: usize = 1 << 19;
 /// its first rapid.
 struct Grouper<I> {
     steps: I,
-    next: Option<(Step, u32)>,
+    /// The group begun by the step that ended the last one, with its
+    /// owners so far (rapids', cuts'): the step is put where it belongs
+    /// at once, not held aside and moved again.
+    next: Option<(Group, Option<u32>, Option<u32>)>,
     /// Steps taken so far.
     count: usize,
     /// Groups given back once compared, emptied, to be filled again: a
@@ -75,28 +78,36 @@ impl<E, I: Iterator<Item = Result<(Step, u32), E>>> Grouper<I> {
         }
     }
 
-    fn pull(&mut self) -> Option<Result<(Step, u32), E>> {
-        let s = self.next.take().map(Ok).or_else(|| self.steps.next());
-        if matches!(s, Some(Ok(_))) {
-            self.count += 1;
-        }
-        s
+    /// An empty group, reused when one is spare.
+    fn empty(&mut self) -> Group {
+        self.spare.pop().unwrap_or(Group { rapids: Vec::new(), cuts: Vec::new() })
     }
 
     fn group(&mut self) -> Option<Result<(Group, u32), E>> {
-        let mut g = self.spare.pop().unwrap_or(Group { rapids: Vec::new(), cuts: Vec::new() });
-        let (mut rapid_owner, mut cut_owner) = (None, None);
+        let (mut g, mut rapid_owner, mut cut_owner) = match self.next.take() {
+            Some(begun) => begun,
+            None => (self.empty(), None, None),
+        };
         loop {
-            let (s, seg) = match self.pull() {
+            let (s, seg) = match self.steps.next() {
                 None if g.len() == 0 => return None,
                 None => break,
                 Some(Err(e)) => return Some(Err(e)),
                 Some(Ok(v)) => v,
             };
+            self.count += 1;
             let full = g.cuts.len() >= GROUP_MOVES || g.rapids.len() >= GROUP_MOVES;
             if g.len() > 0 && ((s.kind == Kind::Rapid && !g.cuts.is_empty()) || full) {
-                self.next = Some((s, seg));
-                self.count -= 1;
+                // The step begins the next group.
+                let mut next = self.empty();
+                let owners = if s.kind == Kind::Rapid {
+                    next.rapids.push(s);
+                    (Some(seg), None)
+                } else {
+                    next.cuts.push(s);
+                    (None, Some(seg))
+                };
+                self.next = Some((next, owners.0, owners.1));
                 break;
             }
             if s.kind == Kind::Rapid {

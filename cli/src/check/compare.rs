@@ -48,8 +48,11 @@ fn corners(p: Point, q: Point) -> [Point; 2] {
 pub(super) fn compare(a: &Group, b: &Group, tol: i64, units: Units, regions: Regions<'_>) -> Vec<Divergence> {
     let mut out = Vec::new();
     let tol = i128::from(tol);
+    // Equal points first (the usual case), without the wide differences.
     let close = |p: Point, q: Point| {
-        (i128::from(p.x) - i128::from(q.x)).abs() <= tol && (i128::from(p.z) - i128::from(q.z)).abs() <= tol
+        p == q
+            || (i128::from(p.x) - i128::from(q.x)).abs() <= tol
+                && (i128::from(p.z) - i128::from(q.z)).abs() <= tol
     };
     let through = |p: Point, c: Point, q: Point| regions.any(|r| r.crossed_by(p, c) || r.crossed_by(c, q));
     let div = |what, o: &Step, t: &Step| Divergence { what, ours: Some(*o), theirs: Some(*t), moves: 1 };

@@ -67,6 +67,37 @@ struct Unread {
     to: Point,
 }
 
+/// The move of a plain line taken here: what its [`Step`] holds besides
+/// what every plain line's has (no centre, a start angle of 0 and the
+/// line's number as its context), built into the step only where the
+/// trace hands it on ([`Plain::step`]), so that the smaller value is the
+/// one moved on the way.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Plain {
+    kind: Kind,
+    from: Point,
+    to: Point,
+    lead: Option<Lead>,
+    sync: bool,
+}
+
+impl Plain {
+    /// The step of this move, taken from line `line`.
+    #[inline(always)]
+    pub(super) fn step(self, line: usize) -> Step {
+        Step {
+            kind: self.kind,
+            from: Some(self.from),
+            to: self.to,
+            centre: None,
+            lead: self.lead,
+            angle: StartAngle::ZERO,
+            sync: self.sync,
+            context: Context::Source { line },
+        }
+    }
+}
+
 /// A line taken here.
 #[derive(Debug, PartialEq, Eq)]
 enum Line<'a> {
@@ -75,6 +106,21 @@ enum Line<'a> {
     /// A plain line: its G code (G00, G01, G32), X, Z (in increments) and
     /// F word (its text).
     Move { g: Option<MotionMode>, x: Option<i64>, z: Option<i64>, f: Option<&'a [u8]> },
+}
+
+/// True when `line` (without its line end) has a comment from `i` to its
+/// end: `(`, printable ASCII without parentheses and semicolons, `)`. The
+/// bytes are tested all at once (no branch a byte).
+fn comment_ends(line: &[u8], i: usize) -> bool {
+    let Some(body) = line.get(i + 1..line.len().saturating_sub(1)) else {
+        return false;
+    };
+    line.get(i) == Some(&b'(')
+        && line.len() >= i + 2
+        && line.last() == Some(&b')')
+        && body.iter().fold(true, |ok, &b| {
+            ok & (b.wrapping_sub(b' ') <= b'~' - b' ') & (b != b'(') & (b != b')') & (b != b';')
+        })
 }
 
 /// The fast path's state (see the module's documentation).
@@ -123,8 +169,10 @@ impl FastNc {
         }
     }
 
-    fn cached(&self, f: &[u8]) -> Option<Lead> {
-        self.leads.iter().find(|(t, _)| t.as_bytes() == f).map(|(_, l)| *l)
+    /// The lead the reader gave the F text `f`, when known (texts compared
+    /// whole: the bytes after a text's length are zeros in each).
+    fn cached(&self, f: &FText) -> Option<Lead> {
+        self.leads.iter().find(|(t, _)| t == f).map(|(_, l)| *l)
     }
 
     /// A length word's number, from `rest[i]` (after its letter) to the
@@ -182,95 +230,94 @@ impl FastNc {
     /// The line at the start of `rest` (a piece of whole lines), when it
     /// has one of the shapes taken here, and its length: the line ends
     /// there, at the end of `rest` or at a line end (`\n` or `\r`, reading
-    /// R-LINEEND: [`FastNc::line_end`]). One pass over the line's bytes,
-    /// which are then all printable ASCII.
+    /// R-LINEEND: [`FastNc::line_end`]). Its words are read in order, each
+    /// at most once, and the line's end is found where they end (a
+    /// comment's end many bytes a step); its bytes are then all printable
+    /// ASCII.
     fn scan<'a>(&self, rest: &'a [u8]) -> Option<(Line<'a>, usize)> {
-        let ends = |i: usize| matches!(rest.get(i), None | Some(b'\n' | b'\r'));
-        // A comment from `i`: printable ASCII without parentheses and
-        // semicolons, then `)` and the end of the line; where it ends.
-        let comment = |i: usize| {
-            let text = rest.get(i + 1..)?;
-            for (j, &b) in text.iter().enumerate() {
-                match b {
-                    b')' => return ends(i + j + 2).then_some(i + j + 2),
-                    // Printable ASCII but `(` and `;`.
-                    b' '..=b'\'' | b'*'..=b':' | b'<'..=b'~' => {}
-                    _ => return None,
-                }
-            }
-            None
+        // Where a line that goes on at `i` with a comment ends (the end
+        // of `rest`, or its next line end).
+        let line_len = |i: usize| {
+            let tail = rest.get(i..).unwrap_or_default();
+            i + memchr::memchr2(b'\n', b'\r', tail).unwrap_or(tail.len())
         };
         match rest.first() {
             None | Some(b'\n' | b'\r') => return Some((Line::Nothing, 0)),
-            Some(b'(') => return comment(0).map(|end| (Line::Nothing, end)),
+            Some(b'(') => {
+                let len = line_len(0);
+                return comment_ends(rest.get(..len)?, 0).then_some((Line::Nothing, len));
+            }
             Some(_) => {}
         }
+        // After a word that ends at `i`: the end of the line (`Err` of its
+        // length), or a space and the next word's start (`Ok`); anything
+        // else declines.
+        let after = |i: usize| match rest.get(i) {
+            None | Some(b'\n' | b'\r') => Some(Err(i)),
+            Some(b' ') => Some(Ok(i + 1)),
+            Some(_) => None,
+        };
+        // The next word's start, when the line goes on.
+        let word = |at: Result<usize, usize>, letter: u8| at.ok().filter(|&i| rest.get(i) == Some(&letter));
         let (mut g, mut x, mut z, mut f) = (None, None, None, None);
         // Words in the order G X Z F, one space between them, a comment
         // last.
-        let mut order = 0;
-        let mut i = 0;
-        let end = loop {
-            let (rank, value) = (rest.get(i)?, i + 1);
-            let rank = match rank {
-                b'G' => 1,
-                b'X' => 2,
-                b'Z' => 3,
-                b'F' => 4,
+        let mut at = Ok(0);
+        if let Some(i) = word(at, b'G') {
+            g = Some(match rest.get(i + 1..i + 3)? {
+                b"00" => MotionMode::G00,
+                b"01" => MotionMode::G01,
+                b"32" => MotionMode::G32,
                 _ => return None,
+            });
+            at = after(i + 3)?;
+        }
+        if let Some(i) = word(at, b'X') {
+            let (v, end) = self.length_at(rest, i + 1)?;
+            x = Some(v);
+            at = after(end)?;
+        }
+        if let Some(i) = word(at, b'Z') {
+            let (v, end) = self.length_at(rest, i + 1)?;
+            z = Some(v);
+            at = after(end)?;
+        }
+        if let Some(i) = word(at, b'F') {
+            // F: digits (. digits)?, not zero, to a space or the line's end.
+            let mut end = i + 1;
+            while !matches!(rest.get(end), None | Some(b' ' | b'\n' | b'\r')) {
+                end += 1;
+            }
+            let word = rest.get(i..end)?;
+            let number = word.get(1..)?;
+            let (int, frac) = match number.iter().position(|&b| b == b'.') {
+                Some(p) => (number.get(..p)?, number.get(p + 1..)?),
+                None => (number, &b"0"[..]),
             };
-            if rank <= order {
+            let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
+            if !digits(int) || !digits(frac) || !number.iter().any(|b| (b'1'..=b'9').contains(b)) {
                 return None;
             }
-            order = rank;
-            match rank {
-                1 => {
-                    g = Some(match rest.get(value..value + 2)? {
-                        b"00" => MotionMode::G00,
-                        b"01" => MotionMode::G01,
-                        b"32" => MotionMode::G32,
-                        _ => return None,
-                    });
-                    i = value + 2;
+            FText::new(word)?;
+            f = Some(word);
+            at = after(end)?;
+        }
+        // After a space, a word that is none of the above (or none at
+        // all): only a comment to the end of the line.
+        let len = match at {
+            Err(len) => len,
+            Ok(i) => {
+                let len = line_len(i);
+                if !comment_ends(rest.get(..len)?, i) {
+                    return None;
                 }
-                2 => (x, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
-                3 => (z, i) = self.length_at(rest, value).map(|(v, i)| (Some(v), i))?,
-                _ => {
-                    // F: digits (. digits)?, not zero.
-                    i = value;
-                    while !ends(i) && rest.get(i) != Some(&b' ') {
-                        i += 1;
-                    }
-                    let word = rest.get(value - 1..i)?;
-                    let number = word.get(1..)?;
-                    let (int, frac) = match number.iter().position(|&b| b == b'.') {
-                        Some(p) => (number.get(..p)?, number.get(p + 1..)?),
-                        None => (number, &b"0"[..]),
-                    };
-                    let digits = |d: &[u8]| !d.is_empty() && d.iter().all(u8::is_ascii_digit);
-                    if !digits(int) || !digits(frac) || !number.iter().any(|b| (b'1'..=b'9').contains(b)) {
-                        return None;
-                    }
-                    FText::new(word)?;
-                    f = Some(word);
-                }
-            }
-            if ends(i) {
-                break i;
-            }
-            // A space, then a word or a comment.
-            if rest.get(i) != Some(&b' ') {
-                return None;
-            }
-            i += 1;
-            if rest.get(i) == Some(&b'(') {
-                break comment(i)?;
+                len
             }
         };
         if x.is_none() && z.is_none() {
             return None;
         }
-        Some((Line::Move { g, x, z, f }, end))
+        Some((Line::Move { g, x, z, f }, len))
     }
 
     /// `line` (without its line end), when it is one of the shapes taken
@@ -292,49 +339,39 @@ impl FastNc {
         }
     }
 
-    /// The steps of the line at the start of `rest` (a piece of whole
+    /// The move of the line at the start of `rest` (a piece of whole
     /// lines; line number `number`) when it is taken here, and where the
     /// next line starts in `rest`: `Some((None, _))` for a line taken
-    /// without a step, `None` when declined.
-    pub(super) fn take_at(&mut self, rest: &[u8], number: usize) -> Option<(Option<Step>, usize)> {
+    /// without a move, `None` when declined.
+    pub(super) fn take_at(&mut self, rest: &[u8], number: usize) -> Option<(Option<Plain>, usize)> {
         if !self.enabled || number == 1 {
             return None;
         }
         let (line, len) = self.scan(rest)?;
-        let step = self.take_line(line, number)?;
+        let step = self.take_line(line)?;
         Some((step, Self::line_end(rest, len)))
     }
 
-    /// The steps of `line` (line number `number`) when it is taken here:
-    /// `Some(None)` for a line taken without a step, `None` when declined.
-    fn take_line(&mut self, line: Line<'_>, number: usize) -> Option<Option<Step>> {
+    /// The move of `line` when it is taken here: `Some(None)` for a line
+    /// taken without a move, `None` when declined.
+    fn take_line(&mut self, line: Line<'_>) -> Option<Option<Plain>> {
         let Line::Move { g, x, z, f } = line else {
             return Some(None);
         };
         let motion = g.or(self.motion)?;
         let from = Point::new(self.x?, self.z?);
         let to = Point::new(x.unwrap_or(from.x), z.unwrap_or(from.z));
-        let context = Context::Source { line: number };
         let f_text = f.and_then(FText::new);
         let step = match motion {
             MotionMode::G00 | MotionMode::G01 => {
                 // F sets the lead in force (`State::scan`): its value is
                 // known when the reader gave this text's.
-                if let Some(f) = f {
-                    self.lead = self.cached(f);
+                if f.is_some() {
+                    self.lead = f_text.as_ref().and_then(|t| self.cached(t));
                 }
                 self.thread_run = Some(None);
                 let kind = if motion == MotionMode::G00 { Kind::Rapid } else { Kind::Feed };
-                (from != to).then_some(Step {
-                    kind,
-                    from: Some(from),
-                    to,
-                    centre: None,
-                    lead: None,
-                    angle: StartAngle::ZERO,
-                    sync: false,
-                    context,
-                })
+                (from != to).then_some(Plain { kind, from, to, lead: None, sync: false })
             }
             MotionMode::G32 => {
                 let sync = match self.thread_run? {
@@ -343,7 +380,7 @@ impl FastNc {
                     Some(_) => return None,
                 };
                 let lead = match f {
-                    Some(f) => self.cached(f)?,
+                    Some(_) => f_text.as_ref().and_then(|t| self.cached(t))?,
                     None => self.lead?,
                 };
                 if from == to {
@@ -351,16 +388,7 @@ impl FastNc {
                 }
                 self.lead = Some(lead);
                 self.thread_run = Some(Some(StartAngle::ZERO));
-                Some(Step {
-                    kind: Kind::Thread,
-                    from: Some(from),
-                    to,
-                    centre: None,
-                    lead: Some(lead),
-                    angle: StartAngle::ZERO,
-                    sync,
-                    context,
-                })
+                Some(Plain { kind: Kind::Thread, from, to, lead: Some(lead), sync })
             }
             _ => return None,
         };
@@ -454,7 +482,7 @@ impl FastNc {
                 if let (Ok(Some(f)), false) = (c.block.get('F'), c.block.words.has('I')) {
                     let text = f.text();
                     if let Some(t) = FText::new(text.as_bytes()) {
-                        if self.cached(t.as_bytes()).is_none() && self.leads.len() < LEADS {
+                        if self.cached(&t).is_none() && self.leads.len() < LEADS {
                             self.leads.push((t, c.g32.lead));
                         }
                     }
@@ -616,6 +644,11 @@ mod tests {
                 "G00 X10.000 Z10.000", "G32 X10.000 Z-20.000 F6.0", "G32 X12.000 Z-23.000 F6.0",
                 "G32 X10.000 Z-20.000", "G32 Z-25.000 F2.0", "X12.000", "Z-2.000", "M30", "M02",
                 "G00 X\u{e9}1.0", "G00 X1.0 Z1.0\r",
+                // Comments after each kind of word, and lines that end
+                // after a space or inside a word.
+                "G01 X1.0 (c)", "G00 (c)", "F0.2 (c)", "Z-2.000 F0.2", "G32 Z-20.000 F2 (x)",
+                "X1.000 (a;b)", "G00 X1.000 Z", "G00 X", "G0", "G00 X1.000 Z2.000 F", "(c) X1.0",
+                "G00 X1.000 (", "G00 X1.000 ( )", "G00 X1.000 ()", "G00 X1.000 Z2.000 (é)",
             ]).prop_map(str::to_string),
         ]
     }

@@ -16,7 +16,7 @@ use cycleref_spec::Machine;
 use rust_decimal::Decimal;
 
 use super::error::TraceError;
-use super::fast_nc::FastNc;
+use super::fast_nc::{FastNc, Plain};
 use super::ours::Follow;
 use super::{Context, Kind, Step, TraceFormat};
 
@@ -51,8 +51,9 @@ fn trace_line<'b>(
 }
 
 /// The vendor's toolpath from an expanded program, read in pieces of whole
-/// lines (as the program is, `job::next_piece`), each checked to be UTF-8
-/// at once and lexed a line at a time.
+/// lines (as the program is, `job::next_piece`), a line at a time: the
+/// fast path's lines are ASCII, every other line is checked to be UTF-8
+/// when it is reached.
 pub(super) struct NcTrace<'t, 'm> {
     source: Box<dyn BufRead + 't>,
     /// The current piece (`..piece`) and what was read beyond it.
@@ -61,10 +62,6 @@ pub(super) struct NcTrace<'t, 'm> {
     /// Where the next line starts in the piece.
     at: usize,
     eof: bool,
-    /// Where the piece's first byte that is not UTF-8 is, if it has one:
-    /// the line that holds it is an error when it is reached (not before:
-    /// the lines above it are read as they would be without it).
-    bad: Option<usize>,
     line: usize,
     /// The program reader in its trace mode (reading R-CHECKWORDS): one
     /// reader and one set of rules for programs and traces.
@@ -90,7 +87,6 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             piece: 0,
             at: 0,
             eof: false,
-            bad: None,
             line: 0,
             reader: LineReader::for_trace(machine, units),
             follow: Follow::new(machine, units),
@@ -100,12 +96,13 @@ impl<'t, 'm> NcTrace<'t, 'm> {
     }
 
     /// The next step: the current line's next, else the first of the
-    /// lines after it that move; `None` at the end. A plain line's step
-    /// (the fast path's) is returned as it is, never queued.
-    fn next_step(&mut self) -> Result<Option<Step>, TraceError> {
+    /// lines after it that move; `None` at the end. A plain line's move
+    /// (the fast path's) is returned as it is, never queued, and made a
+    /// step by the caller (line `self.line`).
+    fn next_step(&mut self) -> Result<Option<Next>, TraceError> {
         loop {
             if let Some(step) = self.ready.pop_front() {
-                return Ok(Some(step));
+                return Ok(Some(Next::Step(step)));
             }
             if self.at >= self.piece {
                 match crate::job::next_piece(&mut *self.source, &mut self.buf, &mut self.piece, &mut self.eof)
@@ -115,8 +112,6 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                     Err(error) => return Err(TraceError::CannotRead { line: self.line + 1, error }),
                 }
                 self.at = 0;
-                let piece = self.buf.get(..self.piece).unwrap_or_default();
-                self.bad = std::str::from_utf8(piece).err().map(|e| e.valid_up_to());
             }
             let piece = self.buf.get(..self.piece).unwrap_or_default();
             let rest = piece.get(self.at..).unwrap_or_default();
@@ -126,7 +121,7 @@ impl<'t, 'm> NcTrace<'t, 'm> {
                 self.line += 1;
                 self.at += advance;
                 match step {
-                    Some(step) => return Ok(Some(step)),
+                    Some(plain) => return Ok(Some(Next::Plain(plain))),
                     None => continue,
                 }
             }
@@ -134,12 +129,13 @@ impl<'t, 'm> NcTrace<'t, 'm> {
             let (line, advance) = cycleref_spec::lex::split_line(rest);
             let (end, next) = (self.at + line.len(), self.at + advance);
             self.line += 1;
-            if let Some(bad) = self.bad.filter(|&b| b < end) {
-                // A line end is ASCII: the line's own bytes decide, as
-                // `from_utf8` of the line alone would.
-                return Err(not_utf8(self.line, bad - self.at));
-            }
             let mut text = piece.get(self.at..end).unwrap_or_default();
+            // The line's own bytes are checked to be UTF-8 when the reader
+            // reads it (the lines the fast path takes are ASCII); the lines
+            // above it are read as they would be without a bad byte here.
+            if let Err(e) = std::str::from_utf8(text) {
+                return Err(not_utf8(self.line, e.valid_up_to()));
+            }
             self.at = next;
             // A byte-order mark may start the first line.
             if self.line == 1 {
@@ -184,8 +180,22 @@ impl Iterator for NcTrace<'_, '_> {
     type Item = Result<(Step, u32), TraceError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        self.next_step().transpose().map(|s| s.map(|s| (s, 0)))
+        // A plain line's step is built where it is returned.
+        match self.next_step() {
+            Ok(Some(Next::Plain(plain))) => Some(Ok((plain.step(self.line), 0))),
+            Ok(Some(Next::Step(step))) => Some(Ok((step, 0))),
+            Ok(None) => None,
+            Err(e) => Some(Err(e)),
+        }
     }
+}
+
+/// What [`NcTrace::next_step`] found next.
+enum Next {
+    /// The move of a plain line taken by the fast path (the line just read).
+    Plain(Plain),
+    /// A step the reader gave.
+    Step(Step),
 }
 
 /// The columns a CSV trace may have.
