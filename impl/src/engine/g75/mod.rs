@@ -655,6 +655,24 @@ impl Iterator for G75Moves {
     type Item = Move;
 
     fn next(&mut self) -> Option<Move> {
+        // The roughing's moves (most of a groove's) first; the other
+        // stages out of line, so that the per-move path stays small
+        // (issue 33).
+        if self.stage == Stage::Rough {
+            if let Some(m) = self.next_rough() {
+                return Some(m);
+            }
+            self.stage = Stage::Tail;
+        }
+        self.next_other()
+    }
+}
+
+impl G75Moves {
+    /// [`Iterator::next`] in the stages other than the roughing: the
+    /// approach (then the roughing), the tail, the end.
+    #[inline(never)]
+    fn next_other(&mut self) -> Option<Move> {
         let mut loops = crate::loop_counters::count!(G75_NEXT);
         loop {
             loops.tick();
