@@ -410,11 +410,12 @@ impl From<ProgramError> for RunError {
 ///
 /// [`RunError::Cycle`].
 pub fn expand_at(cycle: Cycle<'_, '_>, engine: Engine) -> Result<Moves, RunError> {
-    expand(cycle, engine).map_err(|error| RunError::Cycle {
-        line: cycle.line_of(&error),
-        code: cycle.code(),
-        error,
-    })
+    expand(cycle, engine).map_err(|error| at(cycle, error))
+}
+
+/// `error`, the alarm of `cycle`, named with its line.
+fn at(cycle: Cycle<'_, '_>, error: CycleError) -> RunError {
+    RunError::Cycle { line: cycle.line_of(&error), code: cycle.code(), error }
 }
 
 /// What the first phase learnt of a program that reads and expands
@@ -491,8 +492,11 @@ impl Validation {
         if let Some(cycle) = Cycle::of(item) {
             self.cycles[cycle.index()] += 1;
             // Every alarm is raised before the first move: the moves are
-            // not taken.
-            expand_at(cycle, self.engine)?;
+            // not taken (a G75.1 by the engine is only checked, issue 33).
+            match (cycle, self.engine) {
+                (Cycle::G75(c), Engine::Impl) => c.check_engine().map_err(|error| at(cycle, error))?,
+                _ => drop(expand_at(cycle, self.engine)?),
+            }
             if self.lead_off_g32_axis.is_none() && cycle.lead_off_g32_axis() {
                 self.lead_off_g32_axis = Some((cycle.line(), cycle.code()));
             }

@@ -4,7 +4,7 @@
 use std::cell::RefCell;
 use std::fmt;
 
-use cycleref::engine::g75::{expand_g75_planned, G75Plan};
+use cycleref::engine::g75::{check_g75_planned, expand_g75_planned, G75Plan};
 use cycleref::g75::RIGHT_ANGLE;
 use cycleref::units::Length;
 use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role};
@@ -71,6 +71,28 @@ impl fmt::Display for GrooveHeading {
     }
 }
 
+thread_local! {
+    /// The plan of the last groove expanded or checked on this thread by
+    /// the fixed-point engine, reused when the next has the same words but
+    /// for its position (both phases of a run, a program that cuts one
+    /// groove at several places): the same moves and alarms as
+    /// `expand_g75` by construction, one plan held at a time.
+    static PLAN: RefCell<Option<G75Plan>> = const { RefCell::new(None) };
+}
+
+impl G75Call<'_> {
+    /// The fixed-point engine's alarm for this cycle, if any, without its
+    /// moves: what [`CycleCall::engine`] raises (the first phase of a run
+    /// only checks, issue 33).
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    pub(crate) fn check_engine(&self) -> Result<(), CycleError> {
+        PLAN.with(|plan| check_g75_planned(&self.cycle, &mut plan.borrow_mut()))
+    }
+}
+
 impl<'a> CycleCall<'a> for G75Call<'a> {
     // Boxed: the largest of the engines' iterators.
     type EngineMoves = Box<G75Moves>;
@@ -103,13 +125,6 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
     }
 
     fn engine(&self) -> Result<Box<G75Moves>, CycleError> {
-        // The plan of the last groove expanded on this thread, reused when
-        // the next has the same words but for its position (both phases of a
-        // run, a program that cuts one groove at several places): the same
-        // moves as `expand_g75` by construction, one plan held at a time.
-        thread_local! {
-            static PLAN: RefCell<Option<G75Plan>> = const { RefCell::new(None) };
-        }
         let moves = PLAN.with(|plan| expand_g75_planned(&self.cycle, &mut plan.borrow_mut()))?;
         Ok(Box::new(moves))
     }

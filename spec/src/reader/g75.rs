@@ -23,7 +23,14 @@ pub(super) struct G75Block1 {
 
 /// True when `block` programs G75.1.
 pub(super) fn is_g75_1(block: &Block<'_>) -> bool {
-    block.all('G').any(|w| w.number().exact(1) == Some(751))
+    block.all('G').any(|w| is_751(&w.number()))
+}
+
+/// True when the number of a G word is 75.1 (`n.exact(1) == Some(751)`:
+/// `75.1`, `075.10`, …), the usual spelling `75.1` decided by its bytes
+/// (issue 33; the test `g75_1_by_bytes_and_by_value`).
+pub(super) fn is_751(n: &Number<'_>) -> bool {
+    (!n.negative && n.int_bytes() == b"75" && n.frac_bytes() == Some(b"1")) || n.exact(1) == Some(751)
 }
 
 pub(super) fn lone_g75(line: usize) -> ProgramError {
@@ -264,6 +271,12 @@ enum AngleFault {
 /// the increment) in integers (issue 33), else by [`angle_units_decimal`]:
 /// the same value and refusals (the test `angles_by_integers_and_decimals`).
 fn angle_units(n: &Number<'_>, decimals: u32) -> Result<u32, AngleFault> {
+    // The usual word, whole degrees in one to three digits ("A45"): v·10^4.
+    let int = n.int_bytes();
+    if !n.negative && n.frac_bytes().is_none() && (1..=3).contains(&int.len()) {
+        let t = int.iter().fold(0, |v, &b| v * 10 + u32::from(b - b'0')) * 10_000;
+        return if t <= 4 * RIGHT_ANGLE { Ok(t) } else { Err(AngleFault::OutOfRange) };
+    }
     if n.int_bytes().len() + n.frac_bytes().map_or(0, <[u8]>::len) <= 18 {
         if let Some(v) = n.exact(decimals) {
             if n.negative && v != 0 {
@@ -299,6 +312,25 @@ fn angle_units_decimal(n: &Number<'_>, decimals: u32) -> Result<u32, AngleFault>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `is_751` is `exact(1) == Some(751)` over the spellings of 75.1 and
+    /// its neighbours.
+    #[test]
+    fn g75_1_by_bytes_and_by_value() {
+        let texts = [
+            "75.1", "075.1", "75.10", "0075.100", "75.", "75", "75.01", "751", "7.51", ".751", "75.11",
+            "76.1", "75.2", "", ".", "0.1", "750.1",
+        ];
+        for t in texts {
+            for negative in [false, true] {
+                let n = Number::new(negative, t);
+                assert_eq!(is_751(&n), n.exact(1) == Some(751), "{negative} {t}");
+            }
+        }
+        // By hand: 75.1 and 075.10 are G75.1; -75.1 and 75.01 are not.
+        assert!(is_751(&Number::new(false, "75.1")) && is_751(&Number::new(false, "075.10")));
+        assert!(!is_751(&Number::new(true, "75.1")) && !is_751(&Number::new(false, "75.01")));
+    }
 
     /// The integer reading of an angle word gives what the decimal one
     /// gives, over words of every shape: signs, points, leading and

@@ -215,7 +215,7 @@ impl State<'_> {
         let mut cycle_word = None;
         for w in block.all('G') {
             let whole = w.integer();
-            if matches!(whole, Some(76 | 78 | 92)) || (whole.is_none() && w.number().exact(1) == Some(751)) {
+            if matches!(whole, Some(76 | 78 | 92)) || (whole.is_none() && super::g75::is_751(&w.number())) {
                 cycle_word = cycle_word.or(Some(w));
             }
             match whole {
@@ -242,7 +242,7 @@ impl State<'_> {
                 Some(20) => self.set_unit(block, w, InputUnit::Inch)?,
                 Some(21) => self.set_unit(block, w, InputUnit::Metric)?,
                 Some(18 | 40 | 54..=59 | 96 | 97 | 98 | 99) => {}
-                None if w.number().exact(1) == Some(751) => {
+                None if super::g75::is_751(&w.number()) => {
                     if !self.machine.profile.g75_1 {
                         return Err(err(
                             block,

@@ -127,7 +127,10 @@
 //! geometry in the local frame, and the alarms among them) and reuses it
 //! for the next cycle with the same words but for its start point and the
 //! point before it; only the range checks and the absolute moves are made
-//! again. [`expand_g75`] is the same function with no plan kept, so the
+//! again (the tail's moves are kept in the plan in the local frame and
+//! only placed); [`check_g75_planned`] makes the checks alone, with the
+//! tail's range check one box's corners when they lie in the range.
+//! [`expand_g75`] is the same function with no plan kept, so the
 //! two agree by construction (the test `planned_expansion_is_the_plain_one`
 //! compares them, alarms included). The reader's pipeline keeps one plan
 //! per thread, so a program that cuts one groove at many places decides
@@ -158,7 +161,7 @@
 //!   `y_top` when the corner covers most of its flank and Δu > 0; then
 //!   (§8) K1 (K4) is not a vertex and R0 (R3) lies on the chord.
 //! * R-G75ARCZERO: an arc whose rounded end is its start is left out like
-//!   any empty move (`TailBuilder::go`), centre and all.
+//!   any empty move (`TailBuilder::go`, in the local frame), centre and all.
 //! * R-G75PROFILE: [`groove_profile`] checks `validate()` and the corners
 //!   only, keeps every point (none is left out as empty; K1 and K4 are
 //!   vertices only below `y_top`, as in the rough contour), and range-checks
@@ -306,6 +309,25 @@ fn expand(c: &G75Cycle, fast_path: bool) -> Result<G75Moves, CycleError> {
 ///
 /// Those of [`expand_g75`], in its order.
 pub fn expand_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<G75Moves, CycleError> {
+    place(c, planned(c, plan)?)
+}
+
+/// The alarm [`expand_g75_planned`] raises for `c`, if any, without making
+/// its moves (the first phase of a run, which only checks: issue 33); the
+/// plan kept as [`expand_g75_planned`] keeps it. The same result as
+/// `expand_g75_planned(c, plan).map(drop)` (the test
+/// `planned_expansion_is_the_plain_one` compares them).
+///
+/// # Errors
+///
+/// Those of [`expand_g75`], in its order.
+pub fn check_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<(), CycleError> {
+    planned(c, plan)?.check_placed(c)
+}
+
+/// The plan of `c` after [`G75Cycle::validate`]: `plan` when it fits `c`,
+/// else made anew and kept in `plan`.
+fn planned<'p>(c: &G75Cycle, plan: &'p mut Option<G75Plan>) -> Result<&'p G75Plan, CycleError> {
     c.validate()?;
     match plan {
         Some(p) if p.fits(c) => {}
@@ -315,10 +337,7 @@ pub fn expand_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<G7
             *plan = Some(G75Plan::of_valid(c, true)?);
         }
     }
-    match plan {
-        Some(p) => place(c, p),
-        None => Err(CycleError::UndecidedRounding),
-    }
+    plan.as_ref().ok_or(CycleError::UndecidedRounding)
 }
 
 /// The part of a G75.1 expansion that depends only on the groove's words,
@@ -343,18 +362,20 @@ pub struct G75Plan {
     stats: FastPathStats,
     /// The layers.
     layers: Layers,
-    /// The last layer's plunge range.
-    last: (i128, i128),
     /// Layer 1's plunge range.
     first: (i128, i128),
     /// The top of layer 1.
     y_top: i128,
     /// The plunges of the roughing (0: J2).
     plunges: u64,
-    /// The rough contour's vertices (J0, J1).
-    rough_pts: Option<([contour::RoughLocal; 6], usize)>,
-    /// The finishing profile (J1, J2).
-    finish_pts: Option<([contour::ProfileLocal; 8], usize)>,
+    /// The moves after the roughing, in the local frame (R-G75ZERO
+    /// applied: a move is empty wherever the groove is).
+    tail: TailBuilder,
+    /// The corners of the box of every local point that placing the plan
+    /// maps and range-checks (A11, the tail's ends and centres, the
+    /// position after the tail): when both map into the range, so does
+    /// every point (X and Z are monotone in y and u).
+    reach: (Local, Local),
 }
 
 impl G75Plan {
@@ -416,6 +437,15 @@ impl G75Plan {
         // only for J1/J2.
         let rough_pts = if roughs { Some(rough_vertices(&mut ev, y_top)?) } else { None };
         let finish_pts = if c.path.finishes() { Some(finish_profile(&mut ev)?) } else { None };
+        let tail =
+            tail_of(&Frame::new(c), &g, &layers, roughs, last_last, (a11, y_top), rough_pts, finish_pts);
+        let a11_local = (a11, y_top);
+        let mut reach = (a11_local, a11_local);
+        let legs = tail.legs.iter().take(tail.len).map(|l| l.to);
+        for p in legs.chain(tail.centres.iter().take(tail.arcs).copied()).chain([tail.at]) {
+            reach.0 = (reach.0 .0.min(p.0), reach.0 .1.min(p.1));
+            reach.1 = (reach.1 .0.max(p.0), reach.1 .1.max(p.1));
+        }
         Ok(G75Plan {
             key: G75Plan::key_of(c),
             fast_path,
@@ -423,64 +453,65 @@ impl G75Plan {
             region: ev.quick.map(|q| q.r),
             stats: ev.stats,
             layers,
-            last: (last_first, last_last),
             first: (a11, a1f),
             y_top,
             plunges,
-            rough_pts,
-            finish_pts,
+            tail,
+            reach,
         })
+    }
+
+    /// The alarm that placing this plan for `c` (a cycle it
+    /// [fits](G75Plan::fits), or the one it was made for) raises, if any:
+    /// [`place`]'s, without making the moves. When the box of the points
+    /// it maps lies in the range, only the roughing's check (R-G75RANGE,
+    /// after A11's and before the tail's) can fail; else [`place`] decides.
+    fn check_placed(&self, c: &G75Cycle) -> Result<(), CycleError> {
+        let frame = Frame::new(c);
+        if frame.point(self.reach.0).is_ok() && frame.point(self.reach.1).is_ok() {
+            if c.path.roughs() {
+                check_roughing(c, &frame, self.y_top, self.first, &self.layers)?;
+            }
+            Ok(())
+        } else {
+            place(c, self).map(|_| ())
+        }
     }
 }
 
-/// The moves of a validated cycle `c` from its plan: the range checks in
-/// move order (R-G75RANGE) and the absolute moves.
-fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
-    let g = plan.geometry;
-    let frame = Frame::new(c);
-    let layers = plan.layers;
-    let rough_bottom = layers.rough_bottom;
-    let last_last = plan.last.1;
-    let (a11, a1f) = plan.first;
-    let y1 = layers.bottom(1);
-    let y_top = plan.y_top;
-    let roughs = c.path.roughs();
-    let plunges = plan.plunges;
-    let rough_pts = plan.rough_pts;
-    let finish_pts = plan.finish_pts;
-
-    // R-G75RANGE, in move order. Step 1: the approach to A11.
-    let a11_local = (a11, y_top);
-    let a11_abs = frame.point(a11_local)?;
-    if roughs {
-        check_roughing(c, &frame, y_top, (a11, a1f), &layers)?;
-    }
+/// The moves after the roughing in the local frame (steps 8–10), from
+/// where the roughing ends (or A11 when the cycle does not rough).
+#[allow(clippy::too_many_arguments)]
+fn tail_of(
+    frame: &Frame,
+    g: &Geometry,
+    layers: &Layers,
+    roughs: bool,
+    last_last: i128,
+    a11_local: Local,
+    rough_pts: Option<([contour::RoughLocal; 6], usize)>,
+    finish_pts: Option<([contour::ProfileLocal; 8], usize)>,
+) -> TailBuilder {
+    let y_top = a11_local.1;
     let w = i128::from(g.w);
     let top_last = if layers.count >= 2 { i128::from(layers.bottom(layers.count - 1)) } else { y_top };
-    let mut b = TailBuilder {
-        frame,
-        at: if roughs { (last_last, top_last) } else { a11_local },
-        legs: [Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return }; TAIL],
-        len: 0,
-        centres: [c.from; ARCS],
-        arcs: 0,
-    };
+    let mut b = TailBuilder::new(if roughs { (last_last, top_last) } else { a11_local });
     if let Some((v, n)) = rough_pts {
         // Step 8: back along X to y_top and along Z to A11.
-        b.rapid((b.at.0, y_top), TailRole::Approach)?;
-        b.rapid(a11_local, TailRole::Approach)?;
+        b.rapid((b.at.0, y_top), TailRole::Approach);
+        b.rapid(a11_local, TailRole::Approach);
         // Step 9: rapid to R0, feeds along the contour, rapid back to A11.
         let mut loops = crate::loop_counters::count!(G75_CONTOUR);
         for (i, p) in v.iter().take(n).enumerate() {
             loops.tick();
             let to = if p.far { (p.at.0 - w, p.at.1) } else { p.at };
             if i == 0 {
-                b.rapid(to, TailRole::RoughContour)?;
+                b.rapid(to, TailRole::RoughContour);
             } else {
-                b.feed(to, TailRole::RoughContour)?;
+                b.feed(to, TailRole::RoughContour);
             }
         }
-        b.rapid(a11_local, TailRole::RoughContour)?;
+        b.rapid(a11_local, TailRole::RoughContour);
     }
     if let Some((pts, n)) = finish_pts {
         // Step 10: along Z to F0's u at y_top, along X to F0, the contour.
@@ -496,32 +527,70 @@ fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
                         // above y_top only when the opening falls
                         // (R-G75SLOPE), where T1s is above S.
                         let y_in = y_top.min(to.1);
-                        b.rapid((b.at.0, y_in), TailRole::FinishContour)?;
-                        b.rapid((to.0, y_in), TailRole::FinishContour)?;
-                        b.rapid(to, TailRole::FinishContour)?;
+                        b.rapid((b.at.0, y_in), TailRole::FinishContour);
+                        b.rapid((to.0, y_in), TailRole::FinishContour);
+                        b.rapid(to, TailRole::FinishContour);
                     }
                 }
-                LocalSegment::Line => b.feed(to, TailRole::FinishContour)?,
+                LocalSegment::Line => b.feed(to, TailRole::FinishContour),
                 LocalSegment::Arc { centre, convex } => {
                     let cw = frame.clockwise(convex);
-                    b.go(to, Some((shift(centre, p.far), cw)), true, TailRole::FinishContour)?;
+                    b.go(to, Some((shift(centre, p.far), cw)), true, TailRole::FinishContour);
                 }
             }
         }
         // Back: along X to min(y_top, y_end), along Z to u = 0, along X to S.
         let end = b.at;
         let y_back = y_top.min(end.1);
-        b.rapid((end.0, y_back), TailRole::Return)?;
-        b.rapid((0, y_back), TailRole::Return)?;
-        b.rapid((0, 0), TailRole::Return)?;
+        b.rapid((end.0, y_back), TailRole::Return);
+        b.rapid((0, y_back), TailRole::Return);
+        b.rapid((0, 0), TailRole::Return);
+    }
+    b
+}
+
+/// The moves of a validated cycle `c` from its plan: the range checks in
+/// move order (R-G75RANGE) and the absolute moves.
+fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
+    let g = plan.geometry;
+    let frame = Frame::new(c);
+    let layers = plan.layers;
+    let rough_bottom = layers.rough_bottom;
+    let (a11, a1f) = plan.first;
+    let y1 = layers.bottom(1);
+    let y_top = plan.y_top;
+    let roughs = c.path.roughs();
+    let plunges = plan.plunges;
+
+    // R-G75RANGE, in move order. Step 1: the approach to A11.
+    let a11_local = (a11, y_top);
+    let a11_abs = frame.point(a11_local)?;
+    if roughs {
+        check_roughing(c, &frame, y_top, (a11, a1f), &layers)?;
+    }
+    // The tail: each leg's end, then its arc's centre.
+    let t = &plan.tail;
+    let mut legs = [Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return }; TAIL];
+    let mut centres = [c.from; ARCS];
+    let mut len = 0;
+    for (slot, l) in legs.iter_mut().zip(t.legs.iter().take(t.len)) {
+        let to = frame.point(l.to)?;
+        if let LegKind::Arc { centre, .. } = l.kind {
+            let i = usize::from(centre);
+            if let (Some(at), Some(&local)) = (centres.get_mut(i), t.centres.get(i)) {
+                *at = frame.point(local)?;
+            }
+        }
+        *slot = Leg { kind: l.kind, to, role: l.role };
+        len += 1;
     }
     // Step 10's end: back to the point before the cycle, in one move. The
-    // builder's position is local; `from` may lie anywhere in range.
-    let end_abs = frame.point(b.at)?;
+    // tail's end is local; `from` may lie anywhere in range.
+    let end_abs = frame.point(t.at)?;
     if end_abs != c.from {
-        if let Some(slot) = b.legs.get_mut(b.len) {
+        if let Some(slot) = legs.get_mut(len) {
             *slot = Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return };
-            b.len += 1;
+            len += 1;
         }
     }
 
@@ -559,9 +628,9 @@ fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
         roughs,
         rough,
         at: (saturate_i64(a11), saturate_i64(y_top)),
-        tail: b.legs,
-        tail_len: b.len,
-        centres: b.centres,
+        tail: legs,
+        tail_len: len,
+        centres,
         tail_next: 0,
         plunges,
     })
@@ -586,6 +655,24 @@ impl Iterator for G75Moves {
     type Item = Move;
 
     fn next(&mut self) -> Option<Move> {
+        // The roughing's moves (most of a groove's) first; the other
+        // stages out of line, so that the per-move path stays small
+        // (issue 33).
+        if self.stage == Stage::Rough {
+            if let Some(m) = self.next_rough() {
+                return Some(m);
+            }
+            self.stage = Stage::Tail;
+        }
+        self.next_other()
+    }
+}
+
+impl G75Moves {
+    /// [`Iterator::next`] in the stages other than the roughing: the
+    /// approach (then the roughing), the tail, the end.
+    #[inline(never)]
+    fn next_other(&mut self) -> Option<Move> {
         let mut loops = crate::loop_counters::count!(G75_NEXT);
         loop {
             loops.tick();

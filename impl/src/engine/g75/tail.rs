@@ -1,11 +1,10 @@
 //! The fixed tail of a G75.1 path: every move after the roughing (the
 //! return to A11, the rough contour, the finishing contour, the returns),
-//! computed and range-checked before the first move and kept in a
+//! built once per plan in the local frame ([`LocalLeg`]s), then placed for
+//! each groove: range-checked before the first move and kept in a
 //! fixed-size array of [`Leg`]s.
 
 use super::contour::Local;
-use super::frame::Frame;
-use crate::error::CycleError;
 use crate::moves::Role;
 use crate::units::Point;
 
@@ -59,80 +58,94 @@ pub(super) const ARCS: usize = 4;
 /// approach + 7 contour + 3 return + 1 to `from` = 21.
 pub(super) const TAIL: usize = 22;
 
-/// Builds the tail in move order from a known position, leaving out empty
-/// moves (R-G75ZERO) and range-checking every emitted coordinate (R-G75RANGE).
+/// One move of the tail in the local frame, as a [`super::G75Plan`] keeps
+/// it: the same for a groove wherever it is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct LocalLeg {
+    pub(super) kind: LegKind,
+    pub(super) to: Local,
+    pub(super) role: TailRole,
+}
+
+/// Builds the tail in move order from a known position, in the local frame,
+/// leaving out empty moves (R-G75ZERO, R-G75ARCZERO): the frame is a
+/// translation with signs, so a move is empty in the local frame exactly
+/// when it is in absolute coordinates. The range check (R-G75RANGE) is
+/// made when the legs are placed ([`super::place`]), leg by leg in this
+/// order, each end before its arc's centre.
+#[derive(Clone, Copy, Debug)]
 pub(super) struct TailBuilder {
-    pub(super) frame: Frame,
+    /// The position after the last leg (the position before the first
+    /// while there is none).
     pub(super) at: Local,
-    pub(super) legs: [Leg; TAIL],
+    pub(super) legs: [LocalLeg; TAIL],
     pub(super) len: usize,
     /// The centres of the arcs among `legs`, in order.
-    pub(super) centres: [Point; ARCS],
+    pub(super) centres: [Local; ARCS],
     /// How many of `centres` are set.
     pub(super) arcs: usize,
 }
 
 impl TailBuilder {
+    /// No leg yet, the tool at `at`.
+    pub(super) fn new(at: Local) -> TailBuilder {
+        TailBuilder {
+            at,
+            legs: [LocalLeg { kind: LegKind::Rapid, to: at, role: TailRole::Return }; TAIL],
+            len: 0,
+            centres: [at; ARCS],
+            arcs: 0,
+        }
+    }
+
     /// Appends a move to `to` unless it would not move (R-G75ZERO,
-    /// R-G75ARCZERO), range-checking its end and centre (R-G75RANGE).
+    /// R-G75ARCZERO): a line, or (`motion`) a round about its centre
+    /// turning clockwise or not.
     ///
     /// Twin: `spec/src/g75/path.rs`, `Path::go` (and `absolute`).
-    pub(super) fn go(
-        &mut self,
-        to: Local,
-        motion: Option<(Local, bool)>,
-        feed: bool,
-        role: TailRole,
-    ) -> Result<(), CycleError> {
+    pub(super) fn go(&mut self, to: Local, motion: Option<(Local, bool)>, feed: bool, role: TailRole) {
         match motion {
             None => self.line(to, if feed { LegKind::Feed } else { LegKind::Rapid }, role),
             Some((centre, clockwise)) => {
                 if to == self.at {
-                    return Ok(());
+                    return;
                 }
-                let p = self.frame.point(to)?;
-                let at = self.frame.point(centre)?;
                 let i = self.arcs;
                 if let Some(slot) = self.centres.get_mut(i) {
-                    *slot = at;
+                    *slot = centre;
                     self.arcs += 1;
                 }
                 // i < ARCS = 4.
                 let kind = LegKind::Arc { centre: u8::try_from(i).unwrap_or(u8::MAX), clockwise };
-                self.push(p, kind, role);
-                self.at = to;
-                Ok(())
+                self.push(to, kind, role);
             }
         }
     }
 
     /// [`TailBuilder::go`] for a straight move (`kind` a rapid or a feed):
-    /// its end range-checked, nothing appended when it would not move.
+    /// nothing appended when it would not move.
     #[inline]
-    fn line(&mut self, to: Local, kind: LegKind, role: TailRole) -> Result<(), CycleError> {
-        if to == self.at {
-            return Ok(());
+    fn line(&mut self, to: Local, kind: LegKind, role: TailRole) {
+        if to != self.at {
+            self.push(to, kind, role);
         }
-        let p = self.frame.point(to)?;
-        self.push(p, kind, role);
-        self.at = to;
-        Ok(())
     }
 
     /// Appends a leg (at most [`TAIL`], the longest tail).
     #[inline]
-    fn push(&mut self, to: Point, kind: LegKind, role: TailRole) {
+    fn push(&mut self, to: Local, kind: LegKind, role: TailRole) {
         if let Some(slot) = self.legs.get_mut(self.len) {
-            *slot = Leg { kind, to, role };
+            *slot = LocalLeg { kind, to, role };
             self.len += 1;
         }
+        self.at = to;
     }
 
-    pub(super) fn rapid(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
-        self.line(to, LegKind::Rapid, role)
+    pub(super) fn rapid(&mut self, to: Local, role: TailRole) {
+        self.line(to, LegKind::Rapid, role);
     }
 
-    pub(super) fn feed(&mut self, to: Local, role: TailRole) -> Result<(), CycleError> {
-        self.line(to, LegKind::Feed, role)
+    pub(super) fn feed(&mut self, to: Local, role: TailRole) {
+        self.line(to, LegKind::Feed, role);
     }
 }

@@ -1465,6 +1465,10 @@ fn planned_expansion_is_the_plain_one() {
             let want = outcome(expand_g75(&m));
             let got = outcome(expand_g75_planned(&m, &mut plan));
             assert_eq!(got, want, "{m:?}");
+            // The check alone, from the plan kept and from none.
+            let alarm = want.as_ref().err().cloned();
+            assert_eq!(check_g75_planned(&m, &mut plan).err(), alarm, "{m:?}");
+            assert_eq!(check_g75_planned(&m, &mut None).err(), alarm, "{m:?}");
             reused += usize::from(fits);
             refused += usize::from(want.is_err() && plan.is_none());
             out_of_range += usize::from(
