@@ -104,13 +104,10 @@ impl Position {
 
 const BOM: &[u8] = b"\xEF\xBB\xBF";
 
-/// The letters of [`Lexer::next_plain`]'s lines, by bit `letter - 'A'`.
-const PLAIN_LETTERS: u32 = block::letter_bit('G')
-    | block::letter_bit('F')
-    | block::letter_bit('X')
-    | block::letter_bit('Z')
-    | block::letter_bit('U')
-    | block::letter_bit('W');
+/// The letters of [`Lexer::next_plain`]'s lines, by bit `letter - 'A'`:
+/// every letter but M (a call or a return, which the reader's step reads
+/// with the calls; N and O the fast scanner gives up on anyway).
+const PLAIN_LETTERS: u32 = !block::letter_bit('M');
 
 impl<'a> Lexer<'a> {
     /// A lexer over the bytes of a program. A UTF-8 byte-order mark at the
@@ -391,8 +388,7 @@ impl<'a> Lexer<'a> {
     /// with the lexer where it was: the caller then reads the line as
     /// [`next_line`](Lexer::next_line) and [`segment`](Lexer::segment) do.
     ///
-    /// `PLAIN`: a word of another letter than G, F, X, Z, U and W gives up
-    /// too ([`next_plain`](Lexer::next_plain)).
+    /// `PLAIN`: an M word gives up too ([`next_plain`](Lexer::next_plain)).
     #[inline(always)]
     fn first_segment_fast<const PLAIN: bool>(
         &mut self,
@@ -422,14 +418,14 @@ impl<'a> Lexer<'a> {
         Some((Line { start, bytes: &rest[..len] }, seg))
     }
 
-    /// The next block when its line starts with the usual move's words
-    /// (G, F, X, Z, U and W, the reader's plain block), read as
+    /// The next block when it starts a line and has no M word (the
+    /// reader's usual block, a move, a G76 or G32 block), read as
     /// [`next_into`](Lexer::next_into) reads it (by the same
     /// [`first_segment_fast`](Lexer::first_segment_fast) and
     /// [`trailing_segments`](Lexer::trailing_segments)), into `block`
     /// (empty on entry): true when read so. False, with the lexer and
-    /// `block` to be dropped, for any other (a word of another letter
-    /// gives up where it is read; so does all that
+    /// `block` to be dropped, for any other (an M word gives up where it
+    /// is read; so does all that
     /// [`segment_fast`](Lexer::segment_fast) gives up on, a blank line,
     /// an error and the end of the text): the caller then reads the block
     /// from where it was by `next_into` (issue 33: the line-fed reader's

@@ -589,6 +589,9 @@ pub(super) mod tests {
         pub(in crate::reader) static GENERAL_ONLY: Cell<bool> = const { Cell::new(false) };
         /// How many blocks `LineReader::step_plain` has read.
         pub(in crate::reader) static PLAIN_STEPS: Cell<usize> = const { Cell::new(0) };
+        /// How many blocks `LineReader::step_plain` has read and left to
+        /// `LineReader::item_of`.
+        pub(in crate::reader) static LEXED_STEPS: Cell<usize> = const { Cell::new(0) };
     }
 
     /// Every step of reading `program` with `profile`: the item or the
@@ -660,6 +663,29 @@ pub(super) mod tests {
         .prop_map(str::to_string)
     }
 
+    /// G76 and G32 lines, well formed or not, that the fast step reads and
+    /// leaves to `LineReader::item_of`: block 1 and block 2 words, each
+    /// perhaps twice, missing or in lower case, with numbers out of range,
+    /// with a point or a sign where none belongs, comments between words,
+    /// a space after a letter, an M word (which the general step reads).
+    fn thread_line() -> impl Strategy<Value = String> {
+        let word = prop_oneof![
+            3 => "[PQR]-?[0-9]{1,7}(\\.[0-9]{0,3})?",
+            3 => "[XZUW]-?[0-9]{1,3}(\\.[0-9]{0,3})?",
+            2 => "F(0\\.[0-9]{1,4}|[0-9]{1,2}|0)",
+            1 => "[DLEJKIST][0-9]{1,3}",
+            1 => "(p|q|r|x|z|f)[0-9]{1,4}",
+            1 => "\\(c\\)|P 1|M0[35]|Q|R\\.|G32|G76",
+        ];
+        let head = prop_oneof![4 => Just("G76"), 1 => Just("G32"), 1 => Just("g76"), 1 => Just("G78"), 1 => Just("")];
+        (
+            head,
+            proptest::collection::vec(word, 0..7),
+            prop_oneof![Just(" "), Just(""), Just("  "), Just("\t")],
+        )
+            .prop_map(|(h, w, sep)| format!("{h}{sep}{}", w.join(sep)))
+    }
+
     /// Lines of a program: the usual moves (every letter of the fast
     /// reading, in any order, twice, with other G codes, values out of
     /// range or finer than the increment, leads out of the table,
@@ -698,7 +724,7 @@ pub(super) mod tests {
         #[test]
         fn plain_steps_are_the_general_ones(
             lines in proptest::collection::vec(
-                (prop_oneof![4 => line(), 1 => other_line()], ending()),
+                (prop_oneof![4 => line(), 2 => thread_line(), 1 => other_line()], ending()),
                 0..16,
             ),
             p in 0_usize..3,
@@ -730,6 +756,19 @@ pub(super) mod tests {
         // `U-2`, `G01 Z-9`); not `X24` after it on line 7, nor line 9,
         // `X30`, read with the blank line before it.
         assert_eq!(PLAIN_STEPS.with(Cell::get), 5);
+        assert_eq!(fast, read(program, ProfileName::Gsk980, true));
+    }
+
+    /// A G76 line, a G32 line and an S word are read by `step_plain` and
+    /// given to `item_of` (not read again by the general step); an M word
+    /// is not.
+    #[test]
+    fn plain_step_reads_the_thread_lines() {
+        let program = "G00 X80 Z10\nM03 S500\nG76 P020560 Q150 R0.1;\nG76 X60.64 Z-40 P3680 Q1800 F6;\nS600\nG32 W-5 F1\nM05\n";
+        LEXED_STEPS.with(|n| n.set(0));
+        let fast = read(program, ProfileName::Gsk980, false);
+        // Lines 3 to 6: both G76 blocks, S600 and the G32 block.
+        assert_eq!(LEXED_STEPS.with(Cell::get), 4);
         assert_eq!(fast, read(program, ProfileName::Gsk980, true));
     }
 
