@@ -223,6 +223,29 @@ macro_rules! registry {
             /// engine's own `next` inlined into it, no match and no copy
             /// of the move through an `Option` per move; issue 33).
             ///
+            /// ```
+            /// use cycleref_spec::pipeline::{expand, Cycle, Engine};
+            /// use cycleref_spec::{read, Machine, ProfileName};
+            ///
+            /// let text = "M03 S500\nG00 X80 Z10\nG76 P020560 Q0.1 R0.05\nG76 X60.64 Z-62 P3.68 Q1.8 F6\n";
+            /// let program = read(text, &Machine::new(ProfileName::Gsk988))?;
+            /// let cycle = program.items.iter().find_map(Cycle::of).expect("a cycle");
+            /// let mut taken = Vec::new();
+            /// expand(cycle, Engine::Impl)?.try_for_each_move(|m| {
+            ///     taken.push(m);
+            ///     Ok::<(), ()>(())
+            /// }).expect("no error");
+            /// assert_eq!(taken, expand(cycle, Engine::Impl)?.collect::<Vec<_>>());
+            /// // The first error stops the walk.
+            /// let mut seen = 0;
+            /// let stopped = expand(cycle, Engine::Impl)?.try_for_each_move(|_| {
+            ///     seen += 1;
+            ///     if seen == 3 { Err("stop") } else { Ok(()) }
+            /// });
+            /// assert_eq!((stopped, seen), (Err("stop"), 3));
+            /// # Ok::<(), Box<dyn std::error::Error>>(())
+            /// ```
+            ///
             /// # Errors
             ///
             /// The first error `f` returns.

@@ -28,6 +28,15 @@ fn pair_before(buf: &mut [u8], i: usize, d: u64) -> usize {
 /// The length of the text [`put_fixed`] writes: the sign, the digits of
 /// `mag` (at least `decimals + 1` of them: a zero before the point) and
 /// the point when `decimals > 0`. `decimals` is at most 40.
+///
+/// ```
+/// use cycleref_spec::text::fixed_len;
+///
+/// // `-22.868`: a sign, five digits and the point.
+/// assert_eq!(fixed_len(true, 22_868, 3), 7);
+/// // `0.005`: a zero before the point, then three decimals.
+/// assert_eq!(fixed_len(false, 5, 3), 5);
+/// ```
 #[inline]
 #[must_use]
 pub fn fixed_len(negative: bool, mag: u64, decimals: u32) -> usize {
@@ -105,6 +114,20 @@ fn digits8(n: u32) -> u64 {
 ///
 /// When `out` is shorter than 16 bytes or than the text (the callers keep
 /// [`FIXED_BUF`] bytes of room).
+///
+/// ```
+/// use cycleref_spec::text::{put_fixed, FIXED_BUF};
+///
+/// let mut out = [0_u8; FIXED_BUF];
+/// // X-22.868 of a G32 move (IS-B, three decimals).
+/// let len = put_fixed(&mut out, true, 22_868, 3);
+/// assert_eq!(&out[..len], b"-22.868");
+/// let len = put_fixed(&mut out, false, 5, 3);
+/// assert_eq!(&out[..len], b"0.005");
+/// // Beyond 10^8 or 7 decimals, the digit pairs.
+/// let len = put_fixed(&mut out, false, 123_456_789_012, 4);
+/// assert_eq!(&out[..len], b"12345678.9012");
+/// ```
 #[inline]
 pub fn put_fixed(out: &mut [u8], negative: bool, mag: u64, decimals: u32) -> usize {
     if mag >= 100_000_000 || decimals > 7 {
@@ -149,6 +172,14 @@ fn put_fixed_long(out: &mut [u8], negative: bool, mag: u64, decimals: u32) -> us
 /// # Panics
 ///
 /// When `out` is shorter than 21 bytes.
+///
+/// ```
+/// use cycleref_spec::text::put_integer;
+///
+/// let mut out = [0_u8; 32];
+/// let len = put_integer(&mut out, 18_862);
+/// assert_eq!(&out[..len], b"18862");
+/// ```
 #[inline]
 pub fn put_integer(out: &mut [u8], v: u64) -> usize {
     put_fixed(out, false, v, 0)
@@ -156,6 +187,14 @@ pub fn put_integer(out: &mut [u8], v: u64) -> usize {
 
 /// `mag / 10^decimals` as text, with a leading `-` when `negative`, written
 /// at the end of `buf`; the text is returned. `decimals` is at most 40.
+///
+/// ```
+/// use cycleref_spec::text::{encode_fixed, FIXED_BUF};
+///
+/// let mut buf = [0_u8; FIXED_BUF];
+/// // Q1800 of a G76 block 2 at IS-B: Δd = 1.800.
+/// assert_eq!(encode_fixed(&mut buf, false, 1_800, 3), b"1.800");
+/// ```
 pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mag: u64, decimals: u32) -> &[u8] {
     let start = FIXED_BUF - fixed_len(negative, mag, decimals);
     fill_fixed(&mut buf[start..], negative, mag, decimals);
@@ -166,6 +205,24 @@ pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mag: u64, decimal
 /// allocation: the `nc` headings ([`Heading::text`](crate::cycles::Heading::text)).
 /// What does not fit in its `N` bytes is left out (its writers keep their
 /// texts shorter).
+///
+/// ```
+/// use cycleref_spec::text::TextBuf;
+///
+/// let mut t = TextBuf::<64>::default();
+/// t.put(b"G75.1 lines ");
+/// t.integer(3);
+/// t.put(b"-");
+/// t.integer(4);
+/// t.put(b": tool width I");
+/// t.fixed(false, 3_000, 3);
+/// assert_eq!(t.as_str(), Some("G75.1 lines 3-4: tool width I3.000"));
+/// // What does not fit is left out.
+/// let mut short = TextBuf::<4>::default();
+/// short.put(b"G76");
+/// short.put(b" P1");
+/// assert_eq!(short.as_bytes(), b"G76");
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct TextBuf<const N: usize> {
     buf: [u8; N],

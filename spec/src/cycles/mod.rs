@@ -261,6 +261,22 @@ pub(crate) fn count(v: usize) -> u64 {
 impl Heading {
     /// The heading's text, built without `core::fmt` (issue 33: a heading
     /// a cycle, where `write!` cost more than the cycle's short moves).
+    ///
+    /// ```
+    /// use cycleref::PathType;
+    /// use cycleref_spec::cycles::{GrooveHeading, Heading};
+    ///
+    /// let groove = GrooveHeading {
+    ///     params_line: 3,
+    ///     line: 4,
+    ///     path: PathType::RoughAndFinish,
+    ///     layers: 2,
+    ///     plunges: 9,
+    ///     tool_width: None,
+    /// };
+    /// let text = Heading::Groove(groove).text();
+    /// assert_eq!(text.as_str(), Some("G75.1 lines 3-4: J1 rough + finish, 2 layers, 9 plunges, tool pointed"));
+    /// ```
     #[must_use]
     pub fn text(&self) -> TextBuf<HEADING_BUF> {
         let mut t = TextBuf::default();

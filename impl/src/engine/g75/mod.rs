@@ -318,6 +318,26 @@ pub fn expand_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<G7
 /// `expand_g75_planned(c, plan).map(drop)` (the test
 /// `planned_expansion_is_the_plain_one` compares them).
 ///
+/// ```
+/// use cycleref::engine::g75::check_g75_planned;
+/// use cycleref::examples::G75_SEED;
+/// use cycleref::units::MAX_LENGTH;
+/// use cycleref::{expand_g75, CycleError};
+///
+/// let mut plan = None;
+/// assert_eq!(check_g75_planned(&G75_SEED, &mut plan), Ok(()));
+/// // The same groove moved to the edge of the range: its width, towards
+/// // −Z, leaves it, and the check names the same coordinate as the
+/// // expansion.
+/// let mut far = G75_SEED;
+/// let dz = -MAX_LENGTH + 10 - far.start.z;
+/// far.start.z += dz;
+/// far.from.z += dz;
+/// let alarm = expand_g75(&far).err();
+/// assert!(matches!(alarm, Some(CycleError::OutOfRange { .. })));
+/// assert_eq!(check_g75_planned(&far, &mut plan).err(), alarm);
+/// ```
+///
 /// # Errors
 ///
 /// Those of [`expand_g75`], in its order.
