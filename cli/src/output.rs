@@ -430,7 +430,9 @@ impl NcText {
             }
         };
         l.buf[l.at..l.at + 32].copy_from_slice(text);
-        l.at += *len;
+        // At most 32 (the `min` only tells the compiler so: the line's
+        // later writes then need no bounds check).
+        l.at += (*len).min(32);
     }
 }
 
@@ -442,7 +444,11 @@ impl Recent {
         // A text longer than 32 bytes is never kept (decimals above 9;
         // the increment systems have at most 5).
         if decimals > 9 {
-            return l.fixed(v, decimals);
+            // At most FIXED_BUF bytes (the `min` bounds `at` for the
+            // compiler, as below).
+            let n = put_fixed(&mut l.buf[l.at..], v < 0, v.unsigned_abs(), decimals);
+            l.at += n.min(FIXED_BUF);
+            return;
         }
         // Fibonacci hashing: the top bits of the product spread values
         // that differ in their low digits over the places.
@@ -456,7 +462,9 @@ impl Recent {
             self.keys[slot] = Some((v, decimals));
         }
         l.buf[l.at..l.at + 32].copy_from_slice(&self.texts[slot]);
-        l.at += self.lens[slot];
+        // At most 30: the `min` only tells the compiler that `at` stays
+        // small, so that the line's later writes need no bounds check.
+        l.at += self.lens[slot].min(32);
     }
 }
 
@@ -482,14 +490,15 @@ const _: () = assert!(HEADING_BUF + 3 <= LINE_ROOM);
 struct NcOut<W: Write> {
     inner: W,
     /// [`NC_CAPACITY`] bytes and the room of one line more.
-    buf: Box<[u8]>,
+    buf: Box<[u8; NC_CAPACITY + LINE_ROOM]>,
     /// The bytes of `buf` written.
     len: usize,
 }
 
 impl<W: Write> NcOut<W> {
     fn new(inner: W) -> NcOut<W> {
-        NcOut { inner, buf: vec![0; NC_CAPACITY + LINE_ROOM].into_boxed_slice(), len: 0 }
+        let buf = vec![0; NC_CAPACITY + LINE_ROOM].into_boxed_slice().try_into();
+        NcOut { inner, buf: buf.unwrap_or_else(|_| unreachable!("the length is the array's")), len: 0 }
     }
 
     /// Hands the bytes written to the output.
@@ -501,13 +510,19 @@ impl<W: Write> NcOut<W> {
     /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place.
     #[inline]
     fn line(&mut self, f: impl FnOnce(&mut Line<'_>)) -> io::Result<()> {
-        if self.len > NC_CAPACITY {
+        let mut start = self.len;
+        if start > NC_CAPACITY {
             self.flush_buf()?;
+            start = 0;
         }
-        // At least LINE_ROOM bytes of room from `len` on.
-        let mut line = Line { buf: &mut self.buf[..], at: self.len };
+        // LINE_ROOM bytes of room from `start` on (`start` at most
+        // NC_CAPACITY: no bounds check), the line's offsets from 0, so
+        // that a move's writes, of bounded lengths, need no check either.
+        let window = &mut self.buf[start..start + LINE_ROOM];
+        let Ok(buf) = <&mut [u8; LINE_ROOM]>::try_from(window) else { unreachable!("LINE_ROOM bytes") };
+        let mut line = Line { buf, at: 0 };
         f(&mut line);
-        self.len = line.at;
+        self.len = start + line.at;
         Ok(())
     }
 
@@ -561,7 +576,7 @@ impl<W: Write> Drop for NcOut<W> {
 
 /// One line being written into [`NcOut`]'s buffer, from `at` on.
 struct Line<'b> {
-    buf: &'b mut [u8],
+    buf: &'b mut [u8; LINE_ROOM],
     at: usize,
 }
 
