@@ -28,7 +28,9 @@
 //! this binary as a child (`pipeline --floor SHAPE`, `floor::write_floor`),
 //! writing as many moves of the same shape as the nc expansion holds to
 //! `/dev/null`, no program read; it prints `expand nc / floor` and `check /
-//! expand nc`.
+//! expand nc`. The sides of each ratio run in one alternation (each
+//! repetition runs `expand nc`, `check`, then the floor), so that a change of
+//! the machine's load during the run falls on both sides alike.
 //!
 //! Then, unless `--peer-cycles 0`, the **peer benchmark** (issue 33): a
 //! LinuxCNC program of `--peer-cycles` G76 cycles
@@ -177,27 +179,41 @@ fn run(args: &Args) -> Result<(), String> {
         );
         let mut cells = vec![vec![Cell::default(); COMMANDS.len()]; builds.len()];
         let mut floor_cell = Cell::default();
-        for (c, (name, template)) in COMMANDS.iter().enumerate() {
-            let a = command_args(template, &files);
+        for c in 0..COMMANDS.len() {
+            // The two sides of a ratio run in one alternation, so that a
+            // change of the machine's load between them cannot make the
+            // ratio: `check` runs beside `expand nc` (and the floor), not
+            // in a loop of its own.
+            let group: &[usize] = if c == check_index {
+                continue;
+            } else if c == nc_index {
+                &[nc_index, check_index]
+            } else {
+                &[c]
+            };
             for rep in 0..args.reps {
-                for (b, (build, bin)) in builds.iter().enumerate() {
-                    let cell = &mut cells[b][c];
-                    if !support[b][c] {
-                        cell.status = Some("unsupported".into());
-                        continue;
-                    }
-                    if gave_up[b][c] && cell.status.is_none() {
-                        cell.status = Some("skipped (DNF on a smaller program)".into());
-                    }
-                    if cell.status.is_some() {
-                        continue;
-                    }
-                    let limits = Some((args.timeout, args.mem_limit_mb));
-                    let err = args.dir.join(format!("{build}.err"));
-                    eprintln!("  {mb} MB {build} {name} #{}", rep + 1);
-                    run_one(bin, &a, &err, limits, cell)?;
-                    if cell.status.is_some() {
-                        gave_up[b][c] = true;
+                for &g in group {
+                    let (name, template) = COMMANDS[g];
+                    let a = command_args(template, &files);
+                    for (b, (build, bin)) in builds.iter().enumerate() {
+                        let cell = &mut cells[b][g];
+                        if !support[b][g] {
+                            cell.status = Some("unsupported".into());
+                            continue;
+                        }
+                        if gave_up[b][g] && cell.status.is_none() {
+                            cell.status = Some("skipped (DNF on a smaller program)".into());
+                        }
+                        if cell.status.is_some() {
+                            continue;
+                        }
+                        let limits = Some((args.timeout, args.mem_limit_mb));
+                        let err = args.dir.join(format!("{build}.err"));
+                        eprintln!("  {mb} MB {build} {name} #{}", rep + 1);
+                        run_one(bin, &a, &err, limits, cell)?;
+                        if cell.status.is_some() {
+                            gave_up[b][g] = true;
+                        }
                     }
                 }
                 // The floor beside `expand nc`, in the same alternation.
