@@ -137,6 +137,11 @@ fn nc_aux<W: Write>(
     after: bool,
     x_mode_words: bool,
 ) -> io::Result<()> {
+    // The usual cycle block has none of them: decided by the block's
+    // letters, without a look at its words (issue 33).
+    if !(block.has('M') || block.has('S') || block.has('T') || x_mode_words && !after && block.has('G')) {
+        return Ok(());
+    }
     let mut first = true;
     let x_mode = |w: &&cycleref_spec::lex::Word<'_>| {
         x_mode_words && !after && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
@@ -209,6 +214,24 @@ fn nc_cycle<W: Write>(
     }
     let x_factor = cycle.x_mode().factor();
     let (mut pass, mut plunge, mut contour) = (None, None, None);
+    if style.words == MoveWords::Fanuc && !style.plunges && !style.contours {
+        // G76, G78, G92, G32: a pass comment and the move, the style's
+        // other questions answered once for the cycle rather than at
+        // every move (issue 33: they were a fifth of the loop).
+        moves.try_for_each_move(|m| {
+            if let Some(p) = m.pass {
+                // The comment only where the pass changes (most moves are
+                // of the pass before): decided here, without a call.
+                let key = pass_key(style.passes, p);
+                if key.is_some() && pass != key {
+                    pass = key;
+                    nc_pass_line(out, style.passes, p, u)?;
+                }
+            }
+            nc_move(out, t, &m, u, q)
+        })?;
+        return restore(out, cycle.restore());
+    }
     let mut at = cycle.from();
     moves.try_for_each_move(|m| {
         if let Some(p) = m.pass {
@@ -263,16 +286,35 @@ fn nc_pass_comment<W: Write>(
     last: &mut Option<(PassKind, u32, u16)>,
     u: Units,
 ) -> io::Result<()> {
-    let key = match style {
-        PassComment::None => return Ok(()),
-        PassComment::Full => (p.kind, p.number, p.start),
-        PassComment::Numbered => (p.kind, p.number, 0),
-        PassComment::Starts => (PassKind::Rough, 0, p.start),
+    let Some(key) = pass_key(style, p) else {
+        return Ok(());
     };
     if *last == Some(key) {
         return Ok(());
     }
     *last = Some(key);
+    nc_pass_line(out, style, p, u)
+}
+
+/// What tells the passes of `style` apart (a comment where it changes), or
+/// `None` when `style` writes none.
+#[inline(always)]
+fn pass_key(style: PassComment, p: cycleref::Pass) -> Option<(PassKind, u32, u16)> {
+    match style {
+        PassComment::None => None,
+        PassComment::Full => Some((p.kind, p.number, p.start)),
+        PassComment::Numbered => Some((p.kind, p.number, 0)),
+        PassComment::Starts => Some((PassKind::Rough, 0, p.start)),
+    }
+}
+
+/// The comment of pass `p` in `style` ([`nc_pass_comment`]).
+fn nc_pass_line<W: Write>(
+    out: &mut NcOut<W>,
+    style: PassComment,
+    p: cycleref::Pass,
+    u: Units,
+) -> io::Result<()> {
     let d = u.decimals();
     out.line(|l| match style {
         PassComment::None => {}

@@ -515,9 +515,11 @@ impl Validation {
         if let Some(cycle) = Cycle::of(item) {
             self.cycles[cycle.index()] += 1;
             // Every alarm is raised before the first move: the moves are
-            // not taken (a G75.1 by the engine is only checked, issue 33).
+            // not taken (a G75.1, G76 or G78 by the engine is only
+            // checked, issue 33).
             match (cycle, self.engine) {
                 (Cycle::G75(c), Engine::Impl) => c.check_engine().map_err(|error| at(cycle, error))?,
+                (Cycle::G76(c), Engine::Impl) => c.check_engine().map_err(|error| at(cycle, error))?,
                 _ => drop(expand_at(cycle, self.engine)?),
             }
             if self.lead_off_g32_axis.is_none() && cycle.lead_off_g32_axis() {

@@ -255,6 +255,13 @@ impl<const N: usize> TextBuf<N> {
     /// ([`put_fixed`]).
     #[inline]
     pub fn fixed(&mut self, negative: bool, mag: u64, decimals: u32) {
+        // Straight into the buffer where it has room for any number (the
+        // bytes after the text are not the text; issue 33: a number made
+        // aside and copied was most of a heading).
+        if let Some(to) = self.buf.get_mut(self.len..self.len + FIXED_BUF) {
+            self.len += put_fixed(to, negative, mag, decimals);
+            return;
+        }
         let mut text = [0; FIXED_BUF];
         let len = put_fixed(&mut text, negative, mag, decimals);
         self.put(&text[..len]);

@@ -530,6 +530,78 @@ fn schedule_of(c: &G76Cycle) -> Schedule {
 /// Twin: `spec/src/g76.rs`, `expand` (and `geometry` for the checks).
 pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
     let c = cycle;
+    let Planned { frame, centre, mirror, rough_passes, start_major } = plan(c)?;
+    // Made in place as the result (a value built first and then moved
+    // into it was copied whole, 840 bytes, once per cycle), with no pass
+    // loaded yet: the first call of `next` finds the walk empty and
+    // `advance` plans the first pass, at start 1 (`start` is the last
+    // start under `pass-major`, so that `advance` moves on to the next
+    // pass rather than to another start of none; the first under
+    // `start-major`).
+    Ok(G76Moves {
+        frame,
+        schedule: schedule_of(c),
+        tool_angle: c.tool_angle,
+        infeed: c.infeed,
+        centre,
+        mirror,
+        first: if c.readings.left_first { Flank::Left } else { Flank::Right },
+        finish: 0,
+        allowance: c.finishing_allowance,
+        finishing_passes: c.finishing_passes,
+        stage: Stage::Rough { second_pending: false },
+        previous: 0,
+        number: 0,
+        // Start 0's angle, 0° (`StartSpacing::angle`), in the first bank.
+        walk: Walk::idle(c.lead, 0, frame.spacing.angle(0)),
+        start: if start_major.is_some() { 0 } else { c.starts.saturating_sub(1) },
+        rough_passes,
+        start_major,
+    })
+}
+
+/// Checks a G76 cycle as [`expand_g76`] checks it, without making its
+/// iterator: `Ok` exactly when `expand_g76` gives the moves, else the
+/// same alarm (one home for the checks, the private `plan`). The first
+/// phase of a run checks every cycle before the second writes its moves
+/// (issue 33: the iterator made, moved and dropped was about a third of
+/// the first phase's work on a G76).
+///
+/// # Errors
+///
+/// As [`expand_g76`].
+///
+/// ```
+/// use cycleref::engine::{check_g76, expand_g76};
+/// use cycleref::examples::M68X6;
+///
+/// assert_eq!(check_g76(&M68X6), Ok(()));
+/// let mut inside = M68X6;
+/// // A at X66: inside the thread (the root at X60.64, the crest at X68 on
+/// // diameter: 60.64 + 2 × 3.68), an alarm by both.
+/// inside.start.x = 66_000;
+/// assert_eq!(check_g76(&inside).err(), expand_g76(&inside).err());
+/// assert_eq!(check_g76(&inside), Err(cycleref::CycleError::StartInsideThread));
+/// ```
+pub fn check_g76(cycle: &G76Cycle) -> Result<(), CycleError> {
+    plan(cycle).map(drop)
+}
+
+/// What [`plan`] found of a cycle that passed every check: the parts of
+/// [`G76Moves`] that the checks compute.
+struct Planned {
+    frame: Frame,
+    centre: i64,
+    mirror: i64,
+    rough_passes: u64,
+    start_major: Option<bool>,
+}
+
+/// Every check of [`expand_g76`], in its order, and the frame of the
+/// cycle that passes them.
+#[inline(always)]
+fn plan(cycle: &G76Cycle) -> Result<Planned, CycleError> {
+    let c = cycle;
     c.validate()?;
     let u = c.units;
     let len = |v: i64| Length::new(v, u);
@@ -692,33 +764,7 @@ pub fn expand_g76(cycle: &G76Cycle) -> Result<G76Moves, CycleError> {
         },
     };
     let start_major = c.readings.start_major.then_some(c.depth_mode == DepthMode::Equal);
-    // Made in place as the result (a value built first and then moved
-    // into it was copied whole, 840 bytes, once per cycle), with no pass
-    // loaded yet: the first call of `next` finds the walk empty and
-    // `advance` plans the first pass, at start 1 (`start` is the last
-    // start under `pass-major`, so that `advance` moves on to the next
-    // pass rather than to another start of none; the first under
-    // `start-major`).
-    Ok(G76Moves {
-        frame,
-        schedule: schedule_of(c),
-        tool_angle: c.tool_angle,
-        infeed: c.infeed,
-        centre,
-        mirror,
-        first: if c.readings.left_first { Flank::Left } else { Flank::Right },
-        finish: 0,
-        allowance: c.finishing_allowance,
-        finishing_passes: c.finishing_passes,
-        stage: Stage::Rough { second_pending: false },
-        previous: 0,
-        number: 0,
-        // Start 0's angle, 0° (`StartSpacing::angle`), in the first bank.
-        walk: Walk::idle(c.lead, 0, frame.spacing.angle(0)),
-        start: if start_major.is_some() { 0 } else { c.starts.saturating_sub(1) },
-        rough_passes,
-        start_major,
-    })
+    Ok(Planned { frame, centre, mirror, rough_passes, start_major })
 }
 
 impl G76Moves {

@@ -64,4 +64,4 @@ pub mod schedule;
 pub use arith::{isqrt_floor, round_sqrt, round_sqrt_near};
 #[cfg(feature = "loop-counters")]
 pub use arith::{record_isqrt, record_isqrt_near};
-pub use g76::{expand_g76, rough_pass_count, G76Moves};
+pub use g76::{check_g76, expand_g76, rough_pass_count, G76Moves};

@@ -55,6 +55,20 @@ impl fmt::Display for MultipassHeading {
     }
 }
 
+impl G76Call<'_> {
+    /// The fixed-point engine's alarm for this cycle, if any, without its
+    /// moves: what [`CycleCall::engine`] raises
+    /// ([`cycleref::engine::check_g76`]; the first phase of a run only
+    /// checks, issue 33).
+    ///
+    /// # Errors
+    ///
+    /// The cycle's alarm.
+    pub(crate) fn check_engine(&self) -> Result<(), CycleError> {
+        cycleref::engine::check_g76(&self.cycle)
+    }
+}
+
 impl<'a> CycleCall<'a> for G76Call<'a> {
     type EngineMoves = G76Moves;
 

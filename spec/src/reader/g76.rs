@@ -133,9 +133,14 @@ impl State<'_> {
                 ErrorKind::DecimalPointNotAllowed { rule: "P(m)(r)(a) is a string of digits" },
             ));
         }
-        let digits = p.number().int_digits();
+        // ASCII digits (the lexer's): their value read as they are, at
+        // most 6 of them where it is read (issue 33: a `str` made of them
+        // and parsed was a third of the split).
+        let digits = p.number().int_bytes();
         let n = digits.len();
-        let part = |from: usize, to: usize| -> u32 { digits[from..to].parse().unwrap_or(0) };
+        let part = |from: usize, to: usize| -> u32 {
+            digits[from..to].iter().fold(0, |v: u32, &b| v.wrapping_mul(10).wrapping_add(u32::from(b - b'0')))
+        };
         let whole = self.machine.profile.p_split == PSplit::WholeOnly;
         if whole && n < 5 {
             return Err(err(block, Some(p), ErrorKind::PartialP));

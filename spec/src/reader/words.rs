@@ -85,7 +85,9 @@ pub(super) fn to_increments(
 /// read: a word the lexer kept the offsets of, whose value is read in
 /// increments (a decimal point, or a profile whose bare values are
 /// lengths), with no more decimals than the increment, at most 18
-/// digits once scaled, within range. `None` for any other (which
+/// digits once scaled, within range; or a bare whole number of at most 18
+/// digits where bare values are increments, within range (its digits, as
+/// [`increments_slow`] reads it). `None` for any other (which
 /// [`increments_usual`] reads); where this gives a value, that gives the
 /// same ([`crate::lex::Number::scaled`]'s digits times 10^(decimals − their
 /// decimals); issue 33: a call and a `Result` through memory per axis
@@ -93,10 +95,27 @@ pub(super) fn to_increments(
 #[inline(always)]
 fn increments_short(units: Units, w: &Word<'_>, bare_increments: bool) -> Option<i64> {
     let (negative, int, frac) = w.parts()?;
-    if bare_increments && frac.is_none() {
-        return None;
-    }
-    let frac = frac.unwrap_or_default();
+    let Some(frac) = frac else {
+        // A bare whole number: in increments as it is where bare values
+        // are increments (`increments_slow`'s `integer`), else scaled
+        // below. At most 18 digits: no overflow (issue 33: G76's P(k),
+        // Q(Δd) and Q(Δdmin) went the long way).
+        if bare_increments {
+            if int.len() > 18 {
+                return None;
+            }
+            let v = digits_value(int, &[]);
+            return (v <= MAX_LENGTH).then_some(if negative { -v } else { v });
+        }
+        return increments_scaled(units, negative, int, &[]);
+    };
+    increments_scaled(units, negative, int, frac)
+}
+
+/// [`increments_short`] of the digits `int` `.` `frac` scaled to the
+/// increment.
+#[inline(always)]
+fn increments_scaled(units: Units, negative: bool, int: &[u8], frac: &[u8]) -> Option<i64> {
     let d = units.decimals() as usize;
     if int.len() + d > 18 || frac.len() > d {
         return None;
@@ -478,5 +497,12 @@ mod tests {
         // F6: 6 mm, mantissa 6, no decimals; F0.150: 0.15 mm.
         assert_eq!(state.lead_short(w(2)).map(|l| (l.mantissa, l.scale)), Some((6, 0)));
         assert_eq!(state.lead_short(w(3)).map(|l| (l.mantissa, l.scale)), Some((15, 2)));
+        // Bare whole numbers where bare values are increments: G76's
+        // P3680 is 3 680 increments (3.68 mm at IS-B), Q-0150 is -150;
+        // where they are lengths, P3680 is 3 680 mm.
+        let block = Lexer::new(b"P3680 Q-0150").next().and_then(Result::ok).unwrap_or_else(|| unreachable!());
+        assert_eq!(increments_short(Units::IS_B_METRIC, &block.words[0], true), Some(3680));
+        assert_eq!(increments_short(Units::IS_B_METRIC, &block.words[1], true), Some(-150));
+        assert_eq!(increments_short(Units::IS_B_METRIC, &block.words[0], false), Some(3_680_000));
     }
 }
