@@ -89,33 +89,36 @@ impl<E, I: Iterator<Item = Result<(Step, u32), E>>> Grouper<I> {
             None => (self.empty(), None, None),
         };
         loop {
-            let (s, seg) = match self.steps.next() {
+            // The step is looked at where the source returned it, and
+            // copied once, into its group.
+            let next = self.steps.next();
+            let (s, seg) = match &next {
                 None if g.len() == 0 => return None,
                 None => break,
-                Some(Err(e)) => return Some(Err(e)),
-                Some(Ok(v)) => v,
+                Some(Err(_)) => return next.and_then(Result::err).map(Err),
+                Some(Ok((s, seg))) => (s, *seg),
             };
             self.count += 1;
             let full = g.cuts.len() >= GROUP_MOVES || g.rapids.len() >= GROUP_MOVES;
             if g.len() > 0 && ((s.kind == Kind::Rapid && !g.cuts.is_empty()) || full) {
                 // The step begins the next group.
-                let mut next = self.empty();
+                let mut begun = self.empty();
                 let owners = if s.kind == Kind::Rapid {
-                    next.rapids.push(s);
+                    begun.rapids.push(*s);
                     (Some(seg), None)
                 } else {
-                    next.cuts.push(s);
+                    begun.cuts.push(*s);
                     (None, Some(seg))
                 };
-                self.next = Some((next, owners.0, owners.1));
+                self.next = Some((begun, owners.0, owners.1));
                 break;
             }
             if s.kind == Kind::Rapid {
                 rapid_owner.get_or_insert(seg);
-                g.rapids.push(s);
+                g.rapids.push(*s);
             } else {
                 cut_owner.get_or_insert(seg);
-                g.cuts.push(s);
+                g.cuts.push(*s);
             }
         }
         Some(Ok((g, cut_owner.or(rapid_owner).unwrap_or(0))))

@@ -40,6 +40,19 @@ const POW10: [i64; 10] =
 /// The most bytes of an F word taken here (its letter included).
 const F_BYTES: usize = 16;
 
+/// The bytes of the window [`FastNc::scan_window`] reads a line in (a
+/// power of two).
+const WINDOW: usize = 64;
+
+/// The most bytes before a word [`FastNc::scan_window`] reads: a word
+/// begun there ends, with the byte after it, within the window.
+const WINDOW_WORDS: usize = WINDOW - WORD_BYTES - 2;
+
+/// The most bytes of a word [`FastNc::scan_window`] reads: its letter, a
+/// sign, 9 digits, a point and at most 9 decimals (an F word, at most
+/// [`F_BYTES`]).
+const WORD_BYTES: usize = 21;
+
 /// An F word's text (its letter included), at most [`F_BYTES`].
 #[derive(Clone, Copy, PartialEq, Eq)]
 struct FText {
@@ -320,6 +333,165 @@ impl FastNc {
         Some((Line::Move { g, x, z, f }, len))
     }
 
+    /// [`FastNc::scan`] of a line that begins a window of [`WINDOW`]
+    /// bytes, when the line is a move whose words are all of the writer's
+    /// shapes (`G00`, `G01` or `G32`, lengths `-`? 1 to 9 digits and at
+    /// most `decimals` after a point, an F word of digits and a point)
+    /// and it ends within the window at a line end; `None` where it is not,
+    /// and then [`FastNc::scan`] reads the line (comments, the ends of
+    /// pieces, everything else). Every byte is read at an index below
+    /// [`WINDOW`] (the words begin at most at [`WINDOW_WORDS`] and are at
+    /// most [`WORD_BYTES`] long), so no read is checked against the line's
+    /// length and no line is read beyond its end: where this gives a line,
+    /// it is [`FastNc::scan`]'s (the property test
+    /// `tests::window_is_the_scan` holds the two equal).
+    #[inline(always)]
+    fn scan_window<'a>(&self, w: &'a [u8; WINDOW]) -> Option<(Line<'a>, usize)> {
+        // The byte at `i`, in the window (every `i` here is below it).
+        let at = |i: usize| w[i & (WINDOW - 1)];
+        let digit = |i: usize| at(i).wrapping_sub(b'0');
+        if self.decimals as usize >= POW10.len() {
+            return None;
+        }
+        // A line end (the window holds no end of the piece).
+        let end = |i: usize| matches!(at(i), b'\n' | b'\r');
+        let (mut g, mut x, mut z, mut f) = (None, None, None, None);
+        let mut i = 0;
+        // After a word that ends at `i`: the line's end (`true`), or a
+        // space and the next word (`false`, `i` past the space).
+        let mut ended = false;
+        if at(0) == b'G' {
+            g = Some(match (at(1), at(2)) {
+                (b'0', b'0') => MotionMode::G00,
+                (b'0', b'1') => MotionMode::G01,
+                (b'3', b'2') => MotionMode::G32,
+                _ => return None,
+            });
+            i = 3;
+            ended = end(i);
+            if !ended {
+                if at(i) != b' ' {
+                    return None;
+                }
+                i += 1;
+            }
+        }
+        if !ended && at(i) == b'X' {
+            let (v, e) = self.window_length(w, i + 1)?;
+            x = Some(v);
+            i = e;
+            ended = end(i);
+            if !ended {
+                if at(i) != b' ' || i >= WINDOW_WORDS {
+                    return None;
+                }
+                i += 1;
+            }
+        }
+        if !ended && at(i) == b'Z' {
+            let (v, e) = self.window_length(w, i + 1)?;
+            z = Some(v);
+            i = e;
+            ended = end(i);
+            if !ended {
+                if at(i) != b' ' || i >= WINDOW_WORDS {
+                    return None;
+                }
+                i += 1;
+            }
+        }
+        if !ended && at(i) == b'F' {
+            // digits (. digits)?, not zero, at most `F_BYTES` with its letter.
+            let start = i;
+            let mut e = i + 1;
+            let mut nonzero = false;
+            while digit(e) <= 9 && e - start < F_BYTES {
+                nonzero |= at(e) != b'0';
+                e += 1;
+            }
+            if e == start + 1 {
+                return None;
+            }
+            if at(e) == b'.' {
+                e += 1;
+                let frac = e;
+                while digit(e) <= 9 && e - start < F_BYTES {
+                    nonzero |= at(e) != b'0';
+                    e += 1;
+                }
+                if e == frac {
+                    return None;
+                }
+            }
+            if !nonzero || e - start > F_BYTES || !end(e) {
+                return None;
+            }
+            f = Some(&w[start..e]);
+            i = e;
+            ended = true;
+        }
+        if !ended || (x.is_none() && z.is_none()) {
+            return None;
+        }
+        Some((Line::Move { g, x, z, f }, i))
+    }
+
+    /// [`FastNc::length_at`] of the number at `i` in a window (after its
+    /// letter, at most [`WINDOW_WORDS`] + 1; `decimals` at most 9), read
+    /// without checks against a line's length.
+    #[inline(always)]
+    fn window_length(&self, w: &[u8; WINDOW], mut i: usize) -> Option<(i64, usize)> {
+        const M: usize = WINDOW - 1;
+        let negative = w[i & M] == b'-';
+        i += usize::from(negative);
+        let start = i;
+        let mut whole = 0_i64;
+        loop {
+            let d = w[i & M].wrapping_sub(b'0');
+            if d > 9 {
+                break;
+            }
+            if i - start == 9 {
+                return None;
+            }
+            whole = whole * 10 + i64::from(d);
+            i += 1;
+        }
+        if i == start {
+            return None;
+        }
+        let v = if w[i & M] == b'.' {
+            i += 1;
+            let start = i;
+            let decimals = self.decimals as usize;
+            let mut digits = 0_i64;
+            loop {
+                let d = w[i & M].wrapping_sub(b'0');
+                if d > 9 {
+                    break;
+                }
+                if i - start == decimals {
+                    return None;
+                }
+                digits = digits * 10 + i64::from(d);
+                i += 1;
+            }
+            let len = i - start;
+            if len == 0 || w[i & M] == b'.' {
+                return None;
+            }
+            whole.checked_mul(self.per_unit)?.checked_add(digits * POW10.get(decimals - len)?)?
+        } else if self.bare_increments {
+            whole
+        } else {
+            whole.checked_mul(self.per_unit)?
+        };
+        if v > MAX_LENGTH {
+            return None;
+        }
+        Some((if negative { -v } else { v }, i))
+    }
+
     /// `line` (without its line end), when it is one of the shapes taken
     /// here ([`FastNc::scan`] of the whole line).
     #[cfg(test)]
@@ -347,7 +519,11 @@ impl FastNc {
         if !self.enabled || number == 1 {
             return None;
         }
-        let (line, len) = self.scan(rest)?;
+        let window = rest.first_chunk::<WINDOW>().filter(|_| rest.first() != Some(&b'('));
+        let (line, len) = match window.and_then(|w| self.scan_window(w)) {
+            Some(taken) => taken,
+            None => self.scan(rest)?,
+        };
         let step = self.take_line(line)?;
         Some((step, Self::line_end(rest, len)))
     }
@@ -691,6 +867,34 @@ mod tests {
         }
     }
 
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// Where the window's reading takes a line, it is the scan's: the
+        /// same words and length, on lines of the writer's shapes and
+        /// adversarial ones followed by what else a piece may hold, under
+        /// both units and increment systems and every profile.
+        #[test]
+        fn window_is_the_scan(
+            first in line(),
+            ends in prop::sample::select(vec!["\n", "\r\n", "\r", ""]),
+            after in "[ -~\n\r]{0,80}",
+            profile in 0_u8..3,
+            calculator in any::<bool>(),
+            inch in any::<bool>(),
+            is_c in any::<bool>(),
+        ) {
+            let f = FastNc::new(&machine(profile, calculator, false), units(inch, is_c), true);
+            let text = format!("{first}{ends}{after}");
+            let rest = text.as_bytes();
+            if let Some(w) = rest.first_chunk::<WINDOW>() {
+                if let Some(taken) = f.scan_window(w) {
+                    prop_assert_eq!(Some(taken), f.scan(rest), "{:?}", text);
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_writers_lines_are_taken_and_the_reader_agrees() {
         let m = Machine::new(ProfileName::Gsk980);
@@ -728,5 +932,13 @@ mod tests {
         assert_eq!(f.parse(b"G00 X10.0 Z1.0 ; x"), None);
         assert_eq!(f.parse(b"G00  X10.0"), None);
         assert_eq!(f.parse(b"G00 X10.0001"), None);
+        // The window's reading takes the writer's lines, as the scan does.
+        for line in ["G32 X64.400 Z-37.000 F6.0", "G00 X80.000 Z10.000", "X24.004", "G01 Z-9.003 F0.15"] {
+            let text = format!("{line}\n{}", "G00 X80.000 Z10.000\n".repeat(4));
+            let w = text.as_bytes().first_chunk::<WINDOW>().copied();
+            let taken = w.as_ref().and_then(|w| f.scan_window(w));
+            assert!(taken.is_some(), "{line}");
+            assert_eq!(taken, f.scan(text.as_bytes()), "{line}");
+        }
     }
 }

@@ -183,9 +183,9 @@ pub(crate) fn trace_points<'m>(
     trace: &Path,
     units: Units,
 ) -> Result<(String, impl Iterator<Item = Result<Point, Failure>> + 'm), Failure> {
-    let (name, source) = open_trace(trace).map_err(|e| e.failure(None))?;
-    let steps =
-        trace_steps(source, format_of(trace), &job.machine, units).map_err(|e| e.failure(Some(&name)))?;
+    let format = format_of(trace);
+    let (name, source) = open_trace(trace, format).map_err(|e| e.failure(None))?;
+    let steps = trace_steps(source, format, &job.machine, units).map_err(|e| e.failure(Some(&name)))?;
     let named = name.clone();
     let points = steps.map(move |s| s.map(|(step, _)| step.to).map_err(|e| e.failure(Some(&named))));
     Ok((name, points))
@@ -279,7 +279,7 @@ fn compare_file(
     tolerance: u64,
     cycles_only: bool,
 ) -> Result<Report, Failure> {
-    let (name, source) = open_trace(trace).map_err(|e| e.failure(None))?;
+    let (name, source) = open_trace(trace, format).map_err(|e| e.failure(None))?;
     compare_streams(job, source, format, units, tolerance, cycles_only).map_err(|e| match e {
         StreamError::Ours(e) => e,
         StreamError::Theirs(e) => e.failure(Some(&name)),
