@@ -390,17 +390,23 @@ fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
 
 /// The texts the nc writer wrote last for the X or the Z of a move (a
 /// thread's passes return to the same retract X and start and end Z: most
-/// coordinates were written before): eight places, each value in the one
-/// its hash chooses (one comparison a look-up); a value that finds
+/// coordinates were written before): [`RECENT`] places, each value in
+/// the one its hash chooses (one comparison a look-up); a value that finds
 /// another in its place takes it. A text is kept at the start of 32 bytes
 /// and copied whole (a copy of constant length, no call), the line then
 /// advanced by its length.
 #[derive(Clone, Default)]
 struct Recent {
-    keys: [Option<(i64, u32)>; 8],
-    lens: [usize; 8],
-    texts: [[u8; 32]; 8],
+    keys: [Option<(i64, u32)>; RECENT],
+    lens: [usize; RECENT],
+    texts: [[u8; 32]; RECENT],
 }
+
+/// The places of a [`Recent`]: 32, so that a G75.1 groove's plunges, which
+/// return to 14 or so X values (each peck's depth and retract), find each
+/// of them kept (issue 33: with eight places most of a groove's X texts
+/// were formatted again, a third of its writer's work).
+const RECENT: usize = 32;
 
 /// The X and Z texts of [`Recent`], and the text of the lead last
 /// written with its word (every G32 block of a cycle has the same lead).
@@ -454,8 +460,8 @@ impl Recent {
         // that differ in their low digits over the places.
         #[allow(clippy::cast_possible_truncation)]
         let slot =
-            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 61) as usize;
-        let slot = slot % 8;
+            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize;
+        let slot = slot % RECENT;
         if self.keys[slot] != Some((v, decimals)) {
             // At most 1 + 19 + 1 + 9 = 30 bytes.
             self.lens[slot] = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
