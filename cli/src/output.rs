@@ -331,7 +331,9 @@ fn nc_groove_move<W: Write>(
     u: Units,
 ) -> io::Result<()> {
     let Motion::Arc { centre, clockwise } = m.motion else {
-        return nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true });
+        // Most of a groove's moves: [`nc_move`]'s words inlined here
+        // (issue 33: its call was a tenth of a groove's move).
+        return out.line(|l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }));
     };
     let d = u.decimals();
     let ((i, i_decimals), k) = arc_ik(from, centre, x_factor, u);
@@ -345,37 +347,44 @@ fn nc_groove_move<W: Write>(
     })
 }
 
-/// One move as an NC block.
+/// One move as an NC block (a function of its own, as the G76 writer's
+/// loop calls it: inlined there, the loop's code is slower).
+#[inline(never)]
 fn nc_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
+    out.line(|l| nc_move_words(l, t, m, u, q))
+}
+
+/// [`nc_move`]'s block written into `l`: the one home of a move's words,
+/// inlined where a writer calls it.
+#[inline(always)]
+fn nc_move_words(l: &mut Line<'_>, t: &mut NcText, m: &Move, u: Units, q: QUnit) {
     let d = u.decimals();
-    out.line(|l| {
-        match m.motion {
-            Motion::Rapid => l.xz(t, b"G00 X", m.to, d),
-            Motion::Feed => l.xz(t, b"G01 X", m.to, d),
-            Motion::Thread { lead, start_angle, sync } => {
-                l.xz(t, b"G32 X", m.to, d);
-                l.put(b" ");
-                t.lead(l, lead);
-                // Q only where synchronisation starts: on a continuation
-                // block the control ignores it (seed 002, Q rule 2).
-                if sync && !start_angle.is_zero() {
-                    l.put(b" Q");
-                    let (v, decimals) = q_value(start_angle, u, q);
-                    l.unsigned(v, decimals);
-                }
-            }
-            Motion::Arc { centre, clockwise } => {
-                // Without the start point the centre is written absolute.
-                l.xz(t, if clockwise { b"G02 X" } else { b"G03 X" }, m.to, d);
-                l.put(b" (centre X");
-                l.fixed(centre.x, d);
-                l.put(b" Z");
-                l.fixed(centre.z, d);
-                l.put(b")");
+    match m.motion {
+        Motion::Rapid => l.xz(t, b"G00 X", m.to, d),
+        Motion::Feed => l.xz(t, b"G01 X", m.to, d),
+        Motion::Thread { lead, start_angle, sync } => {
+            l.xz(t, b"G32 X", m.to, d);
+            l.put(b" ");
+            t.lead(l, lead);
+            // Q only where synchronisation starts: on a continuation
+            // block the control ignores it (seed 002, Q rule 2).
+            if sync && !start_angle.is_zero() {
+                l.put(b" Q");
+                let (v, decimals) = q_value(start_angle, u, q);
+                l.unsigned(v, decimals);
             }
         }
-        l.put(b"\n");
-    })
+        Motion::Arc { centre, clockwise } => {
+            // Without the start point the centre is written absolute.
+            l.xz(t, if clockwise { b"G02 X" } else { b"G03 X" }, m.to, d);
+            l.put(b" (centre X");
+            l.fixed(centre.x, d);
+            l.put(b" Z");
+            l.fixed(centre.z, d);
+            l.put(b")");
+        }
+    }
+    l.put(b"\n");
 }
 
 fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
@@ -420,7 +429,7 @@ struct NcText {
 impl NcText {
     /// Writes the lead word ([`put_lead`]) into `l`, from the kept text
     /// when it is the same lead.
-    #[inline]
+    #[inline(always)]
     fn lead(&mut self, l: &mut Line<'_>, lead: cycleref::Lead) {
         // Kept only when its text fits in 32 bytes: a word, at most 20
         // digits, a point and ".0" with at most 8 decimals.
