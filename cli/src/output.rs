@@ -137,9 +137,15 @@ fn nc_aux<W: Write>(
     after: bool,
     x_mode_words: bool,
 ) -> io::Result<()> {
+    // Most cycle blocks have none of these words (issue 33: a G75.1
+    // block's nine words were searched twice a block).
+    let x_mode_here = x_mode_words && !after;
+    if !x_mode_here && !block.has('M') && !block.has('S') && !block.has('T') {
+        return Ok(());
+    }
     let mut first = true;
     let x_mode = |w: &&cycleref_spec::lex::Word<'_>| {
-        x_mode_words && !after && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
+        x_mode_here && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
     };
     let aux =
         |w: &&cycleref_spec::lex::Word<'_>| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after;
