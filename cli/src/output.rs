@@ -138,13 +138,15 @@ fn nc_aux<W: Write>(
     x_mode_words: bool,
 ) -> io::Result<()> {
     // The usual cycle block has none of them: decided by the block's
-    // letters, without a look at its words (issue 33).
-    if !(block.has('M') || block.has('S') || block.has('T') || x_mode_words && !after && block.has('G')) {
+    // letters, without a look at its words (issue 33: a G75.1 block's nine
+    // words were searched twice a block).
+    let x_mode_here = x_mode_words && !after;
+    if !(block.has('M') || block.has('S') || block.has('T') || x_mode_here && block.has('G')) {
         return Ok(());
     }
     let mut first = true;
     let x_mode = |w: &&cycleref_spec::lex::Word<'_>| {
-        x_mode_words && !after && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
+        x_mode_here && w.letter == 'G' && matches!(w.number().integer(), Some(7 | 8))
     };
     let aux =
         |w: &&cycleref_spec::lex::Word<'_>| matches!(w.letter, 'M' | 'S' | 'T') && after_motion(w) == after;
@@ -373,7 +375,9 @@ fn nc_groove_move<W: Write>(
     u: Units,
 ) -> io::Result<()> {
     let Motion::Arc { centre, clockwise } = m.motion else {
-        return nc_move(out, t, m, u, QUnit::Millidegrees { no_point: true });
+        // Most of a groove's moves: [`nc_move`]'s words inlined here
+        // (issue 33: its call was a tenth of a groove's move).
+        return out.line(|l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }));
     };
     let d = u.decimals();
     let ((i, i_decimals), k) = arc_ik(from, centre, x_factor, u);
@@ -387,37 +391,44 @@ fn nc_groove_move<W: Write>(
     })
 }
 
-/// One move as an NC block.
+/// One move as an NC block (a function of its own, as the G76 writer's
+/// loop calls it: inlined there, the loop's code is slower).
+#[inline(never)]
 fn nc_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units, q: QUnit) -> io::Result<()> {
+    out.line(|l| nc_move_words(l, t, m, u, q))
+}
+
+/// [`nc_move`]'s block written into `l`: the one home of a move's words,
+/// inlined where a writer calls it.
+#[inline(always)]
+fn nc_move_words(l: &mut Line<'_>, t: &mut NcText, m: &Move, u: Units, q: QUnit) {
     let d = u.decimals();
-    out.line(|l| {
-        match m.motion {
-            Motion::Rapid => l.xz(t, b"G00 X", m.to, d),
-            Motion::Feed => l.xz(t, b"G01 X", m.to, d),
-            Motion::Thread { lead, start_angle, sync } => {
-                l.xz(t, b"G32 X", m.to, d);
-                l.put(b" ");
-                t.lead(l, lead);
-                // Q only where synchronisation starts: on a continuation
-                // block the control ignores it (seed 002, Q rule 2).
-                if sync && !start_angle.is_zero() {
-                    l.put(b" Q");
-                    let (v, decimals) = q_value(start_angle, u, q);
-                    l.unsigned(v, decimals);
-                }
-            }
-            Motion::Arc { centre, clockwise } => {
-                // Without the start point the centre is written absolute.
-                l.xz(t, if clockwise { b"G02 X" } else { b"G03 X" }, m.to, d);
-                l.put(b" (centre X");
-                l.fixed(centre.x, d);
-                l.put(b" Z");
-                l.fixed(centre.z, d);
-                l.put(b")");
+    match m.motion {
+        Motion::Rapid => l.xz(t, b"G00 X", m.to, d),
+        Motion::Feed => l.xz(t, b"G01 X", m.to, d),
+        Motion::Thread { lead, start_angle, sync } => {
+            l.xz(t, b"G32 X", m.to, d);
+            l.put(b" ");
+            t.lead(l, lead);
+            // Q only where synchronisation starts: on a continuation
+            // block the control ignores it (seed 002, Q rule 2).
+            if sync && !start_angle.is_zero() {
+                l.put(b" Q");
+                let (v, decimals) = q_value(start_angle, u, q);
+                l.unsigned(v, decimals);
             }
         }
-        l.put(b"\n");
-    })
+        Motion::Arc { centre, clockwise } => {
+            // Without the start point the centre is written absolute.
+            l.xz(t, if clockwise { b"G02 X" } else { b"G03 X" }, m.to, d);
+            l.put(b" (centre X");
+            l.fixed(centre.x, d);
+            l.put(b" Z");
+            l.fixed(centre.z, d);
+            l.put(b")");
+        }
+    }
+    l.put(b"\n");
 }
 
 fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
@@ -432,17 +443,23 @@ fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
 
 /// The texts the nc writer wrote last for the X or the Z of a move (a
 /// thread's passes return to the same retract X and start and end Z: most
-/// coordinates were written before): eight places, each value in the one
-/// its hash chooses (one comparison a look-up); a value that finds
+/// coordinates were written before): [`RECENT`] places, each value in
+/// the one its hash chooses (one comparison a look-up); a value that finds
 /// another in its place takes it. A text is kept at the start of 32 bytes
 /// and copied whole (a copy of constant length, no call), the line then
 /// advanced by its length.
 #[derive(Clone, Default)]
 struct Recent {
-    keys: [Option<(i64, u32)>; 8],
-    lens: [usize; 8],
-    texts: [[u8; 32]; 8],
+    keys: [Option<(i64, u32)>; RECENT],
+    lens: [usize; RECENT],
+    texts: [[u8; 32]; RECENT],
 }
+
+/// The places of a [`Recent`]: 32, so that a G75.1 groove's plunges, which
+/// return to 14 or so X values (each peck's depth and retract), find each
+/// of them kept (issue 33: with eight places most of a groove's X texts
+/// were formatted again, a third of its writer's work).
+const RECENT: usize = 32;
 
 /// The X and Z texts of [`Recent`], and the text of the lead last
 /// written with its word (every G32 block of a cycle has the same lead).
@@ -456,7 +473,7 @@ struct NcText {
 impl NcText {
     /// Writes the lead word ([`put_lead`]) into `l`, from the kept text
     /// when it is the same lead.
-    #[inline]
+    #[inline(always)]
     fn lead(&mut self, l: &mut Line<'_>, lead: cycleref::Lead) {
         // Kept only when its text fits in 32 bytes: a word, at most 20
         // digits, a point and ".0" with at most 8 decimals.
@@ -496,8 +513,8 @@ impl Recent {
         // that differ in their low digits over the places.
         #[allow(clippy::cast_possible_truncation)]
         let slot =
-            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 61) as usize;
-        let slot = slot % 8;
+            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize;
+        let slot = slot % RECENT;
         if self.keys[slot] != Some((v, decimals)) {
             // At most 1 + 19 + 1 + 9 = 30 bytes.
             self.lens[slot] = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);

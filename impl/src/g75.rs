@@ -181,6 +181,38 @@ impl G75Cycle {
     ///
     /// The first violated rule.
     pub fn validate(&self) -> Result<(), CycleError> {
+        self.validate_position()?;
+        self.validate_words()
+    }
+
+    /// [`G75Cycle::validate`]'s first checks: the start point and the
+    /// point before the cycle within range. The only ones that depend on
+    /// where the groove is: a plan of the same words
+    /// ([`crate::engine::g75::G75Plan`]) was validated with them, and needs
+    /// only these (issue 33).
+    pub(crate) fn validate_position(&self) -> Result<(), CycleError> {
+        let c = self;
+        for (field, v) in [
+            (Field::GrooveStartX, c.start.x),
+            (Field::GrooveStartZ, c.start.z),
+            (Field::GrooveFromX, c.from.x),
+            (Field::GrooveFromZ, c.from.z),
+        ] {
+            if !(-MAX_LENGTH..=MAX_LENGTH).contains(&v) {
+                return Err(CycleError::WordOutOfRange {
+                    field,
+                    value: c.len(v),
+                    rule: "at most 999999999 least increments",
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// [`G75Cycle::validate`]'s checks after
+    /// [`validate_position`](G75Cycle::validate_position): those of the
+    /// words, in its order.
+    fn validate_words(&self) -> Result<(), CycleError> {
         let c = self;
         let range = |field: Field, v: i64, lo: i64, hi: i64, rule: &'static str| {
             if v < lo || v > hi {
@@ -188,14 +220,6 @@ impl G75Cycle {
             }
             Ok(())
         };
-        for (field, v) in [
-            (Field::GrooveStartX, c.start.x),
-            (Field::GrooveStartZ, c.start.z),
-            (Field::GrooveFromX, c.from.x),
-            (Field::GrooveFromZ, c.from.z),
-        ] {
-            range(field, v, -MAX_LENGTH, MAX_LENGTH, "at most 999999999 least increments")?;
-        }
         range(Field::Peck, c.peck, 1, MAX_PECK, "0 < Δi <= 99999999 least increments")?;
         range(Field::Step, c.step, 1, MAX_PECK, "0 < Δk <= 99999999 least increments")?;
         let size = max_size(c.units);

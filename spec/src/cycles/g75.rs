@@ -125,8 +125,9 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
     }
 
     fn engine(&self) -> Result<Box<G75Moves>, CycleError> {
-        let moves = PLAN.with(|plan| expand_g75_planned(&self.cycle, &mut plan.borrow_mut()))?;
-        Ok(Box::new(moves))
+        // Boxed where they are made: the moves (a kilobyte) are not
+        // copied out of the plan's closure and its result again (issue 33).
+        PLAN.with(|plan| expand_g75_planned(&self.cycle, &mut plan.borrow_mut()).map(Box::new))
     }
 
     fn reference(&self) -> Result<Box<dyn ReferenceMoves>, CycleError> {

@@ -596,13 +596,17 @@ pub(super) mod tests {
 
     /// Every step of reading `program` with `profile`: the item or the
     /// error, and the reader's state after it, as text.
-    fn read(program: &str, profile: ProfileName, general: bool) -> Vec<String> {
+    pub(in crate::reader) fn read(program: &str, profile: ProfileName, general: bool) -> Vec<String> {
         read_pieces(&[program], profile, general)
     }
 
     /// [`read`] of a program given a piece at a time (each piece until it
     /// has no more, as a file is read a line at a time).
-    fn read_pieces(pieces: &[&str], profile: ProfileName, general: bool) -> Vec<String> {
+    pub(in crate::reader) fn read_pieces(
+        pieces: &[&str],
+        profile: ProfileName,
+        general: bool,
+    ) -> Vec<String> {
         GENERAL_ONLY.with(|g| g.set(general));
         let machine = Machine::new(profile);
         let mut reader = LineReader::new(&machine);
@@ -629,7 +633,7 @@ pub(super) mod tests {
     /// A line's end and what may stand before it: nothing, `;`, a comment
     /// after a `;`, another block after a `;`, spaces (every line end of
     /// reading R-LINEEND).
-    fn ending() -> impl Strategy<Value = String> {
+    pub(in crate::reader) fn ending() -> impl Strategy<Value = String> {
         let tail = prop_oneof![
             6 => Just(""),
             3 => Just(";"),

@@ -348,10 +348,13 @@ pub fn check_g75_planned(c: &G75Cycle, plan: &mut Option<G75Plan>) -> Result<(),
 /// The plan of `c` after [`G75Cycle::validate`]: `plan` when it fits `c`,
 /// else made anew and kept in `plan`.
 fn planned<'p>(c: &G75Cycle, plan: &'p mut Option<G75Plan>) -> Result<&'p G75Plan, CycleError> {
-    c.validate()?;
     match plan {
-        Some(p) if p.fits(c) => {}
+        // `c.validate()`: the plan's words passed it (a plan is kept only
+        // below), and its checks of the words come after those of the
+        // position, which are left (issue 33).
+        Some(p) if p.fits(c) => c.validate_position()?,
         _ => {
+            c.validate()?;
             // A failed plan leaves nothing behind: the next cycle plans again.
             *plan = None;
             *plan = Some(G75Plan::of_valid(c, true)?);

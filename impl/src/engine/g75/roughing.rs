@@ -272,7 +272,9 @@ impl G75Moves {
     /// out (R-G75ZERO) and the next step taken.
     ///
     /// Twin: `spec/src/g75/mod.rs`, `Cursor::step` (with
-    /// `spec/src/g75/roughing.rs`, `pecks`).
+    /// `spec/src/g75/roughing.rs`, `pecks`). Inlined into
+    /// [`Iterator::next`] (issue 33: its call was a sixth of a move).
+    #[inline(always)]
     pub(super) fn next_rough(&mut self) -> Option<Move> {
         let mut loops = crate::loop_counters::count!(G75_ROUGH_NEXT);
         loop {
