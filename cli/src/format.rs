@@ -42,23 +42,29 @@ impl fmt::Display for Fixed {
     }
 }
 
-/// A value whose text is written at the end of a [`FIXED_BUF`] buffer:
-/// [`Fixed`] and [`LeadText`].
-pub trait EncodeAtEnd: Copy + PartialEq {
-    /// The text, written so that it ends at the end of `buf`.
-    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8];
-
-    /// A hash of the value (equal values, equal hashes).
-    fn hash(self) -> u64;
+/// A value whose text is written into a [`FIXED_BUF`] buffer, where the
+/// value finds it cheapest: [`Fixed`] and [`LeadText`] (the JSON writers'
+/// numbers).
+///
+/// ```
+/// use cycleref_cli::format::{EncodeText, Fixed, FIXED_BUF};
+/// use cycleref::Units;
+///
+/// let mut buf = [0_u8; FIXED_BUF];
+/// // −12.5 mm at IS-B: −12 500 increments of 0.001 mm.
+/// assert_eq!(Fixed::new(-12_500, Units::IS_B_METRIC).encode_text(&mut buf), b"-12.500");
+/// ```
+pub trait EncodeText: Copy + PartialEq {
+    /// The text, written somewhere in `buf`.
+    fn encode_text(self, buf: &mut [u8; FIXED_BUF]) -> &[u8];
 }
 
-impl EncodeAtEnd for Fixed {
-    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
-        self.encode(buf)
-    }
-
-    fn hash(self) -> u64 {
-        self.value.unsigned_abs() ^ u64::from(self.decimals)
+impl EncodeText for Fixed {
+    #[inline]
+    fn encode_text(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        // At the start: no copy to the end (issue 33).
+        let len = put_fixed(buf, self.value < 0, self.value.unsigned_abs(), self.decimals);
+        &buf[..len]
     }
 }
 
@@ -106,13 +112,11 @@ pub fn put_lead(out: &mut [u8], lead: cycleref::Lead, word: bool) -> usize {
     at
 }
 
-impl EncodeAtEnd for LeadText {
-    fn encode_at_end(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
-        self.encode(buf)
-    }
-
-    fn hash(self) -> u64 {
-        self.0.mantissa ^ u64::from(self.0.scale)
+impl EncodeText for LeadText {
+    #[inline]
+    fn encode_text(self, buf: &mut [u8; FIXED_BUF]) -> &[u8] {
+        let len = put_lead(buf, self.0, true);
+        &buf[..len]
     }
 }
 

@@ -20,7 +20,7 @@ use cycleref::{InputUnit, Motion, Move, Pass, Point, Role, Units};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use serde::ser::{Serialize, SerializeSeq, Serializer};
 
-use crate::format::{flank_name, kind_name, plunge_of, role_name, EncodeAtEnd, Fixed, LeadText, FIXED_BUF};
+use crate::format::{flank_name, kind_name, plunge_of, role_name, EncodeText, Fixed, LeadText, FIXED_BUF};
 
 pub mod ser;
 
@@ -49,14 +49,14 @@ impl Serialize for LeadText {
 /// is how [`ser`] takes it, without a UTF-8 check or an escape scan).
 struct Plain<T>(T);
 
-impl<T: EncodeAtEnd + std::fmt::Display> Serialize for Plain<T> {
+impl<T: EncodeText + std::fmt::Display> Serialize for Plain<T> {
     #[inline(always)]
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         if s.is_human_readable() {
             s.collect_str(&self.0)
         } else {
             let mut buf = [0; FIXED_BUF];
-            s.serialize_bytes(self.0.encode_at_end(&mut buf))
+            s.serialize_bytes(self.0.encode_text(&mut buf))
         }
     }
 }

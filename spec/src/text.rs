@@ -195,9 +195,15 @@ pub fn put_integer(out: &mut [u8], v: u64) -> usize {
 /// // Q1800 of a G76 block 2 at IS-B: Δd = 1.800.
 /// assert_eq!(encode_fixed(&mut buf, false, 1_800, 3), b"1.800");
 /// ```
+#[inline]
 pub fn encode_fixed(buf: &mut [u8; FIXED_BUF], negative: bool, mag: u64, decimals: u32) -> &[u8] {
-    let start = FIXED_BUF - fixed_len(negative, mag, decimals);
-    fill_fixed(&mut buf[start..], negative, mag, decimals);
+    // By `put_fixed` (eight digits at once for the usual value) and one
+    // copy to the end, not by the length first and digit pairs (issue 33:
+    // the JSON writers' numbers).
+    let mut text = [0; FIXED_BUF];
+    let len = put_fixed(&mut text, negative, mag, decimals);
+    let start = FIXED_BUF - len;
+    buf[start..].copy_from_slice(&text[..len]);
     &buf[start..]
 }
 

@@ -4,7 +4,7 @@
 
 use std::io;
 
-use crate::format::{encode_fixed, FIXED_BUF};
+use crate::format::{put_fixed, FIXED_BUF};
 
 /// The serializer's output before it is handed to the writer: a block of
 /// bytes and how many of them are written. Bytes past the written ones
@@ -274,7 +274,7 @@ pub(super) fn push_escaped(buf: &mut Buf, s: &[u8]) {
 }
 
 /// Appends the decimal text of `mag`, with `-` when `negative`, as
-/// serde_json writes integers (two digits a step, [`encode_fixed`]).
+/// serde_json writes integers ([`put_fixed`]).
 #[inline]
 pub(super) fn push_integer(buf: &mut Buf, negative: bool, mag: u64) {
     if !negative && mag < 10 {
@@ -283,7 +283,8 @@ pub(super) fn push_integer(buf: &mut Buf, negative: bool, mag: u64) {
         buf.push(b'0' + mag as u8);
     } else {
         let mut digits = [0; FIXED_BUF];
-        buf.extend_from_slice(encode_fixed(&mut digits, negative, mag, 0));
+        let len = put_fixed(&mut digits, negative, mag, 0);
+        buf.extend_from_slice(&digits[..len]);
     }
 }
 
