@@ -29,8 +29,9 @@
 //! writing as many moves of the same shape as the nc expansion holds to
 //! `/dev/null`, no program read; it prints `expand nc / floor` and `check /
 //! expand nc`. The sides of each ratio run in one alternation (each
-//! repetition runs `expand nc`, `check`, then the floor), so that a change of
-//! the machine's load during the run falls on both sides alike.
+//! repetition runs `expand nc`, `expand json`, `check`, then the floor), so
+//! that a change of the machine's load during the run falls on both sides
+//! alike (`json / nc` is issue 11's ratio).
 //!
 //! Then, unless `--peer-cycles 0`, the **peer benchmark** (issue 33): a
 //! LinuxCNC program of `--peer-cycles` G76 cycles
@@ -149,6 +150,7 @@ fn run(args: &Args) -> Result<(), String> {
     let mut floors: Vec<Entry> = Vec::new();
     let nc_index = COMMANDS.iter().position(|(n, _)| *n == "expand nc").unwrap_or(0);
     let check_index = COMMANDS.iter().position(|(n, _)| *n == "check").unwrap_or(0);
+    let json_index = COMMANDS.iter().position(|(n, _)| *n == "expand json").unwrap_or(0);
     for &mb in &args.sizes {
         let g = corpus::program(mb << 20, true);
         let plain = corpus::program(mb << 20, false);
@@ -182,12 +184,12 @@ fn run(args: &Args) -> Result<(), String> {
         for c in 0..COMMANDS.len() {
             // The two sides of a ratio run in one alternation, so that a
             // change of the machine's load between them cannot make the
-            // ratio: `check` runs beside `expand nc` (and the floor), not
-            // in a loop of its own.
-            let group: &[usize] = if c == check_index {
+            // ratio: `expand json` and `check` run beside `expand nc` (and
+            // the floor), not in loops of their own.
+            let group: &[usize] = if c == check_index || c == json_index {
                 continue;
             } else if c == nc_index {
-                &[nc_index, check_index]
+                &[nc_index, json_index, check_index]
             } else {
                 &[c]
             };
