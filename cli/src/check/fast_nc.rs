@@ -355,7 +355,7 @@ impl FastNc {
         }
         // A line end (the window holds no end of the piece).
         let end = |i: usize| matches!(at(i), b'\n' | b'\r');
-        let (mut g, mut x, mut z, mut f) = (None, None, None, None);
+        let (mut g, mut f) = (None, None);
         let mut i = 0;
         // After a word that ends at `i`: the line's end (`true`), or a
         // space and the next word (`false`, `i` past the space).
@@ -376,30 +376,8 @@ impl FastNc {
                 i += 1;
             }
         }
-        if !ended && at(i) == b'X' {
-            let (v, e) = self.window_length(w, i + 1)?;
-            x = Some(v);
-            i = e;
-            ended = end(i);
-            if !ended {
-                if at(i) != b' ' || i >= WINDOW_WORDS {
-                    return None;
-                }
-                i += 1;
-            }
-        }
-        if !ended && at(i) == b'Z' {
-            let (v, e) = self.window_length(w, i + 1)?;
-            z = Some(v);
-            i = e;
-            ended = end(i);
-            if !ended {
-                if at(i) != b' ' || i >= WINDOW_WORDS {
-                    return None;
-                }
-                i += 1;
-            }
-        }
+        let x = self.window_word(w, &mut i, &mut ended, b'X')?;
+        let z = self.window_word(w, &mut i, &mut ended, b'Z')?;
         if !ended && at(i) == b'F' {
             // digits (. digits)?, not zero, at most `F_BYTES` with its letter.
             let start = i;
@@ -434,6 +412,35 @@ impl FastNc {
             return None;
         }
         Some((Line::Move { g, x, z, f }, i))
+    }
+
+    /// The length word `letter` (X or Z) at `i` of a window, where the
+    /// line has not `ended`: `Some(None)` when it is not there, its value
+    /// when it is, with `i` moved past it and the space after it or
+    /// `ended` set at the line's end; `None` where
+    /// [`FastNc::scan_window`] declines the line.
+    #[inline(always)]
+    fn window_word(
+        &self,
+        w: &[u8; WINDOW],
+        i: &mut usize,
+        ended: &mut bool,
+        letter: u8,
+    ) -> Option<Option<i64>> {
+        let at = |i: usize| w[i & (WINDOW - 1)];
+        if *ended || at(*i) != letter {
+            return Some(None);
+        }
+        let (v, e) = self.window_length(w, *i + 1)?;
+        *i = e;
+        *ended = matches!(at(e), b'\n' | b'\r');
+        if !*ended {
+            if at(e) != b' ' || e >= WINDOW_WORDS {
+                return None;
+            }
+            *i = e + 1;
+        }
+        Some(Some(v))
     }
 
     /// [`FastNc::length_at`] of the number at `i` in a window (after its
