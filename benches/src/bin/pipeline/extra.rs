@@ -40,8 +40,33 @@ fn find_rs274(args: &Args) -> Option<PathBuf> {
         .unwrap_or_default()
 }
 
-/// Runs every `(bin, args)` job `reps` times, alternating, into its cell:
-/// the commands of one program, side by side.
+/// The least time, in seconds, that the rounds of one side-by-side
+/// measurement take together: a round of short commands is repeated more
+/// often than `--reps` says (see [`rounds`]).
+const MIN_SIDE_BY_SIDE_SECS: f64 = 1.0;
+
+/// The most rounds a side-by-side measurement runs, whatever its length.
+const MAX_ROUNDS: usize = 200;
+
+/// How many rounds a side-by-side measurement runs when its first round
+/// took `first` seconds of wall time: `--reps`, or more when the round is
+/// short, so that the rounds take at least [`MIN_SIDE_BY_SIDE_SECS`]
+/// together (at most [`MAX_ROUNDS`]). A command of a few milliseconds
+/// measured five times gives a median that one preempted run moves by a
+/// third (the G75.1 program, about 10 ms, went 2.4-3.9x against the
+/// baseline between four runs at one commit); the rounds still alternate,
+/// so every ratio divides medians taken under the same load.
+fn rounds(reps: usize, first: f64) -> usize {
+    if first <= 0.0 || !first.is_finite() {
+        return reps;
+    }
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let wanted = (MIN_SIDE_BY_SIDE_SECS / first).ceil().min(MAX_ROUNDS as f64) as usize;
+    reps.max(wanted)
+}
+
+/// Runs every `(bin, args)` job, alternating, into its cell: the commands
+/// of one program, side by side, for as many rounds as [`rounds`] gives.
 fn measure_side_by_side(
     args: &Args,
     label: &str,
@@ -49,7 +74,10 @@ fn measure_side_by_side(
 ) -> Result<Vec<Cell>, String> {
     let mut cells = vec![Cell::default(); jobs.len()];
     let limits = Some((args.timeout, args.mem_limit_mb));
-    for rep in 0..args.reps {
+    let mut reps = args.reps;
+    let mut rep = 0;
+    while rep < reps {
+        let started = std::time::Instant::now();
         for ((bin, a, name), cell) in jobs.iter().zip(&mut cells) {
             if cell.status.is_some() {
                 continue;
@@ -57,6 +85,10 @@ fn measure_side_by_side(
             eprintln!("  {label} {name} #{}", rep + 1);
             run_one(bin, a, &args.dir.join("extra.err"), limits, cell)?;
         }
+        if rep == 0 {
+            reps = rounds(args.reps, started.elapsed().as_secs_f64());
+        }
+        rep += 1;
     }
     Ok(cells)
 }
@@ -168,4 +200,22 @@ pub(crate) fn g75_heavy(args: &Args) -> Result<Vec<Entry>, String> {
         e.push(Entry::new(size, "baseline", &name("expand"), base.clone()));
     }
     Ok(e)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rounds;
+
+    #[test]
+    fn short_rounds_are_repeated_until_a_second() {
+        // The G75.1 round: about 10 + 5 + 35 ms = 0.05 s: 1 / 0.05 = 20 rounds.
+        assert_eq!(rounds(5, 0.05), 20);
+        // The peer round (rs274 0.6 s and ours): --reps as given.
+        assert_eq!(rounds(5, 0.75), 5);
+        assert_eq!(rounds(3, 0.3), 4);
+        // Bounded, and a round that measured nothing keeps --reps.
+        assert_eq!(rounds(5, 1e-6), 200);
+        assert_eq!(rounds(5, 0.0), 5);
+        assert_eq!(rounds(300, 0.001), 300);
+    }
 }

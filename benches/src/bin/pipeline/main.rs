@@ -42,7 +42,9 @@
 //! floor of that expansion, alternating, in one run: it prints `rs274 /
 //! expand` and `rs274 / check`. And unless `--g75-grooves 0`, a
 //! **G75.1-heavy** program (`corpus::g75_program`): `expand` by the new
-//! build, the baseline's when given, and the floor.
+//! build, the baseline's when given, and the floor. These side-by-side
+//! rounds repeat more often than `--reps` when a round is short (until
+//! they take a second together; `extra.rs`, `rounds`).
 //!
 //! Prints one markdown table (medians), the targets of issues 11 and 33,
 //! and appends one row per program, command and build to
@@ -248,7 +250,13 @@ fn run(args: &Args) -> Result<(), String> {
 
     // The table.
     let base = builds.len() > 1;
-    let _ = writeln!(table, "Medians of {} runs each, {date}, commit {commit}.\n", args.reps);
+    let _ = writeln!(
+        table,
+        "Medians of {} runs each (the peer and G75.1 programs: {} and {} rounds), {date}, commit {commit}.\n",
+        args.reps,
+        peer.first().map_or(0, |e| e.cell.times.len()),
+        g75.first().map_or(0, |e| e.cell.times.len()),
+    );
     if !results.is_empty() {
         if base {
             let _ = writeln!(
