@@ -53,6 +53,32 @@ const WINDOW_WORDS: usize = WINDOW - WORD_BYTES - 2;
 /// [`F_BYTES`]).
 const WORD_BYTES: usize = 21;
 
+/// Bytes read by index, for [`FastNc::length_at`]: a piece of lines
+/// (`None` past its end) or a [`Window`] (every index within it).
+trait ByteAt {
+    /// The byte at `i`, when there is one.
+    fn byte_at(&self, i: usize) -> Option<u8>;
+}
+
+impl ByteAt for [u8] {
+    #[inline(always)]
+    fn byte_at(&self, i: usize) -> Option<u8> {
+        self.get(i).copied()
+    }
+}
+
+/// The [`WINDOW`] bytes [`FastNc::scan_window`] reads a line in: an index
+/// is taken modulo the window (every index read there is below it), so no
+/// read is checked.
+struct Window<'a>(&'a [u8; WINDOW]);
+
+impl ByteAt for Window<'_> {
+    #[inline(always)]
+    fn byte_at(&self, i: usize) -> Option<u8> {
+        Some(self.0[i & (WINDOW - 1)])
+    }
+}
+
 /// An F word's text (its letter included), at most [`F_BYTES`].
 #[derive(Clone, Copy, PartialEq, Eq)]
 struct FText {
@@ -188,20 +214,22 @@ impl FastNc {
         self.leads.iter().find(|(t, _)| t == f).map(|(_, l)| *l)
     }
 
-    /// A length word's number, from `rest[i]` (after its letter) to the
-    /// first byte that is not a digit or its point, in increments, when it
-    /// is `-`? digits (`.` digits)? within the range tables and the
-    /// increment, and where it ends; else `None`.
+    /// A length word's number, from byte `i` of `bytes` (after its
+    /// letter) to the first byte that is not a digit or its point, in
+    /// increments, when it is `-`? digits (`.` digits)? within the range
+    /// tables and the increment, and where it ends; else `None`. One
+    /// reading of the number for both ways of reading a line: a piece of
+    /// lines, checked against its end ([`FastNc::scan`]), and a window,
+    /// unchecked ([`FastNc::scan_window`]).
     #[inline(always)]
-    fn length_at(&self, rest: &[u8], mut i: usize) -> Option<(i64, usize)> {
-        let negative = rest.get(i) == Some(&b'-');
-        if negative {
-            i += 1;
-        }
+    fn length_at<B: ByteAt + ?Sized>(&self, bytes: &B, mut i: usize) -> Option<(i64, usize)> {
+        let digit = |i: usize| bytes.byte_at(i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9);
+        let negative = bytes.byte_at(i) == Some(b'-');
+        i += usize::from(negative);
         // The integer part: 1 to 9 digits.
         let start = i;
         let mut whole = 0_i64;
-        while let Some(d) = rest.get(i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9) {
+        while let Some(d) = digit(i) {
             if i - start == 9 {
                 return None;
             }
@@ -211,24 +239,24 @@ impl FastNc {
         if i == start {
             return None;
         }
-        let v = if rest.get(i) == Some(&b'.') {
+        let v = if bytes.byte_at(i) == Some(b'.') {
             // A point and 1 to `decimals` digits.
             i += 1;
             let start = i;
+            let decimals = self.decimals as usize;
             let mut digits = 0_i64;
-            while let Some(d) = rest.get(i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9) {
-                if i - start == self.decimals as usize {
+            while let Some(d) = digit(i) {
+                if i - start == decimals {
                     return None;
                 }
                 digits = digits * 10 + i64::from(d);
                 i += 1;
             }
             let len = i - start;
-            if len == 0 || rest.get(i) == Some(&b'.') {
+            if len == 0 || bytes.byte_at(i) == Some(b'.') {
                 return None;
             }
-            let scale = POW10.get(self.decimals as usize - len)?;
-            whole.checked_mul(self.per_unit)?.checked_add(digits * scale)?
+            whole.checked_mul(self.per_unit)?.checked_add(digits * POW10.get(decimals - len)?)?
         } else if self.bare_increments {
             whole
         } else {
@@ -431,7 +459,7 @@ impl FastNc {
         if *ended || at(*i) != letter {
             return Some(None);
         }
-        let (v, e) = self.window_length(w, *i + 1)?;
+        let (v, e) = self.length_at(&Window(w), *i + 1)?;
         *i = e;
         *ended = matches!(at(e), b'\n' | b'\r');
         if !*ended {
@@ -441,62 +469,6 @@ impl FastNc {
             *i = e + 1;
         }
         Some(Some(v))
-    }
-
-    /// [`FastNc::length_at`] of the number at `i` in a window (after its
-    /// letter, at most [`WINDOW_WORDS`] + 1; `decimals` at most 9), read
-    /// without checks against a line's length.
-    #[inline(always)]
-    fn window_length(&self, w: &[u8; WINDOW], mut i: usize) -> Option<(i64, usize)> {
-        const M: usize = WINDOW - 1;
-        let negative = w[i & M] == b'-';
-        i += usize::from(negative);
-        let start = i;
-        let mut whole = 0_i64;
-        loop {
-            let d = w[i & M].wrapping_sub(b'0');
-            if d > 9 {
-                break;
-            }
-            if i - start == 9 {
-                return None;
-            }
-            whole = whole * 10 + i64::from(d);
-            i += 1;
-        }
-        if i == start {
-            return None;
-        }
-        let v = if w[i & M] == b'.' {
-            i += 1;
-            let start = i;
-            let decimals = self.decimals as usize;
-            let mut digits = 0_i64;
-            loop {
-                let d = w[i & M].wrapping_sub(b'0');
-                if d > 9 {
-                    break;
-                }
-                if i - start == decimals {
-                    return None;
-                }
-                digits = digits * 10 + i64::from(d);
-                i += 1;
-            }
-            let len = i - start;
-            if len == 0 || w[i & M] == b'.' {
-                return None;
-            }
-            whole.checked_mul(self.per_unit)?.checked_add(digits * POW10.get(decimals - len)?)?
-        } else if self.bare_increments {
-            whole
-        } else {
-            whole.checked_mul(self.per_unit)?
-        };
-        if v > MAX_LENGTH {
-            return None;
-        }
-        Some((if negative { -v } else { v }, i))
     }
 
     /// `line` (without its line end), when it is one of the shapes taken
