@@ -223,7 +223,8 @@ impl State<'_> {
         // The state parameter's unit, read when the reading started.
         let v = match self.pq_unit {
             PqUnit::IncrementsNoPoint => {
-                if w.number().has_point() {
+                // The word's own readings, not its number made (issue 33).
+                if w.has_point() {
                     return Err(err(
                         block,
                         Some(w),
@@ -235,7 +236,7 @@ impl State<'_> {
                 self.to_increments(block, w, true)?
             }
             PqUnit::Increments => {
-                let v = w.number().integer().ok_or_else(|| {
+                let v = w.integer().ok_or_else(|| {
                     err(
                         block,
                         Some(w),
@@ -299,7 +300,7 @@ impl State<'_> {
     /// this gives a lead, that gives the same (the value and mantissa of
     /// the same digits; issue 33: an F word's digits were read three
     /// times).
-    #[inline]
+    #[inline(always)]
     pub(super) fn lead_short(&self, w: &Word<'_>) -> Option<Lead> {
         /// 10^(MAX_LEAD_SCALE - scale), by scale.
         const TO_MICRO: [u64; MAX_LEAD_SCALE as usize + 1] = [1_000_000, 100_000, 10_000, 1_000, 100, 10, 1];
