@@ -210,6 +210,7 @@ impl State<'_> {
         length_word(self.machine, self.units, block, w)
     }
 
+    #[inline(always)]
     pub(super) fn unsigned_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         let v = self.length(block, w)?;
         if v < 0 {
@@ -219,6 +220,7 @@ impl State<'_> {
     }
 
     /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
+    #[inline(always)]
     pub(super) fn pq_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         // The state parameter's unit, read when the reading started.
         let v = match self.pq_unit {
