@@ -301,6 +301,12 @@ impl<'a> Lexer<'a> {
         let mut pos = start;
         while pos < n {
             let b = line[pos];
+            // The space between words first: one test, not the letter's
+            // and the table of the other bytes (issue 33).
+            if b == b' ' {
+                pos += 1;
+                continue;
+            }
             let up = b & !0x20;
             if up.wrapping_sub(b'A') < 26 && up != b'N' && up != b'O' {
                 // `b` is an ASCII letter: only 0x41..=0x5A and 0x61..=0x7A

@@ -72,11 +72,16 @@ impl<'a> Words<'a> {
         let bit = letter_bit(w.letter);
         self.repeated |= self.present & bit;
         self.present |= bit;
-        match &mut self.store {
-            // The usual case, inlined: room in the inline words.
-            WordStore::Inline(v) if !v.is_full() => v.push(w),
-            _ => self.push_more(w),
-        }
+        // The usual case, inlined: room in the inline words (one test of
+        // their length).
+        let w = match &mut self.store {
+            WordStore::Inline(v) => match v.try_push(w) {
+                Ok(()) => return,
+                Err(full) => full.element(),
+            },
+            WordStore::Heap(_) => w,
+        };
+        self.push_more(w);
     }
 
     /// [`Words::push`] past the inline words.

@@ -182,6 +182,15 @@ pub(super) fn trim(bytes: &[u8]) -> &[u8] {
     // character is not).
     match (bytes.first(), bytes.last()) {
         (Some(f), Some(l)) if f.is_ascii_graphic() && l.is_ascii_graphic() => bytes,
+        // A comment after a `;` and its space (`; (finish)`): the spaces
+        // off its start, when a printable ASCII character follows them.
+        (Some(b' '), Some(l)) if l.is_ascii_graphic() => {
+            let i = bytes.iter().position(|&b| b != b' ').unwrap_or(bytes.len());
+            match bytes.get(i) {
+                Some(f) if f.is_ascii_graphic() => &bytes[i..],
+                _ => trim_ends(bytes),
+            }
+        }
         _ => trim_ends(bytes),
     }
 }
@@ -236,6 +245,10 @@ mod tests {
                 }
             }
         }
+        // A comment after `; ` (the spaces off its start only), by hand.
+        assert_eq!(trim(b" (finish 1)"), b"(finish 1)");
+        assert_eq!(trim(b"   X1 (c)"), b"X1 (c)");
+        assert_eq!(trim(b"   "), b"");
         // Bytes that are not UTF-8 stay (a GBK comment, reading R-ENCODING).
         assert_eq!(trim(b" (\xd6\xd0) "), b"(\xd6\xd0)");
         assert_eq!(trim(b"\xd6\xd0"), b"\xd6\xd0");

@@ -489,6 +489,7 @@ impl State<'_> {
     }
 
     /// The end point X(U) Z(W) of a block that starts at `from`.
+    #[inline(always)]
     pub(super) fn end_point(&self, block: &Block<'_>, from: Point) -> Result<Point, ProgramError> {
         let (xw, zw, uw, ww) = Self::axis_words(block)?;
         let x = self.axis(block, xw, uw, Some(from.x))?.unwrap_or(from.x);

@@ -210,6 +210,7 @@ impl State<'_> {
         length_word(self.machine, self.units, block, w)
     }
 
+    #[inline(always)]
     pub(super) fn unsigned_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         let v = self.length(block, w)?;
         if v < 0 {
@@ -219,11 +220,13 @@ impl State<'_> {
     }
 
     /// P(k), Q(Δd), Q(Δdmin): unit by the profile's state parameter.
+    #[inline(always)]
     pub(super) fn pq_length(&self, block: &Block<'_>, w: &Word<'_>) -> Result<i64, ProgramError> {
         // The state parameter's unit, read when the reading started.
         let v = match self.pq_unit {
             PqUnit::IncrementsNoPoint => {
-                if w.number().has_point() {
+                // The word's own readings, not its number made (issue 33).
+                if w.has_point() {
                     return Err(err(
                         block,
                         Some(w),
@@ -235,7 +238,7 @@ impl State<'_> {
                 self.to_increments(block, w, true)?
             }
             PqUnit::Increments => {
-                let v = w.number().integer().ok_or_else(|| {
+                let v = w.integer().ok_or_else(|| {
                     err(
                         block,
                         Some(w),
@@ -299,7 +302,7 @@ impl State<'_> {
     /// this gives a lead, that gives the same (the value and mantissa of
     /// the same digits; issue 33: an F word's digits were read three
     /// times).
-    #[inline]
+    #[inline(always)]
     pub(super) fn lead_short(&self, w: &Word<'_>) -> Option<Lead> {
         /// 10^(MAX_LEAD_SCALE - scale), by scale.
         const TO_MICRO: [u64; MAX_LEAD_SCALE as usize + 1] = [1_000_000, 100_000, 10_000, 1_000, 100, 10, 1];
