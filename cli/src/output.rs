@@ -12,7 +12,7 @@ use std::cell::RefCell;
 use std::io::{self, Write};
 
 use cycleref::{Motion, Move, PassKind, Point, Role, Units};
-use cycleref_spec::cycles::{MoveWords, PassComment, PassTable, HEADING_BUF};
+use cycleref_spec::cycles::{MoveWords, NcStyle, PassComment, PassTable, HEADING_BUF};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{Item, PlainMove, Restore};
@@ -215,11 +215,11 @@ fn nc_cycle<W: Write>(
         }
     }
     let x_factor = cycle.x_mode().factor();
-    let (mut pass, mut plunge, mut contour) = (None, None, None);
     if style.words == MoveWords::Fanuc && !style.plunges && !style.contours {
         // G76, G78, G92, G32: a pass comment and the move, the style's
         // other questions answered once for the cycle rather than at
         // every move (issue 33: they were a fifth of the loop).
+        let mut pass = None;
         moves.try_for_each_move(|m| {
             if let Some(p) = m.pass {
                 // The comment only where the pass changes (most moves are
@@ -234,49 +234,82 @@ fn nc_cycle<W: Write>(
         })?;
         return restore(out, cycle.restore());
     }
-    let mut at = cycle.from();
-    moves.try_for_each_move(|m| {
-        if let Some(p) = m.pass {
-            nc_pass_comment(out, style.passes, p, &mut pass, u)?;
-        }
-        if style.plunges {
-            if let Role::Peck(p) = m.role {
-                if plunge != Some(p) {
-                    plunge = Some(p);
-                    out.line(|l| {
-                        l.put(b"(layer ");
-                        l.number(u64::from(p.layer));
-                        l.put(b" plunge ");
-                        l.number(u64::from(p.number));
-                        l.put(b")\n");
-                    })?;
-                }
-            }
-        }
-        if style.contours {
-            let name: Option<&'static str> = match m.role {
-                Role::RoughContour => Some("rough contour"),
-                Role::FinishContour => Some("finishing contour"),
-                _ => None,
-            };
-            if let Some(n) = name.filter(|_| name != contour) {
+    let mut s = NcCycleState { pass: None, plunge: None, contour: None, at: cycle.from() };
+    let words = (u, q, x_factor, front_post);
+    if style == NcStyle::GROOVE {
+        // G75.1: the same body with the style a constant, its questions
+        // answered when the loop is compiled (issue 33).
+        moves.try_for_each_move(
+            #[inline(always)]
+            |m| nc_styled_move(out, t, &mut s, &m, NcStyle::GROOVE, words),
+        )?;
+    } else {
+        moves.try_for_each_move(|m| nc_styled_move(out, t, &mut s, &m, style, words))?;
+    }
+    restore(out, cycle.restore())
+}
+
+/// What the `nc` writer keeps between the moves of a cycle: the pass,
+/// plunge and contour of the last comment, and where the tool is.
+struct NcCycleState {
+    pass: Option<(PassKind, u32, u16)>,
+    plunge: Option<cycleref::Plunge>,
+    contour: Option<&'static str>,
+    at: Point,
+}
+
+/// One move of a cycle in `style`, with the comments before it (pass,
+/// plunge, contour): [`nc_cycle`]'s loop body, inlined into each of its
+/// loops. `words`: the units, the unit of Q, the X factor and reading
+/// R-G75ARC `front-post`.
+#[inline(always)]
+fn nc_styled_move<W: Write>(
+    out: &mut NcOut<W>,
+    t: &mut NcText,
+    s: &mut NcCycleState,
+    m: &Move,
+    style: NcStyle,
+    (u, q, x_factor, front_post): (Units, QUnit, i64, bool),
+) -> io::Result<()> {
+    if let Some(p) = m.pass {
+        nc_pass_comment(out, style.passes, p, &mut s.pass, u)?;
+    }
+    if style.plunges {
+        if let Role::Peck(p) = m.role {
+            if s.plunge != Some(p) {
+                s.plunge = Some(p);
                 out.line(|l| {
-                    l.put(b"(");
-                    l.put(n.as_bytes());
+                    l.put(b"(layer ");
+                    l.number(u64::from(p.layer));
+                    l.put(b" plunge ");
+                    l.number(u64::from(p.number));
                     l.put(b")\n");
                 })?;
             }
-            contour = name;
         }
-        match style.words {
-            MoveWords::Fanuc => nc_move(out, t, &m, u, q)?,
-            MoveWords::LinuxCnc => nc_g33_move(out, t, &m, u)?,
-            MoveWords::Groove => nc_groove_move(out, t, &m, at, (x_factor, front_post), u)?,
+    }
+    if style.contours {
+        let name: Option<&'static str> = match m.role {
+            Role::RoughContour => Some("rough contour"),
+            Role::FinishContour => Some("finishing contour"),
+            _ => None,
+        };
+        if let Some(n) = name.filter(|_| name != s.contour) {
+            out.line(|l| {
+                l.put(b"(");
+                l.put(n.as_bytes());
+                l.put(b")\n");
+            })?;
         }
-        at = m.to;
-        Ok::<(), io::Error>(())
-    })?;
-    restore(out, cycle.restore())
+        s.contour = name;
+    }
+    match style.words {
+        MoveWords::Fanuc => nc_move(out, t, m, u, q)?,
+        MoveWords::LinuxCnc => nc_g33_move(out, t, m, u)?,
+        MoveWords::Groove => nc_groove_move(out, t, m, s.at, (x_factor, front_post), u)?,
+    }
+    s.at = m.to;
+    Ok(())
 }
 
 /// The comment before the first move of a pass, in `style`, when the pass
@@ -366,6 +399,7 @@ fn nc_g33_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units)
 /// One G75.1 move: arcs with I/K, the rest as [`nc_move`]. Reading
 /// R-G75ARC: G02 for an arc clockwise seen with +Z right and +X up
 /// (`rear-post`), the codes exchanged under `front-post`.
+#[inline(always)]
 fn nc_groove_move<W: Write>(
     out: &mut NcOut<W>,
     t: &mut NcText,
@@ -377,12 +411,29 @@ fn nc_groove_move<W: Write>(
     let Motion::Arc { centre, clockwise } = m.motion else {
         // Most of a groove's moves: [`nc_move`]'s words inlined here
         // (issue 33: its call was a tenth of a groove's move).
-        return out.line(|l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }));
+        return out.line(
+            #[inline(always)]
+            |l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }),
+        );
     };
+    nc_arc(out, t, m.to, (from, centre, clockwise), (x_factor, front_post), u)
+}
+
+/// A G75.1 arc from `from` around `centre` to `to`: [`nc_groove_move`]'s,
+/// out of line (a few moves of a groove).
+#[inline(never)]
+fn nc_arc<W: Write>(
+    out: &mut NcOut<W>,
+    t: &mut NcText,
+    to: Point,
+    (from, centre, clockwise): (Point, Point, bool),
+    (x_factor, front_post): (i64, bool),
+    u: Units,
+) -> io::Result<()> {
     let d = u.decimals();
     let ((i, i_decimals), k) = arc_ik(from, centre, x_factor, u);
     out.line(|l| {
-        l.xz(t, if clockwise != front_post { b"G02 X" } else { b"G03 X" }, m.to, d);
+        l.xz(t, if clockwise != front_post { b"G02 X" } else { b"G03 X" }, to, d);
         l.put(b" I");
         l.fixed_wide(i, i_decimals);
         l.put(b" K");
@@ -566,8 +617,9 @@ impl<W: Write> NcOut<W> {
         self.inner.write_all(&self.buf[..len])
     }
 
-    /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place.
-    #[inline]
+    /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place
+    /// (inlined into every caller: the writers' loops).
+    #[inline(always)]
     fn line(&mut self, f: impl FnOnce(&mut Line<'_>)) -> io::Result<()> {
         let mut start = self.len;
         if start > NC_CAPACITY {

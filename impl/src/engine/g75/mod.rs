@@ -692,6 +692,51 @@ impl Iterator for G75Moves {
 }
 
 impl G75Moves {
+    /// Calls `f` with each move that [`Iterator::next`] would give, in
+    /// order, until `f` fails: the same moves (by the same steps: the
+    /// roughing's `next_rough`, the other stages' `next_other`), taken by
+    /// a loop that `f` is inlined into, with no `Option` of each move
+    /// handed back through a call (issue 33: the `nc` writer's groove
+    /// loop). The test `walked_moves_are_the_iterated_ones` compares the
+    /// two over generated grooves.
+    ///
+    /// ```
+    /// use cycleref::examples::G75_SEED;
+    /// use cycleref::expand_g75;
+    ///
+    /// let mut walked = Vec::new();
+    /// expand_g75(&G75_SEED)?.try_for_each_move(|m| {
+    ///     walked.push(m);
+    ///     Ok::<(), ()>(())
+    /// }).expect("no error");
+    /// assert_eq!(walked, expand_g75(&G75_SEED)?.collect::<Vec<_>>());
+    /// # Ok::<(), cycleref::CycleError>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// The first error `f` returns (the moves after it are not taken).
+    #[inline]
+    pub fn try_for_each_move<E>(&mut self, mut f: impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
+        loop {
+            // One call of `f`, so that it is inlined here.
+            let next = if self.stage == Stage::Rough { self.next_rough() } else { None };
+            let m = match next {
+                Some(m) => m,
+                None => {
+                    if self.stage == Stage::Rough {
+                        self.stage = Stage::Tail;
+                    }
+                    match self.next_other() {
+                        Some(m) => m,
+                        None => return Ok(()),
+                    }
+                }
+            };
+            f(m)?;
+        }
+    }
+
     /// [`Iterator::next`] in the stages other than the roughing: the
     /// approach (then the roughing), the tail, the end.
     #[inline(never)]
