@@ -239,9 +239,12 @@ fn nc_cycle<W: Write>(
     if style == NcStyle::GROOVE {
         // G75.1: the same body with the style a constant, its questions
         // answered when the loop is compiled (issue 33).
+        // The closure holds the words by value, so that they stay in
+        // registers across the loop's writes.
+        let (out, t, s) = (&mut *out, &mut *t, &mut s);
         moves.try_for_each_move(
             #[inline(always)]
-            |m| nc_styled_move(out, t, &mut s, &m, NcStyle::GROOVE, words),
+            move |m| nc_styled_move(out, t, s, &m, NcStyle::GROOVE, words),
         )?;
     } else {
         moves.try_for_each_move(|m| nc_styled_move(out, t, &mut s, &m, style, words))?;
@@ -496,14 +499,26 @@ fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
 /// thread's passes return to the same retract X and start and end Z: most
 /// coordinates were written before): [`RECENT`] places, each value in
 /// the one its hash chooses (one comparison a look-up); a value that finds
-/// another in its place takes it. A text is kept at the start of 32 bytes
-/// and copied whole (a copy of constant length, no call), the line then
-/// advanced by its length.
-#[derive(Clone, Default)]
+/// another in its place takes it. Every place always holds a value and its
+/// text with `decimals` decimals (at first, and after the decimals change,
+/// 0's), so that a look-up compares one integer. A text is kept at the
+/// start of 32 bytes and copied whole (a copy of constant length, no call),
+/// the line then advanced by its length.
+#[derive(Clone)]
 struct Recent {
-    keys: [Option<(i64, u32)>; RECENT],
-    lens: [usize; RECENT],
+    /// The decimals of every text kept.
+    decimals: u32,
+    keys: [i64; RECENT],
+    lens: [u8; RECENT],
     texts: [[u8; 32]; RECENT],
+}
+
+impl Default for Recent {
+    fn default() -> Recent {
+        let mut r = Recent { decimals: 0, keys: [0; RECENT], lens: [0; RECENT], texts: [[0; 32]; RECENT] };
+        r.empty(0);
+        r
+    }
 }
 
 /// The places of a [`Recent`]: 32, so that a G75.1 groove's plunges, which
@@ -547,6 +562,18 @@ impl NcText {
 }
 
 impl Recent {
+    /// Every place 0 with `decimals` decimals (at most 9).
+    #[cold]
+    fn empty(&mut self, decimals: u32) {
+        let mut zero = [0; 32];
+        // At most 1 + 9 = 10 bytes.
+        let len = put_fixed(&mut zero, false, 0, decimals);
+        self.decimals = decimals;
+        self.keys = [0; RECENT];
+        self.lens = [u8::try_from(len).unwrap_or(32); RECENT];
+        self.texts = [zero; RECENT];
+    }
+
     /// Writes `v` with `decimals` into `l`, from the kept text when it is
     /// there.
     #[inline]
@@ -560,21 +587,23 @@ impl Recent {
             l.at += n.min(FIXED_BUF);
             return;
         }
+        if decimals != self.decimals {
+            self.empty(decimals);
+        }
         // Fibonacci hashing: the top bits of the product spread values
         // that differ in their low digits over the places.
-        #[allow(clippy::cast_possible_truncation)]
-        let slot =
-            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize;
-        let slot = slot % RECENT;
-        if self.keys[slot] != Some((v, decimals)) {
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let slot = ((v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize % RECENT;
+        if self.keys[slot] != v {
             // At most 1 + 19 + 1 + 9 = 30 bytes.
-            self.lens[slot] = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
-            self.keys[slot] = Some((v, decimals));
+            let len = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
+            self.lens[slot] = u8::try_from(len).unwrap_or(32);
+            self.keys[slot] = v;
         }
         l.buf[l.at..l.at + 32].copy_from_slice(&self.texts[slot]);
         // At most 30: the `min` only tells the compiler that `at` stays
         // small, so that the line's later writes need no bounds check.
-        l.at += self.lens[slot].min(32);
+        l.at += usize::from(self.lens[slot]).min(32);
     }
 }
 
