@@ -739,10 +739,15 @@ impl Line<'_> {
         self.at += put_fixed(&mut self.buf[self.at..], false, v, decimals);
     }
 
-    /// `v` in decimal.
+    /// `v` in decimal: one digit written as it is (the usual pass, start,
+    /// layer and plunge numbers of the comments: issue 33), else by
+    /// [`put_fixed`].
     #[inline]
     fn number(&mut self, v: u64) {
-        self.unsigned(v, 0);
+        match u8::try_from(v) {
+            Ok(digit @ 0..=9) => self.put(&[b'0' + digit]),
+            _ => self.unsigned(v, 0),
+        }
     }
 
     /// `v / 10^decimals`, where `v` may be wider than 64 bits (an arc's I
