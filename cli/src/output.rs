@@ -234,7 +234,7 @@ fn nc_cycle<W: Write>(
         })?;
         return restore(out, cycle.restore());
     }
-    let mut s = NcCycleState { pass: None, plunge: None, contour: None, at: cycle.from() };
+    let mut s = NcCycleState { pass: None, plunge: None, contour: 0, at: cycle.from() };
     let words = (u, q, x_factor, front_post);
     if style == NcStyle::GROOVE {
         // G75.1: the same body with the style a constant, its questions
@@ -257,7 +257,8 @@ fn nc_cycle<W: Write>(
 struct NcCycleState {
     pass: Option<(PassKind, u32, u16)>,
     plunge: Option<cycleref::Plunge>,
-    contour: Option<&'static str>,
+    /// The contour of the last move: 0 none, 1 rough, 2 finishing.
+    contour: u8,
     at: Point,
 }
 
@@ -292,19 +293,20 @@ fn nc_styled_move<W: Write>(
         }
     }
     if style.contours {
-        let name: Option<&'static str> = match m.role {
-            Role::RoughContour => Some("rough contour"),
-            Role::FinishContour => Some("finishing contour"),
-            _ => None,
+        // The contour as a code (0: none), compared and kept in one byte.
+        let (contour, name): (u8, &[u8]) = match m.role {
+            Role::RoughContour => (1, b"rough contour"),
+            Role::FinishContour => (2, b"finishing contour"),
+            _ => (0, b""),
         };
-        if let Some(n) = name.filter(|_| name != s.contour) {
+        if contour != 0 && contour != s.contour {
             out.line(|l| {
                 l.put(b"(");
-                l.put(n.as_bytes());
+                l.put(name);
                 l.put(b")\n");
             })?;
         }
-        s.contour = name;
+        s.contour = contour;
     }
     match style.words {
         MoveWords::Fanuc => nc_move(out, t, m, u, q)?,
