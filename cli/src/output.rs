@@ -12,7 +12,7 @@ use std::cell::RefCell;
 use std::io::{self, Write};
 
 use cycleref::{Motion, Move, PassKind, Point, Role, Units};
-use cycleref_spec::cycles::{MoveWords, PassComment, PassTable, HEADING_BUF};
+use cycleref_spec::cycles::{MoveWords, NcStyle, PassComment, PassTable, HEADING_BUF};
 use cycleref_spec::pipeline::{Cycle, Moves};
 use cycleref_spec::profile::QUnit;
 use cycleref_spec::reader::{Item, PlainMove, Restore};
@@ -215,11 +215,11 @@ fn nc_cycle<W: Write>(
         }
     }
     let x_factor = cycle.x_mode().factor();
-    let (mut pass, mut plunge, mut contour) = (None, None, None);
     if style.words == MoveWords::Fanuc && !style.plunges && !style.contours {
         // G76, G78, G92, G32: a pass comment and the move, the style's
         // other questions answered once for the cycle rather than at
         // every move (issue 33: they were a fifth of the loop).
+        let mut pass = None;
         moves.try_for_each_move(|m| {
             if let Some(p) = m.pass {
                 // The comment only where the pass changes (most moves are
@@ -234,49 +234,87 @@ fn nc_cycle<W: Write>(
         })?;
         return restore(out, cycle.restore());
     }
-    let mut at = cycle.from();
-    moves.try_for_each_move(|m| {
-        if let Some(p) = m.pass {
-            nc_pass_comment(out, style.passes, p, &mut pass, u)?;
-        }
-        if style.plunges {
-            if let Role::Peck(p) = m.role {
-                if plunge != Some(p) {
-                    plunge = Some(p);
-                    out.line(|l| {
-                        l.put(b"(layer ");
-                        l.number(u64::from(p.layer));
-                        l.put(b" plunge ");
-                        l.number(u64::from(p.number));
-                        l.put(b")\n");
-                    })?;
-                }
-            }
-        }
-        if style.contours {
-            let name: Option<&'static str> = match m.role {
-                Role::RoughContour => Some("rough contour"),
-                Role::FinishContour => Some("finishing contour"),
-                _ => None,
-            };
-            if let Some(n) = name.filter(|_| name != contour) {
+    let mut s = NcCycleState { pass: None, plunge: None, contour: 0, at: cycle.from() };
+    let words = (u, q, x_factor, front_post);
+    if style == NcStyle::GROOVE {
+        // G75.1: the same body with the style a constant, its questions
+        // answered when the loop is compiled (issue 33).
+        // The closure holds the words by value, so that they stay in
+        // registers across the loop's writes.
+        let (out, t, s) = (&mut *out, &mut *t, &mut s);
+        moves.try_for_each_move(
+            #[inline(always)]
+            move |m| nc_styled_move(out, t, s, &m, NcStyle::GROOVE, words),
+        )?;
+    } else {
+        moves.try_for_each_move(|m| nc_styled_move(out, t, &mut s, &m, style, words))?;
+    }
+    restore(out, cycle.restore())
+}
+
+/// What the `nc` writer keeps between the moves of a cycle: the pass,
+/// plunge and contour of the last comment, and where the tool is.
+struct NcCycleState {
+    pass: Option<(PassKind, u32, u16)>,
+    plunge: Option<cycleref::Plunge>,
+    /// The contour of the last move: 0 none, 1 rough, 2 finishing.
+    contour: u8,
+    at: Point,
+}
+
+/// One move of a cycle in `style`, with the comments before it (pass,
+/// plunge, contour): [`nc_cycle`]'s loop body, inlined into each of its
+/// loops. `words`: the units, the unit of Q, the X factor and reading
+/// R-G75ARC `front-post`.
+#[inline(always)]
+fn nc_styled_move<W: Write>(
+    out: &mut NcOut<W>,
+    t: &mut NcText,
+    s: &mut NcCycleState,
+    m: &Move,
+    style: NcStyle,
+    (u, q, x_factor, front_post): (Units, QUnit, i64, bool),
+) -> io::Result<()> {
+    if let Some(p) = m.pass {
+        nc_pass_comment(out, style.passes, p, &mut s.pass, u)?;
+    }
+    if style.plunges {
+        if let Role::Peck(p) = m.role {
+            if s.plunge != Some(p) {
+                s.plunge = Some(p);
                 out.line(|l| {
-                    l.put(b"(");
-                    l.put(n.as_bytes());
+                    l.put(b"(layer ");
+                    l.number(u64::from(p.layer));
+                    l.put(b" plunge ");
+                    l.number(u64::from(p.number));
                     l.put(b")\n");
                 })?;
             }
-            contour = name;
         }
-        match style.words {
-            MoveWords::Fanuc => nc_move(out, t, &m, u, q)?,
-            MoveWords::LinuxCnc => nc_g33_move(out, t, &m, u)?,
-            MoveWords::Groove => nc_groove_move(out, t, &m, at, (x_factor, front_post), u)?,
+    }
+    if style.contours {
+        // The contour as a code (0: none), compared and kept in one byte.
+        let (contour, name): (u8, &[u8]) = match m.role {
+            Role::RoughContour => (1, b"rough contour"),
+            Role::FinishContour => (2, b"finishing contour"),
+            _ => (0, b""),
+        };
+        if contour != 0 && contour != s.contour {
+            out.line(|l| {
+                l.put(b"(");
+                l.put(name);
+                l.put(b")\n");
+            })?;
         }
-        at = m.to;
-        Ok::<(), io::Error>(())
-    })?;
-    restore(out, cycle.restore())
+        s.contour = contour;
+    }
+    match style.words {
+        MoveWords::Fanuc => nc_move(out, t, m, u, q)?,
+        MoveWords::LinuxCnc => nc_g33_move(out, t, m, u)?,
+        MoveWords::Groove => nc_groove_move(out, t, m, s.at, (x_factor, front_post), u)?,
+    }
+    s.at = m.to;
+    Ok(())
 }
 
 /// The comment before the first move of a pass, in `style`, when the pass
@@ -366,6 +404,7 @@ fn nc_g33_move<W: Write>(out: &mut NcOut<W>, t: &mut NcText, m: &Move, u: Units)
 /// One G75.1 move: arcs with I/K, the rest as [`nc_move`]. Reading
 /// R-G75ARC: G02 for an arc clockwise seen with +Z right and +X up
 /// (`rear-post`), the codes exchanged under `front-post`.
+#[inline(always)]
 fn nc_groove_move<W: Write>(
     out: &mut NcOut<W>,
     t: &mut NcText,
@@ -377,12 +416,29 @@ fn nc_groove_move<W: Write>(
     let Motion::Arc { centre, clockwise } = m.motion else {
         // Most of a groove's moves: [`nc_move`]'s words inlined here
         // (issue 33: its call was a tenth of a groove's move).
-        return out.line(|l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }));
+        return out.line(
+            #[inline(always)]
+            |l| nc_move_words(l, t, m, u, QUnit::Millidegrees { no_point: true }),
+        );
     };
+    nc_arc(out, t, m.to, (from, centre, clockwise), (x_factor, front_post), u)
+}
+
+/// A G75.1 arc from `from` around `centre` to `to`: [`nc_groove_move`]'s,
+/// out of line (a few moves of a groove).
+#[inline(never)]
+fn nc_arc<W: Write>(
+    out: &mut NcOut<W>,
+    t: &mut NcText,
+    to: Point,
+    (from, centre, clockwise): (Point, Point, bool),
+    (x_factor, front_post): (i64, bool),
+    u: Units,
+) -> io::Result<()> {
     let d = u.decimals();
     let ((i, i_decimals), k) = arc_ik(from, centre, x_factor, u);
     out.line(|l| {
-        l.xz(t, if clockwise != front_post { b"G02 X" } else { b"G03 X" }, m.to, d);
+        l.xz(t, if clockwise != front_post { b"G02 X" } else { b"G03 X" }, to, d);
         l.put(b" I");
         l.fixed_wide(i, i_decimals);
         l.put(b" K");
@@ -445,14 +501,26 @@ fn restore<W: Write>(out: &mut NcOut<W>, r: Restore) -> io::Result<()> {
 /// thread's passes return to the same retract X and start and end Z: most
 /// coordinates were written before): [`RECENT`] places, each value in
 /// the one its hash chooses (one comparison a look-up); a value that finds
-/// another in its place takes it. A text is kept at the start of 32 bytes
-/// and copied whole (a copy of constant length, no call), the line then
-/// advanced by its length.
-#[derive(Clone, Default)]
+/// another in its place takes it. Every place always holds a value and its
+/// text with `decimals` decimals (at first, and after the decimals change,
+/// 0's), so that a look-up compares one integer. A text is kept at the
+/// start of 32 bytes and copied whole (a copy of constant length, no call),
+/// the line then advanced by its length.
+#[derive(Clone)]
 struct Recent {
-    keys: [Option<(i64, u32)>; RECENT],
-    lens: [usize; RECENT],
+    /// The decimals of every text kept.
+    decimals: u32,
+    keys: [i64; RECENT],
+    lens: [u8; RECENT],
     texts: [[u8; 32]; RECENT],
+}
+
+impl Default for Recent {
+    fn default() -> Recent {
+        let mut r = Recent { decimals: 0, keys: [0; RECENT], lens: [0; RECENT], texts: [[0; 32]; RECENT] };
+        r.empty(0);
+        r
+    }
 }
 
 /// The places of a [`Recent`]: 32, so that a G75.1 groove's plunges, which
@@ -496,6 +564,18 @@ impl NcText {
 }
 
 impl Recent {
+    /// Every place 0 with `decimals` decimals (at most 9).
+    #[cold]
+    fn empty(&mut self, decimals: u32) {
+        let mut zero = [0; 32];
+        // At most 1 + 9 = 10 bytes.
+        let len = put_fixed(&mut zero, false, 0, decimals);
+        self.decimals = decimals;
+        self.keys = [0; RECENT];
+        self.lens = [u8::try_from(len).unwrap_or(32); RECENT];
+        self.texts = [zero; RECENT];
+    }
+
     /// Writes `v` with `decimals` into `l`, from the kept text when it is
     /// there.
     #[inline]
@@ -509,21 +589,23 @@ impl Recent {
             l.at += n.min(FIXED_BUF);
             return;
         }
+        if decimals != self.decimals {
+            self.empty(decimals);
+        }
         // Fibonacci hashing: the top bits of the product spread values
         // that differ in their low digits over the places.
-        #[allow(clippy::cast_possible_truncation)]
-        let slot =
-            ((v.unsigned_abs() ^ u64::from(decimals)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize;
-        let slot = slot % RECENT;
-        if self.keys[slot] != Some((v, decimals)) {
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let slot = ((v as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 59) as usize % RECENT;
+        if self.keys[slot] != v {
             // At most 1 + 19 + 1 + 9 = 30 bytes.
-            self.lens[slot] = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
-            self.keys[slot] = Some((v, decimals));
+            let len = put_fixed(&mut self.texts[slot], v < 0, v.unsigned_abs(), decimals);
+            self.lens[slot] = u8::try_from(len).unwrap_or(32);
+            self.keys[slot] = v;
         }
         l.buf[l.at..l.at + 32].copy_from_slice(&self.texts[slot]);
         // At most 30: the `min` only tells the compiler that `at` stays
         // small, so that the line's later writes need no bounds check.
-        l.at += self.lens[slot].min(32);
+        l.at += usize::from(self.lens[slot]).min(32);
     }
 }
 
@@ -566,8 +648,9 @@ impl<W: Write> NcOut<W> {
         self.inner.write_all(&self.buf[..len])
     }
 
-    /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place.
-    #[inline]
+    /// Writes a line of at most [`LINE_ROOM`] bytes with `f`, in place
+    /// (inlined into every caller: the writers' loops).
+    #[inline(always)]
     fn line(&mut self, f: impl FnOnce(&mut Line<'_>)) -> io::Result<()> {
         let mut start = self.len;
         if start > NC_CAPACITY {
@@ -658,10 +741,15 @@ impl Line<'_> {
         self.at += put_fixed(&mut self.buf[self.at..], false, v, decimals);
     }
 
-    /// `v` in decimal.
+    /// `v` in decimal: one digit written as it is (the usual pass, start,
+    /// layer and plunge numbers of the comments: issue 33), else by
+    /// [`put_fixed`].
     #[inline]
     fn number(&mut self, v: u64) {
-        self.unsigned(v, 0);
+        match u8::try_from(v) {
+            Ok(digit @ 0..=9) => self.put(&[b'0' + digit]),
+            _ => self.unsigned(v, 0),
+        }
     }
 
     /// `v / 10^decimals`, where `v` may be wider than 64 bits (an arc's I

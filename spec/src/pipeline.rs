@@ -252,11 +252,7 @@ macro_rules! registry {
             #[inline]
             pub fn try_for_each_move<E>(self, mut f: impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
                 match self.0 {
-                    $(Inner::$variant(m) => {
-                        for x in m {
-                            f(x)?;
-                        }
-                    })*
+                    $(Inner::$variant(m) => m.walk(&mut f)?,)*
                     Inner::Reference(m) => {
                         for x in m {
                             f(x)?;
@@ -348,6 +344,32 @@ impl Cycle<'_, '_> {
 /// The moves of one cycle, in order.
 #[derive(Clone, Debug)]
 pub struct Moves(Inner);
+
+/// How [`Moves::try_for_each_move`] takes an engine's moves: by its
+/// iterator, or by the engine's own loop where it has one (G75.1's
+/// [`G75Moves::try_for_each_move`], the same moves).
+trait Walk: Iterator<Item = Move> + Sized {
+    /// Calls `f` with each move until it fails.
+    #[inline]
+    fn walk<E>(self, f: &mut impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
+        for x in self {
+            f(x)?;
+        }
+        Ok(())
+    }
+}
+
+impl Walk for G76Moves {}
+impl Walk for G32Moves {}
+impl Walk for G92Moves {}
+impl Walk for LinuxCncMoves {}
+
+impl Walk for Box<G75Moves> {
+    #[inline]
+    fn walk<E>(mut self, f: &mut impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
+        self.try_for_each_move(f)
+    }
+}
 
 /// The moves of `cycle` by `engine`.
 ///

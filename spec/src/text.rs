@@ -251,10 +251,14 @@ impl<const N: usize> TextBuf<N> {
         }
     }
 
-    /// Appends `v` in decimal.
+    /// Appends `v` in decimal: one digit as it is (a heading's usual
+    /// counts: issue 33), else by [`put_fixed`].
     #[inline]
     pub fn integer(&mut self, v: u64) {
-        self.fixed(false, v, 0);
+        match u8::try_from(v) {
+            Ok(digit @ 0..=9) => self.put(&[b'0' + digit]),
+            _ => self.fixed(false, v, 0),
+        }
     }
 
     /// Appends `mag / 10^decimals`, with a leading `-` when `negative`

@@ -10,8 +10,7 @@ use cycleref::units::Length;
 use cycleref::{CornerKind, CycleError, G75Moves, Motion, Move, PathType, Point, Role};
 
 use super::{
-    Annotations, CycleCall, GroovePanel, Heading, MoveWords, NcStyle, Panel, PassComment, PassTable,
-    ReferenceMoves, Region,
+    Annotations, CycleCall, GroovePanel, Heading, NcStyle, Panel, PassTable, ReferenceMoves, Region,
 };
 use crate::lex::Block;
 use crate::pipeline::{Engine, Moves};
@@ -158,7 +157,7 @@ impl<'a> CycleCall<'a> for G75Call<'a> {
     }
 
     fn nc_style(&self) -> NcStyle {
-        NcStyle { words: MoveWords::Groove, passes: PassComment::None, plunges: true, contours: true }
+        NcStyle::GROOVE
     }
 
     fn pass_table(&self) -> PassTable {

@@ -347,6 +347,14 @@ pub struct NcStyle {
     pub contours: bool,
 }
 
+impl NcStyle {
+    /// G75.1's style: its words, no pass comments, a comment before each
+    /// plunge and each contour. A constant, so that the `nc` writer's loop
+    /// for it is made with every question of the style answered (issue 33).
+    pub const GROOVE: NcStyle =
+        NcStyle { words: MoveWords::Groove, passes: PassComment::None, plunges: true, contours: true };
+}
+
 /// The words of a cycle's moves in the `nc` output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MoveWords {

@@ -62,6 +62,13 @@ impl Frame {
         Ok(Point::new(x, z))
     }
 
+    /// [`Frame::point`] of a local point known to lie in the range (in
+    /// the box of a plan's points whose corners [`Frame::point`] accepted):
+    /// the same point, without the checks.
+    pub(super) fn point_in_range(&self, p: Local) -> Point {
+        Point::new(saturate_i64(self.x(p.1)), saturate_i64(self.z(p.0)))
+    }
+
     /// Whether a round turns clockwise seen with +Z to the right and +X up
     /// (R-G75ARC). In local (u, y/f) coordinates the cross product of
     /// (start − centre) and (end − centre) is `ρ²·sin(a + L)` for r1,

@@ -591,17 +591,22 @@ fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
     if roughs {
         check_roughing(c, &frame, y_top, (a11, a1f), &layers)?;
     }
-    // The tail: each leg's end, then its arc's centre.
+    // The tail: each leg's end, then its arc's centre. Every point placed
+    // here lies in the box of `plan.reach`: when its corners are in the
+    // range, so is every point, placed without a check each (issue 33);
+    // else each is checked, in move order.
     let t = &plan.tail;
+    let boxed = frame.point(plan.reach.0).is_ok() && frame.point(plan.reach.1).is_ok();
+    let place_point = |p: Local| if boxed { Ok(frame.point_in_range(p)) } else { frame.point(p) };
     let mut legs = [Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return }; TAIL];
     let mut centres = [c.from; ARCS];
     let mut len = 0;
     for (slot, l) in legs.iter_mut().zip(t.legs.iter().take(t.len)) {
-        let to = frame.point(l.to)?;
+        let to = place_point(l.to)?;
         if let LegKind::Arc { centre, .. } = l.kind {
             let i = usize::from(centre);
             if let (Some(at), Some(&local)) = (centres.get_mut(i), t.centres.get(i)) {
-                *at = frame.point(local)?;
+                *at = place_point(local)?;
             }
         }
         *slot = Leg { kind: l.kind, to, role: l.role };
@@ -609,7 +614,7 @@ fn place(c: &G75Cycle, plan: &G75Plan) -> Result<G75Moves, CycleError> {
     }
     // Step 10's end: back to the point before the cycle, in one move. The
     // tail's end is local; `from` may lie anywhere in range.
-    let end_abs = frame.point(t.at)?;
+    let end_abs = place_point(t.at)?;
     if end_abs != c.from {
         if let Some(slot) = legs.get_mut(len) {
             *slot = Leg { kind: LegKind::Rapid, to: c.from, role: TailRole::Return };
@@ -692,6 +697,56 @@ impl Iterator for G75Moves {
 }
 
 impl G75Moves {
+    /// Calls `f` with each move that [`Iterator::next`] would give, in
+    /// order, until `f` fails: the same moves (by the same steps: the
+    /// roughing's `next_rough`, the other stages' `next_other`), taken by
+    /// a loop that `f` is inlined into, with no `Option` of each move
+    /// handed back through a call (issue 33: the `nc` writer's groove
+    /// loop). The test `walked_moves_are_the_iterated_ones` compares the
+    /// two over generated grooves.
+    ///
+    /// ```
+    /// use cycleref::examples::G75_SEED;
+    /// use cycleref::expand_g75;
+    ///
+    /// let mut walked = Vec::new();
+    /// expand_g75(&G75_SEED)?.try_for_each_move(|m| {
+    ///     walked.push(m);
+    ///     Ok::<(), ()>(())
+    /// }).expect("no error");
+    /// assert_eq!(walked, expand_g75(&G75_SEED)?.collect::<Vec<_>>());
+    /// # Ok::<(), cycleref::CycleError>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// The first error `f` returns (the moves after it are not taken).
+    #[inline]
+    pub fn try_for_each_move<E>(&mut self, mut f: impl FnMut(Move) -> Result<(), E>) -> Result<(), E> {
+        loop {
+            // One call of `f`, so that it is inlined here; the roughing's
+            // and the tail's steps inlined too.
+            let next = match self.stage {
+                Stage::Rough => self.next_rough(),
+                Stage::Tail => self.next_tail(),
+                Stage::Approach | Stage::Done => None,
+            };
+            let m = match next {
+                Some(m) => m,
+                None => {
+                    if self.stage == Stage::Rough {
+                        self.stage = Stage::Tail;
+                    }
+                    match self.next_other() {
+                        Some(m) => m,
+                        None => return Ok(()),
+                    }
+                }
+            };
+            f(m)?;
+        }
+    }
+
     /// [`Iterator::next`] in the stages other than the roughing: the
     /// approach (then the roughing), the tail, the end.
     #[inline(never)]
@@ -715,27 +770,30 @@ impl G75Moves {
                     Some(m) => return Some(m),
                     None => self.stage = Stage::Tail,
                 },
-                Stage::Tail => {
-                    let Some(leg) = self.tail.get(self.tail_next).filter(|_| self.tail_next < self.tail_len)
-                    else {
-                        self.stage = Stage::Done;
-                        return None;
-                    };
-                    self.tail_next += 1;
-                    let motion = match leg.kind {
-                        LegKind::Rapid => Motion::Rapid,
-                        LegKind::Feed => Motion::Feed,
-                        LegKind::Arc { centre, clockwise } => Motion::Arc {
-                            centre: self.centres.get(usize::from(centre)).copied().unwrap_or(leg.to),
-                            clockwise,
-                        },
-                    };
-                    let role: Role = leg.role.role();
-                    return Some(Move { motion, to: leg.to, role, pass: None });
-                }
+                Stage::Tail => return self.next_tail(),
                 Stage::Done => return None,
             }
         }
+    }
+
+    /// The next move of the tail, or `None` (the stage then `Done`).
+    #[inline(always)]
+    fn next_tail(&mut self) -> Option<Move> {
+        let Some(leg) = self.tail.get(self.tail_next).filter(|_| self.tail_next < self.tail_len) else {
+            self.stage = Stage::Done;
+            return None;
+        };
+        self.tail_next += 1;
+        let motion = match leg.kind {
+            LegKind::Rapid => Motion::Rapid,
+            LegKind::Feed => Motion::Feed,
+            LegKind::Arc { centre, clockwise } => Motion::Arc {
+                centre: self.centres.get(usize::from(centre)).copied().unwrap_or(leg.to),
+                clockwise,
+            },
+        };
+        let role: Role = leg.role.role();
+        Some(Move { motion, to: leg.to, role, pass: None })
     }
 }
 

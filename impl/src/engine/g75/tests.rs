@@ -1479,3 +1479,52 @@ fn planned_expansion_is_the_plain_one() {
     // Each kind of case was met (the counts only guard the sweep's reach).
     assert!(reused > 10_000 && refused > 100 && out_of_range > 1_000, "{reused} {refused} {out_of_range}");
 }
+
+/// `G75Moves::try_for_each_move` gives the moves `Iterator::next` gives, in
+/// order, and stops at the first error of its closure: random grooves
+/// (every J, layers, pecks, corners, both directions), each walked whole
+/// and stopped at a random move.
+#[test]
+fn walked_moves_are_the_iterated_ones() {
+    let mut r = Rng(0x7A1C_0FF3_3D15_0075);
+    let (mut walked, mut stopped) = (0, 0);
+    for i in 0..3_000 {
+        let c = random_cycle(&mut r, i % 3 == 0);
+        let Ok(moves) = expand_g75(&c) else { continue };
+        let want: Vec<Move> = moves.clone().collect();
+        let mut got = Vec::new();
+        let mut all = moves.clone();
+        assert_eq!(
+            all.try_for_each_move(|m| {
+                got.push(m);
+                Ok::<(), ()>(())
+            }),
+            Ok(())
+        );
+        assert_eq!(got, want, "{c:?}");
+        // Nothing is left after the walk.
+        assert_eq!(all.next(), None);
+        walked += 1;
+        // Stopped at move `k`: the moves before it and that one taken,
+        // the iterator then goes on after it.
+        if want.is_empty() {
+            continue;
+        }
+        let k = usize::try_from(r.range(0, i64::try_from(want.len()).unwrap() - 1)).unwrap();
+        let mut part = moves.clone();
+        let mut seen = Vec::new();
+        let result = part.try_for_each_move(|m| {
+            seen.push(m);
+            if seen.len() == k + 1 {
+                Err(k)
+            } else {
+                Ok(())
+            }
+        });
+        assert_eq!(result, Err(k));
+        assert_eq!(seen, want[..=k].to_vec());
+        assert_eq!(part.collect::<Vec<_>>(), want[k + 1..].to_vec(), "{c:?}");
+        stopped += 1;
+    }
+    assert!(walked > 1_000 && stopped > 1_000, "{walked} {stopped}");
+}
