@@ -559,6 +559,10 @@ enum Input<'j> {
 /// How many bytes [`Items`] reads from a file at a time.
 pub const CHUNK: usize = 1 << 16;
 
+/// The bytes of an unfinished line a piece's vector holds room for beside
+/// [`CHUNK`] before it grows ([`next_piece`]).
+const PIECE_SLACK: usize = 4096;
+
 /// The longest line a program or trace read from a file may have (reading
 /// R-LINEEND): a longer one is an error naming it, so that memory does not
 /// grow with a line (a 1 GB line held 980 MB). No control's block is
@@ -618,7 +622,15 @@ pub(crate) fn next_piece<R: std::io::Read + ?Sized>(
         // at the time the next piece is wanted: a short read is not the end,
         // so that bytes written to the file since (a tool appending) are
         // read and seen as a change (R-CHANGED), as before issue 33.
-        buf.reserve(CHUNK);
+        // Room for CHUNK bytes after the piece's unfinished line, in a
+        // vector that keeps its size from piece to piece: `reserve`'s
+        // doubling made it 128 KiB from the second piece on, which the
+        // allocator maps afresh for every reading (33 page faults, each
+        // about 3 µs on this machine, and a map and an unmap: issue 33's
+        // short programs pay them three times).
+        if buf.capacity() - buf.len() < CHUNK {
+            buf.reserve_exact(CHUNK + PIECE_SLACK);
+        }
         let n = std::io::Read::take(&mut *file, CHUNK as u64)
             .read_to_end(buf)
             .inspect_err(|_| buf.truncate(have))?;
