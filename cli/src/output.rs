@@ -21,6 +21,7 @@ use crate::format::{arc_ik, flank_name, kind_name, put_fixed, put_lead, q_value,
 use crate::job::{Cause, Failure, Job};
 use crate::json::ser::JsonSerializer;
 use crate::json::{CycleJson, MovesDocument, StreamSeq, UnitsJson};
+use cycleref_spec::text::put_integer;
 
 /// The format of `expand`'s output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -741,15 +742,10 @@ impl Line<'_> {
         self.at += put_fixed(&mut self.buf[self.at..], false, v, decimals);
     }
 
-    /// `v` in decimal: one digit written as it is (the usual pass, start,
-    /// layer and plunge numbers of the comments: issue 33), else by
-    /// [`put_fixed`].
+    /// `v` in decimal ([`put_integer`]).
     #[inline]
     fn number(&mut self, v: u64) {
-        match u8::try_from(v) {
-            Ok(digit @ 0..=9) => self.put(&[b'0' + digit]),
-            _ => self.unsigned(v, 0),
-        }
+        self.at += put_integer(&mut self.buf[self.at..], v);
     }
 
     /// `v / 10^decimals`, where `v` may be wider than 64 bits (an arc's I

@@ -167,7 +167,9 @@ fn put_fixed_long(out: &mut [u8], negative: bool, mag: u64, decimals: u32) -> us
 }
 
 /// Writes `v` in decimal at the start of `out` ([`put_fixed`] with no
-/// decimals); returns its length.
+/// decimals); returns its length. One digit is written as it is (the
+/// usual counts of headings and comments: passes, starts, layers,
+/// plunges; issue 33).
 ///
 /// # Panics
 ///
@@ -179,10 +181,18 @@ fn put_fixed_long(out: &mut [u8], negative: bool, mag: u64, decimals: u32) -> us
 /// let mut out = [0_u8; 32];
 /// let len = put_integer(&mut out, 18_862);
 /// assert_eq!(&out[..len], b"18862");
+/// let len = put_integer(&mut out, 7);
+/// assert_eq!(&out[..len], b"7");
 /// ```
 #[inline]
 pub fn put_integer(out: &mut [u8], v: u64) -> usize {
-    put_fixed(out, false, v, 0)
+    match u8::try_from(v) {
+        Ok(digit @ 0..=9) => {
+            out[0] = b'0' + digit;
+            1
+        }
+        _ => put_fixed(out, false, v, 0),
+    }
 }
 
 /// `mag / 10^decimals` as text, with a leading `-` when `negative`, written
@@ -251,13 +261,13 @@ impl<const N: usize> TextBuf<N> {
         }
     }
 
-    /// Appends `v` in decimal: one digit as it is (a heading's usual
-    /// counts: issue 33), else by [`put_fixed`].
+    /// Appends `v` in decimal ([`put_integer`]).
     #[inline]
     pub fn integer(&mut self, v: u64) {
-        match u8::try_from(v) {
-            Ok(digit @ 0..=9) => self.put(&[b'0' + digit]),
-            _ => self.fixed(false, v, 0),
+        if let Some(to) = self.buf.get_mut(self.len..self.len + FIXED_BUF) {
+            self.len += put_integer(to, v);
+        } else {
+            self.fixed(false, v, 0);
         }
     }
 
